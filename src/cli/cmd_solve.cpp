@@ -1,0 +1,46 @@
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "problem/load.hpp"
+#include "problem/values.hpp"
+#include "render/render.hpp"
+#include "solvers/solve.hpp"
+
+namespace wobble::cli {
+
+void setup_solve(CLI::App& app, SolveOptions& opt) {
+  app.add_option("problem", opt.problem, "Problem id (see `wobble list`) or a .toml file")
+      ->required();
+  app.add_option("--set", opt.sets,
+                 "Parameter value NAME=VALUE in SI (angles also as 30deg); repeatable")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--format", opt.format, "Output format")
+      ->check(CLI::IsMember({"text", "markdown", "latex", "json"}));
+  app.add_option("--part", opt.part, "Print only this part (its id, e.g. b)");
+}
+
+int run_solve(const SolveOptions& opt) {
+  const Problem problem = find_problem(opt.problem);
+  const sym::Values values = parameter_values(problem, opt.sets);
+  Key key = solve(problem, values);
+  if (!opt.part.empty()) {
+    std::string known;
+    for (const auto& p : key.parts) {
+      if (p.id == opt.part) {
+        key.parts = {p};
+        known.clear();
+        break;
+      }
+      known += (known.empty() ? "" : ", ") + p.id;
+    }
+    if (!known.empty()) {
+      throw InputError(fmt::format("--part: problem {} has no part '{}' (parts: {})", problem.id,
+                                   opt.part, known));
+    }
+  }
+  fmt::print("{}", render(key, format_from_name(opt.format)));
+  return kExitOk;
+}
+
+}  // namespace wobble::cli

@@ -1,0 +1,32 @@
+#pragma once
+/// @file
+/// The subcommands of `wobble`. Exit codes (README, "Exit codes"): 0 success, 1 a check found a
+/// difference, 2 bad usage or input (one line on stderr), 3 an internal error (a bug).
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+namespace wobble::cli {
+
+inline constexpr int kExitOk = 0, kExitDifference = 1, kExitBadInput = 2, kExitInternal = 3;
+
+struct ListOptions {};
+void setup_list(CLI::App& app, ListOptions& opt);
+int run_list(const ListOptions& opt);
+
+struct SolveOptions {
+  std::string problem;
+  std::vector<std::string> sets;
+  std::string format = "text";
+  std::string part;
+};
+void setup_solve(CLI::App& app, SolveOptions& opt);
+int run_solve(const SolveOptions& opt);
+
+struct KeysOptions {
+  bool check = false, update = false;
+};
+void setup_keys(CLI::App& app, KeysOptions& opt);
+int run_keys(const KeysOptions& opt);
+
+}  // namespace wobble::cli

@@ -1,0 +1,56 @@
+// wobble: worked, checked answers for rigid-body rotation problems.
+// Parses the command line, runs one subcommand, and turns every failure into one line on stderr
+// and an exit code (commands.hpp).
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "cli/commands.hpp"
+#include "problem/problem.hpp"
+
+int main(int argc, char** argv) {
+  using namespace wobble::cli;
+  CLI::App app{"wobble: worked, checked answers for rigid-body rotation problems", "wobble"};
+  app.set_version_flag("--version", std::string("wobble ") + WOBBLE_VERSION);
+  app.require_subcommand(1);
+
+  ListOptions list_opt;
+  SolveOptions solve_opt;
+  KeysOptions keys_opt;
+  CLI::App* list = app.add_subcommand("list", "List the problems with their titles");
+  CLI::App* solve = app.add_subcommand("solve", "Print the worked key of a problem");
+  CLI::App* keys = app.add_subcommand("keys", "Check or update the golden keys in solutions/");
+  setup_list(*list, list_opt);
+  setup_solve(*solve, solve_opt);
+  setup_keys(*keys, keys_opt);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    fmt::print(stderr, "wobble: {}\n", e.what());
+    return kExitBadInput;
+  }
+
+  try {
+    if (list->parsed()) return run_list(list_opt);
+    if (solve->parsed()) return run_solve(solve_opt);
+    if (keys->parsed()) return run_keys(keys_opt);
+  } catch (const wobble::InputError& e) {
+    fmt::print(stderr, "wobble: {}\n", e.what());
+    return kExitBadInput;
+  } catch (const std::logic_error& e) {
+    fmt::print(stderr, "wobble: internal error (please report): {}\n", e.what());
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "wobble: {}\n", e.what());
+    return kExitBadInput;
+  }
+  return kExitInternal;
+}

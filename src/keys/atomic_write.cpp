@@ -1,0 +1,47 @@
+#include "keys/atomic_write.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace wobble {
+
+void write_atomically(const std::filesystem::path& target, const std::string& content) {
+  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
+  std::string tmpl = (dir / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
+  const int fd = ::mkstemp(tmpl.data());
+  auto fail = [&](const std::string& what) {
+    const std::string why = std::strerror(errno);
+    if (fd >= 0) {
+      ::close(fd);
+      ::unlink(tmpl.c_str());
+    }
+    throw std::runtime_error(target.string() + ": cannot " + what + ": " + why);
+  };
+  if (fd < 0) fail("create a temporary file");
+  std::size_t written = 0;
+  while (written < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail("write");
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::fchmod(fd, 0644) != 0 || ::fsync(fd) != 0) fail("flush");
+  if (::close(fd) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmpl.c_str());
+    throw std::runtime_error(target.string() + ": cannot close: " + why);
+  }
+  if (::rename(tmpl.c_str(), target.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmpl.c_str());
+    throw std::runtime_error(target.string() + ": cannot replace: " + why);
+  }
+}
+
+}  // namespace wobble

@@ -1,0 +1,14 @@
+#pragma once
+/// @file
+/// Writing a file so that readers see the old content or the new, never a part: the content
+/// goes to a temporary file in the same folder, is flushed to disk, then renamed over the target.
+#include <filesystem>
+#include <string>
+
+namespace wobble {
+
+/// @throws std::runtime_error naming the file if any step fails; the temporary is removed and
+///         the target is left as it was.
+void write_atomically(const std::filesystem::path& target, const std::string& content);
+
+}  // namespace wobble

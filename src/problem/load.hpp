@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Reading problem files (TOML; schema in README, "Problem files").
+///
+/// Every error is an InputError whose message starts "FILE:LINE: FIELD:" (or "FILE: FIELD:"
+/// where no line is known) and says what was expected and what was found: a malformed file, a
+/// missing or mistyped field, an unknown key (a typo must not be ignored silently), a bad range.
+/// Expressions are checked later, by the solver, against the parameters.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "problem/problem.hpp"
+
+namespace wobble {
+
+/// @throws InputError as described above, or if the file cannot be read.
+Problem load_problem(const std::filesystem::path& file);
+
+/// The folder of the problem catalog: $WOBBLE_PROBLEMS if set, else the source tree's problems/.
+std::filesystem::path problems_dir();
+
+/// Resolves "ID" (a file ID.toml in problems_dir()) or a path to a .toml file, and loads it.
+/// @throws InputError for an unknown id (listing the known ones) or an unreadable file.
+Problem find_problem(const std::string& id_or_file);
+
+/// Every problem of the catalog, sorted by id; each file's id must equal its file name.
+/// @throws InputError for the first bad file.
+std::vector<Problem> load_catalog();
+
+}  // namespace wobble

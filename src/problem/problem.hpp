@@ -1,0 +1,84 @@
+#pragma once
+/// @file
+/// A problem as data: what a `problems/<id>.toml` file holds (see README, "Problem files").
+///
+/// Expressions (masses, positions, sizes, tensor entries) are kept as text here; a solver
+/// parses them against the parameters' symbol table, so every message can name its field.
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "symbolic/expression.hpp"
+
+namespace wobble {
+
+/// Bad input from a user (file, option or value): the command line reports what() and exits 2.
+struct InputError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+/// An interval of allowed values, read from text such as "(0, inf)" or "[0, pi/2)".
+struct Interval {
+  double lo = 0.0, hi = 0.0;
+  bool lo_open = true, hi_open = true;
+  std::string text;
+  bool contains(double x) const;
+};
+
+struct Parameter {
+  std::string name;         ///< identifier used in expressions and in --set
+  std::string latex;        ///< LaTeX spelling, e.g. "\\alpha", "d_1"
+  std::string unit;         ///< SI unit: "kg", "m", "rad", ...
+  std::string description;  ///< one line
+  double default_value = 0.0;
+  Interval range;
+  bool is_angle() const { return unit == "rad"; }
+};
+
+struct MassSpec {
+  std::string mass;
+  std::array<std::string, 3> at;
+};
+
+struct ShapeSpec {
+  std::string shape;                     ///< "box", "disc", ... (core/shapes.hpp)
+  std::string mass;
+  std::vector<std::string> sizes;        ///< in the order of shape_size_names
+  std::array<std::string, 3> center{"0", "0", "0"};  ///< centre of mass, from the origin
+};
+
+struct BodySpec {
+  std::vector<MassSpec> masses;
+  std::vector<ShapeSpec> shapes;
+  std::optional<std::array<std::array<std::string, 3>, 3>> tensor;  ///< given directly, about O
+};
+
+struct AnswerSpec {
+  std::string name;      ///< the name in the key (JSON)
+  std::string quantity;  ///< what the solver computes for it (defaults to name)
+};
+
+struct PartSpec {
+  std::string id;
+  std::string question;
+  std::vector<AnswerSpec> answers;
+};
+
+struct Problem {
+  std::string id, title, source, statement, solver;
+  std::vector<std::string> notes;  ///< conventions or choices the key must state
+  std::vector<Parameter> parameters;
+  BodySpec body;
+  std::vector<PartSpec> parts;
+  std::filesystem::path file;
+
+  /// @throws InputError naming the unknown parameter (and the known ones).
+  const Parameter& parameter(const std::string& name) const;
+  /// A symbol table with one symbol per parameter (positive if its range excludes negatives).
+  sym::SymbolTable symbol_table() const;
+};
+
+}  // namespace wobble

@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// Parameter values: the defaults of a problem, overridden by `--set NAME=VALUE`.
+///
+/// A value is a number or a constant expression in SI ("0.5", "pi/6", "sqrt(2)/10"); an angle
+/// (a parameter whose unit is rad) may also be given in degrees with a `deg` suffix ("30deg").
+/// Every value must be finite and inside the parameter's range.
+#include <string>
+#include <vector>
+
+#include "problem/problem.hpp"
+
+namespace wobble {
+
+/// Reads one value for parameter p. `field` names the source in messages ("--set alpha").
+/// @throws InputError naming the field and the text: not a number, not finite, out of range.
+double parse_parameter_value(const Parameter& p, const std::string& text, const std::string& field);
+
+/// The problem's defaults with the assignments "NAME=VALUE" applied in order.
+/// @throws InputError for a malformed assignment, an unknown name or a bad value.
+sym::Values parameter_values(const Problem& problem, const std::vector<std::string>& assignments);
+
+/// Reads an interval "(lo, hi)", "[lo, hi]", half-open either way; bounds are constant
+/// expressions, `inf` or `-inf`. @throws InputError naming the field.
+Interval parse_interval(const std::string& text, const std::string& field);
+
+}  // namespace wobble

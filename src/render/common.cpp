@@ -1,0 +1,142 @@
+#include "render/common.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <vector>
+
+#include "solvers/exact_answer.hpp"
+
+namespace wobble::detail {
+
+namespace {
+const std::map<std::string, std::string>& greek() {
+  static const std::map<std::string, std::string> g{
+      {"alpha", "α"}, {"beta", "β"},   {"gamma", "γ"}, {"delta", "δ"}, {"theta", "θ"},
+      {"lambda", "λ"}, {"mu", "μ"},    {"rho", "ρ"},   {"sigma", "σ"}, {"phi", "φ"},
+      {"psi", "ψ"},   {"omega", "ω"}, {"Omega", "Ω"}, {"Pi", "π"},    {"pi", "π"}};
+  return g;
+}
+
+std::string superscript(const std::string& digits) {
+  static const char* sup[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string out;
+  for (char c : digits) out += c == '-' ? "⁻" : sup[c - '0'];
+  return out;
+}
+}  // namespace
+
+std::string pretty(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    const char c = s[i];
+    if (std::isalpha(static_cast<unsigned char>(c))) {
+      std::size_t j = i;
+      while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
+      const std::string word = s.substr(i, j - i);
+      auto it = greek().find(word);
+      if (word == "sqrt") {
+        out += "√";
+      } else {
+        out += it == greek().end() ? word : it->second;
+      }
+      i = j;
+    } else if (c == '^' && i + 1 < s.size() &&
+               (std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
+      std::size_t j = i + 1;
+      while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) ++j;
+      out += superscript(s.substr(i + 1, j - i - 1));
+      i = j;
+    } else if (c == '*') {
+      out += "·";
+      ++i;
+    } else {
+      out += c;
+      ++i;
+    }
+  }
+  return out;
+}
+
+std::string unit_text(const std::string& unit) { return pretty(unit).empty() ? "" : " " + pretty(unit); }
+
+std::string unit_latex(const std::string& unit) {
+  if (unit.empty()) return "";
+  std::string out = "\\,\\mathrm{";
+  for (std::size_t i = 0; i < unit.size(); ++i) {
+    if (unit[i] == ' ') {
+      out += "\\,";
+    } else if (unit[i] == '^') {
+      std::size_t j = i + 1;
+      while (j < unit.size() && (std::isdigit(static_cast<unsigned char>(unit[j])) || unit[j] == '-')) ++j;
+      out += "^{" + unit.substr(i + 1, j - i - 1) + "}";
+      i = j - 1;
+    } else {
+      out += unit[i];
+    }
+  }
+  return out + "}";
+}
+
+std::string value_text(const Value& v, const std::string& indent) {
+  if (v.shape == Value::Shape::scalar) return format_number(v.data.at(0));
+  if (v.shape == Value::Shape::vector) {
+    std::string s = "(";
+    for (std::size_t i = 0; i < v.data.size(); ++i) s += (i ? ", " : "") + format_number(v.data[i]);
+    return s + ")";
+  }
+  std::vector<std::size_t> width(v.cols, 0);
+  for (std::size_t i = 0; i < v.rows; ++i) {
+    for (std::size_t j = 0; j < v.cols; ++j) {
+      width[j] = std::max(width[j], format_number(v.at(i, j)).size());
+    }
+  }
+  std::string s;
+  for (std::size_t i = 0; i < v.rows; ++i) {
+    s += (i ? "\n" + indent : "") + "[";
+    for (std::size_t j = 0; j < v.cols; ++j) {
+      const std::string n = format_number(v.at(i, j));
+      s += " " + std::string(width[j] - n.size(), ' ') + n;
+    }
+    s += " ]";
+  }
+  return s;
+}
+
+std::string value_latex(const Value& v) {
+  if (v.shape == Value::Shape::scalar) return format_number(v.data.at(0));
+  std::string s = "\\begin{pmatrix}";
+  for (std::size_t i = 0; i < v.rows; ++i) {
+    for (std::size_t j = 0; j < v.cols; ++j) s += (j ? " & " : " ") + format_number(v.at(i, j));
+    s += i + 1 < v.rows ? " \\\\" : "";
+  }
+  return s + " \\end{pmatrix}";
+}
+
+std::string latex_text(const std::string& s) {
+  static const std::vector<std::pair<std::string, std::string>> map{
+      {"\\", "\\textbackslash{}"}, {"&", "\\&"}, {"%", "\\%"}, {"#", "\\#"}, {"_", "\\_"},
+      {"{", "\\{"}, {"}", "\\}"}, {"~", "\\textasciitilde{}"}, {"^", "\\textasciicircum{}"},
+      {"Σ", "$\\Sigma$"}, {"∫", "$\\int$"}, {"δ", "$\\delta$"}, {"λ", "$\\lambda$"},
+      {"θ", "$\\theta$"}, {"α", "$\\alpha$"}, {"β", "$\\beta$"}, {"γ", "$\\gamma$"},
+      {"ω", "$\\omega$"}, {"Ω", "$\\Omega$"}, {"π", "$\\pi$"}, {"φ", "$\\phi$"}, {"ψ", "$\\psi$"},
+      {"²", "$^2$"}, {"³", "$^3$"}, {"ᵀ", "$^T$"}, {"−", "$-$"}, {"×", "$\\times$"},
+      {"±", "$\\pm$"}, {"·", "$\\cdot$"}, {"√", "$\\surd$"}, {"—", "---"}, {"–", "--"},
+      {"≥", "$\\geq$"}, {"≤", "$\\leq$"}, {"→", "$\\to$"}};
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    bool matched = false;
+    for (const auto& [from, to] : map) {
+      if (s.compare(i, from.size(), from) == 0) {
+        out += to;
+        i += from.size();
+        matched = true;
+        break;
+      }
+    }
+    if (!matched) out += s[i++];
+  }
+  return out;
+}
+
+}  // namespace wobble::detail

@@ -1,0 +1,25 @@
+#pragma once
+/// @file
+/// Helpers shared by the renderers (not part of the public interface of render/).
+#include <string>
+
+#include "solvers/key.hpp"
+
+namespace wobble::detail {
+
+/// GiNaC text made pleasant for a terminal: m*a^2 -> m·a², sqrt( -> √(, alpha -> α, Pi -> π.
+std::string pretty(const std::string& ginac_text);
+
+/// A unit for display: "kg m^2" -> "kg m²" (text) or "\mathrm{kg\,m^{2}}" (LaTeX).
+std::string unit_text(const std::string& unit);
+std::string unit_latex(const std::string& unit);
+
+/// Numbers of a value: "3.5", "(1, 0, 0)", or matrix rows, one per line with the given indent.
+std::string value_text(const Value& v, const std::string& indent);
+/// A value as LaTeX: a number or a pmatrix (vectors as columns).
+std::string value_latex(const Value& v);
+
+/// Plain text with Unicode symbols for LaTeX text mode: escapes specials, maps Σ -> $\Sigma$ ...
+std::string latex_text(const std::string& s);
+
+}  // namespace wobble::detail

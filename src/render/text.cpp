@@ -1,0 +1,60 @@
+#include <fmt/format.h>
+
+#include "render/common.hpp"
+#include "render/render.hpp"
+#include "solvers/exact_answer.hpp"
+
+namespace wobble {
+
+namespace {
+// Statement Markdown for a terminal: $...$ delimiters dropped, a few LaTeX commands as Unicode.
+std::string plain_statement(const std::string& md) {
+  static const std::vector<std::pair<std::string, std::string>> commands{
+      {"\\alpha", "α"}, {"\\beta", "β"}, {"\\theta", "θ"}, {"\\omega", "ω"}, {"\\pi", "π"},
+      {"\\times", "×"}, {"\\cdot", "·"}, {"\\sqrt", "√"},  {"\\lambda", "λ"}, {"\\,", " "},
+      {"^2", "²"},      {"^3", "³"},     {"**", ""},       {"$", ""}};
+  std::string s = md;
+  for (const auto& [from, to] : commands) {
+    for (std::size_t p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size())) {
+      s.replace(p, from.size(), to);
+    }
+  }
+  return s;
+}
+}  // namespace
+
+std::string render_text(const Key& key) {
+  using detail::pretty;
+  std::string out = fmt::format("{}  [{}]\n", key.title, key.problem);
+  if (!key.source.empty()) out += "Source: " + key.source + "\n";
+  out += "\n" + plain_statement(key.statement);
+  if (out.back() != '\n') out += "\n";
+  out += "\nParameters:";
+  for (const auto& p : key.parameters) {
+    out += fmt::format(" {} = {}{};", pretty(p.name), format_number(p.value), detail::unit_text(p.unit));
+  }
+  out.back() = '\n';
+  for (const auto& part : key.parts) {
+    out += fmt::format("\n({}) {}\n", part.id, part.question);
+    for (const auto& a : part.answers) {
+      const std::string lead = "    " + a.name + " = ";
+      if (!a.symbolic.empty()) out += lead + pretty(a.symbolic) + "\n";
+      const std::string eq = a.symbolic.empty() ? lead : std::string(lead.size() - 2, ' ') + "= ";
+      const std::string indent(eq.size(), ' ');
+      out += eq + detail::value_text(a.value, indent) + detail::unit_text(a.unit) + "\n";
+      for (const auto& n : a.notes) out += "      note: " + n + "\n";
+    }
+    if (!part.steps.empty()) {
+      out += "  Steps:\n";
+      for (std::size_t i = 0; i < part.steps.size(); ++i) {
+        const auto& s = part.steps[i];
+        out += fmt::format("   {}. {}\n", i + 1, s.text.empty() ? s.latex : pretty(s.text));
+      }
+    }
+  }
+  out += "\nConventions:\n";
+  for (const auto& n : key.notes) out += "  - " + n + "\n";
+  return out;
+}
+
+}  // namespace wobble

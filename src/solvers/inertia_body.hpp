@@ -1,0 +1,29 @@
+#pragma once
+/// @file
+/// A problem's body, built twice from its file: exactly (GiNaC) and numerically (core), so the
+/// solver can answer from the exact form and check it against an independent computation.
+#include <string>
+#include <vector>
+
+#include "core/inertia.hpp"
+#include "problem/problem.hpp"
+#include "solvers/key.hpp"
+#include "symbolic/inertia_sym.hpp"
+
+namespace wobble {
+
+struct InertiaBody {
+  bool has_mass = true;           ///< false for a tensor given directly (no mass, no centre)
+  sym::SymMassProperties exact;   ///< entries exact in the parameters
+  MassProperties numeric;         ///< from the evaluated inputs through core/
+  std::vector<Step> steps;        ///< how the tensor about O is assembled
+  std::string description;        ///< one line: "3 point masses", "a box of mass M", ...
+};
+
+/// @throws InputError naming the field: a malformed expression or undefined symbol; a mass or
+///   size that is not > 0 at the values; coinciding point masses; an unknown shape; a tensor
+///   that is not symmetric or violates positivity or the triangle inequality.
+InertiaBody build_inertia_body(const Problem& problem, const sym::SymbolTable& table,
+                               const sym::Values& values);
+
+}  // namespace wobble

@@ -1,0 +1,151 @@
+#include "solvers/inertia_solver.hpp"
+
+#include <fmt/format.h>
+#include <functional>
+#include <limits>
+#include <map>
+#include <optional>
+
+#include "solvers/inertia_body.hpp"
+#include "solvers/principal_answers.hpp"
+#include "symbolic/canonical_print.hpp"
+
+namespace wobble {
+
+namespace {
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// Everything the quantities are computed from, built once per key.
+struct Context {
+  const Problem& problem;
+  sym::SymbolTable table;
+  ExactContext exact;
+  InertiaBody body;
+  // Lazily computed shared results.
+  std::optional<GiNaC::matrix> I_cm_exact;
+  std::optional<PrincipalAnswers> about_O, about_cm;
+};
+
+struct Computed {
+  Answer answer;
+  std::vector<Step> steps;
+};
+
+void require_mass(const Context& c, const std::string& quantity) {
+  if (!c.body.has_mass) {
+    throw InputError(fmt::format("{}: '{}' needs a body with mass; the tensor is given directly",
+                                 c.problem.file.string(), quantity));
+  }
+}
+
+// The exact tensor about O must match core's numeric one. Each entry is a sum over N bodies of
+// products carrying relative error <= 4 eps, each bounded by trace(I); so |diff| <= 4 (N+2) eps tr.
+void check_against_numeric(const GiNaC::matrix& exact, const Mat3& numeric, const Context& c,
+                           const std::string& name) {
+  const std::size_t parts = c.problem.body.masses.size() + c.problem.body.shapes.size();
+  const double tol = 4.0 * static_cast<double>(parts + 2) * kEps * std::max(numeric.trace(), 1e-300);
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = 0; j < 3; ++j) {
+      const double v = sym::evaluate(exact(i, j), c.exact.at, name);
+      if (std::abs(v - numeric(i, j)) > tol) {
+        throw std::logic_error(fmt::format("{}[{}][{}]: exact {} but numeric {}", name, i, j, v,
+                                           numeric(i, j)));
+      }
+    }
+  }
+}
+
+const GiNaC::matrix& I_cm_exact(Context& c) {
+  if (!c.I_cm_exact) {
+    const auto& e = c.body.exact;
+    c.I_cm_exact = sym::normalized(e.I_O.sub(sym::parallel_axis_term(e.mass, e.r_cm)));
+  }
+  return *c.I_cm_exact;
+}
+
+Mat3 I_cm_numeric(const Context& c) {
+  const auto& n = c.body.numeric;
+  return shift_to_cm(n.I_O, n.mass_kg, n.r_cm_m);
+}
+
+const PrincipalAnswers& principal(Context& c, bool about_cm) {
+  auto& slot = about_cm ? c.about_cm : c.about_O;
+  if (!slot) {
+    const std::string suffix = about_cm ? "_cm" : "";
+    slot = about_cm ? principal_answers(I_cm_exact(c), I_cm_numeric(c), "principal_moments" + suffix,
+                                        "principal_axes" + suffix, c.exact)
+                    : principal_answers(c.body.exact.I_O, c.body.numeric.I_O, "principal_moments",
+                                        "principal_axes", c.exact);
+  }
+  return *slot;
+}
+
+Computed compute(Context& c, const std::string& quantity) {
+  const auto& t = c.table;
+  if (quantity == "mass") {
+    require_mass(c, quantity);
+    return {exact_scalar(quantity, c.body.exact.mass, "kg", c.exact),
+            {{"M = Σ m = " + sym::to_text(c.body.exact.mass, t), ""}}};
+  }
+  if (quantity == "I") {
+    check_against_numeric(c.body.exact.I_O, c.body.numeric.I_O, c, quantity);
+    Computed out{exact_matrix(quantity, c.body.exact.I_O, "kg m^2", c.exact), c.body.steps};
+    out.steps.push_back({"Tensor about the origin: I = " + out.answer.symbolic,
+                         "I = " + out.answer.latex});
+    return out;
+  }
+  if (quantity == "center_of_mass") {
+    require_mass(c, quantity);
+    const auto& r = c.body.exact.r_cm;
+    Computed out{exact_vector(quantity, {r[0], r[1], r[2]}, "m", c.exact), {}};
+    out.steps.push_back({"r_cm = Σ m r / Σ m = " + out.answer.symbolic,
+                         "r_{\\mathrm{cm}} = \\frac{\\sum_p m_p r_p}{\\sum_p m_p} = " +
+                             out.answer.latex});
+    return out;
+  }
+  if (quantity == "I_cm") {
+    require_mass(c, quantity);
+    const auto& exact = I_cm_exact(c);
+    check_against_numeric(exact, I_cm_numeric(c), c, quantity);
+    Computed out{exact_matrix(quantity, exact, "kg m^2", c.exact), {}};
+    out.steps.push_back({"Parallel-axis theorem, from O to the centre of mass: I_cm = I_O − M "
+                         "(|r_cm|² 1 − r_cm r_cmᵀ)",
+                         "I_{\\mathrm{cm}} = I_O - M\\left(|r_{\\mathrm{cm}}|^2\\,\\mathbb{1} - "
+                         "r_{\\mathrm{cm}}\\,r_{\\mathrm{cm}}^{T}\\right)"});
+    out.steps.push_back({"I_cm = " + out.answer.symbolic, "I_{\\mathrm{cm}} = " + out.answer.latex});
+    return out;
+  }
+  for (const bool cm : {false, true}) {
+    const std::string suffix = cm ? "_cm" : "";
+    if (quantity != "principal_moments" + suffix && quantity != "principal_axes" + suffix) continue;
+    if (cm) require_mass(c, quantity);
+    const auto& p = principal(c, cm);
+    if (quantity == "principal_moments" + suffix) return {p.moments, p.moment_steps};
+    return {p.axes, p.axis_steps};
+  }
+  throw InputError(fmt::format(
+      "{}: unknown quantity '{}' for the inertia solver (known: mass, I, center_of_mass, I_cm, "
+      "principal_moments, principal_axes, principal_moments_cm, principal_axes_cm)",
+      c.problem.file.string(), quantity));
+}
+}  // namespace
+
+Key solve_inertia(const Problem& problem, const sym::Values& values) {
+  Context c{problem, problem.symbol_table(), {c.table, {}}, {}, {}, {}, {}};
+  c.exact.at = sym::substitution(c.table, values);
+  c.body = build_inertia_body(problem, c.table, values);
+  Key key;
+  for (const auto& part : problem.parts) {
+    PartKey pk{part.id, part.question, {}, {}};
+    for (const auto& spec : part.answers) {
+      Computed q = compute(c, spec.quantity);
+      q.answer.name = spec.name;
+      pk.answers.push_back(std::move(q.answer));
+      pk.steps.insert(pk.steps.end(), q.steps.begin(), q.steps.end());
+    }
+    key.parts.push_back(std::move(pk));
+  }
+  return key;
+}
+
+}  // namespace wobble

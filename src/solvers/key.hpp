@@ -1,0 +1,67 @@
+#pragma once
+/// @file
+/// A solution key: one data structure, rendered by render/ as text, Markdown, LaTeX and JSON.
+///
+/// Each answer has a name, its exact symbolic form (GiNaC-readable text, and LaTeX; empty where
+/// only a numeric value exists, with a note saying why), its value at the parameter values and
+/// its SI unit. Vectors and matrices are symbolic as "[x, y, z]" and "[[..], [..], [..]]" whose
+/// entries GiNaC reads (sym::parse_symbolic_value reads the whole back).
+#include <string>
+#include <vector>
+
+namespace wobble {
+
+/// A scalar, a vector or a matrix of doubles (row-major).
+struct Value {
+  enum class Shape { scalar, vector, matrix };
+  Shape shape = Shape::scalar;
+  std::size_t rows = 1, cols = 1;
+  std::vector<double> data;
+
+  static Value scalar(double x) { return {Shape::scalar, 1, 1, {x}}; }
+  static Value vector(std::vector<double> v) {
+    const std::size_t n = v.size();
+    return {Shape::vector, n, 1, std::move(v)};
+  }
+  static Value matrix(std::size_t rows, std::size_t cols, std::vector<double> rowmajor) {
+    return {Shape::matrix, rows, cols, std::move(rowmajor)};
+  }
+  double at(std::size_t i, std::size_t j) const { return data[i * cols + j]; }
+  /// The largest magnitude of the entries (the scale for comparisons).
+  double scale() const;
+};
+
+struct Answer {
+  std::string name;
+  std::string symbolic;  ///< GiNaC text; empty if numeric only
+  std::string latex;     ///< LaTeX of the symbolic form (or of the value if numeric only)
+  Value value;
+  std::string unit;      ///< SI unit, "" for dimensionless
+  std::vector<std::string> notes;
+};
+
+struct Step {
+  std::string text;   ///< plain text (Unicode allowed)
+  std::string latex;  ///< LaTeX math, may be empty
+};
+
+struct PartKey {
+  std::string id;
+  std::string question;
+  std::vector<Answer> answers;
+  std::vector<Step> steps;
+};
+
+struct ParameterValue {
+  std::string name, latex, unit, description;
+  double value = 0.0;
+};
+
+struct Key {
+  std::string problem, title, source, statement;
+  std::vector<std::string> notes;  ///< conventions and choices, printed with every key
+  std::vector<ParameterValue> parameters;
+  std::vector<PartKey> parts;
+};
+
+}  // namespace wobble

@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// The principal moments and axes of a tensor as answers: exact where a closed form exists
+/// (symbolic/principal_sym.hpp), numeric otherwise, always checked against core's solver, in the
+/// canonical order and signs of core/principal_axes.hpp.
+#include <string>
+#include <vector>
+
+#include "core/inertia.hpp"
+#include "solvers/exact_answer.hpp"
+
+namespace wobble {
+
+struct PrincipalAnswers {
+  Answer moments;  ///< ascending
+  Answer axes;     ///< columns e1, e2, e3
+  std::vector<Step> moment_steps;
+  std::vector<Step> axis_steps;
+};
+
+/// @param point "O" or "cm", for the wording of steps and notes
+/// @throws std::logic_error if the exact and numeric routes disagree beyond rounding (a bug)
+PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_numeric,
+                                   const std::string& moments_name, const std::string& axes_name,
+                                   const ExactContext& ctx);
+
+}  // namespace wobble

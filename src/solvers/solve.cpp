@@ -1,0 +1,42 @@
+#include "solvers/solve.hpp"
+
+#include <fmt/format.h>
+
+#include "solvers/inertia_solver.hpp"
+
+namespace wobble {
+
+std::vector<std::string> solver_names() { return {"inertia"}; }
+
+std::vector<std::string> key_conventions() {
+  return {
+      "SI units; angles in radians.",
+      "Inertia tensor I_ij = Σ m (|r|² δ_ij − r_i r_j), so L = I ω (products of inertia carry a "
+      "minus sign).",
+      "Principal moments in ascending order; axes as unit columns e1, e2, e3, e1 and e2 with their "
+      "largest-magnitude component positive, e3 = e1 × e2 (right-handed).",
+  };
+}
+
+Key solve(const Problem& problem, const sym::Values& values) {
+  Key key;
+  if (problem.solver == "inertia") {
+    key = solve_inertia(problem, values);
+  } else {
+    throw InputError(fmt::format("{}: solver: unknown solver '{}' (known: {})",
+                                 problem.file.string(), problem.solver,
+                                 fmt::join(solver_names(), ", ")));
+  }
+  key.problem = problem.id;
+  key.title = problem.title;
+  key.source = problem.source;
+  key.statement = problem.statement;
+  key.notes = problem.notes;
+  for (const auto& c : key_conventions()) key.notes.push_back(c);
+  for (const auto& p : problem.parameters) {
+    key.parameters.push_back({p.name, p.latex, p.unit, p.description, values.at(p.name)});
+  }
+  return key;
+}
+
+}  // namespace wobble

@@ -1,0 +1,238 @@
+#include "symbolic/canonical_print.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <vector>
+
+namespace wobble::sym {
+
+namespace {
+using GiNaC::ex;
+using GiNaC::is_a;
+using GiNaC::numeric;
+
+enum class Style { text, latex };
+
+// GiNaC's numeric has no to_string; its stream output of an integer is the plain digits.
+std::string str(const numeric& n) {
+  std::ostringstream s;
+  s << n;
+  return s.str();
+}
+
+// Binding strength of the printed form, to decide on parentheses.
+enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
+
+class Printer {
+ public:
+  Printer(const SymbolTable& table, Style style) : table_(table), style_(style) {}
+
+  std::string print(const ex& e) { return print_prec(e).first; }
+
+ private:
+  const SymbolTable& table_;
+  Style style_;
+
+  bool latex() const { return style_ == Style::latex; }
+
+  std::string paren(const std::string& s) const {
+    return latex() ? "\\left(" + s + "\\right)" : "(" + s + ")";
+  }
+
+  std::pair<std::string, int> print_prec(const ex& e) {
+    if (is_a<numeric>(e)) return print_numeric(GiNaC::ex_to<numeric>(e));
+    if (is_a<GiNaC::symbol>(e)) return {print_symbol(e), kAtom};
+    if (is_a<GiNaC::constant>(e)) {
+      if (e.is_equal(GiNaC::Pi)) return {latex() ? "\\pi" : "Pi", kAtom};
+      throw std::invalid_argument("canonical_print: unsupported constant");
+    }
+    if (is_a<GiNaC::add>(e)) return {print_sum(e), kSum};
+    if (is_a<GiNaC::mul>(e) || is_a<GiNaC::power>(e)) return print_product(e);
+    if (is_a<GiNaC::function>(e)) return {print_function(e), kAtom};
+    throw std::invalid_argument(std::string("canonical_print: unsupported expression ") +
+                                GiNaC::ex_to<GiNaC::basic>(e).class_name());
+  }
+
+  std::pair<std::string, int> print_numeric(const numeric& n) {
+    if (!n.is_real()) throw std::invalid_argument("canonical_print: complex number");
+    if (n.is_integer()) {
+      std::string s = str(n);
+      return {s, n.is_negative() ? kSum : kAtom};
+    }
+    if (n.is_rational()) {
+      const std::string num = str(n.numer()), den = str(n.denom());
+      if (latex()) {
+        const bool neg = n.is_negative();
+        const std::string body = "\\frac{" + (neg ? num.substr(1) : num) + "}{" + den + "}";
+        return {neg ? "-" + body : body, neg ? kSum : kAtom};
+      }
+      return {num + "/" + den, kProduct};
+    }
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", n.to_double());
+    return {buf, n.is_negative() ? kSum : kAtom};
+  }
+
+  std::string print_symbol(const ex& e) const {
+    const std::string name = GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+    return latex() ? table_.latex_of(name) : name;
+  }
+
+  std::string print_function(const ex& e) {
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    std::string args;
+    for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? "," : "") + print(e.op(i));
+    if (!latex()) return name + "(" + args + ")";
+    static const std::map<std::string, std::string> known{
+        {"sin", "\\sin"},   {"cos", "\\cos"}, {"tan", "\\tan"}, {"atan", "\\arctan"},
+        {"asin", "\\arcsin"}, {"acos", "\\arccos"}, {"exp", "\\exp"}, {"log", "\\ln"},
+        {"atan2", "\\operatorname{atan2}"}};
+    if (name == "abs") return "\\left|" + args + "\\right|";
+    auto it = known.find(name);
+    return (it == known.end() ? "\\operatorname{" + name + "}" : it->second) + paren(args);
+  }
+
+  // A sum: positive terms first, then by the text of the term's magnitude.
+  std::string print_sum(const ex& e) {
+    struct Term {
+      bool negative;
+      std::string key;
+      std::string magnitude;
+    };
+    std::vector<Term> terms;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      const ex t = e.op(i);
+      const bool negative = coefficient(t).is_negative();
+      const ex mag = negative ? -t : t;
+      Printer text(table_, Style::text);
+      std::string key = is_a<numeric>(mag) ? "~" + text.print(mag) : text.print(mag);
+      terms.push_back({negative, key, print(mag)});
+    }
+    std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) {
+      return std::tie(a.negative, a.key) < std::tie(b.negative, b.key);
+    });
+    std::string out;
+    for (std::size_t i = 0; i < terms.size(); ++i) {
+      if (i == 0) {
+        out = (terms[i].negative ? "-" : "") + terms[i].magnitude;
+      } else {
+        out += (terms[i].negative ? " - " : " + ") + terms[i].magnitude;
+      }
+    }
+    return out;
+  }
+
+  static numeric coefficient(const ex& t) {
+    if (is_a<numeric>(t)) return GiNaC::ex_to<numeric>(t);
+    if (is_a<GiNaC::mul>(t)) {
+      numeric c = 1;
+      for (std::size_t i = 0; i < t.nops(); ++i) {
+        if (is_a<numeric>(t.op(i))) c *= GiNaC::ex_to<numeric>(t.op(i));
+      }
+      return c;
+    }
+    return 1;
+  }
+
+  // Sort rank of a factor: symbols by declaration order, then everything else by text.
+  std::tuple<int, std::size_t, std::string> factor_rank(const ex& base) {
+    Printer text(table_, Style::text);
+    if (is_a<GiNaC::symbol>(base)) {
+      return {0, table_.order_of(GiNaC::ex_to<GiNaC::symbol>(base).get_name()), ""};
+    }
+    if (is_a<GiNaC::constant>(base)) return {1, 0, ""};
+    if (is_a<GiNaC::function>(base)) return {2, 0, text.print(base)};
+    if (is_a<GiNaC::power>(base) || is_a<numeric>(base)) return {3, 0, text.print(base)};
+    return {4, 0, text.print(base)};
+  }
+
+  // A power base^n with n > 0 as printed inside a product.
+  std::string print_power(const ex& base, const numeric& n) {
+    if (n == 1) {
+      auto [s, p] = print_prec(base);
+      return p < kProduct || (p == kProduct && !latex()) ? paren(s) : s;
+    }
+    if (n == numeric(1, 2)) {
+      return latex() ? "\\sqrt{" + print(base) + "}" : "sqrt(" + print(base) + ")";
+    }
+    auto [s, p] = print_prec(base);
+    if (latex() && is_a<GiNaC::function>(base) && n.is_integer()) {
+      // \sin^{2}\left(\alpha\right), the usual spelling.
+      std::string f = s;
+      const auto open = f.find("\\left(");
+      if (open != std::string::npos) return f.substr(0, open) + "^{" + str(n) + "}" +
+                                            f.substr(open);
+    }
+    const bool wrap = p < kAtom || is_a<GiNaC::power>(base) || is_a<numeric>(base);
+    const std::string b = wrap ? paren(s) : s;
+    if (latex()) return b + "^{" + print(n) + "}";
+    return b + "^" + (n.is_integer() ? str(n) : "(" + print(n) + ")");
+  }
+
+  std::pair<std::string, int> print_product(const ex& e) {
+    numeric coeff = 1;
+    std::vector<std::pair<ex, numeric>> factors;  // base, exponent (rational)
+    auto add_factor = [&](const ex& f) {
+      if (is_a<numeric>(f)) {
+        coeff *= GiNaC::ex_to<numeric>(f);
+      } else if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1)) &&
+                 GiNaC::ex_to<numeric>(f.op(1)).is_rational()) {
+        factors.emplace_back(f.op(0), GiNaC::ex_to<numeric>(f.op(1)));
+      } else {
+        factors.emplace_back(f, numeric(1));
+      }
+    };
+    if (is_a<GiNaC::mul>(e)) {
+      for (std::size_t i = 0; i < e.nops(); ++i) add_factor(e.op(i));
+    } else {
+      add_factor(e);
+    }
+    std::stable_sort(factors.begin(), factors.end(), [&](const auto& a, const auto& b) {
+      return factor_rank(a.first) < factor_rank(b.first);
+    });
+    const bool negative = coeff.is_negative();
+    const numeric c = GiNaC::abs(coeff);
+    std::vector<std::string> num, den;
+    if (c.numer() != 1) num.push_back(str(c.numer()));
+    if (c.denom() != 1) den.push_back(str(c.denom()));
+    for (const auto& [base, n] : factors) {
+      if (n.is_positive()) {
+        num.push_back(print_power(base, n));
+      } else {
+        den.push_back(print_power(base, -n));
+      }
+    }
+    const std::string sep = latex() ? " " : "*";
+    auto join = [&](const std::vector<std::string>& parts) {
+      std::string s;
+      for (std::size_t i = 0; i < parts.size(); ++i) s += (i ? sep : "") + parts[i];
+      return s.empty() ? std::string("1") : s;
+    };
+    std::string body;
+    if (den.empty()) {
+      body = join(num);
+    } else if (latex()) {
+      body = "\\frac{" + join(num) + "}{" + join(den) + "}";
+    } else {
+      body = join(num) + "/" + (den.size() > 1 ? "(" + join(den) + ")" : den[0]);
+    }
+    if (negative) return {"-" + body, kSum};
+    const bool single = num.size() == 1 && den.empty();
+    return {body, single && factors.size() == 1 && factors[0].second == 1 ? kAtom : kProduct};
+  }
+};
+}  // namespace
+
+std::string to_text(const ex& e, const SymbolTable& table) {
+  return Printer(table, Style::text).print(e);
+}
+
+std::string to_latex(const ex& e, const SymbolTable& table) {
+  return Printer(table, Style::latex).print(e);
+}
+
+}  // namespace wobble::sym

@@ -1,0 +1,76 @@
+#pragma once
+/// @file
+/// Expressions in a problem's parameters: a symbol table, a strict parser, exact evaluation.
+///
+/// Symbols are declared with their sign (a mass or length is positive, an angle real) so that
+/// GiNaC can simplify sqrt(m^2) = m. The table keeps declaration order, which the canonical
+/// printer uses to order the factors of a product (so a key reads "m*a^2", as the file declares).
+/// `pi` and `Pi` both name the constant.
+#include <ginac/ginac.h>
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace wobble::sym {
+
+/// A malformed expression or one with an undefined symbol; what() names the field and the text.
+struct ExpressionError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+enum class SymbolSign { positive, real };
+
+class SymbolTable {
+ public:
+  /// Declares a symbol. @throws std::invalid_argument if the name is taken or not an identifier.
+  GiNaC::ex declare(const std::string& name, const std::string& latex, SymbolSign sign);
+  /// @throws std::out_of_range for an undeclared name.
+  const GiNaC::ex& at(const std::string& name) const;
+  bool contains(const std::string& name) const { return index_.count(name) != 0; }
+  /// LaTeX of a symbol (by its name); the name itself if none was given.
+  std::string latex_of(const std::string& name) const;
+  /// Position of a symbol in declaration order (for printing); size() for unknown names.
+  std::size_t order_of(const std::string& name) const;
+  std::size_t size() const { return names_.size(); }
+  const std::vector<std::string>& names() const { return names_; }
+
+  /// Parses `text` with only the declared symbols (and pi) allowed.
+  /// @throws ExpressionError "FIELD: ..." naming the field, the text and what is wrong.
+  GiNaC::ex parse(const std::string& text, const std::string& field) const;
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<GiNaC::ex> symbols_;
+  std::vector<std::string> latex_;
+  std::map<std::string, std::size_t> index_;
+};
+
+/// Values of the parameters, by name (SI).
+using Values = std::map<std::string, double>;
+
+/// Substitution list (symbol == value, exact rationals from the doubles) for the given values.
+GiNaC::lst substitution(const SymbolTable& table, const Values& values);
+
+/// The value of e at the parameter values, evaluated with 40 significant digits then rounded
+/// once to double, so a printed digit is right whenever the exact value rounds to it.
+/// @throws ExpressionError if e does not evaluate to a finite real number.
+double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field);
+
+/// Exact zero test after normal(): e is identically zero in the parameters.
+bool is_identically_zero(const GiNaC::ex& e);
+
+/// sqrt(e) with even powers of positive factors and square numeric factors taken out
+/// (sqrt(2*m^2*a^4) -> sqrt(2)*m*a^2), which GiNaC does not do by itself.
+GiNaC::ex simplified_sqrt(const GiNaC::ex& e);
+
+/// A neat form: normal(), then the numerator and denominator factored.
+GiNaC::ex tidy(const GiNaC::ex& e);
+
+/// The shortest of: normal(e), and normal(e) with sin^2 = 1 - cos^2 or cos^2 = 1 - sin^2 applied
+/// (GiNaC does not use the Pythagorean identity by itself). Length is that of GiNaC's printed
+/// text, which does not depend on term order, so the choice is deterministic.
+GiNaC::ex simplify(const GiNaC::ex& e);
+
+}  // namespace wobble::sym

@@ -1,0 +1,165 @@
+#include "symbolic/principal_sym.hpp"
+
+#include <cmath>
+
+#include "symbolic/expression.hpp"
+
+namespace wobble::sym {
+
+namespace {
+using GiNaC::ex;
+
+// Index pairs of the products of inertia that are not identically zero.
+std::vector<std::pair<int, int>> nonzero_products(const GiNaC::matrix& I) {
+  std::vector<std::pair<int, int>> out;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = i + 1; j < 3; ++j) {
+      if (!is_identically_zero(I(i, j))) out.emplace_back(i, j);
+    }
+  }
+  return out;
+}
+
+// Roots of the factored polynomial in lambda, if every factor has degree <= 2.
+std::optional<std::vector<ex>> roots_of(const ex& factored, const GiNaC::symbol& lambda) {
+  std::vector<ex> roots;
+  auto solve_factor = [&](const ex& f, int multiplicity) {
+    const int degree = f.degree(lambda);
+    if (degree == 0) return true;
+    if (degree > 2) return false;
+    std::vector<ex> r;
+    if (degree == 1) {
+      r.push_back(simplify(-f.coeff(lambda, 0) / f.coeff(lambda, 1)));
+    } else {
+      const ex a = f.coeff(lambda, 2), b = f.coeff(lambda, 1), c = f.coeff(lambda, 0);
+      const ex root = simplified_sqrt(simplify(b * b - 4 * a * c));
+      r.push_back(simplify(-b / (2 * a)) - root / (2 * a));
+      r.push_back(simplify(-b / (2 * a)) + root / (2 * a));
+    }
+    for (int k = 0; k < multiplicity; ++k) roots.insert(roots.end(), r.begin(), r.end());
+    return true;
+  };
+  auto solve_power_or_factor = [&](const ex& f) {
+    if (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::posint)) {
+      return solve_factor(f.op(0), GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int());
+    }
+    return solve_factor(f, 1);
+  };
+  if (GiNaC::is_a<GiNaC::mul>(factored)) {
+    for (std::size_t i = 0; i < factored.nops(); ++i) {
+      if (!solve_power_or_factor(factored.op(i))) return std::nullopt;
+    }
+  } else if (!solve_power_or_factor(factored)) {
+    return std::nullopt;
+  }
+  if (roots.size() != 3) return std::nullopt;
+  return roots;
+}
+
+SymVec3 unit(int k) {
+  SymVec3 v{0, 0, 0};
+  v[static_cast<std::size_t>(k)] = 1;
+  return v;
+}
+
+SymVec3 cross(const SymVec3& a, const SymVec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+}  // namespace
+
+SymPrincipal principal_closed_form(const GiNaC::matrix& I, const GiNaC::symbol& lambda) {
+  SymPrincipal out;
+  GiNaC::matrix shifted(3, 3);
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = 0; j < 3; ++j) shifted(i, j) = (i == j ? ex(lambda) : ex(0)) - I(i, j);
+  }
+  const ex poly = GiNaC::expand(shifted.determinant());
+  out.characteristic = GiNaC::factor(poly);
+  if (!GiNaC::is_a<GiNaC::mul>(out.characteristic) && !GiNaC::is_a<GiNaC::power>(out.characteristic)) {
+    // No factors: write it as a polynomial in lambda with simplified coefficients.
+    ex collected = 0;
+    for (int k = poly.ldegree(lambda); k <= poly.degree(lambda); ++k) {
+      collected += simplify(poly.coeff(lambda, k)) * GiNaC::pow(lambda, k);
+    }
+    out.characteristic = collected;
+  }
+
+  const auto products = nonzero_products(I);
+  if (products.empty()) {
+    out.method = SymPrincipal::Method::diagonal;
+    for (unsigned i = 0; i < 3; ++i) out.moments.push_back(I(i, i));
+    return out;
+  }
+  if (products.size() == 1) {
+    out.method = SymPrincipal::Method::block;
+    out.block_p = products[0].first;
+    out.block_q = products[0].second;
+    out.block_k = 3 - out.block_p - out.block_q;
+    const auto p = static_cast<unsigned>(out.block_p), q = static_cast<unsigned>(out.block_q);
+    const ex A = I(p, p), B = I(q, q), C = I(p, q);
+    const ex mean = simplify((A + B) / 2);
+    const ex root = simplified_sqrt(simplify(GiNaC::pow((A - B) / 2, 2) + C * C));
+    out.moments = {I(static_cast<unsigned>(out.block_k), static_cast<unsigned>(out.block_k)),
+                   mean - root, mean + root};
+    out.block_angle = GiNaC::atan2(simplify(2 * C), simplify(A - B)) / 2;
+    return out;
+  }
+  if (auto roots = roots_of(out.characteristic, lambda)) {
+    out.method = SymPrincipal::Method::factored;
+    out.moments = *roots;
+  }
+  return out;
+}
+
+std::optional<SymVec3> principal_axis_closed_form(const GiNaC::matrix& I, const SymPrincipal& p,
+                                                  std::size_t index, const GiNaC::lst& at) {
+  using M = SymPrincipal::Method;
+  if (p.method == M::numeric || index >= p.moments.size()) return std::nullopt;
+  const ex& value = p.moments[index];
+  for (std::size_t j = 0; j < p.moments.size(); ++j) {
+    if (j != index && is_identically_zero(p.moments[j] - value)) return std::nullopt;
+  }
+  if (p.method == M::diagonal) return unit(static_cast<int>(index));
+  if (p.method == M::block) {
+    if (index == 0) return unit(p.block_k);
+    SymVec3 v{0, 0, 0};
+    const ex c = GiNaC::cos(p.block_angle), s = GiNaC::sin(p.block_angle);
+    const auto bp = static_cast<std::size_t>(p.block_p), bq = static_cast<std::size_t>(p.block_q);
+    if (index == 2) {  // the larger root: (cos theta, sin theta) in the p-q plane
+      v[bp] = c;
+      v[bq] = s;
+    } else {
+      v[bp] = -s;
+      v[bq] = c;
+    }
+    return v;
+  }
+  // Factored: cross product of the two rows of I - lambda 1 that are most independent at `at`.
+  std::array<SymVec3, 3> rows;
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = 0; j < 3; ++j) rows[i][j] = I(i, j) - (i == j ? value : ex(0));
+  }
+  SymVec3 best{0, 0, 0};
+  double best_norm = -1.0;
+  for (std::size_t a = 0; a < 3; ++a) {
+    for (std::size_t b = a + 1; b < 3; ++b) {
+      SymVec3 c = cross(rows[a], rows[b]);
+      for (auto& e : c) e = simplify(e);
+      double norm = 0.0;
+      for (const auto& e : c) {
+        const double x = evaluate(e, at, "principal axis");
+        norm += x * x;
+      }
+      if (norm > best_norm) {
+        best_norm = norm;
+        best = c;
+      }
+    }
+  }
+  const ex length = simplified_sqrt(simplify(best[0] * best[0] + best[1] * best[1] +
+                                                  best[2] * best[2]));
+  for (auto& e : best) e = simplify(e / length);
+  return best;
+}
+
+}  // namespace wobble::sym
