@@ -70,7 +70,10 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
   double v = 0.0;
   try {
     v = constant_value(t, field);
-  } catch (const InputError&) {
+  } catch (const InputError& e) {
+    if (std::string(e.what()).find("not finite") != std::string::npos) {
+      throw InputError(field + ": value must be finite, got '" + text + "'");
+    }
     throw InputError(field + ": '" + text + "' is not a number" +
                      (p.is_angle() ? " (an angle: radians, or degrees as 30deg)" : ""));
   }

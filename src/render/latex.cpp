@@ -68,7 +68,8 @@ std::string render_latex(const Key& key) {
     if (!part.steps.empty()) {
       out += "\\paragraph{Steps}\n\\begin{enumerate}\n";
       for (const auto& s : part.steps) {
-        out += "\\item " + latex_text(s.text);
+        const std::string& prose = s.label.empty() || s.latex.empty() ? s.text : s.label;
+        out += "\\item " + latex_text(prose);
         if (!s.latex.empty()) out += "\\[" + s.latex + "\\]";
         out += "\n";
       }

@@ -32,8 +32,9 @@ std::string render_markdown(const Key& key) {
       out += "Steps:\n\n";
       for (std::size_t i = 0; i < part.steps.size(); ++i) {
         const auto& s = part.steps[i];
-        out += fmt::format("{}. {}", i + 1, s.text);
-        if (!s.latex.empty()) out += (s.text.empty() ? "" : " ") + std::string("$") + s.latex + "$";
+        const std::string& prose = s.label.empty() || s.latex.empty() ? s.text : s.label;
+        out += fmt::format("{}. {}", i + 1, prose);
+        if (!s.latex.empty()) out += (prose.empty() ? "" : " ") + std::string("$") + s.latex + "$";
         out += "\n";
       }
     }

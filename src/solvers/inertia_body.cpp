@@ -97,11 +97,12 @@ void add_point_masses(const Problem& problem, const Evaluator& ev, InertiaBody& 
   }
   text.pop_back();
   latex += "\\end{array}";
-  body.steps.push_back({text, latex});
+  body.steps.push_back({text, latex, "Point masses:"});
   body.steps.push_back(
       {"Each mass contributes m (|r|^2 δ_ij − r_i r_j): I_xx = Σ m (y² + z²), I_xy = −Σ m x y, "
        "and cyclically.",
-       "I_{ij} = \\sum_p m_p\\left(|r_p|^2\\delta_{ij} - r_{p,i}\\,r_{p,j}\\right)"});
+       "I_{ij} = \\sum_p m_p\\left(|r_p|^2\\delta_{ij} - r_{p,i}\\,r_{p,j}\\right)",
+       "Each mass contributes to the tensor:"});
   body.description = fmt::format("{} point masses", masses.size());
 }
 
@@ -142,26 +143,30 @@ void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
     numeric.I_O = shift_from_cm(shape_inertia_about_cm(kind, m_kg, sizes_m), m_kg, c);
     numeric_parts.push_back(numeric);
 
-    std::string size_text;
+    std::string size_text;  // "sides a, b, c" or "sides a = 2*L, b = L, c = L"
     for (std::size_t k = 0; k < sizes.size(); ++k) {
-      size_text += (k ? ", " : "") + size_names[k] + " = " + sym::to_text(sizes[k], t);
+      const std::string value = sym::to_text(sizes[k], t);
+      size_text += (k ? ", " : "") + size_names[k] + (value == size_names[k] ? "" : " = " + value);
     }
-    body.steps.push_back({fmt::format("A uniform {} of mass {} ({}), centre at {}; axes along x, "
+    body.steps.push_back({fmt::format("A uniform {} of mass {} (sizes {}), centre at {}; axes along x, "
                                       "y, z. Second moments S_ii = ∫ x_i² dm about its centre:",
                                       s.shape, sym::to_text(m, t), size_text,
                                       vec_text(c_exact, t)),
                           ""});
     for (const auto& l : derivation.steps_latex) body.steps.push_back({"", l});
-    const auto& Ic = derivation.I_cm;
+    const GiNaC::matrix Ic = sym::normalized(derivation.I_cm);
     body.steps.push_back(
         {"About its centre: I_cm = diag(" + sym::to_text(Ic(0, 0), t) + ", " +
              sym::to_text(Ic(1, 1), t) + ", " + sym::to_text(Ic(2, 2), t) + ")",
          "I_{\\mathrm{cm}} = \\operatorname{diag}\\left(" + sym::to_latex(Ic(0, 0), t) + ", " +
-             sym::to_latex(Ic(1, 1), t) + ", " + sym::to_latex(Ic(2, 2), t) + "\\right)"});
+             sym::to_latex(Ic(1, 1), t) + ", " + sym::to_latex(Ic(2, 2), t) + "\\right)",
+         "About its centre:"});
     body.steps.push_back(
         {"Parallel-axis theorem to the origin: I_O = I_cm + M (|d|² 1 − d dᵀ), d = " +
              vec_text(c_exact, t),
-         "I_O = I_{\\mathrm{cm}} + M\\left(|d|^2\\,\\mathbb{1} - d\\,d^{T}\\right)"});
+         "I_O = I_{\\mathrm{cm}} + M\\left(|d|^2\\,\\mathbb{1} - d\\,d^{T}\\right),\\quad d = " +
+             vec_latex(c_exact, t),
+         "Parallel-axis theorem to the origin:"});
     body.description = body.description.empty() ? "a uniform " + s.shape : body.description +
                                                                                " and a " + s.shape;
   }

@@ -85,13 +85,14 @@ Computed compute(Context& c, const std::string& quantity) {
   if (quantity == "mass") {
     require_mass(c, quantity);
     return {exact_scalar(quantity, c.body.exact.mass, "kg", c.exact),
-            {{"M = Σ m = " + sym::to_text(c.body.exact.mass, t), ""}}};
+            {{"M = Σ m = " + sym::to_text(c.body.exact.mass, t),
+              "M = \\sum m = " + sym::to_latex(c.body.exact.mass, t), "Total mass:"}}};
   }
   if (quantity == "I") {
     check_against_numeric(c.body.exact.I_O, c.body.numeric.I_O, c, quantity);
     Computed out{exact_matrix(quantity, c.body.exact.I_O, "kg m^2", c.exact), c.body.steps};
     out.steps.push_back({"Tensor about the origin: I = " + out.answer.symbolic,
-                         "I = " + out.answer.latex});
+                         "I = " + out.answer.latex, "Tensor about the origin:"});
     return out;
   }
   if (quantity == "center_of_mass") {
@@ -100,7 +101,8 @@ Computed compute(Context& c, const std::string& quantity) {
     Computed out{exact_vector(quantity, {r[0], r[1], r[2]}, "m", c.exact), {}};
     out.steps.push_back({"r_cm = Σ m r / Σ m = " + out.answer.symbolic,
                          "r_{\\mathrm{cm}} = \\frac{\\sum_p m_p r_p}{\\sum_p m_p} = " +
-                             out.answer.latex});
+                             out.answer.latex,
+                         "Centre of mass:"});
     return out;
   }
   if (quantity == "I_cm") {
@@ -111,8 +113,10 @@ Computed compute(Context& c, const std::string& quantity) {
     out.steps.push_back({"Parallel-axis theorem, from O to the centre of mass: I_cm = I_O − M "
                          "(|r_cm|² 1 − r_cm r_cmᵀ)",
                          "I_{\\mathrm{cm}} = I_O - M\\left(|r_{\\mathrm{cm}}|^2\\,\\mathbb{1} - "
-                         "r_{\\mathrm{cm}}\\,r_{\\mathrm{cm}}^{T}\\right)"});
-    out.steps.push_back({"I_cm = " + out.answer.symbolic, "I_{\\mathrm{cm}} = " + out.answer.latex});
+                         "r_{\\mathrm{cm}}\\,r_{\\mathrm{cm}}^{T}\\right)",
+                         "Parallel-axis theorem, from O to the centre of mass:"});
+    out.steps.push_back({"I_cm = " + out.answer.symbolic, "I_{\\mathrm{cm}} = " + out.answer.latex,
+                         "About the centre of mass:"});
     return out;
   }
   for (const bool cm : {false, true}) {

@@ -7,6 +7,7 @@
 /// its SI unit. Vectors and matrices are symbolic as "[x, y, z]" and "[[..], [..], [..]]" whose
 /// entries GiNaC reads (sym::parse_symbolic_value reads the whole back).
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace wobble {
@@ -41,8 +42,12 @@ struct Answer {
 };
 
 struct Step {
-  std::string text;   ///< plain text (Unicode allowed)
-  std::string latex;  ///< LaTeX math, may be empty
+  Step(std::string text_, std::string latex_ = "", std::string label_ = "")
+      : text(std::move(text_)), latex(std::move(latex_)), label(std::move(label_)) {}
+  std::string text;   ///< the whole step as plain text (Unicode allowed)
+  std::string latex;  ///< its formula as LaTeX math, may be empty
+  std::string label;  ///< the prose that introduces `latex` (Markdown and LaTeX print label +
+                      ///< formula instead of text); empty: print text
 };
 
 struct PartKey {

@@ -44,7 +44,8 @@ void add_method_steps(const sym::SymPrincipal& sp, const ExactContext& ctx,
   steps.push_back({"Characteristic equation det(λ 1 − I) = 0: " + sym::to_text(sp.characteristic, t) +
                        " = 0",
                    "\\det(\\lambda\\,\\mathbb{1} - I) = " + sym::to_latex(sp.characteristic, t) +
-                       " = 0"});
+                       " = 0",
+                   "Characteristic equation:"});
   using M = sym::SymPrincipal::Method;
   switch (sp.method) {
     case M::diagonal:
@@ -63,7 +64,9 @@ void add_method_steps(const sym::SymPrincipal& sp, const ExactContext& ctx,
            fmt::format("\\lambda_\\pm = \\frac{{I_{{{0}{0}}} + I_{{{1}{1}}}}}{{2}} \\pm "
                        "\\sqrt{{\\left(\\frac{{I_{{{0}{0}}} - I_{{{1}{1}}}}}{{2}}\\right)^2 + "
                        "I_{{{0}{1}}}^2}}",
-                       kAxisName[p], kAxisName[q])});
+                       kAxisName[p], kAxisName[q]),
+           fmt::format("Only I_{0}{1} is nonzero: {2} is a principal axis with moment I_{2}{2}; the "
+                       "{0}-{1} block gives", kAxisName[p], kAxisName[q], kAxisName[k])});
       break;
     }
     case M::factored:
@@ -113,7 +116,8 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
     }
     out.moments = exact_vector(moments_name, sorted, unit, ctx);
     out.moment_steps.push_back({"In ascending order at the given values: " + out.moments.symbolic,
-                                "(\\lambda_1, \\lambda_2, \\lambda_3) = " + out.moments.latex});
+                                "(\\lambda_1, \\lambda_2, \\lambda_3) = " + out.moments.latex,
+                                "In ascending order at the given values:"});
   }
   if (pa.moments[0] <= pa.degeneracy_tolerance) {
     out.moments.notes.push_back("λ1 = 0: all the mass lies on the axis e1 (a line); the tensor is "
@@ -124,7 +128,9 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
   // Axes.
   out.axis_steps.push_back({"Each axis solves (I − λ_k 1) e_k = 0 with |e_k| = 1; e1 and e2 have "
                             "their largest-magnitude component positive, and e3 = e1 × e2.",
-                            "(I - \\lambda_k\\,\\mathbb{1})\\,e_k = 0,\\quad e_3 = e_1\\times e_2"});
+                            "(I - \\lambda_k\\,\\mathbb{1})\\,e_k = 0,\\quad |e_k| = 1,\\quad e_3 = e_1\\times e_2",
+                            "Each axis solves the equations below; e1 and e2 have their "
+                            "largest-magnitude component positive:"});
   if (pa.degeneracy != Degeneracy::none) {
     out.axes = numeric_matrix(axes_name, pa.axes, "", degeneracy_note(pa));
     return out;
@@ -148,7 +154,9 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
                      "I_{1}{1})/2 = {2} = {3} rad",
                      kAxisName[p], kAxisName[q], sym::to_text(sp.block_angle, ctx.table),
                      format_number(theta)),
-         "\\theta = " + sym::to_latex(sp.block_angle, ctx.table) + " = " + format_number(theta)});
+         "\\theta = " + sym::to_latex(sp.block_angle, ctx.table) + " = " + format_number(theta) +
+             "\\,\\mathrm{rad}",
+         fmt::format("In the {}-{} plane the axes are turned by", kAxisName[p], kAxisName[q])});
   }
   GiNaC::matrix columns(3, 3);
   Mat3 values;

@@ -96,34 +96,75 @@ class Printer {
     return (it == known.end() ? "\\operatorname{" + name + "}" : it->second) + paren(args);
   }
 
-  // A sum: positive terms first, then by the text of the term's magnitude.
-  std::string print_sum(const ex& e) {
-    struct Term {
-      bool negative;
-      std::string key;
-      std::string magnitude;
-    };
+  // The terms of a sum, each as sign and magnitude, sorted by the text of the magnitude alone.
+  // Sorting ignores signs so that s and -s list their terms in the same order: GiNaC's normal()
+  // and factor() return either, depending on hash values that change from run to run (ASLR).
+  struct Term {
+    bool negative;
+    std::string key;
+    std::string magnitude;
+  };
+
+  std::vector<Term> sum_terms(const ex& e) {
     std::vector<Term> terms;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       const ex t = e.op(i);
-      const bool negative = coefficient(t).is_negative();
+      const bool negative = term_negative(t);
       const ex mag = negative ? -t : t;
       Printer text(table_, Style::text);
       std::string key = is_a<numeric>(mag) ? "~" + text.print(mag) : text.print(mag);
       terms.push_back({negative, key, print(mag)});
     }
-    std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) {
-      return std::tie(a.negative, a.key) < std::tie(b.negative, b.key);
-    });
+    std::stable_sort(terms.begin(), terms.end(),
+                     [](const Term& a, const Term& b) { return a.key < b.key; });
+    return terms;
+  }
+
+  // The sign a term prints with: its numeric coefficient's, flipped once for every sum factor
+  // with an odd integer power whose own lead is negative (print_product moves those signs out).
+  bool term_negative(const ex& t) {
+    bool negative = coefficient(t).is_negative();
+    auto toggle = [&](const ex& f) {
+      ex base = f;
+      numeric n = 1;
+      if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1))) {
+        base = f.op(0);
+        n = GiNaC::ex_to<numeric>(f.op(1));
+      }
+      if (is_a<GiNaC::add>(base) && n.is_integer() && n.is_odd() && lead_negative(base)) {
+        negative = !negative;
+      }
+    };
+    if (is_a<GiNaC::mul>(t)) {
+      for (std::size_t i = 0; i < t.nops(); ++i) toggle(t.op(i));
+    } else {
+      toggle(t);
+    }
+    return negative;
+  }
+
+  // A sum's canonical sign: its first term (by key) positive.
+  bool lead_negative(const ex& sum) { return sum_terms(sum).front().negative; }
+
+  // The terms joined, with every sign flipped if `flip`.
+  static std::string join_terms(const std::vector<Term>& terms, bool flip) {
     std::string out;
     for (std::size_t i = 0; i < terms.size(); ++i) {
+      const bool negative = terms[i].negative != flip;
       if (i == 0) {
-        out = (terms[i].negative ? "-" : "") + terms[i].magnitude;
+        out = (negative ? "-" : "") + terms[i].magnitude;
       } else {
-        out += (terms[i].negative ? " - " : " + ") + terms[i].magnitude;
+        out += (negative ? " - " : " + ") + terms[i].magnitude;
       }
     }
     return out;
+  }
+
+  // A sum whose first term is negative prints as -(...), so s and -s differ only by that sign.
+  std::string print_sum(const ex& e) {
+    const auto terms = sum_terms(e);
+    if (!terms.front().negative) return join_terms(terms, false);
+    return "-" + paren(join_terms(terms, true));
   }
 
   static numeric coefficient(const ex& t) {
@@ -138,16 +179,19 @@ class Printer {
     return 1;
   }
 
-  // Sort rank of a factor: symbols by declaration order, then everything else by text.
+  // Sort rank of a factor: symbols by declaration order (then name, for symbols the table does
+  // not know), then everything else by its sign-normalised text.
   std::tuple<int, std::size_t, std::string> factor_rank(const ex& base) {
     Printer text(table_, Style::text);
     if (is_a<GiNaC::symbol>(base)) {
-      return {0, table_.order_of(GiNaC::ex_to<GiNaC::symbol>(base).get_name()), ""};
+      const std::string name = GiNaC::ex_to<GiNaC::symbol>(base).get_name();
+      return {0, table_.order_of(name), name};
     }
     if (is_a<GiNaC::constant>(base)) return {1, 0, ""};
     if (is_a<GiNaC::function>(base)) return {2, 0, text.print(base)};
     if (is_a<GiNaC::power>(base) || is_a<numeric>(base)) return {3, 0, text.print(base)};
-    return {4, 0, text.print(base)};
+    if (is_a<GiNaC::add>(base)) return {4, 0, join_terms(text.sum_terms(base), lead_negative(base))};
+    return {5, 0, text.print(base)};
   }
 
   // A power base^n with n > 0 as printed inside a product.
@@ -173,6 +217,13 @@ class Printer {
     return b + "^" + (n.is_integer() ? str(n) : "(" + print(n) + ")");
   }
 
+  // (-sum)^n for a sum whose lead is negative: the flipped sum in parentheses.
+  std::string print_flipped_power(const ex& sum, const numeric& n) {
+    const std::string body = paren(join_terms(sum_terms(sum), true));
+    if (n == 1) return body;
+    return latex() ? body + "^{" + str(n) + "}" : body + "^" + str(n);
+  }
+
   std::pair<std::string, int> print_product(const ex& e) {
     numeric coeff = 1;
     std::vector<std::pair<ex, numeric>> factors;  // base, exponent (rational)
@@ -194,17 +245,25 @@ class Printer {
     std::stable_sort(factors.begin(), factors.end(), [&](const auto& a, const auto& b) {
       return factor_rank(a.first) < factor_rank(b.first);
     });
+    // Sum factors with an integer power carry their sign into the coefficient (see print_sum).
+    std::vector<bool> flipped(factors.size(), false);
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+      const auto& [base, n] = factors[i];
+      if (is_a<GiNaC::add>(base) && n.is_integer() && lead_negative(base)) {
+        flipped[i] = true;
+        if (n.is_odd()) coeff = -coeff;
+      }
+    }
     const bool negative = coeff.is_negative();
     const numeric c = GiNaC::abs(coeff);
     std::vector<std::string> num, den;
     if (c.numer() != 1) num.push_back(str(c.numer()));
     if (c.denom() != 1) den.push_back(str(c.denom()));
-    for (const auto& [base, n] : factors) {
-      if (n.is_positive()) {
-        num.push_back(print_power(base, n));
-      } else {
-        den.push_back(print_power(base, -n));
-      }
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+      const auto& [base, n] = factors[i];
+      const numeric power = n.is_positive() ? n : -n;
+      std::string text = flipped[i] ? print_flipped_power(base, power) : print_power(base, power);
+      (n.is_positive() ? num : den).push_back(std::move(text));
     }
     const std::string sep = latex() ? " " : "*";
     auto join = [&](const std::vector<std::string>& parts) {

@@ -1,6 +1,9 @@
 #include "symbolic/expression.hpp"
 
+#include "symbolic/canonical_print.hpp"
+
 #include <cctype>
+#include <set>
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -64,7 +67,11 @@ const GiNaC::ex& SymbolTable::at(const std::string& name) const {
 
 std::string SymbolTable::latex_of(const std::string& name) const {
   auto it = index_.find(name);
-  return it == index_.end() ? name : latex_[it->second];
+  if (it != index_.end()) return latex_[it->second];
+  // Auxiliary symbols (lambda of the characteristic polynomial, ...): Greek names as letters.
+  static const std::set<std::string> greek{"alpha", "beta",  "gamma", "delta", "theta", "lambda",
+                                           "mu",    "sigma", "phi",   "psi",   "omega", "Omega"};
+  return greek.count(name) ? "\\" + name : name;
 }
 
 std::size_t SymbolTable::order_of(const std::string& name) const {
@@ -143,32 +150,62 @@ GiNaC::ex simplified_sqrt(const GiNaC::ex& e) {
   return outside * GiNaC::sqrt(inside);
 }
 
+namespace {
+// Replaces every even power of `from` (cos or sin) by powers of 1 - other^2: one fixed reduction
+// modulo sin^2 + cos^2 = 1, so the expanded result is a canonical form.
+struct PythagoreanReduction : GiNaC::map_function {
+  bool cos_to_sin;
+  explicit PythagoreanReduction(bool c) : cos_to_sin(c) {}
+  GiNaC::ex operator()(const GiNaC::ex& x) override {
+    if (GiNaC::is_a<GiNaC::power>(x) && x.op(1).info(GiNaC::info_flags::posint)) {
+      const GiNaC::ex& f = x.op(0);
+      using namespace GiNaC;  // is_ex_the_function is a macro that names GiNaC's function ids
+      const bool match = cos_to_sin ? is_ex_the_function(f, cos) : is_ex_the_function(f, sin);
+      const int n = GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_int();
+      if (match && n >= 2) {
+        const GiNaC::ex other = cos_to_sin ? GiNaC::sin(f.op(0)) : GiNaC::cos(f.op(0));
+        return GiNaC::pow(1 - GiNaC::pow(other, 2), n / 2) * GiNaC::pow(f, n % 2);
+      }
+    }
+    return x.map(*this);
+  }
+};
+
+GiNaC::ex reduced(const GiNaC::ex& polynomial, bool cos_to_sin) {
+  PythagoreanReduction r(cos_to_sin);
+  return GiNaC::expand(r(GiNaC::expand(polynomial)));
+}
+
+bool has_function(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::function>(e)) return true;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (has_function(e.op(i))) return true;
+  }
+  return false;
+}
+}  // namespace
+
 GiNaC::ex simplify(const GiNaC::ex& e) {
-  const GiNaC::ex w = GiNaC::wild(0);
-  const GiNaC::ex base = GiNaC::normal(GiNaC::expand(e));
-  const std::array<GiNaC::ex, 3> candidates{
-      base,
-      GiNaC::normal(GiNaC::expand(base.subs(GiNaC::pow(GiNaC::sin(w), 2) == 1 - GiNaC::pow(GiNaC::cos(w), 2),
-                                            GiNaC::subs_options::algebraic))),
-      GiNaC::normal(GiNaC::expand(base.subs(GiNaC::pow(GiNaC::cos(w), 2) == 1 - GiNaC::pow(GiNaC::sin(w), 2),
-                                            GiNaC::subs_options::algebraic)))};
-  auto length = [](const GiNaC::ex& x) {
-    std::ostringstream s;
-    s << x;
-    return s.str().size();
+  // normal() gives numerator and denominator, unique up to a sign; each candidate below is a
+  // canonical form of them, and the canonical printer's length does not depend on GiNaC's
+  // run-dependent term order and signs, so the same candidate wins in every run.
+  const GiNaC::ex nd = GiNaC::numer_denom(GiNaC::normal(e));
+  std::vector<GiNaC::ex> candidates{
+      reduced(nd.op(0), true) / reduced(nd.op(1), true),    // cos^2 -> 1 - sin^2
+      reduced(nd.op(0), false) / reduced(nd.op(1), false),  // sin^2 -> 1 - cos^2
   };
+  if (!has_function(e)) candidates.push_back(tidy(e));  // factored numerator and denominator
+  static const SymbolTable no_table;
   GiNaC::ex best = candidates[0];
-  std::size_t best_length = length(best);
+  std::size_t best_length = to_text(best, no_table).size();
   for (std::size_t i = 1; i < candidates.size(); ++i) {
-    const std::size_t l = length(candidates[i]);
+    const std::size_t l = to_text(candidates[i], no_table).size();
     if (l < best_length) {
       best = candidates[i];
       best_length = l;
     }
   }
-  // A factored numerator often reads better (m*d^2*(...)); keep it only if not longer.
-  const GiNaC::ex factored = tidy(best);
-  return length(factored) <= best_length ? factored : best;
+  return best;
 }
 
 GiNaC::ex tidy(const GiNaC::ex& e) {

@@ -69,8 +69,9 @@ GiNaC::ex simplified_sqrt(const GiNaC::ex& e);
 GiNaC::ex tidy(const GiNaC::ex& e);
 
 /// The shortest of: normal(e), and normal(e) with sin^2 = 1 - cos^2 or cos^2 = 1 - sin^2 applied
-/// (GiNaC does not use the Pythagorean identity by itself). Length is that of GiNaC's printed
-/// text, which does not depend on term order, so the choice is deterministic.
+/// (GiNaC does not use the Pythagorean identity by itself). Length is that of the canonical
+/// text, which does not depend on GiNaC's run-dependent term order, so the choice is
+/// deterministic.
 GiNaC::ex simplify(const GiNaC::ex& e);
 
 }  // namespace wobble::sym

@@ -1,0 +1,51 @@
+#include "cli/run.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "temp_files.hpp"
+
+namespace wobble::test {
+
+namespace {
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+}  // namespace
+
+RunResult run_shell(const std::string& command_line) {
+  static int counter = 0;
+  const auto dir = scratch_dir();
+  const auto out = dir / ("run-" + std::to_string(++counter) + ".out");
+  const auto err = dir / ("run-" + std::to_string(counter) + ".err");
+  const std::string cmd = "( " + command_line + " ) < /dev/null > " + quote(out.string()) + " 2> " +
+                          quote(err.string());
+  const int status = std::system(cmd.c_str());
+  RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+RunResult run_wobble(const std::vector<std::string>& args,
+                     const std::map<std::string, std::string>& env) {
+  std::string line;
+  for (const auto& [k, v] : env) line += k + "=" + quote(v) + " ";
+  line += quote(WOBBLE_EXE);
+  for (const auto& a : args) line += " " + quote(a);
+  return run_shell(line);
+}
+
+}  // namespace wobble::test

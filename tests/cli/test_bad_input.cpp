@@ -1,0 +1,104 @@
+// The catalog of bad input: every kind the program knows, with its exit code and the words its
+// one-line message must contain. Adding a validation means adding a row.
+#include <catch2/catch.hpp>
+
+#include "cli/run.hpp"
+#include "temp_files.hpp"
+
+using namespace wobble::test;
+
+namespace {
+// A minimal valid problem; each bad file below changes one thing in it.
+const std::string kBase = R"TOML(id = "tmp"
+title = "t"
+solver = "inertia"
+statement = "s"
+
+[[parameters]]
+name = "m"
+unit = "kg"
+default = 1
+range = "(0, inf)"
+
+[body]
+masses = [ { mass = "m", at = ["1", "0", "0"] }, { mass = "m", at = ["0", "1", "0"] } ]
+
+[[parts]]
+id = "a"
+question = "q"
+answers = ["I"]
+)TOML";
+
+std::string with(const std::string& from, const std::string& to) {
+  std::string s = kBase;
+  const auto p = s.find(from);
+  if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "'");
+  return s.replace(p, from.size(), to);
+}
+
+std::string file(const std::string& name, const std::string& content) {
+  return write_file("bad/" + name + ".toml", content).string();
+}
+
+struct Row {
+  std::string what;
+  std::vector<std::string> args;
+  int exit_code;
+  std::vector<std::string> words;
+};
+
+std::vector<Row> catalog() {
+  const std::string tensor_body = "[body]\ntensor = [[\"m\", \"0\", \"0\"], [\"0\", \"m\", \"0\"], [\"0\", \"0\", \"3*m\"]]\n";
+  return {
+      {"unknown problem", {"solve", "no-such"}, 2, {"unknown problem 'no-such'", "known: "}},
+      {"missing file", {"solve", "/nonexistent/p.toml"}, 2, {"/nonexistent/p.toml", "no such problem file"}},
+      {"unknown parameter", {"solve", "taylor-10-35", "--set", "q=1"}, 2, {"unknown parameter 'q'", "known: m, a"}},
+      {"not a number", {"solve", "taylor-10-35", "--set", "m=abc"}, 2, {"--set m", "'abc' is not a number"}},
+      {"NaN", {"solve", "taylor-10-35", "--set", "m=nan"}, 2, {"--set m", "finite"}},
+      {"infinite", {"solve", "taylor-10-35", "--set", "m=inf"}, 2, {"--set m", "finite"}},
+      {"overflow", {"solve", "taylor-10-35", "--set", "a=1e400"}, 2, {"--set a", "finite"}},
+      {"zero mass", {"solve", "taylor-10-35", "--set", "m=0"}, 2, {"m = 0 kg", "outside its range (0, inf)"}},
+      {"negative length", {"solve", "taylor-10-35", "--set", "a=-2"}, 2, {"a = -2 m", "outside its range"}},
+      {"angle out of range", {"solve", "three-atom-molecule", "--set", "alpha=200deg"}, 2, {"--set alpha", "outside its range (0, pi]"}},
+      {"degrees for a mass", {"solve", "taylor-10-35", "--set", "m=3deg"}, 2, {"in degrees but m is in kg"}},
+      {"malformed --set", {"solve", "taylor-10-35", "--set", "m"}, 2, {"expected NAME=VALUE"}},
+      {"unknown format", {"solve", "taylor-10-35", "--format", "pdf"}, 2, {"--format", "pdf"}},
+      {"unknown part", {"solve", "taylor-10-35", "--part", "z"}, 2, {"no part 'z'", "parts: a, b"}},
+      {"unknown command", {"frobnicate"}, 2, {"unknown command 'frobnicate'", "commands: list, solve, keys"}},
+      {"keys without an action", {"keys"}, 2, {"--check", "--update", "required"}},
+      {"keys with both actions", {"keys", "--check", "--update"}, 2, {"excludes"}},
+      {"malformed TOML", {"solve", file("toml", with("title = \"t\"", "title = "))}, 2, {"toml.toml:2", "malformed TOML"}},
+      {"unknown key", {"solve", file("key", with("statement", "statment"))}, 2, {"statment: unknown key"}},
+      {"undefined symbol", {"solve", file("sym", with("mass = \"m\", at = [\"1\"", "mass = \"q*m\", at = [\"1\""))}, 2,
+       {"body.masses[0].mass", "undefined symbol 'q'"}},
+      {"syntax error", {"solve", file("syntax", with("at = [\"1\", \"0\", \"0\"]", "at = [\"1\", \"0*\", \"0\"]"))}, 2,
+       {"body.masses[0].at[1]", "cannot read expression \"0*\""}},
+      {"negative mass expression", {"solve", file("negmass", with("mass = \"m\", at = [\"1\"", "mass = \"-m\", at = [\"1\""))}, 2,
+       {"body.masses[0].mass", "\"-m\" is -1", "must be > 0"}},
+      {"coinciding masses", {"solve", file("coincide", with("at = [\"0\", \"1\", \"0\"]", "at = [\"1\", \"0\", \"0\"]"))}, 2,
+       {"body.masses[1].at", "coincides with body.masses[0].at"}},
+      {"unknown shape", {"solve", file("shape", with("masses = [ { mass = \"m\", at = [\"1\", \"0\", \"0\"] }, { mass = \"m\", at = [\"0\", \"1\", \"0\"] } ]",
+                                                      "shapes = [ { shape = \"cube\", mass = \"m\", sizes = [\"1\"] } ]"))}, 2,
+       {"body.shapes[0].shape", "unknown shape 'cube'"}},
+      {"wrong number of sizes", {"solve", file("sizes", with("masses = [ { mass = \"m\", at = [\"1\", \"0\", \"0\"] }, { mass = \"m\", at = [\"0\", \"1\", \"0\"] } ]",
+                                                      "shapes = [ { shape = \"box\", mass = \"m\", sizes = [\"1\", \"2\"] } ]"))}, 2,
+       {"body.shapes[0].sizes", "takes 3 sizes"}},
+      {"triangle inequality", {"solve", file("triangle", with("[body]\nmasses = [ { mass = \"m\", at = [\"1\", \"0\", \"0\"] }, { mass = \"m\", at = [\"0\", \"1\", \"0\"] } ]\n", tensor_body))}, 2,
+       {"body.tensor", "triangle inequality", "I1 + I2 = 1 + 1 = 2 < I3 = 3"}},
+      {"unknown solver", {"solve", file("solver", with("solver = \"inertia\"", "solver = \"magic\""))}, 2, {"unknown solver 'magic'", "known: inertia"}},
+      {"unknown quantity", {"solve", file("quantity", with("answers = [\"I\"]", "answers = [\"spin\"]"))}, 2, {"unknown quantity 'spin'"}},
+      {"bad range", {"solve", file("range", with("range = \"(0, inf)\"", "range = \"(1, 0)\""))}, 2, {"parameters[0].range", "empty interval"}},
+  };
+}
+}  // namespace
+
+TEST_CASE("bad input: exit 2, one line on stderr with the field and value, nothing on stdout") {
+  for (const auto& row : catalog()) {
+    const RunResult r = run_wobble(row.args);
+    INFO(row.what << "\nstderr: " << r.err << "stdout: " << r.out);
+    CHECK(r.exit_code == row.exit_code);
+    CHECK(r.out.empty());
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    for (const auto& w : row.words) CHECK_THAT(r.err, Catch::Contains(w));
+  }
+}

@@ -1,0 +1,137 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli/run.hpp"
+#include "problem/load.hpp"
+#include "temp_files.hpp"
+
+using namespace wobble::test;
+namespace fs = std::filesystem;
+
+namespace {
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+}  // namespace
+
+TEST_CASE("list names every problem of the catalog") {
+  const RunResult r = run_wobble({"list"});
+  REQUIRE(r.exit_code == 0);
+  for (const auto& p : wobble::load_catalog()) REQUIRE_THAT(r.out, Catch::Contains(p.id + "  "));
+}
+
+TEST_CASE("version and help exit 0") {
+  REQUIRE_THAT(run_wobble({"--version"}).out, Catch::StartsWith("wobble "));
+  const RunResult help = run_wobble({"--help"});
+  REQUIRE(help.exit_code == 0);
+  REQUIRE_THAT(help.out, Catch::Contains("solve") && Catch::Contains("keys") && Catch::Contains("list"));
+  REQUIRE(run_wobble({"solve", "--help"}).exit_code == 0);
+}
+
+TEST_CASE("solve --format json has the documented shape, at values not in the repository") {
+  const RunResult r = run_wobble({"solve", "taylor-10-35", "--set", "m=0.35", "--set", "a=2.2", "--format", "json"});
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j["problem"] == "taylor-10-35");
+  REQUIRE(j["parameters"]["m"]["value"] == 0.35);
+  REQUIRE(j["parameters"]["a"]["unit"] == "m");
+  const auto& b = j["parts"][1];
+  REQUIRE(b["id"] == "b");
+  REQUIRE(b["answers"][0]["name"] == "principal_moments");
+  REQUIRE(b["answers"][0]["symbolic"] == "[5*m*a^2, 7*m*a^2, 10*m*a^2]");
+  REQUIRE(b["answers"][0]["unit"] == "kg m^2");
+  // Independent: m a^2 (5, 7, 10); the value went through JSON's shortest round trip.
+  const double ma2 = 0.35 * 2.2 * 2.2;
+  for (int k = 0; k < 3; ++k) {
+    REQUIRE_THAT(b["answers"][0]["value"][k].get<double>(),
+                 Catch::Matchers::WithinRel(std::vector<double>{5, 7, 10}[k] * ma2, 4e-16));
+  }
+  REQUIRE(b["answers"][1]["value"].size() == 3);  // a matrix: 3 rows
+  REQUIRE(b["steps"].size() >= 3);
+  REQUIRE(b["steps"][0].contains("latex"));
+}
+
+TEST_CASE("solve --part prints only that part, in every format") {
+  for (const std::string format : {"text", "markdown", "latex", "json"}) {
+    const RunResult r = run_wobble({"solve", "four-masses", "--part", "b", "--format", format});
+    INFO(format);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE_THAT(r.out, Catch::Contains("Find the principal moments and the principal axes."));
+    // Part (a)'s question appears only in the statement, which JSON and text also carry once.
+    REQUIRE_THAT(r.out, !Catch::Contains("(a) Find the inertia tensor about the origin.") &&
+                            !Catch::Contains("\"id\": \"a\""));
+  }
+}
+
+TEST_CASE("solve accepts a problem file outside problems/ and a collinear body") {
+  const auto file = write_file("cmd/line.toml", R"TOML(id = "line"
+title = "Three masses on a line"
+solver = "inertia"
+statement = "Masses on the line x = y."
+[[parameters]]
+name = "m"
+unit = "kg"
+default = 2
+range = "(0, inf)"
+[body]
+masses = [ { mass = "m", at = ["1", "1", "0"] }, { mass = "m", at = ["2", "2", "0"] }, { mass = "3*m", at = ["-1", "-1", "0"] } ]
+[[parts]]
+id = "a"
+question = "Principal moments?"
+answers = ["principal_moments", "principal_axes"]
+)TOML");
+  const RunResult r = run_wobble({"solve", file.string()});
+  REQUIRE(r.exit_code == 0);
+  REQUIRE_THAT(r.out, Catch::Contains("λ1 = 0") && Catch::Contains("Degenerate: λ2 = λ3"));
+}
+
+TEST_CASE("keys --check passes on the repository's solutions") {
+  const RunResult r = run_wobble({"keys", "--check"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE_THAT(r.out, Catch::Contains("keys: all"));
+}
+
+TEST_CASE("keys --update writes a folder; --check then finds a changed number and a stale file") {
+  const fs::path dir = scratch_dir() / "solutions-copy";
+  fs::remove_all(dir);
+  const std::map<std::string, std::string> env{{"WOBBLE_SOLUTIONS", dir.string()}};
+  const RunResult first = run_wobble({"keys", "--update"}, env);
+  REQUIRE(first.exit_code == 0);
+  REQUIRE(fs::exists(dir / "taylor-10-35.json"));
+  REQUIRE(fs::exists(dir / "taylor-10-35.md"));
+  REQUIRE_THAT(run_wobble({"keys", "--update"}, env).out, Catch::Contains(", 0 files changed"));
+  REQUIRE(run_wobble({"keys", "--check"}, env).exit_code == 0);
+
+  // Change one value the way a wrong edit would: 10 -> 10.5 in taylor's moments.
+  auto j = nlohmann::ordered_json::parse(slurp(dir / "taylor-10-35.json"));
+  j["parts"][1]["answers"][0]["value"][2] = 10.5;
+  std::ofstream(dir / "taylor-10-35.json") << j.dump(2) << "\n";
+  std::ofstream(dir / "old-problem.json") << "{}\n";
+  const RunResult check = run_wobble({"keys", "--check"}, env);
+  REQUIRE(check.exit_code == 1);
+  REQUIRE_THAT(check.out, Catch::Contains("taylor-10-35.json: parts[1].answers[0].value[2]: 10.5 -> 10"));
+  REQUIRE_THAT(check.out, Catch::Contains("old-problem.json: no problem has this key"));
+}
+
+TEST_CASE("keys --update into a read-only folder fails cleanly and leaves the files as they were") {
+  if (::geteuid() == 0) {
+    // Root ignores permission bits; use a folder that cannot exist instead.
+    const RunResult r = run_wobble({"keys", "--update"}, {{"WOBBLE_SOLUTIONS", "/proc/wobble-no"}});
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    return;
+  }
+  const fs::path dir = scratch_dir() / "readonly";
+  fs::create_directories(dir);
+  std::ofstream(dir / "taylor-10-35.json") << "old\n";
+  fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
+  const RunResult r = run_wobble({"keys", "--update"}, {{"WOBBLE_SOLUTIONS", dir.string()}});
+  fs::permissions(dir, fs::perms::owner_all);
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(slurp(dir / "taylor-10-35.json") == "old\n");
+}

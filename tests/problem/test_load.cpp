@@ -1,0 +1,104 @@
+#include <catch2/catch.hpp>
+
+#include "problem/load.hpp"
+#include "problem/values.hpp"
+#include "temp_files.hpp"
+
+using namespace wobble;
+
+namespace {
+const std::string kGood = R"TOML(id = "two"
+title = "Two masses"
+solver = "inertia"
+statement = "Two masses."
+
+[[parameters]]
+name = "m"
+unit = "kg"
+default = 1
+range = "(0, inf)"
+
+[[parameters]]
+name = "alpha"
+latex = "\\alpha"
+unit = "rad"
+default = "30deg"
+range = "[0, pi/2)"
+
+[body]
+masses = [ { mass = "m", at = [1, 0, 0] }, { mass = "2*m", at = ["0", "cos(alpha)", 0.5] } ]
+
+[[parts]]
+id = "a"
+question = "Tensor?"
+answers = ["I", { name = "I_about_O", quantity = "I" }]
+)TOML";
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const auto p = s.find(from);
+  REQUIRE(p != std::string::npos);
+  return s.replace(p, from.size(), to);
+}
+
+std::string load_error(const std::string& content) {
+  const auto file = test::write_file("load/bad.toml", content);
+  try {
+    load_problem(file);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  FAIL("no error for:\n" << content);
+  return "";
+}
+}  // namespace
+
+TEST_CASE("a good file loads with every field") {
+  const Problem p = load_problem(test::write_file("load/good.toml", kGood));
+  REQUIRE(p.id == "two");
+  REQUIRE(p.parameters.size() == 2);
+  REQUIRE_THAT(p.parameters[1].default_value, Catch::Matchers::WithinULP(M_PI / 6, 1));
+  REQUIRE(p.body.masses[0].at[0] == "1");
+  REQUIRE(p.body.masses[1].at[2] == "0.5");
+  REQUIRE(p.parts[0].answers[1].name == "I_about_O");
+  REQUIRE(p.parts[0].answers[1].quantity == "I");
+}
+
+TEST_CASE("bad files: the message names the file, the line and the field") {
+  using Catch::Contains;
+  CHECK_THAT(load_error("id = \"x\"\ntitle = \n"), Contains("bad.toml:2") && Contains("malformed TOML"));
+  CHECK_THAT(load_error(replaced(kGood, "title", "titel")),
+             Contains("titel: unknown key") && Contains("expected one of"));
+  CHECK_THAT(load_error(replaced(kGood, "solver = \"inertia\"\n", "")), Contains("solver: missing"));
+  CHECK_THAT(load_error(replaced(kGood, "range = \"(0, inf)\"", "range = \"0 to inf\"")),
+             Contains("parameters[0].range") && Contains("expected an interval"));
+  CHECK_THAT(load_error(replaced(kGood, "default = 1", "default = -1")),
+             Contains("bad.toml:9") && Contains("parameters[0].default") && Contains("outside its range"));
+  CHECK_THAT(load_error(replaced(kGood, "default = \"30deg\"", "default = \"100deg\"")),
+             Contains("parameters[1].default") && Contains("outside its range [0, pi/2)"));
+  CHECK_THAT(load_error(replaced(kGood, "at = [1, 0, 0]", "at = [1, 0]")),
+             Contains("body.masses[0].at") && Contains("3 expressions"));
+  CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"m\"")),
+             Contains("declared twice"));
+  CHECK_THAT(load_error(replaced(kGood, "answers = [\"I\", ", "answers = [3, ")),
+             Contains("parts[0].answers[0]"));
+  CHECK_THAT(load_error(replaced(kGood, "masses = [", "tensor = [[1,0,0],[0,1,0],[0,0,1]]\nmasses = [")),
+             Contains("cannot be combined"));
+}
+
+TEST_CASE("problem lookup: by id, by file, and unknown ids list the known ones") {
+  REQUIRE(find_problem("taylor-10-35").id == "taylor-10-35");
+  REQUIRE(find_problem(test::write_file("load/good2.toml", kGood).string()).id == "two");
+  REQUIRE_THROWS_WITH(find_problem("taylor-10-53"),
+                      Catch::Contains("unknown problem 'taylor-10-53'") && Catch::Contains("taylor-10-35"));
+  REQUIRE_THROWS_WITH(find_problem("/nonexistent/x.toml"), Catch::Contains("no such problem file"));
+}
+
+TEST_CASE("set assignments NAME=VALUE") {
+  const Problem p = load_problem(test::write_file("load/good3.toml", kGood));
+  const auto v = parameter_values(p, {"m=2", "alpha = 45deg"});
+  REQUIRE(v.at("m") == 2.0);
+  REQUIRE_THAT(v.at("alpha"), Catch::Matchers::WithinULP(M_PI / 4, 1));
+  REQUIRE_THROWS_WITH(parameter_values(p, {"q=1"}), Catch::Contains("unknown parameter 'q'") &&
+                                                      Catch::Contains("known: m, alpha"));
+  REQUIRE_THROWS_WITH(parameter_values(p, {"m"}), Catch::Contains("expected NAME=VALUE"));
+}

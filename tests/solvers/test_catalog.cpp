@@ -1,0 +1,139 @@
+// Every answer of every problem, at the defaults and at other values: the symbolic form, read
+// back and evaluated, equals the value; and the answers agree with each other (eigen residual,
+// orthonormal right-handed axes, parallel-axis consistency).
+#include <catch2/catch.hpp>
+
+#include <Eigen/Dense>
+#include <limits>
+
+#include "core/inertia.hpp"
+#include "problem/load.hpp"
+#include "problem/values.hpp"
+#include "solvers/solve.hpp"
+#include "symbolic/value_text.hpp"
+
+using namespace wobble;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// Deterministic other values: positive parameters scaled by 1.37^k, angles moved inside range.
+sym::Values other_values(const Problem& p, int k) {
+  sym::Values v = parameter_values(p, {});
+  for (const auto& param : p.parameters) {
+    double x = v[param.name];
+    if (param.is_angle()) {
+      const double lo = param.range.lo, hi = std::isfinite(param.range.hi) ? param.range.hi : lo + 3.0;
+      x = lo + (hi - lo) * (0.2 + 0.17 * k);
+    } else {
+      x *= std::pow(1.37, k) * (1.0 + 0.11 * static_cast<double>(param.name.size()));
+    }
+    if (param.range.contains(x)) v[param.name] = x;
+  }
+  return v;
+}
+
+const Answer* find(const Key& key, const std::string& name) {
+  for (const auto& part : key.parts) {
+    for (const auto& a : part.answers) {
+      if (a.name == name) return &a;
+    }
+  }
+  return nullptr;
+}
+
+Mat3 mat(const Answer& a) {
+  Mat3 m;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) m(i, j) = a.value.at(static_cast<std::size_t>(i), static_cast<std::size_t>(j));
+  }
+  return m;
+}
+
+void check_symbolic_equals_value(const Problem& p, const sym::Values& values, const Answer& a) {
+  if (a.symbolic.empty()) {
+    REQUIRE_FALSE(a.notes.empty());  // numeric-only answers must say why
+    return;
+  }
+  const sym::SymbolTable table = p.symbol_table();
+  const auto parsed = sym::parse_value_text(a.symbolic, table, a.name);
+  REQUIRE(parsed.entries.size() == a.value.data.size());
+  const GiNaC::lst at = sym::substitution(table, values);
+  // Both sides are the same exact expression rounded once: equal to a few ulps of the scale.
+  const double tol = 4 * kEps * std::max(a.value.scale(), 1e-300);
+  for (std::size_t i = 0; i < parsed.entries.size(); ++i) {
+    REQUIRE_THAT(sym::evaluate(parsed.entries[i], at, a.name), WithinAbs(a.value.data[i], tol));
+  }
+}
+
+void check_principal(const Answer& I, const Answer* moments, const Answer* axes) {
+  if (moments == nullptr || axes == nullptr) return;
+  const Mat3 T = mat(I);
+  const Mat3 E = mat(*axes);
+  const double n = 3.0;
+  REQUIRE((E.transpose() * E - Mat3::Identity()).norm() <= 8 * n * kEps);
+  REQUIRE_THAT(E.determinant(), WithinAbs(1.0, 8 * n * kEps));
+  for (int k = 0; k < 3; ++k) {
+    const double lambda = moments->value.data[static_cast<std::size_t>(k)];
+    if (k > 0) REQUIRE(moments->value.data[static_cast<std::size_t>(k - 1)] <= lambda);
+    // Eigen residual bound 8 n eps |I|.
+    REQUIRE((T * E.col(k) - lambda * E.col(k)).norm() <= 8 * n * kEps * T.norm());
+  }
+}
+
+void check_key(const Problem& p, const sym::Values& values) {
+  const Key key = solve(p, values);
+  for (const auto& part : key.parts) {
+    REQUIRE_FALSE(part.steps.empty());
+    for (const auto& a : part.answers) {
+      INFO(p.id << " part " << part.id << " answer " << a.name << " symbolic " << a.symbolic);
+      REQUIRE_FALSE(a.latex.empty());
+      check_symbolic_equals_value(p, values, a);
+    }
+  }
+  // Consistency between answers, whatever their names in this problem.
+  const Answer* I = find(key, "I") ? find(key, "I") : find(key, "I_corner");
+  REQUIRE(I != nullptr);
+  check_principal(*I, find(key, "principal_moments") ? find(key, "principal_moments")
+                                                     : find(key, "principal_moments_corner"),
+                  find(key, "principal_axes") ? find(key, "principal_axes")
+                                              : find(key, "principal_axes_corner"));
+  if (const Answer* I_cm = find(key, "I_cm")) {
+    check_principal(*I_cm, find(key, "principal_moments_cm"), find(key, "principal_axes_cm"));
+    // Parallel axis: I_O - I_cm = M (|c|^2 1 - c c^T), with M = the sum of the point masses.
+    const Answer* c = find(key, "center_of_mass");
+    REQUIRE(c != nullptr);
+    const Vec3 r(c->value.data[0], c->value.data[1], c->value.data[2]);
+    const Mat3 shift = mat(*I) - mat(*I_cm);
+    const Mat3 unit_shift = r.squaredNorm() * Mat3::Identity() - r * r.transpose();
+    if (unit_shift.norm() > 0) {
+      const double M = shift.trace() / unit_shift.trace();
+      REQUIRE((shift - M * unit_shift).norm() <= 64 * kEps * mat(*I).norm());
+    }
+  }
+}
+}  // namespace
+
+TEST_CASE("every problem: symbolic forms evaluate to their values, answers agree") {
+  const auto problems = load_catalog();
+  REQUIRE(problems.size() >= 5);
+  for (const auto& p : problems) {
+    for (int k = 0; k < 3; ++k) {
+      INFO(p.id << " variant " << k);
+      check_key(p, k == 0 ? parameter_values(p, {}) : other_values(p, k));
+    }
+  }
+}
+
+TEST_CASE("solving twice gives the same key (deterministic)") {
+  const Problem p = find_problem("three-atom-molecule");
+  const Key a = solve(p, parameter_values(p, {}));
+  const Key b = solve(p, parameter_values(p, {}));
+  for (std::size_t i = 0; i < a.parts.size(); ++i) {
+    for (std::size_t j = 0; j < a.parts[i].answers.size(); ++j) {
+      REQUIRE(a.parts[i].answers[j].symbolic == b.parts[i].answers[j].symbolic);
+      REQUIRE(a.parts[i].answers[j].value.data == b.parts[i].answers[j].value.data);
+    }
+  }
+}

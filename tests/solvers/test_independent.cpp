@@ -1,0 +1,117 @@
+// The keys against independent hand derivations, at parameter values that are not the defaults.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "problem/load.hpp"
+#include "problem/values.hpp"
+#include "solvers/solve.hpp"
+
+using namespace wobble;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+const Answer& answer(const Key& key, const std::string& name) {
+  for (const auto& part : key.parts) {
+    for (const auto& a : part.answers) {
+      if (a.name == name) return a;
+    }
+  }
+  FAIL("no answer " << name);
+  throw std::logic_error("unreachable");
+}
+
+Key solve_with(const std::string& id, const std::vector<std::string>& sets) {
+  const Problem p = find_problem(id);
+  return solve(p, parameter_values(p, sets));
+}
+
+// The hand formulas below are a few roundings each; the keys are exact then rounded once.
+void require_values(const Answer& a, const std::vector<double>& expected) {
+  REQUIRE(a.value.data.size() == expected.size());
+  double scale = 0.0;
+  for (double x : expected) scale = std::max(scale, std::abs(x));
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    INFO(a.name << "[" << i << "]");
+    REQUIRE_THAT(a.value.data[i], WithinAbs(expected[i], 16 * kEps * scale));
+  }
+}
+}  // namespace
+
+TEST_CASE("taylor-10-35: moments 5, 7, 10 m a^2 and axes (0,1,-1)/sqrt2, (0,1,1)/sqrt2, x") {
+  const double m = 2.3, a = 0.41, ma2 = m * a * a;
+  const Key key = solve_with("taylor-10-35", {"m=2.3", "a=0.41"});
+  require_values(answer(key, "I"), {10 * ma2, 0, 0, 0, 6 * ma2, ma2, 0, ma2, 6 * ma2});
+  require_values(answer(key, "principal_moments"), {5 * ma2, 7 * ma2, 10 * ma2});
+  const double h = std::sqrt(0.5);
+  // Columns e1 = (0, h, -h), e2 = (0, h, h), e3 = e1 x e2 = (1, 0, 0).
+  require_values(answer(key, "principal_axes"), {0, 0, 1, h, h, 0, -h, h, 0});
+}
+
+TEST_CASE("four-masses: moments 5/2, 3, 7/2 m a^2") {
+  const double m = 0.7, a = 1.9, ma2 = m * a * a;
+  const Key key = solve_with("four-masses", {"m=0.7", "a=1.9"});
+  require_values(answer(key, "I"), {3 * ma2, -ma2 / 2, 0, -ma2 / 2, 3 * ma2, 0, 0, 0, 3 * ma2});
+  require_values(answer(key, "principal_moments"), {2.5 * ma2, 3 * ma2, 3.5 * ma2});
+}
+
+TEST_CASE("box-corner: textbook corner tensor, diagonal centre tensor, invariants of the moments") {
+  const double M = 3.1, a = 0.5, b = 1.25, c = 0.8;
+  const Key key = solve_with("box-corner", {"M=3.1", "a=0.5", "b=1.25", "c=0.8"});
+  const double xx = M * (b * b + c * c) / 3, yy = M * (a * a + c * c) / 3, zz = M * (a * a + b * b) / 3;
+  const double xy = -M * a * b / 4, xz = -M * a * c / 4, yz = -M * b * c / 4;
+  require_values(answer(key, "I_corner"), {xx, xy, xz, xy, yy, yz, xz, yz, zz});
+  require_values(answer(key, "center_of_mass"), {a / 2, b / 2, c / 2});
+  require_values(answer(key, "I_cm"), {M * (b * b + c * c) / 12, 0, 0, 0, M * (a * a + c * c) / 12, 0,
+                                       0, 0, M * (a * a + b * b) / 12});
+  // Numeric moments: check the three invariants of the tensor instead of solving again.
+  const auto& l = answer(key, "principal_moments_corner").value.data;
+  const double trace = xx + yy + zz;
+  const double minors = xx * yy + yy * zz + zz * xx - xy * xy - xz * xz - yz * yz;
+  const double det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
+  // Invariants from eigenvalues carry ~ 8 n eps |I|^k relative error (k = 1, 2, 3).
+  const double tol = 8 * 3 * kEps;
+  REQUIRE_THAT(l[0] + l[1] + l[2], WithinAbs(trace, tol * trace));
+  REQUIRE_THAT(l[0] * l[1] + l[1] * l[2] + l[2] * l[0], WithinAbs(minors, 4 * tol * trace * trace));
+  REQUIRE_THAT(l[0] * l[1] * l[2], WithinAbs(det, 8 * tol * trace * trace * trace));
+}
+
+TEST_CASE("three-atom-molecule: the planar tensor and its 2x2 block by hand") {
+  const double M = 12, m1 = 1.1, m2 = 2.7, d1 = 0.9, d2 = 1.4, al = 1.2;
+  const Key key = solve_with("three-atom-molecule",
+                             {"M=12", "m1=1.1", "m2=2.7", "d1=0.9", "d2=1.4", "alpha=1.2"});
+  const double x2 = d2 * std::cos(al), y2 = d2 * std::sin(al);
+  const double Ixx = m2 * y2 * y2, Iyy = m1 * d1 * d1 + m2 * x2 * x2, Ixy = -m2 * x2 * y2;
+  require_values(answer(key, "I"), {Ixx, Ixy, 0, Ixy, Iyy, 0, 0, 0, Ixx + Iyy});
+  const double mean = (Ixx + Iyy) / 2, r = std::hypot((Ixx - Iyy) / 2, Ixy);
+  require_values(answer(key, "principal_moments"), {mean - r, mean + r, Ixx + Iyy});
+  // About the centre of mass.
+  const double Mt = M + m1 + m2, cx = (m1 * d1 + m2 * x2) / Mt, cy = m2 * y2 / Mt;
+  require_values(answer(key, "center_of_mass"), {cx, cy, 0});
+  const double Jxx = Ixx - Mt * cy * cy, Jyy = Iyy - Mt * cx * cx, Jxy = Ixy + Mt * cx * cy;
+  require_values(answer(key, "I_cm"), {Jxx, Jxy, 0, Jxy, Jyy, 0, 0, 0, Jxx + Jyy});
+  const double jm = (Jxx + Jyy) / 2, jr = std::hypot((Jxx - Jyy) / 2, Jxy);
+  require_values(answer(key, "principal_moments_cm"), {jm - jr, jm + jr, Jxx + Jyy});
+}
+
+TEST_CASE("three-atom-molecule-symmetric: diagonal tensors, a straight molecule is collinear") {
+  const double M = 16, m = 1.3, d = 0.96, al = 1.85;
+  const Key key = solve_with("three-atom-molecule-symmetric", {"M=16", "m=1.3", "d=0.96", "alpha=1.85"});
+  const double c = std::cos(al / 2), s = std::sin(al / 2);
+  const double Ixx = 2 * m * d * d * s * s, Iyy = 2 * m * d * d * c * c;
+  require_values(answer(key, "I"), {Ixx, 0, 0, 0, Iyy, 0, 0, 0, Ixx + Iyy});
+  const double xc = 2 * m * d * c / (M + 2 * m);
+  require_values(answer(key, "center_of_mass"), {xc, 0, 0});
+  require_values(answer(key, "I_cm"), {Ixx, 0, 0, 0, Iyy - (M + 2 * m) * xc * xc, 0, 0, 0,
+                                       Ixx + Iyy - (M + 2 * m) * xc * xc});
+  // alpha = pi: all three atoms on the y axis. lambda1 = 0, and the key says so.
+  const Key straight = solve_with("three-atom-molecule-symmetric", {"alpha=pi"});
+  const Answer& l = answer(straight, "principal_moments");
+  REQUIRE_THAT(l.value.data[0], WithinAbs(0.0, 16 * kEps * l.value.scale()));
+  bool said = false;
+  for (const auto& n : l.notes) said = said || n.find("λ1 = 0") != std::string::npos;
+  REQUIRE(said);
+}

@@ -1,0 +1,27 @@
+#pragma once
+// A per-process scratch folder for files the tests write (no randomness: named by pid).
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace wobble::test {
+
+inline std::filesystem::path scratch_dir() {
+  static const std::filesystem::path dir = [] {
+    auto d = std::filesystem::temp_directory_path() /
+             ("wobble-tests-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+inline std::filesystem::path write_file(const std::string& name, const std::string& content) {
+  const auto path = scratch_dir() / name;
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << content;
+  return path;
+}
+
+}  // namespace wobble::test
