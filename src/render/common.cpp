@@ -113,6 +113,23 @@ std::string value_latex(const Value& v) {
   return s + " \\end{pmatrix}";
 }
 
+namespace {
+// "I_xy", "I_cm", "e_k" in prose: a letter, '_', then one to two lower-case letters or digits.
+bool subscript_at(const std::string& s, std::size_t i, std::size_t& length) {
+  if (i == 0 || i + 1 >= s.size() || s[i] != '_' || !std::isalpha(static_cast<unsigned char>(s[i - 1]))) {
+    return false;
+  }
+  if (i >= 2 && std::isalnum(static_cast<unsigned char>(s[i - 2]))) return false;
+  std::size_t j = i + 1;
+  while (j < s.size() && j - i - 1 < 3 &&
+         (std::islower(static_cast<unsigned char>(s[j])) || std::isdigit(static_cast<unsigned char>(s[j])))) {
+    ++j;
+  }
+  length = j - i - 1;
+  return length >= 1 && length <= 2 && (j == s.size() || !std::isalnum(static_cast<unsigned char>(s[j])));
+}
+}  // namespace
+
 std::string latex_text(const std::string& s) {
   static const std::vector<std::pair<std::string, std::string>> map{
       {"\\", "\\textbackslash{}"}, {"&", "\\&"}, {"%", "\\%"}, {"#", "\\#"}, {"_", "\\_"},
@@ -125,6 +142,13 @@ std::string latex_text(const std::string& s) {
       {"≥", "$\\geq$"}, {"≤", "$\\leq$"}, {"→", "$\\to$"}};
   std::string out;
   for (std::size_t i = 0; i < s.size();) {
+    std::size_t sub = 0;
+    if (subscript_at(s, i, sub)) {  // the letter before is already out: make it math
+      out.back() = '$';
+      out += std::string(1, s[i - 1]) + "_{" + s.substr(i + 1, sub) + "}$";
+      i += 1 + sub;
+      continue;
+    }
     bool matched = false;
     for (const auto& [from, to] : map) {
       if (s.compare(i, from.size(), from) == 0) {

@@ -44,7 +44,13 @@ std::string render_latex(const Key& key) {
       "\\documentclass[11pt]{article}\n"
       "\\usepackage[T1]{fontenc}\n\\usepackage[utf8]{inputenc}\n"
       "\\usepackage{amsmath,amssymb}\n\\usepackage[margin=2cm]{geometry}\n"
+      "\\usepackage{graphicx}\n"
       "\\setcounter{MaxMatrixCols}{20}\n"
+      "% \\fit{math}: a display formula, scaled down only if it is wider than the line.\n"
+      "\\newsavebox{\\fitbox}\n"
+      "\\newcommand{\\fit}[1]{\\begin{center}\\sbox{\\fitbox}{$\\displaystyle #1$}"
+      "\\ifdim\\wd\\fitbox>\\linewidth\\resizebox{\\linewidth}{!}{\\usebox{\\fitbox}}"
+      "\\else\\usebox{\\fitbox}\\fi\\end{center}}\n"
       "\\allowdisplaybreaks\n\\begin{document}\n";
   out += fmt::format("\\section*{{{} \\quad{{\\normalsize\\texttt{{{}}}}}}}\n", latex_text(key.title),
                      latex_text(key.problem));
@@ -59,10 +65,10 @@ std::string render_latex(const Key& key) {
   for (const auto& part : key.parts) {
     out += fmt::format("\n\\subsection*{{({}) {}}}\n", part.id, latex_text(part.question));
     for (const auto& a : part.answers) {
-      out += "\\noindent\\texttt{" + latex_text(a.name) + "}:\n\\begin{align*}\n";
-      if (!a.symbolic.empty()) out += "&" + a.latex + "\\\\\n&= ";
-      else out += "&";
-      out += detail::value_latex(a.value) + detail::unit_latex(a.unit) + "\n\\end{align*}\n";
+      out += "\\noindent\\texttt{" + latex_text(a.name) + "}:\n";
+      if (!a.symbolic.empty()) out += "\\fit{" + a.latex + "}\n";
+      out += "\\fit{" + std::string(a.symbolic.empty() ? "" : "= ") + detail::value_latex(a.value) +
+             detail::unit_latex(a.unit) + "}\n";
       for (const auto& n : a.notes) out += "\\emph{Note:} " + latex_text(n) + "\n\n";
     }
     if (!part.steps.empty()) {
@@ -70,7 +76,7 @@ std::string render_latex(const Key& key) {
       for (const auto& s : part.steps) {
         const std::string& prose = s.label.empty() || s.latex.empty() ? s.text : s.label;
         out += "\\item " + latex_text(prose);
-        if (!s.latex.empty()) out += "\\[" + s.latex + "\\]";
+        if (!s.latex.empty()) out += "\\fit{" + s.latex + "}";
         out += "\n";
       }
       out += "\\end{enumerate}\n";

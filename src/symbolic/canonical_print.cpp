@@ -224,6 +224,16 @@ class Printer {
     return latex() ? body + "^{" + str(n) + "}" : body + "^" + str(n);
   }
 
+  // True if every \left( in s is closed by its own \right) inside s (so the outer pair is one).
+  static bool balanced_inside(const std::string& s) {
+    int depth = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (s.compare(i, 6, "\\left(") == 0) ++depth;
+      if (s.compare(i, 7, "\\right)") == 0 && --depth < 0) return false;
+    }
+    return depth == 0;
+  }
+
   std::pair<std::string, int> print_product(const ex& e) {
     numeric coeff = 1;
     std::vector<std::pair<ex, numeric>> factors;  // base, exponent (rational)
@@ -271,11 +281,22 @@ class Printer {
       for (std::size_t i = 0; i < parts.size(); ++i) s += (i ? sep : "") + parts[i];
       return s.empty() ? std::string("1") : s;
     };
+    // In \frac a lone sum needs no parentheses: the bar groups it.
+    auto frac_part = [&](const std::vector<std::string>& parts) {
+      const std::string open = "\\left(", close = "\\right)";
+      if (parts.size() == 1 && parts[0].rfind(open, 0) == 0 &&
+          parts[0].size() >= open.size() + close.size() &&
+          parts[0].compare(parts[0].size() - close.size(), close.size(), close) == 0 &&
+          balanced_inside(parts[0].substr(open.size(), parts[0].size() - open.size() - close.size()))) {
+        return parts[0].substr(open.size(), parts[0].size() - open.size() - close.size());
+      }
+      return join(parts);
+    };
     std::string body;
     if (den.empty()) {
       body = join(num);
     } else if (latex()) {
-      body = "\\frac{" + join(num) + "}{" + join(den) + "}";
+      body = "\\frac{" + frac_part(num) + "}{" + frac_part(den) + "}";
     } else {
       body = join(num) + "/" + (den.size() > 1 ? "(" + join(den) + ")" : den[0]);
     }

@@ -135,3 +135,17 @@ TEST_CASE("keys --update into a read-only folder fails cleanly and leaves the fi
   REQUIRE(r.exit_code == 2);
   REQUIRE(slurp(dir / "taylor-10-35.json") == "old\n");
 }
+
+TEST_CASE("keys are byte-identical across processes and equal to the stored solutions") {
+  // Each process has its own address layout and symbol history, which change GiNaC's internal
+  // term order; `keys --update` solved all problems in one process, `solve` one per process.
+  for (const auto& p : wobble::load_catalog()) {
+    const std::string stored = slurp(fs::path(WOBBLE_SOURCE_DIR) / "solutions" / (p.id + ".json"));
+    for (int run = 0; run < 3; ++run) {
+      const RunResult r = run_wobble({"solve", p.id, "--format", "json"});
+      INFO(p.id << " run " << run);
+      REQUIRE(r.exit_code == 0);
+      REQUIRE(r.out == stored);
+    }
+  }
+}
