@@ -5,7 +5,7 @@
 #include <map>
 #include <vector>
 
-#include "solvers/exact_answer.hpp"
+#include "solvers/key.hpp"
 
 namespace wobble::detail {
 
@@ -103,15 +103,6 @@ std::string value_text(const Value& v, const std::string& indent) {
   return s;
 }
 
-std::string value_latex(const Value& v) {
-  if (v.shape == Value::Shape::scalar) return format_number(v.data.at(0));
-  std::string s = "\\begin{pmatrix}";
-  for (std::size_t i = 0; i < v.rows; ++i) {
-    for (std::size_t j = 0; j < v.cols; ++j) s += (j ? " & " : " ") + format_number(v.at(i, j));
-    s += i + 1 < v.rows ? " \\\\" : "";
-  }
-  return s + " \\end{pmatrix}";
-}
 
 namespace {
 // "I_xy", "I_cm", "e_k" in prose: a letter, '_', then one to two lower-case letters or digits.

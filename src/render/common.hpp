@@ -16,8 +16,6 @@ std::string unit_latex(const std::string& unit);
 
 /// Numbers of a value: "3.5", "(1, 0, 0)", or matrix rows, one per line with the given indent.
 std::string value_text(const Value& v, const std::string& indent);
-/// A value as LaTeX: a number or a pmatrix (vectors as columns).
-std::string value_latex(const Value& v);
 
 /// Plain text with Unicode symbols for LaTeX text mode: escapes specials, maps Σ -> $\Sigma$ ...
 std::string latex_text(const std::string& s);

@@ -2,7 +2,6 @@
 
 #include "render/common.hpp"
 #include "render/render.hpp"
-#include "solvers/exact_answer.hpp"
 
 namespace wobble {
 
@@ -67,7 +66,7 @@ std::string render_latex(const Key& key) {
     for (const auto& a : part.answers) {
       out += "\\noindent\\texttt{" + latex_text(a.name) + "}:\n";
       if (!a.symbolic.empty()) out += "\\fit{" + a.latex + "}\n";
-      out += "\\fit{" + std::string(a.symbolic.empty() ? "" : "= ") + detail::value_latex(a.value) +
+      out += "\\fit{" + std::string(a.symbolic.empty() ? "" : "= ") + value_latex(a.value) +
              detail::unit_latex(a.unit) + "}\n";
       for (const auto& n : a.notes) out += "\\emph{Note:} " + latex_text(n) + "\n\n";
     }

@@ -2,7 +2,6 @@
 
 #include "render/common.hpp"
 #include "render/render.hpp"
-#include "solvers/exact_answer.hpp"
 
 namespace wobble {
 
@@ -24,7 +23,7 @@ std::string render_markdown(const Key& key) {
       if (!a.symbolic.empty()) out += fmt::format(" (symbolic: `{}`)", a.symbolic);
       out += "\n\n$$\n";
       if (!a.symbolic.empty()) out += a.latex + " = ";
-      out += detail::value_latex(a.value) + detail::unit_latex(a.unit) + "\n$$\n\n";
+      out += value_latex(a.value) + detail::unit_latex(a.unit) + "\n$$\n\n";
       for (const auto& n : a.notes) out += "> " + n + "\n>\n";
       if (!a.notes.empty()) out.resize(out.size() - 2), out += "\n";
     }

@@ -2,7 +2,6 @@
 
 #include "render/common.hpp"
 #include "render/render.hpp"
-#include "solvers/exact_answer.hpp"
 
 namespace wobble {
 

@@ -9,11 +9,6 @@
 
 namespace wobble {
 
-std::string format_number(double x) {
-  if (x == 0.0) return "0";  // also turns -0 into 0
-  return fmt::format("{:.10g}", x);
-}
-
 std::string vector_text(const std::vector<GiNaC::ex>& v, const sym::SymbolTable& t) {
   std::string s = "[";
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + sym::to_text(v[i], t);
@@ -97,14 +92,6 @@ std::vector<double> cleaned(std::vector<double> v) {
   return v;
 }
 
-std::string numbers_latex(const Value& v) {
-  std::string s = "\\begin{pmatrix}";
-  for (std::size_t i = 0; i < v.rows; ++i) {
-    for (std::size_t j = 0; j < v.cols; ++j) s += (j ? " & " : " ") + format_number(v.at(i, j));
-    s += i + 1 < v.rows ? " \\\\" : "";
-  }
-  return s + " \\end{pmatrix}";
-}
 }  // namespace
 
 Answer numeric_vector(const std::string& name, const Vec3& v, const std::string& unit,
@@ -112,7 +99,7 @@ Answer numeric_vector(const std::string& name, const Vec3& v, const std::string&
   Answer a;
   a.name = name;
   a.value = Value::vector(cleaned({v.x(), v.y(), v.z()}));
-  a.latex = numbers_latex(a.value);
+  a.latex = value_latex(a.value);
   a.unit = unit;
   a.notes.push_back(why);
   return a;
@@ -127,7 +114,7 @@ Answer numeric_matrix(const std::string& name, const Mat3& m, const std::string&
     for (int j = 0; j < 3; ++j) values.push_back(m(i, j));
   }
   a.value = Value::matrix(3, 3, cleaned(std::move(values)));
-  a.latex = numbers_latex(a.value);
+  a.latex = value_latex(a.value);
   a.unit = unit;
   a.notes.push_back(why);
   return a;

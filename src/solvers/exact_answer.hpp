@@ -39,7 +39,4 @@ std::string matrix_text(const GiNaC::matrix& m, const sym::SymbolTable& t);
 std::string vector_latex(const std::vector<GiNaC::ex>& v, const sym::SymbolTable& t);
 std::string matrix_latex(const GiNaC::matrix& m, const sym::SymbolTable& t);
 
-/// A number as printed in text, Markdown and LaTeX keys: 10 significant digits.
-std::string format_number(double x);
-
 }  // namespace wobble

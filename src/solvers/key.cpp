@@ -1,6 +1,7 @@
 #include "solvers/key.hpp"
 
 #include <cmath>
+#include <fmt/format.h>
 
 namespace wobble {
 
@@ -8,6 +9,21 @@ double Value::scale() const {
   double s = 0.0;
   for (double x : data) s = std::max(s, std::abs(x));
   return s;
+}
+
+std::string format_number(double x) {
+  if (x == 0.0) return "0";  // also turns -0 into 0
+  return fmt::format("{:.10g}", x);
+}
+
+std::string value_latex(const Value& v) {
+  if (v.shape == Value::Shape::scalar) return format_number(v.data.at(0));
+  std::string s = "\\begin{pmatrix}";
+  for (std::size_t i = 0; i < v.rows; ++i) {
+    for (std::size_t j = 0; j < v.cols; ++j) s += (j ? " & " : " ") + format_number(v.at(i, j));
+    s += i + 1 < v.rows ? " \\\\" : "";
+  }
+  return s + " \\end{pmatrix}";
 }
 
 }  // namespace wobble

@@ -32,6 +32,12 @@ struct Value {
   double scale() const;
 };
 
+/// A number as printed in text, Markdown and LaTeX keys: 10 significant digits ("0", not "-0").
+std::string format_number(double x);
+
+/// A value as LaTeX: a number, or a pmatrix (vectors as a column).
+std::string value_latex(const Value& v);
+
 struct Answer {
   std::string name;
   std::string symbolic;  ///< GiNaC text; empty if numeric only

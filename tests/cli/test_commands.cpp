@@ -96,7 +96,7 @@ TEST_CASE("keys --check passes on the repository's solutions") {
   REQUIRE_THAT(r.out, Catch::Contains("keys: all"));
 }
 
-TEST_CASE("keys --update writes a folder; --check then finds a changed number and a stale file") {
+TEST_CASE("keys --update writes a folder, then --check finds a changed number and a stale file") {
   const fs::path dir = scratch_dir() / "solutions-copy";
   fs::remove_all(dir);
   const std::map<std::string, std::string> env{{"WOBBLE_SOLUTIONS", dir.string()}};

@@ -68,6 +68,9 @@ TEST_CASE("known spellings") {
   REQUIRE(latex("sin(alpha)^2*d1") == "d_1 \\sin^{2}\\left(\\alpha\\right)");
   REQUIRE(text("sqrt(2)*m") == "m*sqrt(2)");
   REQUIRE(latex("pi") == "\\pi");
+  // A lone sum in a fraction needs no parentheses; a sum among other factors does.
+  REQUIRE(latex("2*m*d1/(2*m + M)") == "\\frac{2 m d_1}{2 m + M}");
+  REQUIRE(latex("(a + m)/(2*(m + M))") == "\\frac{a + m}{2 \\left(M + m\\right)}");
 }
 
 TEST_CASE("the parser rejects undefined symbols and syntax errors, naming the field") {
