@@ -1,16 +1,17 @@
 #pragma once
 // A per-process scratch folder for files the tests write (no randomness: named by pid).
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 namespace wobble::test {
 
 inline std::filesystem::path scratch_dir() {
   static const std::filesystem::path dir = [] {
-    auto d = std::filesystem::temp_directory_path() /
-             ("wobble-tests-" + std::to_string(::getpid()));
+    auto d =
+        std::filesystem::temp_directory_path() / ("wobble-tests-" + std::to_string(::getpid()));
     std::filesystem::create_directories(d);
     return d;
   }();

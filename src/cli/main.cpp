@@ -26,8 +26,8 @@ int main(int argc, char** argv) {
   setup_keys(*keys, keys_opt);
 
   // CLI11 would only say "a subcommand is required"; name the word the user typed instead.
-  const auto known = app.get_subcommands(
-      [&](CLI::App* sub) { return argc > 1 && sub->get_name() == argv[1]; });
+  const auto known =
+      app.get_subcommands([&](CLI::App* sub) { return argc > 1 && sub->get_name() == argv[1]; });
   if (argc > 1 && argv[1][0] != '-' && known.empty()) {
     fmt::print(stderr, "wobble: unknown command '{}' (commands: list, solve, keys; see --help)\n",
                argv[1]);

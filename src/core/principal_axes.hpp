@@ -25,7 +25,7 @@ namespace wobble {
 enum class Degeneracy { none, pair12, pair23, all };
 
 struct PrincipalAxes {
-  Vec3 moments = Vec3::Zero();  ///< ascending, kg m^2
+  Vec3 moments = Vec3::Zero();   ///< ascending, kg m^2
   Mat3 axes = Mat3::Identity();  ///< columns e1, e2, e3
   Degeneracy degeneracy = Degeneracy::none;
   double degeneracy_tolerance = 0.0;  ///< absolute, kg m^2

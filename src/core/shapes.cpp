@@ -42,9 +42,13 @@ ShapeKind shape_kind_from_name(std::string_view name) {
   throw std::invalid_argument("unknown shape '" + std::string(name) + "' (known: " + known + ")");
 }
 
-std::string_view shape_kind_name(ShapeKind kind) { return info(kind).name; }
+std::string_view shape_kind_name(ShapeKind kind) {
+  return info(kind).name;
+}
 
-const std::vector<std::string>& shape_size_names(ShapeKind kind) { return info(kind).sizes; }
+const std::vector<std::string>& shape_size_names(ShapeKind kind) {
+  return info(kind).sizes;
+}
 
 Mat3 shape_inertia_about_cm(ShapeKind kind, double mass_kg, const std::vector<double>& sizes_m) {
   const auto& names = shape_size_names(kind);

@@ -4,16 +4,16 @@
 ///
 /// Every shape is centred at its centre of mass with its edges or symmetry axis along the frame
 /// axes (conventions of inertia.hpp: SI units, I_ij = int (r^2 delta_ij - r_i r_j) dm):
-/// | kind     | sizes    | geometry                                  | I_cm / mass                      |
+/// | kind     | sizes    | geometry                                  | I_cm / mass |
 /// |----------|----------|-------------------------------------------|----------------------------------|
-/// | box      | a, b, c  | edges a, b, c along x, y, z               | diag(b²+c², a²+c², a²+b²)/12     |
-/// | plate    | a, b     | thin rectangle in the x-y plane           | diag(b², a², a²+b²)/12           |
-/// | disc     | R        | thin disc in the x-y plane, axis z        | diag(1/4, 1/4, 1/2) R²           |
-/// | cylinder | R, h     | solid, axis z, height h                   | diag(R²/4+h²/12, same, R²/2)     |
-/// | sphere   | R        | solid ball                                | (2/5) R² 1                       |
-/// | rod      | L        | thin rod along z                          | diag(L²/12, L²/12, 0)            |
-/// The table's formulas are derived independently by integration in symbolic/shape_integrals and
-/// the two are tested against each other.
+/// | box      | a, b, c  | edges a, b, c along x, y, z               | diag(b²+c², a²+c², a²+b²)/12
+/// | | plate    | a, b     | thin rectangle in the x-y plane           | diag(b², a², a²+b²)/12 |
+/// | disc     | R        | thin disc in the x-y plane, axis z        | diag(1/4, 1/4, 1/2) R² | |
+/// cylinder | R, h     | solid, axis z, height h                   | diag(R²/4+h²/12, same, R²/2) |
+/// | sphere   | R        | solid ball                                | (2/5) R² 1 | | rod      | L
+/// | thin rod along z                          | diag(L²/12, L²/12, 0)            | The table's
+/// formulas are derived independently by integration in symbolic/shape_integrals and the two are
+/// tested against each other.
 #include <string>
 #include <string_view>
 #include <vector>

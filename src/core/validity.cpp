@@ -36,9 +36,9 @@ void check_inertia_tensor(const Mat3& I) {
                                num(l[0]) + " < 0");
   }
   if (l[0] + l[1] < l[2] - tol) {
-    throw InvalidInertiaTensor("principal moments violate the triangle inequality: I1 + I2 = " +
-                               num(l[0]) + " + " + num(l[1]) + " = " + num(l[0] + l[1]) +
-                               " < I3 = " + num(l[2]));
+    throw InvalidInertiaTensor(
+        "principal moments violate the triangle inequality: I1 + I2 = " + num(l[0]) + " + " +
+        num(l[1]) + " = " + num(l[0] + l[1]) + " < I3 = " + num(l[2]));
   }
 }
 

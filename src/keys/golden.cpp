@@ -1,8 +1,9 @@
 #include "keys/golden.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdlib>
-#include <fmt/format.h>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -51,7 +52,8 @@ void compare(const J& e, const J& a, const std::string& path, double scale,
       compare(it.value(), a.at(it.key()), p, s, out);
     }
     for (auto it = a.begin(); it != a.end(); ++it) {
-      if (!e.contains(it.key())) out.push_back((path.empty() ? "" : path + ".") + it.key() + ": added");
+      if (!e.contains(it.key()))
+        out.push_back((path.empty() ? "" : path + ".") + it.key() + ": added");
     }
     return;
   }
@@ -116,7 +118,8 @@ std::vector<std::string> check_keys(const std::vector<Problem>& problems,
         out.push_back(json_file.string() + ": not valid JSON: " + e.what());
         continue;
       }
-      for (const auto& d : compare_keys(stored, r.json)) out.push_back(json_file.string() + ": " + d);
+      for (const auto& d : compare_keys(stored, r.json))
+        out.push_back(json_file.string() + ": " + d);
     }
     if (!std::filesystem::exists(md_file)) {
       out.push_back(md_file.string() + ": missing (run wobble keys --update)");

@@ -1,10 +1,11 @@
 #include "problem/load.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <set>
-#include <toml++/toml.h>
 
 #include "problem/values.hpp"
 
@@ -131,8 +132,8 @@ BodySpec read_body(const Reader& r, const toml::table& body) {
       const std::string f = "body.masses[" + std::to_string(i) + "]";
       const toml::table& t = r.table_at(*a, i, f, n);
       r.only_keys(t, f, {"mass", "at"});
-      b.masses.push_back({r.expression(t.get("mass"), f + ".mass", &t),
-                          r.vector3(t.get("at"), f + ".at", &t)});
+      b.masses.push_back(
+          {r.expression(t.get("mass"), f + ".mass", &t), r.vector3(t.get("at"), f + ".at", &t)});
     }
   }
   if (const toml::node* n = body.get("shapes")) {
@@ -155,7 +156,8 @@ BodySpec read_body(const Reader& r, const toml::table& body) {
   }
   if (const toml::node* n = body.get("tensor")) {
     const toml::array* a = n->as_array();
-    if (a == nullptr || a->size() != 3) r.fail(n, "body.tensor", "expected 3 rows of 3 expressions");
+    if (a == nullptr || a->size() != 3)
+      r.fail(n, "body.tensor", "expected 3 rows of 3 expressions");
     std::array<std::array<std::string, 3>, 3> rows;
     for (std::size_t i = 0; i < 3; ++i) {
       rows[i] = r.vector3(a->get(i), "body.tensor[" + std::to_string(i) + "]", n);
@@ -211,9 +213,9 @@ Problem load_problem(const std::filesystem::path& file) {
                      ": malformed TOML: " + std::string(e.description()));
   }
   Reader r(file);
-  r.only_keys(root, "",
-              {"id", "title", "source", "statement", "solver", "notes", "parameters", "body",
-               "parts"});
+  r.only_keys(
+      root, "",
+      {"id", "title", "source", "statement", "solver", "notes", "parameters", "body", "parts"});
   Problem p;
   p.file = file;
   p.id = r.string(root, "id", "");
@@ -225,7 +227,8 @@ Problem load_problem(const std::filesystem::path& file) {
     const toml::array* a = n->as_array();
     if (a == nullptr) r.fail(n, "notes", "expected an array of strings");
     for (std::size_t i = 0; i < a->size(); ++i) {
-      if (!a->get(i)->is_string()) r.fail(n, "notes[" + std::to_string(i) + "]", "expected a string");
+      if (!a->get(i)->is_string())
+        r.fail(n, "notes[" + std::to_string(i) + "]", "expected a string");
       p.notes.push_back(*a->get(i)->value<std::string>());
     }
   }
@@ -235,7 +238,8 @@ Problem load_problem(const std::filesystem::path& file) {
     const std::string f = "parameters[" + std::to_string(i) + "]";
     p.parameters.push_back(read_parameter(r, r.table_at(params, i, f, &root), f));
     if (!names.insert(p.parameters.back().name).second) {
-      r.fail(params.get(i), f + ".name", "parameter '" + p.parameters.back().name + "' declared twice");
+      r.fail(params.get(i), f + ".name",
+             "parameter '" + p.parameters.back().name + "' declared twice");
     }
   }
   try {

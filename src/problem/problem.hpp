@@ -44,9 +44,9 @@ struct MassSpec {
 };
 
 struct ShapeSpec {
-  std::string shape;                     ///< "box", "disc", ... (core/shapes.hpp)
+  std::string shape;  ///< "box", "disc", ... (core/shapes.hpp)
   std::string mass;
-  std::vector<std::string> sizes;        ///< in the order of shape_size_names
+  std::vector<std::string> sizes;                    ///< in the order of shape_size_names
   std::array<std::string, 3> center{"0", "0", "0"};  ///< centre of mass, from the origin
 };
 

@@ -39,8 +39,9 @@ Interval parse_interval(const std::string& text, const std::string& field) {
   const auto comma = t.find(',');
   if (t.size() < 5 || (t.front() != '(' && t.front() != '[') ||
       (t.back() != ')' && t.back() != ']') || comma == std::string::npos) {
-    throw InputError(field + ": expected an interval such as \"(0, inf)\" or \"[0, pi/2)\", got \"" +
-                     text + "\"");
+    throw InputError(field +
+                     ": expected an interval such as \"(0, inf)\" or \"[0, pi/2)\", got \"" + text +
+                     "\"");
   }
   Interval r;
   r.text = t;
@@ -58,8 +59,7 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
   bool degrees = false;
   if (t.size() > 3 && t.compare(t.size() - 3, 3, "deg") == 0) {
     if (!p.is_angle()) {
-      throw InputError(field + ": '" + text + "' is in degrees but " + p.name + " is in " +
-                       p.unit);
+      throw InputError(field + ": '" + text + "' is in degrees but " + p.name + " is in " + p.unit);
     }
     degrees = true;
     t = trim(t.substr(0, t.size() - 3));
@@ -80,14 +80,14 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
   if (degrees) v *= M_PI / 180.0;
   if (!std::isfinite(v)) throw InputError(field + ": value must be finite, got '" + text + "'");
   if (!p.range.contains(v)) {
-    throw InputError(field + ": " + p.name + " = " + shortest(v) + (p.unit.empty() ? "" : " " + p.unit) +
-                     " is outside its range " + p.range.text);
+    throw InputError(field + ": " + p.name + " = " + shortest(v) +
+                     (p.unit.empty() ? "" : " " + p.unit) + " is outside its range " +
+                     p.range.text);
   }
   return v;
 }
 
-sym::Values parameter_values(const Problem& problem,
-                             const std::vector<std::string>& assignments) {
+sym::Values parameter_values(const Problem& problem, const std::vector<std::string>& assignments) {
   sym::Values values;
   for (const auto& p : problem.parameters) values[p.name] = p.default_value;
   for (const auto& a : assignments) {

@@ -12,9 +12,9 @@ namespace wobble::detail {
 namespace {
 const std::map<std::string, std::string>& greek() {
   static const std::map<std::string, std::string> g{
-      {"alpha", "α"}, {"beta", "β"},   {"gamma", "γ"}, {"delta", "δ"}, {"theta", "θ"},
+      {"alpha", "α"},  {"beta", "β"},  {"gamma", "γ"}, {"delta", "δ"}, {"theta", "θ"},
       {"lambda", "λ"}, {"mu", "μ"},    {"rho", "ρ"},   {"sigma", "σ"}, {"phi", "φ"},
-      {"psi", "ψ"},   {"omega", "ω"}, {"Omega", "Ω"}, {"Pi", "π"},    {"pi", "π"}};
+      {"psi", "ψ"},    {"omega", "ω"}, {"Omega", "Ω"}, {"Pi", "π"},    {"pi", "π"}};
   return g;
 }
 
@@ -58,7 +58,9 @@ std::string pretty(const std::string& s) {
   return out;
 }
 
-std::string unit_text(const std::string& unit) { return pretty(unit).empty() ? "" : " " + pretty(unit); }
+std::string unit_text(const std::string& unit) {
+  return pretty(unit).empty() ? "" : " " + pretty(unit);
+}
 
 std::string unit_latex(const std::string& unit) {
   if (unit.empty()) return "";
@@ -68,7 +70,9 @@ std::string unit_latex(const std::string& unit) {
       out += "\\,";
     } else if (unit[i] == '^') {
       std::size_t j = i + 1;
-      while (j < unit.size() && (std::isdigit(static_cast<unsigned char>(unit[j])) || unit[j] == '-')) ++j;
+      while (j < unit.size() &&
+             (std::isdigit(static_cast<unsigned char>(unit[j])) || unit[j] == '-'))
+        ++j;
       out += "^{" + unit.substr(i + 1, j - i - 1) + "}";
       i = j - 1;
     } else {
@@ -103,34 +107,62 @@ std::string value_text(const Value& v, const std::string& indent) {
   return s;
 }
 
-
 namespace {
 // "I_xy", "I_cm", "e_k" in prose: a letter, '_', then one to two lower-case letters or digits.
 bool subscript_at(const std::string& s, std::size_t i, std::size_t& length) {
-  if (i == 0 || i + 1 >= s.size() || s[i] != '_' || !std::isalpha(static_cast<unsigned char>(s[i - 1]))) {
+  if (i == 0 || i + 1 >= s.size() || s[i] != '_' ||
+      !std::isalpha(static_cast<unsigned char>(s[i - 1]))) {
     return false;
   }
   if (i >= 2 && std::isalnum(static_cast<unsigned char>(s[i - 2]))) return false;
   std::size_t j = i + 1;
   while (j < s.size() && j - i - 1 < 3 &&
-         (std::islower(static_cast<unsigned char>(s[j])) || std::isdigit(static_cast<unsigned char>(s[j])))) {
+         (std::islower(static_cast<unsigned char>(s[j])) ||
+          std::isdigit(static_cast<unsigned char>(s[j])))) {
     ++j;
   }
   length = j - i - 1;
-  return length >= 1 && length <= 2 && (j == s.size() || !std::isalnum(static_cast<unsigned char>(s[j])));
+  return length >= 1 && length <= 2 &&
+         (j == s.size() || !std::isalnum(static_cast<unsigned char>(s[j])));
 }
 }  // namespace
 
 std::string latex_text(const std::string& s) {
-  static const std::vector<std::pair<std::string, std::string>> map{
-      {"\\", "\\textbackslash{}"}, {"&", "\\&"}, {"%", "\\%"}, {"#", "\\#"}, {"_", "\\_"},
-      {"{", "\\{"}, {"}", "\\}"}, {"~", "\\textasciitilde{}"}, {"^", "\\textasciicircum{}"},
-      {"Σ", "$\\Sigma$"}, {"∫", "$\\int$"}, {"δ", "$\\delta$"}, {"λ", "$\\lambda$"},
-      {"θ", "$\\theta$"}, {"α", "$\\alpha$"}, {"β", "$\\beta$"}, {"γ", "$\\gamma$"},
-      {"ω", "$\\omega$"}, {"Ω", "$\\Omega$"}, {"π", "$\\pi$"}, {"φ", "$\\phi$"}, {"ψ", "$\\psi$"},
-      {"²", "$^2$"}, {"³", "$^3$"}, {"ᵀ", "$^T$"}, {"−", "$-$"}, {"×", "$\\times$"},
-      {"±", "$\\pm$"}, {"·", "$\\cdot$"}, {"√", "$\\surd$"}, {"—", "---"}, {"–", "--"},
-      {"≥", "$\\geq$"}, {"≤", "$\\leq$"}, {"→", "$\\to$"}};
+  static const std::vector<std::pair<std::string, std::string>> map{{"\\", "\\textbackslash{}"},
+                                                                    {"&", "\\&"},
+                                                                    {"%", "\\%"},
+                                                                    {"#", "\\#"},
+                                                                    {"_", "\\_"},
+                                                                    {"{", "\\{"},
+                                                                    {"}", "\\}"},
+                                                                    {"~", "\\textasciitilde{}"},
+                                                                    {"^", "\\textasciicircum{}"},
+                                                                    {"Σ", "$\\Sigma$"},
+                                                                    {"∫", "$\\int$"},
+                                                                    {"δ", "$\\delta$"},
+                                                                    {"λ", "$\\lambda$"},
+                                                                    {"θ", "$\\theta$"},
+                                                                    {"α", "$\\alpha$"},
+                                                                    {"β", "$\\beta$"},
+                                                                    {"γ", "$\\gamma$"},
+                                                                    {"ω", "$\\omega$"},
+                                                                    {"Ω", "$\\Omega$"},
+                                                                    {"π", "$\\pi$"},
+                                                                    {"φ", "$\\phi$"},
+                                                                    {"ψ", "$\\psi$"},
+                                                                    {"²", "$^2$"},
+                                                                    {"³", "$^3$"},
+                                                                    {"ᵀ", "$^T$"},
+                                                                    {"−", "$-$"},
+                                                                    {"×", "$\\times$"},
+                                                                    {"±", "$\\pm$"},
+                                                                    {"·", "$\\cdot$"},
+                                                                    {"√", "$\\surd$"},
+                                                                    {"—", "---"},
+                                                                    {"–", "--"},
+                                                                    {"≥", "$\\geq$"},
+                                                                    {"≤", "$\\leq$"},
+                                                                    {"→", "$\\to$"}};
   std::string out;
   for (std::size_t i = 0; i < s.size();) {
     std::size_t sub = 0;

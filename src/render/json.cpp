@@ -66,7 +66,9 @@ nlohmann::ordered_json key_to_json(const Key& key) {
   return j;
 }
 
-std::string render_json(const Key& key) { return key_to_json(key).dump(2) + "\n"; }
+std::string render_json(const Key& key) {
+  return key_to_json(key).dump(2) + "\n";
+}
 
 std::string render(const Key& key, Format format) {
   switch (format) {

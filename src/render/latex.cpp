@@ -51,8 +51,8 @@ std::string render_latex(const Key& key) {
       "\\ifdim\\wd\\fitbox>\\linewidth\\resizebox{\\linewidth}{!}{\\usebox{\\fitbox}}"
       "\\else\\usebox{\\fitbox}\\fi\\end{center}}\n"
       "\\allowdisplaybreaks\n\\begin{document}\n";
-  out += fmt::format("\\section*{{{} \\quad{{\\normalsize\\texttt{{{}}}}}}}\n", latex_text(key.title),
-                     latex_text(key.problem));
+  out += fmt::format("\\section*{{{} \\quad{{\\normalsize\\texttt{{{}}}}}}}\n",
+                     latex_text(key.title), latex_text(key.problem));
   if (!key.source.empty()) out += "\\noindent\\emph{Source:} " + latex_text(key.source) + "\n\n";
   out += statement_latex(key.statement) + "\n\n\\noindent Parameters: ";
   for (std::size_t i = 0; i < key.parameters.size(); ++i) {

@@ -9,7 +9,7 @@ namespace {
 // Statement Markdown for a terminal: $...$ delimiters dropped, a few LaTeX commands as Unicode.
 std::string plain_statement(const std::string& md) {
   static const std::vector<std::pair<std::string, std::string>> commands{
-      {"\\alpha", "α"}, {"\\beta", "β"}, {"\\theta", "θ"}, {"\\omega", "ω"}, {"\\pi", "π"},
+      {"\\alpha", "α"}, {"\\beta", "β"}, {"\\theta", "θ"}, {"\\omega", "ω"},  {"\\pi", "π"},
       {"\\times", "×"}, {"\\cdot", "·"}, {"\\sqrt", "√"},  {"\\lambda", "λ"}, {"\\,", " "},
       {"^2", "²"},      {"^3", "³"},     {"**", ""},       {"$", ""}};
   std::string s = md;
@@ -30,7 +30,8 @@ std::string render_text(const Key& key) {
   if (out.back() != '\n') out += "\n";
   out += "\nParameters:";
   for (const auto& p : key.parameters) {
-    out += fmt::format(" {} = {}{};", pretty(p.name), format_number(p.value), detail::unit_text(p.unit));
+    out += fmt::format(" {} = {}{};", pretty(p.name), format_number(p.value),
+                       detail::unit_text(p.unit));
   }
   out.back() = '\n';
   for (const auto& part : key.parts) {

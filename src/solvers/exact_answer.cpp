@@ -1,7 +1,8 @@
 #include "solvers/exact_answer.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <limits>
 
 #include "core/principal_axes.hpp"

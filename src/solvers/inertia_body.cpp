@@ -1,7 +1,8 @@
 #include "solvers/inertia_body.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "core/shapes.hpp"
 #include "core/validity.hpp"
@@ -33,8 +34,8 @@ struct Evaluator {
   double positive(const GiNaC::ex& e, const std::string& text, const std::string& field) const {
     const double v = value(e, field);
     if (!(v > 0.0)) {
-      throw InputError(fmt::format("{}: \"{}\" is {:.10g} at these parameter values; it must be > 0",
-                                   field, text, v));
+      throw InputError(fmt::format(
+          "{}: \"{}\" is {:.10g} at these parameter values; it must be > 0", field, text, v));
     }
     return v;
   }
@@ -51,8 +52,8 @@ struct Evaluator {
 };
 
 std::string vec_text(const sym::SymVec3& v, const sym::SymbolTable& t) {
-  return "(" + sym::to_text(v[0], t) + ", " + sym::to_text(v[1], t) + ", " +
-         sym::to_text(v[2], t) + ")";
+  return "(" + sym::to_text(v[0], t) + ", " + sym::to_text(v[1], t) + ", " + sym::to_text(v[2], t) +
+         ")";
 }
 std::string vec_latex(const sym::SymVec3& v, const sym::SymbolTable& t) {
   return "\\left(" + sym::to_latex(v[0], t) + ", " + sym::to_latex(v[1], t) + ", " +
@@ -148,27 +149,27 @@ void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
       const std::string value = sym::to_text(sizes[k], t);
       size_text += (k ? ", " : "") + size_names[k] + (value == size_names[k] ? "" : " = " + value);
     }
-    body.steps.push_back({fmt::format("A uniform {} of mass {} (sizes {}), centre at {}; axes along x, "
-                                      "y, z. Second moments S_ii = ∫ x_i² dm about its centre:",
-                                      s.shape, sym::to_text(m, t), size_text,
-                                      vec_text(c_exact, t)),
-                          ""});
+    body.steps.push_back(
+        {fmt::format("A uniform {} of mass {} (sizes {}), centre at {}; axes along x, "
+                     "y, z. Second moments S_ii = ∫ x_i² dm about its centre:",
+                     s.shape, sym::to_text(m, t), size_text, vec_text(c_exact, t)),
+         ""});
     for (const auto& l : derivation.steps_latex) body.steps.push_back({"", l});
     const GiNaC::matrix Ic = sym::normalized(derivation.I_cm);
-    body.steps.push_back(
-        {"About its centre: I_cm = diag(" + sym::to_text(Ic(0, 0), t) + ", " +
-             sym::to_text(Ic(1, 1), t) + ", " + sym::to_text(Ic(2, 2), t) + ")",
-         "I_{\\mathrm{cm}} = \\operatorname{diag}\\left(" + sym::to_latex(Ic(0, 0), t) + ", " +
-             sym::to_latex(Ic(1, 1), t) + ", " + sym::to_latex(Ic(2, 2), t) + "\\right)",
-         "About its centre:"});
+    body.steps.push_back({"About its centre: I_cm = diag(" + sym::to_text(Ic(0, 0), t) + ", " +
+                              sym::to_text(Ic(1, 1), t) + ", " + sym::to_text(Ic(2, 2), t) + ")",
+                          "I_{\\mathrm{cm}} = \\operatorname{diag}\\left(" +
+                              sym::to_latex(Ic(0, 0), t) + ", " + sym::to_latex(Ic(1, 1), t) +
+                              ", " + sym::to_latex(Ic(2, 2), t) + "\\right)",
+                          "About its centre:"});
     body.steps.push_back(
         {"Parallel-axis theorem to the origin: I_O = I_cm + M (|d|² 1 − d dᵀ), d = " +
              vec_text(c_exact, t),
          "I_O = I_{\\mathrm{cm}} + M\\left(|d|^2\\,\\mathbb{1} - d\\,d^{T}\\right),\\quad d = " +
              vec_latex(c_exact, t),
          "Parallel-axis theorem to the origin:"});
-    body.description = body.description.empty() ? "a uniform " + s.shape : body.description +
-                                                                               " and a " + s.shape;
+    body.description =
+        body.description.empty() ? "a uniform " + s.shape : body.description + " and a " + s.shape;
   }
 }
 
@@ -186,8 +187,10 @@ void set_tensor(const Problem& problem, const Evaluator& ev, InertiaBody& body) 
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned j = i + 1; j < 3; ++j) {
       if (!sym::is_identically_zero(body.exact.I_O(i, j) - body.exact.I_O(j, i))) {
-        throw InputError(fmt::format("body.tensor: not symmetric: [{}][{}] = \"{}\" but [{}][{}] = "
-                                     "\"{}\"", i, j, rows[i][j], j, i, rows[j][i]));
+        throw InputError(
+            fmt::format("body.tensor: not symmetric: [{}][{}] = \"{}\" but [{}][{}] = "
+                        "\"{}\"",
+                        i, j, rows[i][j], j, i, rows[j][i]));
       }
     }
   }

@@ -13,11 +13,11 @@
 namespace wobble {
 
 struct InertiaBody {
-  bool has_mass = true;           ///< false for a tensor given directly (no mass, no centre)
-  sym::SymMassProperties exact;   ///< entries exact in the parameters
-  MassProperties numeric;         ///< from the evaluated inputs through core/
-  std::vector<Step> steps;        ///< how the tensor about O is assembled
-  std::string description;        ///< one line: "3 point masses", "a box of mass M", ...
+  bool has_mass = true;          ///< false for a tensor given directly (no mass, no centre)
+  sym::SymMassProperties exact;  ///< entries exact in the parameters
+  MassProperties numeric;        ///< from the evaluated inputs through core/
+  std::vector<Step> steps;       ///< how the tensor about O is assembled
+  std::string description;       ///< one line: "3 point masses", "a box of mass M", ...
 };
 
 /// @throws InputError naming the field: a malformed expression or undefined symbol; a mass or

@@ -1,6 +1,7 @@
 #include "solvers/inertia_solver.hpp"
 
 #include <fmt/format.h>
+
 #include <functional>
 #include <limits>
 #include <map>
@@ -43,13 +44,14 @@ void require_mass(const Context& c, const std::string& quantity) {
 void check_against_numeric(const GiNaC::matrix& exact, const Mat3& numeric, const Context& c,
                            const std::string& name) {
   const std::size_t parts = c.problem.body.masses.size() + c.problem.body.shapes.size();
-  const double tol = 4.0 * static_cast<double>(parts + 2) * kEps * std::max(numeric.trace(), 1e-300);
+  const double tol =
+      4.0 * static_cast<double>(parts + 2) * kEps * std::max(numeric.trace(), 1e-300);
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned j = 0; j < 3; ++j) {
       const double v = sym::evaluate(exact(i, j), c.exact.at, name);
       if (std::abs(v - numeric(i, j)) > tol) {
-        throw std::logic_error(fmt::format("{}[{}][{}]: exact {} but numeric {}", name, i, j, v,
-                                           numeric(i, j)));
+        throw std::logic_error(
+            fmt::format("{}[{}][{}]: exact {} but numeric {}", name, i, j, v, numeric(i, j)));
       }
     }
   }
@@ -72,10 +74,11 @@ const PrincipalAnswers& principal(Context& c, bool about_cm) {
   auto& slot = about_cm ? c.about_cm : c.about_O;
   if (!slot) {
     const std::string suffix = about_cm ? "_cm" : "";
-    slot = about_cm ? principal_answers(I_cm_exact(c), I_cm_numeric(c), "principal_moments" + suffix,
-                                        "principal_axes" + suffix, c.exact)
-                    : principal_answers(c.body.exact.I_O, c.body.numeric.I_O, "principal_moments",
-                                        "principal_axes", c.exact);
+    slot = about_cm
+               ? principal_answers(I_cm_exact(c), I_cm_numeric(c), "principal_moments" + suffix,
+                                   "principal_axes" + suffix, c.exact)
+               : principal_answers(c.body.exact.I_O, c.body.numeric.I_O, "principal_moments",
+                                   "principal_axes", c.exact);
   }
   return *slot;
 }
@@ -99,10 +102,10 @@ Computed compute(Context& c, const std::string& quantity) {
     require_mass(c, quantity);
     const auto& r = c.body.exact.r_cm;
     Computed out{exact_vector(quantity, {r[0], r[1], r[2]}, "m", c.exact), {}};
-    out.steps.push_back({"r_cm = Σ m r / Σ m = " + out.answer.symbolic,
-                         "r_{\\mathrm{cm}} = \\frac{\\sum_p m_p r_p}{\\sum_p m_p} = " +
-                             out.answer.latex,
-                         "Centre of mass:"});
+    out.steps.push_back(
+        {"r_cm = Σ m r / Σ m = " + out.answer.symbolic,
+         "r_{\\mathrm{cm}} = \\frac{\\sum_p m_p r_p}{\\sum_p m_p} = " + out.answer.latex,
+         "Centre of mass:"});
     return out;
   }
   if (quantity == "I_cm") {
@@ -110,11 +113,12 @@ Computed compute(Context& c, const std::string& quantity) {
     const auto& exact = I_cm_exact(c);
     check_against_numeric(exact, I_cm_numeric(c), c, quantity);
     Computed out{exact_matrix(quantity, exact, "kg m^2", c.exact), {}};
-    out.steps.push_back({"Parallel-axis theorem, from O to the centre of mass: I_cm = I_O − M "
-                         "(|r_cm|² 1 − r_cm r_cmᵀ)",
-                         "I_{\\mathrm{cm}} = I_O - M\\left(|r_{\\mathrm{cm}}|^2\\,\\mathbb{1} - "
-                         "r_{\\mathrm{cm}}\\,r_{\\mathrm{cm}}^{T}\\right)",
-                         "Parallel-axis theorem, from O to the centre of mass:"});
+    out.steps.push_back(
+        {"Parallel-axis theorem, from O to the centre of mass: I_cm = I_O − M "
+         "(|r_cm|² 1 − r_cm r_cmᵀ)",
+         "I_{\\mathrm{cm}} = I_O - M\\left(|r_{\\mathrm{cm}}|^2\\,\\mathbb{1} - "
+         "r_{\\mathrm{cm}}\\,r_{\\mathrm{cm}}^{T}\\right)",
+         "Parallel-axis theorem, from O to the centre of mass:"});
     out.steps.push_back({"I_cm = " + out.answer.symbolic, "I_{\\mathrm{cm}} = " + out.answer.latex,
                          "About the centre of mass:"});
     return out;

@@ -1,7 +1,8 @@
 #include "solvers/key.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace wobble {
 

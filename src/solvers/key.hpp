@@ -43,7 +43,7 @@ struct Answer {
   std::string symbolic;  ///< GiNaC text; empty if numeric only
   std::string latex;     ///< LaTeX of the symbolic form (or of the value if numeric only)
   Value value;
-  std::string unit;      ///< SI unit, "" for dimensionless
+  std::string unit;  ///< SI unit, "" for dimensionless
   std::vector<std::string> notes;
 };
 

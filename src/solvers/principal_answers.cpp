@@ -1,8 +1,9 @@
 #include "solvers/principal_answers.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -36,49 +37,56 @@ std::string degeneracy_note(const PrincipalAxes& pa) {
 
 // Tolerance for the exact route agreeing with the numeric one: the eigen residual bound
 // 8 n eps |I| (n = 3) on moments, and on axes the same over the smallest gap between moments.
-double moment_tolerance(const Mat3& I) { return 8.0 * 3.0 * kEps * std::max(I.norm(), 1e-300); }
+double moment_tolerance(const Mat3& I) {
+  return 8.0 * 3.0 * kEps * std::max(I.norm(), 1e-300);
+}
 
 void add_method_steps(const sym::SymPrincipal& sp, const ExactContext& ctx,
                       std::vector<Step>& steps) {
   const auto& t = ctx.table;
-  steps.push_back({"Characteristic equation det(λ 1 − I) = 0: " + sym::to_text(sp.characteristic, t) +
-                       " = 0",
-                   "\\det(\\lambda\\,\\mathbb{1} - I) = " + sym::to_latex(sp.characteristic, t) +
-                       " = 0",
-                   "Characteristic equation:"});
+  steps.push_back(
+      {"Characteristic equation det(λ 1 − I) = 0: " + sym::to_text(sp.characteristic, t) + " = 0",
+       "\\det(\\lambda\\,\\mathbb{1} - I) = " + sym::to_latex(sp.characteristic, t) + " = 0",
+       "Characteristic equation:"});
   using M = sym::SymPrincipal::Method;
   switch (sp.method) {
     case M::diagonal:
-      steps.push_back({"Every product of inertia is zero: the axes x, y, z are principal and the "
-                       "moments are the diagonal entries.",
-                       ""});
+      steps.push_back(
+          {"Every product of inertia is zero: the axes x, y, z are principal and the "
+           "moments are the diagonal entries.",
+           ""});
       break;
     case M::block: {
       const auto p = static_cast<unsigned>(sp.block_p), q = static_cast<unsigned>(sp.block_q);
       const auto k = static_cast<unsigned>(sp.block_k);
       steps.push_back(
-          {fmt::format("Only I_{0}{1} is nonzero: {2} is a principal axis with moment I_{2}{2}; the "
-                       "{0}-{1} block gives λ = (I_{0}{0} + I_{1}{1})/2 ± sqrt(((I_{0}{0} − "
-                       "I_{1}{1})/2)² + I_{0}{1}²).",
-                       kAxisName[p], kAxisName[q], kAxisName[k]),
+          {fmt::format(
+               "Only I_{0}{1} is nonzero: {2} is a principal axis with moment I_{2}{2}; the "
+               "{0}-{1} block gives λ = (I_{0}{0} + I_{1}{1})/2 ± sqrt(((I_{0}{0} − "
+               "I_{1}{1})/2)² + I_{0}{1}²).",
+               kAxisName[p], kAxisName[q], kAxisName[k]),
            fmt::format("\\lambda_\\pm = \\frac{{I_{{{0}{0}}} + I_{{{1}{1}}}}}{{2}} \\pm "
                        "\\sqrt{{\\left(\\frac{{I_{{{0}{0}}} - I_{{{1}{1}}}}}{{2}}\\right)^2 + "
                        "I_{{{0}{1}}}^2}}",
                        kAxisName[p], kAxisName[q]),
-           fmt::format("Only I_{0}{1} is nonzero: {2} is a principal axis with moment I_{2}{2}; the "
-                       "{0}-{1} block gives", kAxisName[p], kAxisName[q], kAxisName[k])});
+           fmt::format(
+               "Only I_{0}{1} is nonzero: {2} is a principal axis with moment I_{2}{2}; the "
+               "{0}-{1} block gives",
+               kAxisName[p], kAxisName[q], kAxisName[k])});
       break;
     }
     case M::factored:
-      steps.push_back({"The characteristic polynomial factors into linear and quadratic factors; "
-                       "their roots are the moments.",
-                       ""});
+      steps.push_back(
+          {"The characteristic polynomial factors into linear and quadratic factors; "
+           "their roots are the moments.",
+           ""});
       break;
     case M::numeric:
-      steps.push_back({"The characteristic polynomial does not factor over the rationals in the "
-                       "parameters, so the moments are computed numerically (iterative symmetric "
-                       "eigensolver) at the given values.",
-                       ""});
+      steps.push_back(
+          {"The characteristic polynomial does not factor over the rationals in the "
+           "parameters, so the moments are computed numerically (iterative symmetric "
+           "eigensolver) at the given values.",
+           ""});
       break;
   }
 }
@@ -102,16 +110,17 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
                                  "factor).");
   } else {
     std::array<double, 3> values{};
-    for (std::size_t i = 0; i < 3; ++i) values[i] = sym::evaluate(sp.moments[i], ctx.at, moments_name);
+    for (std::size_t i = 0; i < 3; ++i)
+      values[i] = sym::evaluate(sp.moments[i], ctx.at, moments_name);
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
     std::vector<GiNaC::ex> sorted;
     for (std::size_t i = 0; i < 3; ++i) {
       sorted.push_back(sp.moments[order[i]]);
       if (std::abs(values[order[i]] - pa.moments[static_cast<Eigen::Index>(i)]) > tol) {
-        throw std::logic_error(fmt::format("{}: exact moment {} = {} but the numeric solver gives {}",
-                                           moments_name, i + 1, values[order[i]],
-                                           pa.moments[static_cast<Eigen::Index>(i)]));
+        throw std::logic_error(
+            fmt::format("{}: exact moment {} = {} but the numeric solver gives {}", moments_name,
+                        i + 1, values[order[i]], pa.moments[static_cast<Eigen::Index>(i)]));
       }
     }
     out.moments = exact_vector(moments_name, sorted, unit, ctx);
@@ -120,17 +129,19 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
                                 "In ascending order at the given values:"});
   }
   if (pa.moments[0] <= pa.degeneracy_tolerance) {
-    out.moments.notes.push_back("λ1 = 0: all the mass lies on the axis e1 (a line); the tensor is "
-                                "still valid.");
+    out.moments.notes.push_back(
+        "λ1 = 0: all the mass lies on the axis e1 (a line); the tensor is "
+        "still valid.");
   }
   if (pa.degeneracy != Degeneracy::none) out.moments.notes.push_back(degeneracy_note(pa));
 
   // Axes.
-  out.axis_steps.push_back({"Each axis solves (I − λ_k 1) e_k = 0 with |e_k| = 1; e1 and e2 have "
-                            "their largest-magnitude component positive, and e3 = e1 × e2.",
-                            "(I - \\lambda_k\\,\\mathbb{1})\\,e_k = 0,\\quad |e_k| = 1,\\quad e_3 = e_1\\times e_2",
-                            "Each axis solves the equations below; e1 and e2 have their "
-                            "largest-magnitude component positive:"});
+  out.axis_steps.push_back(
+      {"Each axis solves (I − λ_k 1) e_k = 0 with |e_k| = 1; e1 and e2 have "
+       "their largest-magnitude component positive, and e3 = e1 × e2.",
+       "(I - \\lambda_k\\,\\mathbb{1})\\,e_k = 0,\\quad |e_k| = 1,\\quad e_3 = e_1\\times e_2",
+       "Each axis solves the equations below; e1 and e2 have their "
+       "largest-magnitude component positive:"});
   if (pa.degeneracy != Degeneracy::none) {
     out.axes = numeric_matrix(axes_name, pa.axes, "", degeneracy_note(pa));
     return out;
@@ -176,8 +187,8 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
     const double gap = std::min(k > 0 ? pa.moments[k] - pa.moments[k - 1] : INFINITY,
                                 k < 2 ? pa.moments[k + 1] - pa.moments[k] : INFINITY);
     if ((values.col(k) - pa.axes.col(k)).norm() > tol / gap + 64 * kEps) {
-      throw std::logic_error(fmt::format("{}: exact axis {} disagrees with the numeric solver",
-                                         axes_name, k + 1));
+      throw std::logic_error(
+          fmt::format("{}: exact axis {} disagrees with the numeric solver", axes_name, k + 1));
     }
   }
   out.axes = exact_matrix(axes_name, columns, "", ctx);

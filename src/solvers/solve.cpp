@@ -6,7 +6,9 @@
 
 namespace wobble {
 
-std::vector<std::string> solver_names() { return {"inertia"}; }
+std::vector<std::string> solver_names() {
+  return {"inertia"};
+}
 
 std::vector<std::string> key_conventions() {
   return {

@@ -88,9 +88,9 @@ class Printer {
     for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? "," : "") + print(e.op(i));
     if (!latex()) return name + "(" + args + ")";
     static const std::map<std::string, std::string> known{
-        {"sin", "\\sin"},   {"cos", "\\cos"}, {"tan", "\\tan"}, {"atan", "\\arctan"},
-        {"asin", "\\arcsin"}, {"acos", "\\arccos"}, {"exp", "\\exp"}, {"log", "\\ln"},
-        {"atan2", "\\operatorname{atan2}"}};
+        {"sin", "\\sin"},     {"cos", "\\cos"},     {"tan", "\\tan"},
+        {"atan", "\\arctan"}, {"asin", "\\arcsin"}, {"acos", "\\arccos"},
+        {"exp", "\\exp"},     {"log", "\\ln"},      {"atan2", "\\operatorname{atan2}"}};
     if (name == "abs") return "\\left|" + args + "\\right|";
     auto it = known.find(name);
     return (it == known.end() ? "\\operatorname{" + name + "}" : it->second) + paren(args);
@@ -190,7 +190,8 @@ class Printer {
     if (is_a<GiNaC::constant>(base)) return {1, 0, ""};
     if (is_a<GiNaC::function>(base)) return {2, 0, text.print(base)};
     if (is_a<GiNaC::power>(base) || is_a<numeric>(base)) return {3, 0, text.print(base)};
-    if (is_a<GiNaC::add>(base)) return {4, 0, join_terms(text.sum_terms(base), lead_negative(base))};
+    if (is_a<GiNaC::add>(base))
+      return {4, 0, join_terms(text.sum_terms(base), lead_negative(base))};
     return {5, 0, text.print(base)};
   }
 
@@ -208,8 +209,8 @@ class Printer {
       // \sin^{2}\left(\alpha\right), the usual spelling.
       std::string f = s;
       const auto open = f.find("\\left(");
-      if (open != std::string::npos) return f.substr(0, open) + "^{" + str(n) + "}" +
-                                            f.substr(open);
+      if (open != std::string::npos)
+        return f.substr(0, open) + "^{" + str(n) + "}" + f.substr(open);
     }
     const bool wrap = p < kAtom || is_a<GiNaC::power>(base) || is_a<numeric>(base);
     const std::string b = wrap ? paren(s) : s;
@@ -287,7 +288,8 @@ class Printer {
       if (parts.size() == 1 && parts[0].rfind(open, 0) == 0 &&
           parts[0].size() >= open.size() + close.size() &&
           parts[0].compare(parts[0].size() - close.size(), close.size(), close) == 0 &&
-          balanced_inside(parts[0].substr(open.size(), parts[0].size() - open.size() - close.size()))) {
+          balanced_inside(
+              parts[0].substr(open.size(), parts[0].size() - open.size() - close.size()))) {
         return parts[0].substr(open.size(), parts[0].size() - open.size() - close.size());
       }
       return join(parts);

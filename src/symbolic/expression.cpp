@@ -1,12 +1,12 @@
 #include "symbolic/expression.hpp"
 
-#include "symbolic/canonical_print.hpp"
-
-#include <cctype>
-#include <set>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <set>
 #include <sstream>
+
+#include "symbolic/canonical_print.hpp"
 
 namespace wobble::sym {
 
@@ -46,8 +46,7 @@ GiNaC::numeric exact_rational(double d) {
 }
 }  // namespace
 
-GiNaC::ex SymbolTable::declare(const std::string& name, const std::string& latex,
-                               SymbolSign sign) {
+GiNaC::ex SymbolTable::declare(const std::string& name, const std::string& latex, SymbolSign sign) {
   if (!is_identifier(name)) throw std::invalid_argument("'" + name + "' is not an identifier");
   if (name == "pi" || name == "Pi" || contains(name)) {
     throw std::invalid_argument("symbol '" + name + "' is declared twice or is reserved");
@@ -126,7 +125,9 @@ double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& fie
   return d;
 }
 
-bool is_identically_zero(const GiNaC::ex& e) { return GiNaC::normal(e).is_zero(); }
+bool is_identically_zero(const GiNaC::ex& e) {
+  return GiNaC::normal(e).is_zero();
+}
 
 GiNaC::ex simplified_sqrt(const GiNaC::ex& e) {
   GiNaC::ex f = GiNaC::factor(GiNaC::normal(e));

@@ -75,7 +75,8 @@ SymPrincipal principal_closed_form(const GiNaC::matrix& I, const GiNaC::symbol& 
   }
   const ex poly = GiNaC::expand(shifted.determinant());
   out.characteristic = GiNaC::factor(poly);
-  if (!GiNaC::is_a<GiNaC::mul>(out.characteristic) && !GiNaC::is_a<GiNaC::power>(out.characteristic)) {
+  if (!GiNaC::is_a<GiNaC::mul>(out.characteristic) &&
+      !GiNaC::is_a<GiNaC::power>(out.characteristic)) {
     // No factors: write it as a polynomial in lambda with simplified coefficients.
     ex collected = 0;
     for (int k = poly.ldegree(lambda); k <= poly.degree(lambda); ++k) {
@@ -156,8 +157,8 @@ std::optional<SymVec3> principal_axis_closed_form(const GiNaC::matrix& I, const 
       }
     }
   }
-  const ex length = simplified_sqrt(simplify(best[0] * best[0] + best[1] * best[1] +
-                                                  best[2] * best[2]));
+  const ex length =
+      simplified_sqrt(simplify(best[0] * best[0] + best[1] * best[1] + best[2] * best[2]));
   for (auto& e : best) e = simplify(e / length);
   return best;
 }

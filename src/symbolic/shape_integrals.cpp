@@ -60,7 +60,8 @@ std::array<ex, 3> second_moments(wobble::ShapeKind kind, const ex& M, const std:
       const ex rho = M / over(1);
       steps.push_back(
           "S_{xx} = S_{yy} = \\frac{1}{2}\\,\\frac{M}{\\pi R^2 h}\\int_{-h/2}^{h/2}\\int_0^R "
-          "r^2\\,2\\pi r\\,dr\\,dz, S_{zz} = \\frac{M}{\\pi R^2 h}\\int\\int z^2\\,2\\pi r\\,dr\\,dz");
+          "r^2\\,2\\pi r\\,dr\\,dz, S_{zz} = \\frac{M}{\\pi R^2 h}\\int\\int z^2\\,2\\pi "
+          "r\\,dr\\,dz");
       return {rho * over(r * r) / 2, rho * over(r * r) / 2, rho * over(z * z)};
     }
     case K::sphere: {

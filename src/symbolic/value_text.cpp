@@ -31,7 +31,9 @@ std::vector<std::string> items(const std::string& text, const std::string& field
   return out;
 }
 
-bool bracketed(const std::string& s) { return s.size() >= 2 && s.front() == '[' && s.back() == ']'; }
+bool bracketed(const std::string& s) {
+  return s.size() >= 2 && s.front() == '[' && s.back() == ']';
+}
 }  // namespace
 
 ValueText parse_value_text(const std::string& raw, const SymbolTable& table,
@@ -47,13 +49,15 @@ ValueText parse_value_text(const std::string& raw, const SymbolTable& table,
     out.is_matrix = true;
     out.rows = rows.size();
     for (std::size_t i = 0; i < rows.size(); ++i) {
-      if (!bracketed(rows[i])) throw ExpressionError(field + ": row " + std::to_string(i) + " is not a [list]");
+      if (!bracketed(rows[i]))
+        throw ExpressionError(field + ": row " + std::to_string(i) + " is not a [list]");
       const auto row = items(rows[i], field);
       if (i == 0) out.cols = row.size();
       if (row.size() != out.cols) throw ExpressionError(field + ": rows of different lengths");
       for (std::size_t j = 0; j < row.size(); ++j) {
         if (bracketed(row[j])) throw ExpressionError(field + ": nested deeper than a matrix");
-        out.entries.push_back(table.parse(row[j], field + "[" + std::to_string(i) + "][" + std::to_string(j) + "]"));
+        out.entries.push_back(
+            table.parse(row[j], field + "[" + std::to_string(i) + "][" + std::to_string(j) + "]"));
       }
     }
     return out;

@@ -1,9 +1,10 @@
 #include "cli/run.hpp"
 
+#include <sys/wait.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 
 #include "temp_files.hpp"
 

@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -28,12 +27,14 @@ TEST_CASE("version and help exit 0") {
   REQUIRE_THAT(run_wobble({"--version"}).out, Catch::StartsWith("wobble "));
   const RunResult help = run_wobble({"--help"});
   REQUIRE(help.exit_code == 0);
-  REQUIRE_THAT(help.out, Catch::Contains("solve") && Catch::Contains("keys") && Catch::Contains("list"));
+  REQUIRE_THAT(help.out,
+               Catch::Contains("solve") && Catch::Contains("keys") && Catch::Contains("list"));
   REQUIRE(run_wobble({"solve", "--help"}).exit_code == 0);
 }
 
 TEST_CASE("solve --format json has the documented shape, at values not in the repository") {
-  const RunResult r = run_wobble({"solve", "taylor-10-35", "--set", "m=0.35", "--set", "a=2.2", "--format", "json"});
+  const RunResult r = run_wobble(
+      {"solve", "taylor-10-35", "--set", "m=0.35", "--set", "a=2.2", "--format", "json"});
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
   REQUIRE(j["problem"] == "taylor-10-35");
@@ -114,7 +115,8 @@ TEST_CASE("keys --update writes a folder, then --check finds a changed number an
   std::ofstream(dir / "old-problem.json") << "{}\n";
   const RunResult check = run_wobble({"keys", "--check"}, env);
   REQUIRE(check.exit_code == 1);
-  REQUIRE_THAT(check.out, Catch::Contains("taylor-10-35.json: parts[1].answers[0].value[2]: 10.5 -> 10"));
+  REQUIRE_THAT(check.out,
+               Catch::Contains("taylor-10-35.json: parts[1].answers[0].value[2]: 10.5 -> 10"));
   REQUIRE_THAT(check.out, Catch::Contains("old-problem.json: no problem has this key"));
 }
 

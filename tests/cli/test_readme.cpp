@@ -1,7 +1,6 @@
 // README's console examples are run: each "$ wobble ..." line in a ```console block is executed
 // and its output must be the lines that follow it in the README, exactly.
 #include <catch2/catch.hpp>
-
 #include <fstream>
 #include <sstream>
 

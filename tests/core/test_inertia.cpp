@@ -1,7 +1,6 @@
 // Core identities of inertia tensors, with tolerances derived from the scale of the problem.
-#include <catch2/catch.hpp>
-
 #include <Eigen/Geometry>
+#include <catch2/catch.hpp>
 #include <limits>
 
 #include "core/inertia.hpp"
@@ -15,12 +14,16 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // Fixed, irregular point set (no randomness): masses in kg, positions in m.
 std::vector<PointMass> sample_masses() {
-  return {{1.5, {0.3, -1.2, 0.7}}, {0.25, {2.0, 0.4, -0.9}}, {3.0, {-0.6, 0.8, 1.1}},
+  return {{1.5, {0.3, -1.2, 0.7}},
+          {0.25, {2.0, 0.4, -0.9}},
+          {3.0, {-0.6, 0.8, 1.1}},
           {0.8, {0.1, 0.1, -2.3}}};
 }
 
 // Tensors from sums of products of O(1) numbers: entries carry errors of a few eps * trace.
-double tol_for(const Mat3& I, int terms) { return 4.0 * terms * kEps * I.trace(); }
+double tol_for(const Mat3& I, int terms) {
+  return 4.0 * terms * kEps * I.trace();
+}
 
 void require_close(const Mat3& a, const Mat3& b, double tol) {
   for (int i = 0; i < 3; ++i) {
@@ -39,7 +42,8 @@ TEST_CASE("a single point mass has the tensor m (r^2 1 - r r^T)") {
 
 TEST_CASE("composition is additive") {
   const auto all = sample_masses();
-  const std::vector<PointMass> first(all.begin(), all.begin() + 2), second(all.begin() + 2, all.end());
+  const std::vector<PointMass> first(all.begin(), all.begin() + 2),
+      second(all.begin() + 2, all.end());
   const MassProperties whole = mass_properties(all);
   const MassProperties combined = combine({mass_properties(first), mass_properties(second)});
   REQUIRE_THAT(combined.mass_kg, WithinAbs(whole.mass_kg, 4 * kEps * whole.mass_kg));
@@ -59,9 +63,9 @@ TEST_CASE("parallel-axis shift to the centre of mass and back is the identity") 
 }
 
 TEST_CASE("rotating the body rotates the tensor: I' = R I R^T") {
-  const Mat3 R = (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()) *
-                  Eigen::AngleAxisd(-1.3, Vec3::UnitX()))
-                     .toRotationMatrix();
+  const Mat3 R =
+      (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()) * Eigen::AngleAxisd(-1.3, Vec3::UnitX()))
+          .toRotationMatrix();
   std::vector<PointMass> rotated = sample_masses();
   for (auto& m : rotated) m.r_O_m = R * m.r_O_m;
   const Mat3 I = inertia_of_point_masses(sample_masses());
@@ -86,8 +90,9 @@ TEST_CASE("shape tensors agree with a fine cloud of point masses (midpoint rule)
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       for (int k = 0; k < n; ++k) {
-        cloud.push_back({M / (n * n * n), {a * ((i + 0.5) / n - 0.5), b * ((j + 0.5) / n - 0.5),
-                                           c * ((k + 0.5) / n - 0.5)}});
+        cloud.push_back(
+            {M / (n * n * n),
+             {a * ((i + 0.5) / n - 0.5), b * ((j + 0.5) / n - 0.5), c * ((k + 0.5) / n - 0.5)}});
       }
     }
   }

@@ -1,7 +1,6 @@
 // Principal axes: eigen residual, orthonormality, handedness, canonical signs, degeneracy.
-#include <catch2/catch.hpp>
-
 #include <Eigen/Geometry>
+#include <catch2/catch.hpp>
 #include <limits>
 
 #include "core/principal_axes.hpp"
@@ -53,7 +52,8 @@ TEST_CASE("separated moments: canonical axes of a rotated diagonal tensor") {
   require_canonical(I, p);
   REQUIRE(p.degeneracy == Degeneracy::none);
   for (int k = 0; k < 3; ++k) {
-    REQUIRE_THAT(p.moments[k], WithinAbs(std::vector<double>{1.0, 2.0, 3.5}[k], 8 * 3 * kEps * 3.5));
+    REQUIRE_THAT(p.moments[k],
+                 WithinAbs(std::vector<double>{1.0, 2.0, 3.5}[k], 8 * 3 * kEps * 3.5));
     // Each axis is the rotated coordinate axis, up to sign.
     REQUIRE_THAT(std::abs(p.axes.col(k).dot(rotation().col(k))), WithinAbs(1.0, 64 * kEps));
   }
@@ -80,7 +80,8 @@ TEST_CASE("exactly degenerate pair: snapped, flagged, fixed basis, independent o
     if (which == Degeneracy::pair23) REQUIRE(p.moments[1] == p.moments[2]);
     // The unique axis is the rotated one; the pair spans the plane perpendicular to it.
     const int unique = which == Degeneracy::pair12 ? 2 : 0;
-    REQUIRE_THAT(std::abs(p.axes.col(unique).dot(rotation().col(unique))), WithinAbs(1.0, 64 * kEps));
+    REQUIRE_THAT(std::abs(p.axes.col(unique).dot(rotation().col(unique))),
+                 WithinAbs(1.0, 64 * kEps));
   }
 }
 

@@ -12,8 +12,8 @@ TEST_CASE("valid tensors pass, including planar and collinear limits") {
 
 TEST_CASE("each violated condition is named") {
   REQUIRE_THROWS_WITH(check_inertia_tensor(Vec3(1.0, 1.0, 3.0).asDiagonal()),
-                      Catch::Contains("triangle inequality") && Catch::Contains("I1 + I2 = 1 + 1 = 2") &&
-                          Catch::Contains("< I3 = 3"));
+                      Catch::Contains("triangle inequality") &&
+                          Catch::Contains("I1 + I2 = 1 + 1 = 2") && Catch::Contains("< I3 = 3"));
   REQUIRE_THROWS_WITH(check_inertia_tensor(Vec3(-1.0, 2.0, 2.5).asDiagonal()),
                       Catch::Contains("not positive semi-definite") && Catch::Contains("-1"));
   Mat3 asym = Mat3::Identity();

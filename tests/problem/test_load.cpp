@@ -65,14 +65,17 @@ TEST_CASE("a good file loads with every field") {
 
 TEST_CASE("bad files: the message names the file, the line and the field") {
   using Catch::Contains;
-  CHECK_THAT(load_error("id = \"x\"\ntitle = \n"), Contains("bad.toml:2") && Contains("malformed TOML"));
+  CHECK_THAT(load_error("id = \"x\"\ntitle = \n"),
+             Contains("bad.toml:2") && Contains("malformed TOML"));
   CHECK_THAT(load_error(replaced(kGood, "title", "titel")),
              Contains("titel: unknown key") && Contains("expected one of"));
-  CHECK_THAT(load_error(replaced(kGood, "solver = \"inertia\"\n", "")), Contains("solver: missing"));
+  CHECK_THAT(load_error(replaced(kGood, "solver = \"inertia\"\n", "")),
+             Contains("solver: missing"));
   CHECK_THAT(load_error(replaced(kGood, "range = \"(0, inf)\"", "range = \"0 to inf\"")),
              Contains("parameters[0].range") && Contains("expected an interval"));
-  CHECK_THAT(load_error(replaced(kGood, "default = 1", "default = -1")),
-             Contains("bad.toml:9") && Contains("parameters[0].default") && Contains("outside its range"));
+  CHECK_THAT(
+      load_error(replaced(kGood, "default = 1", "default = -1")),
+      Contains("bad.toml:9") && Contains("parameters[0].default") && Contains("outside its range"));
   CHECK_THAT(load_error(replaced(kGood, "default = \"30deg\"", "default = \"100deg\"")),
              Contains("parameters[1].default") && Contains("outside its range [0, pi/2)"));
   CHECK_THAT(load_error(replaced(kGood, "at = [1, 0, 0]", "at = [1, 0]")),
@@ -81,15 +84,17 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
              Contains("declared twice"));
   CHECK_THAT(load_error(replaced(kGood, "answers = [\"I\", ", "answers = [3, ")),
              Contains("parts[0].answers[0]"));
-  CHECK_THAT(load_error(replaced(kGood, "masses = [", "tensor = [[1,0,0],[0,1,0],[0,0,1]]\nmasses = [")),
-             Contains("cannot be combined"));
+  CHECK_THAT(
+      load_error(replaced(kGood, "masses = [", "tensor = [[1,0,0],[0,1,0],[0,0,1]]\nmasses = [")),
+      Contains("cannot be combined"));
 }
 
 TEST_CASE("problem lookup: by id, by file, and unknown ids list the known ones") {
   REQUIRE(find_problem("taylor-10-35").id == "taylor-10-35");
   REQUIRE(find_problem(test::write_file("load/good2.toml", kGood).string()).id == "two");
-  REQUIRE_THROWS_WITH(find_problem("taylor-10-53"),
-                      Catch::Contains("unknown problem 'taylor-10-53'") && Catch::Contains("taylor-10-35"));
+  REQUIRE_THROWS_WITH(
+      find_problem("taylor-10-53"),
+      Catch::Contains("unknown problem 'taylor-10-53'") && Catch::Contains("taylor-10-35"));
   REQUIRE_THROWS_WITH(find_problem("/nonexistent/x.toml"), Catch::Contains("no such problem file"));
 }
 
@@ -99,6 +104,6 @@ TEST_CASE("set assignments NAME=VALUE") {
   REQUIRE(v.at("m") == 2.0);
   REQUIRE_THAT(v.at("alpha"), Catch::Matchers::WithinULP(M_PI / 4, 1));
   REQUIRE_THROWS_WITH(parameter_values(p, {"q=1"}), Catch::Contains("unknown parameter 'q'") &&
-                                                      Catch::Contains("known: m, alpha"));
+                                                        Catch::Contains("known: m, alpha"));
   REQUIRE_THROWS_WITH(parameter_values(p, {"m"}), Catch::Contains("expected NAME=VALUE"));
 }

@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "problem/values.hpp"
@@ -27,7 +26,8 @@ TEST_CASE("values: numbers, constant expressions, degrees") {
   REQUIRE(parse_parameter_value(mass(), "2.5", "f") == 2.5);
   REQUIRE(parse_parameter_value(mass(), " 1e-3 ", "f") == 1e-3);
   // pi/6 is evaluated exactly and rounded once; M_PI / 6 rounds twice: within 1 ulp.
-  REQUIRE_THAT(parse_parameter_value(angle(), "pi/6", "f"), Catch::Matchers::WithinULP(M_PI / 6, 1));
+  REQUIRE_THAT(parse_parameter_value(angle(), "pi/6", "f"),
+               Catch::Matchers::WithinULP(M_PI / 6, 1));
   REQUIRE_THAT(parse_parameter_value(angle(), "30deg", "f"),
                Catch::Matchers::WithinULP(M_PI / 6, 1));
   REQUIRE(parse_parameter_value(angle(), "0", "f") == 0.0);  // closed end
@@ -46,7 +46,8 @@ TEST_CASE("values: each kind of bad value is named") {
                       Catch::Contains("in degrees but m is in kg"));
   REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "90deg", "--set alpha"),
                       Catch::Contains("outside its range [0, pi/2)"));
-  REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "", "--set alpha"), Catch::Contains("not a number"));
+  REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "", "--set alpha"),
+                      Catch::Contains("not a number"));
 }
 
 TEST_CASE("intervals") {
@@ -54,7 +55,8 @@ TEST_CASE("intervals") {
   REQUIRE_FALSE(i.contains(0.0));
   REQUIRE(i.contains(M_PI));
   REQUIRE_FALSE(i.contains(4.0));
-  REQUIRE_THROWS_WITH(parse_interval("0..1", "parameters[0].range"),
-                      Catch::Contains("parameters[0].range") && Catch::Contains("expected an interval"));
+  REQUIRE_THROWS_WITH(
+      parse_interval("0..1", "parameters[0].range"),
+      Catch::Contains("parameters[0].range") && Catch::Contains("expected an interval"));
   REQUIRE_THROWS_WITH(parse_interval("(2, 1)", "r"), Catch::Contains("empty interval"));
 }

@@ -1,9 +1,8 @@
 // Every answer of every problem, at the defaults and at other values: the symbolic form, read
 // back and evaluated, equals the value; and the answers agree with each other (eigen residual,
 // orthonormal right-handed axes, parallel-axis consistency).
-#include <catch2/catch.hpp>
-
 #include <Eigen/Dense>
+#include <catch2/catch.hpp>
 #include <limits>
 
 #include "core/inertia.hpp"
@@ -24,7 +23,8 @@ sym::Values other_values(const Problem& p, int k) {
   for (const auto& param : p.parameters) {
     double x = v[param.name];
     if (param.is_angle()) {
-      const double lo = param.range.lo, hi = std::isfinite(param.range.hi) ? param.range.hi : lo + 3.0;
+      const double lo = param.range.lo,
+                   hi = std::isfinite(param.range.hi) ? param.range.hi : lo + 3.0;
       x = lo + (hi - lo) * (0.2 + 0.17 * k);
     } else {
       x *= std::pow(1.37, k) * (1.0 + 0.11 * static_cast<double>(param.name.size()));
@@ -46,7 +46,8 @@ const Answer* find(const Key& key, const std::string& name) {
 Mat3 mat(const Answer& a) {
   Mat3 m;
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) m(i, j) = a.value.at(static_cast<std::size_t>(i), static_cast<std::size_t>(j));
+    for (int j = 0; j < 3; ++j)
+      m(i, j) = a.value.at(static_cast<std::size_t>(i), static_cast<std::size_t>(j));
   }
   return m;
 }
@@ -95,8 +96,9 @@ void check_key(const Problem& p, const sym::Values& values) {
   // Consistency between answers, whatever their names in this problem.
   const Answer* I = find(key, "I") ? find(key, "I") : find(key, "I_corner");
   REQUIRE(I != nullptr);
-  check_principal(*I, find(key, "principal_moments") ? find(key, "principal_moments")
-                                                     : find(key, "principal_moments_corner"),
+  check_principal(*I,
+                  find(key, "principal_moments") ? find(key, "principal_moments")
+                                                 : find(key, "principal_moments_corner"),
                   find(key, "principal_axes") ? find(key, "principal_axes")
                                               : find(key, "principal_axes_corner"));
   if (const Answer* I_cm = find(key, "I_cm")) {

@@ -1,6 +1,5 @@
 // The keys against independent hand derivations, at parameter values that are not the defaults.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <limits>
 
@@ -61,12 +60,13 @@ TEST_CASE("four-masses: moments 5/2, 3, 7/2 m a^2") {
 TEST_CASE("box-corner: textbook corner tensor, diagonal centre tensor, invariants of the moments") {
   const double M = 3.1, a = 0.5, b = 1.25, c = 0.8;
   const Key key = solve_with("box-corner", {"M=3.1", "a=0.5", "b=1.25", "c=0.8"});
-  const double xx = M * (b * b + c * c) / 3, yy = M * (a * a + c * c) / 3, zz = M * (a * a + b * b) / 3;
+  const double xx = M * (b * b + c * c) / 3, yy = M * (a * a + c * c) / 3,
+               zz = M * (a * a + b * b) / 3;
   const double xy = -M * a * b / 4, xz = -M * a * c / 4, yz = -M * b * c / 4;
   require_values(answer(key, "I_corner"), {xx, xy, xz, xy, yy, yz, xz, yz, zz});
   require_values(answer(key, "center_of_mass"), {a / 2, b / 2, c / 2});
-  require_values(answer(key, "I_cm"), {M * (b * b + c * c) / 12, 0, 0, 0, M * (a * a + c * c) / 12, 0,
-                                       0, 0, M * (a * a + b * b) / 12});
+  require_values(answer(key, "I_cm"), {M * (b * b + c * c) / 12, 0, 0, 0, M * (a * a + c * c) / 12,
+                                       0, 0, 0, M * (a * a + b * b) / 12});
   // Numeric moments: check the three invariants of the tensor instead of solving again.
   const auto& l = answer(key, "principal_moments_corner").value.data;
   const double trace = xx + yy + zz;
@@ -99,7 +99,8 @@ TEST_CASE("three-atom-molecule: the planar tensor and its 2x2 block by hand") {
 
 TEST_CASE("three-atom-molecule-symmetric: diagonal tensors, a straight molecule is collinear") {
   const double M = 16, m = 1.3, d = 0.96, al = 1.85;
-  const Key key = solve_with("three-atom-molecule-symmetric", {"M=16", "m=1.3", "d=0.96", "alpha=1.85"});
+  const Key key =
+      solve_with("three-atom-molecule-symmetric", {"M=16", "m=1.3", "d=0.96", "alpha=1.85"});
   const double c = std::cos(al / 2), s = std::sin(al / 2);
   const double Ixx = 2 * m * d * d * s * s, Iyy = 2 * m * d * d * c * c;
   require_values(answer(key, "I"), {Ixx, 0, 0, 0, Iyy, 0, 0, 0, Ixx + Iyy});

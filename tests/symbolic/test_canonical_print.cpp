@@ -16,7 +16,6 @@ SymbolTable table() {
   return t;
 }
 
-
 const std::vector<std::string> kExpressions = {
     "m*a^2/6",
     "-m*a^2 + 3*M*d1^2",
@@ -47,7 +46,8 @@ TEST_CASE("printing does not depend on how many symbols were created before") {
   std::vector<std::string> first;
   {
     const SymbolTable t = table();
-    for (const auto& text : kExpressions) first.push_back(to_text(t.parse(text, "a"), t) + " | " + to_latex(t.parse(text, "a"), t));
+    for (const auto& text : kExpressions)
+      first.push_back(to_text(t.parse(text, "a"), t) + " | " + to_latex(t.parse(text, "a"), t));
   }
   std::vector<GiNaC::symbol> noise;
   for (int i = 0; i < 97; ++i) noise.emplace_back("noise");
@@ -75,15 +75,17 @@ TEST_CASE("known spellings") {
 
 TEST_CASE("the parser rejects undefined symbols and syntax errors, naming the field") {
   const SymbolTable t = table();
-  REQUIRE_THROWS_WITH(t.parse("m*b", "body.masses[0].mass"),
-                      Catch::Contains("body.masses[0].mass") && Catch::Contains("undefined symbol 'b'"));
+  REQUIRE_THROWS_WITH(
+      t.parse("m*b", "body.masses[0].mass"),
+      Catch::Contains("body.masses[0].mass") && Catch::Contains("undefined symbol 'b'"));
   REQUIRE_THROWS_WITH(t.parse("m*", "field"), Catch::Contains("field") && Catch::Contains("m*"));
   REQUIRE_THROWS_WITH(t.parse("  ", "field"), Catch::Contains("empty"));
 }
 
 TEST_CASE("evaluation is exact to double rounding") {
   const SymbolTable t = table();
-  const GiNaC::lst at = substitution(t, {{"m", 3.0}, {"a", 0.1}, {"M", 1.0}, {"alpha", 0.5}, {"d1", 2.0}});
+  const GiNaC::lst at =
+      substitution(t, {{"m", 3.0}, {"a", 0.1}, {"M", 1.0}, {"alpha", 0.5}, {"d1", 2.0}});
   // (a - d1)(a + d1) + d1^2 - a^2 = 0 exactly; naive double arithmetic would leave ~1e-16.
   REQUIRE(evaluate(t.parse("(a - d1)*(a + d1) + d1^2 - a^2", "x"), at, "x") == 0.0);
   REQUIRE(evaluate(t.parse("sqrt(2)", "x"), at, "x") == std::sqrt(2.0));

@@ -30,12 +30,14 @@ TEST_CASE("closed-form routes: diagonal, block, factored, none") {
   const GiNaC::lst at = substitution(t, {{"m", 2.0}, {"a", 3.0}});
   const GiNaC::symbol lambda("lambda");
 
-  const auto diag = principal_closed_form(from_rows(t, {{"m", "0", "0"}, {"0", "2*m", "0"}, {"0", "0", "a"}}), lambda);
+  const auto diag = principal_closed_form(
+      from_rows(t, {{"m", "0", "0"}, {"0", "2*m", "0"}, {"0", "0", "a"}}), lambda);
   REQUIRE(diag.method == Method::diagonal);
 
   // Taylor 10.35: block in y-z, moments 5, 7, 10 m a^2.
   const auto block = principal_closed_form(
-      from_rows(t, {{"10*m*a^2", "0", "0"}, {"0", "6*m*a^2", "m*a^2"}, {"0", "m*a^2", "6*m*a^2"}}), lambda);
+      from_rows(t, {{"10*m*a^2", "0", "0"}, {"0", "6*m*a^2", "m*a^2"}, {"0", "m*a^2", "6*m*a^2"}}),
+      lambda);
   REQUIRE(block.method == Method::block);
   REQUIRE(sorted_values(block, at) == std::vector<double>{90.0, 126.0, 180.0});
 
@@ -50,15 +52,17 @@ TEST_CASE("closed-form routes: diagonal, block, factored, none") {
   for (std::size_t i = 0; i < 3; ++i) {
     if (evaluate(factored.moments[i], at, "m") == 2.0) simple = i;
   }
-  const auto axis = principal_axis_closed_form(from_rows(t, {{"3*m", "m", "m"}, {"m", "3*m", "-m"}, {"m", "-m", "3*m"}}),
-                                               factored, simple, at);
+  const auto axis = principal_axis_closed_form(
+      from_rows(t, {{"3*m", "m", "m"}, {"m", "3*m", "-m"}, {"m", "-m", "3*m"}}), factored, simple,
+      at);
   REQUIRE(axis);
   const double x = evaluate((*axis)[0], at, "x"), y = evaluate((*axis)[1], at, "y");
   REQUIRE_THAT(std::abs(x), Catch::Matchers::WithinRel(1.0 / std::sqrt(3.0), 4e-16));
   REQUIRE_THAT(x, Catch::Matchers::WithinRel(-y, 4e-16));
   const std::size_t repeated = simple == 0 ? 1 : 0;
-  REQUIRE_FALSE(principal_axis_closed_form(from_rows(t, {{"3*m", "m", "m"}, {"m", "3*m", "-m"}, {"m", "-m", "3*m"}}),
-                                           factored, repeated, at));
+  REQUIRE_FALSE(principal_axis_closed_form(
+      from_rows(t, {{"3*m", "m", "m"}, {"m", "3*m", "-m"}, {"m", "-m", "3*m"}}), factored, repeated,
+      at));
 
   // An irreducible cubic in the parameters has no closed form here.
   const auto none = principal_closed_form(

@@ -1,6 +1,5 @@
 // Two derivations of every shape's tensor: GiNaC integration and core's closed forms.
 #include <catch2/catch.hpp>
-
 #include <limits>
 
 #include "core/shapes.hpp"
