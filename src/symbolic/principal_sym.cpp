@@ -73,19 +73,34 @@ SymPrincipal principal_closed_form(const GiNaC::matrix& I, const GiNaC::symbol& 
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned j = 0; j < 3; ++j) shifted(i, j) = (i == j ? ex(lambda) : ex(0)) - I(i, j);
   }
-  const ex poly = GiNaC::expand(shifted.determinant());
-  out.characteristic = GiNaC::factor(poly);
-  if (!GiNaC::is_a<GiNaC::mul>(out.characteristic) &&
-      !GiNaC::is_a<GiNaC::power>(out.characteristic)) {
-    // No factors: write it as a polynomial in lambda with simplified coefficients.
-    ex collected = 0;
-    for (int k = poly.ldegree(lambda); k <= poly.degree(lambda); ++k) {
-      collected += simplify(poly.coeff(lambda, k)) * GiNaC::pow(lambda, k);
+  const auto products = nonzero_products(I);
+  // The characteristic polynomial in the form its structure gives (a product of diagonal
+  // factors, or a linear factor times the block's quadratic); expanded and factored otherwise.
+  if (products.empty()) {
+    out.characteristic = (lambda - I(0, 0)) * (lambda - I(1, 1)) * (lambda - I(2, 2));
+  } else if (products.size() == 1) {
+    const auto p = static_cast<unsigned>(products[0].first), q = static_cast<unsigned>(products[0].second);
+    const unsigned k = 3 - p - q;
+    const ex quadratic = GiNaC::pow(lambda, 2) - simplify(I(p, p) + I(q, q)) * lambda +
+                         simplify(I(p, p) * I(q, q) - I(p, q) * I(p, q));
+    // Keep the quadratic's linear factors where it splits over the rationals (four-masses).
+    const ex split = GiNaC::factor(GiNaC::expand(quadratic));
+    const bool splits = GiNaC::is_a<GiNaC::mul>(split) || GiNaC::is_a<GiNaC::power>(split);
+    out.characteristic = (lambda - I(k, k)) * (splits ? split : quadratic);
+  } else {
+    const ex poly = GiNaC::expand(shifted.determinant());
+    out.characteristic = GiNaC::factor(poly);
+    if (!GiNaC::is_a<GiNaC::mul>(out.characteristic) &&
+        !GiNaC::is_a<GiNaC::power>(out.characteristic)) {
+      // No factors: write it as a polynomial in lambda with simplified coefficients.
+      ex collected = 0;
+      for (int k = poly.ldegree(lambda); k <= poly.degree(lambda); ++k) {
+        collected += simplify(poly.coeff(lambda, k)) * GiNaC::pow(lambda, k);
+      }
+      out.characteristic = collected;
     }
-    out.characteristic = collected;
   }
 
-  const auto products = nonzero_products(I);
   if (products.empty()) {
     out.method = SymPrincipal::Method::diagonal;
     for (unsigned i = 0; i < 3; ++i) out.moments.push_back(I(i, i));
