@@ -104,7 +104,6 @@ void add_point_masses(const Problem& problem, const Evaluator& ev, InertiaBody& 
        "and cyclically.",
        "I_{ij} = \\sum_p m_p\\left(|r_p|^2\\delta_{ij} - r_{p,i}\\,r_{p,j}\\right)",
        "Each mass contributes to the tensor:"});
-  body.description = fmt::format("{} point masses", masses.size());
 }
 
 void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
@@ -168,8 +167,6 @@ void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
          "I_O = I_{\\mathrm{cm}} + M\\left(|d|^2\\,\\mathbb{1} - d\\,d^{T}\\right),\\quad d = " +
              vec_latex(c_exact, t),
          "Parallel-axis theorem to the origin:"});
-    body.description =
-        body.description.empty() ? "a uniform " + s.shape : body.description + " and a " + s.shape;
   }
 }
 
@@ -200,7 +197,6 @@ void set_tensor(const Problem& problem, const Evaluator& ev, InertiaBody& body) 
     throw InputError(std::string("body.tensor: ") + e.what());
   }
   body.numeric.I_O = numeric;
-  body.description = "an inertia tensor given directly";
   body.steps.push_back({"The tensor is given.", ""});
 }
 }  // namespace

@@ -17,7 +17,6 @@ struct InertiaBody {
   sym::SymMassProperties exact;  ///< entries exact in the parameters
   MassProperties numeric;        ///< from the evaluated inputs through core/
   std::vector<Step> steps;       ///< how the tensor about O is assembled
-  std::string description;       ///< one line: "3 point masses", "a box of mass M", ...
 };
 
 /// @throws InputError naming the field: a malformed expression or undefined symbol; a mass or
