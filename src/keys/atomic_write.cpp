@@ -12,7 +12,10 @@ namespace wobble {
 
 void write_atomically(const std::filesystem::path& target, const std::string& content) {
   const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
-  std::string tmpl = (dir / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
+  std::string name = ".";  // appended piece by piece: GCC 12 -Wrestrict false positive on "a" + s
+  name += target.filename().string();
+  name += ".tmp.XXXXXX";
+  std::string tmpl = (dir / name).string();
   const int fd = ::mkstemp(tmpl.data());
   auto fail = [&](const std::string& what) {
     const std::string why = std::strerror(errno);

@@ -59,7 +59,9 @@ std::string pretty(const std::string& s) {
 }
 
 std::string unit_text(const std::string& unit) {
-  return pretty(unit).empty() ? "" : " " + pretty(unit);
+  std::string out = pretty(unit);
+  if (!out.empty()) out.insert(out.begin(), ' ');
+  return out;
 }
 
 std::string unit_latex(const std::string& unit) {
@@ -100,7 +102,8 @@ std::string value_text(const Value& v, const std::string& indent) {
     s += (i ? "\n" + indent : "") + "[";
     for (std::size_t j = 0; j < v.cols; ++j) {
       const std::string n = format_number(v.at(i, j));
-      s += " " + std::string(width[j] - n.size(), ' ') + n;
+      s.append(1 + width[j] - n.size(), ' ');
+      s += n;
     }
     s += " ]";
   }

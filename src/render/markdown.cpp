@@ -33,7 +33,12 @@ std::string render_markdown(const Key& key) {
         const auto& s = part.steps[i];
         const std::string& prose = s.label.empty() || s.latex.empty() ? s.text : s.label;
         out += fmt::format("{}. {}", i + 1, prose);
-        if (!s.latex.empty()) out += (prose.empty() ? "" : " ") + std::string("$") + s.latex + "$";
+        if (!s.latex.empty()) {
+          if (!prose.empty()) out += ' ';
+          out += '$';
+          out += s.latex;
+          out += '$';
+        }
         out += "\n";
       }
     }

@@ -52,8 +52,13 @@ struct Evaluator {
 };
 
 std::string vec_text(const sym::SymVec3& v, const sym::SymbolTable& t) {
-  return "(" + sym::to_text(v[0], t) + ", " + sym::to_text(v[1], t) + ", " + sym::to_text(v[2], t) +
-         ")";
+  std::string s = "(";  // appended piece by piece: GCC 12 -Wrestrict false positive on "a" + s
+  s += sym::to_text(v[0], t);
+  s += ", ";
+  s += sym::to_text(v[1], t);
+  s += ", ";
+  s += sym::to_text(v[2], t);
+  return s + ")";
 }
 std::string vec_latex(const sym::SymVec3& v, const sym::SymbolTable& t) {
   return "\\left(" + sym::to_latex(v[0], t) + ", " + sym::to_latex(v[1], t) + ", " +
@@ -93,7 +98,11 @@ void add_point_masses(const Problem& problem, const Evaluator& ev, InertiaBody& 
   std::string text = "Point masses:";
   std::string latex = "\\begin{array}{ll}";
   for (const auto& p : exact) {
-    text += " " + sym::to_text(p.mass, t) + " at " + vec_text(p.r_O, t) + ";";
+    text += ' ';
+    text += sym::to_text(p.mass, t);
+    text += " at ";
+    text += vec_text(p.r_O, t);
+    text += ';';
     latex += sym::to_latex(p.mass, t) + " & \\text{at } " + vec_latex(p.r_O, t) + "\\\\ ";
   }
   text.pop_back();

@@ -40,7 +40,10 @@ class Printer {
   bool latex() const { return style_ == Style::latex; }
 
   std::string paren(const std::string& s) const {
-    return latex() ? "\\left(" + s + "\\right)" : "(" + s + ")";
+    std::string out = latex() ? "\\left(" : "(";
+    out += s;
+    out += latex() ? "\\right)" : ")";
+    return out;
   }
 
   std::pair<std::string, int> print_prec(const ex& e) {
@@ -85,7 +88,10 @@ class Printer {
   std::string print_function(const ex& e) {
     const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
     std::string args;
-    for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? "," : "") + print(e.op(i));
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      if (i) args += ',';
+      args += print(e.op(i));
+    }
     if (!latex()) return name + "(" + args + ")";
     static const std::map<std::string, std::string> known{
         {"sin", "\\sin"},     {"cos", "\\cos"},     {"tan", "\\tan"},
@@ -112,7 +118,8 @@ class Printer {
       const bool negative = term_negative(t);
       const ex mag = negative ? -t : t;
       Printer text(table_, Style::text);
-      std::string key = is_a<numeric>(mag) ? "~" + text.print(mag) : text.print(mag);
+      std::string key = text.print(mag);
+      if (is_a<numeric>(mag)) key.insert(key.begin(), '~');  // numbers sort last
       terms.push_back({negative, key, print(mag)});
     }
     std::stable_sort(terms.begin(), terms.end(),
@@ -298,11 +305,20 @@ class Printer {
     if (den.empty()) {
       body = join(num);
     } else if (latex()) {
-      body = "\\frac{" + frac_part(num) + "}{" + frac_part(den) + "}";
+      body = "\\frac{";  // appended piece by piece: GCC 12 -Wrestrict false positive on "a" + s
+      body += frac_part(num);
+      body += "}{";
+      body += frac_part(den);
+      body += '}';
     } else {
-      body = join(num) + "/" + (den.size() > 1 ? "(" + join(den) + ")" : den[0]);
+      body = join(num);
+      body += '/';
+      body += den.size() > 1 ? paren(join(den)) : den[0];
     }
-    if (negative) return {"-" + body, kSum};
+    if (negative) {
+      body.insert(body.begin(), '-');
+      return {body, kSum};
+    }
     const bool single = num.size() == 1 && den.empty();
     return {body, single && factors.size() == 1 && factors[0].second == 1 ? kAtom : kProduct};
   }
