@@ -69,7 +69,8 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
   }
   double v = 0.0;
   try {
-    v = constant_value(t, field);
+    // Degrees are converted exactly (x*pi/180, rounded once), so 90deg is the double of pi/2.
+    v = degrees ? constant_value("(" + t + ")*pi/180", field) : constant_value(t, field);
   } catch (const InputError& e) {
     if (std::string(e.what()).find("not finite") != std::string::npos) {
       throw InputError(field + ": value must be finite, got '" + text + "'");
@@ -77,7 +78,6 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
     throw InputError(field + ": '" + text + "' is not a number" +
                      (p.is_angle() ? " (an angle: radians, or degrees as 30deg)" : ""));
   }
-  if (degrees) v *= M_PI / 180.0;
   if (!std::isfinite(v)) throw InputError(field + ": value must be finite, got '" + text + "'");
   if (!p.range.contains(v)) {
     throw InputError(field + ": " + p.name + " = " + shortest(v) +

@@ -1,6 +1,8 @@
 #include "symbolic/expression.hpp"
 
 #include <array>
+#include <charconv>
+#include <optional>
 #include <cctype>
 #include <cmath>
 #include <set>
@@ -36,13 +38,35 @@ struct DigitsGuard {
   DigitsGuard(const DigitsGuard&) = delete;
   DigitsGuard& operator=(const DigitsGuard&) = delete;
 };
-// The double's exact value as a rational: CLN's float contagion would otherwise drop every later
-// operation to double precision, defeating the 40-digit evaluation.
-GiNaC::numeric exact_rational(double d) {
-  int exponent = 0;
-  const double mantissa = std::frexp(d, &exponent);  // d = mantissa * 2^exponent, |mantissa| < 1
-  const auto integer = static_cast<long>(std::ldexp(mantissa, 53));
-  return GiNaC::numeric(integer) * GiNaC::numeric(2).power(exponent - 53);
+// The exact decimal that a double was typed as: its shortest round-trip text read as a rational
+// ("0.1" -> 1/10, not the binary fraction nearest to it). Exact, so CLN's float contagion cannot
+// drop later operations to double precision.
+GiNaC::numeric shortest_decimal(double d) {
+  char buf[40];
+  const auto end = std::to_chars(buf, buf + sizeof buf, d).ptr;  // e.g. "-1.25e-07"
+  const std::string text(buf, end);
+  const auto e_pos = text.find('e');
+  std::string mantissa = text.substr(0, e_pos);
+  long exponent = e_pos == std::string::npos ? 0 : std::stol(text.substr(e_pos + 1));
+  if (const auto dot = mantissa.find('.'); dot != std::string::npos) {
+    exponent -= static_cast<long>(mantissa.size() - dot - 1);
+    mantissa.erase(dot, 1);
+  }
+  return GiNaC::numeric(mantissa.c_str()) * GiNaC::numeric(10).power(exponent);
+}
+
+// d rounded once from a rational multiple of pi with a small denominator (pi, 104.5 deg = 209 pi
+// / 360, ...): that multiple. Half-degrees need 360; 720 leaves room for quarter degrees.
+std::optional<GiNaC::ex> pi_multiple(double d) {
+  constexpr int kMaxDenominator = 720;
+  const long double ratio = static_cast<long double>(d) / 3.14159265358979323846264338327950288L;
+  for (int den = 1; den <= kMaxDenominator; ++den) {
+    const long double num = std::nearbyint(ratio * den);
+    if (num == 0 || std::fabs(num) > 1e6 || std::fabs(ratio * den - num) > 1e-12L * den) continue;
+    const GiNaC::ex candidate = GiNaC::numeric(static_cast<long>(num), den) * GiNaC::Pi;
+    if (evaluate(candidate, GiNaC::lst{}, "value") == d) return candidate;
+  }
+  return std::nullopt;
 }
 }  // namespace
 
@@ -101,12 +125,18 @@ GiNaC::ex SymbolTable::parse(const std::string& text, const std::string& field) 
   }
 }
 
+GiNaC::ex exact_value(double d) {
+  if (d == 0.0 || !std::isfinite(d)) return GiNaC::numeric(0);
+  if (auto p = pi_multiple(d)) return *p;
+  return shortest_decimal(d);
+}
+
 GiNaC::lst substitution(const SymbolTable& table, const Values& values) {
   GiNaC::lst subs;
   for (const auto& name : table.names()) {
     auto it = values.find(name);
     if (it == values.end()) continue;
-    subs.append(table.at(name) == exact_rational(it->second));
+    subs.append(table.at(name) == exact_value(it->second));
   }
   return subs;
 }

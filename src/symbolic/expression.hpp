@@ -50,7 +50,13 @@ class SymbolTable {
 /// Values of the parameters, by name (SI).
 using Values = std::map<std::string, double>;
 
-/// Substitution list (symbol == value, exact rationals from the doubles) for the given values.
+/// The exact number a parameter value stands for. Values travel as doubles; the exact route needs
+/// what the user meant: a double equal to the correctly rounded value of r*pi (r rational with
+/// denominator <= 720: "pi", "104.5deg", "pi/6") is taken as r*pi, any other as the decimal
+/// of its shortest round-trip text ("0.1" -> 1/10). Non-finite values are rejected before here.
+GiNaC::ex exact_value(double d);
+
+/// Substitution list (symbol == exact_value(value)) for the given values.
 GiNaC::lst substitution(const SymbolTable& table, const Values& values);
 
 /// The value of e at the parameter values, evaluated with 40 significant digits then rounded

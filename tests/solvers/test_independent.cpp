@@ -116,3 +116,13 @@ TEST_CASE("three-atom-molecule-symmetric: diagonal tensors, a straight molecule 
   for (const auto& n : l.notes) said = said || n.find("λ1 = 0") != std::string::npos;
   REQUIRE(said);
 }
+
+TEST_CASE("values mean what was typed: pi is pi, 90deg is pi/2, 0.1 is one tenth") {
+  // The exact route substitutes the number the user meant, not the double nearest to it, so a
+  // straight molecule has lambda1 = 0 exactly and a right-angled one an exactly degenerate pair.
+  const Key straight = solve_with("three-atom-molecule", {"alpha=pi"});
+  REQUIRE(answer(straight, "principal_moments").value.data[0] == 0.0);
+  const Key right = solve_with("three-atom-molecule-symmetric", {"alpha=90deg", "m=0.5", "d=1"});
+  REQUIRE(answer(right, "principal_moments").value.data == std::vector<double>{0.5, 0.5, 1.0});
+  REQUIRE(answer(right, "I").value.data[0] == 0.5);  // 2 m d^2 sin^2(45 deg) = 1/2 exactly
+}
