@@ -57,12 +57,16 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
                              const std::string& field) {
   std::string t = trim(text);
   bool degrees = false;
-  if (t.size() > 3 && t.compare(t.size() - 3, 3, "deg") == 0) {
-    if (!p.is_angle()) {
-      throw InputError(field + ": '" + text + "' is in degrees but " + p.name + " is in " + p.unit);
+  for (const std::string suffix : {"deg", "°"}) {
+    if (t.size() > suffix.size() && t.compare(t.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      if (!p.is_angle()) {
+        throw InputError(field + ": '" + text + "' is in degrees but " + p.name + " is in " +
+                         p.unit);
+      }
+      degrees = true;
+      t = trim(t.substr(0, t.size() - suffix.size()));
+      break;
     }
-    degrees = true;
-    t = trim(t.substr(0, t.size() - 3));
   }
   if (t == "inf" || t == "-inf" || t == "+inf" || t == "nan" || t == "NaN") {
     throw InputError(field + ": value must be finite, got '" + text + "'");
