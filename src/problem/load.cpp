@@ -215,7 +215,8 @@ Problem load_problem(const std::filesystem::path& file) {
   Reader r(file);
   r.only_keys(
       root, "",
-      {"id", "title", "source", "statement", "solver", "notes", "parameters", "body", "parts"});
+      {"id", "title", "source", "statement", "solver", "notes", "parameters", "body", "motion",
+       "parts"});
   Problem p;
   p.file = file;
   p.id = r.string(root, "id", "");
@@ -250,6 +251,13 @@ Problem load_problem(const std::filesystem::path& file) {
   const toml::node* body = root.get("body");
   if (body == nullptr || !body->is_table()) r.fail(&root, "body", "missing (a table)");
   p.body = read_body(r, *body->as_table());
+  if (const toml::node* n = root.get("motion")) {
+    const toml::table* t = n->as_table();
+    if (t == nullptr) r.fail(n, "motion", "expected a table { omega, alpha }");
+    r.only_keys(*t, "motion", {"omega", "alpha"});
+    p.motion = MotionSpec{r.expression(t->get("omega"), "motion.omega", t),
+                          r.expression(t->get("alpha"), "motion.alpha", t)};
+  }
   const toml::array& parts = r.array(root, "parts", "parts");
   std::set<std::string> ids;
   for (std::size_t i = 0; i < parts.size(); ++i) {

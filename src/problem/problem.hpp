@@ -56,6 +56,13 @@ struct BodySpec {
   std::optional<std::array<std::array<std::string, 3>, 3>> tensor;  ///< given directly, about O
 };
 
+/// The initial spin of a torque-free problem: w(0) = omega (sin(alpha) x + cos(alpha) z), body
+/// axes equal to space axes at t = 0. alpha must name a parameter (its series is taken in it).
+struct MotionSpec {
+  std::string omega;
+  std::string alpha;
+};
+
 struct AnswerSpec {
   std::string name;      ///< the name in the key (JSON)
   std::string quantity;  ///< what the solver computes for it (defaults to name)
@@ -72,6 +79,7 @@ struct Problem {
   std::vector<std::string> notes;  ///< conventions or choices the key must state
   std::vector<Parameter> parameters;
   BodySpec body;
+  std::optional<MotionSpec> motion;
   std::vector<PartSpec> parts;
   std::filesystem::path file;
 

@@ -149,7 +149,7 @@ Key solve_inertia(const Problem& problem, const sym::Values& values) {
       Computed q = compute(c, spec.quantity);
       q.answer.name = spec.name;
       pk.answers.push_back(std::move(q.answer));
-      pk.steps.insert(pk.steps.end(), q.steps.begin(), q.steps.end());
+      append_steps(pk, q.steps);
     }
     key.parts.push_back(std::move(pk));
   }

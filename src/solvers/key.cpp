@@ -12,6 +12,14 @@ double Value::scale() const {
   return s;
 }
 
+void append_steps(PartKey& part, const std::vector<Step>& steps) {
+  for (const auto& s : steps) {
+    bool seen = false;
+    for (const auto& have : part.steps) seen = seen || (have.text == s.text && have.latex == s.latex);
+    if (!seen) part.steps.push_back(s);
+  }
+}
+
 std::string format_number(double x) {
   if (x == 0.0) return "0";  // also turns -0 into 0
   return fmt::format("{:.10g}", x);

@@ -63,6 +63,10 @@ struct PartKey {
   std::vector<Step> steps;
 };
 
+/// Appends `steps` to the part, skipping any whose text the part already has (two answers of a
+/// part often share a derivation).
+void append_steps(PartKey& part, const std::vector<Step>& steps);
+
 struct ParameterValue {
   std::string name, latex, unit, description;
   double value = 0.0;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "solvers/inertia_solver.hpp"
+#include "solvers/torque_free_solver.hpp"
 
 namespace wobble {
 
@@ -24,6 +25,8 @@ Key solve(const Problem& problem, const sym::Values& values) {
   Key key;
   if (problem.solver == "inertia") {
     key = solve_inertia(problem, values);
+  } else if (problem.solver == "torque_free_symmetric") {
+    key = solve_torque_free_symmetric(problem, values);
   } else {
     throw InputError(fmt::format("{}: solver: unknown solver '{}' (known: {})",
                                  problem.file.string(), problem.solver,

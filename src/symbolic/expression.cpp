@@ -160,25 +160,42 @@ bool is_identically_zero(const GiNaC::ex& e) {
 }
 
 GiNaC::ex simplified_sqrt(const GiNaC::ex& e) {
-  GiNaC::ex f = GiNaC::factor(GiNaC::normal(e));
+  // factor() works on polynomials: stand symbols in for sin(alpha) etc., and factor numerator
+  // and denominator separately.
+  GiNaC::exmap functions;
+  const GiNaC::ex nd = GiNaC::numer_denom(GiNaC::normal(e).to_rational(functions));
   GiNaC::ex outside = 1, inside = 1;
-  auto take = [&](const GiNaC::ex& factor) {
-    if (GiNaC::is_a<GiNaC::power>(factor) && factor.op(1).info(GiNaC::info_flags::posint) &&
-        factor.op(0).info(GiNaC::info_flags::positive)) {
-      const auto n = GiNaC::ex_to<GiNaC::numeric>(factor.op(1));
+  // Moves the even part of each positive factor^n (n = +-exponent) out of the root.
+  auto take = [&](const GiNaC::ex& factor, int sign) {
+    GiNaC::ex base = factor;
+    GiNaC::numeric n = 1;
+    if (GiNaC::is_a<GiNaC::power>(factor) && factor.op(1).info(GiNaC::info_flags::posint)) {
+      base = factor.op(0);
+      n = GiNaC::ex_to<GiNaC::numeric>(factor.op(1));
+    }
+    if (GiNaC::is_a<GiNaC::numeric>(base) && GiNaC::ex_to<GiNaC::numeric>(base).is_rational() &&
+        GiNaC::ex_to<GiNaC::numeric>(base).is_positive()) {
+      // sqrt(p/q) = sqrt(p q)/q; GiNaC takes square factors out of sqrt of an integer itself.
+      const auto r = GiNaC::ex_to<GiNaC::numeric>(GiNaC::pow(base, n));
+      const GiNaC::ex root = GiNaC::sqrt(GiNaC::ex(r.numer() * r.denom())) / r.denom();
+      outside *= sign > 0 ? root : 1 / root;
+    } else if (base.info(GiNaC::info_flags::positive)) {
       const GiNaC::numeric half = GiNaC::iquo(n, 2);
-      outside *= GiNaC::pow(factor.op(0), half);
-      inside *= GiNaC::pow(factor.op(0), n - 2 * half);
+      outside *= GiNaC::pow(base, sign * half);
+      inside *= GiNaC::pow(base, sign * (n - 2 * half));
     } else {
-      inside *= factor;
+      inside *= GiNaC::pow(factor, sign);
     }
   };
-  if (GiNaC::is_a<GiNaC::mul>(f)) {
-    for (std::size_t i = 0; i < f.nops(); ++i) take(f.op(i));
-  } else {
-    take(f);
+  for (const int sign : {1, -1}) {
+    const GiNaC::ex f = GiNaC::factor(nd.op(sign > 0 ? 0 : 1));
+    if (GiNaC::is_a<GiNaC::mul>(f)) {
+      for (std::size_t i = 0; i < f.nops(); ++i) take(f.op(i), sign);
+    } else {
+      take(f, sign);
+    }
   }
-  return outside * GiNaC::sqrt(inside);
+  return (outside * GiNaC::sqrt(inside)).subs(functions);
 }
 
 namespace {

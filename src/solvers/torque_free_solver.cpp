@@ -1,0 +1,320 @@
+#include "solvers/torque_free_solver.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "core/torque_free_symmetric.hpp"
+#include "solvers/exact_answer.hpp"
+#include "solvers/inertia_body.hpp"
+#include "symbolic/canonical_print.hpp"
+
+namespace wobble {
+
+namespace {
+using GiNaC::ex;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+struct Top {
+  const Problem& problem;
+  sym::SymbolTable table;
+  ExactContext ctx;
+  InertiaBody body;
+  ex I1, I3, omega, alpha;  // exact
+  SymmetricTop numeric;     // the independent double-precision route
+  bool prolate = false, oblate = false;
+};
+
+ex parse(const Top& t, const std::string& text, const std::string& field) {
+  try {
+    return t.table.parse(text, field);
+  } catch (const sym::ExpressionError& e) {
+    throw InputError(e.what());
+  }
+}
+
+double value(const Top& t, const ex& e, const std::string& field) {
+  return sym::evaluate(e, t.ctx.at, field);
+}
+
+// The tensor about the centre of mass must be diag(I1, I1, I3) identically in the parameters.
+void require_symmetric_about_z(const Top& t, const GiNaC::matrix& I) {
+  const std::string file = t.problem.file.string();
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = i + 1; j < 3; ++j) {
+      if (!sym::is_identically_zero(I(i, j))) {
+        throw InputError(fmt::format(
+            "{}: body: the torque-free symmetric solver needs principal axes along x, y, z, but "
+            "I_{}{} = {}; an asymmetric top needs the asymmetric-top solver (not yet available)",
+            file, "xyz"[i], "xyz"[j], sym::to_text(I(i, j), t.table)));
+      }
+    }
+  }
+  if (!sym::is_identically_zero(I(0, 0) - I(1, 1))) {
+    throw InputError(fmt::format(
+        "{}: body: not axially symmetric about z: I_xx = {} but I_yy = {}; an asymmetric top "
+        "needs the asymmetric-top solver (not yet available)",
+        file, sym::to_text(I(0, 0), t.table), sym::to_text(I(1, 1), t.table)));
+  }
+}
+
+Top make_top(const Problem& problem, const sym::Values& values) {
+  Top t{problem, problem.symbol_table(), {t.table, {}}, {}, {}, {}, {}, {}, {}, false, false};
+  t.ctx.at = sym::substitution(t.table, values);
+  if (!problem.motion) {
+    throw InputError(problem.file.string() + ": motion: missing (a table { omega, alpha })");
+  }
+  t.body = build_inertia_body(problem, t.table, values);
+  if (!t.body.has_mass) {
+    throw InputError(problem.file.string() + ": body: needs masses or shapes, not a tensor");
+  }
+  const auto& e = t.body.exact;
+  const GiNaC::matrix I_cm = sym::normalized(e.I_O.sub(sym::parallel_axis_term(e.mass, e.r_cm)));
+  require_symmetric_about_z(t, I_cm);
+  t.I1 = I_cm(0, 0);
+  t.I3 = I_cm(2, 2);
+  t.omega = parse(t, problem.motion->omega, "motion.omega");
+  t.alpha = parse(t, problem.motion->alpha, "motion.alpha");
+  if (!GiNaC::is_a<GiNaC::symbol>(t.alpha)) {
+    throw InputError("motion.alpha: must name a parameter (the series is taken in it), got \"" +
+                     problem.motion->alpha + "\"");
+  }
+  const double I1 = value(t, t.I1, "I1"), I3 = value(t, t.I3, "I3");
+  t.numeric = {I1, I3, value(t, t.omega, "motion.omega"), value(t, t.alpha, "motion.alpha")};
+  if (!(t.numeric.omega_rad_s > 0.0)) {
+    throw InputError(fmt::format("motion.omega: \"{}\" is {:.10g}; it must be > 0",
+                                 problem.motion->omega, t.numeric.omega_rad_s));
+  }
+  if (!(t.numeric.alpha_rad >= 0.0 && t.numeric.alpha_rad < M_PI / 2)) {
+    throw InputError(fmt::format("motion.alpha: {:.10g} rad must lie in [0, pi/2)", t.numeric.alpha_rad));
+  }
+  t.numeric.validate();
+  t.prolate = I3 < I1;
+  t.oblate = I3 > I1;
+  return t;
+}
+
+// |I1 - I3| exactly, with the sign known from the values.
+ex moment_gap(const Top& t) { return t.prolate ? t.I1 - t.I3 : t.I3 - t.I1; }
+ex L_exact(const Top& t, int i) {
+  const ex w[3] = {t.omega * GiNaC::sin(t.alpha), 0, t.omega * GiNaC::cos(t.alpha)};
+  return sym::simplify((i == 2 ? t.I3 : t.I1) * w[i]);
+}
+// |L| / I1 as the root of a simplified square, taken last so no factor goes back inside it.
+ex rate_space_of(const Top& t) {
+  return sym::simplified_sqrt(
+      sym::simplify((GiNaC::pow(L_exact(t, 0), 2) + GiNaC::pow(L_exact(t, 2), 2)) / (t.I1 * t.I1)));
+}
+// atan2(I1 y, I3 x) with the positive common factor divided out: atan2(y, (I3/I1) x) for an
+// oblate body, atan2((I1/I3) y, x) for a prolate one, so the coefficients are >= 1.
+ex atan2_moments(const Top& t, const ex& y_coefficient_I1, const ex& x_coefficient_I3,
+                 const ex& extra_y = 1, const ex& extra_x = 0) {
+  const ex smaller = t.prolate ? t.I3 : t.I1;
+  return GiNaC::atan2(sym::simplify(t.I1 * y_coefficient_I1 * extra_y / smaller),
+                      sym::simplify((t.I3 * x_coefficient_I3 + extra_x) / smaller));
+}
+ex angle_L_e3(const Top& t) {
+  return atan2_moments(t, GiNaC::sin(t.alpha), GiNaC::cos(t.alpha));
+}
+
+// Checks an exact value against the independent numeric route: both are the same quantity, one
+// exact then rounded once, one a few double operations; 64 eps of the scale covers the latter.
+void check(double exact, double numeric, double scale, const std::string& name) {
+  if (std::abs(exact - numeric) > 64 * kEps * std::max(scale, std::abs(exact))) {
+    throw std::logic_error(fmt::format("{}: exact {} but numeric {}", name, exact, numeric));
+  }
+}
+
+struct Computed {
+  Answer answer;
+  std::vector<Step> steps;
+};
+
+std::string shape_word(const Top& t) {
+  return t.prolate ? "prolate (I3 < I1)" : t.oblate ? "oblate (I3 > I1)" : "spherical (I3 = I1)";
+}
+
+Computed quantity_I(const Top& t, bool I0_only) {
+  const ex ratio = sym::simplify(t.I1 / t.I3);
+  ex I0 = t.I1, p = 1, q = sym::simplify(t.I3 / t.I1);
+  if (GiNaC::is_a<GiNaC::numeric>(ratio) && GiNaC::ex_to<GiNaC::numeric>(ratio).is_rational()) {
+    const auto r = GiNaC::ex_to<GiNaC::numeric>(ratio);
+    I0 = sym::simplify(t.I3 / r.denom());
+    p = r.numer();
+    q = r.denom();
+  }
+  std::vector<Step> steps = t.body.steps;
+  GiNaC::matrix diag(3, 3);
+  diag(0, 0) = diag(1, 1) = p;
+  diag(2, 2) = q;
+  steps.push_back({"About the centre of mass I = I0 diag(" + sym::to_text(p, t.table) + ", " +
+                       sym::to_text(p, t.table) + ", " + sym::to_text(q, t.table) + "), I0 = " +
+                       sym::to_text(I0, t.table),
+                   "I = I_0\\,\\operatorname{diag}(" + sym::to_latex(p, t.table) + ", " +
+                       sym::to_latex(p, t.table) + ", " + sym::to_latex(q, t.table) +
+                       "),\\quad I_0 = " + sym::to_latex(I0, t.table),
+                   "About the centre of mass:"});
+  if (I0_only) return {exact_scalar("I0", I0, "kg m^2", t.ctx), steps};
+  GiNaC::matrix I(3, 3);
+  I(0, 0) = I(1, 1) = t.I1;
+  I(2, 2) = t.I3;
+  Computed out{exact_matrix("I", I, "kg m^2", t.ctx), {}};
+  out.answer.notes.push_back("Body frame: e1, e2, e3 along x, y, z; the body is " + shape_word(t) +
+                             ".");
+  return out;
+}
+
+Computed quantity(const Top& t, const std::string& q) {
+  const auto& tab = t.table;
+  const double scale_L = t.numeric.L0().norm();
+  if (q == "I0" || q == "I") return quantity_I(t, q == "I0");
+  if (q == "L0_body" || q == "L0_space") {
+    const std::vector<ex> L{L_exact(t, 0), 0, L_exact(t, 2)};
+    Computed out{exact_vector(q, L, "kg m^2/s", t.ctx), {}};
+    for (int i = 0; i < 3; ++i) check(out.answer.value.data[static_cast<std::size_t>(i)], t.numeric.L0()[i], scale_L, q);
+    out.steps.push_back({"L = I w with w(0) = w (sin α, 0, cos α): L = (I1 w sin α, 0, I3 w cos α)",
+                         "L = I\\,\\omega = \\left(I_1\\,\\omega\\sin\\alpha,\\ 0,\\ I_3\\,\\omega\\cos\\alpha\\right)",
+                         "Angular momentum at t = 0:"});
+    out.answer.notes.push_back(
+        q == "L0_space"
+            ? "Stays valid for all t: no torque acts, so L is constant in space."
+            : "Valid at t = 0 only: in the body, L (with w) precesses about e3 at Omega_body.");
+    return out;
+  }
+  if (q == "angle_omega_e3" || q == "body_cone_half_angle") {
+    Computed out{exact_scalar(q, t.alpha, "rad", t.ctx), {}};
+    out.steps.push_back({"w(0) makes the angle α with e3 = z; in the body w stays on the cone of "
+                         "half angle α about e3 (w3 is constant).",
+                         ""});
+    return out;
+  }
+  if (q == "angle_L_e3") {
+    Computed out{exact_scalar(q, angle_L_e3(t), "rad", t.ctx), {}};
+    check(out.answer.value.data[0], t.numeric.angle_L_e3(), 1.0, q);
+    out.steps.push_back({"tan θ_L = L1/L3 = (I1/I3) tan α", "\\theta_L = \\operatorname{atan2}(I_1\\sin\\alpha,\\ I_3\\cos\\alpha)",
+                         "The angle of L from e3:"});
+    std::string where = t.numeric.alpha_rad == 0.0
+                            ? "α = 0: e3, w and L all lie along z."
+                        : t.prolate ? "Prolate: L lies beyond w; w lies between e3 and L (θ_L > α)."
+                        : t.oblate  ? "Oblate: L lies between w and e3 (θ_L < α)."
+                                    : "I1 = I3: L is parallel to w.";
+    out.answer.notes.push_back(where + " All three are coplanar (the x-z plane at t = 0).");
+    return out;
+  }
+  if (q == "space_cone_half_angle") {
+    const ex s = GiNaC::sin(t.alpha), c = GiNaC::cos(t.alpha);
+    const ex smaller = t.prolate ? t.I3 : t.I1;
+    const ex angle = GiNaC::atan2(sym::simplify(moment_gap(t) * s * c / smaller),
+                                  sym::simplify((t.I1 * s * s + t.I3 * c * c) / smaller));
+    Computed out{exact_scalar(q, angle, "rad", t.ctx), {}};
+    check(out.answer.value.data[0], t.numeric.angle_omega_L(), 1.0, q);
+    out.steps.push_back({"Angle between w and L from |w × L| and w · L (no difference of angles): "
+                         "w and L precess about the fixed L on the space cone.",
+                         "\\tan\\theta_{\\omega L} = \\frac{|I_1 - I_3|\\sin\\alpha\\cos\\alpha}{I_1\\sin^2\\alpha + I_3\\cos^2\\alpha}",
+                         "The space cone, about L through w:"});
+    return out;
+  }
+  const ex rate_body = sym::simplify((t.I3 - t.I1) / t.I1 * t.omega * GiNaC::cos(t.alpha));
+  const ex rate_space = rate_space_of(t);
+  if (q == "Omega_body" || q == "Omega_body_rate") {
+    Computed out{q == "Omega_body" ? exact_vector(q, {0, 0, rate_body}, "rad/s", t.ctx)
+                                   : exact_scalar(q, rate_body, "rad/s", t.ctx),
+                 {}};
+    check(sym::evaluate(rate_body, t.ctx.at, q), t.numeric.omega_body_rate(), t.numeric.omega_rad_s, q);
+    out.steps.push_back({"Euler's equations with I1 = I2: dw1/dt = −Ω w2, dw2/dt = Ω w1, w3 constant, "
+                         "so w and L turn about e3 at Ω = (I3 − I1) w3 / I1 in the body.",
+                         "\\Omega_{\\mathrm{body}} = \\frac{I_3 - I_1}{I_1}\\,\\omega_3\\,e_3",
+                         "Euler's equations with I1 = I2 give"});
+    out.answer.notes.push_back(
+        t.prolate ? "Along −e3: against the spin (prolate body); seen in the body, w and L turn backwards."
+        : t.oblate ? "Along +e3: with the spin (oblate body)."
+                   : "Zero: I1 = I3, no precession.");
+    return out;
+  }
+  if (q == "Omega_space" || q == "Omega_space_rate") {
+    std::vector<ex> v{sym::simplify(L_exact(t, 0) / t.I1), 0, sym::simplify(L_exact(t, 2) / t.I1)};
+    Computed out{q == "Omega_space" ? exact_vector(q, v, "rad/s", t.ctx) : exact_scalar(q, rate_space, "rad/s", t.ctx), {}};
+    check(sym::evaluate(rate_space, t.ctx.at, q), t.numeric.omega_space_rate(), t.numeric.omega_rad_s, q);
+    out.steps.push_back({"In space e3 and w precess about the fixed L at Ω_space = L / I1.",
+                         "\\Omega_{\\mathrm{space}} = \\frac{L}{I_1},\\quad |\\Omega_{\\mathrm{space}}| = \\frac{|L|}{I_1}",
+                         "In space:"});
+    out.answer.notes.push_back("Along L, in the sense of the spin.");
+    return out;
+  }
+  if (q == "identity_residual") {
+    // Independently computed vectors, in double precision: Omega_space from L, Omega_body from
+    // the rate along e3, w from its definition.
+    const Vec3 Os = t.numeric.L0() / t.numeric.I1_kgm2;
+    const Vec3 Ob(0.0, 0.0, t.numeric.omega_body_rate());
+    const Vec3 w = t.numeric.omega0();
+    const Vec3 r = Os - Ob - w;
+    Computed out{numeric_vector(q, r, "rad/s", "Numeric check in double precision; exactly 0 by the algebra in the steps."), {}};
+    out.answer.value = Value::scalar(r.norm());
+    out.answer.latex = format_number(r.norm());
+    const char* axis = "xyz";
+    for (int i = 0; i < 3; ++i) {
+      out.steps.push_back({fmt::format("{}: Ω_space − Ω_body − w = {} − {} − {} = {}", axis[i],
+                                       format_number(Os[i]), format_number(Ob[i]),
+                                       format_number(w[i]), format_number(r[i])),
+                           ""});
+    }
+    out.steps.push_back({"Exactly: x: I1 w sin α / I1 − 0 − w sin α = 0; z: I3 w3/I1 − (I3 − I1) w3/I1 − w3 = 0.",
+                         "\\frac{I_3\\omega_3}{I_1} - \\frac{(I_3 - I_1)\\,\\omega_3}{I_1} - \\omega_3 = 0",
+                         "Exactly, the z component:"});
+    return out;
+  }
+  if (q == "max_angle" || q == "max_angle_small_alpha") {
+    if (q == "max_angle") {
+      Computed out{exact_scalar(q, 2 * angle_L_e3(t), "rad", t.ctx), {}};
+      check(out.answer.value.data[0], t.numeric.max_angle(), 1.0, q);
+      out.steps.push_back({"e3 stays at the angle θ_L from the fixed L; z = e3(0) is on that cone, so "
+                           "the angle (z, e3) is largest, 2 θ_L, when e3 is opposite z across L.",
+                           "\\theta_{\\max} = 2\\,\\theta_L = 2\\operatorname{atan2}(I_1\\sin\\alpha,\\ I_3\\cos\\alpha)",
+                           "The largest angle:"});
+      if (t.numeric.alpha_rad == 0.0) out.answer.notes.push_back("α = 0: w along the axis, no wobble.");
+      return out;
+    }
+    const GiNaC::symbol& a = GiNaC::ex_to<GiNaC::symbol>(t.alpha);
+    const ex exact = 2 * GiNaC::atan(sym::simplify(t.I1 / t.I3) * GiNaC::tan(a));  // = 2 theta_L on [0, pi/2)
+    const ex poly = GiNaC::series_to_poly(exact.series(a == 0, 4));
+    ex leading = 0;
+    for (int k = 1; k < 4 && leading.is_zero(); ++k) leading = sym::simplify(poly.coeff(a, k)) * GiNaC::pow(a, k);
+    Computed out{exact_scalar(q, leading, "rad", t.ctx), {}};
+    out.steps.push_back({"Series of 2 atan((I1/I3) tan α) about α = 0 (GiNaC): " +
+                             sym::to_text(sym::simplify(poly), tab) + " + O(α⁴)",
+                         "\\theta_{\\max} = " + sym::to_latex(sym::simplify(poly), tab) + " + O(\\alpha^4)",
+                         "Series in α:"});
+    return out;
+  }
+  if (q == "t_max") {
+    const bool still = t.numeric.alpha_rad == 0.0;
+    Computed out{still ? exact_scalar(q, 0, "s", t.ctx) : exact_scalar(q, GiNaC::Pi / rate_space_of(t), "s", t.ctx), {}};
+    if (!still) check(out.answer.value.data[0], t.numeric.t_max(), t.numeric.t_max(), q);
+    out.steps.push_back({"Half a precession about L: t = π / |Ω_space| = π I1 / |L|.",
+                         "t_{\\max} = \\frac{\\pi}{|\\Omega_{\\mathrm{space}}|} = \\frac{\\pi I_1}{|L|}",
+                         "The first time:"});
+    if (still) out.answer.notes.push_back("α = 0: no wobble; the angle is 0 at all times.");
+    return out;
+  }
+  throw InputError(fmt::format("{}: unknown quantity '{}' for the torque_free_symmetric solver",
+                               t.problem.file.string(), q));
+}
+}  // namespace
+
+Key solve_torque_free_symmetric(const Problem& problem, const sym::Values& values) {
+  const Top t = make_top(problem, values);
+  Key key;
+  for (const auto& part : problem.parts) {
+    PartKey pk{part.id, part.question, {}, {}};
+    for (const auto& spec : part.answers) {
+      Computed c = quantity(t, spec.quantity);
+      c.answer.name = spec.name;
+      pk.answers.push_back(std::move(c.answer));
+      append_steps(pk, c.steps);
+    }
+    key.parts.push_back(std::move(pk));
+  }
+  return key;
+}
+
+}  // namespace wobble
