@@ -1,10 +1,13 @@
+#include <filesystem>
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
 #include "problem/load.hpp"
 #include "problem/values.hpp"
+#include "render/figure.hpp"
 #include "render/render.hpp"
 #include "solvers/solve.hpp"
+#include "solvers/torque_free_solver.hpp"
 
 namespace wobble::cli {
 
@@ -18,6 +21,9 @@ void setup_solve(CLI::App& app, SolveOptions& opt) {
   app.add_option("--format", opt.format, "Output format")
       ->check(CLI::IsMember({"text", "markdown", "latex", "json"}));
   app.add_option("--part", opt.part, "Print only this part (its id, e.g. b)");
+  app.add_option("--figure", opt.figure,
+                 "Write the sketch of e3, w, L and the cones as SVG (torque-free symmetric tops)");
+  app.add_flag("--force", opt.force, "Overwrite an existing --figure file");
 }
 
 int run_solve(const SolveOptions& opt) {
@@ -38,6 +44,16 @@ int run_solve(const SolveOptions& opt) {
       throw InputError(fmt::format("--part: problem {} has no part '{}' (parts: {})", problem.id,
                                    opt.part, known));
     }
+  }
+  if (!opt.figure.empty()) {
+    if (problem.solver != "torque_free_symmetric") {
+      throw InputError("--figure: problem " + problem.id + " has no sketch (only torque-free "
+                       "symmetric tops do)");
+    }
+    if (std::filesystem::exists(opt.figure) && !opt.force) {
+      throw InputError("--figure: " + opt.figure + " exists; use --force to overwrite it");
+    }
+    write_top_sketch(top_sketch(problem, values), opt.figure);
   }
   fmt::print("{}", render(key, format_from_name(opt.format)));
   return kExitOk;

@@ -19,6 +19,8 @@ struct SolveOptions {
   std::vector<std::string> sets;
   std::string format = "text";
   std::string part;
+  std::string figure;  ///< SVG sketch to write (torque-free symmetric problems)
+  bool force = false;  ///< overwrite an existing figure file
 };
 void setup_solve(CLI::App& app, SolveOptions& opt);
 int run_solve(const SolveOptions& opt);

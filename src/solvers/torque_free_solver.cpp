@@ -301,6 +301,23 @@ Computed quantity(const Top& t, const std::string& q) {
 }
 }  // namespace
 
+TopSketch top_sketch(const Problem& problem, const sym::Values& values) {
+  const Top t = make_top(problem, values);
+  const SymmetricTop& n = t.numeric;
+  TopSketch s;
+  s.title = fmt::format("{}: α = {:.4g}°, θ_L = {:.4g}°", problem.title, n.alpha_rad * 180 / M_PI,
+                        n.angle_L_e3() * 180 / M_PI);
+  s.e3 = Vec3::UnitZ();
+  s.omega = n.omega0().normalized();
+  s.L = n.L0().normalized();
+  s.body_half_angle = n.alpha_rad;
+  s.space_half_angle = n.angle_omega_L();
+  s.body_rate = n.omega_body_rate();
+  s.space_rate = n.omega_space_rate();
+  s.kind = t.prolate ? "prolate" : t.oblate ? "oblate" : "spherical";
+  return s;
+}
+
 Key solve_torque_free_symmetric(const Problem& problem, const sym::Values& values) {
   const Top t = make_top(problem, values);
   Key key;

@@ -16,6 +16,9 @@
 /// | max_angle, max_angle_small_alpha | largest angle (z, e3); its series' leading term | rad |
 /// | t_max | first time that angle is reached | s |
 /// Formulas: core/torque_free_symmetric.hpp, whose numeric closed forms check these exact ones.
+#include <string>
+
+#include "core/inertia.hpp"
 #include "problem/problem.hpp"
 #include "solvers/key.hpp"
 
@@ -25,5 +28,20 @@ namespace wobble {
 ///   I_xx != I_yy), a missing [motion] table, alpha not a parameter or outside [0, pi/2),
 ///   omega not > 0, an unknown quantity; and all of build_inertia_body's.
 Key solve_torque_free_symmetric(const Problem& problem, const sym::Values& values);
+
+/// The geometry of the sketch of parts (c) and (d), at t = 0, in space axes: unit vectors along
+/// e3, w and L, the cones' half angles, and the signed precession rates.
+struct TopSketch {
+  std::string title;
+  Vec3 e3, omega, L;            ///< unit vectors (e3 = z)
+  double body_half_angle = 0;   ///< (w, e3): the body cone about e3 through w, rad
+  double space_half_angle = 0;  ///< (w, L): the space cone about L through w, rad
+  double body_rate = 0;         ///< Omega_body along e3 (sign: sense of precession), rad/s
+  double space_rate = 0;        ///< |Omega_space|, along L, rad/s
+  std::string kind;             ///< "prolate", "oblate" or "spherical"
+};
+
+/// @throws as solve_torque_free_symmetric.
+TopSketch top_sketch(const Problem& problem, const sym::Values& values);
 
 }  // namespace wobble

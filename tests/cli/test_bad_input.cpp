@@ -40,6 +40,44 @@ std::string file(const std::string& name, const std::string& content) {
   return write_file("bad/" + name + ".toml", content).string();
 }
 
+// A torque-free problem: a box spun about z.
+const std::string kTop = R"TOML(id = "top"
+title = "t"
+solver = "torque_free_symmetric"
+statement = "s"
+
+[[parameters]]
+name = "m"
+unit = "kg"
+default = 1
+range = "(0, inf)"
+
+[[parameters]]
+name = "alpha"
+unit = "rad"
+default = 0.1
+range = "[0, pi/2)"
+
+[body]
+shapes = [ { shape = "box", mass = "m", sizes = ["1", "1", "2"] } ]
+
+[motion]
+omega = "3"
+alpha = "alpha"
+
+[[parts]]
+id = "a"
+question = "q"
+answers = ["max_angle"]
+)TOML";
+
+std::string top_with(const std::string& from, const std::string& to) {
+  std::string s = kTop;
+  const auto p = s.find(from);
+  if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "'");
+  return s.replace(p, from.size(), to);
+}
+
 struct Row {
   std::string what;
   std::vector<std::string> args;
@@ -150,6 +188,24 @@ std::vector<Row> catalog() {
        {"solve", file("range", with("range = \"(0, inf)\"", "range = \"(1, 0)\""))},
        2,
        {"parameters[0].range", "empty interval"}},
+      {"top not axially symmetric",
+       {"solve", file("asym", top_with("sizes = [\"1\", \"1\", \"2\"]", "sizes = [\"1\", \"2\", \"3\"]"))},
+       2,
+       {"not axially symmetric about z", "I_xx = ", "asymmetric-top solver"}},
+      {"top alpha at the limit", {"solve", "flying-plate", "--set", "alpha=90deg"}, 2,
+       {"--set alpha", "outside its range [0, pi/2)"}},
+      {"top without motion",
+       {"solve", file("nomotion", top_with("[motion]\nomega = \"3\"\nalpha = \"alpha\"\n", ""))},
+       2,
+       {"motion: missing"}},
+      {"top alpha not a parameter",
+       {"solve", file("alphaexpr", top_with("alpha = \"alpha\"", "alpha = \"alpha/2\""))},
+       2,
+       {"motion.alpha", "must name a parameter"}},
+      {"top omega not positive",
+       {"solve", file("omega", top_with("omega = \"3\"", "omega = \"-3\""))},
+       2,
+       {"motion.omega", "must be > 0"}},
   };
 }
 }  // namespace

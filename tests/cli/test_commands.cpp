@@ -151,3 +151,35 @@ TEST_CASE("keys are byte-identical across processes and equal to the stored solu
     }
   }
 }
+
+TEST_CASE("solve --figure draws the sketch with gnuplot, never overwrites without --force") {
+  const fs::path svg = scratch_dir() / "figure" / "plate.svg";
+  fs::create_directories(svg.parent_path());
+  fs::remove(svg);
+  const RunResult r = run_wobble({"solve", "flying-plate", "--figure", svg.string(), "--part", "c"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::string content = slurp(svg);
+  REQUIRE_THAT(content, Catch::StartsWith("<?xml") && Catch::Contains("<svg"));
+  for (const std::string label : {"<text>e3</text>", "<text>ω</text>", "<text>L</text>",
+                                  "<text>Ω_body</text>", "<text>Ω_space</text>", "body cone",
+                                  "space cone"}) {
+    CHECK_THAT(content, Catch::Contains(label));
+  }
+  // No temporary files left beside it.
+  for (const auto& entry : fs::directory_iterator(svg.parent_path())) {
+    CHECK(entry.path().filename().string()[0] != '.');
+  }
+  // An existing file is kept unless --force.
+  std::ofstream(svg) << "mine\n";
+  const RunResult again = run_wobble({"solve", "flying-plate", "--figure", svg.string()});
+  REQUIRE(again.exit_code == 2);
+  REQUIRE_THAT(again.err, Catch::Contains("exists; use --force"));
+  REQUIRE(slurp(svg) == "mine\n");
+  REQUIRE(run_wobble({"solve", "rect-solid", "--figure", svg.string(), "--force"}).exit_code == 0);
+  REQUIRE_THAT(slurp(svg), Catch::Contains("prolate body"));
+  // Problems without a sketch say so.
+  const RunResult none = run_wobble({"solve", "taylor-10-35", "--figure", svg.string(), "--force"});
+  REQUIRE(none.exit_code == 2);
+  REQUIRE_THAT(none.err, Catch::Contains("has no sketch"));
+}

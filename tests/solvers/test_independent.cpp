@@ -126,3 +126,35 @@ TEST_CASE("values mean what was typed: pi is pi, 90deg is pi/2, 0.1 is one tenth
   REQUIRE(answer(right, "principal_moments").value.data == std::vector<double>{0.5, 0.5, 1.0});
   REQUIRE(answer(right, "I").value.data[0] == 0.5);  // 2 m d^2 sin^2(45 deg) = 1/2 exactly
 }
+
+TEST_CASE("torque-free extremes: alpha = 1e-8 and alpha near pi/2 are finite and match the series") {
+  for (const std::string id : {"rect-solid", "flying-plate"}) {
+    // Small alpha: max_angle = 2 k alpha (1 + (1 - k^2) alpha^2 / 3 + ...), k = I1/I3; at
+    // alpha = 1e-8 the correction is ~1e-16 relative, so the leading term must agree to a few eps.
+    const Key small = solve_with(id, {"alpha=1e-8"});
+    const double lead = answer(small, "max_angle_small_alpha").value.data[0];
+    REQUIRE_THAT(answer(small, "max_angle").value.data[0], Catch::Matchers::WithinRel(lead, 4 * kEps));
+    for (const auto& part : small.parts) {
+      for (const auto& a : part.answers) {
+        for (double v : a.value.data) REQUIRE(std::isfinite(v));
+      }
+    }
+    // Near the limit: with e = pi/2 - alpha, theta_L = pi/2 - atan(e'/k) where e' = cot(alpha)
+    // ~ e, so max_angle = pi - 2 atan(cot(alpha)/k); evaluated here with the exact e = 1e-9.
+    const double e = 1e-9;
+    const Key edge = solve_with(id, {"alpha=pi/2 - 1e-9"});
+    const auto& I = answer(edge, "I").value;
+    const double k = I.at(0, 0) / I.at(2, 2);
+    const double expected = M_PI - 2 * std::atan(std::tan(e) / k);
+    REQUIRE_THAT(answer(edge, "max_angle").value.data[0], WithinAbs(expected, 4 * kEps * M_PI));
+    REQUIRE(std::isfinite(answer(edge, "t_max").value.data[0]));
+  }
+}
+
+TEST_CASE("torque-free alpha = 0: no wobble, said in the key, nothing divided by zero") {
+  const Key still = solve_with("flying-plate", {"alpha=0"});
+  REQUIRE(answer(still, "max_angle").value.data[0] == 0.0);
+  REQUIRE(answer(still, "t_max").value.data[0] == 0.0);
+  REQUIRE(answer(still, "space_cone_half_angle").value.data[0] == 0.0);
+  REQUIRE_THAT(answer(still, "t_max").notes.at(0), Catch::Contains("no wobble"));
+}
