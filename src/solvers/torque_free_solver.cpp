@@ -209,7 +209,7 @@ Computed quantity(const Top& t, const std::string& q) {
     Computed out{exact_scalar(q, angle, "rad", t.ctx), {}};
     check(out.answer.value.data[0], t.numeric.angle_omega_L(), 1.0, q);
     out.steps.push_back({"Angle between w and L from |w × L| and w · L (no difference of angles): "
-                         "w and L precess about the fixed L on the space cone.",
+                         "w and e3 precess about the fixed L, w on the space cone.",
                          "\\tan\\theta_{\\omega L} = \\frac{|I_1 - I_3|\\sin\\alpha\\cos\\alpha}{I_1\\sin^2\\alpha + I_3\\cos^2\\alpha}",
                          "The space cone, about L through w:"});
     return out;
@@ -239,6 +239,12 @@ Computed quantity(const Top& t, const std::string& q) {
                          "\\Omega_{\\mathrm{space}} = \\frac{L}{I_1},\\quad |\\Omega_{\\mathrm{space}}| = \\frac{|L|}{I_1}",
                          "In space:"});
     out.answer.notes.push_back("Along L, in the sense of the spin.");
+    if (q == "Omega_space_rate") {
+      const double ratio = t.numeric.omega_space_rate() / t.numeric.omega_rad_s;
+      out.answer.notes.push_back(fmt::format(
+          "Ω_space / ω = {:.4g}: the wobble is {} than the spin.", ratio,
+          std::abs(ratio - 1.0) < 1e-9 ? "as fast" : ratio > 1.0 ? "faster" : "slower"));
+    }
     return out;
   }
   if (q == "identity_residual") {
