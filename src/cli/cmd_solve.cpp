@@ -1,5 +1,6 @@
-#include <filesystem>
 #include <fmt/format.h>
+
+#include <filesystem>
 
 #include "cli/commands.hpp"
 #include "problem/load.hpp"
@@ -47,7 +48,8 @@ int run_solve(const SolveOptions& opt) {
   }
   if (!opt.figure.empty()) {
     if (problem.solver != "torque_free_symmetric") {
-      throw InputError("--figure: problem " + problem.id + " has no sketch (only torque-free "
+      throw InputError("--figure: problem " + problem.id +
+                       " has no sketch (only torque-free "
                        "symmetric tops do)");
     }
     if (std::filesystem::exists(opt.figure) && !opt.force) {

@@ -28,7 +28,9 @@ Vec3 SymmetricTop::L0() const {
   return {I1_kgm2 * w.x(), I1_kgm2 * w.y(), I3_kgm2 * w.z()};
 }
 
-double SymmetricTop::omega3() const { return omega_rad_s * std::cos(alpha_rad); }
+double SymmetricTop::omega3() const {
+  return omega_rad_s * std::cos(alpha_rad);
+}
 
 double SymmetricTop::angle_L_e3() const {
   return std::atan2(I1_kgm2 * std::sin(alpha_rad), I3_kgm2 * std::cos(alpha_rad));
@@ -40,12 +42,20 @@ double SymmetricTop::angle_omega_L() const {
   return std::atan2(std::abs(I1_kgm2 - I3_kgm2) * s * c, I1_kgm2 * s * s + I3_kgm2 * c * c);
 }
 
-double SymmetricTop::omega_body_rate() const { return (I3_kgm2 - I1_kgm2) / I1_kgm2 * omega3(); }
+double SymmetricTop::omega_body_rate() const {
+  return (I3_kgm2 - I1_kgm2) / I1_kgm2 * omega3();
+}
 
-double SymmetricTop::omega_space_rate() const { return L0().norm() / I1_kgm2; }
+double SymmetricTop::omega_space_rate() const {
+  return L0().norm() / I1_kgm2;
+}
 
-double SymmetricTop::max_angle() const { return 2.0 * angle_L_e3(); }
+double SymmetricTop::max_angle() const {
+  return 2.0 * angle_L_e3();
+}
 
-double SymmetricTop::t_max() const { return alpha_rad == 0.0 ? 0.0 : M_PI / omega_space_rate(); }
+double SymmetricTop::t_max() const {
+  return alpha_rad == 0.0 ? 0.0 : M_PI / omega_space_rate();
+}
 
 }  // namespace wobble

@@ -19,24 +19,24 @@
 namespace wobble {
 
 struct SymmetricTop {
-  double I1_kgm2;     ///< moment about e1 and e2
-  double I3_kgm2;     ///< moment about the symmetry axis e3
-  double omega_rad_s; ///< |w(0)|
-  double alpha_rad;   ///< angle between w(0) and e3
+  double I1_kgm2;      ///< moment about e1 and e2
+  double I3_kgm2;      ///< moment about the symmetry axis e3
+  double omega_rad_s;  ///< |w(0)|
+  double alpha_rad;    ///< angle between w(0) and e3
 
   /// @throws std::invalid_argument unless I1, I3, omega are finite and > 0, alpha in [0, pi/2),
   ///         and I1, I3 satisfy the triangle inequality (I3 <= 2 I1).
   void validate() const;
 
-  Vec3 omega0() const;                 ///< w(0), rad/s
-  Vec3 L0() const;                     ///< L(0) = I w(0), kg m^2/s (body = space at t = 0)
-  double omega3() const;               ///< w cos(alpha)
-  double angle_L_e3() const;           ///< theta_L, rad
-  double angle_omega_L() const;        ///< space-cone half angle, rad
-  double omega_body_rate() const;      ///< (I3 - I1)/I1 w3, rad/s, signed along e3
-  double omega_space_rate() const;     ///< |L| / I1, rad/s
-  double max_angle() const;            ///< 2 theta_L, rad
-  double t_max() const;                ///< pi I1 / |L|, s (0 when alpha = 0: no wobble)
+  Vec3 omega0() const;              ///< w(0), rad/s
+  Vec3 L0() const;                  ///< L(0) = I w(0), kg m^2/s (body = space at t = 0)
+  double omega3() const;            ///< w cos(alpha)
+  double angle_L_e3() const;        ///< theta_L, rad
+  double angle_omega_L() const;     ///< space-cone half angle, rad
+  double omega_body_rate() const;   ///< (I3 - I1)/I1 w3, rad/s, signed along e3
+  double omega_space_rate() const;  ///< |L| / I1, rad/s
+  double max_angle() const;         ///< 2 theta_L, rad
+  double t_max() const;             ///< pi I1 / |L|, s (0 when alpha = 0: no wobble)
 };
 
 }  // namespace wobble

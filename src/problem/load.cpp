@@ -213,10 +213,9 @@ Problem load_problem(const std::filesystem::path& file) {
                      ": malformed TOML: " + std::string(e.description()));
   }
   Reader r(file);
-  r.only_keys(
-      root, "",
-      {"id", "title", "source", "statement", "solver", "notes", "parameters", "body", "motion",
-       "parts"});
+  r.only_keys(root, "",
+              {"id", "title", "source", "statement", "solver", "notes", "parameters", "body",
+               "motion", "parts"});
   Problem p;
   p.file = file;
   p.id = r.string(root, "id", "");

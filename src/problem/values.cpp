@@ -58,7 +58,8 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
   std::string t = trim(text);
   bool degrees = false;
   for (const std::string suffix : {"deg", "°"}) {
-    if (t.size() > suffix.size() && t.compare(t.size() - suffix.size(), suffix.size(), suffix) == 0) {
+    if (t.size() > suffix.size() &&
+        t.compare(t.size() - suffix.size(), suffix.size(), suffix) == 0) {
       if (!p.is_angle()) {
         throw InputError(field + ": '" + text + "' is in degrees but " + p.name + " is in " +
                          p.unit);

@@ -9,6 +9,7 @@
 
 #include "solvers/inertia_body.hpp"
 #include "solvers/principal_answers.hpp"
+#include "solvers/solve.hpp"
 #include "symbolic/canonical_print.hpp"
 
 namespace wobble {
@@ -25,11 +26,6 @@ struct Context {
   // Lazily computed shared results.
   std::optional<GiNaC::matrix> I_cm_exact;
   std::optional<PrincipalAnswers> about_O, about_cm;
-};
-
-struct Computed {
-  Answer answer;
-  std::vector<Step> steps;
 };
 
 void require_mass(const Context& c, const std::string& quantity) {
@@ -142,18 +138,7 @@ Key solve_inertia(const Problem& problem, const sym::Values& values) {
   Context c{problem, problem.symbol_table(), {c.table, {}}, {}, {}, {}, {}};
   c.exact.at = sym::substitution(c.table, values);
   c.body = build_inertia_body(problem, c.table, values);
-  Key key;
-  for (const auto& part : problem.parts) {
-    PartKey pk{part.id, part.question, {}, {}};
-    for (const auto& spec : part.answers) {
-      Computed q = compute(c, spec.quantity);
-      q.answer.name = spec.name;
-      pk.answers.push_back(std::move(q.answer));
-      append_steps(pk, q.steps);
-    }
-    key.parts.push_back(std::move(pk));
-  }
-  return key;
+  return assemble_parts(problem, [&](const std::string& q) { return compute(c, q); });
 }
 
 }  // namespace wobble

@@ -15,7 +15,8 @@ double Value::scale() const {
 void append_steps(PartKey& part, const std::vector<Step>& steps) {
   for (const auto& s : steps) {
     bool seen = false;
-    for (const auto& have : part.steps) seen = seen || (have.text == s.text && have.latex == s.latex);
+    for (const auto& have : part.steps)
+      seen = seen || (have.text == s.text && have.latex == s.latex);
     if (!seen) part.steps.push_back(s);
   }
 }

@@ -67,6 +67,12 @@ struct PartKey {
 /// part often share a derivation).
 void append_steps(PartKey& part, const std::vector<Step>& steps);
 
+/// One computed quantity: its answer and the steps that derive it.
+struct Computed {
+  Answer answer;
+  std::vector<Step> steps;
+};
+
 struct ParameterValue {
   std::string name, latex, unit, description;
   double value = 0.0;

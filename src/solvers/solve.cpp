@@ -7,6 +7,22 @@
 
 namespace wobble {
 
+Key assemble_parts(const Problem& problem,
+                   const std::function<Computed(const std::string& quantity)>& compute) {
+  Key key;
+  for (const auto& part : problem.parts) {
+    PartKey pk{part.id, part.question, {}, {}};
+    for (const auto& spec : part.answers) {
+      Computed c = compute(spec.quantity);
+      c.answer.name = spec.name;
+      pk.answers.push_back(std::move(c.answer));
+      append_steps(pk, c.steps);
+    }
+    key.parts.push_back(std::move(pk));
+  }
+  return key;
+}
+
 std::vector<std::string> solver_names() {
   return {"inertia"};
 }

@@ -1,12 +1,14 @@
 #include "solvers/torque_free_solver.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <limits>
 
 #include "core/torque_free_symmetric.hpp"
 #include "solvers/exact_answer.hpp"
 #include "solvers/inertia_body.hpp"
+#include "solvers/solve.hpp"
 #include "symbolic/canonical_print.hpp"
 
 namespace wobble {
@@ -86,7 +88,8 @@ Top make_top(const Problem& problem, const sym::Values& values) {
                                  problem.motion->omega, t.numeric.omega_rad_s));
   }
   if (!(t.numeric.alpha_rad >= 0.0 && t.numeric.alpha_rad < M_PI / 2)) {
-    throw InputError(fmt::format("motion.alpha: {:.10g} rad must lie in [0, pi/2)", t.numeric.alpha_rad));
+    throw InputError(
+        fmt::format("motion.alpha: {:.10g} rad must lie in [0, pi/2)", t.numeric.alpha_rad));
   }
   t.numeric.validate();
   t.prolate = I3 < I1;
@@ -95,7 +98,9 @@ Top make_top(const Problem& problem, const sym::Values& values) {
 }
 
 // |I1 - I3| exactly, with the sign known from the values.
-ex moment_gap(const Top& t) { return t.prolate ? t.I1 - t.I3 : t.I3 - t.I1; }
+ex moment_gap(const Top& t) {
+  return t.prolate ? t.I1 - t.I3 : t.I3 - t.I1;
+}
 ex L_exact(const Top& t, int i) {
   const ex w[3] = {t.omega * GiNaC::sin(t.alpha), 0, t.omega * GiNaC::cos(t.alpha)};
   return sym::simplify((i == 2 ? t.I3 : t.I1) * w[i]);
@@ -125,11 +130,6 @@ void check(double exact, double numeric, double scale, const std::string& name) 
   }
 }
 
-struct Computed {
-  Answer answer;
-  std::vector<Step> steps;
-};
-
 std::string shape_word(const Top& t) {
   return t.prolate ? "prolate (I3 < I1)" : t.oblate ? "oblate (I3 > I1)" : "spherical (I3 = I1)";
 }
@@ -148,8 +148,8 @@ Computed quantity_I(const Top& t, bool I0_only) {
   diag(0, 0) = diag(1, 1) = p;
   diag(2, 2) = q;
   steps.push_back({"About the centre of mass I = I0 diag(" + sym::to_text(p, t.table) + ", " +
-                       sym::to_text(p, t.table) + ", " + sym::to_text(q, t.table) + "), I0 = " +
-                       sym::to_text(I0, t.table),
+                       sym::to_text(p, t.table) + ", " + sym::to_text(q, t.table) +
+                       "), I0 = " + sym::to_text(I0, t.table),
                    "I = I_0\\,\\operatorname{diag}(" + sym::to_latex(p, t.table) + ", " +
                        sym::to_latex(p, t.table) + ", " + sym::to_latex(q, t.table) +
                        "),\\quad I_0 = " + sym::to_latex(I0, t.table),
@@ -171,9 +171,11 @@ Computed quantity(const Top& t, const std::string& q) {
   if (q == "L0_body" || q == "L0_space") {
     const std::vector<ex> L{L_exact(t, 0), 0, L_exact(t, 2)};
     Computed out{exact_vector(q, L, "kg m^2/s", t.ctx), {}};
-    for (int i = 0; i < 3; ++i) check(out.answer.value.data[static_cast<std::size_t>(i)], t.numeric.L0()[i], scale_L, q);
+    for (int i = 0; i < 3; ++i)
+      check(out.answer.value.data[static_cast<std::size_t>(i)], t.numeric.L0()[i], scale_L, q);
     out.steps.push_back({"L = I w with w(0) = w (sin α, 0, cos α): L = (I1 w sin α, 0, I3 w cos α)",
-                         "L = I\\,\\omega = \\left(I_1\\,\\omega\\sin\\alpha,\\ 0,\\ I_3\\,\\omega\\cos\\alpha\\right)",
+                         "L = I\\,\\omega = \\left(I_1\\,\\omega\\sin\\alpha,\\ 0,\\ "
+                         "I_3\\,\\omega\\cos\\alpha\\right)",
                          "Angular momentum at t = 0:"});
     out.answer.notes.push_back(
         q == "L0_space"
@@ -183,21 +185,22 @@ Computed quantity(const Top& t, const std::string& q) {
   }
   if (q == "angle_omega_e3" || q == "body_cone_half_angle") {
     Computed out{exact_scalar(q, t.alpha, "rad", t.ctx), {}};
-    out.steps.push_back({"w(0) makes the angle α with e3 = z; in the body w stays on the cone of "
-                         "half angle α about e3 (w3 is constant).",
-                         ""});
+    out.steps.push_back(
+        {"w(0) makes the angle α with e3 = z; in the body w stays on the cone of "
+         "half angle α about e3 (w3 is constant).",
+         ""});
     return out;
   }
   if (q == "angle_L_e3") {
     Computed out{exact_scalar(q, angle_L_e3(t), "rad", t.ctx), {}};
     check(out.answer.value.data[0], t.numeric.angle_L_e3(), 1.0, q);
-    out.steps.push_back({"tan θ_L = L1/L3 = (I1/I3) tan α", "\\theta_L = \\operatorname{atan2}(I_1\\sin\\alpha,\\ I_3\\cos\\alpha)",
+    out.steps.push_back({"tan θ_L = L1/L3 = (I1/I3) tan α",
+                         "\\theta_L = \\operatorname{atan2}(I_1\\sin\\alpha,\\ I_3\\cos\\alpha)",
                          "The angle of L from e3:"});
-    std::string where = t.numeric.alpha_rad == 0.0
-                            ? "α = 0: e3, w and L all lie along z."
+    std::string where = t.numeric.alpha_rad == 0.0 ? "α = 0: e3, w and L all lie along z."
                         : t.prolate ? "Prolate: L lies beyond w; w lies between e3 and L (θ_L > α)."
-                        : t.oblate  ? "Oblate: L lies between w and e3 (θ_L < α)."
-                                    : "I1 = I3: L is parallel to w.";
+                        : t.oblate ? "Oblate: L lies between w and e3 (θ_L < α)."
+                                   : "I1 = I3: L is parallel to w.";
     out.answer.notes.push_back(where + " All three are coplanar (the x-z plane at t = 0).");
     return out;
   }
@@ -208,10 +211,12 @@ Computed quantity(const Top& t, const std::string& q) {
                                   sym::simplify((t.I1 * s * s + t.I3 * c * c) / smaller));
     Computed out{exact_scalar(q, angle, "rad", t.ctx), {}};
     check(out.answer.value.data[0], t.numeric.angle_omega_L(), 1.0, q);
-    out.steps.push_back({"Angle between w and L from |w × L| and w · L (no difference of angles): "
-                         "w and e3 precess about the fixed L, w on the space cone.",
-                         "\\tan\\theta_{\\omega L} = \\frac{|I_1 - I_3|\\sin\\alpha\\cos\\alpha}{I_1\\sin^2\\alpha + I_3\\cos^2\\alpha}",
-                         "The space cone, about L through w:"});
+    out.steps.push_back(
+        {"Angle between w and L from |w × L| and w · L (no difference of angles): "
+         "w and e3 precess about the fixed L, w on the space cone.",
+         "\\tan\\theta_{\\omega L} = \\frac{|I_1 - I_3|\\sin\\alpha\\cos\\alpha}{I_1\\sin^2\\alpha "
+         "+ I_3\\cos^2\\alpha}",
+         "The space cone, about L through w:"});
     return out;
   }
   const ex rate_body = sym::simplify((t.I3 - t.I1) / t.I1 * t.omega * GiNaC::cos(t.alpha));
@@ -220,30 +225,38 @@ Computed quantity(const Top& t, const std::string& q) {
     Computed out{q == "Omega_body" ? exact_vector(q, {0, 0, rate_body}, "rad/s", t.ctx)
                                    : exact_scalar(q, rate_body, "rad/s", t.ctx),
                  {}};
-    check(sym::evaluate(rate_body, t.ctx.at, q), t.numeric.omega_body_rate(), t.numeric.omega_rad_s, q);
-    out.steps.push_back({"Euler's equations with I1 = I2: dw1/dt = −Ω w2, dw2/dt = Ω w1, w3 constant, "
-                         "so w and L turn about e3 at Ω = (I3 − I1) w3 / I1 in the body.",
-                         "\\Omega_{\\mathrm{body}} = \\frac{I_3 - I_1}{I_1}\\,\\omega_3\\,e_3",
-                         "Euler's equations with I1 = I2 give"});
-    out.answer.notes.push_back(
-        t.prolate ? "Along −e3: against the spin (prolate body); seen in the body, w and L turn backwards."
-        : t.oblate ? "Along +e3: with the spin (oblate body)."
-                   : "Zero: I1 = I3, no precession.");
+    check(sym::evaluate(rate_body, t.ctx.at, q), t.numeric.omega_body_rate(), t.numeric.omega_rad_s,
+          q);
+    out.steps.push_back(
+        {"Euler's equations with I1 = I2: dw1/dt = −Ω w2, dw2/dt = Ω w1, w3 constant, "
+         "so w and L turn about e3 at Ω = (I3 − I1) w3 / I1 in the body.",
+         "\\Omega_{\\mathrm{body}} = \\frac{I_3 - I_1}{I_1}\\,\\omega_3\\,e_3",
+         "Euler's equations with I1 = I2 give"});
+    out.answer.notes.push_back(t.prolate  ? "Along −e3: against the spin (prolate body); seen in "
+                                            "the body, w and L turn backwards."
+                               : t.oblate ? "Along +e3: with the spin (oblate body)."
+                                          : "Zero: I1 = I3, no precession.");
     return out;
   }
   if (q == "Omega_space" || q == "Omega_space_rate") {
     std::vector<ex> v{sym::simplify(L_exact(t, 0) / t.I1), 0, sym::simplify(L_exact(t, 2) / t.I1)};
-    Computed out{q == "Omega_space" ? exact_vector(q, v, "rad/s", t.ctx) : exact_scalar(q, rate_space, "rad/s", t.ctx), {}};
-    check(sym::evaluate(rate_space, t.ctx.at, q), t.numeric.omega_space_rate(), t.numeric.omega_rad_s, q);
+    Computed out{q == "Omega_space" ? exact_vector(q, v, "rad/s", t.ctx)
+                                    : exact_scalar(q, rate_space, "rad/s", t.ctx),
+                 {}};
+    check(sym::evaluate(rate_space, t.ctx.at, q), t.numeric.omega_space_rate(),
+          t.numeric.omega_rad_s, q);
     out.steps.push_back({"In space e3 and w precess about the fixed L at Ω_space = L / I1.",
-                         "\\Omega_{\\mathrm{space}} = \\frac{L}{I_1},\\quad |\\Omega_{\\mathrm{space}}| = \\frac{|L|}{I_1}",
+                         "\\Omega_{\\mathrm{space}} = \\frac{L}{I_1},\\quad "
+                         "|\\Omega_{\\mathrm{space}}| = \\frac{|L|}{I_1}",
                          "In space:"});
     out.answer.notes.push_back("Along L, in the sense of the spin.");
     if (q == "Omega_space_rate") {
       const double ratio = t.numeric.omega_space_rate() / t.numeric.omega_rad_s;
-      out.answer.notes.push_back(fmt::format(
-          "Ω_space / ω = {:.4g}: the wobble is {} than the spin.", ratio,
-          std::abs(ratio - 1.0) < 1e-9 ? "as fast" : ratio > 1.0 ? "faster" : "slower"));
+      out.answer.notes.push_back(
+          fmt::format("Ω_space / ω = {:.4g}: the wobble is {} than the spin.", ratio,
+                      std::abs(ratio - 1.0) < 1e-9 ? "as fast"
+                      : ratio > 1.0                ? "faster"
+                                                   : "slower"));
     }
     return out;
   }
@@ -254,7 +267,10 @@ Computed quantity(const Top& t, const std::string& q) {
     const Vec3 Ob(0.0, 0.0, t.numeric.omega_body_rate());
     const Vec3 w = t.numeric.omega0();
     const Vec3 r = Os - Ob - w;
-    Computed out{numeric_vector(q, r, "rad/s", "Numeric check in double precision; exactly 0 by the algebra in the steps."), {}};
+    Computed out{
+        numeric_vector(q, r, "rad/s",
+                       "Numeric check in double precision; exactly 0 by the algebra in the steps."),
+        {}};
     out.answer.value = Value::scalar(r.norm());
     out.answer.latex = format_number(r.norm());
     const char* axis = "xyz";
@@ -264,41 +280,51 @@ Computed quantity(const Top& t, const std::string& q) {
                                        format_number(w[i]), format_number(r[i])),
                            ""});
     }
-    out.steps.push_back({"Exactly: x: I1 w sin α / I1 − 0 − w sin α = 0; z: I3 w3/I1 − (I3 − I1) w3/I1 − w3 = 0.",
-                         "\\frac{I_3\\omega_3}{I_1} - \\frac{(I_3 - I_1)\\,\\omega_3}{I_1} - \\omega_3 = 0",
-                         "Exactly, the z component:"});
+    out.steps.push_back(
+        {"Exactly: x: I1 w sin α / I1 − 0 − w sin α = 0; z: I3 w3/I1 − (I3 − I1) w3/I1 − w3 = 0.",
+         "\\frac{I_3\\omega_3}{I_1} - \\frac{(I_3 - I_1)\\,\\omega_3}{I_1} - \\omega_3 = 0",
+         "Exactly, the z component:"});
     return out;
   }
   if (q == "max_angle" || q == "max_angle_small_alpha") {
     if (q == "max_angle") {
       Computed out{exact_scalar(q, 2 * angle_L_e3(t), "rad", t.ctx), {}};
       check(out.answer.value.data[0], t.numeric.max_angle(), 1.0, q);
-      out.steps.push_back({"e3 stays at the angle θ_L from the fixed L; z = e3(0) is on that cone, so "
-                           "the angle (z, e3) is largest, 2 θ_L, when e3 is opposite z across L.",
-                           "\\theta_{\\max} = 2\\,\\theta_L = 2\\operatorname{atan2}(I_1\\sin\\alpha,\\ I_3\\cos\\alpha)",
-                           "The largest angle:"});
-      if (t.numeric.alpha_rad == 0.0) out.answer.notes.push_back("α = 0: w along the axis, no wobble.");
+      out.steps.push_back(
+          {"e3 stays at the angle θ_L from the fixed L; z = e3(0) is on that cone, so "
+           "the angle (z, e3) is largest, 2 θ_L, when e3 is opposite z across L.",
+           "\\theta_{\\max} = 2\\,\\theta_L = 2\\operatorname{atan2}(I_1\\sin\\alpha,\\ "
+           "I_3\\cos\\alpha)",
+           "The largest angle:"});
+      if (t.numeric.alpha_rad == 0.0)
+        out.answer.notes.push_back("α = 0: w along the axis, no wobble.");
       return out;
     }
     const GiNaC::symbol& a = GiNaC::ex_to<GiNaC::symbol>(t.alpha);
-    const ex exact = 2 * GiNaC::atan(sym::simplify(t.I1 / t.I3) * GiNaC::tan(a));  // = 2 theta_L on [0, pi/2)
+    const ex exact =
+        2 * GiNaC::atan(sym::simplify(t.I1 / t.I3) * GiNaC::tan(a));  // = 2 theta_L on [0, pi/2)
     const ex poly = GiNaC::series_to_poly(exact.series(a == 0, 4));
     ex leading = 0;
-    for (int k = 1; k < 4 && leading.is_zero(); ++k) leading = sym::simplify(poly.coeff(a, k)) * GiNaC::pow(a, k);
+    for (int k = 1; k < 4 && leading.is_zero(); ++k)
+      leading = sym::simplify(poly.coeff(a, k)) * GiNaC::pow(a, k);
     Computed out{exact_scalar(q, leading, "rad", t.ctx), {}};
-    out.steps.push_back({"Series of 2 atan((I1/I3) tan α) about α = 0 (GiNaC): " +
-                             sym::to_text(sym::simplify(poly), tab) + " + O(α⁴)",
-                         "\\theta_{\\max} = " + sym::to_latex(sym::simplify(poly), tab) + " + O(\\alpha^4)",
-                         "Series in α:"});
+    out.steps.push_back(
+        {"Series of 2 atan((I1/I3) tan α) about α = 0 (GiNaC): " +
+             sym::to_text(sym::simplify(poly), tab) + " + O(α⁴)",
+         "\\theta_{\\max} = " + sym::to_latex(sym::simplify(poly), tab) + " + O(\\alpha^4)",
+         "Series in α:"});
     return out;
   }
   if (q == "t_max") {
     const bool still = t.numeric.alpha_rad == 0.0;
-    Computed out{still ? exact_scalar(q, 0, "s", t.ctx) : exact_scalar(q, GiNaC::Pi / rate_space_of(t), "s", t.ctx), {}};
+    Computed out{still ? exact_scalar(q, 0, "s", t.ctx)
+                       : exact_scalar(q, GiNaC::Pi / rate_space_of(t), "s", t.ctx),
+                 {}};
     if (!still) check(out.answer.value.data[0], t.numeric.t_max(), t.numeric.t_max(), q);
-    out.steps.push_back({"Half a precession about L: t = π / |Ω_space| = π I1 / |L|.",
-                         "t_{\\max} = \\frac{\\pi}{|\\Omega_{\\mathrm{space}}|} = \\frac{\\pi I_1}{|L|}",
-                         "The first time:"});
+    out.steps.push_back(
+        {"Half a precession about L: t = π / |Ω_space| = π I1 / |L|.",
+         "t_{\\max} = \\frac{\\pi}{|\\Omega_{\\mathrm{space}}|} = \\frac{\\pi I_1}{|L|}",
+         "The first time:"});
     if (still) out.answer.notes.push_back("α = 0: no wobble; the angle is 0 at all times.");
     return out;
   }
@@ -326,18 +352,7 @@ TopSketch top_sketch(const Problem& problem, const sym::Values& values) {
 
 Key solve_torque_free_symmetric(const Problem& problem, const sym::Values& values) {
   const Top t = make_top(problem, values);
-  Key key;
-  for (const auto& part : problem.parts) {
-    PartKey pk{part.id, part.question, {}, {}};
-    for (const auto& spec : part.answers) {
-      Computed c = quantity(t, spec.quantity);
-      c.answer.name = spec.name;
-      pk.answers.push_back(std::move(c.answer));
-      append_steps(pk, c.steps);
-    }
-    key.parts.push_back(std::move(pk));
-  }
-  return key;
+  return assemble_parts(problem, [&](const std::string& q) { return quantity(t, q); });
 }
 
 }  // namespace wobble

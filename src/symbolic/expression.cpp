@@ -1,10 +1,10 @@
 #include "symbolic/expression.hpp"
 
 #include <array>
-#include <charconv>
-#include <optional>
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <sstream>
 

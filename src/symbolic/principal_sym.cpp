@@ -79,7 +79,8 @@ SymPrincipal principal_closed_form(const GiNaC::matrix& I, const GiNaC::symbol& 
   if (products.empty()) {
     out.characteristic = (lambda - I(0, 0)) * (lambda - I(1, 1)) * (lambda - I(2, 2));
   } else if (products.size() == 1) {
-    const auto p = static_cast<unsigned>(products[0].first), q = static_cast<unsigned>(products[0].second);
+    const auto p = static_cast<unsigned>(products[0].first),
+               q = static_cast<unsigned>(products[0].second);
     const unsigned k = 3 - p - q;
     const ex quadratic = GiNaC::pow(lambda, 2) - simplify(I(p, p) + I(q, q)) * lambda +
                          simplify(I(p, p) * I(q, q) - I(p, q) * I(p, q));

@@ -156,14 +156,15 @@ TEST_CASE("solve --figure draws the sketch with gnuplot, never overwrites withou
   const fs::path svg = scratch_dir() / "figure" / "plate.svg";
   fs::create_directories(svg.parent_path());
   fs::remove(svg);
-  const RunResult r = run_wobble({"solve", "flying-plate", "--figure", svg.string(), "--part", "c"});
+  const RunResult r =
+      run_wobble({"solve", "flying-plate", "--figure", svg.string(), "--part", "c"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const std::string content = slurp(svg);
   REQUIRE_THAT(content, Catch::StartsWith("<?xml") && Catch::Contains("<svg"));
-  for (const std::string label : {"<text>e3</text>", "<text>ω</text>", "<text>L</text>",
-                                  "<text>Ω_body</text>", "<text>Ω_space</text>", "body cone",
-                                  "space cone"}) {
+  for (const std::string label :
+       {"<text>e3</text>", "<text>ω</text>", "<text>L</text>", "<text>Ω_body</text>",
+        "<text>Ω_space</text>", "body cone", "space cone"}) {
     CHECK_THAT(content, Catch::Contains(label));
   }
   // No temporary files left beside it.

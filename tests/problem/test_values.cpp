@@ -32,9 +32,12 @@ TEST_CASE("values: numbers, constant expressions, degrees") {
                Catch::Matchers::WithinULP(M_PI / 6, 1));
   REQUIRE(parse_parameter_value(angle(), "0", "f") == 0.0);  // closed end
   // Degrees are converted exactly: 30deg is the correctly rounded pi/6, like "pi/6" itself.
-  REQUIRE(parse_parameter_value(angle(), "30deg", "f") == parse_parameter_value(angle(), "pi/6", "f"));
-  REQUIRE(parse_parameter_value(angle(), "30 °", "f") == parse_parameter_value(angle(), "pi/6", "f"));
-  REQUIRE(parse_parameter_value(angle(), "45°", "f") == parse_parameter_value(angle(), "pi/4", "f"));
+  REQUIRE(parse_parameter_value(angle(), "30deg", "f") ==
+          parse_parameter_value(angle(), "pi/6", "f"));
+  REQUIRE(parse_parameter_value(angle(), "30 °", "f") ==
+          parse_parameter_value(angle(), "pi/6", "f"));
+  REQUIRE(parse_parameter_value(angle(), "45°", "f") ==
+          parse_parameter_value(angle(), "pi/4", "f"));
 }
 
 TEST_CASE("values: each kind of bad value is named") {

@@ -127,13 +127,15 @@ TEST_CASE("values mean what was typed: pi is pi, 90deg is pi/2, 0.1 is one tenth
   REQUIRE(answer(right, "I").value.data[0] == 0.5);  // 2 m d^2 sin^2(45 deg) = 1/2 exactly
 }
 
-TEST_CASE("torque-free extremes: alpha = 1e-8 and alpha near pi/2 are finite and match the series") {
+TEST_CASE(
+    "torque-free extremes: alpha = 1e-8 and alpha near pi/2 are finite and match the series") {
   for (const std::string id : {"rect-solid", "flying-plate"}) {
     // Small alpha: max_angle = 2 k alpha (1 + (1 - k^2) alpha^2 / 3 + ...), k = I1/I3; at
     // alpha = 1e-8 the correction is ~1e-16 relative, so the leading term must agree to a few eps.
     const Key small = solve_with(id, {"alpha=1e-8"});
     const double lead = answer(small, "max_angle_small_alpha").value.data[0];
-    REQUIRE_THAT(answer(small, "max_angle").value.data[0], Catch::Matchers::WithinRel(lead, 4 * kEps));
+    REQUIRE_THAT(answer(small, "max_angle").value.data[0],
+                 Catch::Matchers::WithinRel(lead, 4 * kEps));
     for (const auto& part : small.parts) {
       for (const auto& a : part.answers) {
         for (double v : a.value.data) REQUIRE(std::isfinite(v));

@@ -1,9 +1,8 @@
 // The torque-free keys against an independent simulation: Euler's equations plus the attitude,
 // integrated by Boost.Odeint's Dormand-Prince 5(4) at tight tolerance.
-#include <catch2/catch.hpp>
-
 #include <array>
 #include <boost/numeric/odeint.hpp>
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "core/inertia.hpp"
@@ -65,26 +64,30 @@ void check(const std::string& id, const std::vector<std::string>& sets) {
   // Tolerance of the integrator: 1e-12 per unit of time (abs and rel); the run lasts 1.5 t_max,
   // a few hundred steps, so the global error stays below 1e-9 in every component.
   constexpr double kTol = 1e-12, kGlobal = 1e-9;
-  auto stepper = boost::numeric::odeint::make_dense_output(kTol, kTol,
-                                                           boost::numeric::odeint::runge_kutta_dopri5<State>());
+  auto stepper = boost::numeric::odeint::make_dense_output(
+      kTol, kTol, boost::numeric::odeint::runge_kutta_dopri5<State>());
   const int n = 6000;
   const double dt = 1.5 * t_max / n;
   std::vector<double> angle(n + 1);
   double worst_L = 0.0, worst_coplanar = 0.0, worst_body_rate = 0.0;
   int k = 0;
-  boost::numeric::odeint::integrate_const(stepper, Rigid{I1, I3}, x, 0.0, 1.5 * t_max, dt,
-                                          [&](const State& s, double t) {
-    const Mat3 R = attitude(s);
-    const Vec3 w_body(s[0], s[1], s[2]);
-    const Vec3 e3 = R.col(2);
-    angle[static_cast<std::size_t>(k++)] = std::atan2(std::hypot(e3.x(), e3.y()), e3.z());
-    const Vec3 L = R * Vec3(I1 * s[0], I1 * s[1], I3 * s[2]);
-    worst_L = std::max(worst_L, (L - L0).norm() / L0.norm());
-    worst_coplanar = std::max(worst_coplanar, std::abs((R * w_body).cross(L).dot(e3)) / (L0.norm() * w_body.norm()));
-    // In the body, w1 + i w2 turns at Omega_body: w1 = w1(0) cos(Omega_b t), w2 = w1(0) sin(...).
-    worst_body_rate = std::max(worst_body_rate, std::hypot(s[0] - w1_0 * std::cos(rate_body * t),
-                                                           s[1] - w1_0 * std::sin(rate_body * t)) / std::max(w1_0, 1e-300));
-  });
+  boost::numeric::odeint::integrate_const(
+      stepper, Rigid{I1, I3}, x, 0.0, 1.5 * t_max, dt, [&](const State& s, double t) {
+        const Mat3 R = attitude(s);
+        const Vec3 w_body(s[0], s[1], s[2]);
+        const Vec3 e3 = R.col(2);
+        angle[static_cast<std::size_t>(k++)] = std::atan2(std::hypot(e3.x(), e3.y()), e3.z());
+        const Vec3 L = R * Vec3(I1 * s[0], I1 * s[1], I3 * s[2]);
+        worst_L = std::max(worst_L, (L - L0).norm() / L0.norm());
+        worst_coplanar = std::max(
+            worst_coplanar, std::abs((R * w_body).cross(L).dot(e3)) / (L0.norm() * w_body.norm()));
+        // In the body, w1 + i w2 turns at Omega_body: w1 = w1(0) cos(Omega_b t), w2 = w1(0)
+        // sin(...).
+        worst_body_rate =
+            std::max(worst_body_rate, std::hypot(s[0] - w1_0 * std::cos(rate_body * t),
+                                                 s[1] - w1_0 * std::sin(rate_body * t)) /
+                                          std::max(w1_0, 1e-300));
+      });
   INFO(id << " with " << (sets.empty() ? "defaults" : sets.back()));
   REQUIRE(k == n + 1);
   // Conservation and geometry: at the level of the global error.
@@ -99,7 +102,7 @@ void check(const std::string& id, const std::vector<std::string>& sets) {
   }
   const double a = angle[i - 1], b = angle[i], c = angle[i + 1];
   const double curvature = (a - 2 * b + c) / (dt * dt);  // < 0
-  const double shift = 0.5 * (a - c) / (a - 2 * b + c);    // in units of dt
+  const double shift = 0.5 * (a - c) / (a - 2 * b + c);  // in units of dt
   const double t_peak = (static_cast<double>(i) + shift) * dt;
   const double peak = b - 0.25 * (a - c) * shift;
   // The parabola's own error is ~ angle''' dt^3, far below kGlobal at 6000 samples; an angle
