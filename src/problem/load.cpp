@@ -205,6 +205,12 @@ Problem load_problem(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file, ec)) {
     throw InputError(file.string() + ": no such problem file");
   }
+  // A problem file is a few kilobytes; refuse anything absurd before reading it.
+  constexpr std::uintmax_t kMaxFileBytes = 1 << 20;
+  if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxFileBytes) {
+    throw InputError(file.string() + ": file is " + std::to_string(size) +
+                     " bytes; a problem file may have at most 1 MiB");
+  }
   toml::table root;
   try {
     root = toml::parse_file(file.string());

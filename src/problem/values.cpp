@@ -77,8 +77,12 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
     // Degrees are converted exactly (x*pi/180, rounded once), so 90deg is the double of pi/2.
     v = degrees ? constant_value("(" + t + ")*pi/180", field) : constant_value(t, field);
   } catch (const InputError& e) {
-    if (std::string(e.what()).find("not finite") != std::string::npos) {
+    const std::string why = e.what();
+    if (why.find("not finite") != std::string::npos) {
       throw InputError(field + ": value must be finite, got '" + text + "'");
+    }
+    if (why.find("characters long") != std::string::npos || why.find("nested deeper") != std::string::npos) {
+      throw InputError(why);
     }
     throw InputError(field + ": '" + text + "' is not a number" +
                      (p.is_angle() ? " (an angle: radians, or degrees as 30deg)" : ""));

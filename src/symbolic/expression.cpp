@@ -106,6 +106,21 @@ GiNaC::ex SymbolTable::parse(const std::string& text, const std::string& field) 
   if (text.find_first_not_of(" \t") == std::string::npos) {
     throw ExpressionError(field + ": empty expression");
   }
+  // Shown in messages: at most the first 40 characters.
+  const std::string shown = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+  if (text.size() > kMaxExpressionLength) {
+    throw ExpressionError(field + ": expression \"" + shown + "\" is " + std::to_string(text.size()) +
+                          " characters long; the limit is " + std::to_string(kMaxExpressionLength));
+  }
+  int depth = 0;
+  for (char c : text) {
+    if (c == '(' || c == '[' || c == '{') ++depth;
+    if (c == ')' || c == ']' || c == '}') --depth;
+    if (depth > kMaxExpressionDepth) {
+      throw ExpressionError(field + ": expression \"" + shown + "\" is nested deeper than " +
+                            std::to_string(kMaxExpressionDepth) + " levels");
+    }
+  }
   GiNaC::symtab tab;
   for (std::size_t i = 0; i < names_.size(); ++i) tab[names_[i]] = symbols_[i];
   tab["pi"] = GiNaC::Pi;
@@ -121,7 +136,7 @@ GiNaC::ex SymbolTable::parse(const std::string& text, const std::string& field) 
       name = name.substr(0, name.find('"'));
       why = "undefined symbol '" + name + "'";
     }
-    throw ExpressionError(field + ": cannot read expression \"" + text + "\": " + why);
+    throw ExpressionError(field + ": cannot read expression \"" + shown + "\": " + why);
   }
 }
 

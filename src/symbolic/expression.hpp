@@ -22,6 +22,11 @@ struct ExpressionError : std::invalid_argument {
 
 enum class SymbolSign { positive, real };
 
+/// Limits on expression text: far above any textbook expression, far below what could exhaust
+/// memory or the stack.
+inline constexpr std::size_t kMaxExpressionLength = 10000;
+inline constexpr int kMaxExpressionDepth = 100;
+
 class SymbolTable {
  public:
   /// Declares a symbol. @throws std::invalid_argument if the name is taken or not an identifier.
@@ -36,7 +41,9 @@ class SymbolTable {
   std::size_t size() const { return names_.size(); }
   const std::vector<std::string>& names() const { return names_; }
 
-  /// Parses `text` with only the declared symbols (and pi) allowed.
+  /// Parses `text` with only the declared symbols (and pi) allowed. Texts longer than
+  /// kMaxExpressionLength or nested deeper than kMaxExpressionDepth are refused before GiNaC's
+  /// recursive parser sees them (a 1e5-deep nesting would overflow the stack).
   /// @throws ExpressionError "FIELD: ..." naming the field, the text and what is wrong.
   GiNaC::ex parse(const std::string& text, const std::string& field) const;
 

@@ -209,6 +209,15 @@ std::vector<Row> catalog() {
        {"solve", file("omega", top_with("omega = \"3\"", "omega = \"-3\""))},
        2,
        {"motion.omega", "must be > 0"}},
+      {"expression nested too deep",
+       {"solve", file("deep", with("mass = \"m\", at = [\"1\"", "mass = \"" + std::string(150, '(') + "m" +
+                                                                std::string(150, ')') + "\", at = [\"1\""))},
+       2,
+       {"body.masses[0].mass", "nested deeper than 100 levels"}},
+      {"expression too long", {"solve", "taylor-10-35", "--set", "m=" + std::string(12000, '1')}, 2,
+       {"--set m", "12000 characters long", "limit is 10000"}},
+      {"problem file too large", {"solve", file("huge", kBase + "# " + std::string(2 << 20, 'x') + "\n")}, 2,
+       {"huge.toml", "at most 1 MiB"}},
   };
 }
 }  // namespace
