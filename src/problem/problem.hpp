@@ -11,14 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "core/input_error.hpp"
 #include "symbolic/expression.hpp"
 
 namespace wobble {
-
-/// Bad input from a user (file, option or value): the command line reports what() and exits 2.
-struct InputError : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
-};
 
 /// An interval of allowed values, read from text such as "(0, inf)" or "[0, pi/2)".
 struct Interval {

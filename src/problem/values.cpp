@@ -26,11 +26,7 @@ double constant_value(const std::string& text, const std::string& field) {
   if (t == "inf" || t == "+inf") return std::numeric_limits<double>::infinity();
   if (t == "-inf") return -std::numeric_limits<double>::infinity();
   static const sym::SymbolTable no_symbols;
-  try {
-    return sym::evaluate(no_symbols.parse(t, field), GiNaC::lst{}, field);
-  } catch (const sym::ExpressionError& e) {
-    throw InputError(e.what());
-  }
+  return sym::evaluate(no_symbols.parse(t, field), GiNaC::lst{}, field);
 }
 }  // namespace
 
@@ -81,7 +77,8 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
     if (why.find("not finite") != std::string::npos) {
       throw InputError(field + ": value must be finite, got '" + text + "'");
     }
-    if (why.find("characters long") != std::string::npos || why.find("nested deeper") != std::string::npos) {
+    if (why.find("characters long") != std::string::npos ||
+        why.find("nested deeper") != std::string::npos) {
       throw InputError(why);
     }
     throw InputError(field + ": '" + text + "' is not a number" +

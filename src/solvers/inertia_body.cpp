@@ -12,24 +12,16 @@
 namespace wobble {
 
 namespace {
-// Parses and evaluates one expression, turning every failure into an InputError for `field`.
+// Parses and evaluates expressions of the body; failures are ExpressionErrors naming `field`.
 struct Evaluator {
   const sym::SymbolTable& table;
   GiNaC::lst at;
 
   GiNaC::ex parse(const std::string& text, const std::string& field) const {
-    try {
-      return table.parse(text, field);
-    } catch (const sym::ExpressionError& e) {
-      throw InputError(e.what());
-    }
+    return table.parse(text, field);
   }
   double value(const GiNaC::ex& e, const std::string& field) const {
-    try {
-      return sym::evaluate(e, at, field);
-    } catch (const sym::ExpressionError& err) {
-      throw InputError(err.what());
-    }
+    return sym::evaluate(e, at, field);
   }
   double positive(const GiNaC::ex& e, const std::string& text, const std::string& field) const {
     const double v = value(e, field);

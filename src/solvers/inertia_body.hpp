@@ -7,6 +7,7 @@
 
 #include "core/inertia.hpp"
 #include "problem/problem.hpp"
+#include "solvers/exact_answer.hpp"
 #include "solvers/key.hpp"
 #include "symbolic/inertia_sym.hpp"
 
@@ -24,5 +25,23 @@ struct InertiaBody {
 ///   that is not symmetric or violates positivity or the triangle inequality.
 InertiaBody build_inertia_body(const Problem& problem, const sym::SymbolTable& table,
                                const sym::Values& values);
+
+/// What a body solver starts from: the problem's symbols, the values as an exact substitution,
+/// and the body built both ways. Built in place and never copied: `exact` refers to `table`.
+/// @throws as build_inertia_body.
+struct BodyContext {
+  BodyContext(const Problem& p, const sym::Values& values)
+      : problem(p),
+        table(p.symbol_table()),
+        exact{table, sym::substitution(table, values)},
+        body(build_inertia_body(p, table, values)) {}
+  BodyContext(const BodyContext&) = delete;
+  BodyContext& operator=(const BodyContext&) = delete;
+
+  const Problem& problem;
+  sym::SymbolTable table;
+  ExactContext exact;
+  InertiaBody body;
+};
 
 }  // namespace wobble

@@ -18,11 +18,8 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // Everything the quantities are computed from, built once per key.
-struct Context {
-  const Problem& problem;
-  sym::SymbolTable table;
-  ExactContext exact;
-  InertiaBody body;
+struct Context : BodyContext {
+  using BodyContext::BodyContext;
   // Lazily computed shared results.
   std::optional<GiNaC::matrix> I_cm_exact;
   std::optional<PrincipalAnswers> about_O, about_cm;
@@ -135,9 +132,7 @@ Computed compute(Context& c, const std::string& quantity) {
 }  // namespace
 
 Key solve_inertia(const Problem& problem, const sym::Values& values) {
-  Context c{problem, problem.symbol_table(), {c.table, {}}, {}, {}, {}, {}};
-  c.exact.at = sym::substitution(c.table, values);
-  c.body = build_inertia_body(problem, c.table, values);
+  Context c(problem, values);
   return assemble_parts(problem, [&](const std::string& q) { return compute(c, q); });
 }
 

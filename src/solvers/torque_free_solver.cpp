@@ -17,26 +17,23 @@ namespace {
 using GiNaC::ex;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-struct Top {
-  const Problem& problem;
-  sym::SymbolTable table;
-  ExactContext ctx;
-  InertiaBody body;
+// The problem must have a [motion] table; checked before the body is built.
+const Problem& with_motion(const Problem& problem) {
+  if (!problem.motion) {
+    throw InputError(problem.file.string() + ": motion: missing (a table { omega, alpha })");
+  }
+  return problem;
+}
+
+struct Top : BodyContext {
+  Top(const Problem& problem, const sym::Values& values);
   ex I1, I3, omega, alpha;  // exact
-  SymmetricTop numeric;     // the independent double-precision route
+  SymmetricTop numeric{};   // the independent double-precision route
   bool prolate = false, oblate = false;
 };
 
-ex parse(const Top& t, const std::string& text, const std::string& field) {
-  try {
-    return t.table.parse(text, field);
-  } catch (const sym::ExpressionError& e) {
-    throw InputError(e.what());
-  }
-}
-
 double value(const Top& t, const ex& e, const std::string& field) {
-  return sym::evaluate(e, t.ctx.at, field);
+  return sym::evaluate(e, t.exact.at, field);
 }
 
 // The tensor about the centre of mass must be diag(I1, I1, I3) identically in the parameters.
@@ -60,13 +57,8 @@ void require_symmetric_about_z(const Top& t, const GiNaC::matrix& I) {
   }
 }
 
-Top make_top(const Problem& problem, const sym::Values& values) {
-  Top t{problem, problem.symbol_table(), {t.table, {}}, {}, {}, {}, {}, {}, {}, false, false};
-  t.ctx.at = sym::substitution(t.table, values);
-  if (!problem.motion) {
-    throw InputError(problem.file.string() + ": motion: missing (a table { omega, alpha })");
-  }
-  t.body = build_inertia_body(problem, t.table, values);
+Top::Top(const Problem& p, const sym::Values& values) : BodyContext(with_motion(p), values) {
+  Top& t = *this;
   if (!t.body.has_mass) {
     throw InputError(problem.file.string() + ": body: needs masses or shapes, not a tensor");
   }
@@ -75,14 +67,14 @@ Top make_top(const Problem& problem, const sym::Values& values) {
   require_symmetric_about_z(t, I_cm);
   t.I1 = I_cm(0, 0);
   t.I3 = I_cm(2, 2);
-  t.omega = parse(t, problem.motion->omega, "motion.omega");
-  t.alpha = parse(t, problem.motion->alpha, "motion.alpha");
+  t.omega = t.table.parse(problem.motion->omega, "motion.omega");
+  t.alpha = t.table.parse(problem.motion->alpha, "motion.alpha");
   if (!GiNaC::is_a<GiNaC::symbol>(t.alpha)) {
     throw InputError("motion.alpha: must name a parameter (the series is taken in it), got \"" +
                      problem.motion->alpha + "\"");
   }
-  const double I1 = value(t, t.I1, "I1"), I3 = value(t, t.I3, "I3");
-  t.numeric = {I1, I3, value(t, t.omega, "motion.omega"), value(t, t.alpha, "motion.alpha")};
+  t.numeric = {value(t, t.I1, "I1"), value(t, t.I3, "I3"), value(t, t.omega, "motion.omega"),
+               value(t, t.alpha, "motion.alpha")};
   if (!(t.numeric.omega_rad_s > 0.0)) {
     throw InputError(fmt::format("motion.omega: \"{}\" is {:.10g}; it must be > 0",
                                  problem.motion->omega, t.numeric.omega_rad_s));
@@ -92,9 +84,8 @@ Top make_top(const Problem& problem, const sym::Values& values) {
         fmt::format("motion.alpha: {:.10g} rad must lie in [0, pi/2)", t.numeric.alpha_rad));
   }
   t.numeric.validate();
-  t.prolate = I3 < I1;
-  t.oblate = I3 > I1;
-  return t;
+  t.prolate = t.numeric.I3_kgm2 < t.numeric.I1_kgm2;
+  t.oblate = t.numeric.I3_kgm2 > t.numeric.I1_kgm2;
 }
 
 // |I1 - I3| exactly, with the sign known from the values.
@@ -154,11 +145,11 @@ Computed quantity_I(const Top& t, bool I0_only) {
                        sym::to_latex(p, t.table) + ", " + sym::to_latex(q, t.table) +
                        "),\\quad I_0 = " + sym::to_latex(I0, t.table),
                    "About the centre of mass:"});
-  if (I0_only) return {exact_scalar("I0", I0, "kg m^2", t.ctx), steps};
+  if (I0_only) return {exact_scalar("I0", I0, "kg m^2", t.exact), steps};
   GiNaC::matrix I(3, 3);
   I(0, 0) = I(1, 1) = t.I1;
   I(2, 2) = t.I3;
-  Computed out{exact_matrix("I", I, "kg m^2", t.ctx), {}};
+  Computed out{exact_matrix("I", I, "kg m^2", t.exact), {}};
   out.answer.notes.push_back("Body frame: e1, e2, e3 along x, y, z; the body is " + shape_word(t) +
                              ".");
   return out;
@@ -170,7 +161,7 @@ Computed quantity(const Top& t, const std::string& q) {
   if (q == "I0" || q == "I") return quantity_I(t, q == "I0");
   if (q == "L0_body" || q == "L0_space") {
     const std::vector<ex> L{L_exact(t, 0), 0, L_exact(t, 2)};
-    Computed out{exact_vector(q, L, "kg m^2/s", t.ctx), {}};
+    Computed out{exact_vector(q, L, "kg m^2/s", t.exact), {}};
     for (int i = 0; i < 3; ++i)
       check(out.answer.value.data[static_cast<std::size_t>(i)], t.numeric.L0()[i], scale_L, q);
     out.steps.push_back({"L = I w with w(0) = w (sin α, 0, cos α): L = (I1 w sin α, 0, I3 w cos α)",
@@ -184,7 +175,7 @@ Computed quantity(const Top& t, const std::string& q) {
     return out;
   }
   if (q == "angle_omega_e3" || q == "body_cone_half_angle") {
-    Computed out{exact_scalar(q, t.alpha, "rad", t.ctx), {}};
+    Computed out{exact_scalar(q, t.alpha, "rad", t.exact), {}};
     out.steps.push_back(
         {"w(0) makes the angle α with e3 = z; in the body w stays on the cone of "
          "half angle α about e3 (w3 is constant).",
@@ -192,7 +183,7 @@ Computed quantity(const Top& t, const std::string& q) {
     return out;
   }
   if (q == "angle_L_e3") {
-    Computed out{exact_scalar(q, angle_L_e3(t), "rad", t.ctx), {}};
+    Computed out{exact_scalar(q, angle_L_e3(t), "rad", t.exact), {}};
     check(out.answer.value.data[0], t.numeric.angle_L_e3(), 1.0, q);
     out.steps.push_back({"tan θ_L = L1/L3 = (I1/I3) tan α",
                          "\\theta_L = \\operatorname{atan2}(I_1\\sin\\alpha,\\ I_3\\cos\\alpha)",
@@ -209,7 +200,7 @@ Computed quantity(const Top& t, const std::string& q) {
     const ex smaller = t.prolate ? t.I3 : t.I1;
     const ex angle = GiNaC::atan2(sym::simplify(moment_gap(t) * s * c / smaller),
                                   sym::simplify((t.I1 * s * s + t.I3 * c * c) / smaller));
-    Computed out{exact_scalar(q, angle, "rad", t.ctx), {}};
+    Computed out{exact_scalar(q, angle, "rad", t.exact), {}};
     check(out.answer.value.data[0], t.numeric.angle_omega_L(), 1.0, q);
     out.steps.push_back(
         {"Angle between w and L from |w × L| and w · L (no difference of angles): "
@@ -222,11 +213,11 @@ Computed quantity(const Top& t, const std::string& q) {
   const ex rate_body = sym::simplify((t.I3 - t.I1) / t.I1 * t.omega * GiNaC::cos(t.alpha));
   const ex rate_space = rate_space_of(t);
   if (q == "Omega_body" || q == "Omega_body_rate") {
-    Computed out{q == "Omega_body" ? exact_vector(q, {0, 0, rate_body}, "rad/s", t.ctx)
-                                   : exact_scalar(q, rate_body, "rad/s", t.ctx),
+    Computed out{q == "Omega_body" ? exact_vector(q, {0, 0, rate_body}, "rad/s", t.exact)
+                                   : exact_scalar(q, rate_body, "rad/s", t.exact),
                  {}};
-    check(sym::evaluate(rate_body, t.ctx.at, q), t.numeric.omega_body_rate(), t.numeric.omega_rad_s,
-          q);
+    check(sym::evaluate(rate_body, t.exact.at, q), t.numeric.omega_body_rate(),
+          t.numeric.omega_rad_s, q);
     out.steps.push_back(
         {"Euler's equations with I1 = I2: dw1/dt = −Ω w2, dw2/dt = Ω w1, w3 constant, "
          "so w and L turn about e3 at Ω = (I3 − I1) w3 / I1 in the body.",
@@ -240,10 +231,10 @@ Computed quantity(const Top& t, const std::string& q) {
   }
   if (q == "Omega_space" || q == "Omega_space_rate") {
     std::vector<ex> v{sym::simplify(L_exact(t, 0) / t.I1), 0, sym::simplify(L_exact(t, 2) / t.I1)};
-    Computed out{q == "Omega_space" ? exact_vector(q, v, "rad/s", t.ctx)
-                                    : exact_scalar(q, rate_space, "rad/s", t.ctx),
+    Computed out{q == "Omega_space" ? exact_vector(q, v, "rad/s", t.exact)
+                                    : exact_scalar(q, rate_space, "rad/s", t.exact),
                  {}};
-    check(sym::evaluate(rate_space, t.ctx.at, q), t.numeric.omega_space_rate(),
+    check(sym::evaluate(rate_space, t.exact.at, q), t.numeric.omega_space_rate(),
           t.numeric.omega_rad_s, q);
     out.steps.push_back({"In space e3 and w precess about the fixed L at Ω_space = L / I1.",
                          "\\Omega_{\\mathrm{space}} = \\frac{L}{I_1},\\quad "
@@ -288,7 +279,7 @@ Computed quantity(const Top& t, const std::string& q) {
   }
   if (q == "max_angle" || q == "max_angle_small_alpha") {
     if (q == "max_angle") {
-      Computed out{exact_scalar(q, 2 * angle_L_e3(t), "rad", t.ctx), {}};
+      Computed out{exact_scalar(q, 2 * angle_L_e3(t), "rad", t.exact), {}};
       check(out.answer.value.data[0], t.numeric.max_angle(), 1.0, q);
       out.steps.push_back(
           {"e3 stays at the angle θ_L from the fixed L; z = e3(0) is on that cone, so "
@@ -307,7 +298,7 @@ Computed quantity(const Top& t, const std::string& q) {
     ex leading = 0;
     for (int k = 1; k < 4 && leading.is_zero(); ++k)
       leading = sym::simplify(poly.coeff(a, k)) * GiNaC::pow(a, k);
-    Computed out{exact_scalar(q, leading, "rad", t.ctx), {}};
+    Computed out{exact_scalar(q, leading, "rad", t.exact), {}};
     out.steps.push_back(
         {"Series of 2 atan((I1/I3) tan α) about α = 0 (GiNaC): " +
              sym::to_text(sym::simplify(poly), tab) + " + O(α⁴)",
@@ -317,8 +308,8 @@ Computed quantity(const Top& t, const std::string& q) {
   }
   if (q == "t_max") {
     const bool still = t.numeric.alpha_rad == 0.0;
-    Computed out{still ? exact_scalar(q, 0, "s", t.ctx)
-                       : exact_scalar(q, GiNaC::Pi / rate_space_of(t), "s", t.ctx),
+    Computed out{still ? exact_scalar(q, 0, "s", t.exact)
+                       : exact_scalar(q, GiNaC::Pi / rate_space_of(t), "s", t.exact),
                  {}};
     if (!still) check(out.answer.value.data[0], t.numeric.t_max(), t.numeric.t_max(), q);
     out.steps.push_back(
@@ -334,7 +325,7 @@ Computed quantity(const Top& t, const std::string& q) {
 }  // namespace
 
 TopSketch top_sketch(const Problem& problem, const sym::Values& values) {
-  const Top t = make_top(problem, values);
+  const Top t(problem, values);
   const SymmetricTop& n = t.numeric;
   TopSketch s;
   s.title = fmt::format("{}: α = {:.4g}°, θ_L = {:.4g}°", problem.title, n.alpha_rad * 180 / M_PI,
@@ -351,7 +342,7 @@ TopSketch top_sketch(const Problem& problem, const sym::Values& values) {
 }
 
 Key solve_torque_free_symmetric(const Problem& problem, const sym::Values& values) {
-  const Top t = make_top(problem, values);
+  const Top t(problem, values);
   return assemble_parts(problem, [&](const std::string& q) { return quantity(t, q); });
 }
 

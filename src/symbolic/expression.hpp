@@ -13,11 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "core/input_error.hpp"
+
 namespace wobble::sym {
 
 /// A malformed expression or one with an undefined symbol; what() names the field and the text.
-struct ExpressionError : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
+/// An InputError, so every layer above can let it pass through to the command line.
+struct ExpressionError : wobble::InputError {
+  using wobble::InputError::InputError;
 };
 
 enum class SymbolSign { positive, real };
@@ -36,9 +39,9 @@ class SymbolTable {
   bool contains(const std::string& name) const { return index_.count(name) != 0; }
   /// LaTeX of a symbol (by its name); the name itself if none was given.
   std::string latex_of(const std::string& name) const;
-  /// Position of a symbol in declaration order (for printing); size() for unknown names.
+  /// Position of a symbol in declaration order (for printing); the count of symbols for unknown
+  /// names.
   std::size_t order_of(const std::string& name) const;
-  std::size_t size() const { return names_.size(); }
   const std::vector<std::string>& names() const { return names_; }
 
   /// Parses `text` with only the declared symbols (and pi) allowed. Texts longer than
