@@ -3,6 +3,7 @@
 /// The subcommands of `wobble`. Exit codes (README, "Exit codes"): 0 success, 1 a check found a
 /// difference, 2 bad usage or input (one line on stderr), 3 an internal error (a bug).
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,17 @@ struct SolveOptions {
 };
 void setup_solve(CLI::App& app, SolveOptions& opt);
 int run_solve(const SolveOptions& opt);
+
+struct SimulateOptions {
+  std::string scene;
+  std::vector<std::string> sets;
+  std::string method;                ///< empty: the scene's own (auto by default)
+  std::optional<double> tolerance;   ///< overrides the scene's
+  std::string out, plot;
+  bool force = false;
+};
+void setup_simulate(CLI::App& app, SimulateOptions& opt);
+int run_simulate(const SimulateOptions& opt);
 
 struct KeysOptions {
   bool check = false, update = false;

@@ -18,18 +18,22 @@ int main(int argc, char** argv) {
   ListOptions list_opt;
   SolveOptions solve_opt;
   KeysOptions keys_opt;
+  SimulateOptions simulate_opt;
   CLI::App* list = app.add_subcommand("list", "List the problems with their titles");
   CLI::App* solve = app.add_subcommand("solve", "Print the worked key of a problem");
   CLI::App* keys = app.add_subcommand("keys", "Check or update the golden keys in solutions/");
+  CLI::App* simulate =
+      app.add_subcommand("simulate", "Simulate a scene: a body, its spin and the effects on it");
   setup_list(*list, list_opt);
   setup_solve(*solve, solve_opt);
   setup_keys(*keys, keys_opt);
+  setup_simulate(*simulate, simulate_opt);
 
   // CLI11 would only say "a subcommand is required"; name the word the user typed instead.
   const auto known =
       app.get_subcommands([&](CLI::App* sub) { return argc > 1 && sub->get_name() == argv[1]; });
   if (argc > 1 && argv[1][0] != '-' && known.empty()) {
-    fmt::print(stderr, "wobble: unknown command '{}' (commands: list, solve, keys; see --help)\n",
+    fmt::print(stderr, "wobble: unknown command '{}' (commands: list, solve, simulate, keys; see --help)\n",
                argv[1]);
     return kExitBadInput;
   }
@@ -50,6 +54,7 @@ int main(int argc, char** argv) {
     if (list->parsed()) return run_list(list_opt);
     if (solve->parsed()) return run_solve(solve_opt);
     if (keys->parsed()) return run_keys(keys_opt);
+    if (simulate->parsed()) return run_simulate(simulate_opt);
   } catch (const wobble::InputError& e) {
     fmt::print(stderr, "wobble: {}\n", e.what());
     return kExitBadInput;

@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "keys/atomic_write.hpp"
+#include "render/atomic_write.hpp"
 #include "problem/values.hpp"
 #include "render/render.hpp"
 #include "solvers/solve.hpp"

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "problem/toml_reader.hpp"
 #include "problem/values.hpp"
 
 #ifndef WOBBLE_SOURCE_DIR
@@ -16,162 +17,8 @@
 namespace wobble {
 
 namespace {
-// Builds messages "FILE:LINE: FIELD: what".
-class Reader {
- public:
-  explicit Reader(std::filesystem::path file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const toml::node* node, const std::string& field,
-                         const std::string& what) const {
-    std::string where = file_.string();
-    if (node != nullptr && node->source().begin.line > 0) {
-      where += ":" + std::to_string(node->source().begin.line);
-    }
-    throw InputError(where + ": " + field + ": " + what);
-  }
-
-  void only_keys(const toml::table& t, const std::string& field,
-                 const std::set<std::string>& allowed) const {
-    for (auto&& [key, node] : t) {
-      if (!allowed.count(std::string(key.str()))) {
-        std::string list;
-        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        fail(&node, field.empty() ? std::string(key.str()) : field + "." + std::string(key.str()),
-             "unknown key (expected one of: " + list + ")");
-      }
-    }
-  }
-
-  std::string string(const toml::table& t, const std::string& key, const std::string& field,
-                     bool required = true, const std::string& fallback = "") const {
-    const toml::node* n = t.get(key);
-    if (n == nullptr) {
-      if (required) fail(&t, field + key, "missing");
-      return fallback;
-    }
-    if (auto s = n->value<std::string>(); s && n->is_string()) return *s;
-    fail(n, field + key, "expected a string");
-  }
-
-  // An expression: a string, or a number written as its shortest round-trip text.
-  std::string expression(const toml::node* n, const std::string& field,
-                         const toml::node* parent) const {
-    if (n == nullptr) fail(parent, field, "missing");
-    if (n->is_string()) return *n->value<std::string>();
-    if (n->is_integer()) return std::to_string(*n->value<int64_t>());
-    if (n->is_floating_point()) {
-      char buf[32];
-      auto r = std::to_chars(buf, buf + sizeof buf, *n->value<double>());
-      return std::string(buf, r.ptr);
-    }
-    fail(n, field, "expected an expression (a string such as \"2*m\") or a number");
-  }
-
-  std::array<std::string, 3> vector3(const toml::node* n, const std::string& field,
-                                     const toml::node* parent) const {
-    if (n == nullptr) fail(parent, field, "missing");
-    const toml::array* a = n->as_array();
-    if (a == nullptr || a->size() != 3) fail(n, field, "expected an array of 3 expressions");
-    std::array<std::string, 3> out;
-    for (std::size_t i = 0; i < 3; ++i) {
-      out[i] = expression(a->get(i), field + "[" + std::to_string(i) + "]", n);
-    }
-    return out;
-  }
-
-  const toml::table& table_at(const toml::array& a, std::size_t i, const std::string& field,
-                              const toml::node* parent) const {
-    const toml::table* t = a.get(i)->as_table();
-    if (t == nullptr) fail(parent, field, "expected a table");
-    return *t;
-  }
-
-  const toml::array& array(const toml::table& t, const std::string& key,
-                           const std::string& field) const {
-    const toml::node* n = t.get(key);
-    if (n == nullptr) fail(&t, field, "missing");
-    const toml::array* a = n->as_array();
-    if (a == nullptr) fail(n, field, "expected an array");
-    return *a;
-  }
-
- private:
-  std::filesystem::path file_;
-};
-
-Parameter read_parameter(const Reader& r, const toml::table& t, const std::string& f) {
-  r.only_keys(t, f, {"name", "latex", "unit", "description", "default", "range"});
-  Parameter p;
-  p.name = r.string(t, "name", f + ".");
-  p.latex = r.string(t, "latex", f + ".", false, p.name);
-  p.unit = r.string(t, "unit", f + ".", false, "");
-  p.description = r.string(t, "description", f + ".", false, "");
-  const std::string range = r.string(t, "range", f + ".");
-  try {
-    p.range = parse_interval(range, f + ".range");
-  } catch (const InputError& e) {
-    r.fail(t.get("range"), f + ".range", e.what());
-  }
-  const toml::node* d = t.get("default");
-  const std::string text = r.expression(d, f + ".default", &t);
-  try {
-    p.default_value = parse_parameter_value(p, text, f + ".default");
-  } catch (const InputError& e) {
-    r.fail(d, f + ".default", e.what());
-  }
-  return p;
-}
-
-BodySpec read_body(const Reader& r, const toml::table& body) {
-  r.only_keys(body, "body", {"masses", "shapes", "tensor"});
-  BodySpec b;
-  if (const toml::node* n = body.get("masses")) {
-    const toml::array* a = n->as_array();
-    if (a == nullptr) r.fail(n, "body.masses", "expected an array of { mass, at } tables");
-    for (std::size_t i = 0; i < a->size(); ++i) {
-      const std::string f = "body.masses[" + std::to_string(i) + "]";
-      const toml::table& t = r.table_at(*a, i, f, n);
-      r.only_keys(t, f, {"mass", "at"});
-      b.masses.push_back(
-          {r.expression(t.get("mass"), f + ".mass", &t), r.vector3(t.get("at"), f + ".at", &t)});
-    }
-  }
-  if (const toml::node* n = body.get("shapes")) {
-    const toml::array* a = n->as_array();
-    if (a == nullptr) r.fail(n, "body.shapes", "expected an array of shape tables");
-    for (std::size_t i = 0; i < a->size(); ++i) {
-      const std::string f = "body.shapes[" + std::to_string(i) + "]";
-      const toml::table& t = r.table_at(*a, i, f, n);
-      r.only_keys(t, f, {"shape", "mass", "sizes", "center"});
-      ShapeSpec s;
-      s.shape = r.string(t, "shape", f + ".");
-      s.mass = r.expression(t.get("mass"), f + ".mass", &t);
-      const toml::array& sizes = r.array(t, "sizes", f + ".sizes");
-      for (std::size_t k = 0; k < sizes.size(); ++k) {
-        s.sizes.push_back(r.expression(sizes.get(k), f + ".sizes[" + std::to_string(k) + "]", &t));
-      }
-      if (t.get("center")) s.center = r.vector3(t.get("center"), f + ".center", &t);
-      b.shapes.push_back(std::move(s));
-    }
-  }
-  if (const toml::node* n = body.get("tensor")) {
-    const toml::array* a = n->as_array();
-    if (a == nullptr || a->size() != 3)
-      r.fail(n, "body.tensor", "expected 3 rows of 3 expressions");
-    std::array<std::array<std::string, 3>, 3> rows;
-    for (std::size_t i = 0; i < 3; ++i) {
-      rows[i] = r.vector3(a->get(i), "body.tensor[" + std::to_string(i) + "]", n);
-    }
-    b.tensor = rows;
-    if (!b.masses.empty() || !b.shapes.empty()) {
-      r.fail(n, "body.tensor", "a tensor given directly cannot be combined with masses or shapes");
-    }
-  }
-  if (b.masses.empty() && b.shapes.empty() && !b.tensor) {
-    r.fail(&body, "body", "needs masses, shapes or a tensor");
-  }
-  return b;
-}
+using detail::Reader;
+using namespace detail;
 
 PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) {
   r.only_keys(t, f, {"id", "question", "answers"});
@@ -201,23 +48,7 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
 }  // namespace
 
 Problem load_problem(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) {
-    throw InputError(file.string() + ": no such problem file");
-  }
-  // A problem file is a few kilobytes; refuse anything absurd before reading it.
-  constexpr std::uintmax_t kMaxFileBytes = 1 << 20;
-  if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxFileBytes) {
-    throw InputError(file.string() + ": file is " + std::to_string(size) +
-                     " bytes; a problem file may have at most 1 MiB");
-  }
-  toml::table root;
-  try {
-    root = toml::parse_file(file.string());
-  } catch (const toml::parse_error& e) {
-    throw InputError(file.string() + ":" + std::to_string(e.source().begin.line) +
-                     ": malformed TOML: " + std::string(e.description()));
-  }
+  toml::table root = parse_toml_file(file, "problem");
   Reader r(file);
   r.only_keys(root, "",
               {"id", "title", "source", "statement", "solver", "notes", "parameters", "body",
@@ -238,21 +69,7 @@ Problem load_problem(const std::filesystem::path& file) {
       p.notes.push_back(*a->get(i)->value<std::string>());
     }
   }
-  const toml::array& params = r.array(root, "parameters", "parameters");
-  std::set<std::string> names;
-  for (std::size_t i = 0; i < params.size(); ++i) {
-    const std::string f = "parameters[" + std::to_string(i) + "]";
-    p.parameters.push_back(read_parameter(r, r.table_at(params, i, f, &root), f));
-    if (!names.insert(p.parameters.back().name).second) {
-      r.fail(params.get(i), f + ".name",
-             "parameter '" + p.parameters.back().name + "' declared twice");
-    }
-  }
-  try {
-    (void)p.symbol_table();
-  } catch (const std::invalid_argument& e) {
-    r.fail(&params, "parameters", e.what());
-  }
+  p.parameters = read_parameters(r, root);
   const toml::node* body = root.get("body");
   if (body == nullptr || !body->is_table()) r.fail(&root, "body", "missing (a table)");
   p.body = read_body(r, *body->as_table());

@@ -1,5 +1,7 @@
 #include "render/figure.hpp"
 
+#include "render/gnuplot.hpp"
+
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -90,39 +92,8 @@ std::string top_sketch_script(const TopSketch& s, const std::filesystem::path& s
 }
 
 void write_top_sketch(const TopSketch& sketch, const std::filesystem::path& out) {
-  const std::filesystem::path dir = out.has_parent_path() ? out.parent_path() : ".";
-  const std::string stem = "." + out.filename().string() + "." + std::to_string(::getpid());
-  const auto svg_tmp = dir / (stem + ".svg.tmp"), script = dir / (stem + ".gp");
-  auto cleanup = [&] {
-    std::error_code ec;
-    std::filesystem::remove(svg_tmp, ec);
-    std::filesystem::remove(script, ec);
-  };
-  {
-    std::ofstream f(script);
-    f << top_sketch_script(sketch, svg_tmp);
-    if (!f) {
-      cleanup();
-      throw std::runtime_error(out.string() + ": cannot write in " + dir.string());
-    }
-  }
-  const std::string command = "gnuplot '" + script.string() + "' 2>/dev/null";
-  const int status = std::system(command.c_str());
-  std::error_code ec;
-  if (status != 0 || !std::filesystem::exists(svg_tmp, ec) ||
-      std::filesystem::file_size(svg_tmp, ec) == 0) {
-    cleanup();
-    throw std::runtime_error(
-        out.string() +
-        ": gnuplot failed to draw the figure (is gnuplot installed? scripts/setup "
-        "installs it)");
-  }
-  std::filesystem::rename(svg_tmp, out, ec);
-  if (ec) {
-    cleanup();
-    throw std::runtime_error(out.string() + ": cannot replace: " + ec.message());
-  }
-  cleanup();
+  draw_svg_with_gnuplot([&](const std::filesystem::path& svg) { return top_sketch_script(sketch, svg); },
+                        out);
 }
 
 }  // namespace wobble

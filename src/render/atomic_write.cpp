@@ -1,4 +1,4 @@
-#include "keys/atomic_write.hpp"
+#include "render/atomic_write.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -1,0 +1,92 @@
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/commands.hpp"
+#include "problem/scene.hpp"
+#include "render/atomic_write.hpp"
+#include "render/simulation_output.hpp"
+#include "simulate/scene_setup.hpp"
+
+namespace wobble::cli {
+
+void setup_simulate(CLI::App& app, SimulateOptions& opt) {
+  app.add_option("scene", opt.scene, "Scene id (a file in scenes/) or a .toml file")->required();
+  app.add_option("--set", opt.sets, "Parameter value NAME=VALUE in SI (angles also as 30deg)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--method", opt.method,
+                 "auto, closed_form, exact, rk4, dopri5, rkf78, split2 or split4 (default: the "
+                 "scene's, usually auto)");
+  app.add_option("--tolerance", opt.tolerance,
+                 "Relative tolerance for the adaptive methods, 1e-14 to 1e-2");
+  app.add_option("--out", opt.out, "Write the samples to FILE.csv or FILE.json instead");
+  app.add_option("--plot", opt.plot, "Draw the outputs against time as SVG (gnuplot)");
+  app.add_flag("--force", opt.force, "Overwrite existing --out and --plot files");
+}
+
+namespace {
+void refuse_overwrite(const std::string& option, const std::string& file, bool force) {
+  if (!file.empty() && std::filesystem::exists(file) && !force) {
+    throw InputError(option + ": " + file + " exists; use --force to overwrite it");
+  }
+}
+}  // namespace
+
+int run_simulate(const SimulateOptions& opt) {
+  if (!opt.out.empty()) {
+    const std::string ext = std::filesystem::path(opt.out).extension().string();
+    if (ext != ".csv" && ext != ".json") {
+      throw InputError("--out: " + opt.out + ": the file must end in .csv or .json");
+    }
+  }
+  if (!opt.plot.empty() && std::filesystem::path(opt.plot).extension() != ".svg") {
+    throw InputError("--plot: " + opt.plot + ": the file must end in .svg");
+  }
+  refuse_overwrite("--out", opt.out, opt.force);
+  refuse_overwrite("--plot", opt.plot, opt.force);
+  if (opt.tolerance && !(*opt.tolerance >= 1e-14 && *opt.tolerance <= 1e-2)) {
+    throw InputError(fmt::format("--tolerance: {} is out of range (expected 1e-14 to 1e-2)",
+                                 *opt.tolerance));
+  }
+  const Scene scene = find_scene(opt.scene);
+  SceneSetup setup = setup_scene(scene, opt.sets);
+  if (opt.tolerance) setup.tolerance = *opt.tolerance;
+  const MethodChoice choice = choose_method(setup, opt.method.empty() ? setup.method : opt.method);
+
+  // Progress on a terminal only, and only once a run has taken a moment.
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  bool shown = false;
+  const auto start = std::chrono::steady_clock::now();
+  const auto progress = [&](double done) {
+    if (!tty) return;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (elapsed < 0.5) return;
+    fmt::print(stderr, "\rsimulating {}: {:3.0f}%", setup.id, 100 * done);
+    std::fflush(stderr);
+    shown = true;
+  };
+  const SimulationResult result = simulate(setup, choice, progress);
+  if (shown) fmt::print(stderr, "\r{:40}\r", "");
+
+  fmt::print("{}", simulation_header(setup, result));
+  if (opt.out.empty()) {
+    fmt::print("\n{}\n", simulation_table(setup, result));
+  } else {
+    const bool csv = std::filesystem::path(opt.out).extension() == ".csv";
+    write_atomically(opt.out, csv ? simulation_csv(result) : simulation_json(setup, result));
+    fmt::print("wrote {} samples to {}\n", result.rows.size(), opt.out);
+  }
+  if (!opt.plot.empty()) {
+    write_simulation_plot(setup, result, opt.plot);
+    fmt::print("drew {}\n", opt.plot);
+  }
+  fmt::print("{}", simulation_footer(setup, result));
+  return kExitOk;
+}
+
+}  // namespace wobble::cli

@@ -1,0 +1,72 @@
+#include "core/elliptic.hpp"
+
+#include <boost/math/special_functions/ellint_rf.hpp>
+#include <boost/math/special_functions/ellint_rj.hpp>
+#include <boost/math/policies/policy.hpp>
+#include <cmath>
+
+namespace wobble {
+
+namespace {
+// Boost.Math promotes double to long double by default, several times slower for no accuracy
+// wobble can print; the Carlson integrals are accurate to a few eps in double.
+using Fast = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
+}  // namespace
+
+SnCnDn jacobi_sncndn(double u, double kc2) {
+  if (kc2 == 0.0) {
+    const double sech = 1.0 / std::cosh(u);
+    return {std::tanh(u), sech, sech};
+  }
+  // Bulirsch's algorithm (Numer. Math. 7, 1965), as in Numerical Recipes' sncndn.
+  constexpr double kTol = 1e-8;  // sqrt(eps): the AGM converges quadratically past it
+  double em[16], en[16];
+  double a = 1.0, c = 1.0, emc = kc2, dn = 1.0;
+  int l = 0;
+  for (int i = 0; i < 16; ++i) {
+    l = i;
+    em[i] = a;
+    emc = std::sqrt(emc);
+    en[i] = emc;
+    c = 0.5 * (a + emc);
+    if (std::abs(a - emc) <= kTol * a) break;
+    emc *= a;
+    a = c;
+  }
+  const double v = u * c;
+  double sn = std::sin(v), cn = std::cos(v);
+  if (sn != 0.0) {
+    a = cn / sn;
+    c *= a;
+    for (int ii = l; ii >= 0; --ii) {
+      const double b = em[ii];
+      a *= c;
+      c *= dn;
+      dn = (en[ii] + a) / (b + a);
+      a = c / b;
+    }
+    a = 1.0 / std::sqrt(c * c + 1.0);
+    sn = sn >= 0.0 ? a : -a;
+    cn = c * sn;
+  }
+  return {sn, cn, dn};
+}
+
+double complete_K(double kc2) { return boost::math::ellint_rf(0.0, kc2, 1.0, Fast()); }
+
+double incomplete_F(double s, double c, double kc2) {
+  const double c2 = c * c;
+  return s * boost::math::ellint_rf(c2, c2 + kc2 * s * s, 1.0, Fast());
+}
+
+double third_kind_excess(double s, double c, double kc2, double n) {
+  if (s == 0.0) return 0.0;
+  const double c2 = c * c, s2 = s * s;
+  return s * s2 * boost::math::ellint_rj(c2, c2 + kc2 * s2, 1.0, 1.0 - n * s2, Fast()) / 3.0;
+}
+
+double complete_third_kind_excess(double kc2, double n) {
+  return boost::math::ellint_rj(0.0, kc2, 1.0, 1.0 - n, Fast()) / 3.0;
+}
+
+}  // namespace wobble

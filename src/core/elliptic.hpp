@@ -1,0 +1,35 @@
+#pragma once
+/// @file
+/// Jacobi elliptic functions driven by the complementary parameter.
+///
+/// Why not Boost.Math's `jacobi_elliptic`: it takes the modulus k, and near the separatrix of a
+/// free body (k -> 1) the motion is decided by k'^2 = 1 - k^2, which k rounded to double no
+/// longer carries (k'^2 = 1e-16 gives k == 1 exactly); Boost 1.74's dn also loses accuracy near
+/// u = K (see shared numerics notes). This routine takes k'^2 itself, computed by the caller in
+/// factored form, and stays accurate down to k'^2 = 1e-16 (tests/core/test_elliptic.cpp measures
+/// it against Boost.Math at 50 digits). The elliptic integrals come from Boost.Math (Carlson).
+namespace wobble {
+
+struct SnCnDn {
+  double sn, cn, dn;
+};
+
+/// sn, cn, dn of u for parameter m = k^2 = 1 - kc2, 0 <= kc2 <= 1 (Bulirsch's descending
+/// Landen/AGM algorithm, 1965). kc2 == 0 gives tanh, sech, sech. Accurate for |u| <= K; reduce
+/// larger arguments by the periods first.
+SnCnDn jacobi_sncndn(double u, double kc2);
+
+/// K(k) = R_F(0, kc2, 1) for kc2 = 1 - k^2 > 0.
+double complete_K(double kc2);
+
+/// F(phi | k) for |phi| <= pi/2, from sin and cos of phi: sin R_F(cos^2, cos^2 + kc2 sin^2, 1).
+double incomplete_F(double sin_phi, double cos_phi, double kc2);
+
+/// (Pi(n; phi | k) - F(phi | k)) / n for |phi| <= pi/2, n < 1, without the cancellation of the
+/// difference: sin^3 R_J(cos^2, cos^2 + kc2 sin^2, 1, 1 - n sin^2) / 3.
+double third_kind_excess(double sin_phi, double cos_phi, double kc2, double n);
+
+/// The complete counterpart: (Pi(n | k) - K(k)) / n = R_J(0, kc2, 1, 1 - n) / 3, kc2 > 0.
+double complete_third_kind_excess(double kc2, double n);
+
+}  // namespace wobble

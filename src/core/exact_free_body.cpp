@@ -1,0 +1,153 @@
+#include "core/exact_free_body.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+#include "core/elliptic.hpp"
+
+namespace wobble {
+
+namespace {
+// The rotation taking m to |m| z: rows u1 = (m1 m3, m2 m3, -rho^2)/(rho |m|),
+// u2 = (-m2, m1, 0)/rho, u3 = m/|m|, rho^2 = m1^2 + m2^2 > 0.
+Mat3 to_L_frame(const Vec3& m) {
+  const double rho2 = m[0] * m[0] + m[1] * m[1], rho = std::sqrt(rho2), M = m.norm();
+  Mat3 P;
+  P.row(0) << m[0] * m[2] / (rho * M), m[1] * m[2] / (rho * M), -rho2 / (rho * M);
+  P.row(1) << -m[1] / rho, m[0] / rho, 0.0;
+  P.row(2) = m.transpose() / M;
+  return P;
+}
+
+Mat3 rot_z(double phi) {
+  Mat3 R;
+  const double c = std::cos(phi), s = std::sin(phi);
+  R << c, -s, 0, s, c, 0, 0, 0, 1;
+  return R;
+}
+
+double sgn(double x) { return x < 0.0 ? -1.0 : 1.0; }
+}  // namespace
+
+ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& q0_PtoS)
+    : I_(I_P), m0_(m0_P), q0_(q0_PtoS.normalized()) {
+  FreeBody{I_P}.validate();
+  if (!m0_P.allFinite()) throw std::invalid_argument("exact free body: m0 must be finite");
+  int zeros = 0;
+  for (int i = 0; i < 3; ++i) zeros += m0_P[i] == 0.0 ? 1 : 0;
+  if (zeros == 3) throw std::invalid_argument("exact free body: m0 must not be zero");
+  if (zeros == 2) return;  // steady rotation about a principal axis
+  for (int j = 0; j < 3; ++j) {
+    const int a = (j + 1) % 3, b = (j + 2) % 3;
+    if (I_[a] == I_[b]) {
+      kind_ = Kind::symmetric;
+      axis_ = j;
+      I_perp_ = I_[a];
+      c_ = (1.0 / I_[j] - 1.0 / I_perp_) * m0_[j];
+      if (c_ != 0.0) period_ = 2.0 * M_PI / std::abs(c_);
+      return;
+    }
+  }
+  kind_ = Kind::elliptic;
+  // W: the axes sorted ascending by a proper permutation (a row negated if it was odd).
+  std::array<int, 3> idx{0, 1, 2};
+  std::sort(idx.begin(), idx.end(), [&](int x, int y) { return I_[x] < I_[y]; });
+  Mat3 S = Mat3::Zero();
+  for (int i = 0; i < 3; ++i) S(i, idx[i]) = 1.0;
+  if (S.determinant() < 0) S.row(2) *= -1.0;
+  Vec3 J(I_[idx[0]], I_[idx[1]], I_[idx[2]]);
+  Vec3 m = S * m0_;
+  // D = |m|^2 - 2 T J2 = m3^2 (J3-J2)/J3 - m1^2 (J2-J1)/J1, in factored form.
+  const double alpha = std::sqrt((J[2] - J[1]) / J[2]), beta = std::sqrt((J[1] - J[0]) / J[0]);
+  const double a3 = alpha * std::abs(m[2]), b1 = beta * std::abs(m[0]);
+  const double D = (a3 - b1) * (a3 + b1);
+  Mat3 flip = Mat3::Identity();
+  if (D < 0.0) {  // m circles the axis of least moment: make it W's third axis
+    flip << 0, 0, 1, 0, -1, 0, 1, 0, 0;
+    J = Vec3(J[2], J[1], J[0]);
+    m = flip * m;
+  }
+  C_ = flip * S;
+  J_ = J;
+  const double d21 = J[1] - J[0], d31 = J[2] - J[0], d32 = J[2] - J[1];
+  const double m1 = m[0], m2 = m[1], m3 = m[2];
+  M_ = m.norm();
+  const double A = m1 * m1 * d31 / J[0] + m2 * m2 * d32 / J[1];  // 2 T J3 - |m|^2
+  const double B = m2 * m2 * d21 / J[1] + m3 * m3 * d31 / J[2];  // |m|^2 - 2 T J1
+  amp_ = Vec3(std::sqrt(m1 * m1 + m2 * m2 * J[0] * d32 / (J[1] * d31)),
+              std::sqrt(m1 * m1 * J[1] * d31 / (J[0] * d32) + m2 * m2),
+              std::sqrt(m2 * m2 * J[2] * d21 / (J[1] * d31) + m3 * m3));
+  lambda_ = std::sqrt(d32 * B / (J[0] * J[1] * J[2]));
+  // k'^2 = (J3-J1) D / ((J3-J2) B): every factor keeps its sign, so no cancellation.
+  kc2_ = std::clamp(d31 * D / (d32 * B), 0.0, 1.0);
+  (void)A;
+  sign_ = Vec3(sgn(m1), 0.0, sgn(m3));
+  sign_[1] = sign_[0] * sign_[2] * sgn(d32);
+  const double sn0 = std::clamp(sign_[1] * m2 / amp_[1], -1.0, 1.0);
+  const double cn0 = std::clamp(std::abs(m1) / amp_[0], 0.0, 1.0);
+  const double h = std::hypot(sn0, cn0);
+  u0_ = incomplete_F(sn0 / h, cn0 / h, kc2_);
+  K_ = kc2_ > 0.0 ? complete_K(kc2_) : std::numeric_limits<double>::infinity();
+  if (kc2_ > 0.0) period_ = 4.0 * K_ / lambda_;
+  n_ = -J[2] * d21 / (J[0] * d32);
+  phi_rate_ = M_ / J[0];
+  phi_coef_ = M_ * d21 * d31 / (J[0] * J[0] * d32 * lambda_);
+  Gc_ = kc2_ > 0.0 ? complete_third_kind_excess(kc2_, n_) : 0.0;
+  double s, c, d;
+  G0_ = G(u0_, &s, &c, &d);
+  const Mat3 R0 = q0_.toRotationMatrix() * C_.transpose();  // W -> S at t = 0
+  Q_ = R0 * to_L_frame(m).transpose();
+}
+
+// (Pi(n; am u) - u)/n, continued past |u| = K through the periods, and sn, cn, dn of u.
+double ExactFreeMotion::G(double u, double* sn, double* cn, double* dn) const {
+  double j = 0.0, r = u;
+  if (std::isfinite(K_)) {
+    j = std::nearbyint(u / (2.0 * K_));
+    r = u - 2.0 * K_ * j;
+  }
+  const SnCnDn e = jacobi_sncndn(r, kc2_);
+  const double odd = std::fmod(j, 2.0) == 0.0 ? 1.0 : -1.0;  // sn, cn change sign every 2K
+  *sn = odd * e.sn;
+  *cn = odd * e.cn;
+  *dn = e.dn;
+  return 2.0 * j * Gc_ + third_kind_excess(e.sn, e.cn, kc2_, n_);
+}
+
+FreeBodyState ExactFreeMotion::at_elliptic(double t) const {
+  double sn, cn, dn;
+  const double Gu = G(u0_ + lambda_ * t, &sn, &cn, &dn);
+  const Vec3 m(sign_[0] * amp_[0] * cn, sign_[1] * amp_[1] * sn, sign_[2] * amp_[2] * dn);
+  const double phi = phi_rate_ * t - phi_coef_ * (Gu - G0_);
+  const Mat3 R_WtoS = Q_ * rot_z(phi) * to_L_frame(m);
+  FreeBodyState s;
+  s.m_B = C_.transpose() * m;
+  s.q_BtoS = Quat(Mat3(R_WtoS * C_)).normalized();
+  return s;
+}
+
+FreeBodyState ExactFreeMotion::at(double t) const {
+  FreeBodyState s;
+  switch (kind_) {
+    case Kind::steady: {
+      const Vec3 w = m0_.cwiseQuotient(I_);
+      s.m_B = m0_;
+      s.q_BtoS = q0_ * Quat(Eigen::AngleAxisd(w.norm() * t, w.normalized()));
+      return s;
+    }
+    case Kind::symmetric: {
+      const Vec3 L_S = q0_ * m0_;
+      const Eigen::AngleAxisd body(c_ * t, Vec3::Unit(axis_));
+      const Eigen::AngleAxisd space(L_S.norm() / I_perp_ * t, L_S.normalized());
+      s.q_BtoS = (Quat(space) * q0_ * Quat(body)).normalized();
+      s.m_B = body.inverse() * m0_;
+      return s;
+    }
+    case Kind::elliptic: break;
+  }
+  return at_elliptic(t);
+}
+
+}  // namespace wobble

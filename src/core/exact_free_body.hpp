@@ -1,0 +1,57 @@
+#pragma once
+/// @file
+/// The torque-free rigid body solved exactly: its state at any time t, without stepping.
+///
+/// Frames and units as core/free_body.hpp: moments I (kg m^2) along the body axes P, body
+/// angular momentum m_P (kg m^2/s), attitude q_PtoS. Three kinds of motion:
+/// - steady: m along a principal axis; the body turns uniformly about it;
+/// - symmetric: two moments exactly equal (I_a == I_b = I_perp, axis j the other). Closed form:
+///   R(t) = Rot(L_S, |L| t / I_perp) R0 Rot(e_j, c t), m_P(t) = Rot(e_j, -c t) m0,
+///   c = (1/I_j - 1/I_perp) m_j: the body cone turns at c about e_j, the body at |L|/I_perp
+///   about L;
+/// - elliptic: three distinct moments. In a working frame W (the axes sorted, and turned so that
+///   m circles W's third axis) m = (s1 a1 cn u, s2 a2 sn u, s3 a3 dn u), u = u0 + lambda t, with
+///   the parameter's complement k'^2 computed from factored invariants (never as 1 - k^2), so it
+///   stays accurate at the separatrix. The attitude is R_WtoS = Q Rz(phi(t)) P(m(t)), P(m) the
+///   rotation taking m to |m| z; phi' = |m| (m1^2/J1 + m2^2/J2) / (m1^2 + m2^2), integrated as
+///   an elliptic integral of the third kind (Celledoni, Fasso, Safstrom, Zanna, SIAM J. Sci.
+///   Comput. 30 (2008)).
+#include <limits>
+
+#include "core/free_body.hpp"
+
+namespace wobble {
+
+class ExactFreeMotion {
+ public:
+  enum class Kind { steady, symmetric, elliptic };
+
+  /// @throws std::invalid_argument for a moment not finite and > 0, a non-finite or zero m0.
+  ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& q0_PtoS);
+
+  FreeBodyState at(double t_s) const;
+  Kind kind() const { return kind_; }
+  /// Period of m_P(t) in s (infinity for steady motion and on the separatrix).
+  double period_s() const { return period_; }
+  /// Elliptic only: k'^2 = 1 - k^2 (0 on the separatrix).
+  double kc2() const { return kc2_; }
+
+ private:
+  FreeBodyState at_elliptic(double t) const;
+  Vec3 I_, m0_;
+  Quat q0_;
+  Kind kind_ = Kind::steady;
+  double period_ = std::numeric_limits<double>::infinity();
+  // symmetric
+  int axis_ = 2;
+  double c_ = 0.0, I_perp_ = 1.0;
+  // elliptic, in W: m_W = C m_P
+  Mat3 C_ = Mat3::Identity();
+  Vec3 J_ = Vec3::Ones(), amp_ = Vec3::Zero(), sign_ = Vec3::Ones();
+  double M_ = 0.0, lambda_ = 0.0, u0_ = 0.0, kc2_ = 0.0, K_ = 0.0, n_ = 0.0;
+  double phi_rate_ = 0.0, phi_coef_ = 0.0, G0_ = 0.0, Gc_ = 0.0;
+  Mat3 Q_ = Mat3::Identity();  ///< R_WtoS(0) P(m0)^T
+  double G(double u, double* sn, double* cn, double* dn) const;
+};
+
+}  // namespace wobble

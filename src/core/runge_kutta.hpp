@@ -1,0 +1,57 @@
+#pragma once
+/// @file
+/// Runge-Kutta integrators for the rigid body (core/rigid_body.hpp): fixed-step RK4, and the
+/// embedded pairs Dormand-Prince 5(4) and Fehlberg 7(8) with step-size control.
+///
+/// Error control is on the whole state (momentum and attitude): a step is accepted when
+/// max_i |err_i| / (tol * scale_i) <= 1, where scale is the size of the momentum for its three
+/// components and 1 for the four quaternion components, so `tol` is a relative error per step.
+/// Both pairs propagate the higher-order solution (local extrapolation), like Boost.Odeint.
+/// After every step the quaternion is renormalised (the exact flow keeps it unit; RK does not).
+/// Step sizes are chosen to land exactly on the requested output times.
+#include <cstdint>
+#include <string>
+
+#include "core/rigid_body.hpp"
+
+namespace wobble {
+
+enum class RkMethod { rk4, dopri5, rkf78 };
+
+struct IntegrationCost {
+  std::int64_t rhs_evals = 0;
+  std::int64_t steps = 0;     ///< accepted
+  std::int64_t rejected = 0;  ///< adaptive methods only
+};
+
+/// Advances a state through successive output times, keeping its step size between calls.
+class RungeKutta {
+ public:
+  /// Adaptive (dopri5, rkf78): `tol_or_step` is the relative tolerance. Fixed step (rk4, or
+  /// any method with fixed_step = true, used to measure orders): it is the largest step (s).
+  /// `momentum_scale` (kg m^2/s, > 0) is the size the momentum error is measured against.
+  /// @throws std::invalid_argument for a non-positive or non-finite step, tolerance or scale.
+  RungeKutta(const RigidBodyModel& model, RkMethod method, double tol_or_step,
+             double momentum_scale, bool fixed_step = false);
+
+  /// y(t0) -> y(t1), t1 > t0. @throws std::runtime_error if the step size underflows.
+  void advance(State7& y, double t0, double t1);
+
+  const IntegrationCost& cost() const { return cost_; }
+  RkMethod method() const { return method_; }
+
+ private:
+  const RigidBodyModel& model_;
+  RkMethod method_;
+  double tol_or_step_;
+  bool fixed_;
+  State7 scale_;
+  double h_ = 0.0;  ///< next trial step (adaptive), 0 until the first call
+  IntegrationCost cost_;
+};
+
+/// The theoretical order of the propagated solution.
+int order_of(RkMethod m);
+std::string name_of(RkMethod m);
+
+}  // namespace wobble

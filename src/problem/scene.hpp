@@ -1,0 +1,79 @@
+#pragma once
+/// @file
+/// A scene as data: what a `scenes/<id>.toml` file holds (see README, "Scene files").
+///
+/// The body uses the problem files' schema (parameters, masses, shapes or a tensor). Vectors
+/// "in the body frame" are components along the axes the body is written in (frame B, origin O
+/// of the file), which turn with the body; "space" is the inertial frame S, z up. Expressions
+/// are kept as text and evaluated by the simulation layer, so messages can name their field.
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "problem/problem.hpp"
+
+namespace wobble {
+
+using Expr3 = std::array<std::string, 3>;
+
+enum class Frame { body, space };
+
+/// The orientation at t = 0 (body B -> space S). Exactly one of the forms, identity if none.
+struct OrientationSpec {
+  enum class Kind { identity, quaternion, matrix, euler } kind = Kind::identity;
+  std::array<std::string, 4> quaternion;  ///< (w, x, y, z); must be unit to 1e-12
+  std::array<Expr3, 3> matrix;            ///< rows; must be a rotation to 1e-12
+  Expr3 euler;                            ///< angles (phi, theta, psi), rad (or "30deg")
+  std::string convention = "zyz";         ///< core/euler_angles.hpp
+};
+
+struct GravitySpec {
+  std::string g = "9.80665";  ///< m/s^2, acting along -z in space
+  Expr3 pivot{"0", "0", "0"};  ///< the fixed point, body frame, m
+};
+
+struct FreeFlightSpec {
+  std::string g = "9.80665";
+  Expr3 position{"0", "0", "0"};  ///< centre of mass at t = 0, space, m
+  Expr3 velocity{"0", "0", "0"};  ///< m/s
+};
+
+struct TorqueSpec {
+  Expr3 value;  ///< N m
+  Frame frame = Frame::body;
+};
+
+struct Scene {
+  /// id, title, statement (the scene's description), parameters and body, as in a problem.
+  Problem model;
+  Expr3 omega;  ///< initial angular velocity, rad/s
+  Frame omega_frame = Frame::body;
+  OrientationSpec orientation;
+  std::optional<GravitySpec> gravity;
+  std::optional<FreeFlightSpec> free_flight;
+  std::optional<TorqueSpec> torque;
+  std::vector<std::string> outputs;  ///< names from scene_output_names(), in the file's order
+  std::string t_end = "10";          ///< s, > 0
+  int samples = 101;                 ///< output times, evenly spaced over [0, t_end], >= 2
+  double tolerance = 1e-10;          ///< relative, in [1e-14, 1e-2]
+  std::string method = "auto";       ///< auto or a name from simulation_method_names()
+  std::optional<std::string> step;   ///< s, fixed-step methods only
+};
+
+/// Every output a scene may ask for, with a one-line description each.
+const std::vector<std::pair<std::string, std::string>>& scene_output_names();
+
+/// @throws InputError "FILE:LINE: FIELD: what" for a malformed file, an unknown key, effect or
+///   output, a missing field, a bad count or tolerance, or two orientations given at once.
+Scene load_scene(const std::filesystem::path& file);
+
+/// The folder of the example scenes: $WOBBLE_SCENES if set, else the source tree's scenes/.
+std::filesystem::path scenes_dir();
+
+/// Resolves "ID" (scenes_dir()/ID.toml) or a path to a .toml file, and loads it.
+/// @throws InputError for an unknown id (listing the known ones) or a bad file.
+Scene find_scene(const std::string& id_or_file);
+
+}  // namespace wobble

@@ -1,0 +1,121 @@
+#include "problem/toml_reader.hpp"
+
+#include "problem/values.hpp"
+
+namespace wobble::detail {
+
+Parameter read_parameter(const Reader& r, const toml::table& t, const std::string& f) {
+  r.only_keys(t, f, {"name", "latex", "unit", "description", "default", "range"});
+  Parameter p;
+  p.name = r.string(t, "name", f + ".");
+  p.latex = r.string(t, "latex", f + ".", false, p.name);
+  p.unit = r.string(t, "unit", f + ".", false, "");
+  p.description = r.string(t, "description", f + ".", false, "");
+  const std::string range = r.string(t, "range", f + ".");
+  try {
+    p.range = parse_interval(range, f + ".range");
+  } catch (const InputError& e) {
+    r.fail(t.get("range"), f + ".range", e.what());
+  }
+  const toml::node* d = t.get("default");
+  const std::string text = r.expression(d, f + ".default", &t);
+  try {
+    p.default_value = parse_parameter_value(p, text, f + ".default");
+  } catch (const InputError& e) {
+    r.fail(d, f + ".default", e.what());
+  }
+  return p;
+}
+
+BodySpec read_body(const Reader& r, const toml::table& body) {
+  r.only_keys(body, "body", {"masses", "shapes", "tensor"});
+  BodySpec b;
+  if (const toml::node* n = body.get("masses")) {
+    const toml::array* a = n->as_array();
+    if (a == nullptr) r.fail(n, "body.masses", "expected an array of { mass, at } tables");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const std::string f = "body.masses[" + std::to_string(i) + "]";
+      const toml::table& t = r.table_at(*a, i, f, n);
+      r.only_keys(t, f, {"mass", "at"});
+      b.masses.push_back(
+          {r.expression(t.get("mass"), f + ".mass", &t), r.vector3(t.get("at"), f + ".at", &t)});
+    }
+  }
+  if (const toml::node* n = body.get("shapes")) {
+    const toml::array* a = n->as_array();
+    if (a == nullptr) r.fail(n, "body.shapes", "expected an array of shape tables");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const std::string f = "body.shapes[" + std::to_string(i) + "]";
+      const toml::table& t = r.table_at(*a, i, f, n);
+      r.only_keys(t, f, {"shape", "mass", "sizes", "center"});
+      ShapeSpec s;
+      s.shape = r.string(t, "shape", f + ".");
+      s.mass = r.expression(t.get("mass"), f + ".mass", &t);
+      const toml::array& sizes = r.array(t, "sizes", f + ".sizes");
+      for (std::size_t k = 0; k < sizes.size(); ++k) {
+        s.sizes.push_back(r.expression(sizes.get(k), f + ".sizes[" + std::to_string(k) + "]", &t));
+      }
+      if (t.get("center")) s.center = r.vector3(t.get("center"), f + ".center", &t);
+      b.shapes.push_back(std::move(s));
+    }
+  }
+  if (const toml::node* n = body.get("tensor")) {
+    const toml::array* a = n->as_array();
+    if (a == nullptr || a->size() != 3)
+      r.fail(n, "body.tensor", "expected 3 rows of 3 expressions");
+    std::array<std::array<std::string, 3>, 3> rows;
+    for (std::size_t i = 0; i < 3; ++i) {
+      rows[i] = r.vector3(a->get(i), "body.tensor[" + std::to_string(i) + "]", n);
+    }
+    b.tensor = rows;
+    if (!b.masses.empty() || !b.shapes.empty()) {
+      r.fail(n, "body.tensor", "a tensor given directly cannot be combined with masses or shapes");
+    }
+  }
+  if (b.masses.empty() && b.shapes.empty() && !b.tensor) {
+    r.fail(&body, "body", "needs masses, shapes or a tensor");
+  }
+  return b;
+}
+
+
+std::vector<Parameter> read_parameters(const Reader& r, const toml::table& root) {
+  const toml::array& params = r.array(root, "parameters", "parameters");
+  Problem p;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    const std::string f = "parameters[" + std::to_string(i) + "]";
+    p.parameters.push_back(read_parameter(r, r.table_at(params, i, f, &root), f));
+    if (!names.insert(p.parameters.back().name).second) {
+      r.fail(params.get(i), f + ".name",
+             "parameter '" + p.parameters.back().name + "' declared twice");
+    }
+  }
+  try {
+    (void)p.symbol_table();
+  } catch (const std::invalid_argument& e) {
+    r.fail(&params, "parameters", e.what());
+  }
+  return p.parameters;
+}
+
+toml::table parse_toml_file(const std::filesystem::path& file, const std::string& what) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    throw InputError(file.string() + ": no such " + what + " file");
+  }
+  // A problem or scene file is a few kilobytes; refuse anything absurd before reading it.
+  constexpr std::uintmax_t kMaxFileBytes = 1 << 20;
+  if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxFileBytes) {
+    throw InputError(file.string() + ": file is " + std::to_string(size) + " bytes; a " + what +
+                     " file may have at most 1 MiB");
+  }
+  try {
+    return toml::parse_file(file.string());
+  } catch (const toml::parse_error& e) {
+    throw InputError(file.string() + ":" + std::to_string(e.source().begin.line) +
+                     ": malformed TOML: " + std::string(e.description()));
+  }
+}
+
+}  // namespace wobble::detail

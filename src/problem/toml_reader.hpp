@@ -1,0 +1,109 @@
+#pragma once
+/// @file
+/// Internal to the problem layer: reading TOML with messages "FILE:LINE: FIELD: what", shared by
+/// the problem and scene loaders.
+#include <toml++/toml.h>
+
+#include <array>
+#include <charconv>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "problem/problem.hpp"
+
+namespace wobble::detail {
+
+// Builds messages "FILE:LINE: FIELD: what".
+class Reader {
+ public:
+  explicit Reader(std::filesystem::path file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const toml::node* node, const std::string& field,
+                         const std::string& what) const {
+    std::string where = file_.string();
+    if (node != nullptr && node->source().begin.line > 0) {
+      where += ":" + std::to_string(node->source().begin.line);
+    }
+    throw InputError(where + ": " + field + ": " + what);
+  }
+
+  void only_keys(const toml::table& t, const std::string& field,
+                 const std::set<std::string>& allowed) const {
+    for (auto&& [key, node] : t) {
+      if (!allowed.count(std::string(key.str()))) {
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        fail(&node, field.empty() ? std::string(key.str()) : field + "." + std::string(key.str()),
+             "unknown key (expected one of: " + list + ")");
+      }
+    }
+  }
+
+  std::string string(const toml::table& t, const std::string& key, const std::string& field,
+                     bool required = true, const std::string& fallback = "") const {
+    const toml::node* n = t.get(key);
+    if (n == nullptr) {
+      if (required) fail(&t, field + key, "missing");
+      return fallback;
+    }
+    if (auto s = n->value<std::string>(); s && n->is_string()) return *s;
+    fail(n, field + key, "expected a string");
+  }
+
+  // An expression: a string, or a number written as its shortest round-trip text.
+  std::string expression(const toml::node* n, const std::string& field,
+                         const toml::node* parent) const {
+    if (n == nullptr) fail(parent, field, "missing");
+    if (n->is_string()) return *n->value<std::string>();
+    if (n->is_integer()) return std::to_string(*n->value<int64_t>());
+    if (n->is_floating_point()) {
+      char buf[32];
+      auto r = std::to_chars(buf, buf + sizeof buf, *n->value<double>());
+      return std::string(buf, r.ptr);
+    }
+    fail(n, field, "expected an expression (a string such as \"2*m\") or a number");
+  }
+
+  std::array<std::string, 3> vector3(const toml::node* n, const std::string& field,
+                                     const toml::node* parent) const {
+    if (n == nullptr) fail(parent, field, "missing");
+    const toml::array* a = n->as_array();
+    if (a == nullptr || a->size() != 3) fail(n, field, "expected an array of 3 expressions");
+    std::array<std::string, 3> out;
+    for (std::size_t i = 0; i < 3; ++i) {
+      out[i] = expression(a->get(i), field + "[" + std::to_string(i) + "]", n);
+    }
+    return out;
+  }
+
+  const toml::table& table_at(const toml::array& a, std::size_t i, const std::string& field,
+                              const toml::node* parent) const {
+    const toml::table* t = a.get(i)->as_table();
+    if (t == nullptr) fail(parent, field, "expected a table");
+    return *t;
+  }
+
+  const toml::array& array(const toml::table& t, const std::string& key,
+                           const std::string& field) const {
+    const toml::node* n = t.get(key);
+    if (n == nullptr) fail(&t, field, "missing");
+    const toml::array* a = n->as_array();
+    if (a == nullptr) fail(n, field, "expected an array");
+    return *a;
+  }
+
+ private:
+  std::filesystem::path file_;
+};
+
+/// A parameter table [[parameters]] (name, latex, unit, description, default, range).
+Parameter read_parameter(const Reader& r, const toml::table& t, const std::string& f);
+/// The [body] table: masses, shapes or a tensor.
+BodySpec read_body(const Reader& r, const toml::table& body);
+/// Every [[parameters]] entry of root, names unique, symbols valid.
+std::vector<Parameter> read_parameters(const Reader& r, const toml::table& root);
+/// Refuses files over 1 MiB, then parses. @throws InputError "FILE:LINE: malformed TOML: ...".
+toml::table parse_toml_file(const std::filesystem::path& file, const std::string& what);
+
+}  // namespace wobble::detail

@@ -1,0 +1,200 @@
+#include "render/simulation_output.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "render/gnuplot.hpp"
+
+namespace wobble {
+
+namespace {
+std::string vec(const Vec3& v, int digits) {
+  return fmt::format("({:.{}g}, {:.{}g}, {:.{}g})", v.x(), digits, v.y(), digits, v.z(), digits);
+}
+
+bool is_exact(const SimulationResult& r) {
+  return r.choice.method == SimMethod::closed_form || r.choice.method == SimMethod::exact;
+}
+
+std::string seconds(double t) {
+  if (t < 1e-3) return fmt::format("{:.3g} us", t * 1e6);
+  if (t < 1.0) return fmt::format("{:.3g} ms", t * 1e3);
+  return fmt::format("{:.3g} s", t);
+}
+}  // namespace
+
+int printed_digits(const SceneSetup& s, const SimulationResult& r) {
+  if (is_exact(r)) return 10;
+  const int from_tol = static_cast<int>(std::floor(-std::log10(s.tolerance))) - 1;
+  const bool fixed = r.choice.step_s > 0.0;  // a fixed step carries no tolerance guarantee
+  return std::clamp(fixed ? 6 : from_tol, 3, 10);
+}
+
+std::string simulation_header(const SceneSetup& s, const SimulationResult& r) {
+  std::string h = fmt::format("scene {}: {}\n", s.id, s.title);
+  if (s.has_mass) {
+    h += fmt::format("body: mass {:.10g} kg, turning about its {} at {} m (body frame)\n",
+                     s.mass_kg, s.turning_point, vec(s.turning_point_B, 10));
+  } else {
+    h += "body: tensor given directly, turning about the origin O\n";
+  }
+  h += fmt::format("principal moments there: {:.10g}, {:.10g}, {:.10g} kg m^2 (ascending)\n",
+                   s.moments[0], s.moments[1], s.moments[2]);
+  for (int i = 0; i < 3; ++i) {
+    h += fmt::format("  e{} = {} in the body frame\n", i + 1, vec(s.axes_B.col(i), 10));
+  }
+  h += "effects: ";
+  for (std::size_t i = 0; i < s.effects.size(); ++i) h += (i ? "; " : "") + s.effects[i];
+  h += "\n";
+  h += fmt::format("method: {} ({})\n", name_of(r.choice.method), r.choice.reason);
+  for (const auto& n : r.notes) h += "  " + n + "\n";
+  h += fmt::format("time: 0 to {:.10g} s, {} samples", s.t_end, s.samples);
+  if (!is_exact(r) && r.choice.step_s == 0.0) h += fmt::format("; tolerance {:.0e}", s.tolerance);
+  if (r.choice.step_s > 0.0) h += fmt::format("; step {:.6g} s", r.choice.step_s);
+  h += "\n";
+  return h;
+}
+
+std::string simulation_table(const SceneSetup& s, const SimulationResult& r) {
+  const int d = printed_digits(s, r);
+  const std::size_t width = static_cast<std::size_t>(d) + 8;
+  std::vector<std::size_t> w;
+  for (const auto& c : r.columns) w.push_back(std::max(width, c.size() + 1));
+  // A value below the column's largest times 10^-d is round-off of a zero (a spin braked to
+  // rest prints 1.2e-14 otherwise): print it as 0, so every printed digit is one the run has.
+  std::vector<double> floor(r.columns.size(), 0.0);
+  for (const auto& row : r.rows) {
+    for (std::size_t j = 0; j < row.size(); ++j) floor[j] = std::max(floor[j], std::abs(row[j]));
+  }
+  for (double& f : floor) f *= std::pow(10.0, -d);
+  std::string out;
+  for (std::size_t j = 0; j < r.columns.size(); ++j) out += fmt::format("{:>{}}", r.columns[j], w[j]);
+  out += "\n";
+  for (std::size_t j = 0; j < r.units.size(); ++j) out += fmt::format("{:>{}}", "[" + r.units[j] + "]", w[j]);
+  out += "\n";
+  for (const auto& row : r.rows) {
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      // Errors are printed to 3 digits: they are sizes, not values.
+      const bool err = r.columns[j].rfind("err_", 0) == 0;
+      const double v = (std::abs(row[j]) < floor[j] && !err) || row[j] == 0.0 ? 0.0 : row[j];
+      out += fmt::format("{:>{}.{}g}", v, w[j], err ? 3 : d);
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string simulation_footer(const SceneSetup&, const SimulationResult& r) {
+  std::string f;
+  if (r.invariants.empty()) {
+    f += "conserved quantities: none with these effects (a constant body-frame torque, or a "
+         "torque with gravity)\n";
+  } else {
+    f += "conserved quantities, largest deviation from t = 0 over the samples:\n";
+    for (const auto& inv : r.invariants) {
+      f += fmt::format("  {:<20} {:.2e} {:<9} (relative {:.2e})\n", inv.name, inv.max_abs,
+                       inv.unit, inv.relative());
+    }
+  }
+  f += fmt::format("cost: {} {}", r.cost, r.cost_label);
+  if (r.steps > 0) f += fmt::format(", {} steps", r.steps);
+  if (r.rejected > 0) f += fmt::format(" ({} rejected)", r.rejected);
+  f += fmt::format("; run time {}\n", seconds(r.run_time_s));
+  return f;
+}
+
+std::string simulation_csv(const SimulationResult& r) {
+  std::string out;
+  for (std::size_t j = 0; j < r.columns.size(); ++j) {
+    out += (j ? "," : "") + r.columns[j] + " [" + r.units[j] + "]";
+  }
+  out += "\n";
+  for (const auto& row : r.rows) {
+    for (std::size_t j = 0; j < row.size(); ++j) out += fmt::format("{}{:.17g}", j ? "," : "", row[j]);
+    out += "\n";
+  }
+  return out;
+}
+
+std::string simulation_json(const SceneSetup& s, const SimulationResult& r) {
+  nlohmann::ordered_json j;
+  j["scene"] = s.id;
+  j["title"] = s.title;
+  j["method"] = name_of(r.choice.method);
+  j["reason"] = r.choice.reason;
+  j["effects"] = s.effects;
+  j["principal_moments"] = {s.moments[0], s.moments[1], s.moments[2]};
+  j["t_end"] = s.t_end;
+  j["tolerance"] = s.tolerance;
+  j["columns"] = r.columns;
+  j["units"] = r.units;
+  j["rows"] = r.rows;
+  nlohmann::ordered_json inv = nlohmann::ordered_json::array();
+  for (const auto& i : r.invariants) {
+    inv.push_back({{"name", i.name}, {"unit", i.unit}, {"max_abs_error", i.max_abs},
+                   {"relative_error", i.relative()}});
+  }
+  j["invariants"] = inv;
+  j["cost"] = {{"count", r.cost}, {"of", r.cost_label}, {"steps", r.steps},
+               {"rejected", r.rejected}, {"run_time_s", r.run_time_s}};
+  return j.dump(1) + "\n";
+}
+
+void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
+                           const std::filesystem::path& out) {
+  // Group columns by output (the part of the name before the last _x/_y/_z/_phi...).
+  struct Panel {
+    std::string title;
+    std::vector<std::size_t> cols;
+  };
+  std::vector<Panel> panels;
+  for (std::size_t j = 1; j < r.columns.size(); ++j) {
+    std::string base = r.columns[j];
+    for (const char* suffix : {"_x", "_y", "_z", "_phi", "_theta", "_psi"}) {
+      const std::string sfx(suffix);
+      if (base.size() > sfx.size() && base.compare(base.size() - sfx.size(), sfx.size(), sfx) == 0) {
+        base.resize(base.size() - sfx.size());
+        break;
+      }
+    }
+    if (base.rfind("err_", 0) == 0) base = "invariant errors";
+    if (panels.empty() || panels.back().title != base) panels.push_back({base, {}});
+    panels.back().cols.push_back(j);
+  }
+  draw_svg_with_gnuplot(
+      [&](const std::filesystem::path& svg) {
+        std::string g = "set encoding utf8\n";
+        g += fmt::format("set terminal svg size 900,{} dynamic font \"Helvetica,13\" background "
+                         "rgb \"white\"\n",
+                         std::max<std::size_t>(1, panels.size()) * 260);
+        g += fmt::format("set output \"{}\"\n", gnuplot_quote(svg.string()));
+        g += fmt::format("set multiplot layout {},1 title \"{}\" noenhanced\n", panels.size(),
+                         gnuplot_quote(s.id + ": " + s.title));
+        g += "set grid\nset key outside right\nset xlabel \"t [s]\"\n";
+        g += "$data << EOD\n";
+        for (const auto& row : r.rows) {
+          for (std::size_t j = 0; j < row.size(); ++j) g += fmt::format("{}{:.17g}", j ? " " : "", row[j]);
+          g += "\n";
+        }
+        g += "EOD\n";
+        for (const auto& p : panels) {
+          g += fmt::format("set ylabel \"[{}]\" noenhanced\n", gnuplot_quote(r.units[p.cols[0]]));
+          g += fmt::format("set title \"{}\" noenhanced\n", gnuplot_quote(p.title));
+          g += "plot ";
+          for (std::size_t k = 0; k < p.cols.size(); ++k) {
+            g += fmt::format("{}$data using 1:{} with lines lw 2 title \"{}\" noenhanced",
+                             k ? ", " : "", p.cols[k] + 1, gnuplot_quote(r.columns[p.cols[k]]));
+          }
+          g += "\n";
+        }
+        g += "unset multiplot\n";
+        return g;
+      },
+      out);
+}
+
+}  // namespace wobble

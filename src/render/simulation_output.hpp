@@ -1,0 +1,30 @@
+#pragma once
+/// @file
+/// A simulation as text (header, table, footer), CSV, JSON, and a gnuplot plot.
+///
+/// Text prints the significant digits the run supports: 10 for the closed form and the exact
+/// solution, otherwise one fewer than the tolerance's exponent (at least 3, at most 10). CSV
+/// and JSON carry every double to 17 significant digits (for programs; the footer says how far
+/// to trust them).
+#include <filesystem>
+#include <string>
+
+#include "simulate/simulation.hpp"
+
+namespace wobble {
+
+std::string simulation_header(const SceneSetup& s, const SimulationResult& r);
+std::string simulation_table(const SceneSetup& s, const SimulationResult& r);
+std::string simulation_footer(const SceneSetup& s, const SimulationResult& r);
+std::string simulation_csv(const SimulationResult& r);
+std::string simulation_json(const SceneSetup& s, const SimulationResult& r);
+
+/// Significant digits the text table prints for this run.
+int printed_digits(const SceneSetup& s, const SimulationResult& r);
+
+/// Every output column against time, one panel per output, as SVG through gnuplot (atomic).
+/// @throws std::runtime_error naming the file if gnuplot fails.
+void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
+                           const std::filesystem::path& out);
+
+}  // namespace wobble

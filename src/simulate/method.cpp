@@ -1,0 +1,107 @@
+#include "simulate/method.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "core/input_error.hpp"
+
+namespace wobble {
+
+const std::vector<std::pair<std::string, std::string>>& simulation_method_names() {
+  static const std::vector<std::pair<std::string, std::string>> names{
+      {"closed_form", "torque-free axially symmetric body: exact formulas, no integration"},
+      {"exact", "torque-free body: Jacobi elliptic functions, any t without stepping"},
+      {"rk4", "classical Runge-Kutta, fixed step (order 4)"},
+      {"dopri5", "Dormand-Prince 5(4), adaptive"},
+      {"rkf78", "Fehlberg 7(8), adaptive"},
+      {"split2", "Lie-Poisson splitting, Strang (order 2), torque-free"},
+      {"split4", "Lie-Poisson splitting, Yoshida composition (order 4), torque-free"},
+  };
+  return names;
+}
+
+std::string name_of(SimMethod m) {
+  return simulation_method_names()[static_cast<std::size_t>(m)].first;
+}
+
+namespace {
+int order(SimMethod m) {
+  switch (m) {
+    case SimMethod::rk4: return 4;
+    case SimMethod::split2: return 2;
+    case SimMethod::split4: return 4;
+    default: return 0;
+  }
+}
+
+// Fixed step from the tolerance when the scene gives none: the local error of an order-p
+// method is ~ (h Omega)^(p+1), so h = tol^(1/p) / Omega keeps the global error near tol over
+// a few turns. Omega is the fastest rate in the scene: the spin, and for a heavy top the
+// pendulum rate sqrt(M g d / I1). A rule of thumb, said so in the header.
+double default_step(const SceneSetup& s, int p) {
+  double rate = s.model.omega_P(s.m0_P).norm();
+  if (s.model.gravity) {
+    rate = std::max(rate, std::sqrt(s.model.mass_kg * s.model.g_S.norm() * s.model.d_P_m.norm() /
+                                    s.model.I_P.minCoeff()));
+  }
+  if (s.model.torque) {
+    rate = std::max(rate, std::sqrt(s.model.torque_Nm.norm() / s.model.I_P.minCoeff()));
+  }
+  return std::min(s.t_end, std::pow(s.tolerance, 1.0 / p) / std::max(rate, 1e-300));
+}
+}  // namespace
+
+MethodChoice choose_method(const SceneSetup& s, const std::string& requested) {
+  const bool free = s.model.torque_free();
+  MethodChoice c;
+  if (requested == "auto") {
+    if (free && s.symmetric) {
+      c = {SimMethod::closed_form, "torque-free and axially symmetric: closed form, no integration"};
+    } else if (free) {
+      c = {SimMethod::exact,
+           "torque-free: exact solution in Jacobi elliptic functions, no integration"};
+    } else if (s.tolerance > 1e-6) {
+      c = {SimMethod::dopri5, fmt::format("torques present; tolerance {:.0e} is loose, where "
+                                          "Dormand-Prince 5(4) is the cheaper adaptive pair",
+                                          s.tolerance)};
+    } else {
+      c = {SimMethod::rkf78, fmt::format("torques present; at tolerance {:.0e} Fehlberg 7(8) "
+                                         "needs fewer evaluations than Dormand-Prince 5(4)",
+                                         s.tolerance)};
+    }
+  } else {
+    const auto& names = simulation_method_names();
+    std::size_t i = 0;
+    while (i < names.size() && names[i].first != requested) ++i;
+    if (i == names.size()) {
+      std::string list = "auto";
+      for (const auto& n : names) list += ", " + n.first;
+      throw InputError("--method: unknown method '" + requested + "' (expected one of: " + list +
+                       ")");
+    }
+    c.method = static_cast<SimMethod>(i);
+    c.reason = "requested";
+    const bool needs_free = c.method == SimMethod::closed_form || c.method == SimMethod::exact ||
+                            c.method == SimMethod::split2 || c.method == SimMethod::split4;
+    if (needs_free && !free) {
+      throw InputError("--method " + requested +
+                       ": applies to torque-free motion only, and this scene has " +
+                       (s.model.gravity ? "gravity about a pivot" : "a torque") +
+                       "; use rk4, dopri5, rkf78 or auto");
+    }
+    if (c.method == SimMethod::closed_form && !s.symmetric) {
+      throw InputError(fmt::format(
+          "--method closed_form: the body is not axially symmetric (moments {:.10g}, {:.10g}, "
+          "{:.10g} kg m^2); use exact or auto",
+          s.moments[0], s.moments[1], s.moments[2]));
+    }
+  }
+  if (const int p = order(c.method); p > 0) {
+    c.step_s = s.step ? *s.step : default_step(s, p);
+    if (!s.step) c.reason += fmt::format("; step tol^(1/{}) / rate = {:.3g} s (rule of thumb)", p, c.step_s);
+  }
+  return c;
+}
+
+}  // namespace wobble

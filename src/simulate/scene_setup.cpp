@@ -1,0 +1,176 @@
+#include "simulate/scene_setup.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "core/euler_angles.hpp"
+#include "core/principal_axes.hpp"
+#include "problem/values.hpp"
+#include "solvers/inertia_body.hpp"
+
+namespace wobble {
+
+namespace {
+struct Eval {
+  const BodyContext& ctx;
+  double operator()(const std::string& text, const std::string& field) const {
+    return sym::evaluate(ctx.table.parse(text, field), ctx.exact.at, field);
+  }
+  Vec3 vec(const Expr3& v, const std::string& field) const {
+    Vec3 out;
+    for (int i = 0; i < 3; ++i) out[i] = (*this)(v[i], field + "[" + std::to_string(i) + "]");
+    return out;
+  }
+  // An angle: an expression in rad, or in degrees with a deg (or °) suffix: "10deg",
+  // "theta0" or "(90 - 15)deg".
+  double angle(const std::string& text, const std::string& field) const {
+    for (const std::string suffix : {"deg", "\u00b0"}) {
+      if (text.size() > suffix.size() &&
+          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0) {
+        return (*this)("(" + text.substr(0, text.size() - suffix.size()) + ")*pi/180", field);
+      }
+    }
+    return (*this)(text, field);
+  }
+  double positive(const std::string& text, const std::string& field) const {
+    const double v = (*this)(text, field);
+    if (!(v > 0.0) || !std::isfinite(v)) {
+      throw InputError(fmt::format("{}: \"{}\" is {:.10g}; it must be finite and > 0", field,
+                                   text, v));
+    }
+    return v;
+  }
+};
+
+// How far from a rotation an input may be: it is typed with ~15 digits, so 1e-12 accepts
+// rounded entries (a quaternion (0.7071067811865476, ...) ) and refuses mistakes.
+constexpr double kUnitTolerance = 1e-12;
+
+Quat initial_orientation(const Scene& scene, const Eval& ev) {
+  const OrientationSpec& o = scene.orientation;
+  switch (o.kind) {
+    case OrientationSpec::Kind::identity: return Quat::Identity();
+    case OrientationSpec::Kind::quaternion: {
+      double q[4];
+      for (int i = 0; i < 4; ++i)
+        q[i] = ev(o.quaternion[i], "initial.quaternion[" + std::to_string(i) + "]");
+      const Quat out(q[0], q[1], q[2], q[3]);
+      if (std::abs(out.norm() - 1.0) > kUnitTolerance) {
+        throw InputError(fmt::format(
+            "initial.quaternion: ({}, {}, {}, {}) has norm {:.17g}; it must be a unit quaternion",
+            q[0], q[1], q[2], q[3], out.norm()));
+      }
+      return out.normalized();
+    }
+    case OrientationSpec::Kind::matrix: {
+      Mat3 R;
+      for (int i = 0; i < 3; ++i)
+        R.row(i) = ev.vec(o.matrix[i], "initial.matrix[" + std::to_string(i) + "]").transpose();
+      const double off = (R.transpose() * R - Mat3::Identity()).cwiseAbs().maxCoeff();
+      if (off > kUnitTolerance || R.determinant() < 0) {
+        throw InputError(fmt::format(
+            "initial.matrix: not a rotation (|R^T R - 1| = {:.3g}, det = {:.6g}); rows must be "
+            "orthonormal and right-handed",
+            off, R.determinant()));
+      }
+      return Quat(R).normalized();
+    }
+    case OrientationSpec::Kind::euler: {
+      Vec3 a;
+      for (int i = 0; i < 3; ++i) a[i] = ev.angle(o.euler[i], "initial.euler[" + std::to_string(i) + "]");
+      return Quat(rotation_from_euler(a, euler_convention(o.convention))).normalized();
+    }
+  }
+  return Quat::Identity();
+}
+}  // namespace
+
+SceneSetup setup_scene(const Scene& scene, const std::vector<std::string>& assignments) {
+  const sym::Values values = parameter_values(scene.model, assignments);
+  const BodyContext ctx(scene.model, values);
+  const Eval ev{ctx};
+  SceneSetup s;
+  s.id = scene.model.id;
+  s.title = scene.model.title;
+  s.description = scene.model.statement;
+  s.has_mass = ctx.body.has_mass;
+  const MassProperties& mp = ctx.body.numeric;
+  s.mass_kg = mp.mass_kg;
+  if ((scene.gravity || scene.free_flight) && !s.has_mass) {
+    throw InputError(std::string("effects.") + (scene.gravity ? "gravity" : "free_flight") +
+                     ": needs the body's mass and centre of mass; give masses or shapes, not a "
+                     "tensor");
+  }
+  Mat3 I_turn = mp.I_O;
+  s.turning_point = "origin O";
+  if (scene.gravity) {
+    s.turning_point_B = ev.vec(scene.gravity->pivot, "effects.gravity.pivot");
+    s.turning_point = "pivot";
+    I_turn = shift_from_cm(shift_to_cm(mp.I_O, mp.mass_kg, -mp.r_cm_m), mp.mass_kg,
+                           s.turning_point_B - mp.r_cm_m);
+  } else if (s.has_mass) {
+    s.turning_point_B = mp.r_cm_m;
+    s.turning_point = "centre of mass";
+    I_turn = shift_to_cm(mp.I_O, mp.mass_kg, -mp.r_cm_m);
+  }
+  const PrincipalAxes pa = principal_axes(I_turn);
+  s.moments = pa.moments;
+  s.axes_B = pa.axes;
+  s.symmetric = pa.degeneracy == Degeneracy::pair12 || pa.degeneracy == Degeneracy::pair23 ||
+                pa.degeneracy == Degeneracy::all;
+  RigidBodyModel& m = s.model;
+  m.I_P = pa.moments;
+  if (scene.gravity) {
+    m.gravity = true;
+    m.mass_kg = mp.mass_kg;
+    m.d_P_m = pa.axes.transpose() * (mp.r_cm_m - s.turning_point_B);
+    m.g_S = Vec3(0, 0, -ev.positive(scene.gravity->g, "effects.gravity.g"));
+    s.effects.push_back(fmt::format("gravity, g = {:.6g} m/s^2, about a fixed pivot",
+                                    -m.g_S.z()));
+  }
+  if (scene.torque) {
+    m.torque = true;
+    m.torque_in_space = scene.torque->frame == Frame::space;
+    const Vec3 tau = ev.vec(scene.torque->value, "effects.torque.value");
+    m.torque_Nm = m.torque_in_space ? tau : Vec3(pa.axes.transpose() * tau);
+    s.effects.push_back(fmt::format("constant torque ({:.6g}, {:.6g}, {:.6g}) N m, {} frame",
+                                    tau.x(), tau.y(), tau.z(),
+                                    m.torque_in_space ? "space" : "body"));
+  }
+  if (scene.free_flight) {
+    s.free_flight = true;
+    s.g_S = Vec3(0, 0, -ev.positive(scene.free_flight->g, "effects.free_flight.g"));
+    s.x0_S = ev.vec(scene.free_flight->position, "effects.free_flight.position");
+    s.v0_S = ev.vec(scene.free_flight->velocity, "effects.free_flight.velocity");
+    s.effects.push_back(fmt::format(
+        "free flight, g = {:.6g} m/s^2 (no torque about the centre of mass)", -s.g_S.z()));
+  }
+  if (s.effects.empty()) s.effects.push_back("torque-free");
+  m.validate();
+
+  s.q0_BtoS = initial_orientation(scene, ev);
+  const Quat q_PtoB(pa.axes);
+  s.q0_PtoS = (s.q0_BtoS * q_PtoB).normalized();
+  Vec3 w_B = ev.vec(scene.omega, "initial.omega");
+  if (scene.omega_frame == Frame::space) w_B = s.q0_BtoS.conjugate() * w_B;
+  s.m0_P = pa.moments.cwiseProduct(pa.axes.transpose() * w_B);
+  if (!(s.m0_P.norm() > 0.0) && !m.gravity && !m.torque) {
+    throw InputError("initial.omega: the body does not turn and nothing acts on it; give a "
+                     "non-zero angular velocity");
+  }
+  s.t_end = ev.positive(scene.t_end, "run.t_end");
+  s.samples = scene.samples;
+  s.tolerance = scene.tolerance;
+  if (scene.step) s.step = ev.positive(*scene.step, "run.step");
+  s.method = scene.method;
+  s.outputs = scene.outputs;
+  for (const auto& o : s.outputs) {
+    if (o == "com_position" && !s.has_mass) {
+      throw InputError("run.outputs: com_position needs the body's mass; give masses or shapes");
+    }
+  }
+  return s;
+}
+
+}  // namespace wobble

@@ -1,0 +1,48 @@
+#pragma once
+/// @file
+/// A scene with its parameter values applied: everything in numbers, ready to simulate.
+///
+/// Frames (see problem/scene.hpp): B the frame the body is written in, P the principal frame
+/// at the turning point (columns of axes_B are P's axes in B, moments ascending), S space.
+/// The turning point is the pivot under gravity, otherwise the centre of mass (or the origin O
+/// for a tensor given directly, which carries no mass).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/rigid_body.hpp"
+#include "problem/scene.hpp"
+
+namespace wobble {
+
+struct SceneSetup {
+  std::string id, title, description;
+  bool has_mass = false;
+  double mass_kg = 0.0;
+  Vec3 turning_point_B = Vec3::Zero();  ///< m, from O
+  std::string turning_point;            ///< "centre of mass", "pivot" or "origin O"
+  Vec3 moments = Vec3::Ones();          ///< principal moments about the turning point, ascending
+  Mat3 axes_B = Mat3::Identity();       ///< principal axes (columns) in B
+  bool symmetric = false;               ///< two moments equal (core/principal_axes.hpp)
+  RigidBodyModel model;                 ///< in P
+  Vec3 m0_P = Vec3::Zero();             ///< initial angular momentum, P, kg m^2/s
+  Quat q0_PtoS = Quat::Identity();
+  Quat q0_BtoS = Quat::Identity();
+  bool free_flight = false;
+  Vec3 g_S = Vec3::Zero(), x0_S = Vec3::Zero(), v0_S = Vec3::Zero();  ///< free flight
+  double t_end = 10.0;
+  int samples = 101;
+  double tolerance = 1e-10;
+  std::optional<double> step;
+  std::string method = "auto";
+  std::vector<std::string> outputs;
+  std::vector<std::string> effects;  ///< in words, for the header ("torque-free" if none)
+};
+
+/// Evaluates the scene at its defaults with `assignments` ("NAME=VALUE") applied.
+/// @throws InputError naming the field and value: a bad expression or value, a non-unit
+///   quaternion, a matrix that is not a rotation, gravity or free flight without a mass, a
+///   t_end or step that is not > 0, or an impossible inertia tensor.
+SceneSetup setup_scene(const Scene& scene, const std::vector<std::string>& assignments);
+
+}  // namespace wobble

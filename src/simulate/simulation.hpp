@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// Running a scene: the sampled outputs, the errors of the conserved quantities, and the cost.
+///
+/// Samples are at t_k = k t_end / (samples - 1). Columns are "t" (s) then, per output, its
+/// components: vectors as NAME_x/_y/_z (body-frame vectors along the body axes B of the file),
+/// Euler angles as NAME_phi/_theta/_psi, scalars as NAME, invariant errors as err_QUANTITY.
+/// Conserved quantities checked (largest deviation from t = 0 over the samples):
+/// - torque-free (also in free flight): kinetic energy, |L|, L in space (largest component);
+/// - gravity about a pivot: total energy, p_phi = L_z in space, and p_psi = L along the symmetry
+///   axis when the body is symmetric about the axis through pivot and centre of mass;
+/// - a constant torque in space (no gravity): L_space - (L_space(0) + tau t).
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "simulate/method.hpp"
+
+namespace wobble {
+
+struct InvariantError {
+  std::string name, unit;
+  double max_abs = 0.0;  ///< largest |value(t) - value(0)| over the samples
+  double scale = 1.0;    ///< the size it is relative to (its value at 0, or the problem's scale)
+  double relative() const { return max_abs / scale; }
+};
+
+struct SimulationResult {
+  MethodChoice choice;
+  std::vector<std::string> notes;  ///< facts of the motion (kind, period) for the header
+  std::vector<std::string> columns, units;
+  std::vector<std::vector<double>> rows;
+  std::vector<InvariantError> invariants;
+  std::string cost_label;  ///< "right-hand-side evaluations", "sub-flows" or "evaluations"
+  std::int64_t cost = 0;
+  std::int64_t steps = 0, rejected = 0;
+  double run_time_s = 0.0;
+};
+
+/// Propagated state at one time: body momentum (P) and attitude P -> S.
+struct SimState {
+  Vec3 m_P;
+  Quat q_PtoS;
+};
+
+/// `progress` (if set) is called with the fraction done, at most ~100 times.
+/// @throws std::runtime_error if an adaptive integrator's step underflows.
+SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
+                          const std::function<void(double)>& progress = {});
+
+/// The state at each of `times` (ascending, from 0) by the given method, without outputs;
+/// used by simulate and by `solve --cross-check`. Adds the cost to `result`.
+std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
+                                const std::vector<double>& times, SimulationResult& result,
+                                const std::function<void(double)>& progress = {});
+
+}  // namespace wobble
