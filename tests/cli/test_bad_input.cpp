@@ -78,6 +78,31 @@ std::string top_with(const std::string& from, const std::string& to) {
   return s.replace(p, from.size(), to);
 }
 
+// A minimal valid scene: a box spun about y; each bad scene changes one thing.
+const std::string kScene = R"TOML(id = "s"
+title = "t"
+
+[body]
+shapes = [ { shape = "box", mass = 1, sizes = [3, 2, 1] } ]
+
+[initial]
+omega = [0.1, 2, 0.1]
+
+[run]
+t_end = 1
+samples = 3
+outputs = ["omega_body"]
+)TOML";
+
+std::string scene_with(const std::string& from, const std::string& to) {
+  std::string s = kScene;
+  const auto p = s.find(from);
+  if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "'");
+  return s.replace(p, from.size(), to);
+}
+
+std::string existing_file() { return write_file("bad/existing.csv", "keep me\n").string(); }
+
 struct Row {
   std::string what;
   std::vector<std::string> args;
@@ -127,7 +152,7 @@ std::vector<Row> catalog() {
       {"unknown command",
        {"frobnicate"},
        2,
-       {"unknown command 'frobnicate'", "commands: list, solve, keys"}},
+       {"unknown command 'frobnicate'", "commands: list, solve, simulate, keys"}},
       {"keys without an action", {"keys"}, 2, {"--check", "--update", "required"}},
       {"keys with both actions", {"keys", "--check", "--update"}, 2, {"excludes"}},
       {"malformed TOML",
@@ -216,6 +241,79 @@ std::vector<Row> catalog() {
        {"body.masses[0].mass", "nested deeper than 100 levels"}},
       {"expression too long", {"solve", "taylor-10-35", "--set", "m=" + std::string(12000, '1')}, 2,
        {"--set m", "12000 characters long", "limit is 10000"}},
+      {"unknown scene", {"simulate", "no-such"}, 2, {"unknown scene 'no-such'", "tennis-racket"}},
+      {"unknown effect",
+       {"simulate", file("s_effect", kScene + "[effects]\nmagnetism = { B = 1 }\n")},
+       2,
+       {"effects.magnetism", "unknown effect", "gravity, free_flight or torque"}},
+      {"scene missing omega",
+       {"simulate", file("s_omega", scene_with("omega = [0.1, 2, 0.1]", ""))},
+       2,
+       {"initial.omega", "missing"}},
+      {"non-unit quaternion",
+       {"simulate", file("s_quat", scene_with("omega = [0.1, 2, 0.1]",
+                                              "omega = [0.1, 2, 0.1]\nquaternion = [1, 0.1, 0, 0]"))},
+       2,
+       {"initial.quaternion", "(1, 0.1, 0, 0)", "unit quaternion"}},
+      {"matrix not a rotation",
+       {"simulate", file("s_matrix", scene_with("omega = [0.1, 2, 0.1]",
+                                                "omega = [0.1, 2, 0.1]\nmatrix = [[1, 0, 0], [0, 1, 0], [0, 0, -1]]"))},
+       2,
+       {"initial.matrix", "not a rotation", "det = -1"}},
+      {"two orientations",
+       {"simulate", file("s_two", scene_with("omega = [0.1, 2, 0.1]",
+                                             "omega = [0.1, 2, 0.1]\neuler = [0, 0, 0]\nquaternion = [1, 0, 0, 0]"))},
+       2,
+       {"initial", "give the orientation once"}},
+      {"negative time span",
+       {"simulate", file("s_tend", scene_with("t_end = 1", "t_end = -1"))},
+       2,
+       {"run.t_end", "\"-1\" is -1", "must be finite and > 0"}},
+      {"one sample",
+       {"simulate", file("s_samples", scene_with("samples = 3", "samples = 1"))},
+       2,
+       {"run.samples", "from 2 to 1000000"}},
+      {"scene tolerance out of range",
+       {"simulate", file("s_tol", scene_with("samples = 3", "samples = 3\ntolerance = 1e-20"))},
+       2,
+       {"run.tolerance", "from 1e-14 to 1e-2"}},
+      {"--tolerance out of range",
+       {"simulate", "tennis-racket", "--tolerance", "0.5"},
+       2,
+       {"--tolerance", "0.5", "1e-14 to 1e-2"}},
+      {"unknown output",
+       {"simulate", file("s_output", scene_with("outputs = [\"omega_body\"]", "outputs = [\"spin\"]"))},
+       2,
+       {"run.outputs[0]", "unknown output 'spin'", "omega_body"}},
+      {"unknown frame",
+       {"simulate", file("s_frame", scene_with("omega = [0.1, 2, 0.1]",
+                                               "omega = [0.1, 2, 0.1]\nomega_frame = \"lab\""))},
+       2,
+       {"initial.omega_frame", "'lab' is not a frame"}},
+      {"gravity and free flight together",
+       {"simulate", file("s_both", kScene + "[effects]\ngravity = { pivot = [0, 0, 0] }\nfree_flight = {}\n")},
+       2,
+       {"effects", "exclude each other"}},
+      {"gravity without a mass",
+       {"simulate", file("s_tensor", scene_with("shapes = [ { shape = \"box\", mass = 1, sizes = [3, 2, 1] } ]",
+                                                "tensor = [[1, 0, 0], [0, 2, 0], [0, 0, 2.5]]") +
+                                         "[effects]\ngravity = { pivot = [0, 0, 0] }\n")},
+       2,
+       {"effects.gravity", "needs the body's mass"}},
+      {"unknown method", {"simulate", "tennis-racket", "--method", "euler"}, 2,
+       {"--method", "unknown method 'euler'", "rkf78"}},
+      {"exact solver with gravity", {"simulate", "heavy-top", "--method", "exact"}, 2,
+       {"--method exact", "torque-free motion only", "gravity"}},
+      {"splitting with a torque", {"simulate", "spin-up", "--method", "split2"}, 2,
+       {"--method split2", "torque-free motion only", "a torque"}},
+      {"closed form for an asymmetric body", {"simulate", "tennis-racket", "--method", "closed_form"}, 2,
+       {"--method closed_form", "not axially symmetric", "0.0005725"}},
+      {"--out with an unknown extension", {"simulate", "tennis-racket", "--out", "x.txt"}, 2,
+       {"--out", "x.txt", ".csv or .json"}},
+      {"--out over an existing file", {"simulate", "tennis-racket", "--out", existing_file()}, 2,
+       {"--out", "existing.csv exists", "--force"}},
+      {"scene parameter out of range", {"simulate", "heavy-top", "--set", "l=-1"}, 2,
+       {"--set l", "outside its range"}},
       {"problem file too large", {"solve", file("huge", kBase + "# " + std::string(2 << 20, 'x') + "\n")}, 2,
        {"huge.toml", "at most 1 MiB"}},
   };
