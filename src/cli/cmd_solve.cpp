@@ -1,12 +1,16 @@
 #include <fmt/format.h>
 
+#include <chrono>
 #include <filesystem>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "problem/load.hpp"
 #include "problem/values.hpp"
 #include "render/figure.hpp"
 #include "render/render.hpp"
+#include "render/simulation_output.hpp"
+#include "simulate/cross_check.hpp"
 #include "solvers/solve.hpp"
 #include "solvers/torque_free_solver.hpp"
 
@@ -25,12 +29,19 @@ void setup_solve(CLI::App& app, SolveOptions& opt) {
   app.add_option("--figure", opt.figure,
                  "Write the sketch of e3, w, L and the cones as SVG (torque-free symmetric tops)");
   app.add_flag("--force", opt.force, "Overwrite an existing --figure file");
+  app.add_flag("--cross-check", opt.cross_check,
+               "Recompute the dynamic answers by simulation and compare (torque-free tops)");
 }
 
 int run_solve(const SolveOptions& opt) {
   const Problem problem = find_problem(opt.problem);
   const sym::Values values = parameter_values(problem, opt.sets);
+  const auto start = std::chrono::steady_clock::now();
   Key key = solve(problem, values);
+  const double key_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::optional<CrossCheck> check;
+  if (opt.cross_check) check = cross_check_torque_free(problem, values, key);
   if (!opt.part.empty()) {
     std::string known;
     for (const auto& p : key.parts) {
@@ -56,6 +67,14 @@ int run_solve(const SolveOptions& opt) {
       throw InputError("--figure: " + opt.figure + " exists; use --force to overwrite it");
     }
     write_top_sketch(top_sketch(problem, values), opt.figure);
+  }
+  if (check) {
+    if (opt.format != "text") {
+      throw InputError("--cross-check: prints text only; drop --format " + opt.format);
+    }
+    fmt::print("{}: the dynamic answers, closed form against simulation\n{}", problem.id,
+               cross_check_text(*check, key_time));
+    return kExitOk;
   }
   fmt::print("{}", render(key, format_from_name(opt.format)));
   return kExitOk;

@@ -22,6 +22,7 @@ struct SolveOptions {
   std::string part;
   std::string figure;  ///< SVG sketch to write (torque-free symmetric problems)
   bool force = false;  ///< overwrite an existing figure file
+  bool cross_check = false;  ///< recompute the dynamic answers by simulation
 };
 void setup_solve(CLI::App& app, SolveOptions& opt);
 int run_solve(const SolveOptions& opt);

@@ -144,6 +144,20 @@ std::string simulation_json(const SceneSetup& s, const SimulationResult& r) {
   return j.dump(1) + "\n";
 }
 
+std::string cross_check_text(const CrossCheck& c, double key_time_s) {
+  std::string out = fmt::format("{:<18} {:>20} {:>20} {:>11} {:>11}\n", "answer", "key (closed form)",
+                                "simulation", "difference", "relative");
+  for (const auto& r : c.rows) {
+    const double d = r.simulated - r.key;
+    out += fmt::format("{:<18} {:>20.12g} {:>20.12g} {:>11.2e} {:>11.2e}  {}\n", r.name, r.key,
+                       r.simulated, d, std::abs(d) / std::max(std::abs(r.key), 1e-300), r.unit);
+  }
+  out += fmt::format("cost of the key: {} (the whole key, exact and numeric)\n", seconds(key_time_s));
+  out += fmt::format("cost of the simulation: {} right-hand-side evaluations, {} ({})\n",
+                     c.rhs_evals, seconds(c.simulation_time_s), c.method);
+  return out;
+}
+
 void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
                            const std::filesystem::path& out) {
   // Group columns by output (the part of the name before the last _x/_y/_z/_phi...).

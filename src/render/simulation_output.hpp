@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "simulate/cross_check.hpp"
 #include "simulate/simulation.hpp"
 
 namespace wobble {
@@ -26,5 +27,9 @@ int printed_digits(const SceneSetup& s, const SimulationResult& r);
 /// @throws std::runtime_error naming the file if gnuplot fails.
 void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
                            const std::filesystem::path& out);
+
+/// The cross-check table: each answer from the key and from simulation, their difference, and
+/// what each cost (`key_time_s`: computing the whole key).
+std::string cross_check_text(const CrossCheck& c, double key_time_s);
 
 }  // namespace wobble

@@ -87,7 +87,10 @@ Quat initial_orientation(const Scene& scene, const Eval& ev) {
 }  // namespace
 
 SceneSetup setup_scene(const Scene& scene, const std::vector<std::string>& assignments) {
-  const sym::Values values = parameter_values(scene.model, assignments);
+  return setup_scene_at(scene, parameter_values(scene.model, assignments));
+}
+
+SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
   const BodyContext ctx(scene.model, values);
   const Eval ev{ctx};
   SceneSetup s;

@@ -45,4 +45,7 @@ struct SceneSetup {
 ///   t_end or step that is not > 0, or an impossible inertia tensor.
 SceneSetup setup_scene(const Scene& scene, const std::vector<std::string>& assignments);
 
+/// The same at parameter values already read (`values` holds every parameter).
+SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values);
+
 }  // namespace wobble

@@ -1,0 +1,37 @@
+#pragma once
+/// @file
+/// `solve --cross-check`: the dynamic answers of a torque-free symmetric top (largest angle of
+/// e3 from z, its first time, the two precession rates) recomputed by simulation, for
+/// comparison with the key's closed forms.
+///
+/// The simulation is Fehlberg 7(8) at tolerance 1e-12 over 1.5 t_max (a general integrator,
+/// not the closed form, so the comparison is independent), sampled 4001 times:
+/// - max_angle, t_max: the largest sampled angle(z, e3), refined by the parabola through it
+///   and its neighbours (error O(dt^3));
+/// - Omega_body_rate: the turn of w about e3 in the body over the run, divided by the time;
+/// - Omega_space_rate: the turn of e3 about L in space over the run, divided by the time.
+#include <string>
+#include <vector>
+
+#include "problem/problem.hpp"
+#include "solvers/key.hpp"
+
+namespace wobble {
+
+struct CrossCheckRow {
+  std::string name, unit;
+  double key = 0.0, simulated = 0.0;
+};
+
+struct CrossCheck {
+  std::vector<CrossCheckRow> rows;
+  std::string method;  ///< what the simulation used
+  std::int64_t rhs_evals = 0;
+  double simulation_time_s = 0.0;
+};
+
+/// @throws InputError if the problem is not a torque-free symmetric top with a [motion] table.
+CrossCheck cross_check_torque_free(const Problem& problem, const sym::Values& values,
+                                   const Key& key);
+
+}  // namespace wobble

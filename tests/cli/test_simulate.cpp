@@ -1,0 +1,104 @@
+// `wobble simulate` and `solve --cross-check` as a user runs them.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli/run.hpp"
+#include "temp_files.hpp"
+
+using namespace wobble::test;
+namespace fs = std::filesystem;
+
+namespace {
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+}  // namespace
+
+TEST_CASE("simulate prints header, samples and footer for every example scene") {
+  for (const std::string id :
+       {"tennis-racket", "flying-plate", "thrown-plate", "heavy-top", "spin-up", "wheel-brake"}) {
+    const RunResult r = run_wobble({"simulate", id});
+    INFO(id << "\n" << r.err);
+    REQUIRE(r.exit_code == 0);
+    // Piped (not a terminal): no progress on stderr.
+    REQUIRE(r.err.empty());
+    for (const std::string& w : {"scene " + id, std::string("principal moments"), std::string("effects: "), std::string("method: "),
+                                std::string("time: 0 to"), std::string("cost: ")}) {
+      CHECK_THAT(r.out, Catch::Contains(w));
+    }
+  }
+  const RunResult racket = run_wobble({"simulate", "tennis-racket"});
+  CHECK_THAT(racket.out, Catch::Contains("method: exact (torque-free") &&
+                             Catch::Contains("changes sign every") &&
+                             Catch::Contains("rotational_energy"));
+  const RunResult top = run_wobble({"simulate", "heavy-top", "--method", "dopri5"});
+  CHECK_THAT(top.out, Catch::Contains("method: dopri5 (requested)") &&
+                          Catch::Contains("p_phi") && Catch::Contains("p_psi") &&
+                          Catch::Contains("right-hand-side evaluations"));
+}
+
+TEST_CASE("simulate --out writes CSV or JSON atomically and never overwrites without --force") {
+  const fs::path dir = scratch_dir() / "simulate";
+  fs::create_directories(dir);
+  const fs::path csv = dir / "racket.csv", json = dir / "racket.json";
+  fs::remove(csv);
+  fs::remove(json);
+  const RunResult r = run_wobble({"simulate", "tennis-racket", "--out", csv.string(), "--set",
+                                  "w=10"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE_THAT(r.out, Catch::Contains("wrote 41 samples to"));
+  std::istringstream lines(slurp(csv));
+  std::string header, line;
+  std::getline(lines, header);
+  REQUIRE_THAT(header, Catch::StartsWith("t [s],omega_body_x [rad/s]"));
+  int rows = 0;
+  while (std::getline(lines, line)) ++rows;
+  REQUIRE(rows == 41);
+
+  REQUIRE(run_wobble({"simulate", "tennis-racket", "--out", json.string()}).exit_code == 0);
+  const auto j = nlohmann::json::parse(slurp(json));
+  REQUIRE(j["method"] == "exact");
+  REQUIRE(j["rows"].size() == 41);
+  REQUIRE(j["columns"][1] == "omega_body_x");
+  REQUIRE(j["invariants"].size() == 3);
+
+  std::ofstream(csv) << "mine\n";
+  const RunResult again = run_wobble({"simulate", "tennis-racket", "--out", csv.string()});
+  REQUIRE(again.exit_code == 2);
+  REQUIRE(slurp(csv) == "mine\n");
+  REQUIRE(run_wobble({"simulate", "tennis-racket", "--out", csv.string(), "--force"}).exit_code == 0);
+  REQUIRE(slurp(csv) != "mine\n");
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    CHECK(entry.path().filename().string()[0] != '.');  // no temporaries left
+  }
+}
+
+TEST_CASE("simulate --plot draws the outputs with gnuplot") {
+  const fs::path svg = scratch_dir() / "simulate" / "top.svg";
+  fs::create_directories(svg.parent_path());
+  fs::remove(svg);
+  const RunResult r = run_wobble({"simulate", "heavy-top", "--plot", svg.string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::string content = slurp(svg);
+  REQUIRE_THAT(content, Catch::Contains("<svg") && Catch::Contains("euler_zyz_theta") &&
+                            Catch::Contains("invariant errors"));
+}
+
+TEST_CASE("solve --cross-check compares the closed forms with a simulation") {
+  for (const std::string id : {"rect-solid", "flying-plate", "flying-square-plate"}) {
+    const RunResult r = run_wobble({"solve", id, "--cross-check", "--set", "alpha=40deg"});
+    INFO(r.out << r.err);
+    REQUIRE(r.exit_code == 0);
+    for (const std::string w : {"max_angle", "t_max", "Omega_body_rate", "Omega_space_rate",
+                                "cost of the key", "right-hand-side evaluations"}) {
+      CHECK_THAT(r.out, Catch::Contains(w));
+    }
+  }
+  REQUIRE(run_wobble({"solve", "taylor-10-35", "--cross-check"}).exit_code == 2);
+}
