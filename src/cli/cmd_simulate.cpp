@@ -23,6 +23,8 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
                  "scene's, usually auto)");
   app.add_option("--tolerance", opt.tolerance,
                  "Relative tolerance for the adaptive methods, 1e-14 to 1e-2");
+  app.add_option("--samples", opt.samples,
+                 "Number of output times, 2 to 1000000 (default: the scene's)");
   app.add_option("--out", opt.out, "Write the samples to FILE.csv or FILE.json instead");
   app.add_option("--plot", opt.plot, "Draw the outputs against time as SVG (gnuplot)");
   app.add_flag("--force", opt.force, "Overwrite existing --out and --plot files");
@@ -49,10 +51,15 @@ int run_simulate(const SimulateOptions& opt) {
   refuse_overwrite("--out", opt.out, opt.force);
   refuse_overwrite("--plot", opt.plot, opt.force);
   if (opt.tolerance && !(*opt.tolerance >= 1e-14 && *opt.tolerance <= 1e-2)) {
-    throw InputError(fmt::format("--tolerance: {} is out of range (expected 1e-14 to 1e-2)",
-                                 *opt.tolerance));
+    throw InputError(
+        fmt::format("--tolerance: {} is out of range (expected 1e-14 to 1e-2)", *opt.tolerance));
   }
-  const Scene scene = find_scene(opt.scene);
+  if (opt.samples && (*opt.samples < 2 || *opt.samples > 1000000)) {
+    throw InputError(
+        fmt::format("--samples: {} is out of range (expected 2 to 1000000)", *opt.samples));
+  }
+  Scene scene = find_scene(opt.scene);
+  if (opt.samples) scene.samples = static_cast<int>(*opt.samples);
   SceneSetup setup = setup_scene(scene, opt.sets);
   if (opt.tolerance) setup.tolerance = *opt.tolerance;
   const MethodChoice choice = choose_method(setup, opt.method.empty() ? setup.method : opt.method);

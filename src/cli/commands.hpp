@@ -20,8 +20,8 @@ struct SolveOptions {
   std::vector<std::string> sets;
   std::string format = "text";
   std::string part;
-  std::string figure;  ///< SVG sketch to write (torque-free symmetric problems)
-  bool force = false;  ///< overwrite an existing figure file
+  std::string figure;        ///< SVG sketch to write (torque-free symmetric problems)
+  bool force = false;        ///< overwrite an existing figure file
   bool cross_check = false;  ///< recompute the dynamic answers by simulation
 };
 void setup_solve(CLI::App& app, SolveOptions& opt);
@@ -32,6 +32,7 @@ struct SimulateOptions {
   std::vector<std::string> sets;
   std::string method;                ///< empty: the scene's own (auto by default)
   std::optional<double> tolerance;   ///< overrides the scene's
+  std::optional<long long> samples;  ///< overrides the scene's
   std::string out, plot;
   bool force = false;
 };

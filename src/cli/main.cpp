@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
   const auto known =
       app.get_subcommands([&](CLI::App* sub) { return argc > 1 && sub->get_name() == argv[1]; });
   if (argc > 1 && argv[1][0] != '-' && known.empty()) {
-    fmt::print(stderr, "wobble: unknown command '{}' (commands: list, solve, simulate, keys; see --help)\n",
+    fmt::print(stderr,
+               "wobble: unknown command '{}' (commands: list, solve, simulate, keys; see --help)\n",
                argv[1]);
     return kExitBadInput;
   }

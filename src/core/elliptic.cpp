@@ -1,8 +1,8 @@
 #include "core/elliptic.hpp"
 
+#include <boost/math/policies/policy.hpp>
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
-#include <boost/math/policies/policy.hpp>
 #include <cmath>
 
 namespace wobble {
@@ -52,7 +52,9 @@ SnCnDn jacobi_sncndn(double u, double kc2) {
   return {sn, cn, dn};
 }
 
-double complete_K(double kc2) { return boost::math::ellint_rf(0.0, kc2, 1.0, Fast()); }
+double complete_K(double kc2) {
+  return boost::math::ellint_rf(0.0, kc2, 1.0, Fast());
+}
 
 double incomplete_F(double s, double c, double kc2) {
   const double c2 = c * c;

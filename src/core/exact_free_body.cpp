@@ -28,7 +28,9 @@ Mat3 rot_z(double phi) {
   return R;
 }
 
-double sgn(double x) { return x < 0.0 ? -1.0 : 1.0; }
+double sgn(double x) {
+  return x < 0.0 ? -1.0 : 1.0;
+}
 }  // namespace
 
 ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& q0_PtoS)
@@ -145,7 +147,8 @@ FreeBodyState ExactFreeMotion::at(double t) const {
       s.m_B = body.inverse() * m0_;
       return s;
     }
-    case Kind::elliptic: break;
+    case Kind::elliptic:
+      break;
   }
   return at_elliptic(t);
 }

@@ -10,8 +10,8 @@ void RigidBodyModel::validate() const {
     if (!std::isfinite(I_P[i]) || !(I_P[i] > 0.0))
       throw std::invalid_argument("rigid body: principal moments must be finite and > 0");
   }
-  if (gravity && (!std::isfinite(mass_kg) || !(mass_kg > 0.0) || !d_P_m.allFinite() ||
-                  !g_S.allFinite())) {
+  if (gravity &&
+      (!std::isfinite(mass_kg) || !(mass_kg > 0.0) || !d_P_m.allFinite() || !g_S.allFinite())) {
     throw std::invalid_argument("rigid body: gravity needs a finite mass > 0, pivot and g");
   }
   if (torque && !torque_Nm.allFinite())
@@ -57,8 +57,12 @@ State7 pack(const Vec3& m_P, const Quat& q_PtoS) {
   return y;
 }
 
-Vec3 momentum_of(const State7& y) { return y.head<3>(); }
+Vec3 momentum_of(const State7& y) {
+  return y.head<3>();
+}
 
-Quat attitude_of(const State7& y) { return Quat(y[3], y[4], y[5], y[6]).normalized(); }
+Quat attitude_of(const State7& y) {
+  return Quat(y[3], y[4], y[5], y[6]).normalized();
+}
 
 }  // namespace wobble

@@ -24,8 +24,8 @@ struct RigidBodyModel {
 
   bool gravity = false;
   double mass_kg = 0.0;
-  Vec3 d_P_m = Vec3::Zero();              ///< pivot -> centre of mass, P components, m
-  Vec3 g_S = Vec3(0.0, 0.0, -9.80665);    ///< gravitational acceleration, S components, m/s^2
+  Vec3 d_P_m = Vec3::Zero();            ///< pivot -> centre of mass, P components, m
+  Vec3 g_S = Vec3(0.0, 0.0, -9.80665);  ///< gravitational acceleration, S components, m/s^2
 
   bool torque = false;
   bool torque_in_space = false;

@@ -75,9 +75,12 @@ const Tableau& rkf78_tableau() {
 
 const Tableau& tableau(RkMethod m) {
   switch (m) {
-    case RkMethod::rk4: return rk4_tableau();
-    case RkMethod::dopri5: return dopri5_tableau();
-    case RkMethod::rkf78: break;
+    case RkMethod::rk4:
+      return rk4_tableau();
+    case RkMethod::dopri5:
+      return dopri5_tableau();
+    case RkMethod::rkf78:
+      break;
   }
   return rkf78_tableau();
 }
@@ -103,23 +106,31 @@ void rk_step(const RigidBodyModel& model, const Tableau& t, const State7& y, dou
   }
 }
 
-void renormalise(State7& y) { y.tail<4>() /= y.tail<4>().norm(); }
+void renormalise(State7& y) {
+  y.tail<4>() /= y.tail<4>().norm();
+}
 }  // namespace
 
 int order_of(RkMethod m) {
   switch (m) {
-    case RkMethod::rk4: return 4;
-    case RkMethod::dopri5: return 5;
-    case RkMethod::rkf78: break;
+    case RkMethod::rk4:
+      return 4;
+    case RkMethod::dopri5:
+      return 5;
+    case RkMethod::rkf78:
+      break;
   }
   return 8;
 }
 
 std::string name_of(RkMethod m) {
   switch (m) {
-    case RkMethod::rk4: return "rk4";
-    case RkMethod::dopri5: return "dopri5";
-    case RkMethod::rkf78: break;
+    case RkMethod::rk4:
+      return "rk4";
+    case RkMethod::dopri5:
+      return "dopri5";
+    case RkMethod::rkf78:
+      break;
   }
   return "rkf78";
 }
@@ -183,8 +194,8 @@ void RungeKutta::advance(State7& y, double t0, double t1) {
       h_ = h * factor;
     }
     if (h_ < 1e-14 * std::max(std::abs(t_now), span)) {
-      throw std::runtime_error("Runge-Kutta: step size underflow at t = " +
-                               std::to_string(t_now) + " s");
+      throw std::runtime_error("Runge-Kutta: step size underflow at t = " + std::to_string(t_now) +
+                               " s");
     }
   }
 }

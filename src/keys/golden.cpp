@@ -8,8 +8,8 @@
 #include <set>
 #include <sstream>
 
-#include "render/atomic_write.hpp"
 #include "problem/values.hpp"
+#include "render/atomic_write.hpp"
 #include "render/render.hpp"
 #include "solvers/solve.hpp"
 

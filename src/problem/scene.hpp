@@ -30,7 +30,7 @@ struct OrientationSpec {
 };
 
 struct GravitySpec {
-  std::string g = "9.80665";  ///< m/s^2, acting along -z in space
+  std::string g = "9.80665";   ///< m/s^2, acting along -z in space
   Expr3 pivot{"0", "0", "0"};  ///< the fixed point, body frame, m
 };
 

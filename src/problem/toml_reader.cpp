@@ -78,7 +78,6 @@ BodySpec read_body(const Reader& r, const toml::table& body) {
   return b;
 }
 
-
 std::vector<Parameter> read_parameters(const Reader& r, const toml::table& root) {
   const toml::array& params = r.array(root, "parameters", "parameters");
   Problem p;

@@ -1,7 +1,5 @@
 #include "render/figure.hpp"
 
-#include "render/gnuplot.hpp"
-
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -9,6 +7,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
+
+#include "render/gnuplot.hpp"
 
 namespace wobble {
 
@@ -92,8 +92,8 @@ std::string top_sketch_script(const TopSketch& s, const std::filesystem::path& s
 }
 
 void write_top_sketch(const TopSketch& sketch, const std::filesystem::path& out) {
-  draw_svg_with_gnuplot([&](const std::filesystem::path& svg) { return top_sketch_script(sketch, svg); },
-                        out);
+  draw_svg_with_gnuplot(
+      [&](const std::filesystem::path& svg) { return top_sketch_script(sketch, svg); }, out);
 }
 
 }  // namespace wobble

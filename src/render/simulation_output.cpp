@@ -29,9 +29,12 @@ std::string seconds(double t) {
 
 int printed_digits(const SceneSetup& s, const SimulationResult& r) {
   if (is_exact(r)) return 10;
-  const int from_tol = static_cast<int>(std::floor(-std::log10(s.tolerance))) - 1;
-  const bool fixed = r.choice.step_s > 0.0;  // a fixed step carries no tolerance guarantee
-  return std::clamp(fixed ? 6 : from_tol, 3, 10);
+  if (r.error_estimate >= 0.0) {
+    // Digits whose place value exceeds the estimated error of the column's largest value.
+    const double e = std::max(r.error_estimate, 1e-16);
+    return std::clamp(static_cast<int>(std::floor(-std::log10(e))), 2, 10);
+  }
+  return std::clamp(static_cast<int>(std::floor(-std::log10(s.tolerance))) - 1, 2, 10);
 }
 
 std::string simulation_header(const SceneSetup& s, const SimulationResult& r) {
@@ -72,9 +75,11 @@ std::string simulation_table(const SceneSetup& s, const SimulationResult& r) {
   }
   for (double& f : floor) f *= std::pow(10.0, -d);
   std::string out;
-  for (std::size_t j = 0; j < r.columns.size(); ++j) out += fmt::format("{:>{}}", r.columns[j], w[j]);
+  for (std::size_t j = 0; j < r.columns.size(); ++j)
+    out += fmt::format("{:>{}}", r.columns[j], w[j]);
   out += "\n";
-  for (std::size_t j = 0; j < r.units.size(); ++j) out += fmt::format("{:>{}}", "[" + r.units[j] + "]", w[j]);
+  for (std::size_t j = 0; j < r.units.size(); ++j)
+    out += fmt::format("{:>{}}", "[" + r.units[j] + "]", w[j]);
   out += "\n";
   for (const auto& row : r.rows) {
     for (std::size_t j = 0; j < row.size(); ++j) {
@@ -88,7 +93,7 @@ std::string simulation_table(const SceneSetup& s, const SimulationResult& r) {
   return out;
 }
 
-std::string simulation_footer(const SceneSetup&, const SimulationResult& r) {
+std::string simulation_footer(const SceneSetup& s, const SimulationResult& r) {
   std::string f;
   if (r.invariants.empty()) {
     f += "conserved quantities: none with these effects (a constant body-frame torque, or a "
@@ -96,8 +101,18 @@ std::string simulation_footer(const SceneSetup&, const SimulationResult& r) {
   } else {
     f += "conserved quantities, largest deviation from t = 0 over the samples:\n";
     for (const auto& inv : r.invariants) {
-      f += fmt::format("  {:<20} {:.2e} {:<9} (relative {:.2e})\n", inv.name, inv.max_abs,
-                       inv.unit, inv.relative());
+      f += fmt::format("  {:<20} {:.2e} {:<9} (relative {:.2e})\n", inv.name, inv.max_abs, inv.unit,
+                       inv.relative());
+    }
+  }
+  if (!is_exact(r)) {
+    if (r.error_estimate >= 0.0) {
+      f += fmt::format(
+          "estimated error of the samples: {:.1e} of each column's largest value "
+          "(against {}, {} more evaluations); the table prints {} digits\n",
+          r.error_estimate, r.error_reference, r.estimate_cost, printed_digits(s, r));
+    } else {
+      f += "estimated error of the samples: not available (no tighter run than rkf78 at 1e-14)\n";
     }
   }
   f += fmt::format("cost: {} {}", r.cost, r.cost_label);
@@ -114,7 +129,8 @@ std::string simulation_csv(const SimulationResult& r) {
   }
   out += "\n";
   for (const auto& row : r.rows) {
-    for (std::size_t j = 0; j < row.size(); ++j) out += fmt::format("{}{:.17g}", j ? "," : "", row[j]);
+    for (std::size_t j = 0; j < row.size(); ++j)
+      out += fmt::format("{}{:.17g}", j ? "," : "", row[j]);
     out += "\n";
   }
   return out;
@@ -135,24 +151,30 @@ std::string simulation_json(const SceneSetup& s, const SimulationResult& r) {
   j["rows"] = r.rows;
   nlohmann::ordered_json inv = nlohmann::ordered_json::array();
   for (const auto& i : r.invariants) {
-    inv.push_back({{"name", i.name}, {"unit", i.unit}, {"max_abs_error", i.max_abs},
+    inv.push_back({{"name", i.name},
+                   {"unit", i.unit},
+                   {"max_abs_error", i.max_abs},
                    {"relative_error", i.relative()}});
   }
   j["invariants"] = inv;
-  j["cost"] = {{"count", r.cost}, {"of", r.cost_label}, {"steps", r.steps},
-               {"rejected", r.rejected}, {"run_time_s", r.run_time_s}};
+  j["cost"] = {{"count", r.cost},
+               {"of", r.cost_label},
+               {"steps", r.steps},
+               {"rejected", r.rejected},
+               {"run_time_s", r.run_time_s}};
   return j.dump(1) + "\n";
 }
 
 std::string cross_check_text(const CrossCheck& c, double key_time_s) {
-  std::string out = fmt::format("{:<18} {:>20} {:>20} {:>11} {:>11}\n", "answer", "key (closed form)",
-                                "simulation", "difference", "relative");
+  std::string out = fmt::format("{:<18} {:>20} {:>20} {:>11} {:>11}\n", "answer",
+                                "key (closed form)", "simulation", "difference", "relative");
   for (const auto& r : c.rows) {
     const double d = r.simulated - r.key;
     out += fmt::format("{:<18} {:>20.12g} {:>20.12g} {:>11.2e} {:>11.2e}  {}\n", r.name, r.key,
                        r.simulated, d, std::abs(d) / std::max(std::abs(r.key), 1e-300), r.unit);
   }
-  out += fmt::format("cost of the key: {} (the whole key, exact and numeric)\n", seconds(key_time_s));
+  out +=
+      fmt::format("cost of the key: {} (the whole key, exact and numeric)\n", seconds(key_time_s));
   out += fmt::format("cost of the simulation: {} right-hand-side evaluations, {} ({})\n",
                      c.rhs_evals, seconds(c.simulation_time_s), c.method);
   return out;
@@ -170,7 +192,8 @@ void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
     std::string base = r.columns[j];
     for (const char* suffix : {"_x", "_y", "_z", "_phi", "_theta", "_psi"}) {
       const std::string sfx(suffix);
-      if (base.size() > sfx.size() && base.compare(base.size() - sfx.size(), sfx.size(), sfx) == 0) {
+      if (base.size() > sfx.size() &&
+          base.compare(base.size() - sfx.size(), sfx.size(), sfx) == 0) {
         base.resize(base.size() - sfx.size());
         break;
       }
@@ -182,16 +205,18 @@ void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
   draw_svg_with_gnuplot(
       [&](const std::filesystem::path& svg) {
         std::string g = "set encoding utf8\n";
-        g += fmt::format("set terminal svg size 900,{} dynamic font \"Helvetica,13\" background "
-                         "rgb \"white\"\n",
-                         std::max<std::size_t>(1, panels.size()) * 260);
+        g += fmt::format(
+            "set terminal svg size 900,{} dynamic font \"Helvetica,13\" background "
+            "rgb \"white\"\n",
+            std::max<std::size_t>(1, panels.size()) * 260);
         g += fmt::format("set output \"{}\"\n", gnuplot_quote(svg.string()));
         g += fmt::format("set multiplot layout {},1 title \"{}\" noenhanced\n", panels.size(),
                          gnuplot_quote(s.id + ": " + s.title));
         g += "set grid\nset key outside right\nset xlabel \"t [s]\"\n";
         g += "$data << EOD\n";
         for (const auto& row : r.rows) {
-          for (std::size_t j = 0; j < row.size(); ++j) g += fmt::format("{}{:.17g}", j ? " " : "", row[j]);
+          for (std::size_t j = 0; j < row.size(); ++j)
+            g += fmt::format("{}{:.17g}", j ? " " : "", row[j]);
           g += "\n";
         }
         g += "EOD\n";

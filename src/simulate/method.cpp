@@ -28,10 +28,14 @@ std::string name_of(SimMethod m) {
 namespace {
 int order(SimMethod m) {
   switch (m) {
-    case SimMethod::rk4: return 4;
-    case SimMethod::split2: return 2;
-    case SimMethod::split4: return 4;
-    default: return 0;
+    case SimMethod::rk4:
+      return 4;
+    case SimMethod::split2:
+      return 2;
+    case SimMethod::split4:
+      return 4;
+    default:
+      return 0;
   }
 }
 
@@ -57,7 +61,8 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested) {
   MethodChoice c;
   if (requested == "auto") {
     if (free && s.symmetric) {
-      c = {SimMethod::closed_form, "torque-free and axially symmetric: closed form, no integration"};
+      c = {SimMethod::closed_form,
+           "torque-free and axially symmetric: closed form, no integration"};
     } else if (free) {
       c = {SimMethod::exact,
            "torque-free: exact solution in Jacobi elliptic functions, no integration"};
@@ -99,7 +104,8 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested) {
   }
   if (const int p = order(c.method); p > 0) {
     c.step_s = s.step ? *s.step : default_step(s, p);
-    if (!s.step) c.reason += fmt::format("; step tol^(1/{}) / rate = {:.3g} s (rule of thumb)", p, c.step_s);
+    if (!s.step)
+      c.reason += fmt::format("; step tol^(1/{}) / rate = {:.3g} s (rule of thumb)", p, c.step_s);
   }
   return c;
 }

@@ -36,8 +36,8 @@ struct Eval {
   double positive(const std::string& text, const std::string& field) const {
     const double v = (*this)(text, field);
     if (!(v > 0.0) || !std::isfinite(v)) {
-      throw InputError(fmt::format("{}: \"{}\" is {:.10g}; it must be finite and > 0", field,
-                                   text, v));
+      throw InputError(
+          fmt::format("{}: \"{}\" is {:.10g}; it must be finite and > 0", field, text, v));
     }
     return v;
   }
@@ -50,7 +50,8 @@ constexpr double kUnitTolerance = 1e-12;
 Quat initial_orientation(const Scene& scene, const Eval& ev) {
   const OrientationSpec& o = scene.orientation;
   switch (o.kind) {
-    case OrientationSpec::Kind::identity: return Quat::Identity();
+    case OrientationSpec::Kind::identity:
+      return Quat::Identity();
     case OrientationSpec::Kind::quaternion: {
       double q[4];
       for (int i = 0; i < 4; ++i)
@@ -78,7 +79,8 @@ Quat initial_orientation(const Scene& scene, const Eval& ev) {
     }
     case OrientationSpec::Kind::euler: {
       Vec3 a;
-      for (int i = 0; i < 3; ++i) a[i] = ev.angle(o.euler[i], "initial.euler[" + std::to_string(i) + "]");
+      for (int i = 0; i < 3; ++i)
+        a[i] = ev.angle(o.euler[i], "initial.euler[" + std::to_string(i) + "]");
       return Quat(rotation_from_euler(a, euler_convention(o.convention))).normalized();
     }
   }
@@ -129,8 +131,7 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
     m.mass_kg = mp.mass_kg;
     m.d_P_m = pa.axes.transpose() * (mp.r_cm_m - s.turning_point_B);
     m.g_S = Vec3(0, 0, -ev.positive(scene.gravity->g, "effects.gravity.g"));
-    s.effects.push_back(fmt::format("gravity, g = {:.6g} m/s^2, about a fixed pivot",
-                                    -m.g_S.z()));
+    s.effects.push_back(fmt::format("gravity, g = {:.6g} m/s^2, about a fixed pivot", -m.g_S.z()));
   }
   if (scene.torque) {
     m.torque = true;
@@ -159,8 +160,9 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
   if (scene.omega_frame == Frame::space) w_B = s.q0_BtoS.conjugate() * w_B;
   s.m0_P = pa.moments.cwiseProduct(pa.axes.transpose() * w_B);
   if (!(s.m0_P.norm() > 0.0) && !m.gravity && !m.torque) {
-    throw InputError("initial.omega: the body does not turn and nothing acts on it; give a "
-                     "non-zero angular velocity");
+    throw InputError(
+        "initial.omega: the body does not turn and nothing acts on it; give a "
+        "non-zero angular velocity");
   }
   s.t_end = ev.positive(scene.t_end, "run.t_end");
   s.samples = scene.samples;

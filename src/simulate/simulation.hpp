@@ -10,6 +10,8 @@
 /// - gravity about a pivot: total energy, p_phi = L_z in space, and p_psi = L along the symmetry
 ///   axis when the body is symmetric about the axis through pivot and centre of mass;
 /// - a constant torque in space (no gravity): L_space - (L_space(0) + tau t).
+/// The samples of an integrator are also compared with a second, more accurate run, which says
+/// how many digits they have (near a separatrix far fewer than the tolerance suggests).
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -36,6 +38,12 @@ struct SimulationResult {
   std::int64_t cost = 0;
   std::int64_t steps = 0, rejected = 0;
   double run_time_s = 0.0;
+  /// Integrators only: the largest difference from a more accurate run (the exact solution when
+  /// torque-free, else rkf78 at tolerance/100), relative to each column's largest value; -1 if
+  /// no more accurate run exists (rkf78 at 1e-14 already).
+  double error_estimate = -1.0;
+  std::string error_reference;     ///< what it was compared with; "exact" for exact methods
+  std::int64_t estimate_cost = 0;  ///< the evaluations of that second run
 };
 
 /// Propagated state at one time: body momentum (P) and attitude P -> S.

@@ -109,8 +109,9 @@ GiNaC::ex SymbolTable::parse(const std::string& text, const std::string& field) 
   // Shown in messages: at most the first 40 characters.
   const std::string shown = text.size() > 40 ? text.substr(0, 40) + "..." : text;
   if (text.size() > kMaxExpressionLength) {
-    throw ExpressionError(field + ": expression \"" + shown + "\" is " + std::to_string(text.size()) +
-                          " characters long; the limit is " + std::to_string(kMaxExpressionLength));
+    throw ExpressionError(field + ": expression \"" + shown + "\" is " +
+                          std::to_string(text.size()) + " characters long; the limit is " +
+                          std::to_string(kMaxExpressionLength));
   }
   int depth = 0;
   for (char c : text) {

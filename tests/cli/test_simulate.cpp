@@ -26,8 +26,9 @@ TEST_CASE("simulate prints header, samples and footer for every example scene") 
     REQUIRE(r.exit_code == 0);
     // Piped (not a terminal): no progress on stderr.
     REQUIRE(r.err.empty());
-    for (const std::string& w : {"scene " + id, std::string("principal moments"), std::string("effects: "), std::string("method: "),
-                                std::string("time: 0 to"), std::string("cost: ")}) {
+    for (const std::string& w :
+         {"scene " + id, std::string("principal moments"), std::string("effects: "),
+          std::string("method: "), std::string("time: 0 to"), std::string("cost: ")}) {
       CHECK_THAT(r.out, Catch::Contains(w));
     }
   }
@@ -36,8 +37,8 @@ TEST_CASE("simulate prints header, samples and footer for every example scene") 
                              Catch::Contains("changes sign every") &&
                              Catch::Contains("rotational_energy"));
   const RunResult top = run_wobble({"simulate", "heavy-top", "--method", "dopri5"});
-  CHECK_THAT(top.out, Catch::Contains("method: dopri5 (requested)") &&
-                          Catch::Contains("p_phi") && Catch::Contains("p_psi") &&
+  CHECK_THAT(top.out, Catch::Contains("method: dopri5 (requested)") && Catch::Contains("p_phi") &&
+                          Catch::Contains("p_psi") &&
                           Catch::Contains("right-hand-side evaluations"));
 }
 
@@ -47,8 +48,8 @@ TEST_CASE("simulate --out writes CSV or JSON atomically and never overwrites wit
   const fs::path csv = dir / "racket.csv", json = dir / "racket.json";
   fs::remove(csv);
   fs::remove(json);
-  const RunResult r = run_wobble({"simulate", "tennis-racket", "--out", csv.string(), "--set",
-                                  "w=10"});
+  const RunResult r =
+      run_wobble({"simulate", "tennis-racket", "--out", csv.string(), "--set", "w=10"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   REQUIRE_THAT(r.out, Catch::Contains("wrote 41 samples to"));
@@ -71,7 +72,8 @@ TEST_CASE("simulate --out writes CSV or JSON atomically and never overwrites wit
   const RunResult again = run_wobble({"simulate", "tennis-racket", "--out", csv.string()});
   REQUIRE(again.exit_code == 2);
   REQUIRE(slurp(csv) == "mine\n");
-  REQUIRE(run_wobble({"simulate", "tennis-racket", "--out", csv.string(), "--force"}).exit_code == 0);
+  REQUIRE(run_wobble({"simulate", "tennis-racket", "--out", csv.string(), "--force"}).exit_code ==
+          0);
   REQUIRE(slurp(csv) != "mine\n");
   for (const auto& entry : fs::directory_iterator(dir)) {
     CHECK(entry.path().filename().string()[0] != '.');  // no temporaries left

@@ -50,10 +50,12 @@ TEST_CASE("exact solution agrees with an independent Fehlberg 7(8) run, both cir
   };
   // Circling the axis of largest moment, of least moment, a permuted body (moments not in
   // ascending order), the standard test body, and k'^2 = 2.7e-8 near the separatrix.
-  const Case cases[] = {{Vec3(1, 2, 3), Vec3(0.2, 0.5, 1)},   {Vec3(1, 2, 3), Vec3(1, 0.5, 0.2)},
-                        {Vec3(3, 1, 2), Vec3(0.3, -0.7, 0.5)}, {Vec3(2, 1, 2.0 / 3),
-                                                                Vec3(std::cos(1.1), 0, std::sin(1.1))},
-                        {Vec3(1, 2, 3), Vec3(-0.3, 0.2, -1)},  {Vec3(1, 2, 3), Vec3(1e-4, 1, 1e-4)}};
+  const Case cases[] = {{Vec3(1, 2, 3), Vec3(0.2, 0.5, 1)},
+                        {Vec3(1, 2, 3), Vec3(1, 0.5, 0.2)},
+                        {Vec3(3, 1, 2), Vec3(0.3, -0.7, 0.5)},
+                        {Vec3(2, 1, 2.0 / 3), Vec3(std::cos(1.1), 0, std::sin(1.1))},
+                        {Vec3(1, 2, 3), Vec3(-0.3, 0.2, -1)},
+                        {Vec3(1, 2, 3), Vec3(1e-4, 1, 1e-4)}};
   for (const auto& c : cases) {
     const ExactFreeMotion exact(c.I, c.m0, kQ0);
     REQUIRE(exact.kind() == ExactFreeMotion::Kind::elliptic);
@@ -118,7 +120,9 @@ TEST_CASE("exact solution's flip period matches the simulated flips of the inter
   }
 }
 
-TEST_CASE("symmetric closed form: exact kinds agree with the integrator and the nearly symmetric elliptic") {
+TEST_CASE(
+    "symmetric closed form: exact kinds agree with the integrator and the nearly symmetric "
+    "elliptic") {
   const Vec3 I(1, 1, 2.5), m0(0.4, -0.3, 1.2);
   const ExactFreeMotion closed(I, m0, kQ0);
   REQUIRE(closed.kind() == ExactFreeMotion::Kind::symmetric);

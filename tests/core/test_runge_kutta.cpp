@@ -21,8 +21,8 @@ RigidBodyModel free_model() {
   return m;
 }
 
-double error_at(const RigidBodyModel& model, RkMethod method, double tol_or_h, bool fixed,
-                double T, IntegrationCost* cost = nullptr) {
+double error_at(const RigidBodyModel& model, RkMethod method, double tol_or_h, bool fixed, double T,
+                IntegrationCost* cost = nullptr) {
   RungeKutta rk(model, method, tol_or_h, 1.0, fixed);
   State7 y = pack(kM0, Quat::Identity());
   rk.advance(y, 0.0, T);
