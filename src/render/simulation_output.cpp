@@ -67,13 +67,15 @@ std::string simulation_table(const SceneSetup& s, const SimulationResult& r) {
   const std::size_t width = static_cast<std::size_t>(d) + 8;
   std::vector<std::size_t> w;
   for (const auto& c : r.columns) w.push_back(std::max(width, c.size() + 1));
-  // A value below the column's largest times 10^-d is round-off of a zero (a spin braked to
-  // rest prints 1.2e-14 otherwise): print it as 0, so every printed digit is one the run has.
-  std::vector<double> floor(r.columns.size(), 0.0);
-  for (const auto& row : r.rows) {
-    for (std::size_t j = 0; j < row.size(); ++j) floor[j] = std::max(floor[j], std::abs(row[j]));
+  // The error is absolute, a fraction of the column's largest value: print every value of a
+  // column to the decimal place of that value's d-th digit, so a small value gets fewer
+  // significant digits, and one below half that place (a spin braked to rest, 1.2e-14) is 0.
+  std::vector<int> last_place(r.columns.size(), 0);
+  for (std::size_t j = 0; j < r.columns.size(); ++j) {
+    double largest = 0.0;
+    for (const auto& row : r.rows) largest = std::max(largest, std::abs(row[j]));
+    last_place[j] = largest > 0.0 ? static_cast<int>(std::floor(std::log10(largest))) - d + 1 : 0;
   }
-  for (double& f : floor) f *= std::pow(10.0, -d);
   std::string out;
   for (std::size_t j = 0; j < r.columns.size(); ++j)
     out += fmt::format("{:>{}}", r.columns[j], w[j]);
@@ -85,8 +87,17 @@ std::string simulation_table(const SceneSetup& s, const SimulationResult& r) {
     for (std::size_t j = 0; j < row.size(); ++j) {
       // Errors are printed to 3 digits: they are sizes, not values.
       const bool err = r.columns[j].rfind("err_", 0) == 0;
-      const double v = (std::abs(row[j]) < floor[j] && !err) || row[j] == 0.0 ? 0.0 : row[j];
-      out += fmt::format("{:>{}.{}g}", v, w[j], err ? 3 : d);
+      if (err) {
+        out += fmt::format("{:>{}.3g}", row[j], w[j]);
+        continue;
+      }
+      const double v = row[j], place = std::pow(10.0, last_place[j]);
+      if (std::abs(v) < 0.5 * place) {
+        out += fmt::format("{:>{}}", "0", w[j]);
+        continue;
+      }
+      const int digits = static_cast<int>(std::floor(std::log10(std::abs(v)))) - last_place[j] + 1;
+      out += fmt::format("{:>{}.{}g}", v, w[j], std::max(digits, 1));
     }
     out += "\n";
   }

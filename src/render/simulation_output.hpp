@@ -2,10 +2,11 @@
 /// @file
 /// A simulation as text (header, table, footer), CSV, JSON, and a gnuplot plot.
 ///
-/// Text prints the significant digits the run supports: 10 for the closed form and the exact
-/// solution, otherwise one fewer than the tolerance's exponent (at least 3, at most 10). CSV
-/// and JSON carry every double to 17 significant digits (for programs; the footer says how far
-/// to trust them).
+/// Text prints the digits the run supports: d significant digits of each column's largest value
+/// (d = 10 for the closed form and the exact solution; for an integrator, from its estimated
+/// error, else from the tolerance), and every other value of the column to the same decimal
+/// place. CSV and JSON carry every double to 17 significant digits (for programs; the footer
+/// says how far to trust them).
 #include <filesystem>
 #include <string>
 
