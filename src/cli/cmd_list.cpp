@@ -2,18 +2,26 @@
 
 #include "cli/commands.hpp"
 #include "problem/load.hpp"
+#include "problem/scene.hpp"
 
 namespace wobble::cli {
 
 void setup_list(CLI::App& app, ListOptions&) {
-  app.footer("Problems are the files problems/ID.toml ($WOBBLE_PROBLEMS overrides the folder).");
+  app.footer(
+      "Problems are the files problems/ID.toml ($WOBBLE_PROBLEMS overrides the folder), scenes "
+      "the files scenes/ID.toml ($WOBBLE_SCENES).");
 }
 
 int run_list(const ListOptions&) {
   const auto problems = load_catalog();
   std::size_t width = 0;
   for (const auto& p : problems) width = std::max(width, p.id.size());
-  for (const auto& p : problems) fmt::print("{:<{}}  {}\n", p.id, width, p.title);
+  const auto scenes = load_scenes();
+  for (const auto& s : scenes) width = std::max(width, s.model.id.size());
+  fmt::print("problems (wobble solve ID):\n");
+  for (const auto& p : problems) fmt::print("  {:<{}}  {}\n", p.id, width, p.title);
+  fmt::print("scenes (wobble simulate ID):\n");
+  for (const auto& s : scenes) fmt::print("  {:<{}}  {}\n", s.model.id, width, s.model.title);
   return kExitOk;
 }
 

@@ -62,7 +62,10 @@ int run_simulate(const SimulateOptions& opt) {
   if (opt.samples) scene.samples = static_cast<int>(*opt.samples);
   SceneSetup setup = setup_scene(scene, opt.sets);
   if (opt.tolerance) setup.tolerance = *opt.tolerance;
-  const MethodChoice choice = choose_method(setup, opt.method.empty() ? setup.method : opt.method);
+  const MethodChoice choice =
+      opt.method.empty()
+          ? choose_method(setup, setup.method, scene.model.file.string() + ": run.method")
+          : choose_method(setup, opt.method, "--method");
 
   // Progress on a terminal only, and only once a run has taken a moment.
   const bool tty = ::isatty(STDERR_FILENO) != 0;

@@ -186,6 +186,25 @@ std::filesystem::path scenes_dir() {
   return std::filesystem::path(WOBBLE_SOURCE_DIR) / "scenes";
 }
 
+std::vector<Scene> load_scenes() {
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(scenes_dir(), ec)) {
+    if (entry.path().extension() == ".toml") files.push_back(entry.path());
+  }
+  if (ec) throw InputError(scenes_dir().string() + ": cannot read the scene folder");
+  std::sort(files.begin(), files.end());
+  std::vector<Scene> out;
+  for (const auto& f : files) {
+    out.push_back(load_scene(f));
+    if (out.back().model.id != f.stem().string()) {
+      throw InputError(f.string() + ": id: '" + out.back().model.id +
+                       "' differs from the file name");
+    }
+  }
+  return out;
+}
+
 Scene find_scene(const std::string& id_or_file) {
   const std::filesystem::path as_path(id_or_file);
   if (as_path.extension() == ".toml" || id_or_file.find('/') != std::string::npos) {

@@ -72,6 +72,10 @@ Scene load_scene(const std::filesystem::path& file);
 /// The folder of the example scenes: $WOBBLE_SCENES if set, else the source tree's scenes/.
 std::filesystem::path scenes_dir();
 
+/// Every scene in scenes_dir(), sorted by id; each file's id must equal its file name.
+/// @throws InputError for the first bad file.
+std::vector<Scene> load_scenes();
+
 /// Resolves "ID" (scenes_dir()/ID.toml) or a path to a .toml file, and loads it.
 /// @throws InputError for an unknown id (listing the known ones) or a bad file.
 Scene find_scene(const std::string& id_or_file);

@@ -209,7 +209,8 @@ void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
         break;
       }
     }
-    if (base.rfind("err_", 0) == 0) base = "invariant errors";
+    // Errors of quantities with different units go to different panels.
+    if (base.rfind("err_", 0) == 0) base = "invariant errors [" + r.units[j] + "]";
     if (panels.empty() || panels.back().title != base) panels.push_back({base, {}});
     panels.back().cols.push_back(j);
   }

@@ -56,7 +56,8 @@ double default_step(const SceneSetup& s, int p) {
 }
 }  // namespace
 
-MethodChoice choose_method(const SceneSetup& s, const std::string& requested) {
+MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
+                           const std::string& field) {
   const bool free = s.model.torque_free();
   MethodChoice c;
   if (requested == "auto") {
@@ -82,7 +83,7 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested) {
     if (i == names.size()) {
       std::string list = "auto";
       for (const auto& n : names) list += ", " + n.first;
-      throw InputError("--method: unknown method '" + requested + "' (expected one of: " + list +
+      throw InputError(field + ": unknown method '" + requested + "' (expected one of: " + list +
                        ")");
     }
     c.method = static_cast<SimMethod>(i);
@@ -90,16 +91,16 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested) {
     const bool needs_free = c.method == SimMethod::closed_form || c.method == SimMethod::exact ||
                             c.method == SimMethod::split2 || c.method == SimMethod::split4;
     if (needs_free && !free) {
-      throw InputError("--method " + requested +
+      throw InputError(field + " " + requested +
                        ": applies to torque-free motion only, and this scene has " +
                        (s.model.gravity ? "gravity about a pivot" : "a torque") +
                        "; use rk4, dopri5, rkf78 or auto");
     }
     if (c.method == SimMethod::closed_form && !s.symmetric) {
       throw InputError(fmt::format(
-          "--method closed_form: the body is not axially symmetric (moments {:.10g}, {:.10g}, "
+          "{} closed_form: the body is not axially symmetric (moments {:.10g}, {:.10g}, "
           "{:.10g} kg m^2); use exact or auto",
-          s.moments[0], s.moments[1], s.moments[2]));
+          field, s.moments[0], s.moments[1], s.moments[2]));
     }
   }
   if (const int p = order(c.method); p > 0) {

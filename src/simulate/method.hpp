@@ -27,9 +27,11 @@ std::string name_of(SimMethod m);
 /// Every method name, in the order above, with a one-line description.
 const std::vector<std::pair<std::string, std::string>>& simulation_method_names();
 
-/// `requested` is "auto" or a method name. @throws InputError for an unknown name, or a
+/// `requested` is "auto" or a method name, from `field` ("--method" or "run.method", for
+/// messages). @throws InputError for an unknown name, or a
 /// method that cannot apply to this scene (the exact solver or a splitting with a torque, the
 /// closed form for an asymmetric body), saying why and what would.
-MethodChoice choose_method(const SceneSetup& s, const std::string& requested);
+MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
+                           const std::string& field = "--method");
 
 }  // namespace wobble

@@ -147,7 +147,12 @@ SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
     times[k] = k + 1 == times.size() ? s.t_end : s.t_end * static_cast<double>(k) / (s.samples - 1);
   }
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<SimState> states = propagate(s, choice, times, r, progress);
+  // An integrator's run is followed by a second one (the error estimate): each is half the bar.
+  const bool exact = choice.method == SimMethod::closed_form || choice.method == SimMethod::exact;
+  const auto first_half = [&](double f) {
+    if (progress) progress(exact ? f : 0.5 * f);
+  };
+  const std::vector<SimState> states = propagate(s, choice, times, r, first_half);
   r.run_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const RigidBodyModel& model = s.model;
@@ -290,7 +295,7 @@ SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
   r.rows = make_rows(states, true);
 
   // How far to trust the samples: a second, more accurate run, compared column by column.
-  if (choice.method == SimMethod::closed_form || choice.method == SimMethod::exact) {
+  if (exact) {
     r.error_reference = "exact";
     return r;
   }
@@ -307,7 +312,10 @@ SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
   SceneSetup tight = s;
   tight.tolerance = std::max(s.tolerance / 100, 1e-14);
   SimulationResult rc;
-  const auto ref_rows = make_rows(propagate(tight, ref, times, rc), false);
+  const auto second_half = [&](double f) {
+    if (progress) progress(0.5 + 0.5 * f);
+  };
+  const auto ref_rows = make_rows(propagate(tight, ref, times, rc, second_half), false);
   r.estimate_cost = rc.cost;
   double worst = 0.0;
   for (std::size_t j = 1; j < r.columns.size(); ++j) {

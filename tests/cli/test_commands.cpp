@@ -5,6 +5,7 @@
 
 #include "cli/run.hpp"
 #include "problem/load.hpp"
+#include "problem/scene.hpp"
 #include "temp_files.hpp"
 
 using namespace wobble::test;
@@ -17,10 +18,17 @@ std::string slurp(const fs::path& p) {
 }
 }  // namespace
 
-TEST_CASE("list names every problem of the catalog") {
+TEST_CASE("list names every problem of the catalog and every scene") {
   const RunResult r = run_wobble({"list"});
   REQUIRE(r.exit_code == 0);
   for (const auto& p : wobble::load_catalog()) REQUIRE_THAT(r.out, Catch::Contains(p.id + "  "));
+  const auto scenes = wobble::load_scenes();
+  REQUIRE(scenes.size() >= 6);
+  const std::size_t at = r.out.find("scenes (wobble simulate ID):");
+  REQUIRE(at != std::string::npos);
+  for (const auto& s : scenes) {
+    REQUIRE(r.out.find("  " + s.model.id + "  ", at) != std::string::npos);
+  }
 }
 
 TEST_CASE("version and help exit 0") {

@@ -89,7 +89,7 @@ TEST_CASE("simulate --plot draws the outputs with gnuplot") {
   REQUIRE(r.exit_code == 0);
   const std::string content = slurp(svg);
   REQUIRE_THAT(content, Catch::Contains("<svg") && Catch::Contains("euler_zyz_theta") &&
-                            Catch::Contains("invariant errors"));
+                            Catch::Contains("invariant errors [J]"));
 }
 
 TEST_CASE("solve --cross-check compares the closed forms with a simulation") {
