@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "simulate/invariants.hpp"
 #include "simulate/method.hpp"
 
 namespace wobble {
@@ -44,12 +45,6 @@ struct SimulationResult {
   double error_estimate = -1.0;
   std::string error_reference;     ///< what it was compared with; "exact" for exact methods
   std::int64_t estimate_cost = 0;  ///< the evaluations of that second run
-};
-
-/// Propagated state at one time: body momentum (P) and attitude P -> S.
-struct SimState {
-  Vec3 m_P;
-  Quat q_PtoS;
 };
 
 /// `progress` (if set) is called with the fraction done, at most ~100 times.
