@@ -25,4 +25,10 @@ inline std::filesystem::path write_file(const std::string& name, const std::stri
   return path;
 }
 
+/// A file's whole content ("" if it cannot be read).
+inline std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
 }  // namespace wobble::test

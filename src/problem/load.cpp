@@ -97,34 +97,14 @@ std::filesystem::path problems_dir() {
 }
 
 Problem find_problem(const std::string& id_or_file) {
-  const std::filesystem::path as_path(id_or_file);
-  if (as_path.extension() == ".toml" || id_or_file.find('/') != std::string::npos) {
-    return load_problem(as_path);
-  }
-  const auto file = problems_dir() / (id_or_file + ".toml");
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) {
-    std::string known;
-    for (const auto& p : load_catalog()) known += (known.empty() ? "" : ", ") + p.id;
-    throw InputError("unknown problem '" + id_or_file + "' (known: " + known + ")");
-  }
-  return load_problem(file);
+  return load_problem(resolve_id_or_file(id_or_file, problems_dir(), "problem"));
 }
 
 std::vector<Problem> load_catalog() {
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(problems_dir(), ec)) {
-    if (entry.path().extension() == ".toml") files.push_back(entry.path());
-  }
-  if (ec) throw InputError(problems_dir().string() + ": cannot read the problem folder");
-  std::sort(files.begin(), files.end());
   std::vector<Problem> out;
-  for (const auto& f : files) {
+  for (const auto& f : toml_files_in(problems_dir(), "problem")) {
     out.push_back(load_problem(f));
-    if (out.back().id != f.stem().string()) {
-      throw InputError(f.string() + ": id: '" + out.back().id + "' differs from the file name");
-    }
+    check_id_is_file_name(out.back().id, f);
   }
   return out;
 }

@@ -187,42 +187,16 @@ std::filesystem::path scenes_dir() {
 }
 
 std::vector<Scene> load_scenes() {
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(scenes_dir(), ec)) {
-    if (entry.path().extension() == ".toml") files.push_back(entry.path());
-  }
-  if (ec) throw InputError(scenes_dir().string() + ": cannot read the scene folder");
-  std::sort(files.begin(), files.end());
   std::vector<Scene> out;
-  for (const auto& f : files) {
+  for (const auto& f : detail::toml_files_in(scenes_dir(), "scene")) {
     out.push_back(load_scene(f));
-    if (out.back().model.id != f.stem().string()) {
-      throw InputError(f.string() + ": id: '" + out.back().model.id +
-                       "' differs from the file name");
-    }
+    detail::check_id_is_file_name(out.back().model.id, f);
   }
   return out;
 }
 
 Scene find_scene(const std::string& id_or_file) {
-  const std::filesystem::path as_path(id_or_file);
-  if (as_path.extension() == ".toml" || id_or_file.find('/') != std::string::npos) {
-    return load_scene(as_path);
-  }
-  const auto file = scenes_dir() / (id_or_file + ".toml");
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) {
-    std::vector<std::string> ids;
-    for (const auto& e : std::filesystem::directory_iterator(scenes_dir(), ec)) {
-      if (e.path().extension() == ".toml") ids.push_back(e.path().stem().string());
-    }
-    std::sort(ids.begin(), ids.end());
-    std::string known;
-    for (const auto& id : ids) known += (known.empty() ? "" : ", ") + id;
-    throw InputError("unknown scene '" + id_or_file + "' (known: " + known + ")");
-  }
-  return load_scene(file);
+  return load_scene(detail::resolve_id_or_file(id_or_file, scenes_dir(), "scene"));
 }
 
 }  // namespace wobble

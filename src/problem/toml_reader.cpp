@@ -1,5 +1,7 @@
 #include "problem/toml_reader.hpp"
 
+#include <algorithm>
+
 #include "problem/values.hpp"
 
 namespace wobble::detail {
@@ -96,6 +98,41 @@ std::vector<Parameter> read_parameters(const Reader& r, const toml::table& root)
     r.fail(&params, "parameters", e.what());
   }
   return p.parameters;
+}
+
+std::vector<std::filesystem::path> toml_files_in(const std::filesystem::path& dir,
+                                                 const std::string& what) {
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    if (entry.path().extension() == ".toml") files.push_back(entry.path());
+  }
+  if (ec) throw InputError(dir.string() + ": cannot read the " + what + " folder");
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::filesystem::path resolve_id_or_file(const std::string& id_or_file,
+                                         const std::filesystem::path& dir,
+                                         const std::string& what) {
+  const std::filesystem::path as_path(id_or_file);
+  if (as_path.extension() == ".toml" || id_or_file.find('/') != std::string::npos) return as_path;
+  const auto file = dir / (id_or_file + ".toml");
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    std::string known;
+    for (const auto& f : toml_files_in(dir, what)) {
+      known += (known.empty() ? "" : ", ") + f.stem().string();
+    }
+    throw InputError("unknown " + what + " '" + id_or_file + "' (known: " + known + ")");
+  }
+  return file;
+}
+
+void check_id_is_file_name(const std::string& id, const std::filesystem::path& file) {
+  if (id != file.stem().string()) {
+    throw InputError(file.string() + ": id: '" + id + "' differs from the file name");
+  }
 }
 
 toml::table parse_toml_file(const std::filesystem::path& file, const std::string& what) {

@@ -103,6 +103,17 @@ Parameter read_parameter(const Reader& r, const toml::table& t, const std::strin
 BodySpec read_body(const Reader& r, const toml::table& body);
 /// Every [[parameters]] entry of root, names unique, symbols valid.
 std::vector<Parameter> read_parameters(const Reader& r, const toml::table& root);
+/// A folder of definitions (problems/, scenes/): its .toml files, sorted.
+/// @throws InputError naming the folder if it cannot be read.
+std::vector<std::filesystem::path> toml_files_in(const std::filesystem::path& dir,
+                                                 const std::string& what);
+/// The file an argument names: itself if it looks like a path (ends in .toml or has a '/'),
+/// else dir/ID.toml. @throws InputError "unknown WHAT 'ID' (known: ...)" if that file is absent.
+std::filesystem::path resolve_id_or_file(const std::string& id_or_file,
+                                         const std::filesystem::path& dir, const std::string& what);
+/// @throws InputError unless a catalog file's id equals its file name.
+void check_id_is_file_name(const std::string& id, const std::filesystem::path& file);
+
 /// Refuses files over 1 MiB, then parses. @throws InputError "FILE:LINE: malformed TOML: ...".
 toml::table parse_toml_file(const std::filesystem::path& file, const std::string& what);
 

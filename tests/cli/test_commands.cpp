@@ -11,13 +11,6 @@
 using namespace wobble::test;
 namespace fs = std::filesystem;
 
-namespace {
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-}  // namespace
-
 TEST_CASE("list names every problem of the catalog and every scene") {
   const RunResult r = run_wobble({"list"});
   REQUIRE(r.exit_code == 0);

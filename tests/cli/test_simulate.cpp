@@ -11,13 +11,6 @@
 using namespace wobble::test;
 namespace fs = std::filesystem;
 
-namespace {
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-}  // namespace
-
 TEST_CASE("simulate prints header, samples and footer for every example scene") {
   for (const std::string id :
        {"tennis-racket", "flying-plate", "thrown-plate", "heavy-top", "spin-up", "wheel-brake"}) {
