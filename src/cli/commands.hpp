@@ -39,6 +39,15 @@ struct SimulateOptions {
 void setup_simulate(CLI::App& app, SimulateOptions& opt);
 int run_simulate(const SimulateOptions& opt);
 
+struct BenchOptions {
+  bool quick = false;
+  std::string format = "text";
+  std::string plot;
+  bool force = false;
+};
+void setup_bench(CLI::App& app, BenchOptions& opt);
+int run_bench(const BenchOptions& opt);
+
 struct KeysOptions {
   bool check = false, update = false;
 };

@@ -130,6 +130,25 @@ FreeBodyState ExactFreeMotion::at_elliptic(double t) const {
   return s;
 }
 
+Vec3 ExactFreeMotion::momentum_at(double t) const {
+  switch (kind_) {
+    case Kind::steady: return m0_;
+    case Kind::symmetric: return Eigen::AngleAxisd(-c_ * t, Vec3::Unit(axis_)) * m0_;
+    case Kind::elliptic: break;
+  }
+  // m alone needs sn, cn, dn of u, not the third-kind integral of the attitude.
+  double j = 0.0, r = u0_ + lambda_ * t;
+  if (std::isfinite(K_)) {
+    j = std::nearbyint(r / (2.0 * K_));
+    r -= 2.0 * K_ * j;
+  }
+  const SnCnDn e = jacobi_sncndn(r, kc2_);
+  const double odd = std::fmod(j, 2.0) == 0.0 ? 1.0 : -1.0;
+  const Vec3 m(sign_[0] * amp_[0] * odd * e.cn, sign_[1] * amp_[1] * odd * e.sn,
+               sign_[2] * amp_[2] * e.dn);
+  return C_.transpose() * m;
+}
+
 FreeBodyState ExactFreeMotion::at(double t) const {
   FreeBodyState s;
   switch (kind_) {

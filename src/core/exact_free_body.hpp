@@ -30,6 +30,8 @@ class ExactFreeMotion {
   ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& q0_PtoS);
 
   FreeBodyState at(double t_s) const;
+  /// The body angular momentum alone (no attitude): cheaper, for w(t) = I^-1 m(t).
+  Vec3 momentum_at(double t_s) const;
   Kind kind() const { return kind_; }
   /// Period of m_P(t) in s (infinity for steady motion and on the separatrix).
   double period_s() const { return period_; }

@@ -1,0 +1,209 @@
+#include "bench/components.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <thread>
+
+#include "core/elliptic.hpp"
+#include "core/exact_free_body.hpp"
+#include "core/principal_axes.hpp"
+#include "problem/load.hpp"
+
+namespace wobble::bench {
+
+namespace {
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+volatile double g_sink = 0.0;  // keeps timed results alive
+
+struct Point {
+  double u, kc2;
+  double sn, cn, dn;  // 50-digit reference
+};
+
+std::vector<Point> elliptic_points(int per_decade) {
+  using mp = boost::multiprecision::cpp_bin_float_50;
+  std::vector<Point> pts;
+  for (const double kc2 : {0.5, 1e-4, 1e-8, 1e-12, 1e-16}) {
+    const double K = complete_K(kc2);
+    const mp k = sqrt(mp(1) - mp(kc2));
+    std::vector<double> us;
+    for (int i = 0; i <= per_decade; ++i) us.push_back(K * i / per_decade);
+    for (const double d : {1e-4, 1e-8, 1e-12}) us.push_back(K - d);
+    us.back() = std::nextafter(K, 0.0);
+    for (const double u : us) {
+      mp cn, dn;
+      const mp sn = boost::math::jacobi_elliptic(k, mp(u), &cn, &dn);
+      pts.push_back(
+          {u, kc2, static_cast<double>(sn), static_cast<double>(cn), static_cast<double>(dn)});
+    }
+  }
+  return pts;
+}
+
+// Relative error of sn and dn, and of cn relative to 1 (cn vanishes at K and its absolute
+// error is what a bounded |cn| <= 1 carries): one figure, in units of eps.
+double sncndn_error(const Point& p, double sn, double cn, double dn) {
+  const auto rel = [](double a, double b) {
+    return b == 0 ? std::abs(a) : std::abs(a - b) / std::abs(b);
+  };
+  return std::max({rel(sn, p.sn), std::abs(cn - p.cn), rel(dn, p.dn)}) / kEps;
+}
+}  // namespace
+
+std::vector<ComponentRow> elliptic_bench(const TimingPlan& plan) {
+  const std::vector<Point> pts = elliptic_points(40);
+  std::vector<ComponentRow> out;
+  const std::string cases = "k'^2 0.5 to 1e-16, u in [0, K]";
+  double worst = 0.0;
+  for (const auto& p : pts) {
+    const SnCnDn e = jacobi_sncndn(p.u, p.kc2);
+    worst = std::max(worst, sncndn_error(p, e.sn, e.cn, e.dn));
+  }
+  const double t_mine = median_time_s(
+                            [&] {
+                              for (const auto& p : pts)
+                                g_sink = g_sink + jacobi_sncndn(p.u, p.kc2).dn;
+                            },
+                            plan) /
+                        static_cast<double>(pts.size());
+  out.push_back({"elliptic", "wobble jacobi_sncndn(u, k'^2)", cases, worst, "eps", t_mine * 1e9});
+  double worst_boost = 0.0;
+  for (const auto& p : pts) {
+    double cn, dn;
+    const double k = std::sqrt((1 - p.kc2));  // Boost takes the modulus: k'^2 is lost near 1
+    const double sn = boost::math::jacobi_elliptic(k, p.u, &cn, &dn);
+    worst_boost = std::max(worst_boost, sncndn_error(p, sn, cn, dn));
+  }
+  const double t_boost =
+      median_time_s(
+          [&] {
+            for (const auto& p : pts) {
+              double cn, dn;
+              g_sink = g_sink + boost::math::jacobi_elliptic(std::sqrt(1 - p.kc2), p.u, &cn, &dn);
+            }
+          },
+          plan) /
+      static_cast<double>(pts.size());
+  out.push_back({"elliptic", "Boost.Math jacobi_elliptic(k, u), default policy", cases, worst_boost,
+                 "eps", t_boost * 1e9});
+  // The exact solution's w(t) near the separatrix (I = (1, 2, 3), m0 = (1e-4, 1, 1e-4)).
+  const ExactFreeMotion motion(Vec3(1, 2, 3), Vec3(1e-4, 1, 1e-4), Quat::Identity());
+  const double t_w = median_time_s(
+                         [&] {
+                           for (int i = 0; i < 64; ++i)
+                             g_sink = g_sink + motion.momentum_at(3.1 * i).x();
+                         },
+                         plan) /
+                     64;
+  out.push_back({"elliptic", "wobble exact w(t) (m(t) / I)", "P3 body, t from 0 to 195", -1.0, "",
+                 t_w * 1e9});
+  const double t_att = median_time_s(
+                           [&] {
+                             for (int i = 0; i < 64; ++i)
+                               g_sink = g_sink + motion.at(3.1 * i).q_BtoS.w();
+                           },
+                           plan) /
+                       64;
+  out.push_back({"elliptic", "wobble exact w(t) and attitude", "P3 body, t from 0 to 195", -1.0, "",
+                 t_att * 1e9});
+  return out;
+}
+
+std::vector<ComponentRow> principal_axes_bench(const TimingPlan& plan) {
+  struct Case {
+    std::string name;
+    Vec3 moments;
+  };
+  const Case cases[] = {{"separated (1, 2, 3)", Vec3(1, 2, 3)},
+                        {"degenerate (1, 1, 3)", Vec3(1, 1, 3)},
+                        {"nearly degenerate (1, 1 + 1e-12, 3)", Vec3(1, 1 + 1e-12, 3)},
+                        {"badly scaled (1e-6, 1, 1e6)", Vec3(1e-6, 1, 1e6)},
+                        {"needle (1e-12, 1, 1)", Vec3(1e-12, 1, 1)}};
+  const Mat3 R = Eigen::AngleAxisd(0.7, Vec3(1, -2, 0.5).normalized()).toRotationMatrix();
+  std::vector<ComponentRow> out;
+  for (const auto& c : cases) {
+    const Mat3 I = R * c.moments.asDiagonal() * R.transpose();
+    // Error: eigenvalues relative to the largest, and the axes' residual |I e - l e| / l_max.
+    const auto error_of = [&](const Vec3& l, const Mat3& axes) {
+      Vec3 sorted = l;
+      std::sort(sorted.data(), sorted.data() + 3);
+      double e = (sorted - c.moments).cwiseAbs().maxCoeff();
+      for (int i = 0; i < 3; ++i) e = std::max(e, (I * axes.col(i) - l[i] * axes.col(i)).norm());
+      e = std::max(e, (axes.transpose() * axes - Mat3::Identity()).cwiseAbs().maxCoeff() *
+                          c.moments.maxCoeff());
+      return e / c.moments.maxCoeff() / kEps;
+    };
+    const PrincipalAxes pa = principal_axes(I);
+    out.push_back(
+        {"principal axes", "wobble principal_axes", c.name, error_of(pa.moments, pa.axes),
+         "eps l_max",
+         median_time_s([&] { g_sink = g_sink + principal_axes(I).moments[0]; }, plan) * 1e9});
+    Eigen::SelfAdjointEigenSolver<Mat3> es(I);
+    out.push_back({"principal axes", "Eigen compute()", c.name,
+                   error_of(es.eigenvalues(), es.eigenvectors()), "eps l_max",
+                   median_time_s(
+                       [&] {
+                         Eigen::SelfAdjointEigenSolver<Mat3> s(I);
+                         g_sink = g_sink + s.eigenvalues()[0];
+                       },
+                       plan) *
+                       1e9});
+    Eigen::SelfAdjointEigenSolver<Mat3> ed;
+    ed.computeDirect(I);
+    out.push_back({"principal axes", "Eigen computeDirect()", c.name,
+                   error_of(ed.eigenvalues(), ed.eigenvectors()), "eps l_max",
+                   median_time_s(
+                       [&] {
+                         Eigen::SelfAdjointEigenSolver<Mat3> s;
+                         s.computeDirect(I);
+                         g_sink = g_sink + s.eigenvalues()[0];
+                       },
+                       plan) *
+                       1e9});
+  }
+  return out;
+}
+
+std::vector<ComponentRow> process_bench(const std::string& exe, int repeats) {
+  const auto time_command = [&](const std::string& args) {
+    std::vector<double> t;
+    for (int r = 0; r < repeats; ++r) {
+      const auto start = std::chrono::steady_clock::now();
+      const int status = std::system(("'" + exe + "' " + args + " > /dev/null 2>&1").c_str());
+      t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      if (status != 0) return -1.0;
+    }
+    std::sort(t.begin(), t.end());
+    return t[t.size() / 2];
+  };
+  std::vector<ComponentRow> out;
+  for (const auto& p : load_catalog()) {
+    out.push_back(
+        {"process", "wobble solve " + p.id, "", -1.0, "", time_command("solve " + p.id) * 1e9});
+  }
+  out.push_back(
+      {"process", "wobble keys --check", "", -1.0, "", time_command("keys --check") * 1e9});
+  return out;
+}
+
+std::string machine_description() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line, model = "unknown CPU";
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  return fmt::format("{}, {} hardware threads", model, std::thread::hardware_concurrency());
+}
+
+}  // namespace wobble::bench

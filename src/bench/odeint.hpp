@@ -1,0 +1,10 @@
+#pragma once
+// Boost.Odeint, included with two of GCC 12's flow warnings off: its steppers copy their own
+// default-constructed scratch arrays (std::array members never read before written), which GCC
+// 12 at -O3 reports as -Wuninitialized / -Wmaybe-uninitialized inside Boost's headers. The
+// pragma covers those headers only.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <boost/numeric/odeint.hpp>
+#pragma GCC diagnostic pop

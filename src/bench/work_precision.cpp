@@ -1,0 +1,232 @@
+#include "bench/work_precision.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "bench/odeint.hpp"
+#include "core/exact_free_body.hpp"
+#include "core/runge_kutta.hpp"
+
+namespace wobble::bench {
+
+std::vector<BenchProblem> bench_problems() {
+  std::vector<BenchProblem> out;
+  BenchProblem p1;
+  p1.id = "P1";
+  p1.description = "free body I = (2, 1, 2/3), m0 = (cos 1.1, 0, sin 1.1), T = 10";
+  p1.model.I_P = Vec3(2.0, 1.0, 2.0 / 3.0);
+  p1.m0 = Vec3(std::cos(1.1), 0.0, std::sin(1.1));
+  p1.T = 10.0;
+  out.push_back(p1);
+  BenchProblem p2 = p1;
+  p2.id = "P2";
+  p2.description = "the same body over T = 1e4";
+  p2.T = 1e4;
+  out.push_back(p2);
+  BenchProblem p3;
+  p3.id = "P3";
+  p3.description = "near the separatrix: I = (1, 2, 3), m0 = (1e-4, 1, 1e-4), T = 200";
+  p3.model.I_P = Vec3(1.0, 2.0, 3.0);
+  p3.m0 = Vec3(1e-4, 1.0, 1e-4);
+  p3.T = 200.0;
+  out.push_back(p3);
+  BenchProblem p4;
+  p4.id = "P4";
+  p4.description =
+      "heavy top: I = (3.5, 3.5, 0.625) g m^2 about the pivot, M = 0.5 kg, l = 8 cm, spin 150 "
+      "rad/s, tilt 30 deg, T = 2";
+  p4.model.I_P = Vec3(0.0035125, 0.0035125, 0.000625);
+  p4.model.gravity = true;
+  p4.model.mass_kg = 0.5;
+  p4.model.d_P_m = Vec3(0, 0, 0.08);
+  p4.model.g_S = Vec3(0, 0, -9.81);
+  p4.m0 = Vec3(0, 0, 0.000625 * 150);
+  p4.q0 = Quat(Eigen::AngleAxisd(M_PI / 6, Vec3::UnitY()));
+  p4.T = 2.0;
+  p4.exact_reference = false;
+  out.push_back(p4);
+  return out;
+}
+
+namespace {
+struct Outcome {
+  Vec3 m;
+  Quat q;
+  std::int64_t evals = 0;
+};
+
+double attitude_distance(const Quat& a, const Quat& b) {
+  return (a.toRotationMatrix() - b.toRotationMatrix()).norm();
+}
+
+Outcome run_wobble_rk(const BenchProblem& p, RkMethod m, double tol_or_h) {
+  RungeKutta rk(p.model, m, tol_or_h, p.m0.norm());
+  State7 y = pack(p.m0, p.q0);
+  rk.advance(y, 0.0, p.T);
+  return {momentum_of(y), attitude_of(y), rk.cost().rhs_evals};
+}
+
+Outcome run_split(const BenchProblem& p, SplittingOrder order, double h) {
+  FreeBodyState s{p.m0, p.q0};
+  std::int64_t subflows = 0;
+  const auto steps = static_cast<std::int64_t>(std::llround(p.T / h));
+  split_free_body(FreeBody{p.model.I_P}, s, p.T / static_cast<double>(steps), steps, order,
+                  &subflows);
+  return {s.m_B, s.q_BtoS, subflows};
+}
+
+// The peers: Boost.Odeint's controlled steppers on std::array, the same right-hand side.
+using Array7 = std::array<double, 7>;
+template <class Stepper>
+Outcome run_odeint(const BenchProblem& p, double tol) {
+  Array7 x;
+  Eigen::Map<State7>(x.data()) = pack(p.m0, p.q0);
+  std::int64_t evals = 0;
+  auto rhs = [&](const Array7& s, Array7& d, double) {
+    Eigen::Map<State7>(d.data()) = p.model.rhs(Eigen::Map<const State7>(s.data()));
+    ++evals;
+  };
+  namespace ode = boost::numeric::odeint;
+  ode::controlled_runge_kutta<Stepper> stepper(
+      ode::default_error_checker<double, ode::array_algebra, ode::default_operations>(tol, tol));
+  ode::integrate_adaptive(stepper, rhs, x, 0.0, p.T, p.T / 1000);
+  const State7 y = Eigen::Map<const State7>(x.data());
+  return {momentum_of(y), attitude_of(y), evals};
+}
+
+struct Reference {
+  Vec3 m;
+  Quat q;
+};
+
+Reference reference(const BenchProblem& p) {
+  if (p.exact_reference) {
+    const FreeBodyState s = ExactFreeMotion(p.model.I_P, p.m0, p.q0).at(p.T);
+    return {s.m_B, s.q_BtoS};
+  }
+  const Outcome o = run_wobble_rk(p, RkMethod::rkf78, 1e-14);
+  return {o.m, o.q};
+}
+
+Run measure(const BenchProblem& p, const Reference& ref, const std::string& method, bool peer,
+            const std::string& setting, const std::function<Outcome()>& f, const TimingPlan& plan) {
+  const Outcome o = f();
+  Run r;
+  r.problem = p.id;
+  r.method = method;
+  r.peer = peer;
+  r.setting = setting;
+  r.error = std::max((o.m - ref.m).norm() / p.m0.norm(), attitude_distance(o.q, ref.q));
+  const double E0 = p.model.kinetic(p.m0) + p.model.potential(p.q0);
+  const double E = p.model.kinetic(o.m) + p.model.potential(o.q);
+  r.energy_error = std::abs(E - E0) / std::max(std::abs(E0), 1e-300);
+  // The second invariant: |L| when torque-free, p_phi = L_z in space under gravity.
+  r.L_error = p.model.torque_free()
+                  ? std::abs(o.m.norm() - p.m0.norm()) / p.m0.norm()
+                  : std::abs(Vec3(o.q * o.m).z() - Vec3(p.q0 * p.m0).z()) / p.m0.norm();
+  r.evals = o.evals;
+  r.time_s = median_time_s([&] { (void)f(); }, plan);
+  return r;
+}
+}  // namespace
+
+std::vector<Run> work_precision(const BenchProblem& p, bool quick, const TimingPlan& plan) {
+  const Reference ref = reference(p);
+  std::vector<Run> runs;
+  const std::vector<double> tols = quick
+                                       ? std::vector<double>{1e-6, 1e-9, 1e-12, 1e-14}
+                                       : std::vector<double>{1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14};
+  // Steps as fractions of the time the body needs to turn one radian.
+  const double turn = 1.0 / p.model.omega_P(p.m0).norm();
+  std::vector<double> fractions =
+      quick ? std::vector<double>{0.05, 0.005} : std::vector<double>{0.1, 0.03, 0.01, 0.003, 0.001};
+  if (p.T > 1000) fractions = {0.05, 0.01};  // P2: long runs
+  std::vector<double> steps;
+  for (double f : fractions) steps.push_back(f * turn);
+  const bool free = p.model.torque_free();
+  const auto tol_text = [](double t) { return fmt::format("tol {:.0e}", t); };
+  const auto h_text = [](double h) { return fmt::format("h {:.2g}", h); };
+  if (free) {
+    runs.push_back(measure(
+        p, ref, "exact", false, "-",
+        [&] {
+          const FreeBodyState s = ExactFreeMotion(p.model.I_P, p.m0, p.q0).at(p.T);
+          return Outcome{s.m_B, s.q_BtoS, 1};
+        },
+        plan));
+  }
+  for (double tol : tols) {
+    if (tol < 1e-13 && p.T > 1000) continue;
+    runs.push_back(measure(
+        p, ref, "dopri5", false, tol_text(tol),
+        [&] { return run_wobble_rk(p, RkMethod::dopri5, tol); }, plan));
+    runs.push_back(measure(
+        p, ref, "rkf78", false, tol_text(tol),
+        [&] { return run_wobble_rk(p, RkMethod::rkf78, tol); }, plan));
+    using ode_dopri5 = boost::numeric::odeint::runge_kutta_dopri5<Array7>;
+    using ode_rkf78 = boost::numeric::odeint::runge_kutta_fehlberg78<Array7>;
+    runs.push_back(measure(
+        p, ref, "odeint_dopri5", true, tol_text(tol),
+        [&] { return run_odeint<ode_dopri5>(p, tol); }, plan));
+    runs.push_back(measure(
+        p, ref, "odeint_rkf78", true, tol_text(tol), [&] { return run_odeint<ode_rkf78>(p, tol); },
+        plan));
+  }
+  for (double h : steps) {
+    runs.push_back(measure(
+        p, ref, "rk4", false, h_text(h), [&] { return run_wobble_rk(p, RkMethod::rk4, h); }, plan));
+    if (free) {
+      runs.push_back(measure(
+          p, ref, "split2", false, h_text(h),
+          [&] { return run_split(p, SplittingOrder::strang2, h); }, plan));
+      runs.push_back(measure(
+          p, ref, "split4", false, h_text(h),
+          [&] { return run_split(p, SplittingOrder::yoshida4, h); }, plan));
+    }
+  }
+  return runs;
+}
+
+double time_ratio_at(const std::vector<Run>& runs, const std::string& problem, const std::string& a,
+                     const std::string& b, double target) {
+  const auto time_for = [&](const std::string& method) {
+    // Points of the curve ordered by error; interpolate log t against log e between the two
+    // points that bracket the target.
+    std::vector<std::pair<double, double>> pts;
+    for (const auto& r : runs) {
+      if (r.problem == problem && r.method == method && r.error > 0)
+        pts.emplace_back(std::log(r.error), std::log(r.time_s));
+    }
+    std::sort(pts.begin(), pts.end());
+    const double lt = std::log(target);
+    for (std::size_t i = 1; i < pts.size(); ++i) {
+      if (pts[i - 1].first <= lt && lt <= pts[i].first) {
+        const double f = (lt - pts[i - 1].first) / (pts[i].first - pts[i - 1].first);
+        return std::exp(pts[i - 1].second + f * (pts[i].second - pts[i - 1].second));
+      }
+    }
+    return -1.0;
+  };
+  const double ta = time_for(a), tb = time_for(b);
+  return ta > 0 && tb > 0 ? ta / tb : -1.0;
+}
+
+double measured_condition(const BenchProblem& p) {
+  if (!p.exact_reference) return -1.0;
+  // Perturb each component by eps |m0| (one ulp of the largest), as rounding the input would.
+  const double eps = std::numeric_limits<double>::epsilon();
+  const Vec3 base = ExactFreeMotion(p.model.I_P, p.m0, p.q0).at(p.T).m_B;
+  double worst = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    Vec3 m = p.m0;
+    m[i] += eps * p.m0.norm();
+    const Vec3 moved = ExactFreeMotion(p.model.I_P, m, p.q0).at(p.T).m_B;
+    worst = std::max(worst, (moved - base).norm() / p.m0.norm());
+  }
+  return worst / eps;
+}
+
+}  // namespace wobble::bench

@@ -1,0 +1,60 @@
+#pragma once
+/// @file
+/// Work-precision of the integrators: for each method and each tolerance or step of a sweep,
+/// the error reached against the exact solution (or a stated reference), the invariants' errors,
+/// the right-hand-side evaluations and the median run time; Boost.Odeint's controlled
+/// runge_kutta_dopri5 and runge_kutta_fehlberg78 run on the same right-hand side and
+/// tolerances as peers.
+///
+/// Problems (issue 5):
+/// - P1: free body I = (2, 1, 2/3), m0 = (cos 1.1, 0, sin 1.1), identity attitude, T = 10;
+/// - P2: the same over T = 1e4 (energy and |L| errors against time);
+/// - P3: near the separatrix, I = (1, 2, 3), m0 = (1e-4, 1, 1e-4), T = 200, with its measured
+///   condition (how far a 1-ulp change of m0 moves m(T));
+/// - P4: a heavy top; reference: the tightest run of Fehlberg 7(8) (1e-14), stated as such.
+/// Error: the larger of |m(T) - m_ref(T)| / |m0| and the Frobenius distance of the attitudes.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bench/timing.hpp"
+#include "core/rigid_body.hpp"
+
+namespace wobble::bench {
+
+struct BenchProblem {
+  std::string id, description;
+  RigidBodyModel model;
+  Vec3 m0 = Vec3::Zero();
+  Quat q0 = Quat::Identity();
+  double T = 10.0;
+  bool exact_reference = true;  ///< torque-free: the exact solution; else the tightest rkf78
+};
+
+std::vector<BenchProblem> bench_problems();
+
+struct Run {
+  std::string problem, method;
+  bool peer = false;          ///< a Boost.Odeint peer
+  std::string setting;        ///< "tol 1e-08" or "h 0.01"
+  double error = 0.0;         ///< at T, against the reference
+  double energy_error = 0.0;  ///< relative, at T
+  double L_error = 0.0;       ///< |L| (torque-free) or p_phi (gravity), relative to |m0|, at T
+  std::int64_t evals = 0;     ///< right-hand-side evaluations (sub-flows for splittings)
+  double time_s = 0.0;        ///< median whole-run time
+};
+
+/// Every method of wobble (and the peers) on problem p; `quick` sweeps fewer points.
+std::vector<Run> work_precision(const BenchProblem& p, bool quick, const TimingPlan& plan);
+
+/// The time method `a` needs for error `target` on `problem`, over the time `b` needs, each
+/// interpolated log-log along its curve; negative if either curve does not reach the target.
+double time_ratio_at(const std::vector<Run>& runs, const std::string& problem, const std::string& a,
+                     const std::string& b, double target);
+
+/// The condition of m(T) in m0: how far a change of eps |m0| in one component of m0 moves
+/// m(T), in units of eps |m0| (the largest over the components; by the exact solution;
+/// torque-free problems only, else -1).
+double measured_condition(const BenchProblem& p);
+
+}  // namespace wobble::bench

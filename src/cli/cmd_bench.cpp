@@ -1,0 +1,45 @@
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "bench/report.hpp"
+#include "cli/commands.hpp"
+#include "core/input_error.hpp"
+#include "render/bench_output.hpp"
+
+namespace wobble::cli {
+
+void setup_bench(CLI::App& app, BenchOptions& opt) {
+  app.add_flag("--quick", opt.quick, "Fewer points and repeats (under a minute; for CI)");
+  app.add_option("--format", opt.format, "Output format")
+      ->check(CLI::IsMember({"text", "markdown", "json", "csv"}));
+  app.add_option("--plot", opt.plot, "Draw the work-precision diagram as SVG (gnuplot)");
+  app.add_flag("--force", opt.force, "Overwrite an existing --plot file");
+}
+
+int run_bench(const BenchOptions& opt) {
+  if (!opt.plot.empty() && std::filesystem::exists(opt.plot) && !opt.force) {
+    throw InputError("--plot: " + opt.plot + " exists; use --force to overwrite it");
+  }
+  const bench::TimingPlan plan = opt.quick ? bench::TimingPlan{3, 1e-4} : bench::TimingPlan{};
+  BenchReport report;
+  report.machine = bench::machine_description();
+  report.quick = opt.quick;
+  for (const auto& p : bench::bench_problems()) {
+    report.problems.push_back(p);
+    const auto runs = bench::work_precision(p, opt.quick, plan);
+    report.runs.insert(report.runs.end(), runs.begin(), runs.end());
+  }
+  for (auto rows : {bench::elliptic_bench(plan), bench::principal_axes_bench(plan),
+                    bench::process_bench(std::filesystem::read_symlink("/proc/self/exe").string(),
+                                         opt.quick ? 3 : 7)}) {
+    report.components.insert(report.components.end(), rows.begin(), rows.end());
+  }
+  report.long_run = bench::long_splitting_run(opt.quick);
+  bench::evaluate_targets(report);
+  fmt::print("{}", render_bench(report, opt.format));
+  if (!opt.plot.empty()) write_bench_plot(report, opt.plot);
+  return kExitOk;
+}
+
+}  // namespace wobble::cli

@@ -1,0 +1,232 @@
+#include "render/bench_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "render/gnuplot.hpp"
+
+namespace wobble {
+
+namespace {
+std::string us(double s) {
+  return fmt::format("{:.3g}", s * 1e6);
+}
+std::string err(double e) {
+  return std::isfinite(e) ? fmt::format("{:.1e}", e) : "diverged";
+}
+
+// The ratios the targets name: wobble's best adaptive pair against each peer, at the errors
+// where the curves are compared.
+std::string ratios(const BenchReport& r, const bench::BenchProblem& p, bool markdown) {
+  std::string out;
+  for (const double target : {1e-8, 1e-12}) {
+    for (const char* peer : {"odeint_dopri5", "odeint_rkf78"}) {
+      for (const char* mine : {"dopri5", "rkf78"}) {
+        const double ratio = bench::time_ratio_at(r.runs, p.id, mine, peer, target);
+        if (ratio < 0) continue;
+        out += fmt::format("{}{} / {} at error {:.0e}: {:.2f}\n", markdown ? "- " : "  ", mine,
+                           peer, target, ratio);
+      }
+    }
+  }
+  return out;
+}
+
+std::string table(const BenchReport& r, const bench::BenchProblem& p, bool markdown) {
+  std::string out;
+  if (markdown) {
+    out += fmt::format("**{}**: {}\n\n", p.id, p.description);
+    out +=
+        "| method | setting | error | energy error | \\|L\\| or p_phi error | evaluations | time "
+        "(us) |\n";
+    out += "|---|---|---|---|---|---|---|\n";
+  } else {
+    out += fmt::format("{}: {}\n", p.id, p.description);
+    out += fmt::format("  {:<14} {:<11} {:>9} {:>11} {:>11} {:>11} {:>10}\n", "method", "setting",
+                       "error", "energy err", "L/p_phi err", "evaluations", "time (us)");
+  }
+  for (const auto& run : r.runs) {
+    if (run.problem != p.id) continue;
+    if (markdown) {
+      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", run.method, run.setting,
+                         err(run.error), err(run.energy_error), err(run.L_error), run.evals,
+                         us(run.time_s));
+    } else {
+      out += fmt::format("  {:<14} {:<11} {:>9} {:>11} {:>11} {:>11} {:>10}\n", run.method,
+                         run.setting, err(run.error), err(run.energy_error), err(run.L_error),
+                         run.evals, us(run.time_s));
+    }
+  }
+  if (const double c = bench::measured_condition(p); c > 0 && p.id == "P3") {
+    out += fmt::format(
+        "{}measured condition: a change of eps |m0| in m0 moves m(T) by {:.1f} eps |m0|\n",
+        markdown ? "\n" : "  ", c);
+  }
+  const std::string rs = ratios(r, p, markdown);
+  if (!rs.empty())
+    out += (markdown ? "\nwobble / peer time at equal error:\n\n"
+                     : "  wobble / peer time at equal error:\n") +
+           rs;
+  return out + "\n";
+}
+
+std::string components(const BenchReport& r, bool markdown) {
+  std::string out, group;
+  for (const auto& c : r.components) {
+    if (c.group != group) {
+      group = c.group;
+      const std::string what =
+          group == "elliptic"
+              ? "elliptic functions (error: largest over the points of sn, dn relative and cn "
+                "absolute, in eps)"
+          : group == "principal axes"
+              ? "principal axes of R diag(l) R^T (error: eigenvalues, residual and "
+                "orthonormality, in eps l_max)"
+              : "whole process (median of repeated runs)";
+      out +=
+          markdown
+              ? fmt::format(
+                    "\n{}:\n\n| what | cases | error | time per call |\n|---|---|---|---|\n", what)
+              : fmt::format("{}:\n", what);
+    }
+    const std::string e = c.max_error < 0 ? "-" : fmt::format("{:.3g}", c.max_error);
+    const std::string t = c.group == "process" ? fmt::format("{:.3g} ms", c.ns_per_call * 1e-6)
+                                               : fmt::format("{:.3g} ns", c.ns_per_call);
+    out += markdown ? fmt::format("| {} | {} | {} | {} |\n", c.method, c.cases, e, t)
+                    : fmt::format("  {:<48} {:<38} {:>9} {:>11}\n", c.method, c.cases, e, t);
+  }
+  const auto& l = r.long_run;
+  out += fmt::format(
+      "\nP2 long run, Strang splitting h = 0.01, {} steps: |L| relative error {:.1e} at the end; "
+      "largest energy error {:.2e} over [0, 10], {:.2e} over the whole run\n",
+      l.steps, l.L_error_end, l.energy_error_10, l.energy_error_1e4);
+  return out + "\n";
+}
+
+std::string targets(const BenchReport& r, bool markdown) {
+  std::string out = markdown ? "| target | measured | limit | |\n|---|---|---|---|\n"
+                             : "targets (issue 5; measured within this run):\n";
+  for (const auto& t : r.targets) {
+    const std::string m =
+        t.measured < 0 ? "not measured" : fmt::format("{:.3g} {}", t.measured, t.unit);
+    const std::string verdict = t.met() ? "met" : "missed";
+    out += markdown
+               ? fmt::format("| {} | {} | {:g} {} | {} |\n", t.what, m, t.limit, t.unit, verdict)
+               : fmt::format("  {:<62} {:>16}  limit {:g} {}  {}\n", t.what, m, t.limit, t.unit,
+                             verdict);
+  }
+  return out;
+}
+}  // namespace
+
+std::string render_bench(const BenchReport& r, const std::string& format) {
+  if (format == "json") {
+    nlohmann::ordered_json j;
+    j["machine"] = r.machine;
+    j["quick"] = r.quick;
+    nlohmann::ordered_json runs = nlohmann::ordered_json::array();
+    for (const auto& run : r.runs) {
+      runs.push_back({{"problem", run.problem},
+                      {"method", run.method},
+                      {"peer", run.peer},
+                      {"setting", run.setting},
+                      {"error", run.error},
+                      {"energy_error", run.energy_error},
+                      {"L_error", run.L_error},
+                      {"evaluations", run.evals},
+                      {"time_s", run.time_s}});
+    }
+    j["runs"] = runs;
+    nlohmann::ordered_json comps = nlohmann::ordered_json::array();
+    for (const auto& c : r.components) {
+      comps.push_back({{"group", c.group},
+                       {"method", c.method},
+                       {"cases", c.cases},
+                       {"max_error", c.max_error},
+                       {"error_kind", c.error_kind},
+                       {"ns_per_call", c.ns_per_call}});
+    }
+    j["components"] = comps;
+    nlohmann::ordered_json ts = nlohmann::ordered_json::array();
+    for (const auto& t : r.targets) {
+      ts.push_back({{"target", t.what},
+                    {"measured", t.measured},
+                    {"limit", t.limit},
+                    {"unit", t.unit},
+                    {"met", t.met()}});
+    }
+    j["targets"] = ts;
+    return j.dump(1) + "\n";
+  }
+  if (format == "csv") {
+    std::string out = "problem,method,peer,setting,error,energy_error,L_error,evaluations,time_s\n";
+    for (const auto& run : r.runs) {
+      out += fmt::format("{},{},{},{},{:.6e},{:.6e},{:.6e},{},{:.6e}\n", run.problem, run.method,
+                         run.peer ? 1 : 0, run.setting, run.error, run.energy_error, run.L_error,
+                         run.evals, run.time_s);
+    }
+    return out;
+  }
+  const bool md = format == "markdown";
+  std::string out = fmt::format("{}machine: {}{}\n\n", md ? "" : "", r.machine,
+                                r.quick ? " (quick run: fewer points and repeats)" : "");
+  for (const auto& p : r.problems) out += table(r, p, md);
+  out += components(r, md);
+  out += targets(r, md);
+  return out;
+}
+
+void write_bench_plot(const BenchReport& r, const std::filesystem::path& out) {
+  draw_svg_with_gnuplot(
+      [&](const std::filesystem::path& svg) {
+        std::string g = "set encoding utf8\n";
+        g += fmt::format(
+            "set terminal svg size 1000,{} dynamic font \"Helvetica,13\" background rgb "
+            "\"white\"\n",
+            360 * ((r.problems.size() + 1) / 2));
+        g += fmt::format("set output \"{}\"\n", gnuplot_quote(svg.string()));
+        g += fmt::format(
+            "set multiplot layout {},2 title \"work-precision: error against run time\"\n",
+            (r.problems.size() + 1) / 2);
+        g += "set logscale xy\nset format x \"10^{%L}\"\nset format y \"10^{%L}\"\nset grid\n";
+        g += "set xlabel \"run time [s]\"\nset ylabel \"error at T\"\nset key outside right font "
+             "\",10\"\n";
+        for (const auto& p : r.problems) {
+          std::vector<std::string> methods;
+          std::set<std::string> seen;
+          for (const auto& run : r.runs) {
+            if (run.problem == p.id && seen.insert(run.method).second)
+              methods.push_back(run.method);
+          }
+          g += fmt::format("set title \"{}\" noenhanced\nplot ", gnuplot_quote(p.id));
+          for (std::size_t i = 0; i < methods.size(); ++i) {
+            bool peer = false;
+            std::string data;
+            for (const auto& run : r.runs) {
+              if (run.problem != p.id || run.method != methods[i] || !(run.error > 0)) continue;
+              data += fmt::format("{:.6e} {:.6e}\n", run.time_s, run.error);
+              peer = run.peer;
+            }
+            g += fmt::format("{}'-' using 1:2 with linespoints lw 2 {} title \"{}\" noenhanced",
+                             i ? ", " : "", peer ? "dt 2" : "dt 1", gnuplot_quote(methods[i]));
+            (void)data;
+          }
+          g += "\n";
+          for (const auto& m : methods) {
+            for (const auto& run : r.runs) {
+              if (run.problem == p.id && run.method == m && run.error > 0)
+                g += fmt::format("{:.6e} {:.6e}\n", run.time_s, run.error);
+            }
+            g += "e\n";
+          }
+        }
+        g += "unset multiplot\n";
+        return g;
+      },
+      out);
+}
+
+}  // namespace wobble
