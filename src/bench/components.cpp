@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
+#include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <chrono>
@@ -56,6 +57,39 @@ double sncndn_error(const Point& p, double sn, double cn, double dn) {
   };
   return std::max({rel(sn, p.sn), std::abs(cn - p.cn), rel(dn, p.dn)}) / kEps;
 }
+// The exact solution's m(t) evaluated again at 50 digits, from the same formulas (for a body
+// with ascending moments circling its third axis): sn, cn, dn and F by Boost.Math in
+// multiprecision, where k = sqrt(1 - k'^2) keeps k'^2 = 1e-16.
+struct MpMotion {
+  using mp = boost::multiprecision::cpp_bin_float_50;
+  mp a1, a2, a3, lambda, u0, k, s1, s2, s3;
+  MpMotion(const Vec3& I, const Vec3& m0) {
+    const mp J1 = I[0], J2 = I[1], J3 = I[2], m1 = m0[0], m2 = m0[1], m3 = m0[2];
+    const mp d21 = J2 - J1, d31 = J3 - J1, d32 = J3 - J2;
+    const mp B = m2 * m2 * d21 / J2 + m3 * m3 * d31 / J3;
+    const mp D = m3 * m3 * d32 / J3 - m1 * m1 * d21 / J1;
+    a1 = sqrt(m1 * m1 + m2 * m2 * J1 * d32 / (J2 * d31));
+    a2 = sqrt(m1 * m1 * J2 * d31 / (J1 * d32) + m2 * m2);
+    a3 = sqrt(m2 * m2 * J3 * d21 / (J2 * d31) + m3 * m3);
+    lambda = sqrt(d32 * B / (J1 * J2 * J3));
+    k = sqrt(1 - d31 * D / (d32 * B));
+    s1 = m1 < 0 ? -1 : 1;
+    s3 = m3 < 0 ? -1 : 1;
+    s2 = s1 * s3;
+    u0 = boost::math::ellint_1(k, atan2(s2 * m2 / a2, abs(m1) / a1));
+  }
+  Vec3 m_at(double t) const {
+    mp cn, dn;
+    const mp sn = boost::math::jacobi_elliptic(k, u0 + lambda * mp(t), &cn, &dn);
+    return Vec3(static_cast<double>(s1 * a1 * cn), static_cast<double>(s2 * a2 * sn),
+                static_cast<double>(s3 * a3 * dn));
+  }
+  double period() const { return static_cast<double>(4 * boost::math::ellint_1(k) / lambda); }
+  /// The first time u reaches K (u0 is in [-K, K]).
+  double first_K_time() const {
+    return static_cast<double>((boost::math::ellint_1(k) - u0) / lambda);
+  }
+};
 }  // namespace
 
 std::vector<ComponentRow> elliptic_bench(const TimingPlan& plan) {
@@ -96,6 +130,30 @@ std::vector<ComponentRow> elliptic_bench(const TimingPlan& plan) {
                  "eps", t_boost * 1e9});
   // The exact solution's w(t) near the separatrix (I = (1, 2, 3), m0 = (1e-4, 1, 1e-4)).
   const ExactFreeMotion motion(Vec3(1, 2, 3), Vec3(1e-4, 1, 1e-4), Quat::Identity());
+  // Its accuracy: |w(t) - w_ref(t)| / |w_ref(t)| from k'^2 ~ 1e-4 to 1e-16 (m0 = (s, 1, 2s)),
+  // at times across two periods and next to the quarter periods (u near K).
+  // Two figures: over the first quarter period (u from u0 to K, where the phase u = u0 + lambda t
+  // is small) and over two periods, where the rounding of lambda t (eps u) shifts the phase.
+  double worst_quarter = 0.0, worst_w = 0.0;
+  for (const double s : {1e-2, 1e-4, 1e-6, 1e-8}) {
+    const Vec3 I(1, 2, 3), m0(s, 1, 2 * s);  // circling e3: D = m3^2/3 - m1^2 > 0
+    const ExactFreeMotion mine(I, m0, Quat::Identity());
+    const MpMotion ref(I, m0);
+    const double P = ref.period(), quarter = ref.first_K_time();
+    std::vector<double> times;
+    for (int i = 0; i <= 40; ++i) times.push_back(quarter * i / 40);
+    for (const double d : {-1e-6, -1e-9, -1e-12}) times.push_back(quarter + d);
+    const std::size_t n_quarter = times.size();
+    for (int i = 0; i <= 40; ++i) times.push_back(2 * P * i / 40);
+    for (int q = 1; q <= 7; ++q) times.push_back(quarter + q * P / 4);
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      const double t = times[i];
+      const Vec3 w = mine.momentum_at(t).cwiseQuotient(I), wr = ref.m_at(t).cwiseQuotient(I);
+      const double e = (w - wr).norm() / wr.norm() / kEps;
+      if (i < n_quarter) worst_quarter = std::max(worst_quarter, e);
+      worst_w = std::max(worst_w, e);
+    }
+  }
   const double t_w = median_time_s(
                          [&] {
                            for (int i = 0; i < 64; ++i)
@@ -103,8 +161,11 @@ std::vector<ComponentRow> elliptic_bench(const TimingPlan& plan) {
                          },
                          plan) /
                      64;
-  out.push_back({"elliptic", "wobble exact w(t) (m(t) / I)", "P3 body, t from 0 to 195", -1.0, "",
+  out.push_back({"elliptic", "wobble exact w(t) (m(t) / I)",
+                 "m0 = (s, 1, 2s), s 1e-2 to 1e-8, to u = K", worst_quarter, "eps (|dw| / |w|)",
                  t_w * 1e9});
+  out.push_back({"elliptic", "wobble exact w(t), over two periods", "the same, t to 2 periods",
+                 worst_w, "eps (|dw| / |w|)", t_w * 1e9});
   const double t_att = median_time_s(
                            [&] {
                              for (int i = 0; i < 64; ++i)
