@@ -45,9 +45,15 @@ class RungeKutta {
   RkMethod method_;
   double tol_or_step_;
   bool fixed_;
-  State7 scale_;
+  template <class Tableau>
+  void advance_adaptive(State7& y, double t0, double t1);
+
+  State7 inverse_scale_;
   double h_ = 0.0;  ///< next trial step (adaptive), 0 until the first call
   IntegrationCost cost_;
+  // First same as last (Dormand-Prince): f at the end of the last accepted step.
+  bool fsal_valid_ = false;
+  State7 fsal_y_, fsal_k_;
 };
 
 /// The theoretical order of the propagated solution.
