@@ -208,16 +208,17 @@ void RungeKutta::advance_adaptive(State7& y, double t0, double t1) {
   Stages<T> k;
   State7 y_new, err;
   // First same as last: f(y) from the previous accepted step, if y is still that step's end.
-  if (T::kFsal && fsal_valid_ && y == fsal_y_) {
-    k[0] = fsal_k_;
-  } else {
-    k[0] = model_.rhs(y);
-    ++cost_.rhs_evals;
-  }
+  bool k0_valid = T::kFsal && fsal_valid_ && y == fsal_y_;
+  if (k0_valid) k[0] = fsal_k_;
   double t_now = t0;
   while (t_now < t1) {
     const bool last = t_now + h_ * (1 + 1e-12) >= t1;
     const double h = last ? t1 - t_now : h_;
+    if (!k0_valid) {  // f(y) once per accepted state, however many tries the step takes
+      k[0] = model_.rhs(y);
+      ++cost_.rhs_evals;
+      k0_valid = true;
+    }
     rk_step<T>(model_, y, h, k, y_new, err, cost_);
     const double e = (err.cwiseAbs().cwiseProduct(inverse_scale_)).maxCoeff() / tol;
     const double factor = std::clamp(0.9 * std::pow(std::max(e, 1e-300), -expo), 0.2, 5.0);
@@ -233,8 +234,7 @@ void RungeKutta::advance_adaptive(State7& y, double t0, double t1) {
       if constexpr (T::kFsal) {
         k[0] = k[T::S - 1];  // f at the new y (before renormalising: |q| - 1 ~ tol, linear in q)
       } else {
-        k[0] = model_.rhs(y);
-        ++cost_.rhs_evals;
+        k0_valid = false;
       }
     } else {
       ++cost_.rejected;
