@@ -26,26 +26,30 @@ Mat3 rotation_from_euler(const Vec3& a, EulerConvention c) {
 }
 
 Vec3 euler_from_rotation(const Mat3& R, EulerConvention c) {
-  // z-y-z: third column (cos(phi) sin(theta), sin(phi) sin(theta), cos(theta)), third row
-  // (-sin(theta) cos(psi), sin(theta) sin(psi), cos(theta)).
+  // z-y-z: third column (cos(phi) sin(theta), sin(phi) sin(theta), cos(theta)); the upper 2x2
+  // block gives the sum and the difference of phi and psi:
+  //   R00 + R11 = (1 + cos theta) cos(phi + psi),  R10 - R01 = (1 + cos theta) sin(phi + psi),
+  //   R00 - R11 = (cos theta - 1) cos(phi - psi),  R10 + R01 = (cos theta - 1) sin(phi - psi).
   const double s = std::hypot(R(0, 2), R(1, 2));  // sin(theta) >= 0, accurate near 0 and pi
   const double theta = std::atan2(s, R(2, 2));
-  // Below this sin(theta), phi and psi are separately meaningless (only their sum or
-  // difference is): a rounding-level sin(theta) would give them noise.
-  constexpr double kLocked = 1e-12;
-  double phi, psi = 0.0;
-  if (s <= kLocked) {
-    // theta = 0: R = Rz(phi + psi). theta = pi: the upper 2x2 block is Rz(phi - psi) with its
-    // first column negated (z-y-z) or its second column negated (z-x-z). psi = 0 either way.
-    const bool up = R(2, 2) > 0;
-    phi = (up || c == EulerConvention::zxz) ? std::atan2(R(1, 0), R(0, 0))
-                                            : std::atan2(-R(1, 0), -R(0, 0));
+  const bool upper =
+      R(2, 2) >= 0;  // theta <= pi/2: the sum is well conditioned, else the difference
+  const double sum = std::atan2(R(1, 0) - R(0, 1), R(0, 0) + R(1, 1));
+  const double diff = std::atan2(-(R(1, 0) + R(0, 1)), -(R(0, 0) - R(1, 1)));
+  if (s == 0.0) {
+    // Gimbal lock: only phi + psi (theta = 0) or phi - psi (theta = pi) is defined; psi = 0.
+    // At theta = pi the z-x-z block is [[cos, sin], [sin, -cos]] of phi - psi, not z-y-z's.
+    const double phi = upper                       ? sum
+                       : c == EulerConvention::zyz ? diff
+                                                   : std::atan2(R(1, 0), R(0, 0));
     return Vec3(wrap(phi), theta, 0.0);
   }
-  phi = std::atan2(R(1, 2), R(0, 2));
-  psi = std::atan2(R(2, 1), -R(2, 0));
+  // phi from the third column (noisy when sin(theta) is tiny, but then the tilt it orients is
+  // tiny too), psi from the accurate sum or difference: the rotation is right in every regime.
+  double phi = std::atan2(R(1, 2), R(0, 2));
+  double psi = upper ? sum - phi : phi - diff;
   if (c == EulerConvention::zxz) {
-    // Rx(theta) = Rz(-pi/2) Ry(theta) Rz(pi/2), so z-x-z angles are the z-y-z ones with
+    // Rx(theta) = Rz(-pi/2) Ry(theta) Rz(pi/2): z-x-z angles are the z-y-z ones with
     // phi + pi/2 and psi - pi/2.
     phi += M_PI / 2;
     psi -= M_PI / 2;

@@ -47,7 +47,9 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
       kind_ = Kind::symmetric;
       axis_ = j;
       I_perp_ = I_[a];
-      c_ = (1.0 / I_[j] - 1.0 / I_perp_) * m0_[j];
+      // (I_perp - I_j) / (I_j I_perp), not 1/I_j - 1/I_perp: the difference of two rounded
+      // reciprocals loses its digits for an almost spherical top.
+      c_ = (I_perp_ - I_[j]) / (I_[j] * I_perp_) * m0_[j];
       if (c_ != 0.0) period_ = 2.0 * M_PI / std::abs(c_);
       return;
     }
@@ -132,9 +134,12 @@ FreeBodyState ExactFreeMotion::at_elliptic(double t) const {
 
 Vec3 ExactFreeMotion::momentum_at(double t) const {
   switch (kind_) {
-    case Kind::steady: return m0_;
-    case Kind::symmetric: return Eigen::AngleAxisd(-c_ * t, Vec3::Unit(axis_)) * m0_;
-    case Kind::elliptic: break;
+    case Kind::steady:
+      return m0_;
+    case Kind::symmetric:
+      return Eigen::AngleAxisd(-c_ * t, Vec3::Unit(axis_)) * m0_;
+    case Kind::elliptic:
+      break;
   }
   // m alone needs sn, cn, dn of u, not the third-kind integral of the attitude.
   double j = 0.0, r = u0_ + lambda_ * t;

@@ -1,0 +1,222 @@
+// The hard-case suite (issue 5): one named test per case where naive formulas break. Each
+// tolerance says where it comes from.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "bench/mp_reference.hpp"
+#include "core/euler_angles.hpp"
+#include "core/exact_free_body.hpp"
+#include "core/free_body.hpp"
+#include "core/heavy_top.hpp"
+#include "core/principal_axes.hpp"
+#include "core/shapes.hpp"
+#include "core/torque_free_symmetric.hpp"
+
+using namespace wobble;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+void require_orthonormal_right_handed(const Mat3& A, double tol) {
+  REQUIRE((A.transpose() * A - Mat3::Identity()).cwiseAbs().maxCoeff() <= tol);
+  REQUIRE_THAT(A.determinant(), WithinAbs(1.0, tol));
+}
+}  // namespace
+
+TEST_CASE("hard 1: exactly degenerate tensors (symmetric top, cube, sphere)") {
+  const Mat3 R = Eigen::AngleAxisd(0.9, Vec3(1, 1, -2).normalized()).toRotationMatrix();
+  struct Case {
+    const char* name;
+    Vec3 moments;
+  };
+  for (const Case& c : {Case{"symmetric top", Vec3(1, 1, 3)}, Case{"cube", Vec3(2, 2, 2)},
+                        Case{"sphere", Vec3(0.4, 0.4, 0.4)}, Case{"prolate", Vec3(1, 3, 3)}}) {
+    INFO(c.name);
+    const Mat3 I = R * c.moments.asDiagonal() * R.transpose();
+    const PrincipalAxes pa = principal_axes(I);
+    // Rotating the tensor rounds each entry (a few eps I_max); the solver's backward error is
+    // ~eps I_max; the snapped moments sit within 4 eps I_max of the exact ones.
+    const double Imax = c.moments.maxCoeff();
+    for (int i = 0; i < 3; ++i) {
+      REQUIRE_THAT(pa.moments[i], WithinAbs(c.moments[i], 4 * kEps * Imax));
+    }
+    require_orthonormal_right_handed(pa.axes, 8 * kEps);
+    // The degenerate pair is reported and its basis is the documented one, the same each time.
+    REQUIRE(pa.degeneracy != Degeneracy::none);
+    const PrincipalAxes again = principal_axes(I);
+    REQUIRE(again.axes == pa.axes);
+  }
+}
+
+TEST_CASE("hard 2: nearly degenerate, lambda2 = lambda1 (1 + 1e-12): no spurious split") {
+  const Mat3 R = Eigen::AngleAxisd(0.4, Vec3(2, -1, 1).normalized()).toRotationMatrix();
+  const Vec3 l(1.0, 1.0 + 1e-12, 3.0);
+  const PrincipalAxes pa = principal_axes(R * l.asDiagonal() * R.transpose());
+  // The input's split is 1e-12; the tensor carries ~4 eps of rounding: the computed split
+  // equals 1e-12 within 8 eps (4 eps on each moment), not more and not snapped to zero
+  // (1e-12 > 16 eps lambda3 = 1.1e-14, the degeneracy tolerance).
+  REQUIRE(pa.degeneracy == Degeneracy::none);
+  REQUIRE_THAT(pa.moments[1] - pa.moments[0], WithinAbs(1e-12, 8 * kEps * l.maxCoeff()));
+  require_orthonormal_right_handed(pa.axes, 8 * kEps);
+}
+
+TEST_CASE("hard 3: badly scaled moments and extreme units") {
+  const Mat3 R = Eigen::AngleAxisd(1.1, Vec3(0.3, 1, -0.2).normalized()).toRotationMatrix();
+  const Vec3 l(1e-6, 1.0, 1e6);
+  const PrincipalAxes pa = principal_axes(R * l.asDiagonal() * R.transpose());
+  // Absolute accuracy is relative to the largest moment (the tensor's entries carry
+  // eps * 1e6): 4 eps lambda_max each; the smallest moment is known to 4 eps * 1e6 = 1e-9.
+  for (int i = 0; i < 3; ++i) REQUIRE_THAT(pa.moments[i], WithinAbs(l[i], 4 * kEps * 1e6));
+  require_orthonormal_right_handed(pa.axes, 8 * kEps);
+  // m = 1e30 kg, a = 1e-10 m: the box formula m (b^2 + c^2) / 12 stays in range (1e10) and
+  // relative accuracy is unchanged by the units (each operation rounds once).
+  const Mat3 box = shape_inertia_about_cm(ShapeKind::box, 1e30, {1e-10, 2e-10, 3e-10});
+  REQUIRE_THAT(box(0, 0), WithinRel(1e30 * (4e-20 + 9e-20) / 12, 4 * kEps));
+  REQUIRE_THAT(box(2, 2), WithinRel(1e30 * (1e-20 + 4e-20) / 12, 4 * kEps));
+  const PrincipalAxes pb = principal_axes(box);
+  REQUIRE(pb.moments.allFinite());
+  REQUIRE_THAT(pb.moments[2], WithinRel(1e30 * 13e-20 / 12, 4 * kEps));
+}
+
+TEST_CASE("hard 4: alpha = 1e-8 and pi/2 - 1e-8 in the symmetric-top answers") {
+  const double I1 = 2.0, I3 = 3.0, w = 5.0;
+  // Small alpha: theta_L = atan(I1 tan(alpha) / I3) = (I1/I3) alpha (1 + O(alpha^2)); the
+  // series' next term is alpha^2 ~ 1e-16 relative: 1e-13 bounds rounding and truncation.
+  const SymmetricTop small{I1, I3, w, 1e-8};
+  REQUIRE_THAT(small.angle_L_e3(), WithinRel(I1 / I3 * 1e-8, 1e-13));
+  REQUIRE_THAT(small.max_angle(), WithinRel(2 * I1 / I3 * 1e-8, 1e-13));
+  // Near pi/2: theta_L -> pi/2 - (I3/I1) (pi/2 - alpha); w3 = w sin(1e-8) -> w 1e-8.
+  const double d = 1e-8;
+  const SymmetricTop steep{I1, I3, w, M_PI / 2 - d};
+  REQUIRE_THAT(M_PI / 2 - steep.angle_L_e3(), WithinRel(I3 / I1 * d, 1e-7));
+  REQUIRE_THAT(steep.omega3(), WithinRel(w * d, 1e-7));
+  for (const auto& t : {small, steep}) {
+    for (const double v : {t.angle_L_e3(), t.angle_omega_L(), t.omega_body_rate(),
+                           t.omega_space_rate(), t.max_angle(), t.t_max()}) {
+      REQUIRE(std::isfinite(v));
+    }
+  }
+}
+
+TEST_CASE(
+    "hard 5: an almost spherical top, lambda3 - lambda1 = 1e-12: rates without cancellation") {
+  // I3 - I1 of two doubles within a factor 2 is exact (Sterbenz), so Omega_body is the exact
+  // (I3 - I1)/I1 w3 rounded a few times: 4 eps relative, not the 1e-4 a subtraction of
+  // rounded rates (w3 I3/I1 - w3) would leave.
+  const double I1 = 1.0, I3 = 1.0 + 1e-12, w = 3.0, alpha = 0.3;
+  const SymmetricTop top{I1, I3, w, alpha};
+  const double exact = (I3 - I1) / I1 * w * std::cos(alpha);
+  REQUIRE_THAT(top.omega_body_rate(), WithinRel(exact, 4 * kEps));
+  // And the exact solver's symmetric branch turns the body cone at that rate: period 2 pi / c.
+  const Vec3 m0 = Vec3(I1, I1, I3).cwiseProduct(top.omega0());
+  const ExactFreeMotion motion(Vec3(I1, I1, I3), m0, Quat::Identity());
+  REQUIRE_THAT(motion.period_s(), WithinRel(2 * M_PI / std::abs(exact), 8 * kEps));
+}
+
+TEST_CASE("hard 6: near the separatrix, k'^2 from 1e-4 to 1e-16, against 50 digits") {
+  const Vec3 I(1, 2, 3);
+  for (const double s : {1e-2, 1e-4, 1e-6, 1e-8}) {
+    const Vec3 m0(s, 1, 2 * s);  // circles e3; k'^2 ~ 4 s^2 / 3
+    const ExactFreeMotion exact(I, m0, Quat::Identity());
+    const bench::MpMotion ref(I, m0);
+    const double P = ref.period(), quarter = ref.first_K_time();
+    std::vector<double> times;
+    for (int i = 0; i <= 20; ++i) times.push_back(2 * P * i / 20);
+    for (const double d : {-1e-9, 0.0}) times.push_back(quarter + d);  // dn near u = K
+    for (const double t : times) {
+      // The measured condition at t: how far m(t) moves when one component of m0 moves by
+      // eps |m0| (the input's own rounding). The answer may be off by that much, plus the
+      // evaluation's few eps: 8 eps |m0| (1 + condition).
+      double cond = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        Vec3 m = m0;
+        m[i] += kEps * m0.norm();
+        cond = std::max(
+            cond,
+            (ExactFreeMotion(I, m, Quat::Identity()).momentum_at(t) - exact.momentum_at(t)).norm() /
+                (kEps * m0.norm()));
+      }
+      INFO("s = " << s << ", t = " << t << ", condition " << cond);
+      REQUIRE((exact.momentum_at(t) - ref.m_at(t)).norm() <= 8 * kEps * m0.norm() * (1 + cond));
+    }
+  }
+}
+
+TEST_CASE("hard 7: exactly on the separatrix and exactly on a principal axis") {
+  const Vec3 I(1, 2, 3);
+  // On a principal axis (each): steady rotation, no elliptic functions, no division by zero.
+  for (int axis = 0; axis < 3; ++axis) {
+    const Vec3 m0 = 2.0 * Vec3::Unit(axis);
+    const ExactFreeMotion motion(I, m0, Quat::Identity());
+    REQUIRE(motion.kind() == ExactFreeMotion::Kind::steady);
+    const FreeBodyState s = motion.at(7.0);
+    REQUIRE(s.m_B == m0);
+    REQUIRE(s.q_BtoS.coeffs().allFinite());
+  }
+  // On the separatrix: D = m3^2 (I3-I2)/I3 - m1^2 (I2-I1)/I1 = 0 exactly for m1 = 1, m3 = 3
+  // (9/3 - 1 * 1 = 2... scaled: m3^2/3 = m1^2 -> m1 = 1, m3 = sqrt 3 is not exact; use I with
+  // (I3-I2)/I3 = 1/4 and (I2-I1)/I1 = 1: I = (1, 2, 8/3)? (8/3 - 2)/(8/3) = 1/4; m3 = 2 m1.
+  const Vec3 J(1.0, 2.0, 8.0 / 3.0);
+  const Vec3 m0(0.25, 1.0, 0.5);
+  const ExactFreeMotion sep(J, m0, Quat::Identity());
+  REQUIRE(sep.kc2() >= 0.0);
+  REQUIRE(sep.kc2() <= 1e-15);  // 8/3 rounds: D is a few eps, not exactly 0
+  for (const double t : {0.0, 1.0, 10.0, 100.0, 1000.0}) {
+    const FreeBodyState s = sep.at(t);
+    REQUIRE(s.m_B.allFinite());
+    REQUIRE(s.q_BtoS.coeffs().allFinite());
+    REQUIRE_THAT(s.m_B.norm(), WithinRel(m0.norm(), 16 * kEps));
+  }
+}
+
+TEST_CASE("hard 8: Euler angles at theta = 0, pi and 1e-12 from them") {
+  for (const EulerConvention c : {EulerConvention::zyz, EulerConvention::zxz}) {
+    for (const double theta : {0.0, 1e-12, M_PI - 1e-12, M_PI}) {
+      for (const double phi : {-2.0, 0.5, 3.0}) {
+        for (const double psi : {-1.0, 0.0, 2.5}) {
+          const Mat3 R = rotation_from_euler(Vec3(phi, theta, psi), c);
+          const Vec3 back = euler_from_rotation(R, c);
+          INFO("theta " << theta << " phi " << phi << " psi " << psi);
+          REQUIRE(back.allFinite());
+          // At and next to gimbal lock only phi +- psi is defined: compare rotations. Each
+          // angle passes through atan2 of entries with eps errors; 256 eps bounds the matrix
+          // difference (measured < 8 eps).
+          REQUIRE((rotation_from_euler(back, c) - R).cwiseAbs().maxCoeff() <= 256 * kEps);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("hard 9: the sleeping top on either side of its threshold, 1e-10 apart") {
+  const double M = 0.5, g = 9.81, l = 0.08, I1 = 0.0035125;
+  const double threshold = 2 * std::sqrt(M * g * l * I1);
+  // 1e-10 relative is ~5e5 eps: far above the few-eps error of the factored discriminant,
+  // while p^2 - 4 M g l I1 in plain form would still get it right here; at 1e-15 only the
+  // factored form gives the sign of (|p| - c) exactly.
+  for (const double rel : {1e-10, 1e-14}) {
+    REQUIRE(sleeping_top_is_stable(threshold * (1 + rel), M, g, l, I1));
+    REQUIRE_FALSE(sleeping_top_is_stable(threshold * (1 - rel), M, g, l, I1));
+    REQUIRE(sleeping_top_is_stable(-threshold * (1 + rel), M, g, l, I1));  // either sense of spin
+  }
+  REQUIRE_THROWS_AS(sleeping_top_is_stable(1.0, -M, g, l, I1), std::invalid_argument);
+}
+
+TEST_CASE("hard 10: a million splitting steps keep |L| and the attitude to round-off") {
+  const FreeBody body{Vec3(2.0, 1.0, 2.0 / 3.0)};
+  const Vec3 m0(std::cos(1.1), 0.0, std::sin(1.1));
+  FreeBodyState s{m0, Quat::Identity()};
+  std::int64_t subflows = 0;
+  const std::int64_t steps = 1000000;
+  split_free_body(body, s, 0.01, steps, SplittingOrder::strang2, &subflows);
+  // Each sub-flow is an exact rotation rounded: errors of ~eps add like a random walk, so
+  // 4 eps sqrt(sub-flows) bounds |L| and the rotation matrix's orthonormality.
+  const double walk = 4 * kEps * std::sqrt(static_cast<double>(subflows));
+  REQUIRE_THAT(s.m_B.norm(), WithinAbs(m0.norm(), walk));
+  const Mat3 R = s.q_BtoS.toRotationMatrix();
+  REQUIRE((R.transpose() * R - Mat3::Identity()).cwiseAbs().maxCoeff() <= walk);
+  REQUIRE(((s.q_BtoS * s.m_B) - m0).norm() <= walk);
+}
