@@ -51,9 +51,9 @@ void evaluate_targets(Report& r) {
   r.targets.push_back({"exact w(t) / one Boost jacobi_elliptic call",
                        w > 0 && boost > 0 ? w / boost : -1, 0.25, "x"});
   for (const auto& c : r.components) {
-    if (c.method == "wobble jacobi_sncndn(u, k'^2)") {
+    if (c.method == "wobble exact w(t) (m(t) / I)") {
       r.targets.push_back(
-          {"elliptic functions' error, k'^2 down to 1e-16, u near K", c.max_error, 4.0, "eps"});
+          {"exact w(t) relative error, k'^2 to 1e-16, t until u = K", c.max_error, 4.0, "eps"});
     }
   }
   r.targets.push_back(

@@ -14,12 +14,21 @@ void FreeBody::validate() const {
 }
 
 namespace {
-// The exact flow of T_i = m_i^2 / (2 I_i) for time h.
+// The exact flow of T_i = m_i^2 / (2 I_i) for time h: m turns about e_i by -theta and the
+// body by +theta. Written as a plane rotation of the two other components of m and a product
+// with the quaternion (cos(theta/2), sin(theta/2) e_i), not through a 3x3 rotation matrix: fewer
+// roundings per sub-flow, so |m| drifts less over millions of them, and it is faster.
 void subflow(const FreeBody& body, FreeBodyState& s, int i, double h) {
   const double theta = s.m_B[i] / body.I_kgm2[i] * h;  // m_i is constant along this flow
-  const Eigen::AngleAxisd turn(theta, Vec3::Unit(i));
-  s.m_B = turn.inverse() * s.m_B;    // dm/dt = m x (w_i e_i)
-  s.q_BtoS = s.q_BtoS * Quat(turn);  // the body turns by +theta about e_i
+  const int j = (i + 1) % 3, k = (i + 2) % 3;
+  const double c = std::cos(theta), sn = std::sin(theta);
+  const double mj = s.m_B[j], mk = s.m_B[k];
+  s.m_B[j] = std::fma(c, mj, sn * mk);  // rotation by -theta about e_i (one rounding fewer)
+  s.m_B[k] = std::fma(c, mk, -sn * mj);
+  const double ch = std::cos(0.5 * theta), sh = std::sin(0.5 * theta);
+  Quat turn(ch, 0.0, 0.0, 0.0);
+  turn.vec()[i] = sh;
+  s.q_BtoS = s.q_BtoS * turn;
 }
 
 void strang(const FreeBody& body, FreeBodyState& s, double h, std::int64_t& count) {

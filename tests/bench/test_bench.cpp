@@ -1,0 +1,76 @@
+// The bench's machinery (not its timings, which belong to `wobble bench`): the sweeps cover
+// every method and peer, errors are measured against the right reference, the equal-error
+// ratio interpolates correctly, and the targets are judged as stated.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "bench/report.hpp"
+#include "render/bench_output.hpp"
+
+using namespace wobble;
+using namespace wobble::bench;
+using Catch::Matchers::WithinRel;
+
+namespace {
+const TimingPlan kOnce{1, 0.0};  // one run per point: these tests check values, not speed
+}
+
+TEST_CASE("the P1 sweep runs every method and both peers, and tighter is more accurate") {
+  const BenchProblem p1 = bench_problems().at(0);
+  const std::vector<Run> runs = work_precision(p1, true, kOnce);
+  for (const std::string m :
+       {"exact", "dopri5", "rkf78", "odeint_dopri5", "odeint_rkf78", "rk4", "split2", "split4"}) {
+    INFO(m);
+    REQUIRE(std::any_of(runs.begin(), runs.end(), [&](const Run& r) { return r.method == m; }));
+  }
+  double last = 1.0;
+  for (const auto& r : runs) {
+    if (r.method == "exact") REQUIRE(r.error == 0.0);  // it is the reference
+    if (r.method != "rkf78") continue;
+    INFO(r.setting << ": " << r.error);
+    REQUIRE(r.error < last);  // the quick sweep's tolerances fall by 1e3 or more
+    last = r.error;
+    REQUIRE(r.evals > 0);
+  }
+  // Splitting keeps |L| to round-off at every step size: 4 eps sqrt(sub-flows).
+  for (const auto& r : runs) {
+    if (r.method.rfind("split", 0) == 0) {
+      REQUIRE(r.L_error <= 4 * 2.2e-16 * std::sqrt(static_cast<double>(r.evals)));
+    }
+  }
+}
+
+TEST_CASE("time_ratio_at interpolates log-log between the bracketing points") {
+  // Curve a: error 1e-6 at 1 s, 1e-10 at 10 s -> at 1e-8, sqrt(10) s. Curve b: 2x slower.
+  std::vector<Run> runs;
+  for (const auto& [m, scale] : {std::pair{"a", 1.0}, std::pair{"b", 2.0}}) {
+    runs.push_back({"P", m, false, "", 1e-6, 0, 0, 1, 1.0 * scale});
+    runs.push_back({"P", m, false, "", 1e-10, 0, 0, 1, 10.0 * scale});
+  }
+  REQUIRE_THAT(time_ratio_at(runs, "P", "a", "b", 1e-8), WithinRel(0.5, 1e-12));
+  REQUIRE(time_ratio_at(runs, "P", "a", "b", 1e-12) < 0);  // outside both curves
+  REQUIRE(time_ratio_at(runs, "Q", "a", "b", 1e-8) < 0);   // another problem
+}
+
+TEST_CASE("targets are judged as the issue states them") {
+  Report r;
+  r.components.push_back({"elliptic", "wobble exact w(t) (m(t) / I)", "", 2.0, "eps", 50});
+  r.components.push_back(
+      {"elliptic", "Boost.Math jacobi_elliptic(k, u), default policy", "", 1e15, "eps", 1000});
+  r.components.push_back({"process", "wobble solve x", "", -1, "", 60e6});  // 60 ms
+  r.long_run = {1e-14, 1e-5, 1.5e-5, 1000000};
+  evaluate_targets(r);
+  const auto find = [&](const std::string& start) {
+    for (const auto& t : r.targets) {
+      if (t.what.rfind(start, 0) == 0) return t;
+    }
+    throw std::logic_error("no target " + start);
+  };
+  REQUIRE(find("exact w(t) / one Boost").met());                   // 50 / 1000 = 0.05 <= 0.25
+  REQUIRE(find("exact w(t) relative error").met());                // 2 <= 4 eps
+  REQUIRE(find("P2: splitting |L|").met());                        // 1e-14 <= 1e-13
+  REQUIRE(find("P2: splitting energy").met());                     // 1.5 <= 2
+  REQUIRE_FALSE(find("slowest wobble solve").met());               // 60 ms > 50 ms
+  REQUIRE_FALSE(find("P1: best adaptive / odeint_dopri5").met());  // not measured
+  REQUIRE_THAT(render_bench(r, "markdown"), Catch::Contains("| target | measured | limit |"));
+}
