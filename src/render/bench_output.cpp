@@ -11,6 +11,26 @@
 namespace wobble {
 
 namespace {
+// A Markdown table cell: '|' would end the cell.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+// The same line style for a method in every panel.
+int style_of(const std::string& method) {
+  static const char* order[] = {"exact",        "dopri5", "rkf78",  "odeint_dopri5",
+                                "odeint_rkf78", "rk4",    "split2", "split4"};
+  for (int i = 0; i < 8; ++i) {
+    if (method == order[i]) return i + 1;
+  }
+  return 9;
+}
+
 std::string us(double s) {
   return fmt::format("{:.3g}", s * 1e6);
 }
@@ -95,7 +115,7 @@ std::string components(const BenchReport& r, bool markdown) {
     const std::string e = c.max_error < 0 ? "-" : fmt::format("{:.3g}", c.max_error);
     const std::string t = c.group == "process" ? fmt::format("{:.3g} ms", c.ns_per_call * 1e-6)
                                                : fmt::format("{:.3g} ns", c.ns_per_call);
-    out += markdown ? fmt::format("| {} | {} | {} | {} |\n", c.method, c.cases, e, t)
+    out += markdown ? fmt::format("| {} | {} | {} | {} |\n", cell(c.method), cell(c.cases), e, t)
                     : fmt::format("  {:<48} {:<38} {:>9} {:>11}\n", c.method, c.cases, e, t);
   }
   const auto& l = r.long_run;
@@ -113,10 +133,10 @@ std::string targets(const BenchReport& r, bool markdown) {
     const std::string m =
         t.measured < 0 ? "not measured" : fmt::format("{:.3g} {}", t.measured, t.unit);
     const std::string verdict = t.met() ? "met" : "missed";
-    out += markdown
-               ? fmt::format("| {} | {} | {:g} {} | {} |\n", t.what, m, t.limit, t.unit, verdict)
-               : fmt::format("  {:<62} {:>16}  limit {:g} {}  {}\n", t.what, m, t.limit, t.unit,
-                             verdict);
+    out += markdown ? fmt::format("| {} | {} | {:g} {} | {} |\n", cell(t.what), m, t.limit, t.unit,
+                                  verdict)
+                    : fmt::format("  {:<62} {:>16}  limit {:g} {}  {}\n", t.what, m, t.limit,
+                                  t.unit, verdict);
   }
   return out;
 }
@@ -210,8 +230,10 @@ void write_bench_plot(const BenchReport& r, const std::filesystem::path& out) {
               data += fmt::format("{:.6e} {:.6e}\n", run.time_s, run.error);
               peer = run.peer;
             }
-            g += fmt::format("{}'-' using 1:2 with linespoints lw 2 {} title \"{}\" noenhanced",
-                             i ? ", " : "", peer ? "dt 2" : "dt 1", gnuplot_quote(methods[i]));
+            g += fmt::format(
+                "{}'-' using 1:2 with linespoints lw 2 lt {} {} title \"{}\" noenhanced",
+                i ? ", " : "", style_of(methods[i]), peer ? "dt 2" : "dt 1",
+                gnuplot_quote(methods[i]));
             (void)data;
           }
           g += "\n";
