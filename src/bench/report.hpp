@@ -32,6 +32,7 @@ struct Report {
   std::vector<BenchProblem> problems;
   std::vector<Run> runs;
   std::vector<ComponentRow> components;
+  std::vector<DriftRow> drift;  ///< P2: errors against time
   LongRun long_run;
   std::vector<Target> targets;
 };

@@ -37,7 +37,8 @@ std::vector<BenchProblem> bench_problems() {
   p4.id = "P4";
   p4.description =
       "heavy top: I = (3.5, 3.5, 0.625) g m^2 about the pivot, M = 0.5 kg, l = 8 cm, spin 150 "
-      "rad/s, tilt 30 deg, T = 2";
+      "rad/s, tilt 30 deg, T = 2; reference: the tightest run of the best method, Fehlberg 7(8) "
+      "at tolerance 1e-14";
   p4.model.I_P = Vec3(0.0035125, 0.0035125, 0.000625);
   p4.model.gravity = true;
   p4.model.mass_kg = 0.5;
@@ -188,6 +189,45 @@ std::vector<Run> work_precision(const BenchProblem& p, bool quick, const TimingP
     }
   }
   return runs;
+}
+
+std::vector<DriftRow> drift_table(bool quick) {
+  const BenchProblem p = bench_problems().at(1);  // P2
+  const std::vector<double> checkpoints =
+      quick ? std::vector<double>{10, 100, 1000} : std::vector<double>{10, 100, 1000, 10000};
+  const double E0 = p.model.kinetic(p.m0), L0 = p.m0.norm();
+  std::vector<DriftRow> out;
+  const auto record = [&](DriftRow& row, const Vec3& m) {
+    row.energy_error.push_back(std::abs(p.model.kinetic(m) - E0) / E0);
+    row.L_error.push_back(std::abs(m.norm() - L0) / L0);
+  };
+  for (const auto& [method, tol] :
+       {std::pair{RkMethod::dopri5, 1e-10}, std::pair{RkMethod::rkf78, 1e-10}}) {
+    DriftRow row{name_of(method), fmt::format("tol {:.0e}", tol), checkpoints, {}, {}};
+    RungeKutta rk(p.model, method, tol, L0);
+    State7 y = pack(p.m0, p.q0);
+    double t = 0;
+    for (const double c : checkpoints) {
+      rk.advance(y, t, c);
+      t = c;
+      record(row, momentum_of(y));
+    }
+    out.push_back(row);
+  }
+  for (const auto& [name, order] : {std::pair{"split2", SplittingOrder::strang2},
+                                    std::pair{"split4", SplittingOrder::yoshida4}}) {
+    DriftRow row{name, "h 0.01", checkpoints, {}, {}};
+    FreeBodyState s{p.m0, p.q0};
+    double t = 0;
+    for (const double c : checkpoints) {
+      const auto steps = static_cast<std::int64_t>(std::llround((c - t) / 0.01));
+      split_free_body(FreeBody{p.model.I_P}, s, 0.01, steps, order);
+      t = c;
+      record(row, s.m_B);
+    }
+    out.push_back(row);
+  }
+  return out;
 }
 
 double time_ratio_at(const std::vector<Run>& runs, const std::string& problem, const std::string& a,

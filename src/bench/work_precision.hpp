@@ -47,6 +47,14 @@ struct Run {
 /// Every method of wobble (and the peers) on problem p; `quick` sweeps fewer points.
 std::vector<Run> work_precision(const BenchProblem& p, bool quick, const TimingPlan& plan);
 
+/// P2 against time: the relative energy and |L| errors at t = 10, 100, 1000 (and 1e4 unless
+/// quick) for the adaptive pairs at tolerance 1e-10 and the splittings at h = 0.01.
+struct DriftRow {
+  std::string method, setting;
+  std::vector<double> times, energy_error, L_error;
+};
+std::vector<DriftRow> drift_table(bool quick);
+
 /// The time method `a` needs for error `target` on `problem`, over the time `b` needs, each
 /// interpolated log-log along its curve; negative if either curve does not reach the target.
 double time_ratio_at(const std::vector<Run>& runs, const std::string& problem, const std::string& a,

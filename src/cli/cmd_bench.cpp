@@ -35,6 +35,7 @@ int run_bench(const BenchOptions& opt) {
                                          opt.quick ? 3 : 7)}) {
     report.components.insert(report.components.end(), rows.begin(), rows.end());
   }
+  report.drift = bench::drift_table(opt.quick);
   report.long_run = bench::long_splitting_run(opt.quick);
   bench::evaluate_targets(report);
   fmt::print("{}", render_bench(report, opt.format));

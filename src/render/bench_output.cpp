@@ -118,6 +118,18 @@ std::string components(const BenchReport& r, bool markdown) {
     out += markdown ? fmt::format("| {} | {} | {} | {} |\n", cell(c.method), cell(c.cases), e, t)
                     : fmt::format("  {:<48} {:<38} {:>9} {:>11}\n", c.method, c.cases, e, t);
   }
+  if (!r.drift.empty()) {
+    std::string head = "P2 against time, relative energy error (|L| error) at t =";
+    for (const double t : r.drift.front().times) head += fmt::format(" {:g}", t);
+    out += "\n" + head + ":\n" + (markdown ? "\n" : "");
+    for (const auto& d : r.drift) {
+      std::string line = fmt::format("{} {}:", d.method, d.setting);
+      for (std::size_t i = 0; i < d.times.size(); ++i) {
+        line += fmt::format(" {:.1e} ({:.1e})", d.energy_error[i], d.L_error[i]);
+      }
+      out += (markdown ? "- " : "  ") + line + "\n";
+    }
+  }
   const auto& l = r.long_run;
   out += fmt::format(
       "\nP2 long run, Strang splitting h = 0.01, {} steps: |L| relative error {:.1e} at the end; "

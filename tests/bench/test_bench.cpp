@@ -74,3 +74,17 @@ TEST_CASE("targets are judged as the issue states them") {
   REQUIRE_FALSE(find("P1: best adaptive / odeint_dopri5").met());  // not measured
   REQUIRE_THAT(render_bench(r, "markdown"), Catch::Contains("| target | measured | limit |"));
 }
+
+TEST_CASE("P2 against time: Runge-Kutta energy error drifts, splitting's does not") {
+  const std::vector<DriftRow> rows = drift_table(true);  // t = 10, 100, 1000
+  for (const auto& d : rows) {
+    INFO(d.method << ": " << d.energy_error[0] << " -> " << d.energy_error[2]);
+    REQUIRE(d.energy_error.size() == 3);
+    if (d.method == "dopri5" || d.method == "rkf78") {
+      REQUIRE(d.energy_error[2] >= 10 * d.energy_error[0]);  // 100x the time: linear growth
+    } else {
+      REQUIRE(d.energy_error[2] <= 10 * d.energy_error[0]);  // bounded oscillation
+      REQUIRE(d.L_error[2] <= 1e-13);                        // |L| to round-off
+    }
+  }
+}
