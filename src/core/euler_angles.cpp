@@ -1,6 +1,7 @@
 #include "core/euler_angles.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace wobble {
@@ -36,7 +37,10 @@ Vec3 euler_from_rotation(const Mat3& R, EulerConvention c) {
       R(2, 2) >= 0;  // theta <= pi/2: the sum is well conditioned, else the difference
   const double sum = std::atan2(R(1, 0) - R(0, 1), R(0, 0) + R(1, 1));
   const double diff = std::atan2(-(R(1, 0) + R(0, 1)), -(R(0, 0) - R(1, 1)));
-  if (s == 0.0) {
+  // A tilt of a few eps is rounding noise (a quaternion's product, say): phi alone would be noise
+  // too, so take it as gimbal lock; the rotation changes by at most that tilt.
+  constexpr double kLocked = 8 * std::numeric_limits<double>::epsilon();
+  if (s <= kLocked) {
     // Gimbal lock: only phi + psi (theta = 0) or phi - psi (theta = pi) is defined; psi = 0.
     // At theta = pi the z-x-z block is [[cos, sin], [sin, -cos]] of phi - psi, not z-y-z's.
     const double phi = upper                       ? sum
