@@ -70,8 +70,8 @@ TEST_CASE("auto picks the closed form, the exact solution, or an adaptive pair, 
   REQUIRE(c.method == SimMethod::rkf78);
   REQUIRE_THAT(c.reason, Catch::Contains("Fehlberg"));
   SceneSetup loose = top;
-  loose.tolerance = 1e-4;
-  REQUIRE(choose_method(loose, "auto").method == SimMethod::dopri5);
+  loose.tolerance = 1e-4;  // Fehlberg is cheaper at every tolerance measured
+  REQUIRE(choose_method(loose, "auto").method == SimMethod::rkf78);
 }
 
 TEST_CASE("closed form, exact solver, integrators and splittings agree on a symmetric body") {
