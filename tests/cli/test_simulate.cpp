@@ -1,4 +1,5 @@
 // `wobble simulate` and `solve --cross-check` as a user runs them.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -96,4 +97,26 @@ TEST_CASE("solve --cross-check compares the closed forms with a simulation") {
     }
   }
   REQUIRE(run_wobble({"solve", "taylor-10-35", "--cross-check"}).exit_code == 2);
+}
+
+TEST_CASE("bench --quick (the CI smoke run) reports every problem, component and target") {
+  const fs::path svg = scratch_dir() / "bench" / "wp.svg";
+  fs::create_directories(svg.parent_path());
+  fs::remove(svg);
+  const RunResult r = run_wobble({"bench", "--quick", "--format", "json", "--plot", svg.string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  for (const std::string p : {"P1", "P2", "P3", "P4"}) {
+    CHECK(std::any_of(j["runs"].begin(), j["runs"].end(),
+                      [&](const auto& run) { return run["problem"] == p; }));
+  }
+  for (const std::string g : {"elliptic", "principal axes", "process"}) {
+    CHECK(std::any_of(j["components"].begin(), j["components"].end(),
+                      [&](const auto& c) { return c["group"] == g; }));
+  }
+  // Timings are not judged here (CI machines are noisy); that every target was measured is.
+  REQUIRE(j["targets"].size() == 8);
+  for (const auto& t : j["targets"]) CHECK(t["measured"].template get<double>() >= 0.0);
+  REQUIRE_THAT(slurp(svg), Catch::Contains("<svg") && Catch::Contains("odeint_rkf78"));
 }
