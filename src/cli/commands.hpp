@@ -39,6 +39,15 @@ struct SimulateOptions {
 void setup_simulate(CLI::App& app, SimulateOptions& opt);
 int run_simulate(const SimulateOptions& opt);
 
+struct CheckOptions {
+  std::string problem, part, answer, name;
+  std::vector<std::string> sets;
+  double tolerance = 0.01;
+  std::optional<int> sigfigs;
+};
+void setup_check(CLI::App& app, CheckOptions& opt);
+int run_check(const CheckOptions& opt);  ///< 0 right, 1 wrong
+
 struct BenchOptions {
   bool quick = false;
   std::string format = "text";

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   KeysOptions keys_opt;
   SimulateOptions simulate_opt;
   BenchOptions bench_opt;
+  CheckOptions check_opt;
   CLI::App* list = app.add_subcommand("list", "List the problems with their titles");
   CLI::App* solve = app.add_subcommand("solve", "Print the worked key of a problem");
   CLI::App* keys = app.add_subcommand("keys", "Check or update the golden keys in solutions/");
@@ -32,15 +33,17 @@ int main(int argc, char** argv) {
   CLI::App* bench = app.add_subcommand(
       "bench", "Measure what accuracy costs: work-precision of every method against peers");
   setup_bench(*bench, bench_opt);
+  CLI::App* check = app.add_subcommand("check", "Check your answer to one part of a problem");
+  setup_check(*check, check_opt);
 
   // CLI11 would only say "a subcommand is required"; name the word the user typed instead.
   const auto known =
       app.get_subcommands([&](CLI::App* sub) { return argc > 1 && sub->get_name() == argv[1]; });
   if (argc > 1 && argv[1][0] != '-' && known.empty()) {
-    fmt::print(
-        stderr,
-        "wobble: unknown command '{}' (commands: list, solve, simulate, bench, keys; see --help)\n",
-        argv[1]);
+    fmt::print(stderr,
+               "wobble: unknown command '{}' (commands: list, solve, check, simulate, bench, keys; "
+               "see --help)\n",
+               argv[1]);
     return kExitBadInput;
   }
   try {
@@ -62,6 +65,7 @@ int main(int argc, char** argv) {
     if (keys->parsed()) return run_keys(keys_opt);
     if (simulate->parsed()) return run_simulate(simulate_opt);
     if (bench->parsed()) return run_bench(bench_opt);
+    if (check->parsed()) return run_check(check_opt);
   } catch (const wobble::InputError& e) {
     fmt::print(stderr, "wobble: {}\n", e.what());
     return kExitBadInput;

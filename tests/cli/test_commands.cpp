@@ -185,3 +185,20 @@ TEST_CASE("solve --figure draws the sketch with gnuplot, never overwrites withou
   REQUIRE(none.exit_code == 2);
   REQUIRE_THAT(none.err, Catch::Contains("has no sketch"));
 }
+
+TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback") {
+  const RunResult right =
+      run_wobble({"check", "taylor-10-35", "a", "--answer", "[[10,0,0],[0,6,1],[0,1,6]] kg m^2"});
+  REQUIRE(right.exit_code == 0);
+  REQUIRE(right.out == "correct: I\n");
+  const RunResult wrong =
+      run_wobble({"check", "taylor-10-35", "a", "--answer", "[[10,0,0],[0,6,-1],[0,-1,6]]"});
+  REQUIRE(wrong.exit_code == 1);
+  REQUIRE_THAT(wrong.out, Catch::StartsWith("incorrect: I\n") &&
+                              Catch::Contains("products of inertia have the wrong sign"));
+  REQUIRE(wrong.err.empty());
+  // At values not in the repository, symbolically.
+  REQUIRE(run_wobble({"check", "flying-plate", "a", "--name", "I0", "--answer", "m*R^2/4", "--set",
+                      "m=0.35", "--set", "R=0.15"})
+              .exit_code == 0);
+}

@@ -1,0 +1,50 @@
+#pragma once
+/// @file
+/// Judging a student's answer against the key (issue 6's `wobble check`).
+///
+/// An answer is a number, a vector "[x, y, z]" or a matrix "[[..], [..], [..]]", each optionally
+/// followed by a unit (units.hpp; none means SI), or an expression in the problem's symbols
+/// ("m*a^2/6"). Numbers are right within a relative tolerance (1% by default) of the key's
+/// value, or, with sigfigs N, when the key rounds to them at N significant digits; a zero is
+/// judged with an absolute tolerance: the tolerance times the largest value of the same unit in
+/// the key. Vectors and matrices are judged entry by entry and the wrong entries named; a
+/// principal axis is right up to sign, principal moments in any order, and an axis of a
+/// degenerate pair may be any unit vector of its plane. Expressions are right when they equal
+/// the key's closed form at the set values and at three more parameter points (each parameter
+/// scaled by 1.13, 0.87, 1.29 in turn), to 1e-9.
+/// A wrong answer gets the likely mistake when it matches one (a reversed sign, products of
+/// inertia with the wrong sign, degrees for radians, rev/s for rad/s, a factor 2, 4 or 12,
+/// another answer of the key such as the body-frame vector for the space-frame one), else
+/// the size of its error.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solvers/key.hpp"
+#include "symbolic/expression.hpp"
+
+namespace wobble::check {
+
+struct Options {
+  double rel_tol = 0.01;
+  std::optional<int> sigfigs;
+};
+
+struct Verdict {
+  bool correct = false;
+  std::string line;                   ///< one line: "correct" or "incorrect: ..."
+  std::vector<std::string> feedback;  ///< more lines
+};
+
+struct Context {
+  const Key& key;
+  const sym::SymbolTable& table;
+  const sym::Values& values;  ///< the parameter values the key was computed at
+};
+
+/// @throws InputError for an empty or unreadable answer, a wrong shape (a vector for a number),
+///   or an unreadable unit.
+Verdict judge(const Context& ctx, const Answer& expected, const std::string& text,
+              const Options& opt);
+
+}  // namespace wobble::check

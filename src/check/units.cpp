@@ -1,0 +1,108 @@
+#include "check/units.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <map>
+
+#include "core/input_error.hpp"
+
+namespace wobble::check {
+
+namespace {
+struct Named {
+  double to_si;
+  std::array<int, 3> dim;
+  bool angle;
+};
+
+const std::map<std::string, Named>& names() {
+  static const std::map<std::string, Named> n{
+      {"kg", {1.0, {1, 0, 0}, false}},        {"g", {1e-3, {1, 0, 0}, false}},
+      {"m", {1.0, {0, 1, 0}, false}},         {"cm", {1e-2, {0, 1, 0}, false}},
+      {"mm", {1e-3, {0, 1, 0}, false}},       {"s", {1.0, {0, 0, 1}, false}},
+      {"ms", {1e-3, {0, 0, 1}, false}},       {"min", {60.0, {0, 0, 1}, false}},
+      {"h", {3600.0, {0, 0, 1}, false}},      {"rad", {1.0, {0, 0, 0}, true}},
+      {"deg", {M_PI / 180, {0, 0, 0}, true}}, {"rev", {2 * M_PI, {0, 0, 0}, true}},
+      {"J", {1.0, {1, 2, -2}, false}},        {"N", {1.0, {1, 1, -2}, false}},
+      {"Hz", {1.0, {0, 0, -1}, false}},       {"rpm", {2 * M_PI / 60, {0, 0, -1}, true}},
+  };
+  return n;
+}
+}  // namespace
+
+std::string Unit::dimension_words() const {
+  static const char* word[] = {"mass", "length", "time"};
+  std::string num, den;
+  for (int i = 0; i < 3; ++i) {
+    if (dim[i] == 0) continue;
+    std::string w = word[i];
+    const int p = std::abs(dim[i]);
+    if (p != 1) w += "^" + std::to_string(p);
+    std::string& side = dim[i] > 0 ? num : den;
+    side += (side.empty() ? "" : " x ") + w;
+  }
+  if (num.empty() && den.empty()) return angle ? "an angle" : "a pure number";
+  if (num.empty()) num = "1";
+  return den.empty() ? num : num + " / " + den;
+}
+
+Unit parse_unit(const std::string& text, const std::string& field) {
+  Unit u;
+  u.text = text;
+  const auto fail = [&](const std::string& why) -> Unit {
+    throw InputError(field + ": cannot read the unit '" + text + "': " + why +
+                     " (units: kg, g, m, cm, mm, s, ms, min, h, rad, deg, rev, J, N, Hz, rpm; "
+                     "e.g. 'kg m^2', 'rad/s')");
+  };
+  bool denominator = false, any = false;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char c = text[i];
+    if (c == ' ' || c == '*') {
+      ++i;
+      continue;
+    }
+    if (c == '/') {
+      if (denominator || !any) return fail("one '/' after a unit");
+      denominator = true;
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < text.size() && std::isalpha(static_cast<unsigned char>(text[j]))) ++j;
+    if (j == i) return fail("unexpected '" + std::string(1, c) + "'");
+    const std::string name = text.substr(i, j - i);
+    const auto it = names().find(name);
+    if (it == names().end()) return fail("unknown unit '" + name + "'");
+    int power = 1;
+    if (j < text.size() && text[j] == '^') {
+      std::size_t k = j + 1;
+      const bool neg = k < text.size() && text[k] == '-';
+      if (neg) ++k;
+      const std::size_t start = k;
+      while (k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]))) ++k;
+      if (k == start || k - start > 2) return fail("a power must be a small whole number");
+      power = std::stoi(text.substr(start, k - start)) * (neg ? -1 : 1);
+      j = k;
+    }
+    if (denominator) power = -power;
+    u.to_si *= std::pow(it->second.to_si, power);
+    for (int d = 0; d < 3; ++d) u.dim[d] += it->second.dim[d] * power;
+    u.angle = u.angle || it->second.angle;
+    any = true;
+    i = j;
+  }
+  if (!any) return fail("no unit");
+  return u;
+}
+
+bool is_unit(const std::string& text) {
+  try {
+    (void)parse_unit(text, "");
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+}  // namespace wobble::check

@@ -1,0 +1,148 @@
+// Checking answers: units, the key's own values accepted and 5% off rejected for every answer
+// of every problem, and each known mistake recognised with its message.
+#include <fmt/format.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "check/judge.hpp"
+#include "check/units.hpp"
+#include "problem/load.hpp"
+#include "problem/values.hpp"
+#include "solvers/solve.hpp"
+
+using namespace wobble;
+using namespace wobble::check;
+using Catch::Matchers::WithinRel;
+
+namespace {
+// An answer written the way a student types it: numbers to 17 digits, vectors and matrices in
+// brackets.
+std::string typed(const Value& v, double factor = 1.0) {
+  const auto num = [&](double x) { return fmt::format("{:.17g}", x * factor); };
+  if (v.shape == Value::Shape::scalar) return num(v.data[0]);
+  if (v.shape == Value::Shape::vector) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < v.data.size(); ++i) s += (i ? ", " : "") + num(v.data[i]);
+    return s + "]";
+  }
+  std::string s = "[";
+  for (std::size_t r = 0; r < v.rows; ++r) {
+    s += r ? ", [" : "[";
+    for (std::size_t c = 0; c < v.cols; ++c) s += (c ? ", " : "") + num(v.data[r * v.cols + c]);
+    s += "]";
+  }
+  return s + "]";
+}
+
+struct Fixture {
+  Problem problem;
+  sym::Values values;
+  Key key;
+  sym::SymbolTable table;
+  explicit Fixture(const std::string& id)
+      : problem(find_problem(id)),
+        values(parameter_values(problem, {})),
+        key(solve(problem, values)),
+        table(problem.symbol_table()) {}
+  Verdict check(const std::string& name, const std::string& text, Options o = {}) const {
+    for (const auto& p : key.parts) {
+      for (const auto& a : p.answers) {
+        if (a.name == name) return judge({key, table, values}, a, text, o);
+      }
+    }
+    throw std::logic_error("no answer " + name);
+  }
+};
+}  // namespace
+
+TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
+  REQUIRE_THAT(parse_unit("kg m^2", "u").to_si, WithinRel(1.0, 1e-15));
+  REQUIRE(parse_unit("kg*m^2/s", "u").dim == std::array<int, 3>{1, 2, -1});
+  REQUIRE_THAT(parse_unit("g cm^2", "u").to_si, WithinRel(1e-7, 1e-15));
+  REQUIRE_THAT(parse_unit("rev/s", "u").to_si, WithinRel(2 * M_PI, 1e-15));
+  REQUIRE(parse_unit("deg", "u").angle);
+  REQUIRE(parse_unit("J", "u").same_dimension(parse_unit("kg m^2/s^2", "u")));
+  for (const std::string bad : {"furlong", "kg^x", "m/s/s", "/s", "kg^123", "", "kg m^2 !"}) {
+    INFO(bad);
+    REQUIRE_THROWS_AS(parse_unit(bad, "--answer"), InputError);
+  }
+}
+
+TEST_CASE("every answer of every problem: the key's values are right, 5% off is wrong") {
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        INFO(p.id << " " << a.name);
+        REQUIRE(f.check(a.name, typed(a.value)).correct);
+        if (!a.symbolic.empty()) REQUIRE(f.check(a.name, a.symbolic).correct);
+        const bool all_zero = std::all_of(a.value.data.begin(), a.value.data.end(),
+                                          [](double x) { return x == 0.0; });
+        // Axes are right up to sign and scale-free; a zero is judged against the key's scale.
+        if (all_zero || a.name.rfind("principal_axes", 0) == 0) continue;
+        REQUIRE_FALSE(f.check(a.name, typed(a.value, 1.05)).correct);
+      }
+    }
+  }
+}
+
+TEST_CASE("known mistakes are named") {
+  const Fixture taylor("taylor-10-35");
+  const Verdict sign = taylor.check("I", "[[10,0,0],[0,6,-1],[0,-1,6]]");
+  REQUIRE_FALSE(sign.correct);
+  REQUIRE_THAT(sign.feedback.at(0), Catch::Contains("products of inertia have the wrong sign"));
+  REQUIRE(taylor.check("principal_moments", "[10, 5, 7]").correct);  // any order
+  REQUIRE(taylor.check("principal_axes", "[[0,0,-1],[-0.70711,0.70711,0],[0.70711,0.70711,0]]")
+              .correct);  // columns up to sign
+  const Verdict dim = taylor.check("principal_moments", "[5, 7, 10] kg m");
+  REQUIRE_THAT(dim.feedback.at(0),
+               Catch::Contains("kg m (mass x length)") && Catch::Contains("mass x length^2"));
+  REQUIRE(taylor.check("principal_moments", "[5e7, 7e7, 1e8] g cm^2").correct);
+
+  const Fixture plate("flying-plate");
+  const auto value = [&](const std::string& name) {
+    for (const auto& p : plate.key.parts) {
+      for (const auto& a : p.answers) {
+        if (a.name == name) return a.value.data[0];
+      }
+    }
+    throw std::logic_error(name);
+  };
+  const double angle = value("angle_L_e3"), rate = value("Omega_space_rate");
+  REQUIRE_THAT(plate.check("angle_L_e3", fmt::format("{}", angle * 180 / M_PI)).feedback.at(0),
+               Catch::Contains("in degrees"));
+  REQUIRE(plate.check("angle_L_e3", fmt::format("{} deg", angle * 180 / M_PI)).correct);
+  REQUIRE_THAT(plate.check("Omega_space_rate", fmt::format("{}", rate / (2 * M_PI))).feedback.at(0),
+               Catch::Contains("revolutions per second"));
+  REQUIRE(plate.check("Omega_space_rate", fmt::format("{} rev/s", rate / (2 * M_PI))).correct);
+  REQUIRE_THAT(
+      plate.check("Omega_body_rate", fmt::format("{}", -value("Omega_body_rate"))).feedback.at(0),
+      Catch::Contains("prolate"));
+  REQUIRE_THAT(plate.check("I0", "m*R^2/2").feedback.at(0), Catch::Contains("factor 2"));
+  REQUIRE_THAT(plate.check("I0", fmt::format("{}", value("I0") * 12)).feedback.at(0),
+               Catch::Contains("factor 12"));
+  // Another answer of the key: the wobble angle for the cone's half angle.
+  REQUIRE_THAT(plate.check("angle_L_e3", fmt::format("{}", value("max_angle"))).feedback.at(0),
+               Catch::Contains("max_angle"));
+  // No match: the size of the error, no guess.
+  REQUIRE_THAT(plate.check("t_max", fmt::format("{}", value("t_max") * 1.37)).feedback.at(0),
+               Catch::Contains("off by 37%"));
+  // Significant figures: what rounds correctly to 3 digits is right, the next value is not.
+  const double t = value("t_max");
+  Options three;
+  three.sigfigs = 3;
+  const double place = std::pow(10.0, std::floor(std::log10(t)) - 2);
+  REQUIRE(plate.check("t_max", fmt::format("{}", std::round(t / place) * place), three).correct);
+  REQUIRE_FALSE(
+      plate.check("t_max", fmt::format("{}", (std::round(t / place) + 1) * place), three).correct);
+}
+
+TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
+  const Fixture plate("flying-plate");
+  for (const std::string bad :
+       {"", "   ", "0.16s", "[1, 2", "[1, 2]", "0.16 furlong", "1/0", "q*2"}) {
+    INFO("'" << bad << "'");
+    REQUIRE_THROWS_AS(plate.check("t_max", bad), InputError);
+  }
+}
