@@ -20,6 +20,7 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
   app.add_option("--set", opt.sets, "Parameter value NAME=VALUE, as for solve")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--variant", opt.variant, "Your variant's values (as on your handout)");
   app.add_option("--tolerance", opt.tolerance, "Relative tolerance for numbers (default 0.01)");
   app.add_option("--sigfigs", opt.sigfigs, "Accept a number that rounds correctly to N digits");
 }
@@ -33,7 +34,8 @@ int run_check(const CheckOptions& opt) {
     throw InputError(fmt::format("--sigfigs: {} must be from 1 to 15", *opt.sigfigs));
   }
   const Problem problem = find_problem(opt.problem);
-  const sym::Values values = parameter_values(problem, opt.sets);
+  const sym::Values values =
+      parameter_values(problem, with_variant(problem, opt.variant, opt.sets));
   const Key key = solve(problem, values);
   const PartKey* part = nullptr;
   std::string parts;

@@ -1,8 +1,15 @@
 #include <fmt/format.h>
 
+#include <filesystem>
+
 #include "cli/commands.hpp"
 #include "keys/golden.hpp"
 #include "problem/load.hpp"
+#include "problem/values.hpp"
+#include "problem/variants.hpp"
+#include "render/atomic_write.hpp"
+#include "render/render.hpp"
+#include "solvers/solve.hpp"
 
 namespace wobble::cli {
 
@@ -11,13 +18,66 @@ void setup_keys(CLI::App& app, KeysOptions& opt) {
                              "Recompute every key and compare with solutions/ (exit 1 on any "
                              "difference)");
   auto* update = app.add_flag("--update", opt.update, "Rewrite solutions/ from the program");
+  auto* variants = app.add_option("--variants", opt.variants,
+                                  "Write one key per variant, e.g. 1-40 (with --out DIR)");
+  app.add_option("--out", opt.out, "Folder for --variants")->needs(variants);
+  app.add_flag("--force", opt.force, "Overwrite existing files in --out")->needs(variants);
   check->excludes(update);
-  app.require_option(1);
+  check->excludes(variants);
+  update->excludes(variants);
+  app.require_option(1, 3);
   app.footer("$WOBBLE_SOLUTIONS overrides the solutions/ folder.");
 }
 
+namespace {
+// "A-B" or "N": the variants to write.
+std::pair<long, long> variant_range(const std::string& text) {
+  const auto dash = text.find('-');
+  try {
+    std::size_t used = 0;
+    const long a = std::stol(text.substr(0, dash), &used);
+    if (used != (dash == std::string::npos ? text.size() : dash)) throw std::invalid_argument("");
+    const long b = dash == std::string::npos ? a : std::stol(text.substr(dash + 1), &used);
+    if (dash != std::string::npos && used != text.size() - dash - 1)
+      throw std::invalid_argument("");
+    if (a < 1 || b < a || b - a >= 1000) throw std::invalid_argument("");
+    return {a, b};
+  } catch (const std::exception&) {
+    throw InputError("--variants: '" + text + "' is not a range such as 1-40 (at most 1000)");
+  }
+}
+
+int write_variants(const KeysOptions& opt, const std::vector<Problem>& problems) {
+  if (opt.out.empty()) throw InputError("--variants: give the folder with --out DIR");
+  const auto [first, last] = variant_range(opt.variants);
+  const std::filesystem::path dir = opt.out;
+  std::filesystem::create_directories(dir);
+  // Refuse before writing anything, so a refusal leaves the folder as it was.
+  std::vector<std::pair<std::filesystem::path, std::string>> files;
+  for (const auto& p : problems) {
+    for (long n = first; n <= last; ++n) {
+      const Key key = solve(p, parameter_values(p, variant_assignments(p, n)));
+      const std::string stem = fmt::format("{}-v{}", p.id, n);
+      files.emplace_back(dir / (stem + ".md"), render(key, Format::markdown));
+      files.emplace_back(dir / (stem + ".json"), render(key, Format::json));
+    }
+  }
+  for (const auto& [path, content] : files) {
+    if (std::filesystem::exists(path) && !opt.force) {
+      throw InputError("--out: " + path.string() + " exists; use --force to overwrite it");
+    }
+  }
+  for (const auto& [path, content] : files) write_atomically(path, content);
+  fmt::print("wrote {} files (variants {} to {} of {} problems) to {}\n", files.size(), first, last,
+             problems.size(), dir.string());
+  return kExitOk;
+}
+}  // namespace
+
 int run_keys(const KeysOptions& opt) {
   const auto problems = load_catalog();
+  if (!opt.variants.empty()) return write_variants(opt, problems);
+  if (!opt.check && !opt.update) throw InputError("keys: give --check, --update or --variants");
   const auto dir = solutions_dir();
   if (opt.update) {
     const auto changed = update_keys(problems, dir);

@@ -18,6 +18,8 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
   app.add_option("--set", opt.sets, "Parameter value NAME=VALUE in SI (angles also as 30deg)")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--variant", opt.variant,
+                 "Per-student values: variant N of the scene's parameters");
   app.add_option("--method", opt.method,
                  "auto, closed_form, exact, rk4, dopri5, rkf78, split2 or split4 (default: the "
                  "scene's, usually auto)");
@@ -60,7 +62,7 @@ int run_simulate(const SimulateOptions& opt) {
   }
   Scene scene = find_scene(opt.scene);
   if (opt.samples) scene.samples = static_cast<int>(*opt.samples);
-  SceneSetup setup = setup_scene(scene, opt.sets);
+  SceneSetup setup = setup_scene(scene, with_variant(scene.model, opt.variant, opt.sets));
   if (opt.tolerance) setup.tolerance = *opt.tolerance;
   const MethodChoice choice =
       opt.method.empty()

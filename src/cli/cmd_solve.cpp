@@ -8,6 +8,7 @@
 #include "problem/load.hpp"
 #include "problem/values.hpp"
 #include "render/figure.hpp"
+#include "render/handout.hpp"
 #include "render/render.hpp"
 #include "render/simulation_output.hpp"
 #include "simulate/cross_check.hpp"
@@ -29,13 +30,17 @@ void setup_solve(CLI::App& app, SolveOptions& opt) {
   app.add_option("--figure", opt.figure,
                  "Write the sketch of e3, w, L and the cones as SVG (torque-free symmetric tops)");
   app.add_flag("--force", opt.force, "Overwrite an existing --figure file");
+  app.add_option("--variant", opt.variant, "Per-student values: variant N (1, 2, ...)");
+  app.add_flag("--handout", opt.handout,
+               "Print the handout (statement and values, no answers) instead of the key");
   app.add_flag("--cross-check", opt.cross_check,
                "Recompute the dynamic answers by simulation and compare (torque-free tops)");
 }
 
 int run_solve(const SolveOptions& opt) {
   const Problem problem = find_problem(opt.problem);
-  const sym::Values values = parameter_values(problem, opt.sets);
+  const std::vector<std::string> assignments = with_variant(problem, opt.variant, opt.sets);
+  const sym::Values values = parameter_values(problem, assignments);
   const auto start = std::chrono::steady_clock::now();
   Key key = solve(problem, values);
   const double key_time =
@@ -67,6 +72,18 @@ int run_solve(const SolveOptions& opt) {
       throw InputError("--figure: " + opt.figure + " exists; use --force to overwrite it");
     }
     write_top_sketch(top_sketch(problem, values), opt.figure);
+  }
+  if (opt.handout) {
+    if (opt.format != "markdown" && opt.format != "text") {
+      throw InputError("--handout: prints Markdown (or text); drop --format " + opt.format);
+    }
+    std::vector<std::pair<std::string, std::string>> shown;
+    for (const auto& a : assignments) {
+      const auto eq = a.find('=');
+      shown.emplace_back(a.substr(0, eq), a.substr(eq + 1));
+    }
+    fmt::print("{}", render_handout(key, shown, opt.variant));
+    return kExitOk;
   }
   if (check) {
     if (opt.format != "text") {

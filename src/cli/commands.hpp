@@ -7,7 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "problem/problem.hpp"
+
 namespace wobble::cli {
+
+/// The assignments of `variant` (if any) followed by the user's --set ones (which win).
+std::vector<std::string> with_variant(const Problem& problem, std::optional<long> variant,
+                                      const std::vector<std::string>& sets);
 
 inline constexpr int kExitOk = 0, kExitDifference = 1, kExitBadInput = 2, kExitInternal = 3;
 
@@ -20,9 +26,11 @@ struct SolveOptions {
   std::vector<std::string> sets;
   std::string format = "text";
   std::string part;
-  std::string figure;        ///< SVG sketch to write (torque-free symmetric problems)
-  bool force = false;        ///< overwrite an existing figure file
-  bool cross_check = false;  ///< recompute the dynamic answers by simulation
+  std::string figure;           ///< SVG sketch to write (torque-free symmetric problems)
+  bool force = false;           ///< overwrite an existing figure file
+  bool cross_check = false;     ///< recompute the dynamic answers by simulation
+  std::optional<long> variant;  ///< per-student values (problem/variants.hpp)
+  bool handout = false;         ///< statement and values, no answers
 };
 void setup_solve(CLI::App& app, SolveOptions& opt);
 int run_solve(const SolveOptions& opt);
@@ -33,6 +41,7 @@ struct SimulateOptions {
   std::string method;                ///< empty: the scene's own (auto by default)
   std::optional<double> tolerance;   ///< overrides the scene's
   std::optional<long long> samples;  ///< overrides the scene's
+  std::optional<long> variant;
   std::string out, plot;
   bool force = false;
 };
@@ -44,6 +53,7 @@ struct CheckOptions {
   std::vector<std::string> sets;
   double tolerance = 0.01;
   std::optional<int> sigfigs;
+  std::optional<long> variant;
 };
 void setup_check(CLI::App& app, CheckOptions& opt);
 int run_check(const CheckOptions& opt);  ///< 0 right, 1 wrong
@@ -59,6 +69,9 @@ int run_bench(const BenchOptions& opt);
 
 struct KeysOptions {
   bool check = false, update = false;
+  std::string variants;  ///< "1-40": write one key per variant into `out`
+  std::string out;
+  bool force = false;
 };
 void setup_keys(CLI::App& app, KeysOptions& opt);
 int run_keys(const KeysOptions& opt);

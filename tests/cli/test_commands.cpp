@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -201,4 +203,32 @@ TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback
   REQUIRE(run_wobble({"check", "flying-plate", "a", "--name", "I0", "--answer", "m*R^2/4", "--set",
                       "m=0.35", "--set", "R=0.15"})
               .exit_code == 0);
+}
+
+TEST_CASE(
+    "variants: the handout has the numbers and no answers; keys per variant; check a variant") {
+  const RunResult handout = run_wobble({"solve", "flying-plate", "--variant", "1", "--handout"});
+  REQUIRE(handout.exit_code == 0);
+  REQUIRE_THAT(handout.out, Catch::Contains("(variant 1)") && Catch::Contains("| 0.12 | kg |") &&
+                                Catch::Contains("| 24 | ° |") && Catch::Contains("**(h)**"));
+  REQUIRE_THAT(handout.out, !Catch::Contains("t_max") && !Catch::Contains("Steps"));
+  const fs::path dir = scratch_dir() / "variants";
+  fs::remove_all(dir);
+  const RunResult keys = run_wobble({"keys", "--variants", "1-2", "--out", dir.string()});
+  INFO(keys.err);
+  REQUIRE(keys.exit_code == 0);
+  REQUIRE(fs::exists(dir / "flying-plate-v2.md"));
+  REQUIRE_THAT(slurp(dir / "flying-plate-v1.md"), Catch::Contains("0.12"));
+  REQUIRE(run_wobble({"keys", "--variants", "1-2", "--out", dir.string()}).exit_code == 2);
+  REQUIRE(run_wobble({"keys", "--variants", "1-2", "--out", dir.string(), "--force"}).exit_code ==
+          0);
+  // A student checks an answer of variant 1 against variant 1's key.
+  const auto j = nlohmann::json::parse(slurp(dir / "flying-plate-v1.json"));
+  const double t_max = j["parts"][7]["answers"][0]["value"];
+  REQUIRE(run_wobble({"check", "flying-plate", "h", "--variant", "1", "--answer",
+                      fmt::format("{:.6g} s", t_max)})
+              .exit_code == 0);
+  REQUIRE(run_wobble({"check", "flying-plate", "h", "--variant", "2", "--answer",
+                      fmt::format("{:.6g} s", t_max)})
+              .exit_code == 1);
 }

@@ -1,0 +1,23 @@
+#pragma once
+/// @file
+/// Per-student variants: reproducible parameter values for variant N of a problem.
+///
+/// Each parameter's value is drawn from a generator seeded by (problem id, parameter name, N)
+/// through FNV-1a and SplitMix64, so the same N gives the same numbers on every machine and
+/// version, and adding a parameter does not change the others. The draw is log-uniform over
+/// [default / 2, 2 default] clipped to the parameter's range (uniform over the range for a
+/// finite range containing zero, e.g. an angle in [0, pi/2)), then rounded to what a handout
+/// shows: 2 significant digits, or whole degrees for an angle. Values come back as the text a
+/// student sees ("0.35", "22deg"), and the key is computed from exactly that text.
+#include <string>
+#include <vector>
+
+#include "problem/problem.hpp"
+
+namespace wobble {
+
+/// "NAME=VALUE" assignments for variant n (n >= 1), in the problem's parameter order.
+/// @throws InputError for n < 1 or n > 1000000.
+std::vector<std::string> variant_assignments(const Problem& problem, long n);
+
+}  // namespace wobble

@@ -1,0 +1,19 @@
+#pragma once
+/// @file
+/// The handout of a problem: its statement, the parameter values a student works with, and the
+/// questions, without any answer (Markdown).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solvers/key.hpp"
+
+namespace wobble {
+
+/// `shown` maps parameter names to the text to print (a variant's "22deg"); others print their
+/// value from the key.
+std::string render_handout(const Key& key,
+                           const std::vector<std::pair<std::string, std::string>>& shown,
+                           std::optional<long> variant);
+
+}  // namespace wobble
