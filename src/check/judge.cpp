@@ -250,7 +250,7 @@ std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
     }
   }
   if (v.size() == 1) {
-    out.push_back(fmt::format("off by {:.2g}% of the answer",
+    out.push_back(fmt::format("off by {:.3g}% of the answer",
                               100 * std::abs(v[0] - k[0]) / std::max(std::abs(k[0]), 1e-300)));
   } else {
     for (std::size_t i = 0; i < v.size(); ++i) {

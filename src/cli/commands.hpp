@@ -58,6 +58,14 @@ struct CheckOptions {
 void setup_check(CLI::App& app, CheckOptions& opt);
 int run_check(const CheckOptions& opt);  ///< 0 right, 1 wrong
 
+struct WorksheetOptions {
+  std::string problem;
+  std::vector<std::string> sets;
+  std::optional<long> variant;
+};
+void setup_worksheet(CLI::App& app, WorksheetOptions& opt);
+int run_worksheet(const WorksheetOptions& opt);
+
 struct BenchOptions {
   bool quick = false;
   std::string format = "text";

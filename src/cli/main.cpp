@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   SimulateOptions simulate_opt;
   BenchOptions bench_opt;
   CheckOptions check_opt;
+  WorksheetOptions worksheet_opt;
   CLI::App* list = app.add_subcommand("list", "List the problems with their titles");
   CLI::App* solve = app.add_subcommand("solve", "Print the worked key of a problem");
   CLI::App* keys = app.add_subcommand("keys", "Check or update the golden keys in solutions/");
@@ -35,6 +36,9 @@ int main(int argc, char** argv) {
   setup_bench(*bench, bench_opt);
   CLI::App* check = app.add_subcommand("check", "Check your answer to one part of a problem");
   setup_check(*check, check_opt);
+  CLI::App* worksheet =
+      app.add_subcommand("worksheet", "Work through a problem part by part, with feedback");
+  setup_worksheet(*worksheet, worksheet_opt);
 
   // CLI11 would only say "a subcommand is required"; name the word the user typed instead.
   const auto known =
@@ -66,6 +70,7 @@ int main(int argc, char** argv) {
     if (simulate->parsed()) return run_simulate(simulate_opt);
     if (bench->parsed()) return run_bench(bench_opt);
     if (check->parsed()) return run_check(check_opt);
+    if (worksheet->parsed()) return run_worksheet(worksheet_opt);
   } catch (const wobble::InputError& e) {
     fmt::print(stderr, "wobble: {}\n", e.what());
     return kExitBadInput;

@@ -21,10 +21,11 @@ using detail::Reader;
 using namespace detail;
 
 PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) {
-  r.only_keys(t, f, {"id", "question", "answers"});
+  r.only_keys(t, f, {"id", "question", "answers", "hint"});
   PartSpec p;
   p.id = r.string(t, "id", f + ".");
   p.question = r.string(t, "question", f + ".");
+  p.hint = r.string(t, "hint", f + ".", false, "");
   const toml::array& answers = r.array(t, "answers", f + ".answers");
   if (answers.empty()) r.fail(&t, f + ".answers", "a part needs at least one answer");
   for (std::size_t i = 0; i < answers.size(); ++i) {

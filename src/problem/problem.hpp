@@ -67,6 +67,7 @@ struct AnswerSpec {
 struct PartSpec {
   std::string id;
   std::string question;
+  std::string hint;  ///< for the worksheet; may be empty
   std::vector<AnswerSpec> answers;
 };
 

@@ -154,7 +154,7 @@ std::vector<Row> catalog() {
       {"unknown command",
        {"frobnicate"},
        2,
-       {"unknown command 'frobnicate'", "commands: list, solve, check, simulate, bench, keys"}},
+       {"unknown command 'frobnicate'", "commands: list, solve, check, worksheet, simulate, bench, keys"}},
       {"keys without an action", {"keys"}, 2, {"--check", "--update", "required"}},
       {"keys with both actions", {"keys", "--check", "--update"}, 2, {"excludes"}},
       {"malformed TOML",

@@ -232,3 +232,30 @@ TEST_CASE(
                       fmt::format("{:.6g} s", t_max)})
               .exit_code == 1);
 }
+
+TEST_CASE("worksheet driven end to end by piped input: feedback, hint, reveal, skip, quit") {
+  const std::string exe = std::string("'") + WOBBLE_EXE + "'";
+  // Part (a): the wrong sign (feedback), an unreadable line (asked again), then right.
+  // Flying plate (a) I0: a wrong try twice brings the hint by itself; then '!' reveals.
+  const RunResult a = run_shell(
+      "printf '[[10,0,0],[0,6,-1],[0,-1,6]]\\nabc(\\n[[10,0,0],[0,6,1],[0,1,6]]\\ns\\n' | " + exe +
+      " worksheet taylor-10-35");
+  INFO(a.out << a.err);
+  REQUIRE(a.exit_code == 0);
+  REQUIRE_THAT(a.out,
+               Catch::Contains("products of inertia have the wrong sign") &&
+                   Catch::Contains("cannot read that") && Catch::Contains("correct: I") &&
+                   Catch::Contains("summary: 1 right, 0 revealed, 1 skipped, 0 not reached"));
+  const RunResult b =
+      run_shell("printf '1\\n2\\n!\\nq\\n' | " + exe + " worksheet flying-plate --variant 3");
+  INFO(b.out << b.err);
+  REQUIRE(b.exit_code == 0);
+  REQUIRE_THAT(b.out,
+               Catch::Contains("(variant 3)") && Catch::Contains("hint: A thin disc") &&
+                   Catch::Contains("answer: m*R^2/4 = ") &&
+                   Catch::Contains("summary: 0 right, 1 revealed, 0 skipped, 7 not reached"));
+  // End of input at once: no wait, a summary.
+  const RunResult c = run_shell(exe + " worksheet flying-plate < /dev/null");
+  REQUIRE(c.exit_code == 0);
+  REQUIRE_THAT(c.out, Catch::Contains("(end of input)") && Catch::Contains("8 not reached"));
+}

@@ -1,0 +1,146 @@
+#include "check/worksheet.hpp"
+
+#include <fmt/format.h>
+
+#include <istream>
+#include <ostream>
+
+#include "core/input_error.hpp"
+
+namespace wobble::check {
+
+namespace {
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+std::string shown(const Answer& a) {
+  const auto& d = a.value.data;
+  std::string v;
+  if (a.value.shape == Value::Shape::scalar) {
+    v = format_number(d[0]);
+  } else if (a.value.shape == Value::Shape::vector) {
+    v = "[";
+    for (std::size_t i = 0; i < d.size(); ++i) v += (i ? ", " : "") + format_number(d[i]);
+    v += "]";
+  } else {
+    v = "[";
+    for (std::size_t r = 0; r < a.value.rows; ++r) {
+      v += r ? ", [" : "[";
+      for (std::size_t c = 0; c < a.value.cols; ++c)
+        v += (c ? ", " : "") + format_number(d[r * a.value.cols + c]);
+      v += "]";
+    }
+    v += "]";
+  }
+  if (!a.unit.empty()) v += " " + a.unit;
+  return a.symbolic.empty() ? v : a.symbolic + " = " + v;
+}
+
+enum class Outcome { right, revealed, skipped, quit };
+
+struct Session {
+  std::istream& in;
+  std::ostream& out;
+  const Context& ctx;
+  const Options& opt;
+  bool echo;
+  bool quit_after_reveal = false;
+
+  bool read(std::string& line) {
+    out << std::flush;
+    if (!std::getline(in, line)) {
+      out << "\n(end of input)\n";
+      return false;
+    }
+    line = trim(line);
+    if (echo) out << line << "\n";  // piped: show what was read, so the transcript reads well
+    return true;
+  }
+
+  Outcome part(const PartKey& part, const std::string& hint) {
+    out << fmt::format("\n({}) {}\n", part.id, part.question);
+    bool revealed = false, hint_shown = false;
+    const auto give_hint = [&] {
+      out << (hint.empty() ? "  no hint for this part; '!' reveals the answer\n"
+                           : "  hint: " + hint + "\n");
+      hint_shown = true;
+    };
+    for (const auto& a : part.answers) {
+      int wrong = 0;
+      while (true) {
+        out << fmt::format("  {}{} = ", a.name, a.unit.empty() ? "" : " [" + a.unit + "]");
+        std::string line;
+        if (!read(line) || line == "q") {
+          quit_after_reveal = revealed;  // a part quit after a reveal counts as revealed
+          return Outcome::quit;
+        }
+        if (line == "s") return Outcome::skipped;
+        if (line == "?") {
+          give_hint();
+          continue;
+        }
+        if (line == "!") {
+          out << "  answer: " << shown(a) << "\n";
+          revealed = true;
+          break;
+        }
+        if (line.empty()) continue;
+        try {
+          const Verdict v = judge(ctx, a, line, opt);
+          out << "  " << v.line << "\n";
+          for (const auto& f : v.feedback) out << "    " << f << "\n";
+          if (v.correct) break;
+          if (++wrong == 2 && !hint_shown) give_hint();
+        } catch (const InputError& e) {
+          out << "  cannot read that: " << e.what() << "\n";
+        }
+      }
+    }
+    return revealed ? Outcome::revealed : Outcome::right;
+  }
+};
+}  // namespace
+
+WorksheetSummary run_worksheet(std::istream& in, std::ostream& out, const std::string& intro,
+                               const Problem& problem, const Context& ctx, const Options& opt,
+                               bool echo) {
+  out << intro;
+  out << "\nAnswer each part (units optional; SI if none). At any prompt: ? hint, ! reveal, "
+         "s skip the part, q quit.\n";
+  Session session{in, out, ctx, opt, echo};
+  WorksheetSummary sum;
+  bool quit = false;
+  for (const auto& part : ctx.key.parts) {
+    if (quit) {
+      ++sum.not_reached;
+      continue;
+    }
+    std::string hint;
+    for (const auto& spec : problem.parts) {
+      if (spec.id == part.id) hint = spec.hint;
+    }
+    switch (session.part(part, hint)) {
+      case Outcome::right:
+        ++sum.right;
+        break;
+      case Outcome::revealed:
+        ++sum.revealed;
+        break;
+      case Outcome::skipped:
+        ++sum.skipped;
+        break;
+      case Outcome::quit:
+        quit = true;
+        ++(session.quit_after_reveal ? sum.revealed : sum.not_reached);
+        break;
+    }
+  }
+  out << fmt::format("\nsummary: {} right, {} revealed, {} skipped, {} not reached (of {} parts)\n",
+                     sum.right, sum.revealed, sum.skipped, sum.not_reached, ctx.key.parts.size());
+  return sum;
+}
+
+}  // namespace wobble::check

@@ -1,0 +1,43 @@
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <iostream>
+
+#include "check/worksheet.hpp"
+#include "cli/commands.hpp"
+#include "problem/load.hpp"
+#include "problem/values.hpp"
+#include "render/handout.hpp"
+#include "solvers/solve.hpp"
+
+namespace wobble::cli {
+
+void setup_worksheet(CLI::App& app, WorksheetOptions& opt) {
+  app.add_option("problem", opt.problem, "Problem id (see `wobble list`) or a .toml file")
+      ->required();
+  app.add_option("--variant", opt.variant, "Your variant's values (as on your handout)");
+  app.add_option("--set", opt.sets, "Parameter value NAME=VALUE, as for solve")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+int run_worksheet(const WorksheetOptions& opt) {
+  const Problem problem = find_problem(opt.problem);
+  const std::vector<std::string> assignments = with_variant(problem, opt.variant, opt.sets);
+  const sym::Values values = parameter_values(problem, assignments);
+  const Key key = solve(problem, values);
+  std::vector<std::pair<std::string, std::string>> shown;
+  for (const auto& a : assignments) {
+    const auto eq = a.find('=');
+    shown.emplace_back(a.substr(0, eq), a.substr(eq + 1));
+  }
+  // The handout without its list of questions: the worksheet asks them one by one.
+  std::string intro = render_handout(key, shown, opt.variant);
+  intro = intro.substr(0, intro.find("\n**("));
+  const sym::SymbolTable table = problem.symbol_table();
+  (void)check::run_worksheet(std::cin, std::cout, intro + "\n", problem, {key, table, values}, {},
+                             ::isatty(STDIN_FILENO) == 0);
+  return kExitOk;
+}
+
+}  // namespace wobble::cli
