@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
       app.get_subcommands([&](CLI::App* sub) { return argc > 1 && sub->get_name() == argv[1]; });
   if (argc > 1 && argv[1][0] != '-' && known.empty()) {
     fmt::print(stderr,
-               "wobble: unknown command '{}' (commands: list, solve, check, simulate, bench, keys; "
+               "wobble: unknown command '{}' (commands: list, solve, check, worksheet, simulate, "
+               "bench, keys; "
                "see --help)\n",
                argv[1]);
     return kExitBadInput;
