@@ -299,7 +299,11 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const Parsed& p, con
 }
 }  // namespace
 
-Verdict judge(const Context& ctx, const Answer& a, const std::string& text, const Options& opt) {
+Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
+              const Options& options) {
+  // The problem file's tolerance for this answer, unless the user gave one.
+  Options opt = options;
+  if (!options.rel_tol_given && a.check_tolerance) opt.rel_tol = *a.check_tolerance;
   const Parsed p = parse_answer(text, ctx.table);
   check_shape(a, p.value);
   if (p.symbolic) return judge_symbolic(ctx, a, p, opt);

@@ -4,7 +4,8 @@
 ///
 /// An answer is a number, a vector "[x, y, z]" or a matrix "[[..], [..], [..]]", each optionally
 /// followed by a unit (units.hpp; none means SI), or an expression in the problem's symbols
-/// ("m*a^2/6"). Numbers are right within a relative tolerance (1% by default) of the key's
+/// ("m*a^2/6"). Numbers are right within a relative tolerance (1% by default, or the answer's
+/// `tolerance` in the problem file, or the user's) of the key's
 /// value, or, with sigfigs N, when the key rounds to them at N significant digits; a zero is
 /// judged with an absolute tolerance: the tolerance times the largest value of the same unit in
 /// the key. Vectors and matrices are judged entry by entry and the wrong entries named; a
@@ -27,6 +28,7 @@ namespace wobble::check {
 
 struct Options {
   double rel_tol = 0.01;
+  bool rel_tol_given = false;  ///< given by the user: wins over the problem file's per answer
   std::optional<int> sigfigs;
 };
 

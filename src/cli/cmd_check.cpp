@@ -21,14 +21,15 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--variant", opt.variant, "Your variant's values (as on your handout)");
-  app.add_option("--tolerance", opt.tolerance, "Relative tolerance for numbers (default 0.01)");
+  app.add_option("--tolerance", opt.tolerance,
+                 "Relative tolerance for numbers (default: the problem's, else 0.01)");
   app.add_option("--sigfigs", opt.sigfigs, "Accept a number that rounds correctly to N digits");
 }
 
 int run_check(const CheckOptions& opt) {
-  if (!(opt.tolerance > 0.0 && opt.tolerance < 1.0)) {
+  if (opt.tolerance && !(*opt.tolerance > 0.0 && *opt.tolerance < 1.0)) {
     throw InputError(
-        fmt::format("--tolerance: {} must be between 0 and 1 (0.01 is 1%)", opt.tolerance));
+        fmt::format("--tolerance: {} must be between 0 and 1 (0.01 is 1%)", *opt.tolerance));
   }
   if (opt.sigfigs && (*opt.sigfigs < 1 || *opt.sigfigs > 15)) {
     throw InputError(fmt::format("--sigfigs: {} must be from 1 to 15", *opt.sigfigs));
@@ -62,7 +63,10 @@ int run_check(const CheckOptions& opt) {
   }
   const sym::SymbolTable table = problem.symbol_table();
   check::Options o;
-  o.rel_tol = opt.tolerance;
+  if (opt.tolerance) {
+    o.rel_tol = *opt.tolerance;
+    o.rel_tol_given = true;
+  }
   o.sigfigs = opt.sigfigs;
   const check::Verdict v = check::judge({key, table, values}, *answer, opt.answer, o);
   fmt::print("{}\n", v.line);

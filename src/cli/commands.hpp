@@ -51,7 +51,7 @@ int run_simulate(const SimulateOptions& opt);
 struct CheckOptions {
   std::string problem, part, answer, name;
   std::vector<std::string> sets;
-  double tolerance = 0.01;
+  std::optional<double> tolerance;  ///< default: the problem file's, else 1%
   std::optional<int> sigfigs;
   std::optional<long> variant;
 };

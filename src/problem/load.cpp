@@ -33,15 +33,22 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
     const toml::node* n = answers.get(i);
     if (n->is_string()) {
       const std::string name = *n->value<std::string>();
-      p.answers.push_back({name, name});
+      p.answers.push_back({name, name, std::nullopt});
     } else if (const toml::table* at = n->as_table()) {
-      r.only_keys(*at, af, {"name", "quantity"});
+      r.only_keys(*at, af, {"name", "quantity", "tolerance"});
       AnswerSpec a;
       a.name = r.string(*at, "name", af + ".");
       a.quantity = r.string(*at, "quantity", af + ".", false, a.name);
+      if (const toml::node* tn = at->get("tolerance")) {
+        const auto v = tn->value<double>();
+        if (!v || !(*v > 0.0 && *v < 1.0))
+          r.fail(tn, af + ".tolerance",
+                 "expected a relative tolerance between 0 and 1 (0.05 is 5%)");
+        a.tolerance = *v;
+      }
       p.answers.push_back(a);
     } else {
-      r.fail(n, af, "expected an answer name or a { name, quantity } table");
+      r.fail(n, af, "expected an answer name or a { name, quantity, tolerance } table");
     }
   }
   return p;

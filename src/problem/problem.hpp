@@ -60,8 +60,9 @@ struct MotionSpec {
 };
 
 struct AnswerSpec {
-  std::string name;      ///< the name in the key (JSON)
-  std::string quantity;  ///< what the solver computes for it (defaults to name)
+  std::string name;                 ///< the name in the key (JSON)
+  std::string quantity;             ///< what the solver computes for it (defaults to name)
+  std::optional<double> tolerance;  ///< relative tolerance for `wobble check` (default 1%)
 };
 
 struct PartSpec {

@@ -6,6 +6,7 @@
 /// only a numeric value exists, with a note saying why), its value at the parameter values and
 /// its SI unit. Vectors and matrices are symbolic as "[x, y, z]" and "[[..], [..], [..]]" whose
 /// entries GiNaC reads (sym::parse_symbolic_value reads the whole back).
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,6 +46,7 @@ struct Answer {
   Value value;
   std::string unit;  ///< SI unit, "" for dimensionless
   std::vector<std::string> notes;
+  std::optional<double> check_tolerance;  ///< from the problem file, for `wobble check`
 };
 
 struct Step {

@@ -15,6 +15,7 @@ Key assemble_parts(const Problem& problem,
     for (const auto& spec : part.answers) {
       Computed c = compute(spec.quantity);
       c.answer.name = spec.name;
+      c.answer.check_tolerance = spec.tolerance;
       pk.answers.push_back(std::move(c.answer));
       append_steps(pk, c.steps);
     }

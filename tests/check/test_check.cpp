@@ -10,6 +10,7 @@
 #include "problem/load.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
+#include "temp_files.hpp"
 
 using namespace wobble;
 using namespace wobble::check;
@@ -145,4 +146,78 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
     INFO("'" << bad << "'");
     REQUIRE_THROWS_AS(plate.check("t_max", bad), InputError);
   }
+}
+
+TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
+  const Fixture plate("flying-plate");
+  for (const std::string same : {"m*R^2/4", "(m/4)*R*R", "R^2*m*0.25", "m*R^2/2 - m*R^2/4"}) {
+    INFO(same);
+    REQUIRE(plate.check("I0", same).correct);
+  }
+  for (const std::string other : {"m*R^2/4 + 1e-3*m", "m*R/4", "m^2*R^2/4"}) {
+    INFO(other);
+    REQUIRE_FALSE(plate.check("I0", other).correct);
+  }
+}
+
+TEST_CASE("axes of a degenerate pair: any orthonormal pair of the plane is right") {
+  const std::string file =
+      wobble::test::write_file("check/degenerate.toml", R"TOML(id = "degenerate"
+title = "t"
+solver = "inertia"
+statement = "s"
+
+[[parameters]]
+name = "k"
+unit = "kg m^2"
+default = 1
+range = "(0, inf)"
+
+[body]
+tensor = [["2*k", "0", "0"], ["0", "2*k", "0"], ["0", "0", "3*k"]]
+
+[[parts]]
+id = "a"
+question = "q"
+answers = ["principal_moments", "principal_axes"]
+)TOML")
+          .string();
+  const Fixture f(file);
+  // Turned by an arbitrary angle in the x-y plane, signs of our own choosing: right.
+  REQUIRE(f.check("principal_axes", "[[0.6, -0.8, 0], [0.8, 0.6, 0], [0, 0, 1]]").correct);
+  REQUIRE(f.check("principal_axes", "[[0, 1, 0], [1, 0, 0], [0, 0, -1]]").correct);
+  // A column out of the plane: wrong.
+  REQUIRE_FALSE(
+      f.check("principal_axes", "[[0.6, -0.8, 0], [0, 0.6, 0.8], [0.8, 0, 0.6]]").correct);
+}
+
+TEST_CASE("a problem file's per-answer tolerance, and the user's overriding it") {
+  const std::string file = wobble::test::write_file("check/tolerant.toml", R"TOML(id = "tolerant"
+title = "t"
+solver = "inertia"
+statement = "s"
+
+[[parameters]]
+name = "m"
+unit = "kg"
+default = 1
+range = "(0, inf)"
+
+[body]
+masses = [ { mass = "m", at = ["1", "0", "0"] }, { mass = "m", at = ["0", "1", "0"] } ]
+
+[[parts]]
+id = "a"
+question = "q"
+answers = [ { name = "I", quantity = "I", tolerance = 0.1 } ]
+)TOML")
+                               .string();
+  const Fixture f(file);
+  const std::string five_percent_off = "[[1.05, 0, 0], [0, 1.05, 0], [0, 0, 2.1]]";
+  REQUIRE(f.check("I", "[[1, 0, 0], [0, 1, 0], [0, 0, 2]]").correct);
+  REQUIRE(f.check("I", five_percent_off).correct);  // within the file's 10%
+  Options strict;
+  strict.rel_tol = 0.01;
+  strict.rel_tol_given = true;
+  REQUIRE_FALSE(f.check("I", five_percent_off, strict).correct);  // the user's 1% wins
 }
