@@ -107,3 +107,12 @@ TEST_CASE("set assignments NAME=VALUE") {
                                                         Catch::Contains("known: m, alpha"));
   REQUIRE_THROWS_WITH(parameter_values(p, {"m"}), Catch::Contains("expected NAME=VALUE"));
 }
+
+TEST_CASE("every part of every problem has a hint for the worksheet") {
+  for (const auto& p : wobble::load_catalog()) {
+    for (const auto& part : p.parts) {
+      INFO(p.id << " part " << part.id);
+      REQUIRE(part.hint.size() >= 20);  // a sentence, not a placeholder
+    }
+  }
+}
