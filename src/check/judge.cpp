@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "check/text.hpp"
 #include "check/units.hpp"
 #include "core/inertia.hpp"
 #include "core/input_error.hpp"
@@ -14,12 +15,6 @@ namespace wobble::check {
 
 namespace {
 const std::string kField = "--answer";
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
 
 struct Parsed {
   sym::ValueText value;

@@ -5,17 +5,12 @@
 #include <istream>
 #include <ostream>
 
+#include "check/text.hpp"
 #include "core/input_error.hpp"
 
 namespace wobble::check {
 
 namespace {
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
-
 std::string shown(const Answer& a) {
   const auto& d = a.value.data;
   std::string v;

@@ -77,11 +77,7 @@ int run_solve(const SolveOptions& opt) {
     if (opt.format != "markdown" && opt.format != "text") {
       throw InputError("--handout: prints Markdown (or text); drop --format " + opt.format);
     }
-    std::vector<std::pair<std::string, std::string>> shown;
-    for (const auto& a : assignments) {
-      const auto eq = a.find('=');
-      shown.emplace_back(a.substr(0, eq), a.substr(eq + 1));
-    }
+    const auto shown = shown_values(assignments);
     fmt::print("{}", render_handout(key, shown, opt.variant));
     return kExitOk;
   }

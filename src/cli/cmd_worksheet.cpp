@@ -26,11 +26,7 @@ int run_worksheet(const WorksheetOptions& opt) {
   const std::vector<std::string> assignments = with_variant(problem, opt.variant, opt.sets);
   const sym::Values values = parameter_values(problem, assignments);
   const Key key = solve(problem, values);
-  std::vector<std::pair<std::string, std::string>> shown;
-  for (const auto& a : assignments) {
-    const auto eq = a.find('=');
-    shown.emplace_back(a.substr(0, eq), a.substr(eq + 1));
-  }
+  const auto shown = shown_values(assignments);
   // The handout without its list of questions: the worksheet asks them one by one.
   std::string intro = render_handout(key, shown, opt.variant);
   intro = intro.substr(0, intro.find("\n**("));

@@ -15,6 +15,10 @@ namespace wobble::cli {
 std::vector<std::string> with_variant(const Problem& problem, std::optional<long> variant,
                                       const std::vector<std::string>& sets);
 
+/// "NAME=VALUE" assignments as (name, value text) pairs, for a handout.
+std::vector<std::pair<std::string, std::string>> shown_values(
+    const std::vector<std::string>& assignments);
+
 inline constexpr int kExitOk = 0, kExitDifference = 1, kExitBadInput = 2, kExitInternal = 3;
 
 struct ListOptions {};

@@ -11,4 +11,14 @@ std::vector<std::string> with_variant(const Problem& problem, std::optional<long
   return out;
 }
 
+std::vector<std::pair<std::string, std::string>> shown_values(
+    const std::vector<std::string>& assignments) {
+  std::vector<std::pair<std::string, std::string>> shown;
+  for (const auto& a : assignments) {
+    const auto eq = a.find('=');
+    shown.emplace_back(a.substr(0, eq), a.substr(eq + 1));
+  }
+  return shown;
+}
+
 }  // namespace wobble::cli

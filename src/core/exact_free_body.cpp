@@ -99,31 +99,42 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   phi_rate_ = M_ / J[0];
   phi_coef_ = M_ * d21 * d31 / (J[0] * J[0] * d32 * lambda_);
   Gc_ = kc2_ > 0.0 ? complete_third_kind_excess(kc2_, n_) : 0.0;
-  double s, c, d;
-  G0_ = G(u0_, &s, &c, &d);
+  G0_ = G(phase(u0_));
   const Mat3 R0 = q0_.toRotationMatrix() * C_.transpose();  // W -> S at t = 0
   Q_ = R0 * to_L_frame(m).transpose();
 }
 
-// (Pi(n; am u) - u)/n, continued past |u| = K through the periods, and sn, cn, dn of u.
-double ExactFreeMotion::G(double u, double* sn, double* cn, double* dn) const {
-  double j = 0.0, r = u;
+// u reduced by the period 2K (r in [-K, K], j periods), and sn, cn, dn of u itself: sn and cn
+// change sign every 2K, dn does not.
+ExactFreeMotion::Phase ExactFreeMotion::phase(double u) const {
+  Phase p;
+  p.r = u;
   if (std::isfinite(K_)) {
-    j = std::nearbyint(u / (2.0 * K_));
-    r = u - 2.0 * K_ * j;
+    p.j = std::nearbyint(u / (2.0 * K_));
+    p.r = u - 2.0 * K_ * p.j;
   }
-  const SnCnDn e = jacobi_sncndn(r, kc2_);
-  const double odd = std::fmod(j, 2.0) == 0.0 ? 1.0 : -1.0;  // sn, cn change sign every 2K
-  *sn = odd * e.sn;
-  *cn = odd * e.cn;
-  *dn = e.dn;
-  return 2.0 * j * Gc_ + third_kind_excess(e.sn, e.cn, kc2_, n_);
+  p.reduced = jacobi_sncndn(p.r, kc2_);
+  const double odd = std::fmod(p.j, 2.0) == 0.0 ? 1.0 : -1.0;
+  p.sn = odd * p.reduced.sn;
+  p.cn = odd * p.reduced.cn;
+  p.dn = p.reduced.dn;
+  return p;
+}
+
+// (Pi(n; am u) - u)/n, continued past |u| = K through the periods.
+double ExactFreeMotion::G(const Phase& p) const {
+  return 2.0 * p.j * Gc_ + third_kind_excess(p.reduced.sn, p.reduced.cn, kc2_, n_);
+}
+
+// m in W: (s1 a1 cn, s2 a2 sn, s3 a3 dn).
+Vec3 ExactFreeMotion::m_W(const Phase& p) const {
+  return Vec3(sign_[0] * amp_[0] * p.cn, sign_[1] * amp_[1] * p.sn, sign_[2] * amp_[2] * p.dn);
 }
 
 FreeBodyState ExactFreeMotion::at_elliptic(double t) const {
-  double sn, cn, dn;
-  const double Gu = G(u0_ + lambda_ * t, &sn, &cn, &dn);
-  const Vec3 m(sign_[0] * amp_[0] * cn, sign_[1] * amp_[1] * sn, sign_[2] * amp_[2] * dn);
+  const Phase p = phase(u0_ + lambda_ * t);
+  const double Gu = G(p);
+  const Vec3 m = m_W(p);
   const double phi = phi_rate_ * t - phi_coef_ * (Gu - G0_);
   const Mat3 R_WtoS = Q_ * rot_z(phi) * to_L_frame(m);
   FreeBodyState s;
@@ -142,16 +153,7 @@ Vec3 ExactFreeMotion::momentum_at(double t) const {
       break;
   }
   // m alone needs sn, cn, dn of u, not the third-kind integral of the attitude.
-  double j = 0.0, r = u0_ + lambda_ * t;
-  if (std::isfinite(K_)) {
-    j = std::nearbyint(r / (2.0 * K_));
-    r -= 2.0 * K_ * j;
-  }
-  const SnCnDn e = jacobi_sncndn(r, kc2_);
-  const double odd = std::fmod(j, 2.0) == 0.0 ? 1.0 : -1.0;
-  const Vec3 m(sign_[0] * amp_[0] * odd * e.cn, sign_[1] * amp_[1] * odd * e.sn,
-               sign_[2] * amp_[2] * e.dn);
-  return C_.transpose() * m;
+  return C_.transpose() * m_W(phase(u0_ + lambda_ * t));
 }
 
 FreeBodyState ExactFreeMotion::at(double t) const {

@@ -18,6 +18,7 @@
 ///   Comput. 30 (2008)).
 #include <limits>
 
+#include "core/elliptic.hpp"
 #include "core/free_body.hpp"
 
 namespace wobble {
@@ -53,7 +54,14 @@ class ExactFreeMotion {
   double M_ = 0.0, lambda_ = 0.0, u0_ = 0.0, kc2_ = 0.0, K_ = 0.0, n_ = 0.0;
   double phi_rate_ = 0.0, phi_coef_ = 0.0, G0_ = 0.0, Gc_ = 0.0;
   Mat3 Q_ = Mat3::Identity();  ///< R_WtoS(0) P(m0)^T
-  double G(double u, double* sn, double* cn, double* dn) const;
+  struct Phase {
+    double j = 0.0, r = 0.0;              ///< u = r + 2 K j, r in [-K, K]
+    SnCnDn reduced{};                     ///< of r
+    double sn = 0.0, cn = 0.0, dn = 0.0;  ///< of u
+  };
+  Phase phase(double u) const;
+  double G(const Phase& p) const;
+  Vec3 m_W(const Phase& p) const;
 };
 
 }  // namespace wobble
