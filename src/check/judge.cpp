@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "check/text.hpp"
 #include "check/units.hpp"
@@ -188,6 +190,19 @@ bool axes_match(const Judge& j, const std::vector<double>& v, const std::vector<
   return true;
 }
 
+// "L_body" -> ("L", "body"): the stem and the frame of an answer's name, for the frames a key
+// names (body, space, and the intermediate "primed" frame of Euler angles).
+std::optional<std::pair<std::string, std::string>> frame_of(const std::string& name) {
+  for (const std::string frame : {"body", "space", "primed"}) {
+    const std::string suffix = "_" + frame;
+    if (name.size() > suffix.size() &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      return std::make_pair(name.substr(0, name.size() - suffix.size()), frame);
+    }
+  }
+  return std::nullopt;
+}
+
 // The likely mistake behind a wrong number, or its size.
 std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
                                   const std::vector<double>& v, const std::vector<double>& k) {
@@ -221,6 +236,21 @@ std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
       j.all_close(v, j.scaled(k, 1.0 / (2 * M_PI)))) {
     out.push_back("this is revolutions per second: multiply by 2 pi for rad/s, or write rev/s");
     return out;
+  }
+  // The same vector in another frame: "L_body" answered for "L_space" and the like.
+  if (const auto mine = frame_of(j.a.name)) {
+    for (const auto& part : j.ctx.key.parts) {
+      for (const auto& b : part.answers) {
+        const auto theirs = frame_of(b.name);
+        if (!theirs || theirs->first != mine->first || theirs->second == mine->second ||
+            b.value.data.size() != v.size() || !j.all_close(v, b.value.data)) {
+          continue;
+        }
+        out.push_back("these are the " + theirs->second + "-frame components (" + b.name +
+                      "); " + j.a.name + " asks for the " + mine->second + "-frame ones");
+        return out;
+      }
+    }
   }
   // Another answer of the key first: it is the more specific diagnosis (max_angle is exactly
   // twice angle_L_e3, L0_space is L0_body turned).
@@ -264,6 +294,14 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const Parsed& p, con
     throw InputError(kField + ": " + a.name + " has no closed form in the key; give a number");
   }
   const sym::ValueText key = sym::parse_value_text(a.symbolic, ctx.table, "key " + a.name);
+  // First by simplification: a rational rearrangement of the key's form is proved equal. It
+  // cannot prove trigonometric or radical identities (2*atan(2*tan(a)) in another form), so an
+  // unproved answer is then judged by evaluation.
+  bool proved = true;
+  for (std::size_t i = 0; i < key.entries.size() && proved; ++i) {
+    proved = sym::is_identically_zero(p.value.entries[i] - key.entries[i]);
+  }
+  if (proved) return {true, "correct: " + a.name + " (your expression simplifies to the key's)", {}};
   // The set values and three more points, each parameter scaled in turn.
   std::vector<sym::Values> points{ctx.values};
   const double factors[] = {1.13, 0.87, 1.29};
@@ -290,7 +328,10 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const Parsed& p, con
       }
     }
   }
-  return {true, "correct: " + a.name + " (your expression equals the key's)", {}};
+  return {true,
+          "correct: " + a.name +
+              " (your expression equals the key's at the set values and three more points)",
+          {}};
 }
 }  // namespace
 

@@ -10,9 +10,10 @@
 /// judged with an absolute tolerance: the tolerance times the largest value of the same unit in
 /// the key. Vectors and matrices are judged entry by entry and the wrong entries named; a
 /// principal axis is right up to sign, principal moments in any order, and an axis of a
-/// degenerate pair may be any unit vector of its plane. Expressions are right when they equal
-/// the key's closed form at the set values and at three more parameter points (each parameter
-/// scaled by 1.13, 0.87, 1.29 in turn), to 1e-9.
+/// degenerate pair may be any unit vector of its plane. Expressions are right when their
+/// difference from the key's closed form simplifies to zero (GiNaC's normal form), or, since
+/// that cannot prove trigonometric identities, when they equal it at the set values and at three
+/// more parameter points (each parameter scaled by 1.13, 0.87, 1.29 in turn), to 1e-9.
 /// A wrong answer gets the likely mistake when it matches one (a reversed sign, products of
 /// inertia with the wrong sign, degrees for radians, rev/s for rad/s, a factor 2, 4 or 12,
 /// another answer of the key such as the body-frame vector for the space-frame one), else

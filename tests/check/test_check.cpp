@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <functional>
+#include <map>
 
 #include "check/judge.hpp"
 #include "check/units.hpp"
@@ -139,6 +141,101 @@ TEST_CASE("known mistakes are named") {
       plate.check("t_max", fmt::format("{}", (std::round(t / place) + 1) * place), three).correct);
 }
 
+namespace {
+// A known mistake: whether it applies to an answer, the wrong value a student would give, and
+// the words its feedback must contain.
+struct Mistake {
+  std::string kind;
+  std::function<bool(const Answer&)> applies;
+  std::function<Value(const Answer&)> make;
+  std::string words;
+};
+
+Value scaled(Value v, double f) {
+  for (double& x : v.data) x *= f;
+  return v;
+}
+bool nonzero(const Answer& a) {
+  return std::any_of(a.value.data.begin(), a.value.data.end(), [](double x) { return x != 0; });
+}
+bool named(const Answer& a, const std::string& stem) { return a.name.rfind(stem, 0) == 0; }
+bool is_tensor(const Answer& a) {
+  return a.value.shape == Value::Shape::matrix && (a.name == "I" || named(a, "I_"));
+}
+
+std::vector<Mistake> known_mistakes() {
+  std::vector<Mistake> m;
+  m.push_back({"products of inertia with the wrong sign",
+               [](const Answer& a) {
+                 if (!is_tensor(a)) return false;
+                 for (std::size_t i = 0; i < 9; ++i) {
+                   if (i / 3 != i % 3 && a.value.data[i] != 0) return true;
+                 }
+                 return false;
+               },
+               [](const Answer& a) {
+                 Value v = a.value;
+                 for (std::size_t i = 0; i < 9; ++i) {
+                   if (i / 3 != i % 3) v.data[i] = -v.data[i];
+                 }
+                 return v;
+               },
+               "products of inertia have the wrong sign"});
+  m.push_back({"degrees for radians",
+               [](const Answer& a) { return a.unit == "rad" && nonzero(a); },
+               [](const Answer& a) { return scaled(a.value, 180 / M_PI); }, "in degrees"});
+  m.push_back({"rev/s for rad/s", [](const Answer& a) { return a.unit == "rad/s" && nonzero(a); },
+               [](const Answer& a) { return scaled(a.value, 1 / (2 * M_PI)); },
+               "revolutions per second"});
+  m.push_back({"Omega_body reversed (prolate for oblate)",
+               [](const Answer& a) { return named(a, "Omega_body") && nonzero(a); },
+               [](const Answer& a) { return scaled(a.value, -1); }, "prolate"});
+  for (const double f : {2.0, 12.0}) {
+    m.push_back({fmt::format("a factor {:g} in a moment of inertia", f),
+                 [](const Answer& a) {
+                   return a.unit == "kg m^2" && nonzero(a) && !named(a, "principal_axes");
+                 },
+                 [f](const Answer& a) { return scaled(a.value, f); },
+                 fmt::format("factor {:g} is off", f)});
+  }
+  return m;
+}
+}  // namespace
+
+TEST_CASE("each known mistake is named, on every answer of every problem where it applies") {
+  std::map<std::string, int> seen;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        for (const auto& mistake : known_mistakes()) {
+          if (!mistake.applies(a)) continue;
+          const Value wrong = mistake.make(a);
+          INFO(p.id << " " << a.name << ": " << mistake.kind << ": " << typed(wrong));
+          const Verdict v = f.check(a.name, typed(wrong));
+          REQUIRE_FALSE(v.correct);
+          REQUIRE_FALSE(v.feedback.empty());
+          // A wrong value that is exactly another answer of the key is named as that answer
+          // (max_angle is twice angle_L_e3): the more specific diagnosis.
+          bool other = false;
+          for (const auto& q : f.key.parts) {
+            for (const auto& b : q.answers) {
+              other = other || (&b != &a && b.unit == a.unit && b.value.data == wrong.data);
+            }
+          }
+          REQUIRE_THAT(v.feedback[0], Catch::Contains(other ? "this is" : mistake.words));
+          ++seen[mistake.kind];
+        }
+      }
+    }
+  }
+  // Each mistake met at least once, so this test cannot pass by applying to nothing.
+  for (const auto& mistake : known_mistakes()) {
+    INFO(mistake.kind);
+    REQUIRE(seen[mistake.kind] > 0);
+  }
+}
+
 TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
   const Fixture plate("flying-plate");
   for (const std::string bad :
@@ -150,10 +247,23 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
 
 TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
   const Fixture plate("flying-plate");
-  for (const std::string same : {"m*R^2/4", "(m/4)*R*R", "R^2*m*0.25", "m*R^2/2 - m*R^2/4"}) {
+  for (const std::string same : {"m*R^2/4", "(m/4)*R*R", "R^2*m*0.25", "m*R^2/2 - m*R^2/4",
+                                  "(m*R^3 + m*R^2)/(4*(R + 1))"}) {
     INFO(same);
-    REQUIRE(plate.check("I0", same).correct);
+    const Verdict v = plate.check("I0", same);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.line, Catch::Contains("simplifies to the key's"));
   }
+  // Identities simplification cannot prove are judged by evaluation: atan(tan(alpha)/2) is
+  // atan2(sin(alpha), 2 cos(alpha)) for alpha in [0, pi/2).
+  for (const std::string same : {"atan(tan(alpha)/2)", "asin(sin(alpha)/sqrt(1+3*cos(alpha)^2))"}) {
+    INFO(same);
+    const Verdict v = plate.check("angle_L_e3", same);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.line, Catch::Contains("three more points"));
+  }
+  REQUIRE(plate.check("Omega_space_rate", "omega*sqrt(4 - 3*sin(alpha)^2)").correct);
+  REQUIRE_FALSE(plate.check("angle_L_e3", "atan(2*tan(alpha))").correct);
   for (const std::string other : {"m*R^2/4 + 1e-3*m", "m*R/4", "m^2*R^2/4"}) {
     INFO(other);
     REQUIRE_FALSE(plate.check("I0", other).correct);
