@@ -246,8 +246,8 @@ std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
             b.value.data.size() != v.size() || !j.all_close(v, b.value.data)) {
           continue;
         }
-        out.push_back("these are the " + theirs->second + "-frame components (" + b.name +
-                      "); " + j.a.name + " asks for the " + mine->second + "-frame ones");
+        out.push_back("these are the " + theirs->second + "-frame components (" + b.name + "); " +
+                      j.a.name + " asks for the " + mine->second + "-frame ones");
         return out;
       }
     }
@@ -301,7 +301,8 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const Parsed& p, con
   for (std::size_t i = 0; i < key.entries.size() && proved; ++i) {
     proved = sym::is_identically_zero(p.value.entries[i] - key.entries[i]);
   }
-  if (proved) return {true, "correct: " + a.name + " (your expression simplifies to the key's)", {}};
+  if (proved)
+    return {true, "correct: " + a.name + " (your expression simplifies to the key's)", {}};
   // The set values and three more points, each parameter scaled in turn.
   std::vector<sym::Values> points{ctx.values};
   const double factors[] = {1.13, 0.87, 1.29};

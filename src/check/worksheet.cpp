@@ -37,21 +37,18 @@ std::string shown(const Answer& a) {
 enum class Outcome { right, revealed, skipped, quit };
 
 struct Session {
-  std::istream& in;
+  const ReadLine& read_line;
   std::ostream& out;
   const Context& ctx;
   const Options& opt;
-  bool echo;
   bool quit_after_reveal = false;
 
-  bool read(std::string& line) {
-    out << std::flush;
-    if (!std::getline(in, line)) {
+  bool read(const std::string& prompt, std::string& line) {
+    if (!read_line(prompt, line)) {
       out << "\n(end of input)\n";
       return false;
     }
     line = trim(line);
-    if (echo) out << line << "\n";  // piped: show what was read, so the transcript reads well
     return true;
   }
 
@@ -66,9 +63,10 @@ struct Session {
     for (const auto& a : part.answers) {
       int wrong = 0;
       while (true) {
-        out << fmt::format("  {}{} = ", a.name, a.unit.empty() ? "" : " [" + a.unit + "]");
         std::string line;
-        if (!read(line) || line == "q") {
+        if (!read(fmt::format("  {}{} = ", a.name, a.unit.empty() ? "" : " [" + a.unit + "]"),
+                  line) ||
+            line == "q") {
           quit_after_reveal = revealed;  // a part quit after a reveal counts as revealed
           return Outcome::quit;
         }
@@ -99,13 +97,21 @@ struct Session {
 };
 }  // namespace
 
-WorksheetSummary run_worksheet(std::istream& in, std::ostream& out, const std::string& intro,
-                               const Problem& problem, const Context& ctx, const Options& opt,
-                               bool echo) {
+ReadLine stream_lines(std::istream& in, std::ostream& out, bool echo) {
+  return [&in, &out, echo](const std::string& prompt, std::string& line) {
+    out << prompt << std::flush;
+    if (!std::getline(in, line)) return false;
+    if (echo) out << trim(line) << "\n";  // piped: show what was read, so the transcript reads well
+    return true;
+  };
+}
+
+WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const std::string& intro,
+                               const Problem& problem, const Context& ctx, const Options& opt) {
   out << intro;
   out << "\nAnswer each part (units optional; SI if none). At any prompt: ? hint, ! reveal, "
          "s skip the part, q quit.\n";
-  Session session{in, out, ctx, opt, echo};
+  Session session{read, out, ctx, opt};
   WorksheetSummary sum;
   bool quit = false;
   for (const auto& part : ctx.key.parts) {

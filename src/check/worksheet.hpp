@@ -4,6 +4,7 @@
 /// does. At a prompt: an answer, or `?` for the hint, `!` to reveal the answer, `s` to skip the
 /// part, `q` to quit. After a second wrong try the hint comes by itself. End of input quits, so
 /// piped input never waits.
+#include <functional>
 #include <iosfwd>
 #include <string>
 
@@ -16,10 +17,17 @@ struct WorksheetSummary {
   int right = 0, revealed = 0, skipped = 0, not_reached = 0;
 };
 
+/// Where the answers come from: shows `prompt`, reads one line into `line`; false at the end of
+/// the input. The command line gives a line editor at a terminal (history, arrow keys), else
+/// stream_lines.
+using ReadLine = std::function<bool(const std::string& prompt, std::string& line)>;
+
+/// Lines from a stream, the prompt written to `out`; `echo` repeats each line read (for piped
+/// input, which a terminal does not show).
+ReadLine stream_lines(std::istream& in, std::ostream& out, bool echo);
+
 /// Prints `intro` (the statement with its numbers), then runs the parts, then the summary.
-/// `echo` repeats each line read (for piped input, which a terminal does not show).
-WorksheetSummary run_worksheet(std::istream& in, std::ostream& out, const std::string& intro,
-                               const Problem& problem, const Context& ctx, const Options& opt,
-                               bool echo);
+WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const std::string& intro,
+                               const Problem& problem, const Context& ctx, const Options& opt);
 
 }  // namespace wobble::check

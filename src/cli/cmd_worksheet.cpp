@@ -5,6 +5,7 @@
 
 #include "check/worksheet.hpp"
 #include "cli/commands.hpp"
+#include "cli/line_editor.hpp"
 #include "problem/load.hpp"
 #include "problem/values.hpp"
 #include "render/handout.hpp"
@@ -31,8 +32,11 @@ int run_worksheet(const WorksheetOptions& opt) {
   std::string intro = render_handout(key, shown, opt.variant);
   intro = intro.substr(0, intro.find("\n**("));
   const sym::SymbolTable table = problem.symbol_table();
-  (void)check::run_worksheet(std::cin, std::cout, intro + "\n", problem, {key, table, values}, {},
-                             ::isatty(STDIN_FILENO) == 0);
+  // At a terminal, a line editor; piped, plain lines echoed so that the transcript reads well.
+  const bool terminal = ::isatty(STDIN_FILENO) != 0;
+  const check::ReadLine read =
+      terminal ? terminal_lines() : check::stream_lines(std::cin, std::cout, true);
+  (void)check::run_worksheet(read, std::cout, intro + "\n", problem, {key, table, values}, {});
   return kExitOk;
 }
 

@@ -158,7 +158,9 @@ Value scaled(Value v, double f) {
 bool nonzero(const Answer& a) {
   return std::any_of(a.value.data.begin(), a.value.data.end(), [](double x) { return x != 0; });
 }
-bool named(const Answer& a, const std::string& stem) { return a.name.rfind(stem, 0) == 0; }
+bool named(const Answer& a, const std::string& stem) {
+  return a.name.rfind(stem, 0) == 0;
+}
 bool is_tensor(const Answer& a) {
   return a.value.shape == Value::Shape::matrix && (a.name == "I" || named(a, "I_"));
 }
@@ -181,8 +183,7 @@ std::vector<Mistake> known_mistakes() {
                  return v;
                },
                "products of inertia have the wrong sign"});
-  m.push_back({"degrees for radians",
-               [](const Answer& a) { return a.unit == "rad" && nonzero(a); },
+  m.push_back({"degrees for radians", [](const Answer& a) { return a.unit == "rad" && nonzero(a); },
                [](const Answer& a) { return scaled(a.value, 180 / M_PI); }, "in degrees"});
   m.push_back({"rev/s for rad/s", [](const Answer& a) { return a.unit == "rad/s" && nonzero(a); },
                [](const Answer& a) { return scaled(a.value, 1 / (2 * M_PI)); },
@@ -247,8 +248,8 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
 
 TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
   const Fixture plate("flying-plate");
-  for (const std::string same : {"m*R^2/4", "(m/4)*R*R", "R^2*m*0.25", "m*R^2/2 - m*R^2/4",
-                                  "(m*R^3 + m*R^2)/(4*(R + 1))"}) {
+  for (const std::string same :
+       {"m*R^2/4", "(m/4)*R*R", "R^2*m*0.25", "m*R^2/2 - m*R^2/4", "(m*R^3 + m*R^2)/(4*(R + 1))"}) {
     INFO(same);
     const Verdict v = plate.check("I0", same);
     REQUIRE(v.correct);
