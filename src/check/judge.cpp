@@ -103,9 +103,15 @@ void check_shape(const Answer& a, const sym::ValueText& v) {
 
 std::string entry_name(const Answer& a, std::size_t i) {
   if (a.value.shape == Value::Shape::vector) {
-    return a.value.data.size() == 3 ? std::string(1, "xyz"[i]) : std::to_string(i + 1);
+    // Moments are compared in increasing order: name them by rank, not by an axis.
+    if (a.name.rfind("principal_moments", 0) == 0 && a.value.data.size() == 3) {
+      return std::string("the ") +
+             std::array<const char*, 3>{"smallest", "middle", "largest"}[i] + " moment";
+    }
+    return "entry " +
+           (a.value.data.size() == 3 ? std::string(1, "xyz"[i]) : std::to_string(i + 1));
   }
-  return fmt::format("({}, {})", i / a.value.cols + 1, i % a.value.cols + 1);
+  return fmt::format("entry ({}, {})", i / a.value.cols + 1, i % a.value.cols + 1);
 }
 
 // The largest value of the same unit in the key: the scale a zero is judged against.
@@ -281,7 +287,7 @@ std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
     for (std::size_t i = 0; i < v.size(); ++i) {
       if (!j.close(v[i], k[i])) {
         out.push_back(
-            fmt::format("entry {} is off by {:.2g}%", entry_name(j.a, i),
+            fmt::format("{} is off by {:.3g}%", entry_name(j.a, i),
                         100 * std::abs(v[i] - k[i]) / (k[i] != 0 ? std::abs(k[i]) : j.scale)));
       }
     }

@@ -96,6 +96,9 @@ TEST_CASE("known mistakes are named") {
   REQUIRE_FALSE(sign.correct);
   REQUIRE_THAT(sign.feedback.at(0), Catch::Contains("products of inertia have the wrong sign"));
   REQUIRE(taylor.check("principal_moments", "[10, 5, 7]").correct);  // any order
+  // Moments are compared sorted, so a wrong one is named by its rank.
+  REQUIRE_THAT(taylor.check("principal_moments", "[11, 5, 7]").feedback.at(0),
+               Catch::Equals("the largest moment is off by 10%"));
   REQUIRE(taylor.check("principal_axes", "[[0,0,-1],[-0.70711,0.70711,0],[0.70711,0.70711,0]]")
               .correct);  // columns up to sign
   const Verdict dim = taylor.check("principal_moments", "[5, 7, 10] kg m");
