@@ -73,7 +73,7 @@ std::string render_latex(const Key& key) {
     if (!part.steps.empty()) {
       out += "\\paragraph{Steps}\n\\begin{enumerate}\n";
       for (const auto& s : part.steps) {
-        const std::string& prose = s.label.empty() || s.latex.empty() ? s.text : s.label;
+        const std::string& prose = s.latex.empty() ? s.text : s.label;
         out += "\\item " + latex_text(prose);
         if (!s.latex.empty()) out += "\\fit{" + s.latex + "}";
         out += "\n";

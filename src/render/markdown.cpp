@@ -31,7 +31,7 @@ std::string render_markdown(const Key& key) {
       out += "Steps:\n\n";
       for (std::size_t i = 0; i < part.steps.size(); ++i) {
         const auto& s = part.steps[i];
-        const std::string& prose = s.label.empty() || s.latex.empty() ? s.text : s.label;
+        const std::string& prose = s.latex.empty() ? s.text : s.label;
         out += fmt::format("{}. {}", i + 1, prose);
         if (!s.latex.empty()) {
           if (!prose.empty()) out += ' ';

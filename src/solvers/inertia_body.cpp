@@ -154,7 +154,7 @@ void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
                      "y, z. Second moments S_ii = ∫ x_i² dm about its centre:",
                      s.shape, sym::to_text(m, t), size_text, vec_text(c_exact, t)),
          ""});
-    for (const auto& l : derivation.steps_latex) body.steps.push_back({"", l});
+    for (const auto& st : derivation.steps) body.steps.push_back({st.text, st.latex});
     const GiNaC::matrix Ic = sym::normalized(derivation.I_cm);
     body.steps.push_back({"About its centre: I_cm = diag(" + sym::to_text(Ic(0, 0), t) + ", " +
                               sym::to_text(Ic(1, 1), t) + ", " + sym::to_text(Ic(2, 2), t) + ")",

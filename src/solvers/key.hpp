@@ -54,8 +54,9 @@ struct Step {
       : text(std::move(text_)), latex(std::move(latex_)), label(std::move(label_)) {}
   std::string text;   ///< the whole step as plain text (Unicode allowed)
   std::string latex;  ///< its formula as LaTeX math, may be empty
-  std::string label;  ///< the prose that introduces `latex` (Markdown and LaTeX print label +
-                      ///< formula instead of text); empty: print text
+  std::string label;  ///< the prose that introduces `latex`: Markdown and LaTeX print label +
+                      ///< formula when there is a formula (an empty label: the formula alone),
+                      ///< else text; the text renderer always prints text
 };
 
 struct PartKey {

@@ -19,8 +19,12 @@ namespace wobble::sym {
 
 struct ShapeDerivation {
   GiNaC::matrix I_cm = GiNaC::matrix(3, 3);  ///< diagonal, entries normal()-ised
-  /// Readable steps: the integrals set up, in LaTeX, written with the shape's own size names.
-  std::vector<std::string> steps_latex;
+  /// Readable steps: the integrals set up, written with the shape's own size names.
+  struct Step {
+    std::string text;   ///< plain text (Unicode)
+    std::string latex;  ///< the same in LaTeX math
+  };
+  std::vector<Step> steps;
 };
 
 /// @param sizes expressions in the order of shape_size_names(kind)

@@ -139,3 +139,16 @@ TEST_CASE("solving twice gives the same key (deterministic)") {
     }
   }
 }
+
+TEST_CASE("every step reads as plain text too (the text key shows no LaTeX)") {
+  for (const auto& p : load_catalog()) {
+    const Key key = solve(p, parameter_values(p, {}));
+    for (const auto& part : key.parts) {
+      for (const auto& step : part.steps) {
+        INFO(p.id << " (" << part.id << "): '" << step.text << "' / '" << step.latex << "'");
+        REQUIRE_FALSE(step.text.empty());
+        REQUIRE(step.text.find('\\') == std::string::npos);
+      }
+    }
+  }
+}
