@@ -1,5 +1,7 @@
 #include "problem/load.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -53,6 +55,26 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
   }
   return p;
 }
+// The [motion] table: exactly the keys the solver takes (problem.hpp), each an expression.
+std::optional<MotionSpec> read_motion(Reader& r, const toml::table& root,
+                                      const std::string& solver) {
+  const toml::node* n = root.get("motion");
+  const auto it = motion_keys().find(solver);
+  if (it == motion_keys().end()) {
+    if (n != nullptr) r.fail(n, "motion", "the " + solver + " solver takes no [motion] table");
+    return std::nullopt;
+  }
+  const std::string wanted = "a table { " + fmt::format("{}", fmt::join(it->second, ", ")) + " }";
+  if (n == nullptr) r.fail(&root, "motion", "missing (" + wanted + ")");
+  const toml::table* t = n->as_table();
+  if (t == nullptr) r.fail(n, "motion", "expected " + wanted);
+  r.only_keys(*t, "motion", {it->second.begin(), it->second.end()});
+  MotionSpec m;
+  for (const auto& key : it->second) {
+    m.exprs[key] = r.expression(t->get(key), "motion." + key, t);
+  }
+  return m;
+}
 }  // namespace
 
 Problem load_problem(const std::filesystem::path& file) {
@@ -81,13 +103,7 @@ Problem load_problem(const std::filesystem::path& file) {
   const toml::node* body = root.get("body");
   if (body == nullptr || !body->is_table()) r.fail(&root, "body", "missing (a table)");
   p.body = read_body(r, *body->as_table());
-  if (const toml::node* n = root.get("motion")) {
-    const toml::table* t = n->as_table();
-    if (t == nullptr) r.fail(n, "motion", "expected a table { omega, alpha }");
-    r.only_keys(*t, "motion", {"omega", "alpha"});
-    p.motion = MotionSpec{r.expression(t->get("omega"), "motion.omega", t),
-                          r.expression(t->get("alpha"), "motion.alpha", t)};
-  }
+  p.motion = read_motion(r, root, p.solver);
   const toml::array& parts = r.array(root, "parts", "parts");
   std::set<std::string> ids;
   for (std::size_t i = 0; i < parts.size(); ++i) {

@@ -44,7 +44,7 @@ CrossCheck cross_check_torque_free(const Problem& problem, const sym::Values& va
   // The problem as a scene: w(0) = omega (sin alpha, 0, cos alpha) in the body, body = space.
   Scene scene;
   scene.model = problem;
-  const std::string w = "(" + problem.motion->omega + ")", a = "(" + problem.motion->alpha + ")";
+  const std::string w = "(" + problem.motion->at("omega") + ")", a = "(" + problem.motion->at("alpha") + ")";
   scene.omega = {w + "*sin" + a, "0", w + "*cos" + a};
   scene.t_end = fmt::format("{:.17g}", 1.5 * t_max);
   scene.samples = 4001;

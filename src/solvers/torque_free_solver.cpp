@@ -67,17 +67,17 @@ Top::Top(const Problem& p, const sym::Values& values) : BodyContext(with_motion(
   require_symmetric_about_z(t, I_cm);
   t.I1 = I_cm(0, 0);
   t.I3 = I_cm(2, 2);
-  t.omega = t.table.parse(problem.motion->omega, "motion.omega");
-  t.alpha = t.table.parse(problem.motion->alpha, "motion.alpha");
+  t.omega = t.table.parse(problem.motion->at("omega"), "motion.omega");
+  t.alpha = t.table.parse(problem.motion->at("alpha"), "motion.alpha");
   if (!GiNaC::is_a<GiNaC::symbol>(t.alpha)) {
     throw InputError("motion.alpha: must name a parameter (the series is taken in it), got \"" +
-                     problem.motion->alpha + "\"");
+                     problem.motion->at("alpha") + "\"");
   }
   t.numeric = {value(t, t.I1, "I1"), value(t, t.I3, "I3"), value(t, t.omega, "motion.omega"),
                value(t, t.alpha, "motion.alpha")};
   if (!(t.numeric.omega_rad_s > 0.0)) {
     throw InputError(fmt::format("motion.omega: \"{}\" is {:.10g}; it must be > 0",
-                                 problem.motion->omega, t.numeric.omega_rad_s));
+                                 problem.motion->at("omega"), t.numeric.omega_rad_s));
   }
   if (!(t.numeric.alpha_rad >= 0.0 && t.numeric.alpha_rad < M_PI / 2)) {
     throw InputError(

@@ -157,9 +157,22 @@ GiNaC::lst substitution(const SymbolTable& table, const Values& values) {
   return subs;
 }
 
+namespace {
+// evalf from the leaves up. GiNaC's EllipticK and EllipticE evaluate only a floating-point
+// argument, and evalf() hands them the exact one (EllipticK(3/10*sqrt(10)) stays as it is).
+struct DeepEvalf : GiNaC::map_function {
+  GiNaC::ex operator()(const GiNaC::ex& e) override { return GiNaC::evalf(e.map(*this)); }
+};
+}  // namespace
+
 double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field) {
   DigitsGuard guard(40);
-  GiNaC::ex v = GiNaC::evalf(e.subs(at));
+  const GiNaC::ex exact = e.subs(at);
+  GiNaC::ex v = GiNaC::evalf(exact);
+  if (!GiNaC::is_a<GiNaC::numeric>(v)) {
+    DeepEvalf deep;
+    v = deep(exact);
+  }
   if (!GiNaC::is_a<GiNaC::numeric>(v)) {
     throw ExpressionError(field + ": expression does not evaluate to a number: " +
                           GiNaC::ex_to<GiNaC::basic>(v).class_name());
