@@ -105,11 +105,10 @@ std::string entry_name(const Answer& a, std::size_t i) {
   if (a.value.shape == Value::Shape::vector) {
     // Moments are compared in increasing order: name them by rank, not by an axis.
     if (a.name.rfind("principal_moments", 0) == 0 && a.value.data.size() == 3) {
-      return std::string("the ") +
-             std::array<const char*, 3>{"smallest", "middle", "largest"}[i] + " moment";
+      return std::string("the ") + std::array<const char*, 3>{"smallest", "middle", "largest"}[i] +
+             " moment";
     }
-    return "entry " +
-           (a.value.data.size() == 3 ? std::string(1, "xyz"[i]) : std::to_string(i + 1));
+    return "entry " + (a.value.data.size() == 3 ? std::string(1, "xyz"[i]) : std::to_string(i + 1));
   }
   return fmt::format("entry ({}, {})", i / a.value.cols + 1, i % a.value.cols + 1);
 }

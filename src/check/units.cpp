@@ -62,6 +62,14 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       ++i;
       continue;
     }
+    // "1/s": a reciprocal unit (a growth rate).
+    if (c == '1' && !any && !denominator &&
+        text.find_first_not_of(' ', i + 1) != std::string::npos &&
+        text[text.find_first_not_of(' ', i + 1)] == '/') {
+      denominator = true;
+      i = text.find_first_not_of(' ', i + 1) + 1;
+      continue;
+    }
     if (c == '/') {
       if (denominator || !any) return fail("one '/' after a unit");
       denominator = true;

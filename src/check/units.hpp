@@ -3,7 +3,8 @@
 /// Units of students' answers: a small, strict grammar (Debian has no units library for C++).
 ///
 /// A unit is a product of names with integer powers, '/' putting what follows in the
-/// denominator: "kg m^2", "kg*m^2/s", "rad/s", "m/s^2", "deg", "rev/s". Names: kg, g; m, cm, mm;
+/// denominator: "kg m^2", "kg*m^2/s", "rad/s", "m/s^2", "deg", "rev/s", "1/s" (or "s^-1").
+/// Names: kg, g; m, cm, mm;
 /// s, ms, min, h; rad, deg, rev (angles: dimensionless, but degrees and revolutions convert);
 /// J, N, Hz, rpm. An unknown name, a missing or non-integer power is an error.
 #include <array>

@@ -9,15 +9,18 @@
 
 namespace wobble::detail {
 
-namespace {
 const std::map<std::string, std::string>& greek() {
   static const std::map<std::string, std::string> g{
-      {"alpha", "α"},  {"beta", "β"},  {"gamma", "γ"}, {"delta", "δ"}, {"theta", "θ"},
-      {"lambda", "λ"}, {"mu", "μ"},    {"rho", "ρ"},   {"sigma", "σ"}, {"phi", "φ"},
-      {"psi", "ψ"},    {"omega", "ω"}, {"Omega", "Ω"}, {"Pi", "π"},    {"pi", "π"}};
+      {"alpha", "α"}, {"beta", "β"},  {"gamma", "γ"}, {"delta", "δ"},  {"epsilon", "ε"},
+      {"zeta", "ζ"},  {"eta", "η"},   {"theta", "θ"}, {"kappa", "κ"},  {"lambda", "λ"},
+      {"mu", "μ"},    {"nu", "ν"},    {"xi", "ξ"},    {"rho", "ρ"},    {"sigma", "σ"},
+      {"tau", "τ"},   {"phi", "φ"},   {"chi", "χ"},   {"psi", "ψ"},    {"omega", "ω"},
+      {"Gamma", "Γ"}, {"Delta", "Δ"}, {"Theta", "Θ"}, {"Lambda", "Λ"}, {"Sigma", "Σ"},
+      {"Phi", "Φ"},   {"Psi", "Ψ"},   {"Omega", "Ω"}, {"Pi", "π"},     {"pi", "π"}};
   return g;
 }
 
+namespace {
 std::string superscript(const std::string& digits) {
   static const char* sup[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
   std::string out;
@@ -153,6 +156,16 @@ std::string latex_text(const std::string& s) {
                                                                     {"π", "$\\pi$"},
                                                                     {"φ", "$\\phi$"},
                                                                     {"ψ", "$\\psi$"},
+                                                                    {"ε", "$\\epsilon$"},
+                                                                    {"Δ", "$\\Delta$"},
+                                                                    {"½", "$\\frac12$"},
+                                                                    {"≈", "$\\approx$"},
+                                                                    {"∝", "$\\propto$"},
+                                                                    {"°", "$^\\circ$"},
+                                                                    {"⁴", "$^4$"},
+                                                                    {"⁻¹", "$^{-1}$"},
+                                                                    {"̇", "$^{\\cdot}$"},
+                                                                    {"≠", "$\\neq$"},
                                                                     {"²", "$^2$"},
                                                                     {"³", "$^3$"},
                                                                     {"ᵀ", "$^T$"},

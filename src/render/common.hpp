@@ -1,11 +1,15 @@
 #pragma once
 /// @file
 /// Helpers shared by the renderers (not part of the public interface of render/).
+#include <map>
 #include <string>
 
 #include "solvers/key.hpp"
 
 namespace wobble::detail {
+
+/// Greek letter names and their Unicode letters ("alpha" -> "α").
+const std::map<std::string, std::string>& greek();
 
 /// GiNaC text made pleasant for a terminal: m*a^2 -> m·a², sqrt( -> √(, alpha -> α, Pi -> π.
 std::string pretty(const std::string& ginac_text);

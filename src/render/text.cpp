@@ -8,10 +8,23 @@ namespace wobble {
 namespace {
 // Statement Markdown for a terminal: $...$ delimiters dropped, a few LaTeX commands as Unicode.
 std::string plain_statement(const std::string& md) {
-  static const std::vector<std::pair<std::string, std::string>> commands{
-      {"\\alpha", "α"}, {"\\beta", "β"}, {"\\theta", "θ"}, {"\\omega", "ω"},  {"\\pi", "π"},
-      {"\\times", "×"}, {"\\cdot", "·"}, {"\\sqrt", "√"},  {"\\lambda", "λ"}, {"\\,", " "},
-      {"^2", "²"},      {"^3", "³"},     {"**", ""},       {"$", ""}};
+  static const std::vector<std::pair<std::string, std::string>> commands = [] {
+    std::vector<std::pair<std::string, std::string>> c{{"\\dot\\theta", "θ̇"},
+                                                       {"\\dot\\phi", "φ̇"},
+                                                       {"\\dot\\psi", "ψ̇"},
+                                                       {"\\times", "×"},
+                                                       {"\\cdot", "·"},
+                                                       {"\\sqrt", "√"},
+                                                       {"\\,", " "},
+                                                       {"^2", "²"},
+                                                       {"^3", "³"},
+                                                       {"**", ""},
+                                                       {"$", ""}};
+    // Longer names first: \\epsilon before \\eta cannot clash, but \\Phi and \\phi differ by case.
+    for (const auto& [name, letter] : detail::greek())
+      c.insert(c.begin() + 3, {"\\" + name, letter});
+    return c;
+  }();
   std::string s = md;
   for (const auto& [from, to] : commands) {
     for (std::size_t p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size())) {

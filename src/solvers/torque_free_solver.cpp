@@ -44,7 +44,7 @@ void require_symmetric_about_z(const Top& t, const GiNaC::matrix& I) {
       if (!sym::is_identically_zero(I(i, j))) {
         throw InputError(fmt::format(
             "{}: body: the torque-free symmetric solver needs principal axes along x, y, z, but "
-            "I_{}{} = {}; an asymmetric top needs the asymmetric-top solver (not yet available)",
+            "I_{}{} = {}; an asymmetric top needs solver = \"asymmetric_top\"",
             file, "xyz"[i], "xyz"[j], sym::to_text(I(i, j), t.table)));
       }
     }
@@ -52,7 +52,7 @@ void require_symmetric_about_z(const Top& t, const GiNaC::matrix& I) {
   if (!sym::is_identically_zero(I(0, 0) - I(1, 1))) {
     throw InputError(fmt::format(
         "{}: body: not axially symmetric about z: I_xx = {} but I_yy = {}; an asymmetric top "
-        "needs the asymmetric-top solver (not yet available)",
+        "needs solver = \"asymmetric_top\"",
         file, sym::to_text(I(0, 0), t.table), sym::to_text(I(1, 1), t.table)));
   }
 }

@@ -4,17 +4,25 @@
 /// about its centre of mass is diag(I1, I1, I3) in the problem's axes (symmetric about z), spun
 /// with w(0) = omega (sin(alpha) x + cos(alpha) z) from body axes = space axes (the `[motion]`
 /// table). Quantities, by the names the keys use (README, "Solvers"):
-/// | quantity | what | unit |
-/// |---|---|---|
-/// | I0, I | I = I0 diag(p, p, q) with the smallest whole p, q where the ratio is rational | kg m^2
-/// | | L0_body, L0_space | L at t = 0 in the body and space bases | kg m^2/s | | angle_omega_e3,
-/// angle_L_e3 | angles of w and L from e3 | rad | | body_cone_half_angle, space_cone_half_angle |
-/// (w, e3) and (w, L) | rad | | Omega_body, Omega_space | precession vectors (body frame; space
-/// frame at t = 0) | rad/s | | Omega_body_rate, Omega_space_rate | signed component along e3;
-/// magnitude | rad/s | | identity_residual | abs(Omega_space - Omega_body - w) from the three
-/// vectors, numerically | rad/s | | max_angle, max_angle_small_alpha | largest angle (z, e3); its
-/// series' leading term | rad | | t_max | first time that angle is reached | s | Formulas:
-/// core/torque_free_symmetric.hpp, whose numeric closed forms check these exact ones.
+///
+///     I0, I                   I = I0 diag(p, p, q), smallest whole p, q when the ratio is
+///                             rational                                             kg m^2
+///     L0_body, L0_space       L at t = 0 in the body and space bases               kg m^2/s
+///     angle_omega_e3,         the angles of w and L from e3                        rad
+///       angle_L_e3
+///     body_cone_half_angle,   (w, e3) and (w, L)                                   rad
+///       space_cone_half_angle
+///     Omega_body,             precession vectors (body frame; space frame at t = 0) rad/s
+///       Omega_space
+///     Omega_body_rate,        signed component along e3; magnitude                 rad/s
+///       Omega_space_rate
+///     identity_residual       |Omega_space - Omega_body - w| from the three vectors,
+///                             numerically                                          rad/s
+///     max_angle,              the largest angle (z, e3); its series' leading term  rad
+///       max_angle_small_alpha
+///     t_max                   the first time that angle is reached                 s
+///
+/// Formulas: core/torque_free_symmetric.hpp, whose numeric closed forms check these exact ones.
 #include <string>
 
 #include "core/inertia.hpp"

@@ -285,10 +285,26 @@ GiNaC::ex simplify(const GiNaC::ex& e) {
   return best;
 }
 
+namespace {
+// factor() can leave an irreducible factor partly collected (a^2*(e^2 + w^2) + c^2*w^2 + ...),
+// grouped differently from run to run (it follows GiNaC's term order). Expanded, each factor
+// has one form, which the canonical printer prints the same way in every run.
+GiNaC::ex expand_factors(const GiNaC::ex& f) {
+  if (GiNaC::is_a<GiNaC::mul>(f)) {
+    GiNaC::ex out = 1;
+    for (std::size_t i = 0; i < f.nops(); ++i) out *= expand_factors(f.op(i));
+    return out;
+  }
+  if (GiNaC::is_a<GiNaC::power>(f)) return GiNaC::pow(expand_factors(f.op(0)), f.op(1));
+  if (GiNaC::is_a<GiNaC::add>(f)) return GiNaC::expand(f);
+  return f;
+}
+}  // namespace
+
 GiNaC::ex tidy(const GiNaC::ex& e) {
   GiNaC::ex n = GiNaC::normal(e);
   GiNaC::ex nd = GiNaC::numer_denom(n);
-  return GiNaC::factor(nd.op(0)) / GiNaC::factor(nd.op(1));
+  return expand_factors(GiNaC::factor(nd.op(0))) / expand_factors(GiNaC::factor(nd.op(1)));
 }
 
 }  // namespace wobble::sym

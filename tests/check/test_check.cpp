@@ -65,8 +65,12 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   REQUIRE_THAT(parse_unit("g cm^2", "u").to_si, WithinRel(1e-7, 1e-15));
   REQUIRE_THAT(parse_unit("rev/s", "u").to_si, WithinRel(2 * M_PI, 1e-15));
   REQUIRE(parse_unit("deg", "u").angle);
+  REQUIRE(parse_unit("1/s", "u").dim == std::array<int, 3>{0, 0, -1});
+  REQUIRE(parse_unit("1/s", "u").same_dimension(parse_unit("s^-1", "u")));
+  REQUIRE_THAT(parse_unit("1/min", "u").to_si, WithinRel(1.0 / 60, 1e-15));
   REQUIRE(parse_unit("J", "u").same_dimension(parse_unit("kg m^2/s^2", "u")));
-  for (const std::string bad : {"furlong", "kg^x", "m/s/s", "/s", "kg^123", "", "kg m^2 !"}) {
+  for (const std::string bad :
+       {"furlong", "kg^x", "m/s/s", "/s", "kg^123", "", "kg m^2 !", "1/", "2/s", "1/s/s"}) {
     INFO(bad);
     REQUIRE_THROWS_AS(parse_unit(bad, "--answer"), InputError);
   }

@@ -78,6 +78,39 @@ std::string top_with(const std::string& from, const std::string& to) {
   return s.replace(p, from.size(), to);
 }
 
+// An asymmetric top spun exactly about its intermediate axis: valid except for a period.
+const std::string kAsym = R"TOML(id = "asym"
+title = "t"
+solver = "asymmetric_top"
+statement = "s"
+
+[[parameters]]
+name = "s"
+unit = "rad/s"
+default = 3
+range = "(0, inf)"
+
+[body]
+tensor = [["1", "0", "0"], ["0", "2", "0"], ["0", "0", "2.5"]]
+
+[motion]
+w1 = "0"
+w2 = "s"
+w3 = "0"
+
+[[parts]]
+id = "a"
+question = "q"
+answers = ["period"]
+)TOML";
+
+std::string asym_with(const std::string& from, const std::string& to) {
+  std::string s = kAsym;
+  const auto p = s.find(from);
+  if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "'");
+  return s.replace(p, from.size(), to);
+}
+
 // A minimal valid scene: a box spun about y; each bad scene changes one thing.
 const std::string kScene = R"TOML(id = "s"
 title = "t"
@@ -220,7 +253,31 @@ std::vector<Row> catalog() {
        {"solve",
         file("asym", top_with("sizes = [\"1\", \"1\", \"2\"]", "sizes = [\"1\", \"2\", \"3\"]"))},
        2,
-       {"not axially symmetric about z", "I_xx = ", "asymmetric-top solver"}},
+       {"not axially symmetric about z", "I_xx = ", "solver = \"asymmetric_top\""}},
+      {"asymmetric top: moments out of order",
+       {"solve", "asymmetric-top", "--set", "I1=3.5"},
+       2,
+       {"needs I1 < I2 < I3", "I_xx = 3.5", "relabel the axes"}},
+      {"asymmetric top: two moments equal",
+       {"solve", "asymmetric-top", "--set", "I2=2"},
+       2,
+       {"needs I1 < I2 < I3", "symmetric top", "torque_free_symmetric"}},
+      {"asymmetric top: moments violate the triangle inequality",
+       {"solve", "asymmetric-top", "--set", "I3=6"},
+       2,
+       {"body.tensor", "triangle inequality", "< I3 = 6"}},
+      {"asymmetric top: on the separatrix (spin exactly about e2)",
+       {"solve", file("separatrix", kAsym)},
+       2,
+       {"period: w(0) lies on the separatrix", "no period"}},
+      {"asymmetric top: motion keys of another solver",
+       {"solve", file("asymkeys", asym_with("w1 = \"0\"", "omega = \"0\""))},
+       2,
+       {"motion", "omega: unknown key"}},
+      {"asymmetric top: w(0) zero",
+       {"solve", file("asymzero", asym_with("w2 = \"s\"", "w2 = \"0*s\""))},
+       2,
+       {"motion: w(0)", "is zero"}},
       {"top alpha at the limit",
        {"solve", "flying-plate", "--set", "alpha=90deg"},
        2,

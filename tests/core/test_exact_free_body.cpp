@@ -153,11 +153,10 @@ TEST_CASE("steady rotation about a principal axis and bad input") {
 }
 
 TEST_CASE("momentum_at equals the momentum of at, for every kind of motion") {
-  const ExactFreeMotion kinds[] = {
-      ExactFreeMotion(Vec3(1, 2, 3), Vec3(0.2, 0.5, 1), kQ0),
-      ExactFreeMotion(Vec3(1, 2, 3), Vec3(1, 0.5, 0.2), kQ0),
-      ExactFreeMotion(Vec3(1, 1, 2.5), Vec3(0.4, -0.3, 1.2), kQ0),
-      ExactFreeMotion(Vec3(1, 2, 3), Vec3(0, 2, 0), kQ0)};
+  const ExactFreeMotion kinds[] = {ExactFreeMotion(Vec3(1, 2, 3), Vec3(0.2, 0.5, 1), kQ0),
+                                   ExactFreeMotion(Vec3(1, 2, 3), Vec3(1, 0.5, 0.2), kQ0),
+                                   ExactFreeMotion(Vec3(1, 1, 2.5), Vec3(0.4, -0.3, 1.2), kQ0),
+                                   ExactFreeMotion(Vec3(1, 2, 3), Vec3(0, 2, 0), kQ0)};
   for (const auto& m : kinds) {
     for (const double t : {0.0, 0.3, 7.0, 123.4}) {
       REQUIRE((m.momentum_at(t) - m.at(t).m_B).norm() == 0.0);  // the same arithmetic

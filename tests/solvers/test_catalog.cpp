@@ -94,6 +94,14 @@ void check_key(const Problem& p, const sym::Values& values) {
     }
   }
   // Consistency between answers, whatever their names in this problem.
+  if (const Answer* k2 = find(key, "k2"), *kc2 = find(key, "kc2"); k2 && kc2) {
+    // Two exact forms, each rounded once: their sum is 1 to two roundings.
+    REQUIRE_THAT(k2->value.data[0] + kc2->value.data[0], WithinAbs(1.0, 2 * kEps));
+  }
+  if (const Answer* T = find(key, "period"), *flip = find(key, "flip_interval"); T && flip) {
+    REQUIRE_THAT(flip->value.data[0], WithinAbs(T->value.data[0] / 2, kEps * T->value.data[0]));
+  }
+  if (p.solver != "inertia" && p.solver != "torque_free_symmetric") return;
   const Answer* I = find(key, "I") ? find(key, "I") : find(key, "I_corner");
   REQUIRE(I != nullptr);
   check_principal(*I,
