@@ -29,6 +29,22 @@ std::string superscript(const std::string& digits) {
 }
 }  // namespace
 
+namespace {
+// "theta0" -> "θ0", "phidot0" -> "φ̇0", "psidot" -> "ψ̇": a Greek name, an optional "dot" (a time
+// derivative) and digits; any other word stays as it is.
+std::string greek_word(const std::string& word) {
+  if (const auto it = greek().find(word); it != greek().end()) return it->second;
+  std::size_t digits = word.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(word[digits - 1]))) --digits;
+  std::string stem = word.substr(0, digits);
+  const bool dot = stem.size() > 3 && stem.compare(stem.size() - 3, 3, "dot") == 0;
+  if (dot) stem.resize(stem.size() - 3);
+  const auto it = greek().find(stem);
+  if (it == greek().end() || (!dot && digits == word.size())) return word;
+  return it->second + (dot ? "\u0307" : "") + word.substr(digits);
+}
+}  // namespace
+
 std::string pretty(const std::string& s) {
   std::string out;
   for (std::size_t i = 0; i < s.size();) {
@@ -41,7 +57,7 @@ std::string pretty(const std::string& s) {
       if (word == "sqrt") {
         out += "√";
       } else {
-        out += it == greek().end() ? word : it->second;
+        out += it == greek().end() ? greek_word(word) : it->second;
       }
       i = j;
     } else if (c == '^' && i + 1 < s.size() &&

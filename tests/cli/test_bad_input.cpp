@@ -1,6 +1,8 @@
 // The catalog of bad input: every kind the program knows, with its exit code and the words its
 // one-line message must contain. Adding a validation means adding a row.
 #include <catch2/catch.hpp>
+#include <fstream>
+#include <iterator>
 
 #include "cli/run.hpp"
 #include "temp_files.hpp"
@@ -109,6 +111,19 @@ std::string asym_with(const std::string& from, const std::string& to) {
   const auto p = s.find(from);
   if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "'");
   return s.replace(p, from.size(), to);
+}
+
+// A problem of the repository with one thing changed.
+std::string repo_problem_with(const std::string& id, const std::string& from,
+                              const std::string& to) {
+  std::ifstream in(std::string(WOBBLE_SOURCE_DIR) + "/problems/" + id + ".toml");
+  std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto p = s.find(from);
+  if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "' in " + id);
+  s.replace(p, from.size(), to);
+  const auto idp = s.find("id = \"" + id + "\"");
+  if (idp != std::string::npos) s.replace(idp, 7 + id.size(), "id = \"tmp\"");
+  return s;
 }
 
 // A minimal valid scene: a box spun about y; each bad scene changes one thing.
@@ -278,6 +293,28 @@ std::vector<Row> catalog() {
        {"solve", file("asymzero", asym_with("w2 = \"s\"", "w2 = \"0*s\""))},
        2,
        {"motion: w(0)", "is zero"}},
+      {"heavy top: too slow for steady precession",
+       {"solve", "heavy-top", "--set", "psidot0=10"},
+       2,
+       {"phidot_slow: no steady precession", "w3 = 10 rad/s", "needs (I3 w3)^2 >= "}},
+      {"heavy top: vertical start",
+       {"solve", "heavy-top", "--set", "theta0=0"},
+       2,
+       {"theta0 = 0 rad", "outside its range (0, pi)"}},
+      {"heavy top: negative length",
+       {"solve", "heavy-top", "--set", "l=-0.08"},
+       2,
+       {"l = -0.08 m", "outside its range"}},
+      {"heavy top: centre of mass off the axis",
+       {"solve", file("offaxis", repo_problem_with("heavy-top", "center = [\"0\", \"0\", \"l\"]",
+                                                   "center = [\"R\", \"0\", \"l\"]"))},
+       2,
+       {"body:", "symmetric about z through the pivot"}},
+      {"heavy top: centre of mass below the pivot",
+       {"solve", file("below", repo_problem_with("heavy-top", "center = [\"0\", \"0\", \"l\"]",
+                                                 "center = [\"0\", \"0\", \"-l\"]"))},
+       2,
+       {"body: the centre of mass is at z = -0.08 m", "above the pivot"}},
       {"top alpha at the limit",
        {"solve", "flying-plate", "--set", "alpha=90deg"},
        2,

@@ -215,6 +215,79 @@ TEST_CASE("heavy top agrees with an independent integration of Lagrange's equati
   }
 }
 
+namespace {
+// The heavy-top scene at the heavy-top problem's values (the same disc, pivot and start).
+Scene heavy_top_scene_at(const sym::Values& v, int samples) {
+  Scene sc = find_scene("heavy-top");
+  sc.model.parameters.clear();  // the values below are numbers: no parameters needed
+  const auto num = [](double x) { return fmt::format("{:.17g}", x); };
+  sc.model.body.shapes.at(0).mass = num(v.at("M"));
+  sc.model.body.shapes.at(0).sizes = {num(v.at("R"))};
+  sc.model.body.shapes.at(0).center = {"0", "0", num(v.at("l"))};
+  sc.gravity->g = num(v.at("g"));
+  sc.orientation.euler = {"0", num(v.at("theta0")), "0"};
+  sc.samples = samples;
+  sc.tolerance = 1e-12;
+  return sc;
+}
+
+// Every interior extremum of column j: the vertex of the parabola through the three samples
+// around it.
+std::vector<double> extrema(const SimulationResult& r, std::size_t j) {
+  std::vector<double> out;
+  for (std::size_t k = 1; k + 1 < r.rows.size(); ++k) {
+    const double a = r.rows[k - 1][j], b = r.rows[k][j], c = r.rows[k + 1][j];
+    if ((b - a) * (c - b) < 0) {
+      const double curvature = a - 2 * b + c;
+      out.push_back(b - (c - a) * (c - a) / (8 * curvature));
+    }
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("heavy top: the scene nods between the key's nutation limits") {
+  const Problem problem = find_problem("heavy-top");
+  const sym::Values v = parameter_values(problem, {});
+  const Key key = solve(problem, v);
+  Scene sc = heavy_top_scene_at(v, 20001);
+  sc.omega = {"0", "0", fmt::format("{:.17g}", v.at("psidot0"))};  // released at rest
+  const SimulationResult r = run(setup_scene(sc, std::vector<std::string>{}), "rkf78");
+  const auto turns = extrema(r, column(r, "euler_zyz_theta"));
+  REQUIRE(turns.size() >= 10);  // the nutation period is about 0.2 s
+  const double lo = answer_value(key, "theta_min"), hi = answer_value(key, "theta_max");
+  // Bounds: the run's tolerance 1e-12 per step over ~1e4 steps (1e-8), and the parabola's error
+  // at a vertex, about |d3 theta/dt3| h^3 with d3 theta/dt3 ~ (hi - lo) (2 pi / 0.2 s)^3 and
+  // h = 1e-4 s (4e-8).
+  for (const double th : turns) {
+    const double limit = std::abs(th - lo) < std::abs(th - hi) ? lo : hi;
+    REQUIRE_THAT(th, WithinAbs(limit, 1e-7));
+  }
+}
+
+TEST_CASE("heavy top: started at the key's steady precession, it precesses steadily") {
+  const Problem problem = find_problem("heavy-top");
+  const sym::Values v = parameter_values(problem, {});
+  const Key key = solve(problem, v);
+  for (const std::string rate : {"phidot_slow", "phidot_fast"}) {
+    INFO(rate);
+    const double phidot = answer_value(key, rate), th0 = v.at("theta0");
+    Scene sc = heavy_top_scene_at(v, 201);
+    sc.t_end = "0.5";
+    // omega in the body frame at psi = 0 (Taylor): (-phidot sin(theta), thetadot, w3).
+    sc.omega = {fmt::format("{:.17g}", -phidot * std::sin(th0)), "0",
+                fmt::format("{:.17g}", answer_value(key, "omega3"))};
+    const SimulationResult r = run(setup_scene(sc, std::vector<std::string>{}), "rkf78");
+    const std::size_t th = column(r, "euler_zyz_theta"), ph = column(r, "euler_zyz_phi");
+    // Steady: theta stays put and phi advances uniformly, to the run's accumulated tolerance
+    // (1e-12 per step over a few thousand steps).
+    for (const auto& row : r.rows) {
+      REQUIRE_THAT(row[th], WithinAbs(th0, 1e-8));
+      REQUIRE_THAT(std::remainder(row[ph] - phidot * row[0], 2 * M_PI), WithinAbs(0.0, 1e-8));
+    }
+  }
+}
+
 TEST_CASE("cross-check: simulated dynamic answers agree with the closed forms") {
   for (const std::string id : {"rect-solid", "flying-plate", "flying-square-plate"}) {
     for (const std::string alpha : {"5deg", "40deg", "80deg"}) {

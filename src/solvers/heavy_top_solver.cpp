@@ -1,0 +1,326 @@
+#include "solvers/heavy_top_solver.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "core/heavy_top.hpp"
+#include "solvers/exact_answer.hpp"
+#include "solvers/inertia_body.hpp"
+#include "solvers/solve.hpp"
+#include "symbolic/canonical_print.hpp"
+
+namespace wobble {
+
+namespace {
+using GiNaC::ex;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+struct Top : BodyContext {
+  Top(const Problem& problem, const sym::Values& values);
+  ex M, l, g, I1, I3, theta, thetadot, phidot, psidot;  // exact
+  ex w3, p_psi, p_phi, energy_prime;                    // exact
+  HeavyTop numeric{};
+  HeavyTopStart start{};
+  HeavyTopConstants constants{};
+  std::vector<std::string> zero_rates;  // "θ̇0 = 0", ...: set to zero in the exact forms
+  std::string file() const { return problem.file.string(); }
+};
+
+double value(const Top& t, const ex& e, const std::string& field) {
+  return sym::evaluate(e, t.exact.at, field);
+}
+
+ex motion(Top& t, const std::string& key) {
+  return t.table.parse(t.problem.motion->at(key), "motion." + key);
+}
+
+Top::Top(const Problem& p, const sym::Values& values) : BodyContext(p, values) {
+  Top& t = *this;
+  if (!t.body.has_mass) {
+    throw InputError(file() + ": body: the heavy top needs masses or shapes (its mass and centre)");
+  }
+  const auto& b = t.body.exact;
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = i + 1; j < 3; ++j) {
+      if (!sym::is_identically_zero(b.I_O(i, j))) {
+        throw InputError(fmt::format(
+            "{}: body: the heavy top must be symmetric about z through the pivot, but I_{}{} = {}",
+            file(), "xyz"[i], "xyz"[j], sym::to_text(b.I_O(i, j), t.table)));
+      }
+    }
+  }
+  if (!sym::is_identically_zero(b.I_O(0, 0) - b.I_O(1, 1))) {
+    throw InputError(fmt::format(
+        "{}: body: not symmetric about z: about the pivot I_xx = {} but I_yy = {}", file(),
+        sym::to_text(b.I_O(0, 0), t.table), sym::to_text(b.I_O(1, 1), t.table)));
+  }
+  for (int i = 0; i < 2; ++i) {
+    if (!sym::is_identically_zero(b.r_cm[i])) {
+      throw InputError(
+          fmt::format("{}: body: the centre of mass must be on the z axis (the "
+                      "symmetry axis through the pivot), but its {} is {}",
+                      file(), "xy"[i], sym::to_text(b.r_cm[i], t.table)));
+    }
+  }
+  M = b.mass;
+  l = sym::tidy(b.r_cm[2]);
+  I1 = sym::tidy(b.I_O(0, 0));
+  I3 = sym::tidy(b.I_O(2, 2));
+  g = motion(t, "g");
+  theta = motion(t, "theta0");
+  thetadot = motion(t, "thetadot0");
+  phidot = motion(t, "phidot0");
+  psidot = motion(t, "psidot0");
+  numeric = {value(t, M, "mass"), value(t, l, "l"), value(t, g, "motion.g"), value(t, I1, "I1"),
+             value(t, I3, "I3")};
+  if (!(numeric.l_m > 0.0)) {
+    throw InputError(
+        fmt::format("{}: body: the centre of mass is at z = {:.6g} m; it must be "
+                    "above the pivot (z > 0)",
+                    file(), numeric.l_m));
+  }
+  if (!(numeric.g_m_s2 > 0.0)) {
+    throw InputError(fmt::format("motion.g: \"{}\" is {:.6g}; it must be > 0",
+                                 problem.motion->at("g"), numeric.g_m_s2));
+  }
+  start = {value(t, theta, "motion.theta0"), value(t, thetadot, "motion.thetadot0"),
+           value(t, phidot, "motion.phidot0"), value(t, psidot, "motion.psidot0")};
+  // A rate that is zero at these values is written as 0: the key of a top released without
+  // nodding or precession reads p_phi = I3 psidot0 cos(theta0), not a page of zero terms.
+  for (auto [rate, name] : {std::pair<ex*, const char*>{&thetadot, "θ̇0"}, {&phidot, "φ̇0"}}) {
+    if (sym::is_identically_zero(rate->subs(t.exact.at))) {
+      *rate = 0;
+      zero_rates.push_back(std::string(name) + " = 0");
+    }
+  }
+  if (!(start.theta >= 0.0 && start.theta <= M_PI)) {
+    throw InputError(fmt::format("motion.theta0: {:.10g} rad must lie in [0, pi]", start.theta));
+  }
+  constants = heavy_top_constants(numeric, start);
+  const ex s = GiNaC::sin(theta), c = GiNaC::cos(theta);
+  w3 = phidot * c + psidot;
+  p_psi = I3 * w3;
+  p_phi = I1 * phidot * GiNaC::pow(s, 2) + p_psi * c;
+  energy_prime = I1 / 2 * (GiNaC::pow(thetadot, 2) + GiNaC::pow(phidot * s, 2)) + M * g * l * c;
+}
+
+// An exact value against the independent double route, to `ulps` eps of the scale.
+void check(double exact, double numeric, double scale, double ulps, const std::string& name) {
+  if (!(std::abs(exact - numeric) <= ulps * kEps * std::max(scale, std::abs(exact)))) {
+    throw std::logic_error(fmt::format("{}: exact {} but numeric {}", name, exact, numeric));
+  }
+}
+
+Step lagrangian_step() {
+  return {
+      "L = I1/2 (φ̇² sin²θ + θ̇²) + I3/2 (φ̇ cos θ + ψ̇)² − M g l cos θ (ω in the primed basis: "
+      "(−φ̇ sin θ, θ̇, φ̇ cos θ + ψ̇)).",
+      "\\mathcal{L} = \\tfrac{I_1}{2}\\left(\\dot\\phi^2\\sin^2\\theta + \\dot\\theta^2\\right) "
+      "+ \\tfrac{I_3}{2}\\left(\\dot\\phi\\cos\\theta + \\dot\\psi\\right)^2 - Mgl\\cos\\theta",
+      "The Lagrangian:"};
+}
+Step momenta_step() {
+  return {
+      "φ and ψ are ignorable: p_ψ = ∂L/∂ψ̇ = I3 ω3, p_φ = ∂L/∂φ̇ = I1 φ̇ sin²θ + p_ψ cos θ, "
+      "both conserved, and so is E = T + M g l cos θ.",
+      "p_\\psi = I_3\\,\\omega_3,\\quad p_\\phi = I_1\\dot\\phi\\sin^2\\theta + "
+      "p_\\psi\\cos\\theta",
+      "Conserved momenta:"};
+}
+Step potential_step() {
+  return {
+      "With φ̇ = (p_φ − p_ψ cos θ)/(I1 sin²θ): E' = E − p_ψ²/(2 I3) = I1 θ̇²/2 + V(θ), "
+      "V(θ) = (p_φ − p_ψ cos θ)²/(2 I1 sin²θ) + M g l cos θ; θ turns where V(θ) = E'.",
+      "V(\\theta) = \\frac{(p_\\phi - p_\\psi\\cos\\theta)^2}{2I_1\\sin^2\\theta} + "
+      "Mgl\\cos\\theta = E'",
+      "The effective potential:"};
+}
+Step cubic_step() {
+  return {
+      "In u = cos θ: u̇² = f(u) = (1 − u²)(α − β u) − (b − a u)², a = p_ψ/I1, b = p_φ/I1, "
+      "α = 2E'/I1, β = 2Mgl/I1; f(±1) ≤ 0 ≤ f(cos θ0), so one root on each side of the start.",
+      "\\dot u^2 = f(u) = (1 - u^2)(\\alpha - \\beta u) - (b - a u)^2", "The turning points:"};
+}
+
+// The nutation limits: exactly when the start is a turning point (thetadot0 = 0), where the
+// cubic in d = u - u0 loses its constant term and the other limit solves a quadratic.
+Computed nutation_limit(const Top& t, bool upper) {
+  const std::string q = upper ? "theta_max" : "theta_min";
+  const Nutation n = nutation_limits(t.numeric, t.start);
+  const double want = upper ? n.theta_max : n.theta_min;
+  std::vector<Step> steps{potential_step(), cubic_step()};
+  if (!sym::is_identically_zero(t.thetadot.subs(t.exact.at))) {
+    Answer a;
+    a.name = q;
+    a.value = Value::scalar(want);
+    a.latex = format_number(want);
+    a.unit = "rad";
+    a.notes.push_back(
+        "Numeric: a root of the cubic f(cos θ) = 0 (TOMS 748 in its bracket); θ̇0 ≠ 0, so the "
+        "start is not a turning point and no closed form is printed.");
+    return {a, steps};
+  }
+  const ex u0 = GiNaC::cos(t.theta), s2 = GiNaC::pow(GiNaC::sin(t.theta), 2);
+  const ex a = t.p_psi / t.I1, beta = 2 * t.M * t.g * t.l / t.I1;
+  const ex P = GiNaC::pow(t.phidot, 2) * s2;
+  const ex c1 = sym::tidy(-beta * s2 - 2 * u0 * P + 2 * a * t.phidot * s2);
+  const ex c2 = sym::tidy(2 * u0 * beta - P - a * a);
+  const ex root = GiNaC::sqrt(sym::simplify(c2 * c2 - 4 * beta * c1));
+  // The other limit: the root of beta d^2 + c2 d + c1 with u0 + d in [-1, 1] (the third root of
+  // the cubic is beyond u = 1); which sign that is, is decided at the values.
+  const ex d_plus = (-c2 + root) / (2 * beta), d_minus = (-c2 - root) / (2 * beta);
+  const double u0n = std::cos(t.start.theta);
+  const double dp = value(t, d_plus, "d+"), dm = value(t, d_minus, "d-");
+  const auto in_range = [&](double d) { return u0n + d >= -1 - 1e-12 && u0n + d <= 1 + 1e-12; };
+  const bool plus = in_range(dp) && (!in_range(dm) || std::abs(dp) <= std::abs(dm));
+  const ex d = plus ? d_plus : d_minus;
+  const double dn = plus ? dp : dm;
+  // The other limit at a larger cos (d > 0) is at a smaller angle: then the start is theta_max.
+  const bool start_is_max = dn > 0;
+  const ex e = upper == start_is_max ? t.theta : GiNaC::acos(u0 + d);
+  Computed out{exact_scalar(q, e, "rad", t.exact), steps};
+  // acos near u = 1 amplifies the root's rounding: compare within sqrt(eps)-scaled bounds there.
+  check(out.answer.value.data[0], want, 1.0, 1e4, q);
+  out.steps.push_back(
+      {"θ̇0 = 0: the start is a turning point; dividing f by (u − cos θ0) leaves β d² + c2 d + c1 "
+       "= 0 in d = u − cos θ0, with c1 = " +
+           sym::to_text(c1, t.table) + ", c2 = " + sym::to_text(c2, t.table) + ".",
+       ""});
+  return out;
+}
+
+Computed motion_kind(const Top& t) {
+  const ex u_star = sym::tidy(t.p_phi / t.p_psi);
+  Computed out{exact_scalar("u_phidot_zero", u_star, "", t.exact), {potential_step()}};
+  const double us = out.answer.value.data[0];
+  // f(u*) = (1 - u*^2)(alpha - beta u*) since b - a u* = 0: its sign places u* against the
+  // limits, decided exactly where it is zero.
+  const ex level = sym::tidy(2 * t.energy_prime - 2 * t.M * t.g * t.l * u_star);
+  const bool zero = sym::is_identically_zero(level.subs(t.exact.at));
+  const double lv = zero ? 0.0 : value(t, level, "2E' - 2 M g l u*");
+  std::string kind;
+  if (zero && std::abs(us) < 1) {
+    kind = "u_p is a nutation limit: φ̇ = 0 there, the axis traces cusps (a top released at rest).";
+  } else if (std::abs(us) < 1 && lv > 0) {
+    kind = "u_p lies between the nutation limits: φ̇ changes sign, the axis traces loops.";
+  } else {
+    kind = "u_p lies outside the nutation limits: φ̇ keeps its sign, the axis traces waves.";
+  }
+  out.answer.notes.push_back(kind);
+  out.steps.push_back(
+      {"φ̇ = (p_φ − p_ψ u)/(I1 (1 − u²)) vanishes at u_p = p_φ/p_ψ; f(u_p) = (1 − u_p²)(α − β "
+       "u_p) says whether u_p lies inside (loops), on (cusps) or outside (waves) [u_min, u_max].",
+       ""});
+  return out;
+}
+
+Computed steady(const Top& t, const std::string& q) {
+  const ex c = GiNaC::cos(t.theta);
+  const ex p = t.p_psi, Mgl = t.M * t.g * t.l;
+  const auto rates = steady_precession(t.numeric, t.start.theta, t.constants.w3);
+  if (!rates) {
+    throw InputError(fmt::format(
+        "{}: {}: no steady precession at theta0 = {:.6g} rad with the spin w3 = {:.6g} rad/s: "
+        "it needs (I3 w3)^2 >= 4 I1 M g l cos(theta0)",
+        t.file(), q, t.start.theta, t.constants.w3));
+  }
+  const ex root = GiNaC::sqrt(sym::tidy(p * p - 4 * t.I1 * Mgl * c));
+  const ex qq = t.constants.w3 >= 0 ? p + root : p - root;
+  const bool slow = q == "phidot_slow";
+  Computed out{exact_scalar(q, slow ? 2 * Mgl / qq : qq / (2 * t.I1 * c), "rad/s", t.exact),
+               {{"θ̈ = 0 at fixed θ with ω3 fixed: I1 cos θ φ̇² − I3 ω3 φ̇ + M g l = 0; the roots as "
+                 "2Mgl/q and q/(2 I1 cos θ), q = I3 ω3 + sqrt((I3 ω3)² − 4 I1 M g l cos θ) (no "
+                 "cancellation).",
+                 "I_1\\cos\\theta\\,\\dot\\phi^2 - I_3\\omega_3\\,\\dot\\phi + Mgl = 0",
+                 "Steady precession:"}}};
+  const double want = slow ? rates->slow : rates->fast;
+  if (std::isfinite(want)) check(out.answer.value.data[0], want, want, 64, q);
+  out.answer.notes.push_back(
+      slow ? "The slow precession: for a fast top ≈ M g l / (I3 ω3), independent of θ."
+           : "The fast precession: for a fast top ≈ I3 ω3 / (I1 cos θ), nearly the free nutation.");
+  return out;
+}
+
+Computed quantity_of(const Top& t, const std::string& q);
+
+Computed quantity(const Top& t, const std::string& q) {
+  Computed out = quantity_of(t, q);
+  if (!t.zero_rates.empty()) {
+    out.steps.insert(
+        out.steps.begin(),
+        {fmt::format("At these values {}: the exact forms are written with {}.",
+                     fmt::join(t.zero_rates, " and "), t.zero_rates.size() == 1 ? "it" : "them"),
+         ""});
+  }
+  return out;
+}
+
+Computed quantity_of(const Top& t, const std::string& q) {
+  const ex s = GiNaC::sin(t.theta), c = GiNaC::cos(t.theta);
+  const auto& k = t.constants;
+  if (q == "lagrangian0") {
+    const ex L = t.I1 / 2 * (GiNaC::pow(t.phidot * s, 2) + GiNaC::pow(t.thetadot, 2)) +
+                 t.I3 / 2 * GiNaC::pow(t.w3, 2) - t.M * t.g * t.l * c;
+    Computed out{exact_scalar(q, L, "J", t.exact), {lagrangian_step()}};
+    const double Vn = t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m * std::cos(t.start.theta);
+    check(out.answer.value.data[0], k.energy - 2 * Vn, k.energy + std::abs(Vn), 64, q);
+    return out;
+  }
+  if (q == "p_phi" || q == "p_psi") {
+    Computed out{exact_scalar(q, q == "p_phi" ? t.p_phi : t.p_psi, "kg m^2/s", t.exact),
+                 {lagrangian_step(), momenta_step()}};
+    const double want = q == "p_phi" ? k.p_phi : k.p_psi;
+    check(out.answer.value.data[0], want, std::abs(k.p_psi) + std::abs(k.p_phi), 64, q);
+    return out;
+  }
+  if (q == "energy" || q == "energy_prime") {
+    const ex E = q == "energy" ? t.energy_prime + t.I3 / 2 * GiNaC::pow(t.w3, 2) : t.energy_prime;
+    Computed out{exact_scalar(q, E, "J", t.exact), {lagrangian_step(), momenta_step()}};
+    if (q == "energy_prime") out.steps.push_back(potential_step());
+    const double Vn = t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m;
+    check(out.answer.value.data[0], q == "energy" ? k.energy : k.energy_prime,
+          std::abs(k.energy) + Vn, 64, q);
+    return out;
+  }
+  if (q == "theta_min" || q == "theta_max") return nutation_limit(t, q == "theta_max");
+  if (q == "u_phidot_zero") return motion_kind(t);
+  if (q == "omega3" || q == "omega3_min") {
+    const ex w_min = sym::simplified_sqrt(sym::tidy(4 * t.M * t.g * t.l * t.I1 / (t.I3 * t.I3)));
+    const Step sleeping{
+        "The vertical (sleeping) top: small tilts stay small when p_ψ² ≥ 4 M g l I1, i.e. "
+        "ω3 ≥ 2 sqrt(M g l I1)/I3.",
+        "p_\\psi^2 \\ge 4MglI_1 \\iff \\omega_3 \\ge \\frac{2\\sqrt{MglI_1}}{I_3}",
+        "Sleeping top:"};
+    Computed out{exact_scalar(q, q == "omega3" ? t.w3 : w_min, "rad/s", t.exact), {sleeping}};
+    const bool stable = sleeping_top_is_stable(k.p_psi, t.numeric.M_kg, t.numeric.g_m_s2,
+                                               t.numeric.l_m, t.numeric.I1_kgm2);
+    if (q == "omega3_min") {
+      const double wn =
+          2 * std::sqrt(t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m * t.numeric.I1_kgm2) /
+          t.numeric.I3_kgm2;
+      check(out.answer.value.data[0], wn, wn, 16, q);
+      out.answer.notes.push_back(fmt::format(
+          "This top's spin ω3 = {} rad/s is {} the minimum: stood vertical, it would {}.",
+          format_number(k.w3), stable ? "at least" : "below",
+          stable ? "sleep (stay up)" : "fall away from the vertical"));
+    } else {
+      check(out.answer.value.data[0], k.w3, std::abs(k.w3), 16, q);
+    }
+    return out;
+  }
+  if (q == "phidot_slow" || q == "phidot_fast") return steady(t, q);
+  throw InputError(fmt::format("{}: unknown quantity '{}' for the heavy_top solver", t.file(), q));
+}
+}  // namespace
+
+Key solve_heavy_top(const Problem& problem, const sym::Values& values) {
+  const Top t(problem, values);
+  return assemble_parts(problem, [&](const std::string& q) { return quantity(t, q); });
+}
+
+}  // namespace wobble
