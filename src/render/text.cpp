@@ -9,20 +9,16 @@ namespace {
 // Statement Markdown for a terminal: $...$ delimiters dropped, a few LaTeX commands as Unicode.
 std::string plain_statement(const std::string& md) {
   static const std::vector<std::pair<std::string, std::string>> commands = [] {
-    std::vector<std::pair<std::string, std::string>> c{{"\\dot\\theta", "θ̇"},
-                                                       {"\\dot\\phi", "φ̇"},
-                                                       {"\\dot\\psi", "ψ̇"},
-                                                       {"\\times", "×"},
-                                                       {"\\cdot", "·"},
-                                                       {"\\sqrt", "√"},
-                                                       {"\\,", " "},
-                                                       {"^2", "²"},
-                                                       {"^3", "³"},
-                                                       {"**", ""},
-                                                       {"$", ""}};
-    // Longer names first: \\epsilon before \\eta cannot clash, but \\Phi and \\phi differ by case.
-    for (const auto& [name, letter] : detail::greek())
-      c.insert(c.begin() + 3, {"\\" + name, letter});
+    std::vector<std::pair<std::string, std::string>> c{
+        {"\\times", "×"}, {"\\cdot", "·"}, {"\\sqrt", "√"}, {"\\,", " "},
+        {"^2", "²"},      {"^3", "³"},     {"**", ""},      {"$", ""}};
+    // \\dot\\theta before \\theta: a Greek letter with a combining dot above.
+    std::vector<std::pair<std::string, std::string>> letters;
+    for (const auto& [name, letter] : detail::greek()) {
+      letters.push_back({"\\dot\\" + name, letter + "\u0307"});
+    }
+    for (const auto& [name, letter] : detail::greek()) letters.push_back({"\\" + name, letter});
+    c.insert(c.begin(), letters.begin(), letters.end());
     return c;
   }();
   std::string s = md;

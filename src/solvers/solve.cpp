@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "solvers/asymmetric_top_solver.hpp"
+#include "solvers/euler_angles_solver.hpp"
 #include "solvers/heavy_top_solver.hpp"
 #include "solvers/inertia_solver.hpp"
 #include "solvers/torque_free_solver.hpp"
@@ -27,7 +28,7 @@ Key assemble_parts(const Problem& problem,
 }
 
 std::vector<std::string> solver_names() {
-  return {"inertia", "torque_free_symmetric", "asymmetric_top", "heavy_top"};
+  return {"inertia", "torque_free_symmetric", "asymmetric_top", "heavy_top", "euler_angles"};
 }
 
 std::vector<std::string> key_conventions() {
@@ -50,6 +51,8 @@ Key solve(const Problem& problem, const sym::Values& values) {
     key = solve_asymmetric_top(problem, values);
   } else if (problem.solver == "heavy_top") {
     key = solve_heavy_top(problem, values);
+  } else if (problem.solver == "euler_angles") {
+    key = solve_euler_angles(problem, values);
   } else {
     throw InputError(fmt::format("{}: solver: unknown solver '{}' (known: {})",
                                  problem.file.string(), problem.solver,

@@ -244,6 +244,34 @@ TEST_CASE("each known mistake is named, on every answer of every problem where i
   }
 }
 
+TEST_CASE("components in another frame are named as such (omega_body for omega_space, ...)") {
+  int seen = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        for (const auto& q : f.key.parts) {
+          for (const auto& b : q.answers) {
+            const auto stem = [](const std::string& n) { return n.substr(0, n.rfind('_')); };
+            const bool frames = a.name.find('_') != std::string::npos && &a != &b &&
+                                stem(a.name) == stem(b.name) && a.unit == b.unit &&
+                                a.value.data.size() == b.value.data.size();
+            if (!frames || b.value.data == a.value.data) continue;
+            const std::string other = b.name.substr(b.name.rfind('_') + 1);
+            if (other != "body" && other != "space" && other != "primed") continue;
+            INFO(p.id << ": " << b.name << " given for " << a.name);
+            const Verdict v = f.check(a.name, typed(b.value));
+            REQUIRE_FALSE(v.correct);
+            REQUIRE_THAT(v.feedback.at(0), Catch::Contains("the " + other + "-frame components"));
+            ++seen;
+          }
+        }
+      }
+    }
+  }
+  REQUIRE(seen >= 6);  // euler-angles and its PHY 711 twin: three bases each, both ways
+}
+
 TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
   const Fixture plate("flying-plate");
   for (const std::string bad :

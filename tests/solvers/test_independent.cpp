@@ -1,4 +1,7 @@
 // The keys against independent hand derivations, at parameter values that are not the defaults.
+#include <fmt/format.h>
+
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -159,4 +162,124 @@ TEST_CASE("torque-free alpha = 0: no wobble, said in the key, nothing divided by
   REQUIRE(answer(still, "t_max").value.data[0] == 0.0);
   REQUIRE(answer(still, "space_cone_half_angle").value.data[0] == 0.0);
   REQUIRE_THAT(answer(still, "t_max").notes.at(0), Catch::Contains("no wobble"));
+}
+
+namespace {
+using M3 = std::array<std::array<double, 3>, 3>;
+M3 mul(const M3& a, const M3& b) {
+  M3 c{};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      for (int k = 0; k < 3; ++k) c[i][j] += a[i][k] * b[k][j];
+    }
+  }
+  return c;
+}
+M3 rz(double a) {
+  return {{{std::cos(a), -std::sin(a), 0}, {std::sin(a), std::cos(a), 0}, {0, 0, 1}}};
+}
+M3 ry(double a) {
+  return {{{std::cos(a), 0, std::sin(a)}, {0, 1, 0}, {-std::sin(a), 0, std::cos(a)}}};
+}
+M3 rx(double a) {
+  return {{{1, 0, 0}, {0, std::cos(a), -std::sin(a)}, {0, std::sin(a), std::cos(a)}}};
+}
+std::vector<double> flat(const M3& m) {
+  std::vector<double> v;
+  for (const auto& row : m) v.insert(v.end(), row.begin(), row.end());
+  return v;
+}
+std::vector<double> matvec(const std::vector<double>& m, const std::vector<double>& x) {
+  std::vector<double> y(3, 0.0);
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) y[i] += m[3 * i + j] * x[j];
+  }
+  return y;
+}
+}  // namespace
+
+TEST_CASE("euler-angles: matrices by hand, angles read back, gimbal lock, both conventions") {
+  // A grid over the ranges, with the ends: theta = 0 and pi (gimbal lock), phi and psi = pi.
+  const std::vector<std::string> phis{"-170deg", "-30deg", "0", "40deg", "180deg"};
+  const std::vector<std::string> thetas{"0", "1deg", "30deg", "90deg", "179deg", "180deg"};
+  const std::vector<std::string> psis{"-90deg", "0", "70deg", "180deg"};
+  for (const auto& ph : phis) {
+    for (const auto& th : thetas) {
+      for (const auto& ps : psis) {
+        INFO(ph << " " << th << " " << ps);
+        const Problem p = find_problem("euler-angles");
+        const sym::Values v = parameter_values(p, {"phi=" + ph, "theta=" + th, "psi=" + ps});
+        const Key key = solve(p, v);
+        const double f = v.at("phi"), t = v.at("theta"), s = v.at("psi");
+        const M3 R = mul(mul(rz(f), ry(t)), rz(s));
+        require_values(answer(key, "R_zyz"), flat(R));
+        M3 Rt{};
+        for (int i = 0; i < 3; ++i) {
+          for (int j = 0; j < 3; ++j) Rt[i][j] = R[j][i];
+        }
+        require_values(answer(key, "R_phy711"), flat(Rt));
+        require_values(answer(key, "angles_phy711"), {f, t, s});
+        // Goldstein's angles and both readings give the same rotation back (z-x-z by hand).
+        const auto& zxz = answer(key, "angles_zxz").value.data;
+        require_values({"zxz", "", "", Value::matrix(3, 3, flat(R)), "", {}, {}},
+                       flat(mul(mul(rz(zxz[0]), rx(zxz[1])), rz(zxz[2]))));
+        const auto& back = answer(key, "angles_back_zyz").value.data;
+        require_values({"back", "", "", Value::matrix(3, 3, flat(R)), "", {}, {}},
+                       flat(mul(mul(rz(back[0]), ry(back[1])), rz(back[2]))));
+        const auto& back_x = answer(key, "angles_back_zxz").value.data;
+        require_values({"back_x", "", "", Value::matrix(3, 3, flat(R)), "", {}, {}},
+                       flat(mul(mul(rz(back_x[0]), rx(back_x[1])), rz(back_x[2]))));
+        if (t != 0.0 && t != M_PI) {  // theta = 0 or pi exactly: gimbal lock
+          require_values(answer(key, "angles_back_zyz"), {f, t, s});  // the angles given
+        } else {
+          REQUIRE(back[2] == 0.0);  // gimbal lock: psi = 0 by convention
+          REQUIRE_THAT(answer(key, "angles_back_zyz").notes.at(0), Catch::Contains("Gimbal"));
+        }
+        for (const auto* a : {&back, &back_x}) {
+          REQUIRE((*a)[0] > -M_PI);
+          REQUIRE((*a)[0] <= M_PI);
+        }
+        // w in three bases is one vector: space = R body, primed = Rz(psi) body; T = w.L/2.
+        const auto& wb = answer(key, "omega_body").value.data;
+        require_values(answer(key, "omega_space"), matvec(flat(R), wb));
+        require_values(answer(key, "omega_primed"), matvec(flat(rz(s)), wb));
+        const auto& Lp = answer(key, "L_primed").value.data;
+        const auto& wp = answer(key, "omega_primed").value.data;
+        REQUIRE_THAT(answer(key, "kinetic_energy").value.data[0],
+                     WithinAbs(0.5 * (wp[0] * Lp[0] + wp[1] * Lp[1] + wp[2] * Lp[2]),
+                               16 * kEps * answer(key, "kinetic_energy").value.data[0]));
+      }
+    }
+  }
+}
+
+TEST_CASE("asymmetric-top: spun exactly about e3, the period is the small-oscillation one") {
+  const Key key = solve_with("asymmetric-top", {"w1=0", "w2=0"});
+  const double I1 = 2, I2 = 3, I3 = 4, w3 = 5;
+  require_values(answer(key, "k2"), {0.0});
+  require_values(answer(key, "energy"), {0.5 * I3 * w3 * w3});
+  require_values(answer(key, "L_magnitude"), {I3 * w3});
+  const double T = 2 * M_PI / (w3 * std::sqrt((I3 - I2) * (I3 - I1) / (I1 * I2)));
+  require_values(answer(key, "period"), {T});
+  require_values(answer(key, "period_small_oscillation"), {T});
+  // Stable about the smallest and largest axes, unstable about the middle one (|w(0)| = w3).
+  REQUIRE_THAT(answer(key, "rate_axis1").notes.at(0), Catch::StartsWith("Stable"));
+  REQUIRE_THAT(answer(key, "rate_axis2").notes.at(0), Catch::StartsWith("Unstable"));
+  REQUIRE(answer(key, "rate_axis2").unit == "1/s");
+  REQUIRE_THAT(answer(key, "rate_axis3").notes.at(0), Catch::StartsWith("Stable"));
+  require_values(answer(key, "rate_axis2"), {w3 * std::sqrt((I2 - I1) * (I3 - I2) / (I1 * I3))});
+}
+
+TEST_CASE("heavy-top: the sleeping top's verdict flips at the threshold p_psi^2 = 4 M g l I1") {
+  const double M = 0.5, R = 0.05, l = 0.08, g = 9.81;
+  const double I1 = M * R * R / 4 + M * l * l, I3 = M * R * R / 2;
+  const double w_min = 2 * std::sqrt(M * g * l * I1) / I3;
+  const Key at = solve_with("heavy-top", {});
+  require_values(answer(at, "omega3_min"), {w_min});
+  for (const double f : {0.999, 1.001}) {
+    INFO(f);
+    const Key key = solve_with("heavy-top", {fmt::format("psidot0={:.17g}", f * w_min)});
+    REQUIRE_THAT(answer(key, "omega3_min").notes.at(0),
+                 Catch::Contains(f > 1 ? "would sleep" : "would fall"));
+  }
 }

@@ -1,0 +1,343 @@
+#include "solvers/euler_angles_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "core/euler_angles.hpp"
+#include "solvers/exact_answer.hpp"
+#include "solvers/inertia_body.hpp"
+#include "solvers/solve.hpp"
+#include "symbolic/canonical_print.hpp"
+
+namespace wobble {
+
+namespace {
+using GiNaC::ex;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+struct Angles : BodyContext {
+  Angles(const Problem& problem, const sym::Values& values);
+  ex phi, theta, psi, phidot, thetadot, psidot, I1, I3;  // exact
+  Vec3 angles_n, rates_n;                                // at the values
+  bool singular = false;                                 // sin(theta) = 0 exactly
+  std::string file() const { return problem.file.string(); }
+};
+
+double value(const Angles& t, const ex& e, const std::string& field) {
+  return sym::evaluate(e, t.exact.at, field);
+}
+
+Angles::Angles(const Problem& p, const sym::Values& values) : BodyContext(p, values) {
+  Angles& t = *this;
+  const auto& b = t.body.exact;
+  const GiNaC::matrix I = t.body.has_mass
+                              ? sym::normalized(b.I_O.sub(sym::parallel_axis_term(b.mass, b.r_cm)))
+                              : sym::normalized(b.I_O);
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = i + 1; j < 3; ++j) {
+      if (!sym::is_identically_zero(I(i, j))) {
+        throw InputError(
+            fmt::format("{}: body: the Euler-angle problems take a symmetric top, "
+                        "diag(I1, I1, I3) in the body frame, but I_{}{} = {}",
+                        file(), "xyz"[i], "xyz"[j], sym::to_text(I(i, j), t.table)));
+      }
+    }
+  }
+  if (!sym::is_identically_zero(I(0, 0) - I(1, 1))) {
+    throw InputError(fmt::format("{}: body: not symmetric about e3: I_xx = {} but I_yy = {}",
+                                 file(), sym::to_text(I(0, 0), t.table),
+                                 sym::to_text(I(1, 1), t.table)));
+  }
+  I1 = I(0, 0);
+  I3 = I(2, 2);
+  const std::array<ex*, 6> fields{&phi, &theta, &psi, &phidot, &thetadot, &psidot};
+  const std::array<const char*, 6> keys{"phi", "theta", "psi", "phidot", "thetadot", "psidot"};
+  for (std::size_t i = 0; i < 6; ++i) {
+    *fields[i] = t.table.parse(problem.motion->at(keys[i]), std::string("motion.") + keys[i]);
+    const double v = value(t, *fields[i], std::string("motion.") + keys[i]);
+    (i < 3 ? angles_n : rates_n)[static_cast<int>(i % 3)] = v;
+  }
+  // The principal ranges, in which the angles read back from R are the angles given.
+  const auto in = [](double x, double lo, double hi, bool lo_closed) {
+    return (lo_closed ? x >= lo : x > lo) && x <= hi;
+  };
+  if (!in(angles_n[0], -M_PI, M_PI, false) || !in(angles_n[2], -M_PI, M_PI, false)) {
+    throw InputError(
+        fmt::format("motion: phi = {:.10g} and psi = {:.10g} rad must lie in (-pi, "
+                    "pi]",
+                    angles_n[0], angles_n[2]));
+  }
+  if (!in(angles_n[1], 0, M_PI, true)) {
+    throw InputError(fmt::format("motion.theta: {:.10g} rad must lie in [0, pi]", angles_n[1]));
+  }
+  singular = sym::is_identically_zero(ex(GiNaC::sin(theta)).subs(t.exact.at));
+}
+
+void check(double exact, double numeric, double scale, double ulps, const std::string& name) {
+  if (!(std::abs(exact - numeric) <= ulps * kEps * std::max(scale, std::abs(exact)))) {
+    throw std::logic_error(fmt::format("{}: exact {} but numeric {}", name, exact, numeric));
+  }
+}
+void check_all(const Answer& a, const std::vector<double>& numeric, double ulps) {
+  double scale = 0;
+  for (double x : numeric) scale = std::max(scale, std::abs(x));
+  for (std::size_t i = 0; i < numeric.size(); ++i) {
+    check(a.value.data.at(i), numeric[i], scale, ulps, a.name);
+  }
+}
+std::vector<double> entries(const Mat3& m) {
+  std::vector<double> out;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) out.push_back(m(i, j));
+  }
+  return out;
+}
+std::vector<double> entries(const Vec3& v) {
+  return {v[0], v[1], v[2]};
+}
+
+GiNaC::matrix Rz(const ex& a) {
+  return GiNaC::matrix(
+      3, 3, GiNaC::lst{GiNaC::cos(a), -GiNaC::sin(a), 0, GiNaC::sin(a), GiNaC::cos(a), 0, 0, 0, 1});
+}
+GiNaC::matrix Ry(const ex& a) {
+  return GiNaC::matrix(
+      3, 3, GiNaC::lst{GiNaC::cos(a), 0, GiNaC::sin(a), 0, 1, 0, -GiNaC::sin(a), 0, GiNaC::cos(a)});
+}
+GiNaC::matrix expanded(const GiNaC::matrix& m) {
+  GiNaC::matrix out(m.rows(), m.cols());
+  for (unsigned i = 0; i < m.rows(); ++i) {
+    for (unsigned j = 0; j < m.cols(); ++j) out(i, j) = GiNaC::expand(m(i, j));
+  }
+  return out;
+}
+GiNaC::matrix R_zyz(const Angles& t) {
+  return expanded(Rz(t.phi).mul(Ry(t.theta)).mul(Rz(t.psi)));
+}
+
+// An angle's exact form moved into (-pi, pi] by whole turns, decided at the values.
+ex wrapped(const Angles& t, ex a) {
+  double v = value(t, a, "angle");
+  while (v > M_PI) a -= 2 * GiNaC::Pi, v -= 2 * M_PI;
+  while (v <= -M_PI) a += 2 * GiNaC::Pi, v += 2 * M_PI;
+  return a;
+}
+
+std::vector<ex> omega_space(const Angles& t) {
+  const ex sf = GiNaC::sin(t.phi), cf = GiNaC::cos(t.phi), st = GiNaC::sin(t.theta),
+           ct = GiNaC::cos(t.theta);
+  return {-t.thetadot * sf + t.psidot * st * cf, t.thetadot * cf + t.psidot * st * sf,
+          t.phidot + t.psidot * ct};
+}
+std::vector<ex> omega_body(const Angles& t) {
+  const ex st = GiNaC::sin(t.theta), ct = GiNaC::cos(t.theta), sp = GiNaC::sin(t.psi),
+           cp = GiNaC::cos(t.psi);
+  return {-t.phidot * st * cp + t.thetadot * sp, t.phidot * st * sp + t.thetadot * cp,
+          t.phidot * ct + t.psidot};
+}
+std::vector<ex> omega_primed(const Angles& t) {
+  return {-t.phidot * GiNaC::sin(t.theta), t.thetadot, t.phidot * GiNaC::cos(t.theta) + t.psidot};
+}
+
+// The independent route: w = phidot z + thetadot e2' + psidot e3, each axis from core's
+// rotations, then projected on each basis.
+struct NumericOmega {
+  Vec3 space, body, primed;
+};
+NumericOmega numeric_omega(const Angles& t) {
+  const Vec3& a = t.angles_n;
+  const Mat3 R = rotation_from_euler(a, EulerConvention::zyz);
+  const Mat3 Rphi = rotation_from_euler(Vec3(a[0], 0, 0), EulerConvention::zyz);
+  const Mat3 Rprimed = rotation_from_euler(Vec3(a[0], a[1], 0), EulerConvention::zyz);
+  NumericOmega w;
+  w.space = t.rates_n[0] * Vec3::UnitZ() + t.rates_n[1] * (Rphi * Vec3::UnitY()) +
+            t.rates_n[2] * (R * Vec3::UnitZ());
+  w.body = R.transpose() * w.space;
+  w.primed = Rprimed.transpose() * w.space;
+  return w;
+}
+
+Step rotation_step() {
+  return {
+      "R = Rz(φ) Ry(θ) Rz(ψ): rotate by φ about z, by θ about the new y (e2'), by ψ about "
+      "the new z (e3); its columns are e1, e2, e3 in space components (v_space = R v_body).",
+      "R = R_z(\\phi)\\,R_y(\\theta)\\,R_z(\\psi)", "Taylor's z-y-z rotation:"};
+}
+
+Computed angles_back(const Angles& t, bool zxz) {
+  const std::string q = zxz ? "angles_back_zxz" : "angles_back_zyz";
+  const Mat3 R = rotation_from_euler(t.angles_n, EulerConvention::zyz);
+  std::vector<ex> a;
+  std::vector<Step> steps{rotation_step()};
+  steps.push_back(zxz ? Step{"z-x-z from R: θ = acos(R33), φ = atan2(R13, −R23), ψ = atan2(R31, "
+                             "R32) (sin θ > 0).",
+                             "\\theta = \\arccos R_{33},\\ \\phi = \\operatorname{atan2}(R_{13}, "
+                             "-R_{23}),\\ \\psi = \\operatorname{atan2}(R_{31}, R_{32})",
+                             "Reading back (z-x-z):"}
+                      : Step{"z-y-z from R: θ = acos(R33), φ = atan2(R23, R13), ψ = atan2(R32, "
+                             "−R31) (sin θ > 0).",
+                             "\\theta = \\arccos R_{33},\\ \\phi = \\operatorname{atan2}(R_{23}, "
+                             "R_{13}),\\ \\psi = \\operatorname{atan2}(R_{32}, -R_{31})",
+                             "Reading back (z-y-z):"});
+  const double theta_n = t.angles_n[1];
+  if (t.singular) {
+    // theta = 0: R = Rz(phi + psi); theta = pi: R = Rz(phi - psi) Ry(pi) = Rz(phi - psi + pi/2)
+    // Rx(pi) Rz(-pi/2)... only one combination of phi and psi is defined; psi is set to 0.
+    const bool up = theta_n < 1;
+    ex turn = up ? t.phi + t.psi : t.phi - t.psi;
+    if (zxz && !up) turn += GiNaC::Pi;
+    a = {wrapped(t, turn), up ? ex(0) : ex(GiNaC::Pi), 0};
+    steps.push_back(
+        {up ? "θ = 0: R = Rz(φ + ψ), a turn about z alone; only φ + ψ is defined (gimbal lock). "
+              "Convention: ψ = 0 and φ takes the whole turn."
+            : std::string("θ = π: R = Rz(φ − ψ) Ry(π); only φ − ψ is defined (gimbal lock). "
+                          "Convention: ψ = 0 and φ takes the whole turn") +
+                  (zxz ? " (in z-x-z, φ − ψ + π)." : "."),
+         ""});
+  } else if (zxz) {
+    a = {wrapped(t, t.phi + GiNaC::Pi / 2), t.theta, wrapped(t, t.psi - GiNaC::Pi / 2)};
+  } else {
+    a = {t.phi, t.theta, t.psi};
+  }
+  Computed out{exact_vector(q, a, "rad", t.exact), steps};
+  // The angles must give R back (to rounding), and match core's reading where that is well
+  // conditioned (sin(theta) not tiny).
+  const EulerConvention c = zxz ? EulerConvention::zxz : EulerConvention::zyz;
+  const Vec3 got(out.answer.value.data[0], out.answer.value.data[1], out.answer.value.data[2]);
+  check_all({q, "", "", Value::matrix(3, 3, entries(rotation_from_euler(got, c))), "", {}, {}},
+            entries(R), 32);
+  if (std::sin(theta_n) > 1e-6) {
+    // Core's reading, up to whole turns (at +-pi rounding may land on either end).
+    const Vec3 core = euler_from_rotation(R, c);
+    for (int i = 0; i < 3; ++i) {
+      check(std::remainder(got[i] - core[i], 2 * M_PI), 0.0, M_PI, 64, q);
+    }
+  }
+  out.answer.notes.push_back(t.singular ? "Gimbal lock: only one combination of φ and ψ is "
+                                          "defined; ψ = 0 by convention."
+                                        : "φ, ψ in (−π, π], θ in [0, π]: within these ranges "
+                                          "the reading is unique.");
+  return out;
+}
+
+Computed quantity(const Angles& t, const std::string& q) {
+  const Mat3 R = rotation_from_euler(t.angles_n, EulerConvention::zyz);
+  if (q == "R_zyz" || q == "R_phy711") {
+    const GiNaC::matrix Rs = R_zyz(t);
+    const bool phy = q == "R_phy711";
+    Computed out{exact_matrix(q, phy ? Rs.transpose() : Rs, "", t.exact), {rotation_step()}};
+    check_all(out.answer, entries(phy ? Mat3(R.transpose()) : R), 16);
+    if (phy) {
+      out.steps.push_back(
+          {"PHY 711 (the convention of most quantum-mechanics texts): the same three turns, "
+           "α = φ about z, β = θ about the new y, γ = ψ about the new z, but R(α, β, γ) acts on "
+           "components: v_body = R(α, β, γ) v_inertial, so it is the transpose of Taylor's R.",
+           "R(\\alpha,\\beta,\\gamma) = R_z(\\gamma)^T R_y(\\beta)^T R_z(\\alpha)^T = "
+           "R_{zyz}^T",
+           "PHY 711's matrix:"});
+    }
+    return out;
+  }
+  if (q == "angles_phy711") {
+    Computed out{exact_vector(q, {t.phi, t.theta, t.psi}, "rad", t.exact),
+                 {{"α = φ, β = θ, γ = ψ: both are z-y-z sequences of the same turns; they differ "
+                   "in what the matrix acts on (frames against components), not in the angles.",
+                   ""}}};
+    out.answer.notes.push_back(
+        "The lectures' warning is about most classical-mechanics texts (Goldstein: z-x-z), whose "
+        "angles differ: see angles_zxz.");
+    return out;
+  }
+  if (q == "angles_zxz") {
+    const std::vector<ex> a{wrapped(t, t.phi + GiNaC::Pi / 2), t.theta,
+                            wrapped(t, t.psi - GiNaC::Pi / 2)};
+    Computed out{exact_vector(q, a, "rad", t.exact),
+                 {{"Ry(θ) = Rz(π/2) Rx(θ) Rz(−π/2), so Rz(φ) Ry(θ) Rz(ψ) = Rz(φ + π/2) Rx(θ) "
+                   "Rz(ψ − π/2): Goldstein's angles are (φ + π/2, θ, ψ − π/2), each kept in "
+                   "(−π, π].",
+                   "\\phi_x = \\phi + \\tfrac{\\pi}{2},\\ \\theta_x = \\theta,\\ \\psi_x = \\psi - "
+                   "\\tfrac{\\pi}{2}",
+                   "To z-x-z:"}}};
+    const Vec3 got(out.answer.value.data[0], out.answer.value.data[1], out.answer.value.data[2]);
+    check_all({q,
+               "",
+               "",
+               Value::matrix(3, 3, entries(rotation_from_euler(got, EulerConvention::zxz))),
+               "",
+               {},
+               {}},
+              entries(R), 32);
+    return out;
+  }
+  if (q == "omega_space" || q == "omega_body" || q == "omega_primed") {
+    const NumericOmega n = numeric_omega(t);
+    const bool space = q == "omega_space", body = q == "omega_body";
+    std::vector<ex> w = space ? omega_space(t) : body ? omega_body(t) : omega_primed(t);
+    Computed out{exact_vector(q, w, "rad/s", t.exact),
+                 {{"w = φ̇ z + θ̇ e2' + ψ̇ e3: the three turns' angular velocities add (each about "
+                   "its own axis at that instant).",
+                   "\\omega = \\dot\\phi\\,\\hat z + \\dot\\theta\\,\\hat e_2' + "
+                   "\\dot\\psi\\,\\hat e_3",
+                   "Angular velocity:"}}};
+    out.steps.push_back(
+        space ? Step{"In the space basis: e2' = (−sin φ, cos φ, 0), e3 = (sin θ cos φ, sin θ sin "
+                     "φ, cos θ).",
+                     ""}
+        : body ? Step{"In the body basis: z = (−sin θ cos ψ, sin θ sin ψ, cos θ), e2' = (sin ψ, "
+                      "cos ψ, 0).",
+                      ""}
+               : Step{"In the primed basis (after the turns by φ and θ, before ψ; e3' = e3): z = "
+                      "(−sin θ, 0, cos θ), e2' = (0, 1, 0).",
+                      ""});
+    check_all(out.answer, entries(space ? n.space : body ? n.body : n.primed), 64);
+    if (!space) {
+      out.answer.notes.push_back(body ? "Components along e1, e2, e3 (they turn with the body)."
+                                      : "Components along e1', e2', e3' = e3: the basis of choice "
+                                        "for a symmetric top (it does not spin with ψ).");
+    }
+    return out;
+  }
+  if (q == "L_primed" || q == "kinetic_energy") {
+    const auto w = omega_primed(t);
+    const NumericOmega n = numeric_omega(t);
+    const double I1n = value(t, t.I1, "I1"), I3n = value(t, t.I3, "I3");
+    const Vec3 Ln(I1n * n.primed[0], I1n * n.primed[1], I3n * n.primed[2]);
+    if (q == "L_primed") {
+      Computed out{exact_vector(q, {t.I1 * w[0], t.I1 * w[1], t.I3 * w[2]}, "kg m^2/s", t.exact),
+                   {{"L = (I1 w1', I1 w2', I3 w3'): with I1 = I2 the tensor is diag(I1, I1, I3) "
+                     "in the primed basis too.",
+                     "L = \\left(-I_1\\dot\\phi\\sin\\theta,\\ I_1\\dot\\theta,\\ "
+                     "I_3(\\dot\\phi\\cos\\theta + \\dot\\psi)\\right)",
+                     "Angular momentum:"}}};
+      check_all(out.answer, entries(Ln), 64);
+      return out;
+    }
+    const ex T =
+        t.I1 / 2 * (GiNaC::pow(t.phidot * GiNaC::sin(t.theta), 2) + GiNaC::pow(t.thetadot, 2)) +
+        t.I3 / 2 * GiNaC::pow(w[2], 2);
+    Computed out{exact_scalar(q, T, "J", t.exact),
+                 {{"T = ½ w · L = ½ I1 (φ̇² sin²θ + θ̇²) + ½ I3 (φ̇ cos θ + ψ̇)².",
+                   "T = \\tfrac{I_1}{2}\\left(\\dot\\phi^2\\sin^2\\theta + "
+                   "\\dot\\theta^2\\right) + \\tfrac{I_3}{2}\\left(\\dot\\phi\\cos\\theta + "
+                   "\\dot\\psi\\right)^2",
+                   "Kinetic energy:"}}};
+    check(out.answer.value.data[0], 0.5 * n.primed.dot(Ln), 0.5 * n.primed.norm() * Ln.norm(), 64,
+          q);
+    return out;
+  }
+  if (q == "angles_back_zyz" || q == "angles_back_zxz")
+    return angles_back(t, q == "angles_back_zxz");
+  throw InputError(
+      fmt::format("{}: unknown quantity '{}' for the euler_angles solver", t.file(), q));
+}
+}  // namespace
+
+Key solve_euler_angles(const Problem& problem, const sym::Values& values) {
+  const Angles t(problem, values);
+  return assemble_parts(problem, [&](const std::string& q) { return quantity(t, q); });
+}
+
+}  // namespace wobble
