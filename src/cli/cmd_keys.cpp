@@ -56,7 +56,7 @@ int write_variants(const KeysOptions& opt, const std::vector<Problem>& problems)
   std::vector<std::pair<std::filesystem::path, std::string>> files;
   for (const auto& p : problems) {
     for (long n = first; n <= last; ++n) {
-      const Key key = solve(p, parameter_values(p, variant_assignments(p, n)));
+      const Key key = solve(p, parameter_values(p, variant_for(p, n)));
       const std::string stem = fmt::format("{}-v{}", p.id, n);
       files.emplace_back(dir / (stem + ".md"), render(key, Format::markdown));
       files.emplace_back(dir / (stem + ".json"), render(key, Format::json));

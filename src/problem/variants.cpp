@@ -28,8 +28,11 @@ std::uint64_t splitmix64(std::uint64_t x) {
 }
 
 // A uniform number in [0, 1) from the top 53 bits.
-double unit_draw(const std::string& id, const std::string& name, long n) {
-  const std::uint64_t bits = splitmix64(fnv1a(id + '\0' + name + '\0' + std::to_string(n)));
+double unit_draw(const std::string& id, const std::string& name, long n, int draw) {
+  // Draw 0 keeps the seed of the first version (pinned variants stay as they were).
+  const std::string seed = id + '\0' + name + '\0' + std::to_string(n) +
+                           (draw == 0 ? std::string() : '\0' + std::to_string(draw));
+  const std::uint64_t bits = splitmix64(fnv1a(seed));
   return static_cast<double>(bits >> 11) * 0x1.0p-53;
 }
 
@@ -41,13 +44,13 @@ std::string two_digits(double x) {
 }
 }  // namespace
 
-std::vector<std::string> variant_assignments(const Problem& problem, long n) {
+std::vector<std::string> variant_assignments(const Problem& problem, long n, int draw) {
   if (n < 1 || n > 1000000) {
     throw InputError(fmt::format("--variant: {} is out of range (expected 1 to 1000000)", n));
   }
   std::vector<std::string> out;
   for (const auto& p : problem.parameters) {
-    const double u = unit_draw(problem.id, p.name, n);
+    const double u = unit_draw(problem.id, p.name, n, draw);
     const Interval& r = p.range;
     const double d = p.default_value;
     double x;

@@ -16,8 +16,11 @@
 
 namespace wobble {
 
-/// "NAME=VALUE" assignments for variant n (n >= 1), in the problem's parameter order.
+/// "NAME=VALUE" assignments for variant n (n >= 1), in the problem's parameter order. `draw` > 0
+/// draws again for the same n (seeded by id, name, n and the draw): for values that together
+/// make an invalid problem (moments out of order, a spin too slow), solvers/solve.hpp's
+/// `variant_for` takes the first draw the problem accepts.
 /// @throws InputError for n < 1 or n > 1000000.
-std::vector<std::string> variant_assignments(const Problem& problem, long n);
+std::vector<std::string> variant_assignments(const Problem& problem, long n, int draw = 0);
 
 }  // namespace wobble

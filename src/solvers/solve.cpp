@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "problem/values.hpp"
+#include "problem/variants.hpp"
 #include "solvers/asymmetric_top_solver.hpp"
 #include "solvers/euler_angles_solver.hpp"
 #include "solvers/heavy_top_solver.hpp"
@@ -25,6 +27,24 @@ Key assemble_parts(const Problem& problem,
     key.parts.push_back(std::move(pk));
   }
   return key;
+}
+
+std::vector<std::string> variant_for(const Problem& problem, long n) {
+  constexpr int kDraws = 100;
+  std::string last;
+  for (int draw = 0; draw < kDraws; ++draw) {
+    const std::vector<std::string> a = variant_assignments(problem, n, draw);
+    try {
+      (void)solve(problem, parameter_values(problem, a));
+      return a;
+    } catch (const InputError& e) {
+      last = e.what();
+    }
+  }
+  throw InputError(
+      fmt::format("--variant {}: none of {} draws from the parameters' ranges makes "
+                  "a valid problem (the last: {}); narrow the ranges in {}",
+                  n, kDraws, last, problem.file.string()));
 }
 
 std::vector<std::string> solver_names() {

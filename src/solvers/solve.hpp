@@ -20,6 +20,13 @@ Key solve(const Problem& problem, const sym::Values& values);
 Key assemble_parts(const Problem& problem,
                    const std::function<Computed(const std::string& quantity)>& compute);
 
+/// The "NAME=VALUE" assignments of variant n: the first of its draws (problem/variants.hpp) that
+/// the problem accepts. Parameters drawn one by one can together make an invalid problem (an
+/// asymmetric top's moments out of order, a heavy top too slow to precess steadily); the next
+/// draw is as reproducible as the first.
+/// @throws InputError for n out of range, or when 100 draws all fail (naming the last reason).
+std::vector<std::string> variant_for(const Problem& problem, long n);
+
 /// Names of the solvers, for messages and the README.
 std::vector<std::string> solver_names();
 
