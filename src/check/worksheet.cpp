@@ -34,7 +34,7 @@ std::string shown(const Answer& a) {
   return a.symbolic.empty() ? v : a.symbolic + " = " + v;
 }
 
-enum class Outcome { right, revealed, skipped, quit };
+enum class Outcome { right, revealed, skipped, quit, nothing };
 
 struct Session {
   const ReadLine& read_line;
@@ -54,6 +54,13 @@ struct Session {
 
   Outcome part(const PartKey& part, const std::string& hint) {
     out << fmt::format("\n({}) {}\n", part.id, part.question);
+    if (part.answers.empty()) {
+      // Nothing exists to answer at these values (no steady precession): say why, move on.
+      out << "  nothing to answer at these values: " +
+                 (part.steps.empty() ? std::string("see `wobble solve`") : part.steps.back().text) +
+                 "\n";
+      return Outcome::nothing;
+    }
     bool revealed = false, hint_shown = false;
     const auto give_hint = [&] {
       out << (hint.empty() ? "  no hint for this part; '!' reveals the answer\n"
@@ -130,6 +137,9 @@ WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const st
       case Outcome::revealed:
         ++sum.revealed;
         break;
+      case Outcome::nothing:
+        ++sum.nothing;
+        break;
       case Outcome::skipped:
         ++sum.skipped;
         break;
@@ -139,8 +149,10 @@ WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const st
         break;
     }
   }
-  out << fmt::format("\nsummary: {} right, {} revealed, {} skipped, {} not reached (of {} parts)\n",
-                     sum.right, sum.revealed, sum.skipped, sum.not_reached, ctx.key.parts.size());
+  out << fmt::format(
+      "\nsummary: {} right, {} revealed, {} skipped, {} not reached (of {} parts{})\n", sum.right,
+      sum.revealed, sum.skipped, sum.not_reached, ctx.key.parts.size(),
+      sum.nothing > 0 ? fmt::format("; {} with nothing to answer", sum.nothing) : std::string());
   return sum;
 }
 

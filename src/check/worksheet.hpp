@@ -15,6 +15,7 @@ namespace wobble::check {
 
 struct WorksheetSummary {
   int right = 0, revealed = 0, skipped = 0, not_reached = 0;
+  int nothing = 0;  ///< parts with no answer at these values
 };
 
 /// Where the answers come from: shows `prompt`, reads one line into `line`; false at the end of

@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "check/judge.hpp"
 #include "cli/commands.hpp"
@@ -47,6 +48,12 @@ int run_check(const CheckOptions& opt) {
   if (part == nullptr) {
     throw InputError(
         fmt::format("part: problem {} has no part '{}' (parts: {})", problem.id, opt.part, parts));
+  }
+  if (part->answers.empty()) {
+    throw InputError(
+        fmt::format("part: part {} of {} has nothing to check at these values ({} "
+                    "do not exist; `wobble solve` says why)",
+                    opt.part, problem.id, fmt::join(part->absent, ", ")));
   }
   std::string names;
   const Answer* answer = nullptr;

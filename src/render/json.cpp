@@ -59,8 +59,10 @@ nlohmann::ordered_json key_to_json(const Key& key) {
     }
     J steps = J::array();
     for (const auto& s : part.steps) steps.push_back({{"text", s.text}, {"latex", s.latex}});
-    parts.push_back(
-        {{"id", part.id}, {"question", part.question}, {"answers", answers}, {"steps", steps}});
+    J entry{{"id", part.id}, {"question", part.question}, {"answers", answers}, {"steps", steps}};
+    // Only when some answer does not exist at these values: the stored keys stay as they were.
+    if (!part.absent.empty()) entry["absent"] = part.absent;
+    parts.push_back(entry);
   }
   j["parts"] = parts;
   return j;

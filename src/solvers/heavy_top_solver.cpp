@@ -224,10 +224,20 @@ Computed steady(const Top& t, const std::string& q) {
   const ex p = t.p_psi, Mgl = t.M * t.g * t.l;
   const auto rates = steady_precession(t.numeric, t.start.theta, t.constants.w3);
   if (!rates) {
-    throw InputError(fmt::format(
-        "{}: {}: no steady precession at theta0 = {:.6g} rad with the spin w3 = {:.6g} rad/s: "
-        "it needs (I3 w3)^2 >= 4 I1 M g l cos(theta0)",
-        t.file(), q, t.start.theta, t.constants.w3));
+    // No steady precession at this tilt: the key says so and gives the least spin that has one.
+    const double need = 2 *
+                        std::sqrt(t.numeric.I1_kgm2 * t.numeric.M_kg * t.numeric.g_m_s2 *
+                                  t.numeric.l_m * std::cos(t.start.theta)) /
+                        t.numeric.I3_kgm2;
+    Computed none;
+    none.exists = false;
+    none.steps.push_back(
+        {fmt::format("No steady precession at θ0 = {} rad: it needs (I3 ω3)² ≥ 4 I1 M g l cos θ0, "
+                     "i.e. ω3 ≥ {} rad/s, and this top spins at ω3 = {} rad/s.",
+                     format_number(t.start.theta), format_number(need),
+                     format_number(t.constants.w3)),
+         ""});
+    return none;
   }
   const ex root = GiNaC::sqrt(sym::tidy(p * p - 4 * t.I1 * Mgl * c));
   const ex qq = t.constants.w3 >= 0 ? p + root : p - root;

@@ -64,16 +64,21 @@ struct PartKey {
   std::string question;
   std::vector<Answer> answers;
   std::vector<Step> steps;
+  /// Answers the problem asks for that do not exist at these values (no steady precession of a
+  /// too slow top): left out of `answers`, a step says why.
+  std::vector<std::string> absent;
 };
 
 /// Appends `steps` to the part, skipping any whose text the part already has (two answers of a
 /// part often share a derivation).
 void append_steps(PartKey& part, const std::vector<Step>& steps);
 
-/// One computed quantity: its answer and the steps that derive it.
+/// One computed quantity: its answer and the steps that derive it. `exists` false: there is no
+/// such quantity at these values, and the steps say why.
 struct Computed {
   Answer answer;
   std::vector<Step> steps;
+  bool exists = true;
 };
 
 struct ParameterValue {

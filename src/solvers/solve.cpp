@@ -16,13 +16,17 @@ Key assemble_parts(const Problem& problem,
                    const std::function<Computed(const std::string& quantity)>& compute) {
   Key key;
   for (const auto& part : problem.parts) {
-    PartKey pk{part.id, part.question, {}, {}};
+    PartKey pk{part.id, part.question, {}, {}, {}};
     for (const auto& spec : part.answers) {
       Computed c = compute(spec.quantity);
+      append_steps(pk, c.steps);
+      if (!c.exists) {
+        pk.absent.push_back(spec.name);
+        continue;
+      }
       c.answer.name = spec.name;
       c.answer.check_tolerance = spec.tolerance;
       pk.answers.push_back(std::move(c.answer));
-      append_steps(pk, c.steps);
     }
     key.parts.push_back(std::move(pk));
   }

@@ -283,3 +283,17 @@ TEST_CASE("heavy-top: the sleeping top's verdict flips at the threshold p_psi^2 
                  Catch::Contains(f > 1 ? "would sleep" : "would fall"));
   }
 }
+
+TEST_CASE("heavy-top: too slow to precess steadily, part d says so and has no answers") {
+  const Key key = solve_with("heavy-top", {"psidot0=80"});
+  const PartKey& d = key.parts.at(3);
+  REQUIRE(d.id == "d");
+  REQUIRE(d.answers.empty());
+  REQUIRE(d.absent == std::vector<std::string>{"phidot_slow", "phidot_fast"});
+  // The least spin for steady precession at theta0 = 30 deg: 2 sqrt(I1 M g l cos)/I3.
+  const double M = 0.5, R = 0.05, l = 0.08, g = 9.81;
+  const double I1 = M * R * R / 4 + M * l * l, I3 = M * R * R / 2;
+  const double need = 2 * std::sqrt(I1 * M * g * l * std::cos(M_PI / 6)) / I3;
+  REQUIRE_THAT(d.steps.back().text,
+               Catch::Contains("No steady precession") && Catch::Contains(format_number(need)));
+}
