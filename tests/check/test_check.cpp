@@ -6,12 +6,14 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <sstream>
 
 #include "check/judge.hpp"
 #include "check/units.hpp"
 #include "problem/load.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
+#include "symbolic/value_text.hpp"
 #include "temp_files.hpp"
 
 using namespace wobble;
@@ -304,6 +306,68 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
     INFO(other);
     REQUIRE_FALSE(plate.check("I0", other).correct);
   }
+}
+
+namespace {
+// The entries of a value text, each rewritten by `f`, back in brackets.
+std::string rewritten(const sym::ValueText& v,
+                      const std::function<std::string(const GiNaC::ex&)>& f) {
+  if (!v.is_vector && !v.is_matrix) return f(v.entries[0]);
+  std::string s = "[";
+  for (std::size_t r = 0; r < v.rows; ++r) {
+    if (v.is_matrix) s += r ? ", [" : "[";
+    for (std::size_t c = 0; c < v.cols; ++c) {
+      s += (c || (!v.is_matrix && r) ? ", " : "") + f(v.entries[r * v.cols + c]);
+    }
+    if (v.is_matrix) s += "]";
+  }
+  return s + "]";
+}
+std::string ginac_text(const GiNaC::ex& e) {
+  std::ostringstream o;
+  o << e;
+  return o.str();
+}
+}  // namespace
+
+TEST_CASE("every closed form of every problem: other forms of it right, look-alikes wrong") {
+  int equal = 0, lookalike = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.symbolic.empty()) continue;
+        const sym::ValueText v = sym::parse_value_text(a.symbolic, f.table, a.name);
+        INFO(p.id << " " << a.name << ": " << a.symbolic);
+        // The same expression expanded, in GiNaC's own order and spelling: right.
+        const std::string expanded =
+            rewritten(v, [](const GiNaC::ex& e) { return ginac_text(GiNaC::expand(e)); });
+        INFO("expanded: " << expanded);
+        REQUIRE(f.check(a.name, expanded).correct);
+        ++equal;
+        // Equal at the set values but not elsewhere: each entry times (P / its value) for a
+        // parameter P the answer depends on. Only the other points can tell: wrong.
+        std::string param;
+        for (const auto& name : f.table.names()) {
+          bool used = false;
+          for (const auto& e : v.entries) used = used || e.has(f.table.at(name));
+          if (used && f.values.at(name) != 0.0) param = name;
+        }
+        if (param.empty()) continue;
+        const std::string factor = fmt::format("*({}/{:.17g})", param, f.values.at(param));
+        const std::string lookalike_text =
+            rewritten(v, [&](const GiNaC::ex& e) { return "(" + ginac_text(e) + ")" + factor; });
+        INFO("look-alike: " << lookalike_text);
+        const bool all_zero = std::all_of(a.value.data.begin(), a.value.data.end(),
+                                          [](double x) { return x == 0.0; });
+        if (all_zero) continue;
+        REQUIRE_FALSE(f.check(a.name, lookalike_text).correct);
+        ++lookalike;
+      }
+    }
+  }
+  REQUIRE(equal >= 50);
+  REQUIRE(lookalike >= 40);
 }
 
 TEST_CASE("axes of a degenerate pair: any orthonormal pair of the plane is right") {
