@@ -77,8 +77,20 @@ std::optional<MotionSpec> read_motion(Reader& r, const toml::table& root,
 }
 }  // namespace
 
+namespace {
+Problem load_problem_table(const toml::table& root, const std::filesystem::path& file);
+}  // namespace
+
 Problem load_problem(const std::filesystem::path& file) {
-  toml::table root = parse_toml_file(file, "problem");
+  return load_problem_table(parse_toml_file(file, "problem"), file);
+}
+
+Problem load_problem_text(const std::string& text, const std::filesystem::path& name) {
+  return load_problem_table(parse_toml_text(text, name, "problem"), name);
+}
+
+namespace {
+Problem load_problem_table(const toml::table& root, const std::filesystem::path& file) {
   Reader r(file);
   r.only_keys(root, "",
               {"id", "title", "source", "statement", "solver", "notes", "parameters", "body",
@@ -114,6 +126,7 @@ Problem load_problem(const std::filesystem::path& file) {
   if (p.parts.empty()) r.fail(&root, "parts", "a problem needs at least one part");
   return p;
 }
+}  // namespace
 
 std::filesystem::path problems_dir() {
   if (const char* env = std::getenv("WOBBLE_PROBLEMS"); env != nullptr && *env != '\0') return env;

@@ -16,6 +16,8 @@ namespace wobble {
 
 /// @throws InputError as described above, or if the file cannot be read.
 Problem load_problem(const std::filesystem::path& file);
+/// The same from text already read (`name` stands for the file in messages): for the fuzzers.
+Problem load_problem_text(const std::string& text, const std::filesystem::path& name);
 
 /// The folder of the problem catalog: $WOBBLE_PROBLEMS if set, else the source tree's problems/.
 std::filesystem::path problems_dir();

@@ -159,8 +159,8 @@ const std::vector<std::pair<std::string, std::string>>& scene_output_names() {
   return names;
 }
 
-Scene load_scene(const std::filesystem::path& file) {
-  toml::table root = detail::parse_toml_file(file, "scene");
+namespace {
+Scene load_scene_table(const toml::table& root, const std::filesystem::path& file) {
   Reader r(file);
   r.only_keys(root, "",
               {"id", "title", "description", "parameters", "body", "initial", "effects", "run"});
@@ -179,6 +179,15 @@ Scene load_scene(const std::filesystem::path& file) {
   read_effects(r, root, s);
   read_run(r, root, s);
   return s;
+}
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& file) {
+  return load_scene_table(detail::parse_toml_file(file, "scene"), file);
+}
+
+Scene load_scene_text(const std::string& text, const std::filesystem::path& name) {
+  return load_scene_table(detail::parse_toml_text(text, name, "scene"), name);
 }
 
 std::filesystem::path scenes_dir() {

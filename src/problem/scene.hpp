@@ -68,6 +68,8 @@ const std::vector<std::pair<std::string, std::string>>& scene_output_names();
 /// @throws InputError "FILE:LINE: FIELD: what" for a malformed file, an unknown key, effect or
 ///   output, a missing field, a bad count or tolerance, or two orientations given at once.
 Scene load_scene(const std::filesystem::path& file);
+/// The same from text already read (`name` stands for the file in messages): for the fuzzers.
+Scene load_scene_text(const std::string& text, const std::filesystem::path& name);
 
 /// The folder of the example scenes: $WOBBLE_SCENES if set, else the source tree's scenes/.
 std::filesystem::path scenes_dir();

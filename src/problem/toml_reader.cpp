@@ -1,5 +1,8 @@
 #include "problem/toml_reader.hpp"
 
+#include <fstream>
+#include <iterator>
+
 #include <algorithm>
 
 #include "problem/values.hpp"
@@ -141,15 +144,26 @@ toml::table parse_toml_file(const std::filesystem::path& file, const std::string
     throw InputError(file.string() + ": no such " + what + " file");
   }
   // A problem or scene file is a few kilobytes; refuse anything absurd before reading it.
-  constexpr std::uintmax_t kMaxFileBytes = 1 << 20;
-  if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxFileBytes) {
+  if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxTomlBytes) {
     throw InputError(file.string() + ": file is " + std::to_string(size) + " bytes; a " + what +
                      " file may have at most 1 MiB");
   }
+  std::ifstream in(file, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) throw InputError(file.string() + ": cannot read the " + what + " file");
+  return parse_toml_text(text, file, what);
+}
+
+toml::table parse_toml_text(const std::string& text, const std::filesystem::path& name,
+                            const std::string& what) {
+  if (text.size() > kMaxTomlBytes) {
+    throw InputError(name.string() + ": file is " + std::to_string(text.size()) + " bytes; a " +
+                     what + " file may have at most 1 MiB");
+  }
   try {
-    return toml::parse_file(file.string());
+    return toml::parse(text, name.string());
   } catch (const toml::parse_error& e) {
-    throw InputError(file.string() + ":" + std::to_string(e.source().begin.line) +
+    throw InputError(name.string() + ":" + std::to_string(e.source().begin.line) +
                      ": malformed TOML: " + std::string(e.description()));
   }
 }

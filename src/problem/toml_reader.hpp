@@ -114,7 +114,13 @@ std::filesystem::path resolve_id_or_file(const std::string& id_or_file,
 /// @throws InputError unless a catalog file's id equals its file name.
 void check_id_is_file_name(const std::string& id, const std::filesystem::path& file);
 
+/// The most a problem or scene file may hold: a few kilobytes are usual.
+inline constexpr std::size_t kMaxTomlBytes = std::size_t{1} << 20;
+
 /// Refuses files over 1 MiB, then parses. @throws InputError "FILE:LINE: malformed TOML: ...".
 toml::table parse_toml_file(const std::filesystem::path& file, const std::string& what);
+/// The same for text already read; `name` stands for the file in messages.
+toml::table parse_toml_text(const std::string& text, const std::filesystem::path& name,
+                            const std::string& what);
 
 }  // namespace wobble::detail

@@ -97,6 +97,11 @@ sym::Values parameter_values(const Problem& problem, const std::vector<std::stri
   sym::Values values;
   for (const auto& p : problem.parameters) values[p.name] = p.default_value;
   for (const auto& a : assignments) {
+    // A value is a number or a short constant expression; a million digits is refused unread.
+    if (a.size() > 1000) {
+      throw InputError("--set: " + std::to_string(a.size()) +
+                       " characters; NAME=VALUE may have at most 1000");
+    }
     const auto eq = a.find('=');
     if (eq == std::string::npos || trim(a.substr(0, eq)).empty()) {
       throw InputError("--set: expected NAME=VALUE, got '" + a + "'");

@@ -1,5 +1,7 @@
 #include "symbolic/value_text.hpp"
 
+#include <algorithm>
+
 namespace wobble::sym {
 
 namespace {
@@ -38,6 +40,18 @@ bool bracketed(const std::string& s) {
 
 ValueText parse_value_text(const std::string& raw, const SymbolTable& table,
                            const std::string& field) {
+  // A 3x3 matrix of long entries is far below these; a vector of a million components, or a
+  // megabyte of text, is refused before anything is parsed.
+  constexpr std::size_t kMaxEntries = 100;
+  if (raw.size() > 9 * kMaxExpressionLength) {
+    throw ExpressionError(field + ": " + std::to_string(raw.size()) +
+                          " characters; a value may have at most " +
+                          std::to_string(9 * kMaxExpressionLength));
+  }
+  if (static_cast<std::size_t>(std::count(raw.begin(), raw.end(), ',')) >= kMaxEntries) {
+    throw ExpressionError(field + ": more than " + std::to_string(kMaxEntries) +
+                          " entries; a vector or matrix here has at most 9");
+  }
   const std::string text = trim(raw);
   ValueText out;
   if (!bracketed(text)) {

@@ -349,6 +349,24 @@ std::vector<Row> catalog() {
        {"solve", file("omega", top_with("omega = \"3\"", "omega = \"-3\""))},
        2,
        {"motion.omega", "must be > 0"}},
+      // Huge input is refused unread (a command-line argument is at most 128 KiB on Linux).
+      {"a 100000-digit --set value",
+       {"solve", "taylor-10-35", "--set", "m=" + std::string(100000, '7')},
+       2,
+       {"--set: 100002 characters", "at most 1000"}},
+      {"an answer vector of 20000 components",
+       {"check", "flying-plate", "b", "--name", "L0_body", "--answer",
+        "[" + [] {
+          std::string s = "1";
+          for (int i = 1; i < 20000; ++i) s += ",1";
+          return s;
+        }() + "]"},
+       2,
+       {"--answer: more than 100 entries"}},
+      {"an answer of 120000 characters",
+       {"check", "flying-plate", "a", "--name", "I0", "--answer", std::string(120000, '1')},
+       2,
+       {"--answer: 120000 characters", "at most 90000"}},
       {"expression nested too deep",
        {"solve", file("deep", with("mass = \"m\", at = [\"1\"",
                                    "mass = \"" + std::string(150, '(') + "m" +
@@ -356,9 +374,14 @@ std::vector<Row> catalog() {
        2,
        {"body.masses[0].mass", "nested deeper than 100 levels"}},
       {"expression too long",
+       {"solve", file("long", with("mass = \"m\", at = [\"1\"",
+                                   "mass = \"m" + std::string(12000, '+') + "m\", at = [\"1\""))},
+       2,
+       {"body.masses[0].mass", "characters long", "limit is 10000"}},
+      {"--set value too long",
        {"solve", "taylor-10-35", "--set", "m=" + std::string(12000, '1')},
        2,
-       {"--set m", "12000 characters long", "limit is 10000"}},
+       {"--set: 12002 characters", "at most 1000"}},
       {"unknown scene", {"simulate", "no-such"}, 2, {"unknown scene 'no-such'", "tennis-racket"}},
       {"unknown effect",
        {"simulate", file("s_effect", kScene + "[effects]\nmagnetism = { B = 1 }\n")},
