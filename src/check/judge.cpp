@@ -71,8 +71,10 @@ Parsed parse_answer(const std::string& raw, const sym::SymbolTable& table) {
                        std::any_of(value.begin(), value.end(), [](char c) {
                          return std::isalpha(static_cast<unsigned char>(c));
                        });
-    throw InputError(std::string(e.what()) +
-                     (glued ? " (put a space between a number and its unit: '0.21 kg m^2')" : ""));
+    const bool refused = std::string(e.what()).find("is refused") != std::string::npos;
+    throw InputError(
+        std::string(e.what()) +
+        (glued && !refused ? " (put a space between a number and its unit: '0.21 kg m^2')" : ""));
   }
   if (!unit.empty()) p.unit = parse_unit(unit, kField);
   for (const auto& e : p.value.entries) p.symbolic = p.symbolic || has_symbols(e);

@@ -3,6 +3,7 @@
 // and an exit code (commands.hpp).
 #include <fmt/format.h>
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
@@ -10,6 +11,9 @@
 #include "problem/problem.hpp"
 
 int main(int argc, char** argv) {
+  // Past a file-size limit (or on a full disk) a write should fail and be reported, with the
+  // temporary removed and the old file kept (render/atomic_write), not kill the process.
+  std::signal(SIGXFSZ, SIG_IGN);
   using namespace wobble::cli;
   CLI::App app{"wobble: worked, checked answers for rigid-body rotation problems", "wobble"};
   app.set_version_flag("--version", std::string("wobble ") + WOBBLE_VERSION);

@@ -21,9 +21,10 @@ struct Rk4 {
   static constexpr std::array<Row<S>, S> A{
       {{0, 0, 0, 0}, {0.5, 0, 0, 0}, {0, 0.5, 0, 0}, {0, 0, 1, 0}}};
   static constexpr Row<S> B{1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6};
-  static constexpr Row<S> E{0, 0, 0, 0};
-  static constexpr int kErrorOrder = 4;
-  static constexpr bool kFsal = false;
+  // No embedded pair: E and the error order are there for the common shape only.
+  [[maybe_unused]] static constexpr Row<S> E{0, 0, 0, 0};
+  [[maybe_unused]] static constexpr int kErrorOrder = 4;
+  [[maybe_unused]] static constexpr bool kFsal = false;
   static constexpr bool kEmbedded = false;
 };
 
@@ -84,9 +85,25 @@ struct Rkf78 {
 template <class T>
 using Stages = std::array<State7, T::S>;
 
+// Which row of the tableau: A[R], B or E. (A row is named by its index, not passed as a
+// reference template argument: clang 14 refuses a subobject such as T::A[I] there.)
+enum class Coefficients { a, b, e };
+
+template <class T, Coefficients W, std::size_t R>
+constexpr const Row<T::S>& row() {
+  if constexpr (W == Coefficients::a) {
+    return T::A[R];
+  } else if constexpr (W == Coefficients::b) {
+    return T::B;
+  } else {
+    return T::E;
+  }
+}
+
 // sum_j c[j] k[j] over the nonzero c[j], j < N, unrolled (c is a constant expression).
-template <class T, const Row<T::S>& C, std::size_t... J>
+template <class T, Coefficients W, std::size_t R, std::size_t... J>
 State7 combine(const Stages<T>& k, std::index_sequence<J...>) {
+  constexpr const Row<T::S>& C = row<T, W, R>();
   State7 acc = State7::Zero();
   ((C[J] != 0.0 ? (void)(acc += C[J] * k[J]) : (void)0), ...);
   return acc;
@@ -95,7 +112,7 @@ State7 combine(const Stages<T>& k, std::index_sequence<J...>) {
 template <class T, std::size_t I>
 void stage(const RigidBodyModel& model, const State7& y, double h, Stages<T>& k) {
   if constexpr (I < T::S) {
-    k[I] = model.rhs(y + h * combine<T, T::A[I]>(k, std::make_index_sequence<I>{}));
+    k[I] = model.rhs(y + h * combine<T, Coefficients::a, I>(k, std::make_index_sequence<I>{}));
     stage<T, I + 1>(model, y, h, k);
   }
 }
@@ -106,9 +123,9 @@ void rk_step(const RigidBodyModel& model, const State7& y, double h, Stages<T>& 
              State7& err, IntegrationCost& cost) {
   stage<T, 1>(model, y, h, k);
   cost.rhs_evals += static_cast<std::int64_t>(T::S - 1);
-  y_new = y + h * combine<T, T::B>(k, std::make_index_sequence<T::S>{});
+  y_new = y + h * combine<T, Coefficients::b, 0>(k, std::make_index_sequence<T::S>{});
   if constexpr (T::kEmbedded) {
-    err = h * combine<T, T::E>(k, std::make_index_sequence<T::S>{});
+    err = h * combine<T, Coefficients::e, 0>(k, std::make_index_sequence<T::S>{});
   }
 }
 

@@ -1,9 +1,8 @@
 #include "problem/toml_reader.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
-
-#include <algorithm>
 
 #include "problem/values.hpp"
 

@@ -78,7 +78,8 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
       throw InputError(field + ": value must be finite, got '" + text + "'");
     }
     if (why.find("characters long") != std::string::npos ||
-        why.find("nested deeper") != std::string::npos) {
+        why.find("nested deeper") != std::string::npos ||
+        why.find("is refused") != std::string::npos) {
       throw InputError(why);
     }
     throw InputError(field + ": '" + text + "' is not a number" +

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "symbolic/canonical_print.hpp"
+#include "symbolic/expression_guard.hpp"
 
 namespace wobble::sym {
 
@@ -126,6 +127,7 @@ GiNaC::ex SymbolTable::parse(const std::string& text, const std::string& field) 
   for (std::size_t i = 0; i < names_.size(); ++i) tab[names_[i]] = symbols_[i];
   tab["pi"] = GiNaC::Pi;
   tab["Pi"] = GiNaC::Pi;
+  check_expression_cost(text, field, shown, tab);
   GiNaC::parser reader(tab, /*strict=*/true);
   try {
     return reader(text);

@@ -356,17 +356,40 @@ std::vector<Row> catalog() {
        {"--set: 100002 characters", "at most 1000"}},
       {"an answer vector of 20000 components",
        {"check", "flying-plate", "b", "--name", "L0_body", "--answer",
-        "[" + [] {
-          std::string s = "1";
-          for (int i = 1; i < 20000; ++i) s += ",1";
-          return s;
-        }() + "]"},
+        "[" +
+            [] {
+              std::string s = "1";
+              for (int i = 1; i < 20000; ++i) s += ",1";
+              return s;
+            }() +
+            "]"},
        2,
        {"--answer: more than 100 entries"}},
       {"an answer of 120000 characters",
        {"check", "flying-plate", "a", "--name", "I0", "--answer", std::string(120000, '1')},
        2,
        {"--answer: 120000 characters", "at most 90000"}},
+      // Found by fuzzing (issue 8): each crashed or hung wobble before its guard.
+      {"a function called without arguments (crashed GiNaC's parser)",
+       {"check", "flying-plate", "a", "--name", "I0", "--answer", "sqrt()*m"},
+       2,
+       {"--answer: expression \"sqrt()*m\" is refused", "without arguments"}},
+      {"a control character in an expression",
+       {"check", "flying-plate", "a", "--name", "I0", "--answer", "m*R^2/(1+cos\x1b(alpha))"},
+       2,
+       {"is refused", "control or non-ASCII character (code 27)"}},
+      {"a number with a huge exponent (hung computing it)",
+       {"solve", "taylor-10-35", "--set", "m=888880e8888888888888"},
+       2,
+       {"--set m", "value must be finite", "888880e8888888888888"}},
+      {"an exact power too large (hung computing it)",
+       {"check", "flying-plate", "a", "--name", "I0", "--answer", "m*R^2*((2^999)^999)^999"},
+       2,
+       {"is refused", "exponents multiply to more than 1000"}},
+      {"a number of 60 digits",
+       {"check", "flying-plate", "a", "--name", "I0", "--answer", std::string(60, '9')},
+       2,
+       {"is refused", "more than 50 digits"}},
       {"expression nested too deep",
        {"solve", file("deep", with("mass = \"m\", at = [\"1\"",
                                    "mass = \"" + std::string(150, '(') + "m" +

@@ -141,6 +141,33 @@ TEST_CASE("keys --update into a read-only folder fails cleanly and leaves the fi
   REQUIRE(slurp(dir / "taylor-10-35.json") == "old\n");
 }
 
+TEST_CASE("a write that fails midway (a file-size limit, as a full disk) keeps the old files") {
+  const fs::path dir = scratch_dir() / "fsize";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "taylor-10-35.json") << "old\n";
+  const fs::path csv = dir / "run.csv";
+  std::ofstream(csv) << "old\n";
+  // ulimit -f 1: no file may grow past 1 KiB; every key and the samples are larger.
+  const std::string limit = "ulimit -f 1; ";
+  const RunResult keys = run_shell(limit + "WOBBLE_SOLUTIONS='" + dir.string() + "' '" +
+                                   WOBBLE_EXE + "' keys --update");
+  INFO(keys.err);
+  REQUIRE(keys.exit_code == 2);
+  REQUIRE_THAT(keys.err, Catch::Contains("cannot write") && Catch::Contains("too large"));
+  const RunResult sim =
+      run_shell(limit + "'" + std::string(WOBBLE_EXE) +
+                "' simulate tennis-racket --samples 2000 --force --out '" + csv.string() + "'");
+  INFO(sim.err);
+  REQUIRE(sim.exit_code == 2);
+  REQUIRE(slurp(dir / "taylor-10-35.json") == "old\n");
+  REQUIRE(slurp(csv) == "old\n");
+  for (const auto& e : fs::directory_iterator(dir)) {
+    INFO(e.path());
+    REQUIRE(e.path().filename().string().find(".tmp.") == std::string::npos);  // none left
+  }
+}
+
 TEST_CASE("keys are byte-identical across processes and equal to the stored solutions") {
   // Each process has its own address layout and symbol history, which change GiNaC's internal
   // term order; `keys --update` solved all problems in one process, `solve` one per process.

@@ -26,8 +26,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       for (const bool sigfigs : {false, true}) {
         wobble::check::Options o;
         if (sigfigs) o.sigfigs = 3;
-        wobble::fuzz::expect_clean(
-            [&] { (void)wobble::check::judge({f.key, f.table, f.values}, a, text, o); });
+        wobble::fuzz::expect_clean([&] {
+          (void)wobble::check::judge({f.key, f.table, f.values}, a, text, o);
+        });
       }
     }
   }

@@ -7,8 +7,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   wobble::fuzz::expect_clean([&] {
-    const wobble::Problem p = wobble::load_problem_text(wobble::fuzz::text_of(data, size),
-                                                        "fuzz.toml");
+    const wobble::Problem p =
+        wobble::load_problem_text(wobble::fuzz::text_of(data, size), "fuzz.toml");
     const wobble::Key key = wobble::solve(p, wobble::parameter_values(p, {}));
     (void)wobble::render_text(key);
     (void)wobble::render_markdown(key);

@@ -6,8 +6,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   wobble::fuzz::expect_clean([&] {
-    const wobble::Scene s = wobble::load_scene_text(wobble::fuzz::text_of(data, size),
-                                                    "fuzz.toml");
+    const wobble::Scene s = wobble::load_scene_text(wobble::fuzz::text_of(data, size), "fuzz.toml");
     (void)wobble::setup_scene(s, std::vector<std::string>{});
   });
   return 0;

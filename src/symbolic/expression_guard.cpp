@@ -1,0 +1,165 @@
+#include "symbolic/expression_guard.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace wobble::sym {
+
+namespace {
+bool ident_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+struct Scanner {
+  const std::string& text;
+  const std::string& field;
+  const std::string& shown;
+  const GiNaC::symtab& symbols;
+
+  [[noreturn]] void fail(const std::string& why) const {
+    throw ExpressionError(field + ": expression \"" + shown + "\" is refused: " + why);
+  }
+
+  // The end of the group that opens at text[open] ('(' ... matching ')'), or npos.
+  std::size_t group_end(std::size_t open) const {
+    int depth = 0;
+    for (std::size_t i = open; i < text.size(); ++i) {
+      if (text[i] == '(') ++depth;
+      if (text[i] == ')' && --depth == 0) return i;
+    }
+    return std::string::npos;
+  }
+
+  // A number literal at i: checks its size; returns its end.
+  std::size_t number_end(std::size_t i, double* value) const {
+    const std::size_t start = i;
+    std::size_t digits = 0;
+    while (i < text.size() &&
+           (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.')) {
+      digits += text[i] != '.';
+      ++i;
+    }
+    if (digits > 50) fail("a number with more than 50 digits");
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+      std::size_t j = i + 1;
+      if (j < text.size() && (text[j] == '+' || text[j] == '-')) ++j;
+      const std::size_t exp_start = j;
+      while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) ++j;
+      if (j > exp_start) {
+        // Doubles end near 1e308; GiNaC would write out 1e8888888 digit by digit.
+        if (j - exp_start > 3 || std::atoi(text.substr(exp_start, j - exp_start).c_str()) > 400) {
+          fail("a number with an exponent beyond 400 (not finite in double precision)");
+        }
+        i = j;
+      }
+    }
+    if (value != nullptr) *value = std::strtod(text.substr(start, i - start).c_str(), nullptr);
+    return i;
+  }
+
+  // The size of the exponent that starts after '^' at i (1 for a symbolic one), and its end.
+  double exponent(std::size_t i, std::size_t* end) const {
+    while (i < text.size() &&
+           (text[i] == ' ' || text[i] == '\t' || text[i] == '+' || text[i] == '-')) {
+      ++i;
+    }
+    if (i >= text.size()) {
+      *end = i;
+      return 1;
+    }
+    if (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.') {
+      double v = 1;
+      *end = number_end(i, &v);
+      return std::abs(v);
+    }
+    std::size_t j = i;
+    while (j < text.size() && ident_char(text[j])) ++j;
+    if (j < text.size() && text[j] == '(') {
+      const std::size_t close = group_end(j);
+      if (close == std::string::npos) {
+        *end = text.size();
+        return 1;  // unbalanced: GiNaC's parser says so
+      }
+      const std::string inside = text.substr(j + 1, close - j - 1);
+      if (inside.find('^') != std::string::npos) fail("a power inside an exponent");
+      *end = close + 1;
+      if (j > i) return 1;  // a function's value: not computed exactly
+      // A group without powers is cheap to read exactly; a number there is the exponent.
+      try {
+        GiNaC::parser reader(symbols, true);
+        const GiNaC::ex e = reader(inside);
+        if (GiNaC::is_a<GiNaC::numeric>(e)) {
+          return std::abs(GiNaC::ex_to<GiNaC::numeric>(e).to_double());
+        }
+      } catch (const std::exception&) {
+        // a malformed exponent: GiNaC's parser reports it with the whole expression
+      }
+      return 1;
+    }
+    *end = j;
+    return 1;
+  }
+};
+}  // namespace
+
+void check_expression_cost(const std::string& text, const std::string& field,
+                           const std::string& shown, const GiNaC::symtab& symbols) {
+  const Scanner s{text, field, shown, symbols};
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\t') || u > 0x7e) {
+      s.fail("it contains a control or non-ASCII character (code " + std::to_string(u) + ")");
+    }
+  }
+  // Exact powers: the product of the exponents along each chain of nested powers is the
+  // number of digits it multiplies, so it is bounded; GiNaC would compute 2^(10^9) exactly.
+  constexpr double kMaxTower = 1000;
+  std::vector<double> group_tower{1};  // the largest tower in each open group
+  double operand = 1;                  // the tower of the operand just read
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (c == '(') {
+      // f(): GiNaC's parser crashes on a call without arguments (GiNaC 1.8.6).
+      std::size_t k = i + 1;
+      while (k < text.size() && (text[k] == ' ' || text[k] == '\t')) ++k;
+      std::size_t b = i;
+      while (b > 0 && (text[b - 1] == ' ' || text[b - 1] == '\t')) --b;
+      if (k < text.size() && text[k] == ')' && b > 0 && ident_char(text[b - 1])) {
+        s.fail("a function called without arguments");
+      }
+      group_tower.push_back(1);
+      ++i;
+    } else if (c == ')') {
+      operand = group_tower.back();
+      if (group_tower.size() > 1) group_tower.pop_back();
+      group_tower.back() = std::max(group_tower.back(), operand);
+      ++i;
+    } else if (c == '^') {
+      std::size_t end = i + 1;
+      const double e = s.exponent(i + 1, &end);
+      const double tower = operand * std::max(1.0, e);
+      if (!(tower <= kMaxTower)) {
+        s.fail("an exact power too large to compute (exponents multiply to more than 1000)");
+      }
+      group_tower.back() = std::max(group_tower.back(), tower);
+      operand = tower;
+      i = end;
+    } else if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+      if (i > 0 && ident_char(text[i - 1])) {  // a digit inside a name such as d1
+        ++i;
+        continue;
+      }
+      i = s.number_end(i, nullptr);
+      operand = 1;
+    } else {
+      if (ident_char(c)) operand = 1;
+      ++i;
+    }
+  }
+}
+
+}  // namespace wobble::sym
