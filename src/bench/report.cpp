@@ -17,7 +17,7 @@ LongRun long_splitting_run(bool quick) {
   for (std::int64_t k = 1; k <= out.steps; ++k) {
     split_free_body(body, s, h, 1, SplittingOrder::strang2);
     const double e = std::abs(body.energy(s.m_B) - E0) / E0;
-    if (k * h <= 10.0) out.energy_error_10 = std::max(out.energy_error_10, e);
+    if (static_cast<double>(k) * h <= 10.0) out.energy_error_10 = std::max(out.energy_error_10, e);
     out.energy_error_1e4 = std::max(out.energy_error_1e4, e);
   }
   out.L_error_end = std::abs(s.m_B.norm() - p.m0.norm()) / p.m0.norm();

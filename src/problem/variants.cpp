@@ -64,8 +64,9 @@ std::vector<std::string> variant_assignments(const Problem& problem, long n, int
     std::string text;
     for (int attempt = 0; attempt < 2; ++attempt) {
       text = p.is_angle() ? fmt::format("{}deg", std::lround(x * 180 / M_PI)) : two_digits(x);
-      const double shown =
-          p.is_angle() ? std::lround(x * 180 / M_PI) * M_PI / 180 : std::stod(text);
+      const double shown = p.is_angle()
+                               ? static_cast<double>(std::lround(x * 180 / M_PI)) * M_PI / 180
+                               : std::stod(text);
       if (r.contains(shown)) break;
       x = d;  // rounding left the range (an open end): fall back to the default
       text = fmt::format("{:.17g}", d);

@@ -44,7 +44,8 @@ CrossCheck cross_check_torque_free(const Problem& problem, const sym::Values& va
   // The problem as a scene: w(0) = omega (sin alpha, 0, cos alpha) in the body, body = space.
   Scene scene;
   scene.model = problem;
-  const std::string w = "(" + problem.motion->at("omega") + ")", a = "(" + problem.motion->at("alpha") + ")";
+  const std::string w = "(" + problem.motion->at("omega") + ")",
+                    a = "(" + problem.motion->at("alpha") + ")";
   scene.omega = {w + "*sin" + a, "0", w + "*cos" + a};
   scene.t_end = fmt::format("{:.17g}", 1.5 * t_max);
   scene.samples = 4001;
@@ -53,7 +54,8 @@ CrossCheck cross_check_torque_free(const Problem& problem, const sym::Values& va
   const SceneSetup s = setup_scene_at(scene, values);
   const MethodChoice choice = choose_method(s, "rkf78");
   std::vector<double> times(static_cast<std::size_t>(s.samples));
-  for (std::size_t k = 0; k < times.size(); ++k) times[k] = s.t_end * k / (times.size() - 1);
+  for (std::size_t k = 0; k < times.size(); ++k)
+    times[k] = s.t_end * static_cast<double>(k) / static_cast<double>(times.size() - 1);
   SimulationResult cost;
   const auto start = std::chrono::steady_clock::now();
   const std::vector<SimState> states = propagate(s, choice, times, cost);

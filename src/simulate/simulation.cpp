@@ -14,7 +14,8 @@ namespace wobble {
 
 namespace {
 void report(const std::function<void(double)>& progress, std::size_t k, std::size_t n) {
-  if (progress && (n < 100 || k % (n / 100) == 0)) progress(static_cast<double>(k) / n);
+  if (progress && (n < 100 || k % (n / 100) == 0))
+    progress(static_cast<double>(k) / static_cast<double>(n));
 }
 
 void describe(const ExactFreeMotion& motion, std::vector<std::string>& notes) {

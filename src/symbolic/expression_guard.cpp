@@ -115,6 +115,17 @@ void check_expression_cost(const std::string& text, const std::string& field,
       s.fail("it contains a control or non-ASCII character (code " + std::to_string(u) + ")");
     }
   }
+  // f(): GiNaC's parser crashes on a call without arguments (GiNaC 1.8.6), wherever it is.
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '(') continue;
+    std::size_t k = i + 1;
+    while (k < text.size() && (text[k] == ' ' || text[k] == '\t')) ++k;
+    std::size_t b = i;
+    while (b > 0 && (text[b - 1] == ' ' || text[b - 1] == '\t')) --b;
+    if (k < text.size() && text[k] == ')' && b > 0 && ident_char(text[b - 1])) {
+      s.fail("a function called without arguments");
+    }
+  }
   // Exact powers: the product of the exponents along each chain of nested powers is the
   // number of digits it multiplies, so it is bounded; GiNaC would compute 2^(10^9) exactly.
   constexpr double kMaxTower = 1000;
@@ -123,14 +134,6 @@ void check_expression_cost(const std::string& text, const std::string& field,
   for (std::size_t i = 0; i < text.size();) {
     const char c = text[i];
     if (c == '(') {
-      // f(): GiNaC's parser crashes on a call without arguments (GiNaC 1.8.6).
-      std::size_t k = i + 1;
-      while (k < text.size() && (text[k] == ' ' || text[k] == '\t')) ++k;
-      std::size_t b = i;
-      while (b > 0 && (text[b - 1] == ' ' || text[b - 1] == '\t')) --b;
-      if (k < text.size() && text[k] == ')' && b > 0 && ident_char(text[b - 1])) {
-        s.fail("a function called without arguments");
-      }
       group_tower.push_back(1);
       ++i;
     } else if (c == ')') {
