@@ -54,10 +54,24 @@ class Printer {
       throw std::invalid_argument("canonical_print: unsupported constant");
     }
     if (is_a<GiNaC::add>(e)) return {print_sum(e), kSum};
+    if (is_a<GiNaC::power>(e) &&
+        !(is_a<numeric>(e.op(1)) && GiNaC::ex_to<numeric>(e.op(1)).is_rational())) {
+      return print_general_power(e);
+    }
     if (is_a<GiNaC::mul>(e) || is_a<GiNaC::power>(e)) return print_product(e);
     if (is_a<GiNaC::function>(e)) return {print_function(e), kAtom};
     throw std::invalid_argument(std::string("canonical_print: unsupported expression ") +
                                 GiNaC::ex_to<GiNaC::basic>(e).class_name());
+  }
+
+  // base^exponent with an exponent that is not a rational number (2^a, x^y): both sides in
+  // parentheses unless atoms. (A product would print it as a factor to the power 1, forever.)
+  std::pair<std::string, int> print_general_power(const ex& e) {
+    auto [b, bp] = print_prec(e.op(0));
+    auto [x, xp] = print_prec(e.op(1));
+    if (bp < kAtom) b = paren(b);
+    if (latex()) return {b + "^{" + x + "}", kPower};
+    return {b + "^" + (xp < kAtom ? paren(x) : x), kPower};
   }
 
   std::pair<std::string, int> print_numeric(const numeric& n) {

@@ -91,3 +91,16 @@ TEST_CASE("evaluation is exact to double rounding") {
   REQUIRE(evaluate(t.parse("sqrt(2)", "x"), at, "x") == std::sqrt(2.0));
   REQUIRE_THROWS_AS(evaluate(t.parse("1/(a - a)", "x"), at, "x"), std::exception);
 }
+
+TEST_CASE(
+    "powers with a symbolic exponent print and read back (fuzzing: 2^a overflowed the stack)") {
+  const SymbolTable t = table();
+  for (const std::string text : {"m*2^a/6", "a^alpha", "(m + a)^(a/2)", "2^(-a)*m"}) {
+    INFO(text);
+    const GiNaC::ex e = t.parse(text, "e");
+    const std::string printed = to_text(e, t);
+    REQUIRE(is_identically_zero(t.parse(printed, "printed") - e));
+    REQUIRE_FALSE(to_latex(e, t).empty());
+  }
+  REQUIRE(to_text(t.parse("m*2^a/6", "e"), t) == "m*2^a/6");
+}
