@@ -126,7 +126,9 @@ std::filesystem::path resolve_id_or_file(const std::string& id_or_file,
     for (const auto& f : toml_files_in(dir, what)) {
       known += (known.empty() ? "" : ", ") + f.stem().string();
     }
-    throw InputError("unknown " + what + " '" + id_or_file + "' (known: " + known + ")");
+    const std::string shown =
+        id_or_file.size() > 60 ? id_or_file.substr(0, 60) + "..." : id_or_file;
+    throw InputError("unknown " + what + " '" + shown + "' (known: " + known + ")");
   }
   return file;
 }

@@ -10,7 +10,20 @@
 
 namespace wobble {
 
+void require_regular_or_absent(const std::filesystem::path& target) {
+  // Renaming over /dev/null or a link would replace the device node or the link itself (and as
+  // root nothing stops it).
+  std::error_code ec;
+  const auto status = std::filesystem::symlink_status(target, ec);
+  if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw std::runtime_error(target.string() +
+                             ": is not a regular file (a device, folder or link); wobble writes "
+                             "regular files only");
+  }
+}
+
 void write_atomically(const std::filesystem::path& target, const std::string& content) {
+  require_regular_or_absent(target);
   const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
   std::string name = ".";  // appended piece by piece: GCC 12 -Wrestrict false positive on "a" + s
   name += target.filename().string();

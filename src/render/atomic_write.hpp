@@ -7,8 +7,13 @@
 
 namespace wobble {
 
-/// @throws std::runtime_error naming the file if any step fails; the temporary is removed and
-///         the target is left as it was.
+/// @throws std::runtime_error if `target` exists and is not a regular file (a device such as
+///         /dev/null, a folder, a symbolic link): wobble replaces regular files only.
+void require_regular_or_absent(const std::filesystem::path& target);
+
+/// @throws std::runtime_error naming the file if any step fails, or if the target exists and is
+///         not a regular file (a device such as /dev/null, a folder, a symbolic link); the
+///         temporary is removed and the target is left as it was.
 void write_atomically(const std::filesystem::path& target, const std::string& content);
 
 }  // namespace wobble

@@ -213,6 +213,13 @@ TEST_CASE("solve --figure draws the sketch with gnuplot, never overwrites withou
   const RunResult none = run_wobble({"solve", "taylor-10-35", "--figure", svg.string(), "--force"});
   REQUIRE(none.exit_code == 2);
   REQUIRE_THAT(none.err, Catch::Contains("has no sketch"));
+  // A file name is never a command line: quotes and a semicolon are just characters (gnuplot
+  // is started without a shell).
+  const fs::path odd = svg.parent_path() / "it's; touch pwned.svg";
+  REQUIRE(run_wobble({"solve", "flying-plate", "--figure", odd.string()}).exit_code == 0);
+  REQUIRE_THAT(slurp(odd), Catch::Contains("<svg"));
+  REQUIRE_FALSE(fs::exists("pwned.svg"));
+  REQUIRE_FALSE(fs::exists(svg.parent_path() / "pwned.svg"));
 }
 
 TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback") {
