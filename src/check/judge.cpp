@@ -68,6 +68,7 @@ Parsed parse_answer(const std::string& raw, const sym::SymbolTable& table) {
     }
     const bool glued = !value.empty() && std::isdigit(static_cast<unsigned char>(value[0])) &&
                        value.find(' ') == std::string::npos &&
+                       value.find_first_of("*/+-^()") == std::string::npos &&
                        std::any_of(value.begin(), value.end(), [](char c) {
                          return std::isalpha(static_cast<unsigned char>(c));
                        });

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -114,6 +115,39 @@ void check_expression_cost(const std::string& text, const std::string& field,
     if ((u < 0x20 && c != '\t') || u > 0x7e) {
       s.fail("it contains a control or non-ASCII character (code " + std::to_string(u) + ")");
     }
+  }
+  // Names: a function only from the list below (GiNaC's parser knows many more, some of which
+  // compute exactly, tgamma(100000) digit by digit), anything else a declared symbol (GiNaC
+  // would also accept its constants Catalan, Euler and the imaginary unit I).
+  static const std::set<std::string> functions{
+      "sqrt", "sin", "cos",  "tan",  "asin", "acos", "atan",      "atan2",
+      "exp",  "log", "sinh", "cosh", "tanh", "abs",  "EllipticK", "EllipticE"};
+  for (std::size_t i = 0; i < text.size();) {
+    if (!std::isalpha(static_cast<unsigned char>(text[i])) && text[i] != '_') {
+      // skip a number (with its exponent letter) or any other character
+      if (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.') {
+        i = s.number_end(i, nullptr);
+      } else {
+        ++i;
+      }
+      continue;
+    }
+    std::size_t j = i;
+    while (j < text.size() && ident_char(text[j])) ++j;
+    const std::string name = text.substr(i, j - i);
+    std::size_t k = j;
+    while (k < text.size() && (text[k] == ' ' || text[k] == '\t')) ++k;
+    if (k < text.size() && text[k] == '(') {
+      if (!functions.count(name)) {
+        s.fail("unknown function '" + name +
+               "' (known: sqrt, sin, cos, tan, asin, acos, atan, atan2, exp, log, sinh, cosh, "
+               "tanh, abs, EllipticK, EllipticE)");
+      }
+    } else if (!symbols.count(name)) {
+      throw ExpressionError(field + ": cannot read expression \"" + shown +
+                            "\": undefined symbol '" + name + "'");
+    }
+    i = j;
   }
   // f(): GiNaC's parser crashes on a call without arguments (GiNaC 1.8.6), wherever it is.
   for (std::size_t i = 0; i < text.size(); ++i) {
