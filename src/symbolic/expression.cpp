@@ -169,11 +169,19 @@ struct DeepEvalf : GiNaC::map_function {
 
 double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field) {
   DigitsGuard guard(40);
-  const GiNaC::ex exact = e.subs(at);
-  GiNaC::ex v = GiNaC::evalf(exact);
-  if (!GiNaC::is_a<GiNaC::numeric>(v)) {
-    DeepEvalf deep;
-    v = deep(exact);
+  GiNaC::ex v;
+  try {
+    const GiNaC::ex exact = e.subs(at);
+    v = GiNaC::evalf(exact);
+    if (!GiNaC::is_a<GiNaC::numeric>(v)) {
+      DeepEvalf deep;
+      v = deep(exact);
+    }
+  } catch (const std::exception& x) {
+    // GiNaC and CLN report a division by zero (0^m/0^m at m > 0) or a floating-point overflow
+    // by exceptions of their own: at these values the expression has no value.
+    throw ExpressionError(field + ": expression has no value at these values (" +
+                          first_line(x.what()) + ")");
   }
   if (!GiNaC::is_a<GiNaC::numeric>(v)) {
     throw ExpressionError(field + ": expression does not evaluate to a number: " +
@@ -187,7 +195,11 @@ double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& fie
 }
 
 bool is_identically_zero(const GiNaC::ex& e) {
-  return GiNaC::normal(e).is_zero();
+  try {
+    return GiNaC::normal(e).is_zero();
+  } catch (const std::exception&) {
+    return false;  // normal() divided by zero: not shown to be zero (the evaluation decides)
+  }
 }
 
 GiNaC::ex simplified_sqrt(const GiNaC::ex& e) {
