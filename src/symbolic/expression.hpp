@@ -74,7 +74,9 @@ GiNaC::lst substitution(const SymbolTable& table, const Values& values);
 /// @throws ExpressionError if e does not evaluate to a finite real number.
 double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field);
 
-/// Exact zero test after normal(): e is identically zero in the parameters.
+/// Exact zero test after normal(): e is identically zero in the parameters. False (not proved)
+/// for an expression of more than 400 nodes or more than 4 powers with a symbolic exponent,
+/// where normal() can grow without bound, and where normal() divides by zero.
 bool is_identically_zero(const GiNaC::ex& e);
 
 /// sqrt(e) with even powers of positive factors and square numeric factors taken out

@@ -370,6 +370,18 @@ TEST_CASE("every closed form of every problem: other forms of it right, look-ali
   REQUIRE(lookalike >= 40);
 }
 
+TEST_CASE("answers too large to simplify are judged by evaluation (fuzzing: 44 s, out of memory)") {
+  const Fixture plate("flying-plate");
+  // Many powers with symbolic exponents: normal() grew without bound on these.
+  const Verdict v = plate.check(
+      "I0", "++++++++m*R^++++R+++++++++++m*R^++++R+++++m+++++++++m*R^++++R++++++++++m*R^+++R");
+  REQUIRE_FALSE(v.correct);
+  REQUIRE_THAT(v.line, Catch::Contains("differs from the key's"));
+  // An equal form with many symbolic powers is still right, by evaluation.
+  const Verdict same = plate.check("I0", "m*R^2/4 + (2^m - 2^m) + (R^m - R^m) + (3^R - 3^R)");
+  REQUIRE(same.correct);
+}
+
 TEST_CASE("axes of a degenerate pair: any orthonormal pair of the plane is right") {
   const std::string file =
       wobble::test::write_file("check/degenerate.toml", R"TOML(id = "degenerate"
