@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -36,6 +37,17 @@ class Printer {
  private:
   const SymbolTable& table_;
   Style style_;
+  // Each subexpression is printed once per style: sorting and sign rules look at a factor's or
+  // a term's text again and again, which without these took time exponential in the nesting
+  // depth (fuzzing found a 76-character expression taking seconds).
+  std::map<ex, std::pair<std::string, int>, GiNaC::ex_is_less> memo_;
+  std::unique_ptr<Printer> text_;  // the text-style printer used for sort keys
+
+  Printer& text_printer() {
+    if (!latex()) return *this;
+    if (!text_) text_ = std::make_unique<Printer>(table_, Style::text);
+    return *text_;
+  }
 
   bool latex() const { return style_ == Style::latex; }
 
@@ -47,6 +59,13 @@ class Printer {
   }
 
   std::pair<std::string, int> print_prec(const ex& e) {
+    if (const auto it = memo_.find(e); it != memo_.end()) return it->second;
+    auto printed = print_prec_uncached(e);
+    memo_.emplace(e, printed);
+    return printed;
+  }
+
+  std::pair<std::string, int> print_prec_uncached(const ex& e) {
     if (is_a<numeric>(e)) return print_numeric(GiNaC::ex_to<numeric>(e));
     if (is_a<GiNaC::symbol>(e)) return {print_symbol(e), kAtom};
     if (is_a<GiNaC::constant>(e)) {
@@ -131,10 +150,13 @@ class Printer {
       const ex t = e.op(i);
       const bool negative = term_negative(t);
       const ex mag = negative ? -t : t;
-      Printer text(table_, Style::text);
-      std::string key = text.print(mag);
+      // The key is the text form; in text style it is also what is printed (printing it twice
+      // at every level of nesting took time exponential in the depth: fuzzing found it).
+      Printer& text = text_printer();
+      std::string shown = text.print(mag);
+      std::string key = shown;
       if (is_a<numeric>(mag)) key.insert(key.begin(), '~');  // numbers sort last
-      terms.push_back({negative, key, print(mag)});
+      terms.push_back({negative, key, latex() ? print(mag) : std::move(shown)});
     }
     std::stable_sort(terms.begin(), terms.end(),
                      [](const Term& a, const Term& b) { return a.key < b.key; });
@@ -203,7 +225,7 @@ class Printer {
   // Sort rank of a factor: symbols by declaration order (then name, for symbols the table does
   // not know), then everything else by its sign-normalised text.
   std::tuple<int, std::size_t, std::string> factor_rank(const ex& base) {
-    Printer text(table_, Style::text);
+    Printer& text = text_printer();
     if (is_a<GiNaC::symbol>(base)) {
       const std::string name = GiNaC::ex_to<GiNaC::symbol>(base).get_name();
       return {0, table_.order_of(name), name};
@@ -274,9 +296,16 @@ class Printer {
     } else {
       add_factor(e);
     }
-    std::stable_sort(factors.begin(), factors.end(), [&](const auto& a, const auto& b) {
-      return factor_rank(a.first) < factor_rank(b.first);
-    });
+    // Ranked once each (ranking inside the comparison printed every factor O(n log n) times,
+    // at every level of nesting).
+    {
+      using Rank = std::tuple<int, std::size_t, std::string>;
+      std::vector<std::pair<Rank, std::pair<ex, numeric>>> ranked;
+      for (auto& f : factors) ranked.emplace_back(factor_rank(f.first), std::move(f));
+      std::stable_sort(ranked.begin(), ranked.end(),
+                       [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (std::size_t i = 0; i < ranked.size(); ++i) factors[i] = std::move(ranked[i].second);
+    }
     // Sum factors with an integer power carry their sign into the coefficient (see print_sum).
     std::vector<bool> flipped(factors.size(), false);
     for (std::size_t i = 0; i < factors.size(); ++i) {
