@@ -64,9 +64,11 @@ struct Scanner {
 
   // The size of the exponent that starts after '^' at i (1 for a symbolic one), and its end.
   double exponent(std::size_t i, std::size_t* end) const {
-    while (i < text.size() &&
-           (text[i] == ' ' || text[i] == '\t' || text[i] == '+' || text[i] == '-')) {
-      ++i;
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    // GiNaC reads x^-2+y as x^(-2+y): a sign after '^' takes the rest of the sum into the
+    // exponent, which this scan could not bound (2^+4+22^423 ran out of memory).
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) {
+      fail("a signed exponent must be in parentheses: x^(-2), not x^-2");
     }
     if (i >= text.size()) {
       *end = i;

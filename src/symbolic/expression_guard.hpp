@@ -5,7 +5,8 @@
 /// with no arguments ("sqrt()" crashes GiNaC 1.8.6's parser); a number with more than 50 digits
 /// or an exponent beyond 400; and exact powers whose exponents, multiplied along a chain of
 /// nested powers, exceed 1000 ("10^99999999" or "((2^999)^999)^999" would be computed digit by
-/// digit). A power inside an exponent is refused too. Textbook expressions stay far below.
+/// digit). A power inside an exponent is refused too, and so is a signed exponent without
+/// parentheses (GiNaC reads x^-2+y as x^(-2+y)). Textbook expressions stay far below.
 #include <ginac/ginac.h>
 
 #include <string>
