@@ -16,7 +16,6 @@ namespace wobble {
 
 namespace {
 using GiNaC::ex;
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 struct Angles : BodyContext {
   Angles(const Problem& problem, const sym::Values& values);
@@ -76,16 +75,11 @@ Angles::Angles(const Problem& p, const sym::Values& values) : BodyContext(p, val
   singular = sym::is_identically_zero(ex(GiNaC::sin(theta)).subs(t.exact.at));
 }
 
-void check(double exact, double numeric, double scale, double ulps, const std::string& name) {
-  if (!(std::abs(exact - numeric) <= ulps * kEps * std::max(scale, std::abs(exact)))) {
-    throw std::logic_error(fmt::format("{}: exact {} but numeric {}", name, exact, numeric));
-  }
-}
 void check_all(const Answer& a, const std::vector<double>& numeric, double ulps) {
   double scale = 0;
   for (double x : numeric) scale = std::max(scale, std::abs(x));
   for (std::size_t i = 0; i < numeric.size(); ++i) {
-    check(a.value.data.at(i), numeric[i], scale, ulps, a.name);
+    check_routes_agree(a.value.data.at(i), numeric[i], scale, ulps, a.name);
   }
 }
 std::vector<double> entries(const Mat3& m) {
@@ -213,7 +207,7 @@ Computed angles_back(const Angles& t, bool zxz) {
     // Core's reading, up to whole turns (at +-pi rounding may land on either end).
     const Vec3 core = euler_from_rotation(R, c);
     for (int i = 0; i < 3; ++i) {
-      check(std::remainder(got[i] - core[i], 2 * M_PI), 0.0, M_PI, 64, q);
+      check_routes_agree(std::remainder(got[i] - core[i], 2 * M_PI), 0.0, M_PI, 64, q);
     }
   }
   out.answer.notes.push_back(t.singular ? "Gimbal lock: only one combination of φ and ψ is "
@@ -324,8 +318,8 @@ Computed quantity(const Angles& t, const std::string& q) {
                    "\\dot\\theta^2\\right) + \\tfrac{I_3}{2}\\left(\\dot\\phi\\cos\\theta + "
                    "\\dot\\psi\\right)^2",
                    "Kinetic energy:"}}};
-    check(out.answer.value.data[0], 0.5 * n.primed.dot(Ln), 0.5 * n.primed.norm() * Ln.norm(), 64,
-          q);
+    check_routes_agree(out.answer.value.data[0], 0.5 * n.primed.dot(Ln),
+                       0.5 * n.primed.norm() * Ln.norm(), 64, q);
     return out;
   }
   if (q == "angles_back_zyz" || q == "angles_back_zxz")

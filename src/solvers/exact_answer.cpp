@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/principal_axes.hpp"
 #include "symbolic/canonical_print.hpp"
@@ -119,6 +120,14 @@ Answer numeric_matrix(const std::string& name, const Mat3& m, const std::string&
   a.unit = unit;
   a.notes.push_back(why);
   return a;
+}
+
+void check_routes_agree(double exact, double numeric, double scale, double ulps,
+                        const std::string& name) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  if (!(std::abs(exact - numeric) <= ulps * eps * std::max(scale, std::abs(exact)))) {
+    throw std::logic_error(fmt::format("{}: exact {} but numeric {}", name, exact, numeric));
+  }
 }
 
 }  // namespace wobble

@@ -33,6 +33,13 @@ Answer numeric_vector(const std::string& name, const Vec3& v, const std::string&
 Answer numeric_matrix(const std::string& name, const Mat3& m, const std::string& unit,
                       const std::string& why);
 
+/// The solvers' self-check: an exact value (rounded once from 40 digits) against the same
+/// quantity by an independent double-precision route in core/. They must agree to `ulps` eps of
+/// max(scale, |exact|); otherwise one route has a bug.
+/// @throws std::logic_error naming the quantity and both values.
+void check_routes_agree(double exact, double numeric, double scale, double ulps,
+                        const std::string& name);
+
 /// "[x, y, z]" and "[[..], ..]" GiNaC texts and the LaTeX pmatrix of expressions.
 std::string vector_text(const std::vector<GiNaC::ex>& v, const sym::SymbolTable& t);
 std::string matrix_text(const GiNaC::matrix& m, const sym::SymbolTable& t);

@@ -18,7 +18,6 @@ namespace wobble {
 
 namespace {
 using GiNaC::ex;
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 struct Top : BodyContext {
   Top(const Problem& problem, const sym::Values& values);
@@ -109,13 +108,6 @@ Top::Top(const Problem& p, const sym::Values& values) : BodyContext(p, values) {
   energy_prime = I1 / 2 * (GiNaC::pow(thetadot, 2) + GiNaC::pow(phidot * s, 2)) + M * g * l * c;
 }
 
-// An exact value against the independent double route, to `ulps` eps of the scale.
-void check(double exact, double numeric, double scale, double ulps, const std::string& name) {
-  if (!(std::abs(exact - numeric) <= ulps * kEps * std::max(scale, std::abs(exact)))) {
-    throw std::logic_error(fmt::format("{}: exact {} but numeric {}", name, exact, numeric));
-  }
-}
-
 Step lagrangian_step() {
   return {
       "L = I1/2 (φ̇² sin²θ + θ̇²) + I3/2 (φ̇ cos θ + ψ̇)² − M g l cos θ (ω in the primed basis: "
@@ -185,7 +177,7 @@ Computed nutation_limit(const Top& t, bool upper) {
   const ex e = upper == start_is_max ? t.theta : GiNaC::acos(u0 + d);
   Computed out{exact_scalar(q, e, "rad", t.exact), steps};
   // acos near u = 1 amplifies the root's rounding: compare within sqrt(eps)-scaled bounds there.
-  check(out.answer.value.data[0], want, 1.0, 1e4, q);
+  check_routes_agree(out.answer.value.data[0], want, 1.0, 1e4, q);
   out.steps.push_back(
       {"θ̇0 = 0: the start is a turning point; dividing f by (u − cos θ0) leaves β d² + c2 d + c1 "
        "= 0 in d = u − cos θ0, with c1 = " +
@@ -249,7 +241,7 @@ Computed steady(const Top& t, const std::string& q) {
                  "I_1\\cos\\theta\\,\\dot\\phi^2 - I_3\\omega_3\\,\\dot\\phi + Mgl = 0",
                  "Steady precession:"}}};
   const double want = slow ? rates->slow : rates->fast;
-  if (std::isfinite(want)) check(out.answer.value.data[0], want, want, 64, q);
+  if (std::isfinite(want)) check_routes_agree(out.answer.value.data[0], want, want, 64, q);
   out.answer.notes.push_back(
       slow ? "The slow precession: for a fast top ≈ M g l / (I3 ω3), independent of θ."
            : "The fast precession: for a fast top ≈ I3 ω3 / (I1 cos θ), nearly the free nutation.");
@@ -278,14 +270,15 @@ Computed quantity_of(const Top& t, const std::string& q) {
                  t.I3 / 2 * GiNaC::pow(t.w3, 2) - t.M * t.g * t.l * c;
     Computed out{exact_scalar(q, L, "J", t.exact), {lagrangian_step()}};
     const double Vn = t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m * std::cos(t.start.theta);
-    check(out.answer.value.data[0], k.energy - 2 * Vn, k.energy + std::abs(Vn), 64, q);
+    check_routes_agree(out.answer.value.data[0], k.energy - 2 * Vn, k.energy + std::abs(Vn), 64, q);
     return out;
   }
   if (q == "p_phi" || q == "p_psi") {
     Computed out{exact_scalar(q, q == "p_phi" ? t.p_phi : t.p_psi, "kg m^2/s", t.exact),
                  {lagrangian_step(), momenta_step()}};
     const double want = q == "p_phi" ? k.p_phi : k.p_psi;
-    check(out.answer.value.data[0], want, std::abs(k.p_psi) + std::abs(k.p_phi), 64, q);
+    check_routes_agree(out.answer.value.data[0], want, std::abs(k.p_psi) + std::abs(k.p_phi), 64,
+                       q);
     return out;
   }
   if (q == "energy" || q == "energy_prime") {
@@ -293,8 +286,8 @@ Computed quantity_of(const Top& t, const std::string& q) {
     Computed out{exact_scalar(q, E, "J", t.exact), {lagrangian_step(), momenta_step()}};
     if (q == "energy_prime") out.steps.push_back(potential_step());
     const double Vn = t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m;
-    check(out.answer.value.data[0], q == "energy" ? k.energy : k.energy_prime,
-          std::abs(k.energy) + Vn, 64, q);
+    check_routes_agree(out.answer.value.data[0], q == "energy" ? k.energy : k.energy_prime,
+                       std::abs(k.energy) + Vn, 64, q);
     return out;
   }
   if (q == "theta_min" || q == "theta_max") return nutation_limit(t, q == "theta_max");
@@ -313,13 +306,13 @@ Computed quantity_of(const Top& t, const std::string& q) {
       const double wn =
           2 * std::sqrt(t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m * t.numeric.I1_kgm2) /
           t.numeric.I3_kgm2;
-      check(out.answer.value.data[0], wn, wn, 16, q);
+      check_routes_agree(out.answer.value.data[0], wn, wn, 16, q);
       out.answer.notes.push_back(fmt::format(
           "This top's spin ω3 = {} rad/s is {} the minimum: stood vertical, it would {}.",
           format_number(k.w3), stable ? "at least" : "below",
           stable ? "sleep (stay up)" : "fall away from the vertical"));
     } else {
-      check(out.answer.value.data[0], k.w3, std::abs(k.w3), 16, q);
+      check_routes_agree(out.answer.value.data[0], k.w3, std::abs(k.w3), 16, q);
     }
     return out;
   }
