@@ -6,76 +6,13 @@
 #include <vector>
 
 #include "solvers/key.hpp"
+#include "symbolic/unicode_notation.hpp"
 
 namespace wobble::detail {
 
-const std::map<std::string, std::string>& greek() {
-  static const std::map<std::string, std::string> g{
-      {"alpha", "α"}, {"beta", "β"},  {"gamma", "γ"}, {"delta", "δ"},  {"epsilon", "ε"},
-      {"zeta", "ζ"},  {"eta", "η"},   {"theta", "θ"}, {"kappa", "κ"},  {"lambda", "λ"},
-      {"mu", "μ"},    {"nu", "ν"},    {"xi", "ξ"},    {"rho", "ρ"},    {"sigma", "σ"},
-      {"tau", "τ"},   {"phi", "φ"},   {"chi", "χ"},   {"psi", "ψ"},    {"omega", "ω"},
-      {"Gamma", "Γ"}, {"Delta", "Δ"}, {"Theta", "Θ"}, {"Lambda", "Λ"}, {"Sigma", "Σ"},
-      {"Phi", "Φ"},   {"Psi", "Ψ"},   {"Omega", "Ω"}, {"Pi", "π"},     {"pi", "π"}};
-  return g;
-}
+const std::map<std::string, std::string>& greek() { return sym::greek_letters(); }
 
-namespace {
-std::string superscript(const std::string& digits) {
-  static const char* sup[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
-  std::string out;
-  for (char c : digits) out += c == '-' ? "⁻" : sup[c - '0'];
-  return out;
-}
-}  // namespace
-
-namespace {
-// "theta0" -> "θ0", "phidot0" -> "φ̇0", "psidot" -> "ψ̇": a Greek name, an optional "dot" (a time
-// derivative) and digits; any other word stays as it is.
-std::string greek_word(const std::string& word) {
-  if (const auto it = greek().find(word); it != greek().end()) return it->second;
-  std::size_t digits = word.size();
-  while (digits > 0 && std::isdigit(static_cast<unsigned char>(word[digits - 1]))) --digits;
-  std::string stem = word.substr(0, digits);
-  const bool dot = stem.size() > 3 && stem.compare(stem.size() - 3, 3, "dot") == 0;
-  if (dot) stem.resize(stem.size() - 3);
-  const auto it = greek().find(stem);
-  if (it == greek().end() || (!dot && digits == word.size())) return word;
-  return it->second + (dot ? "\u0307" : "") + word.substr(digits);
-}
-}  // namespace
-
-std::string pretty(const std::string& s) {
-  std::string out;
-  for (std::size_t i = 0; i < s.size();) {
-    const char c = s[i];
-    if (std::isalpha(static_cast<unsigned char>(c))) {
-      std::size_t j = i;
-      while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
-      const std::string word = s.substr(i, j - i);
-      auto it = greek().find(word);
-      if (word == "sqrt") {
-        out += "√";
-      } else {
-        out += it == greek().end() ? greek_word(word) : it->second;
-      }
-      i = j;
-    } else if (c == '^' && i + 1 < s.size() &&
-               (std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
-      std::size_t j = i + 1;
-      while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) ++j;
-      out += superscript(s.substr(i + 1, j - i - 1));
-      i = j;
-    } else if (c == '*') {
-      out += "·";
-      ++i;
-    } else {
-      out += c;
-      ++i;
-    }
-  }
-  return out;
-}
+std::string pretty(const std::string& s) { return sym::to_unicode(s); }
 
 std::string unit_text(const std::string& unit) {
   std::string out = pretty(unit);

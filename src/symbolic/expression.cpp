@@ -56,6 +56,72 @@ GiNaC::numeric shortest_decimal(double d) {
   return GiNaC::numeric(mantissa.c_str()) * GiNaC::numeric(10).power(exponent);
 }
 
+// Number literals with a decimal point or an exponent ("1.5", "0.5e-3") rewritten as exact
+// rationals ("(15/10)", "(5/10^4)"). GiNaC's parser reads them as floating-point numbers, which
+// its polynomial algorithms (normal, gcd) refuse: decimals in a problem file or an answer mean
+// the decimal number, exactly. The guard has bounded the literals (digits, exponent) already.
+std::string exact_literals(const std::string& text) {
+  const auto digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+  const auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const bool starts_number = (digit(text[i]) || (text[i] == '.' && i + 1 < text.size() &&
+                                                   digit(text[i + 1]))) &&
+                               (i == 0 || !name_char(text[i - 1]));
+    if (!starts_number) {
+      out += text[i++];
+      continue;
+    }
+    std::string mantissa;
+    long exponent = 0;
+    bool inexact = false;
+    for (; i < text.size() && (digit(text[i]) || text[i] == '.'); ++i) {
+      if (text[i] == '.') {
+        inexact = true;
+      } else {
+        mantissa += text[i];
+        if (inexact) --exponent;
+      }
+    }
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+      std::size_t j = i + 1;
+      const bool negative = j < text.size() && text[j] == '-';
+      if (j < text.size() && (text[j] == '+' || text[j] == '-')) ++j;
+      const std::size_t start = j;
+      while (j < text.size() && digit(text[j])) ++j;
+      if (j > start) {
+        const long e = std::stol(text.substr(start, j - start));
+        exponent += negative ? -e : e;
+        inexact = true;
+        i = j;
+      }
+    }
+    if (!inexact) {
+      out += mantissa;
+    } else if (exponent >= 0) {
+      out += "(" + mantissa + "*10^" + std::to_string(exponent) + ")";
+    } else {
+      out += "(" + mantissa + "/10^" + std::to_string(-exponent) + ")";
+    }
+  }
+  return out;
+}
+
+// GiNaC's parser messages ("expected ')', got: ','") in words a student can act on.
+std::string plain_parse_error(const std::string& text, const std::string& ginac_message) {
+  int depth = 0;
+  for (const char c : text) {
+    if (c == '(') ++depth;
+    if (c == ')' && --depth < 0) return "a ')' has no '(' before it";
+  }
+  if (depth > 0) return "a '(' is not closed";
+  if (ginac_message.find("got: \",\"") != std::string::npos) {
+    return "a ',' where one expression was expected (a vector is written [x, y, z])";
+  }
+  return "it is not a complete expression (products need '*': 2*m*R^2, not 2mR^2; powers '^'; "
+         "vectors [x, y, z])";
+}
+
 // d rounded once from a rational multiple of pi with a small denominator (pi, 104.5 deg = 209 pi
 // / 360, ...): that multiple. Half-degrees need 360; 720 leaves room for quarter degrees.
 std::optional<GiNaC::ex> pi_multiple(double d) {
@@ -130,16 +196,10 @@ GiNaC::ex SymbolTable::parse(const std::string& text, const std::string& field) 
   check_expression_cost(text, field, shown, tab);
   GiNaC::parser reader(tab, /*strict=*/true);
   try {
-    return reader(text);
+    return reader(exact_literals(text));
   } catch (const std::exception& e) {
-    std::string why = first_line(e.what());
-    const std::string missing = "find_or_insert_symbol: symbol \"";
-    if (auto p = why.find(missing); p != std::string::npos) {
-      auto name = why.substr(p + missing.size());
-      name = name.substr(0, name.find('"'));
-      why = "undefined symbol '" + name + "'";
-    }
-    throw ExpressionError(field + ": cannot read expression \"" + shown + "\": " + why);
+    throw ExpressionError(field + ": cannot read expression \"" + shown + "\": " +
+                          plain_parse_error(text, first_line(e.what())));
   }
 }
 

@@ -8,11 +8,25 @@
 #include <string>
 #include <vector>
 
+#include "symbolic/unicode_notation.hpp"
+
 namespace wobble::sym {
 
 namespace {
 bool ident_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+// "; the symbols here are m, R, omega (ω), alpha (α), pi (π)": what a student may write instead.
+std::string known_symbols(const GiNaC::symtab& symbols) {
+  std::string list;
+  for (const auto& [name, value] : symbols) {
+    if (name == "Pi") continue;  // the same constant as pi
+    const auto letter = greek_letters().find(name);
+    list += (list.empty() ? "" : ", ") + name +
+            (letter != greek_letters().end() ? " (" + letter->second + ")" : "");
+  }
+  return "; the symbols here are " + list;
 }
 
 struct Scanner {
@@ -147,7 +161,7 @@ void check_expression_cost(const std::string& text, const std::string& field,
       }
     } else if (!symbols.count(name)) {
       throw ExpressionError(field + ": cannot read expression \"" + shown +
-                            "\": undefined symbol '" + name + "'");
+                            "\": undefined symbol '" + name + "'" + known_symbols(symbols));
     }
     i = j;
   }

@@ -1,0 +1,200 @@
+#include "check/answer_reading.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <regex>
+#include <vector>
+
+#include "check/text.hpp"
+#include "core/input_error.hpp"
+#include "symbolic/unicode_notation.hpp"
+
+namespace wobble::check {
+
+namespace {
+bool opens(char c) { return c == '[' || c == '(' || c == '{'; }
+bool closes(char c) { return c == ']' || c == ')' || c == '}'; }
+
+// Splits at `sep` outside brackets (any whitespace when sep is ' ').
+std::vector<std::string> top_level(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  int depth = 0;
+  for (const char c : s) {
+    if (opens(c)) ++depth;
+    if (closes(c)) --depth;
+    const bool split = depth == 0 && (sep == ' ' ? std::isspace(static_cast<unsigned char>(c)) != 0
+                                                 : c == sep);
+    if (split) {
+      if (sep != ' ' || !trim(cur).empty()) out.push_back(trim(cur));
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  if (sep != ' ' || !trim(cur).empty()) out.push_back(trim(cur));
+  return out;
+}
+
+// The index of the bracket that closes the one at `open`, or npos.
+std::size_t matching(const std::string& s, std::size_t open) {
+  int depth = 0;
+  for (std::size_t i = open; i < s.size(); ++i) {
+    if (opens(s[i])) ++depth;
+    if (closes(s[i]) && --depth == 0) return i;
+  }
+  return std::string::npos;
+}
+
+bool wrapped(const std::string& s, char open) {
+  return s.size() >= 2 && s.front() == open && matching(s, 0) == s.size() - 1;
+}
+
+bool is_operator(char c) { return c == '+' || c == '-' || c == '*' || c == '/' || c == '^'; }
+
+// "0.7 0 -0.7" -> {"0.7", "0", "-0.7"}, but "1 - 2" and "2 * m" stay one entry: an operator
+// standing alone, ending a token or starting one (other than a sign) joins its neighbours.
+std::vector<std::string> space_separated_entries(const std::string& s) {
+  std::vector<std::string> entries;
+  for (const auto& t : top_level(s, ' ')) {
+    const bool joins = !entries.empty() &&
+                       ((t.size() == 1 && is_operator(t[0])) || t[0] == '*' || t[0] == '/' ||
+                        t[0] == '^' || t[0] == ')' || is_operator(entries.back().back()) ||
+                        entries.back().back() == '(');
+    if (joins) {
+      entries.back() += " " + t;
+    } else {
+      entries.push_back(t);
+    }
+  }
+  return entries;
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + items[i];
+  return out;
+}
+
+// "[a b c]" -> "[a, b, c]", "[[a b] [c d]]" -> "[[a, b], [c, d]]".
+std::string bracket_group(const std::string& group) {
+  const std::string inside = group.substr(1, group.size() - 2);
+  std::vector<std::string> items = top_level(inside, ',');
+  if (items.size() == 1) items = space_separated_entries(inside);
+  for (auto& item : items) {
+    if (wrapped(item, '[')) item = bracket_group(item);
+  }
+  return "[" + join(items) + "]";
+}
+
+// The value's layout in reading form (see the header).
+std::string layout(const std::string& value) {
+  if (value.empty()) return value;
+  if (wrapped(value, '(') && top_level(value.substr(1, value.size() - 2), ',').size() > 1) {
+    return bracket_group("[" + value.substr(1, value.size() - 2) + "]");
+  }
+  const auto groups = top_level(value, ' ');
+  const bool all_groups = std::all_of(groups.begin(), groups.end(), [](const std::string& g) {
+    return wrapped(g, '[') || wrapped(g, '(');
+  });
+  if (groups.size() > 1 && all_groups) {  // matrix rows as printed
+    std::vector<std::string> rows;
+    for (auto g : groups) {
+      if (g.front() == '(') g = "[" + g.substr(1, g.size() - 2) + "]";
+      rows.push_back(bracket_group(g));
+    }
+    return "[" + join(rows) + "]";
+  }
+  if (wrapped(value, '[')) return bracket_group(value);
+  if (const auto items = top_level(value, ','); items.size() > 1) {  // "5, 7, 10"
+    std::vector<std::string> rows;
+    for (const auto& i : items) rows.push_back(wrapped(i, '[') ? bracket_group(i) : i);
+    return "[" + join(rows) + "]";
+  }
+  return value;
+}
+
+// ASCII, one line, a numeric exponent's sign in parentheses.
+std::string prepared(const std::string& typed) {
+  std::string s = sym::to_ascii(typed);
+  for (char& c : s) {
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  }
+  static const std::regex signed_exponent(R"(\^\s*([+-])\s*([0-9]+(\.[0-9]+)?))");
+  return trim(std::regex_replace(s, signed_exponent, "^($1$2)"));
+}
+
+// The value and the unit after it ("" if none): the first split whose right side is a unit.
+std::pair<std::string, std::string> split_unit(const std::string& s) {
+  for (std::size_t sp = s.find(' '); sp != std::string::npos; sp = s.find(' ', sp + 1)) {
+    const std::string right = trim(s.substr(sp + 1));
+    if (right.empty() || right[0] == '*' || right[0] == '/') continue;
+    if (is_unit(right)) return {trim(s.substr(0, sp)), right};
+  }
+  return {s, ""};
+}
+
+bool has_symbols(const GiNaC::ex& e) { return !GiNaC::is_a<GiNaC::numeric>(GiNaC::evalf(e)); }
+}  // namespace
+
+std::string reading_form(const std::string& typed) {
+  const auto [value, unit] = split_unit(prepared(typed));
+  return layout(value) + (unit.empty() ? "" : " " + unit);
+}
+
+ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
+                       const std::string& field) {
+  const std::string text = prepared(typed);
+  if (text.empty()) {
+    throw InputError(field +
+                     ": empty; type a number (with a unit if you like), a vector [x, y, "
+                     "z], a matrix [[..], [..], [..]] or an expression");
+  }
+  auto [value, unit] = split_unit(text);
+  ReadAnswer p;
+  try {
+    p.value = sym::parse_value_text(layout(value), table, field);
+  } catch (const InputError& e) {
+    // "omega * m" is an expression, not omega in metres.
+    if (!unit.empty()) {
+      try {
+        p.value = sym::parse_value_text(layout(text), table, field);
+        unit.clear();
+      } catch (const InputError&) {
+      }
+    }
+    if (unit.empty() && p.value.entries.empty()) {
+      // "0.16 parsecs": a value and something that is not a unit; say so, not "cannot read".
+      if (const auto sp = value.find(' '); sp != std::string::npos) {
+        bool left_reads = true;
+        try {
+          (void)sym::parse_value_text(layout(trim(value.substr(0, sp))), table, field);
+        } catch (const InputError&) {
+          left_reads = false;
+        }
+        if (left_reads) (void)parse_unit(trim(value.substr(sp + 1)), field);  // throws its error
+      }
+      const bool glued = !value.empty() && std::isdigit(static_cast<unsigned char>(value[0])) &&
+                         value.find(' ') == std::string::npos &&
+                         value.find_first_of("*/+-^()") == std::string::npos &&
+                         std::any_of(value.begin(), value.end(), [](char c) {
+                           return std::isalpha(static_cast<unsigned char>(c));
+                         });
+      const bool refused = std::string(e.what()).find("is refused") != std::string::npos;
+      throw InputError(std::string(e.what()) +
+                       (glued && !refused
+                            ? " (put a space between a number and its unit: '0.21 kg m^2')"
+                            : ""));
+    }
+    if (p.value.entries.empty()) throw;
+  }
+  if (!unit.empty()) p.unit = parse_unit(unit, field);
+  for (const auto& e : p.value.entries) p.symbolic = p.symbolic || has_symbols(e);
+  if (p.symbolic && p.unit) {
+    throw InputError(field + ": an expression in the problem's symbols is in SI already; drop "
+                             "the unit '" + unit + "'");
+  }
+  return p;
+}
+
+}  // namespace wobble::check

@@ -1,0 +1,37 @@
+#pragma once
+/// @file
+/// Reading a student's answer: the text as typed or pasted, in whatever notation a key printed
+/// it, to a value (number, vector, matrix or expression) and an optional unit.
+///
+/// Accepted, besides wobble's reading form ("[x, y, z]", "[[..], [..], [..]]", GiNaC syntax):
+/// - the terminal's Unicode (symbolic/unicode_notation.hpp): "m·R²/4", "ω·cos(α)", "√2/2",
+///   "7.2×10⁻⁴", "15°", "kg m²";
+/// - vectors as printed "(2.588, 0, 19.32)", as rows "[2.588 0 19.32]", or bare "5, 7, 10";
+/// - matrices as printed, row by row ("[ 10 0 0 ] [ 0 6 1 ] [ 0 1 6 ]", on one line or several);
+/// - a numeric exponent with its sign, "10^-4" (read as 10^(-4), as a student means it);
+/// - a unit after the value, "0.00072 kg m²", "(0, 0, 9.66) rad/s" (units.hpp).
+/// A number and its unit need a space ("0.21 kg", not "0.21kg"), since "2m" would be ambiguous.
+#include <optional>
+#include <string>
+
+#include "check/units.hpp"
+#include "symbolic/value_text.hpp"
+
+namespace wobble::check {
+
+struct ReadAnswer {
+  sym::ValueText value;
+  std::optional<Unit> unit;
+  bool symbolic = false;  ///< has the problem's symbols (then there is no unit)
+};
+
+/// The answer in wobble's reading form, the unit still attached: "(1, 0, 0) rad/s" ->
+/// "[1, 0, 0] rad/s". Never throws; what it cannot rearrange it leaves for the parser.
+std::string reading_form(const std::string& typed);
+
+/// @throws InputError naming `field` for an empty or unreadable answer or unit, one line a
+///   student can act on (never a parser's jargon).
+ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
+                       const std::string& field);
+
+}  // namespace wobble::check

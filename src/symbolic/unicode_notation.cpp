@@ -1,0 +1,174 @@
+#include "symbolic/unicode_notation.hpp"
+
+#include <cctype>
+#include <utility>
+#include <vector>
+
+namespace wobble::sym {
+
+namespace {
+bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+
+const char* const kSuperscripts[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+const char* const kSubscripts[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
+constexpr const char* kCombiningDot = "\u0307";
+
+std::string superscript(const std::string& digits) {
+  std::string out;
+  for (char c : digits) out += c == '-' ? "⁻" : kSuperscripts[c - '0'];
+  return out;
+}
+
+// "theta0" -> "θ0", "phidot0" -> "φ̇0", "psidot" -> "ψ̇": a Greek name, an optional "dot" (a time
+// derivative) and digits; any other word stays as it is.
+std::string greek_word(const std::string& word) {
+  if (const auto it = greek_letters().find(word); it != greek_letters().end()) return it->second;
+  std::size_t digits = word.size();
+  while (digits > 0 && is_digit(word[digits - 1])) --digits;
+  std::string stem = word.substr(0, digits);
+  const bool dot = stem.size() > 3 && stem.compare(stem.size() - 3, 3, "dot") == 0;
+  if (dot) stem.resize(stem.size() - 3);
+  const auto it = greek_letters().find(stem);
+  if (it == greek_letters().end() || (!dot && digits == word.size())) return word;
+  return it->second + (dot ? kCombiningDot : "") + word.substr(digits);
+}
+
+// Unicode spellings read as ASCII, longest first where one is a prefix of another. Greek
+// letters come from greek_letters(); superscripts, subscripts, √ and the combining dot are
+// handled by to_ascii itself.
+const std::vector<std::pair<std::string, std::string>>& replacements() {
+  static const std::vector<std::pair<std::string, std::string>> r = [] {
+    std::vector<std::pair<std::string, std::string>> v{
+        {"·", "*"}, {"×", "*"}, {"⋅", "*"}, {"∙", "*"}, {"−", "-"}, {"–", "-"},
+        {"°", " deg"}, {"\u00a0", " "}, {"\u2009", " "}, {"\u202f", " "}, {"µ", "mu"}};
+    for (const auto& [name, letter] : greek_letters()) {
+      if (name != "Pi") v.emplace_back(letter, name);  // π reads as pi
+    }
+    return v;
+  }();
+  return r;
+}
+
+// Which of `table` starts text at i; its index, or -1.
+int match_at(const std::string& text, std::size_t i, const char* const* table, int n) {
+  for (int k = 0; k < n; ++k) {
+    const std::string s = table[k];
+    if (text.compare(i, s.size(), s) == 0) return k;
+  }
+  return -1;
+}
+}  // namespace
+
+const std::map<std::string, std::string>& greek_letters() {
+  static const std::map<std::string, std::string> g{
+      {"alpha", "α"}, {"beta", "β"},  {"gamma", "γ"}, {"delta", "δ"},  {"epsilon", "ε"},
+      {"zeta", "ζ"},  {"eta", "η"},   {"theta", "θ"}, {"kappa", "κ"},  {"lambda", "λ"},
+      {"mu", "μ"},    {"nu", "ν"},    {"xi", "ξ"},    {"rho", "ρ"},    {"sigma", "σ"},
+      {"tau", "τ"},   {"phi", "φ"},   {"chi", "χ"},   {"psi", "ψ"},    {"omega", "ω"},
+      {"Gamma", "Γ"}, {"Delta", "Δ"}, {"Theta", "Θ"}, {"Lambda", "Λ"}, {"Sigma", "Σ"},
+      {"Phi", "Φ"},   {"Psi", "Ψ"},   {"Omega", "Ω"}, {"Pi", "π"},     {"pi", "π"}};
+  return g;
+}
+
+std::string to_unicode(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    const char c = s[i];
+    if (std::isalpha(static_cast<unsigned char>(c))) {
+      std::size_t j = i;
+      while (j < s.size() && is_name_char(s[j])) ++j;
+      const std::string word = s.substr(i, j - i);
+      out += word == "sqrt" ? "√" : greek_word(word);
+      i = j;
+    } else if (c == '^' && i + 1 < s.size() && is_digit(s[i + 1])) {
+      std::size_t j = i + 1;
+      while (j < s.size() && is_digit(s[j])) ++j;
+      out += superscript(s.substr(i + 1, j - i - 1));
+      i = j;
+    } else if (c == '*') {
+      out += "·";
+      ++i;
+    } else {
+      out += c;
+      ++i;
+    }
+  }
+  return out;
+}
+
+std::string to_ascii(const std::string& text) {
+  // First pass: everything but √, which becomes a marker (its operand is only known after the
+  // letters around it are read).
+  constexpr char kRoot = '\x01';
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (static_cast<unsigned char>(text[i]) < 0x80) {
+      out += text[i++];
+      continue;
+    }
+    if (text.compare(i, 3, "√") == 0) {
+      out += kRoot;
+      i += 3;
+      continue;
+    }
+    if (text.compare(i, 2, kCombiningDot) == 0) {  // θ̇: the name gets "dot" before its digits
+      out += "dot";
+      i += 2;
+      continue;
+    }
+    // A run of superscripts, optionally signed: an exponent.
+    if (match_at(text, i, kSuperscripts, 10) >= 0 || text.compare(i, 3, "⁻") == 0 ||
+        text.compare(i, 3, "⁺") == 0) {
+      std::string digits;
+      bool negative = false;
+      for (;;) {
+        if (text.compare(i, 3, "⁻") == 0 || text.compare(i, 3, "⁺") == 0) {
+          negative = negative || text.compare(i, 3, "⁻") == 0;
+          i += 3;
+          continue;
+        }
+        const int d = match_at(text, i, kSuperscripts, 10);
+        if (d < 0) break;
+        digits += static_cast<char>('0' + d);
+        i += std::string(kSuperscripts[d]).size();
+      }
+      out += negative ? "^(-" + digits + ")" : "^" + digits;
+      continue;
+    }
+    if (const int d = match_at(text, i, kSubscripts, 10); d >= 0) {
+      out += static_cast<char>('0' + d);
+      i += std::string(kSubscripts[d]).size();
+      continue;
+    }
+    bool replaced = false;
+    for (const auto& [from, to] : replacements()) {
+      if (text.compare(i, from.size(), from) == 0) {
+        out += to;
+        i += from.size();
+        replaced = true;
+        break;
+      }
+    }
+    if (!replaced) out += text[i++];  // unknown: left for the expression guard to name
+  }
+  // Second pass: √( -> sqrt(, √x -> sqrt(x) for a number or a name.
+  std::string result;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (out[i] != kRoot) {
+      result += out[i];
+      continue;
+    }
+    std::size_t j = i + 1;
+    if (j < out.size() && out[j] == '(') {
+      result += "sqrt";
+      continue;
+    }
+    while (j < out.size() && (is_name_char(out[j]) || out[j] == '.')) ++j;
+    result += "sqrt(" + out.substr(i + 1, j - i - 1) + ")";
+    i = j - 1;
+  }
+  return result;
+}
+
+}  // namespace wobble::sym

@@ -1,0 +1,28 @@
+#pragma once
+/// @file
+/// The terminal's spelling of expressions, both ways: what a text key prints and what a student
+/// pastes back.
+///
+/// Printing (to_unicode) turns GiNaC text into the terminal's notation: `*` -> `·`, `sqrt(` ->
+/// `√(`, `^2` -> `²`, Greek names -> letters (`alpha` -> `α`, `Pi` -> `π`), a name with `dot`
+/// and digits -> the letter with a combining dot above (`phidot0` -> `φ̇0`).
+/// Reading (to_ascii) undoes every one of these and accepts the common variants a student types
+/// (`×` and `⋅` for `*`, `−` for `-`, `√2` for `sqrt(2)`, superscripts with a sign `⁻⁴`, `°` for
+/// degrees, `µ`/`μ`), so that whatever wobble prints reads back as what it meant. Characters it
+/// does not know are left in place, for the expression guard to refuse by name.
+#include <map>
+#include <string>
+
+namespace wobble::sym {
+
+/// Greek letter names and their Unicode letters ("alpha" -> "α"; "pi" and "Pi" -> "π").
+const std::map<std::string, std::string>& greek_letters();
+
+/// GiNaC text made pleasant for a terminal: m*a^2 -> m·a², sqrt( -> √(, alpha -> α, Pi -> π.
+std::string to_unicode(const std::string& ginac_text);
+
+/// The inverse of to_unicode, and the Unicode a student types: "ω·√(3·cos(α)² + 1)/2" ->
+/// "omega*sqrt(3*cos(alpha)^2 + 1)/2", "7.2×10⁻⁴" -> "7.2*10^(-4)", "15°" -> "15 deg".
+std::string to_ascii(const std::string& unicode_text);
+
+}  // namespace wobble::sym
