@@ -24,7 +24,7 @@ const std::map<std::string, Named>& names() {
       {"h", {3600.0, {0, 0, 1}, false}},      {"rad", {1.0, {0, 0, 0}, true}},
       {"deg", {M_PI / 180, {0, 0, 0}, true}}, {"rev", {2 * M_PI, {0, 0, 0}, true}},
       {"J", {1.0, {1, 2, -2}, false}},        {"N", {1.0, {1, 1, -2}, false}},
-      {"Hz", {1.0, {0, 0, -1}, false}},       {"rpm", {2 * M_PI / 60, {0, 0, -1}, true}},
+      {"Hz", {2 * M_PI, {0, 0, -1}, true}},       {"rpm", {2 * M_PI / 60, {0, 0, -1}, true}},
   };
   return n;
 }

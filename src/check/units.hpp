@@ -4,9 +4,14 @@
 ///
 /// A unit is a product of names with integer powers, '/' putting what follows in the
 /// denominator: "kg m^2", "kg*m^2/s", "rad/s", "m/s^2", "deg", "rev/s", "1/s" (or "s^-1").
-/// Names: kg, g; m, cm, mm;
-/// s, ms, min, h; rad, deg, rev (angles: dimensionless, but degrees and revolutions convert);
-/// J, N, Hz, rpm. An unknown name, a missing or non-integer power is an error.
+/// Names: kg, g; m, cm, mm; s, ms, min, h; rad, deg, rev; J, N, Hz, rpm. An unknown name, a
+/// missing or non-integer power is an error.
+///
+/// Radians, one rule everywhere: an angle is a pure number, so rad/s and 1/s are the same unit
+/// and a radian converts as 1; a degree is pi/180 and a revolution 2 pi. Hz and rpm count
+/// revolutions (cycles) per time: 1 Hz = 1 rev/s = 2 pi rad/s = 2 pi 1/s, whatever the rate
+/// (a precession rate, a spin, a growth rate). An angle unit is refused only where the key is a
+/// pure number that is no angle (k^2, a direction cosine): judge.cpp.
 #include <array>
 #include <string>
 
@@ -15,7 +20,7 @@ namespace wobble::check {
 struct Unit {
   double to_si = 1.0;               ///< multiply a value in this unit by this to get SI
   std::array<int, 3> dim{0, 0, 0};  ///< powers of kg, m, s
-  bool angle = false;               ///< contains rad, deg or rev (or rpm)
+  bool angle = false;               ///< contains rad, deg, rev, Hz or rpm
   std::string text;
   bool same_dimension(const Unit& o) const { return dim == o.dim; }
   /// "mass x length^2", for messages.

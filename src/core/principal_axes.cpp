@@ -42,6 +42,15 @@ Vec3 canonical_sign(const Vec3& v) {
   return v;
 }
 
+Degeneracy degeneracy_of(const Vec3& m, double scale) {
+  const double tolerance = kDegeneracyEps * kEps * scale;
+  const bool eq12 = m[1] - m[0] <= tolerance;
+  const bool eq23 = m[2] - m[1] <= tolerance;
+  if (eq12 && eq23) return Degeneracy::all;
+  if (eq12) return Degeneracy::pair12;
+  return eq23 ? Degeneracy::pair23 : Degeneracy::none;
+}
+
 PrincipalAxes principal_axes(const Mat3& I) {
   if (!I.allFinite()) throw std::invalid_argument("principal_axes: tensor has a non-finite entry");
   const Mat3 sym = I.selfadjointView<Eigen::Lower>();
@@ -55,8 +64,9 @@ PrincipalAxes principal_axes(const Mat3& I) {
   const Mat3 v = solver.eigenvectors();
   const double scale = std::max(std::abs(out.moments[2]), sym.cwiseAbs().maxCoeff());
   out.degeneracy_tolerance = kDegeneracyEps * kEps * scale;
-  const bool eq12 = out.moments[1] - out.moments[0] <= out.degeneracy_tolerance;
-  const bool eq23 = out.moments[2] - out.moments[1] <= out.degeneracy_tolerance;
+  const Degeneracy d = degeneracy_of(out.moments, scale);
+  const bool eq12 = d == Degeneracy::all || d == Degeneracy::pair12;
+  const bool eq23 = d == Degeneracy::all || d == Degeneracy::pair23;
 
   if (eq12 && eq23) {
     out.degeneracy = Degeneracy::all;

@@ -40,6 +40,10 @@ inline constexpr double kDegeneracyEps = 16.0;
 /// Relative tolerance for deciding the largest-magnitude component of an axis (see file comment).
 inline constexpr double kSignTieTolerance = 1e-10;
 
+/// Which of the ascending moments are equal by the rule above: closer than kDegeneracyEps * eps *
+/// scale, scale the largest magnitude of the tensor. The one rule for the key and for `check`.
+Degeneracy degeneracy_of(const Vec3& ascending_moments, double scale);
+
 /// Principal moments and axes of the symmetric tensor I (only its lower triangle is read).
 /// @throws std::invalid_argument if I has a non-finite entry.
 PrincipalAxes principal_axes(const Mat3& I);

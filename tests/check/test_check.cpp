@@ -360,7 +360,8 @@ TEST_CASE("every closed form of every problem: other forms of it right, look-ali
         INFO("look-alike: " << lookalike_text);
         const bool all_zero = std::all_of(a.value.data.begin(), a.value.data.end(),
                                           [](double x) { return x == 0.0; });
-        if (all_zero) continue;
+        // Axes are judged by direction, so a look-alike that only scales them is right.
+        if (all_zero || a.name.rfind("principal_axes", 0) == 0) continue;
         REQUIRE_FALSE(f.check(a.name, lookalike_text).correct);
         ++lookalike;
       }

@@ -406,8 +406,9 @@ std::vector<Row> catalog() {
        {"check", "flying-plate", "a", "--name", "I0", "--answer", "2^m/0^m/m"},
        2,
        {"--answer", "no value at these values", "division by zero"}},
-      {"a signed exponent without parentheses (GiNaC took the rest of the sum into it)",
-       {"check", "flying-plate", "a", "--name", "I0", "--answer", "m*R^2/4+2^+4+22^423"},
+      {"a signed symbolic exponent without parentheses (GiNaC took the rest of the sum into it;"
+       " a signed number, 10^-4, reads as 10^(-4))",
+       {"check", "flying-plate", "a", "--name", "I0", "--answer", "m*R^2/4+2^-m+22^423"},
        2,
        {"is refused", "a signed exponent must be in parentheses"}},
       {"a control character in an expression",

@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Judging principal axes by what they mean, not by their entries.
+///
+/// A student lists three axis vectors: as the rows or the columns of a matrix, in any order,
+/// each up to sign and length. They are right when each is an eigenvector of the key's tensor
+/// (its direction within `angle_tolerance`, the sine of the angle, of the key's axis or, for a
+/// degenerate pair, of the pair's plane), every principal direction is there once, and the three
+/// are perpendicular (|cos| within the same tolerance). Degeneracy is decided by core's rule
+/// (principal_axes.hpp, degeneracy_of) on the key's moments: the key's own decision. What is
+/// wrong is said in words: which vector is no axis, which axis is missing, which two are not
+/// perpendicular.
+#include <string>
+#include <vector>
+
+#include "core/inertia.hpp"
+
+namespace wobble::check {
+
+struct AxesFinding {
+  bool correct = false;
+  std::string how;                    ///< "as columns" or "as rows", when correct
+  std::vector<std::string> problems;  ///< one line each, when wrong
+};
+
+/// `typed` is the student's 3x3 matrix, row-major; `key_axes` has the key's axes as columns,
+/// `key_moments` ascending.
+AxesFinding judge_axes(const std::vector<double>& typed, const Mat3& key_axes,
+                       const Vec3& key_moments, double angle_tolerance);
+
+}  // namespace wobble::check

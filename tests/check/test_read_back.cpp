@@ -1,0 +1,306 @@
+// Whatever a key prints, `check` reads back and judges right: generated over the whole catalog,
+// every answer in every printed form. And the verdicts that were wrong: Hz on a rate, radians
+// against 1/s, a signed rate given as its size, principal axes judged by meaning.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "check/answer_reading.hpp"
+#include "check/judge.hpp"
+#include "problem/load.hpp"
+#include "problem/values.hpp"
+#include "render/common.hpp"
+#include "solvers/solve.hpp"
+#include "symbolic/unicode_notation.hpp"
+#include "temp_files.hpp"
+
+using namespace wobble;
+using namespace wobble::check;
+
+namespace {
+struct Fixture {
+  Problem problem;
+  sym::Values values;
+  Key key;
+  sym::SymbolTable table;
+  explicit Fixture(const std::string& id)
+      : problem(find_problem(id)),
+        values(parameter_values(problem, {})),
+        key(solve(problem, values)),
+        table(problem.symbol_table()) {}
+  const Answer& answer(const std::string& name) const {
+    for (const auto& p : key.parts) {
+      for (const auto& a : p.answers) {
+        if (a.name == name) return a;
+      }
+    }
+    throw std::logic_error("no answer " + name);
+  }
+  Verdict check(const std::string& name, const std::string& text, Options o = {}) const {
+    return judge({key, table, values}, answer(name), text, o);
+  }
+};
+
+// The numeric line exactly as the text key prints it (matrices on several lines, indented).
+std::string printed_value(const Answer& a) {
+  return detail::value_text(a.value, "        ") + detail::unit_text(a.unit);
+}
+
+// Vectors and matrices as rows of numbers with spaces, "[x y z]": how a student copies a row.
+std::string spaced_rows(const Answer& a) {
+  const auto& v = a.value;
+  const auto row = [&](std::size_t r) {
+    std::string s = "[";
+    for (std::size_t c = 0; c < v.cols; ++c) s += (c ? " " : "") + format_number(v.at(r, c));
+    return s + "]";
+  };
+  if (v.shape == Value::Shape::vector) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < v.data.size(); ++i) s += (i ? " " : "") + format_number(v.data[i]);
+    return s + "] " + a.unit;
+  }
+  std::string s;
+  for (std::size_t r = 0; r < v.rows; ++r) s += (r ? " " : "") + row(r);
+  return s + " " + a.unit;
+}
+}  // namespace
+
+TEST_CASE("every printed form of every answer of every problem reads back as correct") {
+  int forms = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        std::vector<std::string> texts{printed_value(a)};
+        if (!a.symbolic.empty()) {
+          texts.push_back(a.symbolic);                  // the JSON's and Markdown's symbolic text
+          texts.push_back(sym::to_unicode(a.symbolic));  // the text key's line
+        }
+        if (a.value.shape != Value::Shape::scalar) texts.push_back(spaced_rows(a));
+        for (const auto& text : texts) {
+          INFO(p.id << " " << a.name << ": " << text);
+          const Verdict v = f.check(a.name, text);
+          INFO(v.line);
+          REQUIRE(v.correct);
+          ++forms;
+        }
+      }
+    }
+  }
+  REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to four forms
+}
+
+TEST_CASE("the terminal's notation and a student's variants of it read as wobble's form") {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"(2.588, 0, 19.32)", "[2.588, 0, 19.32]"},
+      {"[2.588 0 19.32]", "[2.588, 0, 19.32]"},
+      {"(0, 0, 9.66) rad/s", "[0, 0, 9.66] rad/s"},
+      {"0.00072 kg m²", "0.00072 kg m^2"},
+      {"15°", "15 deg"},
+      {"α", "alpha"},
+      {"m·R²/4", "m*R^2/4"},
+      {"7.2*10^-4", "7.2*10^(-4)"},
+      {"7.2×10⁻⁴", "7.2*10^(-4)"},
+      {"5, 7, 10", "[5, 7, 10]"},
+      {"ω·√(3·cos(α)² + 1)/2", "omega*sqrt(3*cos(alpha)^2 + 1)/2"},
+      {"√2/2", "sqrt(2)/2"},
+      {"θ̇0", "thetadot0"},
+      {"φ̇", "phidot"},
+      {"I₁", "I1"},
+      {"−4.83", "-4.83"},
+      {"[ 10 0 0 ]\n  [  0 6 1 ]\n  [  0 1 6 ] kg m²", "[[10, 0, 0], [0, 6, 1], [0, 1, 6]] kg m^2"},
+      {"[[1 0 0] [0 1 0] [0 0 1]]", "[[1, 0, 0], [0, 1, 0], [0, 0, 1]]"},
+      {"[1 - 2 0 m * a]", "[1 - 2, 0, m * a]"},
+      {"[0.7 0 -0.7]", "[0.7, 0, -0.7]"},
+      {"π/6", "pi/6"},
+  };
+  for (const auto& [typed, form] : cases) {
+    INFO(typed);
+    REQUIRE(reading_form(typed) == form);
+  }
+}
+
+TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist") {
+  const Fixture plate("flying-plate");
+  const auto message = [&](const std::string& text) {
+    try {
+      (void)plate.check("I0", text);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  for (const std::string bad : {"(m+R, 2", "m*R^2)", "2 m R", "m*R^^2", "[1, 2"}) {
+    INFO(bad);
+    const std::string m = message(bad);
+    REQUIRE_THAT(m, !Catch::Contains("expected") && !Catch::Contains("got:") &&
+                        !Catch::Contains("line 0") && Catch::StartsWith("--answer"));
+  }
+  // An undefined symbol names the ones that exist, with their letters.
+  REQUIRE_THAT(message("w*R"), Catch::Contains("undefined symbol 'w'") &&
+                                   Catch::Contains("omega (ω)") && Catch::Contains("alpha (α)"));
+}
+
+TEST_CASE("Hz, rev/s and rpm on an angular rate count turns: 1 Hz = 2 pi rad/s, every rate") {
+  int rates = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.unit != "rad/s" && a.unit != "1/s") continue;
+        if (a.value.shape != Value::Shape::scalar || a.value.data[0] == 0.0) continue;
+        const double w = a.value.data[0];
+        INFO(p.id << " " << a.name << " = " << w << " " << a.unit);
+        REQUIRE(f.check(a.name, fmt::format("{:.10g} Hz", w / (2 * M_PI))).correct);
+        REQUIRE(f.check(a.name, fmt::format("{:.10g} rev/s", w / (2 * M_PI))).correct);
+        REQUIRE(f.check(a.name, fmt::format("{:.10g} rpm", w * 60 / (2 * M_PI))).correct);
+        // rad/s and 1/s are one unit (a radian is a pure number).
+        REQUIRE(f.check(a.name, fmt::format("{:.10g} rad/s", w)).correct);
+        REQUIRE(f.check(a.name, fmt::format("{:.10g} 1/s", w)).correct);
+        // The number in rad/s labelled Hz: wrong, and said why.
+        const Verdict v = f.check(a.name, fmt::format("{:.10g} Hz", w));
+        REQUIRE_FALSE(v.correct);
+        REQUIRE_THAT(v.feedback.at(0), Catch::Contains("1 Hz = 2 pi rad/s"));
+        ++rates;
+      }
+    }
+  }
+  REQUIRE(rates >= 15);  // the catalog has 16 nonzero scalar rates
+  // The issue's own case, to the digits quoted.
+  const Fixture plate("flying-plate");
+  REQUIRE(plate.check("Omega_body_rate", "1.5373 Hz").correct);
+  REQUIRE_FALSE(plate.check("Omega_body_rate", "9.659 Hz").correct);
+  // An angle unit where the key is a pure number that is no angle: the wrong dimension.
+  const Fixture top("asymmetric-top");
+  const Verdict k = top.check("k2", fmt::format("{} deg", top.answer("k2").value.data[0]));
+  REQUIRE_FALSE(k.correct);
+  REQUIRE_THAT(k.line, Catch::Contains("wrong dimension"));
+}
+
+TEST_CASE("a signed rate given as its size: the sign is named, with what it means") {
+  const Fixture rect("rect-solid");
+  const double rate = rect.answer("Omega_body_rate").value.data[0];
+  REQUIRE(rate < 0);  // a prolate solid precesses against the spin
+  const Verdict v = rect.check("Omega_body_rate", fmt::format("{:.3g}", -rate));
+  REQUIRE_FALSE(v.correct);
+  REQUIRE_THAT(v.feedback.at(0), Catch::Contains("the size is right but not the sign") &&
+                                     Catch::Contains("against the spin"));
+  const Fixture plate("flying-plate");
+  const double up = plate.answer("Omega_body_rate").value.data[0];
+  REQUIRE_THAT(plate.check("Omega_body_rate", fmt::format("{:.4g}", -up)).feedback.at(0),
+               Catch::Contains("with the spin"));
+}
+
+TEST_CASE("asymmetric tops: the key holds the modulus k the question asks for, k^2 = k2") {
+  for (const std::string id : {"asymmetric-top", "tennis-racket"}) {
+    const Fixture f(id);
+    const double k = f.answer("k").value.data[0], k2 = f.answer("k2").value.data[0];
+    INFO(id);
+    // k is sqrt(k2) evaluated once from the exact form: within an ulp or two of the sqrt.
+    REQUIRE_THAT(k, Catch::Matchers::WithinULP(std::sqrt(k2), 2));
+    REQUIRE(f.check("k", fmt::format("{:.6g}", k)).correct);
+  }
+}
+
+namespace {
+// Every principal-axes answer in the catalog, as a 3x3 row-major list whose columns are axes.
+std::vector<double> turned(const std::vector<double>& m, const std::array<int, 3>& order,
+                           const std::array<double, 3>& scale, bool transpose) {
+  std::vector<double> out(9);
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      const auto src = static_cast<std::size_t>(3 * r + order[static_cast<std::size_t>(c)]);
+      const double x = m[src] * scale[static_cast<std::size_t>(c)];
+      out[static_cast<std::size_t>(transpose ? 3 * c + r : 3 * r + c)] = x;
+    }
+  }
+  return out;
+}
+std::string matrix_text(const std::vector<double>& m) {
+  return fmt::format("[[{:.12g}, {:.12g}, {:.12g}], [{:.12g}, {:.12g}, {:.12g}], [{:.12g}, "
+                     "{:.12g}, {:.12g}]]",
+                     m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]);
+}
+}  // namespace
+
+TEST_CASE("principal axes by meaning: rows or columns, any order, any length, each up to sign") {
+  int seen = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.name.rfind("principal_axes", 0) != 0) continue;
+        for (const bool transpose : {false, true}) {
+          const auto m = turned(a.value.data, {2, 0, 1}, {-3.0, 0.5, 7.0}, transpose);
+          INFO(p.id << " " << a.name << " " << matrix_text(m));
+          REQUIRE(f.check(a.name, matrix_text(m)).correct);
+        }
+        ++seen;
+      }
+    }
+  }
+  REQUIRE(seen >= 6);
+  // What is wrong, in words. four-masses: e1 = (1, 1, 0)/√2, e2 = z, e3 = (1, −1, 0)/√2.
+  const Fixture four("four-masses");
+  const Verdict rows = four.check("principal_axes", "[0, 0, 1], [1, 1, 0], [1, -1, 0]");
+  REQUIRE(rows.correct);
+  REQUIRE_THAT(rows.line, Catch::Contains("as rows"));
+  const Verdict columns = four.check("principal_axes", "[[0, 1, 1], [0, 1, -1], [5, 0, 0]]");
+  REQUIRE(columns.correct);
+  REQUIRE_THAT(columns.line, Catch::Contains("as columns"));
+  const Verdict not_axis = four.check("principal_axes", "[[1, 0, 1], [0, 0, -1], [0, 1, 0]]");
+  REQUIRE_FALSE(not_axis.correct);
+  REQUIRE_THAT(not_axis.feedback.at(0), Catch::Contains("is not a principal axis") &&
+                                            Catch::Contains("45°"));
+  const Verdict twice = four.check("principal_axes", "[0, 0, 1], [1, 1, 0], [2, 2, 0]");
+  REQUIRE_FALSE(twice.correct);
+  REQUIRE_THAT(twice.feedback.at(0), Catch::Contains("same axis") && Catch::Contains("missing"));
+}
+
+namespace {
+std::string tensor_problem(const std::string& id, const std::string& tensor) {
+  return wobble::test::write_file("read_back/" + id + ".toml", "id = \"" + id + R"TOML("
+title = "t"
+solver = "inertia"
+statement = "s"
+
+[[parameters]]
+name = "k"
+unit = "kg m^2"
+default = 1
+range = "(0, inf)"
+
+[body]
+tensor = )TOML" + tensor + R"TOML(
+
+[[parts]]
+id = "a"
+question = "q"
+answers = ["principal_moments", "principal_axes"]
+)TOML")
+      .string();
+}
+}  // namespace
+
+TEST_CASE("degenerate or not is the key's own decision, whatever the tolerance") {
+  // A turn by 45 degrees in the x-y plane: principal only when the x-y moments are equal.
+  const std::string turned45 = "[[1, 1, 0], [1, -1, 0], [0, 0, 1]]";
+  const Fixture exact(tensor_problem("pair-exact", R"([["2*k", "0", "0"], ["0", "2*k", "0"], ["0", "0", "3*k"]])"));
+  REQUIRE(exact.check("principal_axes", turned45).correct);
+  for (const std::string gap : {"1e-12", "1e-9"}) {
+    const Fixture near(tensor_problem("pair-" + gap, "[[\"2*k\", \"0\", \"0\"], [\"0\", \"2*k*(1+" +
+                                                         gap + ")\", \"0\"], [\"0\", \"0\", \"3*k\"]]"));
+    for (const double tolerance : {1e-9, 1e-2}) {
+      INFO("gap " << gap << ", tolerance " << tolerance);
+      Options o;
+      o.rel_tol = tolerance;
+      o.rel_tol_given = true;
+      const Verdict v = near.check("principal_axes", turned45, o);
+      REQUIRE_FALSE(v.correct);
+      REQUIRE_THAT(v.feedback.at(0), Catch::Contains("not a principal axis"));
+    }
+  }
+}
