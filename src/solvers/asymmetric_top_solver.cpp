@@ -258,11 +258,20 @@ Computed quantity(const Asym& t, const std::string& q) {
                          "Angular momentum:"});
     return out;
   }
-  if (q == "k2" || q == "kc2" || q == "period" || q == "flip_interval" ||
+  if (q == "k" || q == "k2" || q == "kc2" || q == "period" || q == "flip_interval" ||
       q == "period_small_oscillation") {
     require_period(t, q);
     const Elliptic& e = elliptic(t);
     const bool elliptic_numeric = numeric.kind() == ExactFreeMotion::Kind::elliptic;
+    if (q == "k") {
+      Computed out{exact_scalar(q, GiNaC::sqrt(e.k2), "", t.exact), elliptic_steps(t)};
+      if (elliptic_numeric) {
+        check_routes_agree(out.answer.value.data[0], std::sqrt(1.0 - numeric.kc2()), 1.0, 64, q);
+      }
+      out.answer.notes.push_back(
+          "The modulus of Jacobi's functions sn(u, k), cn(u, k), dn(u, k); k² is k2 below.");
+      return out;
+    }
     if (q == "k2" || q == "kc2") {
       Computed out{exact_scalar(q, q == "k2" ? e.k2 : e.kc2, "", t.exact), elliptic_steps(t)};
       if (elliptic_numeric && q == "kc2")

@@ -14,7 +14,7 @@
 ///     rate_axis1..3           sqrt|Omega_i Omega_j|: the small-oscillation frequency where
 ///                             stable (product > 0), the growth rate where not      rad/s or 1/s
 ///     energy, L_magnitude     T and |L| from w(0)                                  J, kg m^2/s
-///     k2, kc2                 the modulus k^2 of the exact solution and k'^2 = 1 - k^2
+///     k, k2, kc2              the modulus k of the exact solution, k^2 and k'^2 = 1 - k^2
 ///     period                  of w(t): 4 K(k) / lambda                             s
 ///     flip_interval           half the period: w2 changes sign (the flip near e2)  s
 ///     period_small_oscillation  2 pi / rate about the axis w circulates about      s

@@ -10,6 +10,7 @@
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/value_text.hpp"
+#include "temp_files.hpp"
 
 using namespace wobble;
 using Catch::Matchers::WithinAbs;
@@ -158,5 +159,68 @@ TEST_CASE("every step reads as plain text too (the text key shows no LaTeX)") {
         REQUIRE(step.text.find('\\') == std::string::npos);
       }
     }
+  }
+}
+
+namespace {
+// One torque-free top written with decimals (geometry, masses, sizes, motion) or with the
+// same numbers as fractions.
+std::string decimal_or_fraction_problem(bool decimals) {
+  const auto n = [&](const char* decimal, const char* fraction) {
+    return std::string("\"") + (decimals ? decimal : fraction) + "\"";
+  };
+  const std::string half_m = n("0.5*m", "m/2");
+  return R"TOML(id = "decimals"
+title = "t"
+solver = "torque_free_symmetric"
+statement = "s"
+
+[[parameters]]
+name = "m"
+unit = "kg"
+default = 1.5
+range = "(0, inf)"
+
+[[parameters]]
+name = "alpha"
+unit = "rad"
+default = "15deg"
+range = "[0, pi/2)"
+
+[body]
+masses = [ { mass = )TOML" + half_m + R"TOML(, at = ["0", "0", )TOML" + n("1.5", "3/2") +
+         R"TOML(] }, { mass = )TOML" + half_m + R"TOML(, at = ["0", "0", )TOML" +
+         n("-1.5", "-3/2") + R"TOML(] } ]
+shapes = [ { shape = "box", mass = )TOML" + n("2.5*m", "5*m/2") + ", sizes = [" +
+         n("0.5", "1/2") + ", " + n("0.5", "1/2") + ", " + n("1.2e-1", "3/25") + R"TOML(] } ]
+
+[motion]
+omega = )TOML" + n("2.5", "5/2") + R"TOML(
+alpha = "alpha"
+
+[[parts]]
+id = "a"
+question = "q"
+answers = ["I0", "I", "Omega_body_rate", "max_angle", "t_max"]
+)TOML";
+}
+}  // namespace
+
+TEST_CASE("decimals in a problem file are the decimal numbers, exactly (no internal error)") {
+  const auto solved = [](bool decimals) {
+    const Problem p = load_problem(
+        wobble::test::write_file(decimals ? "catalog/decimals.toml" : "catalog/fractions.toml",
+                         decimal_or_fraction_problem(decimals)));
+    return solve(p, parameter_values(p, {}));
+  };
+  const Key with_decimals = solved(true), with_fractions = solved(false);
+  const auto& a = with_decimals.parts.at(0).answers;
+  const auto& b = with_fractions.parts.at(0).answers;
+  REQUIRE(a.size() == 5);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    INFO(a[i].name);
+    // Exact both ways: the same closed form and the same value to the last bit.
+    REQUIRE(a[i].symbolic == b[i].symbolic);
+    REQUIRE(a[i].value.data == b[i].value.data);
   }
 }
