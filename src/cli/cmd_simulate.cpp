@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "problem/scene.hpp"
+#include "problem/variants.hpp"
 #include "render/atomic_write.hpp"
 #include "render/simulation_output.hpp"
 #include "simulate/scene_setup.hpp"
@@ -60,9 +61,20 @@ int run_simulate(const SimulateOptions& opt) {
     throw InputError(
         fmt::format("--samples: {} is out of range (expected 2 to 1000000)", *opt.samples));
   }
+  // An unwritable target is found before the work, not after it.
+  if (!opt.out.empty()) require_writable(opt.out);
+  if (!opt.plot.empty()) require_writable(opt.plot);
   Scene scene = find_scene(opt.scene);
   if (opt.samples) scene.samples = static_cast<int>(*opt.samples);
-  SceneSetup setup = setup_scene(scene, with_variant(scene.model, opt.variant, opt.sets));
+  std::vector<std::string> assignments;
+  if (opt.variant) {
+    // A scene's variant is valid when its setup accepts it (a scene has no solver to ask).
+    assignments = first_valid_variant(scene.model, *opt.variant, [&](const auto& a) {
+      (void)setup_scene(scene, a);
+    });
+  }
+  assignments.insert(assignments.end(), opt.sets.begin(), opt.sets.end());
+  SceneSetup setup = setup_scene(scene, assignments);
   if (opt.tolerance) setup.tolerance = *opt.tolerance;
   const MethodChoice choice =
       opt.method.empty()
@@ -85,19 +97,21 @@ int run_simulate(const SimulateOptions& opt) {
   const SimulationResult result = simulate(setup, choice, progress);
   if (shown) fmt::print(stderr, "\r{:40}\r", "");
 
-  fmt::print("{}", simulation_header(setup, result));
+  // Files first, then stdout: a run that fails to write prints nothing.
+  std::string out = simulation_header(setup, result);
   if (opt.out.empty()) {
-    fmt::print("\n{}\n", simulation_table(setup, result));
+    out += "\n" + simulation_table(setup, result) + "\n";
   } else {
     const bool csv = std::filesystem::path(opt.out).extension() == ".csv";
     write_atomically(opt.out, csv ? simulation_csv(result) : simulation_json(setup, result));
-    fmt::print("wrote {} samples to {}\n", result.rows.size(), opt.out);
+    out += fmt::format("wrote {} samples to {}\n", result.rows.size(), opt.out);
   }
   if (!opt.plot.empty()) {
     write_simulation_plot(setup, result, opt.plot);
-    fmt::print("drew {}\n", opt.plot);
+    out += fmt::format("drew {}\n", opt.plot);
   }
-  fmt::print("{}", simulation_footer(setup, result));
+  out += simulation_footer(setup, result);
+  fmt::print("{}", out);
   return kExitOk;
 }
 

@@ -76,4 +76,23 @@ std::vector<std::string> variant_assignments(const Problem& problem, long n, int
   return out;
 }
 
+std::vector<std::string> first_valid_variant(
+    const Problem& problem, long n,
+    const std::function<void(const std::vector<std::string>&)>& accept) {
+  std::string last;
+  for (int draw = 0; draw < kVariantDraws; ++draw) {
+    const std::vector<std::string> a = variant_assignments(problem, n, draw);
+    try {
+      accept(a);
+      return a;
+    } catch (const InputError& e) {
+      last = e.what();
+    }
+  }
+  throw InputError(
+      fmt::format("--variant {}: none of {} draws from the parameters' ranges makes "
+                  "a valid problem (the last: {}); narrow the ranges in {}",
+                  n, kVariantDraws, last, problem.file.string()));
+}
+
 }  // namespace wobble

@@ -9,6 +9,7 @@
 /// finite range containing zero, e.g. an angle in [0, pi/2)), then rounded to what a handout
 /// shows: 2 significant digits, or whole degrees for an angle. Values come back as the text a
 /// student sees ("0.35", "22deg"), and the key is computed from exactly that text.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,5 +23,13 @@ namespace wobble {
 /// `variant_for` takes the first draw the problem accepts.
 /// @throws InputError for n < 1 or n > 1000000.
 std::vector<std::string> variant_assignments(const Problem& problem, long n, int draw = 0);
+
+/// Variant n's assignments from the first of up to kVariantDraws draws that `accept` takes
+/// (`accept` throws InputError to refuse a draw): a problem's solver, or a scene's setup.
+/// @throws InputError naming the last refusal when no draw is accepted.
+inline constexpr int kVariantDraws = 100;
+std::vector<std::string> first_valid_variant(
+    const Problem& problem, long n,
+    const std::function<void(const std::vector<std::string>&)>& accept);
 
 }  // namespace wobble

@@ -22,6 +22,19 @@ void require_regular_or_absent(const std::filesystem::path& target) {
   }
 }
 
+void require_writable(const std::filesystem::path& target) {
+  require_regular_or_absent(target);
+  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
+  std::string tmpl = (dir / ".wobble-probe.XXXXXX").string();
+  const int fd = ::mkstemp(tmpl.data());
+  if (fd < 0) {
+    throw std::runtime_error(target.string() + ": cannot be written here (" +
+                             std::strerror(errno) + "); nothing was computed");
+  }
+  ::close(fd);
+  ::unlink(tmpl.c_str());
+}
+
 void write_atomically(const std::filesystem::path& target, const std::string& content) {
   require_regular_or_absent(target);
   const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";

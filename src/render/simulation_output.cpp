@@ -177,6 +177,11 @@ std::string simulation_json(const SceneSetup& s, const SimulationResult& r) {
 }
 
 std::string cross_check_text(const CrossCheck& c, double key_time_s) {
+  if (!c.not_compared.empty()) {
+    return "not compared: " + c.not_compared + "\n" +
+           fmt::format("cost of the key: {} (the whole key, exact and numeric)\n",
+                       seconds(key_time_s));
+  }
   std::string out = fmt::format("{:<18} {:>20} {:>20} {:>11} {:>11}\n", "answer",
                                 "key (closed form)", "simulation", "difference", "relative");
   for (const auto& r : c.rows) {

@@ -41,6 +41,18 @@ CrossCheck cross_check_torque_free(const Problem& problem, const sym::Values& va
   const double rate_body = key_value(key, "Omega_body_rate");
   const double rate_space = key_value(key, "Omega_space_rate");
 
+  if (!(max_angle >= kSmallestResolvedWobble)) {
+    CrossCheck none;
+    none.method = "none";
+    none.not_compared =
+        max_angle == 0.0
+            ? "alpha = 0: w lies along the symmetry axis and nothing wobbles; e3 stays on z and "
+              "there is no motion to compare (the key's rates are those a small wobble would have)"
+            : fmt::format("the wobble ({:.3g} rad) is below what the simulation resolves ({:g} "
+                          "rad): its angles would be integration error; cross-check a larger alpha",
+                          max_angle, kSmallestResolvedWobble);
+    return none;
+  }
   // The problem as a scene: w(0) = omega (sin alpha, 0, cos alpha) in the body, body = space.
   Scene scene;
   scene.model = problem;

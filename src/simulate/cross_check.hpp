@@ -10,6 +10,9 @@
 ///   and its neighbours (error O(dt^3));
 /// - Omega_body_rate: the turn of w about e3 in the body over the run, divided by the time;
 /// - Omega_space_rate: the turn of e3 about L in space over the run, divided by the time.
+/// A wobble smaller than kSmallestResolvedWobble (α = 0 among them: no wobble at all) is not
+/// simulated: the angles measured would be the integrator's error, not the motion. The result
+/// then has no rows and says why.
 #include <string>
 #include <vector>
 
@@ -23,8 +26,14 @@ struct CrossCheckRow {
   double key = 0.0, simulated = 0.0;
 };
 
+/// The smallest largest angle (rad) the cross-check compares. Why 1e-6: at tolerance 1e-12 the
+/// attitude carries errors up to ~1e-10 rad over the run, so the angles and turns measured on a
+/// wobble of 1e-6 rad keep four digits; below that the relative difference would be noise.
+inline constexpr double kSmallestResolvedWobble = 1e-6;
+
 struct CrossCheck {
   std::vector<CrossCheckRow> rows;
+  std::string not_compared;  ///< why nothing was simulated (rows empty), or ""
   std::string method;  ///< what the simulation used
   std::int64_t rhs_evals = 0;
   double simulation_time_s = 0.0;

@@ -34,21 +34,9 @@ Key assemble_parts(const Problem& problem,
 }
 
 std::vector<std::string> variant_for(const Problem& problem, long n) {
-  constexpr int kDraws = 100;
-  std::string last;
-  for (int draw = 0; draw < kDraws; ++draw) {
-    const std::vector<std::string> a = variant_assignments(problem, n, draw);
-    try {
-      (void)solve(problem, parameter_values(problem, a));
-      return a;
-    } catch (const InputError& e) {
-      last = e.what();
-    }
-  }
-  throw InputError(
-      fmt::format("--variant {}: none of {} draws from the parameters' ranges makes "
-                  "a valid problem (the last: {}); narrow the ranges in {}",
-                  n, kDraws, last, problem.file.string()));
+  return first_valid_variant(problem, n, [&](const std::vector<std::string>& a) {
+    (void)solve(problem, parameter_values(problem, a));
+  });
 }
 
 std::vector<std::string> solver_names() {
