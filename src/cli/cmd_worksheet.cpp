@@ -29,8 +29,7 @@ int run_worksheet(const WorksheetOptions& opt) {
   const Key key = solve(problem, values);
   const auto shown = shown_values(assignments);
   // The handout without its list of questions: the worksheet asks them one by one.
-  std::string intro = render_handout(key, shown, opt.variant);
-  intro = intro.substr(0, intro.find("\n**("));
+  const std::string intro = render_handout_text(key, shown, opt.variant, false);
   const sym::SymbolTable table = problem.symbol_table();
   // At a terminal, a line editor; piped, plain lines echoed so that the transcript reads well.
   const bool terminal = ::isatty(STDIN_FILENO) != 0;

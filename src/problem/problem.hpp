@@ -32,6 +32,7 @@ struct Parameter {
   std::string description;  ///< one line
   double default_value = 0.0;
   Interval range;
+  bool fixed = false;  ///< a physical constant (g): the same in every variant
   bool is_angle() const { return unit == "rad"; }
 };
 

@@ -9,12 +9,16 @@
 namespace wobble::detail {
 
 Parameter read_parameter(const Reader& r, const toml::table& t, const std::string& f) {
-  r.only_keys(t, f, {"name", "latex", "unit", "description", "default", "range"});
+  r.only_keys(t, f, {"name", "latex", "unit", "description", "default", "range", "fixed"});
   Parameter p;
   p.name = r.string(t, "name", f + ".");
   p.latex = r.string(t, "latex", f + ".", false, p.name);
   p.unit = r.string(t, "unit", f + ".", false, "");
   p.description = r.string(t, "description", f + ".", false, "");
+  if (const toml::node* fixed = t.get("fixed")) {
+    if (!fixed->is_boolean()) r.fail(fixed, f + ".fixed", "must be true or false");
+    p.fixed = fixed->as_boolean()->get();
+  }
   const std::string range = r.string(t, "range", f + ".");
   try {
     p.range = parse_interval(range, f + ".range");

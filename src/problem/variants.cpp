@@ -50,6 +50,7 @@ std::vector<std::string> variant_assignments(const Problem& problem, long n, int
   }
   std::vector<std::string> out;
   for (const auto& p : problem.parameters) {
+    if (p.fixed) continue;  // a physical constant keeps its value in every variant
     const double u = unit_draw(problem.id, p.name, n, draw);
     const Interval& r = p.range;
     const double d = p.default_value;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -13,6 +14,55 @@ namespace wobble::detail {
 const std::map<std::string, std::string>& greek() { return sym::greek_letters(); }
 
 std::string pretty(const std::string& s) { return sym::to_unicode(s); }
+
+std::optional<std::string> whole_degrees(const ParameterValue& p) {
+  if (p.unit != "rad" || p.value == 0.0) return std::nullopt;
+  const double half_degrees = p.value * 360 / M_PI;
+  const double rounded = std::round(half_degrees);
+  // A value typed as "15deg" is the double nearest 15 pi/180: within a few ulps of it.
+  if (std::abs(half_degrees - rounded) > 1e-9 * std::max(1.0, std::abs(rounded))) {
+    return std::nullopt;
+  }
+  return format_number(rounded / 2);
+}
+
+std::string parameter_value_text(const ParameterValue& p) {
+  if (const auto deg = whole_degrees(p)) return *deg + "° = " + format_number(p.value) + " rad";
+  return format_number(p.value) + unit_text(p.unit);
+}
+
+std::string parameter_value_latex(const ParameterValue& p) {
+  if (const auto deg = whole_degrees(p)) {
+    return *deg + "^\\circ = " + format_number(p.value) + unit_latex(p.unit);
+  }
+  return format_number(p.value) + unit_latex(p.unit);
+}
+
+std::size_t display_width(const std::string& s) {
+  std::size_t width = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto b = static_cast<unsigned char>(s[i]);
+    if ((b & 0xC0) == 0x80) continue;  // a continuation byte
+    // Combining diacritical marks U+0300..U+036F: bytes CC 80..CD AF.
+    if ((b == 0xCC || b == 0xCD) && i + 1 < s.size()) continue;
+    ++width;
+  }
+  return width;
+}
+
+std::string markdown_cell(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    if (c == '|') {
+      out += "\\|";
+    } else if (c == '\n') {
+      out += ' ';
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
 
 std::string unit_text(const std::string& unit) {
   std::string out = pretty(unit);

@@ -2,6 +2,7 @@
 /// @file
 /// Helpers shared by the renderers (not part of the public interface of render/).
 #include <map>
+#include <optional>
 #include <string>
 
 #include "solvers/key.hpp"
@@ -20,6 +21,21 @@ std::string unit_latex(const std::string& unit);
 
 /// Numbers of a value: "3.5", "(1, 0, 0)", or matrix rows, one per line with the given indent.
 std::string value_text(const Value& v, const std::string& indent);
+
+/// An angle at a whole or half degree, in degrees ("15"), else nullopt: parameters given in
+/// degrees are shown in degrees, with radians after.
+std::optional<std::string> whole_degrees(const ParameterValue& p);
+
+/// A parameter's value as a key shows it: "0.2 kg", "15° = 0.2617993878 rad" (Unicode text),
+/// or the same in LaTeX math ("15^\circ = 0.2617993878\,\mathrm{rad}").
+std::string parameter_value_text(const ParameterValue& p);
+std::string parameter_value_latex(const ParameterValue& p);
+
+/// Columns a UTF-8 string takes in a terminal: code points, less combining marks (θ̇ is one).
+std::size_t display_width(const std::string& s);
+
+/// Text for one Markdown table cell: '|' escaped, line breaks as spaces.
+std::string markdown_cell(const std::string& s);
 
 /// Plain text with Unicode symbols for LaTeX text mode: escapes specials, maps Σ -> $\Sigma$ ...
 std::string latex_text(const std::string& s);

@@ -2,34 +2,71 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "render/common.hpp"
+#include "render/plain_text.hpp"
 
 namespace wobble {
+
+namespace {
+// A parameter's value and unit as the handout shows them: a variant's own text ("22deg" ->
+// "22", "°"), else the key's value (an angle at whole degrees in degrees).
+std::pair<std::string, std::string> shown_value(
+    const ParameterValue& p, const std::vector<std::pair<std::string, std::string>>& shown) {
+  for (const auto& [name, text] : shown) {
+    if (name != p.name) continue;
+    if (text.size() > 3 && text.compare(text.size() - 3, 3, "deg") == 0) {
+      return {text.substr(0, text.size() - 3), "°"};
+    }
+    return {text, p.unit};
+  }
+  if (const auto deg = detail::whole_degrees(p)) return {*deg, "°"};
+  return {format_number(p.value), p.unit};
+}
+
+std::string title_line(const Key& key, std::optional<long> variant) {
+  return key.title + (variant ? fmt::format(" (variant {})", *variant) : "");
+}
+}  // namespace
 
 std::string render_handout(const Key& key,
                            const std::vector<std::pair<std::string, std::string>>& shown,
                            std::optional<long> variant) {
-  std::string out =
-      fmt::format("# {}{}\n\n", key.title, variant ? fmt::format(" (variant {})", *variant) : "");
+  std::string out = "# " + title_line(key, variant) + "\n\n";
   out += key.statement;
   if (!out.empty() && out.back() != '\n') out += "\n";
   out += "\n| Parameter | Value | Unit | Meaning |\n|---|---|---|---|\n";
   for (const auto& p : key.parameters) {
-    std::string value = format_number(p.value), unit = p.unit;
-    for (const auto& [name, text] : shown) {
-      if (name != p.name) continue;
-      value = text;
-      if (text.size() > 3 && text.compare(text.size() - 3, 3, "deg") == 0) {
-        value = text.substr(0, text.size() - 3);
-        unit = "°";
-      }
-    }
-    std::string description;  // a '|' would end the Markdown cell
-    for (const char c : p.description)
-      description += c == '|' ? std::string("\\|") : std::string(1, c);
-    out += fmt::format("| ${}$ | {} | {} | {} |\n", p.latex, value, unit, description);
+    const auto [value, unit] = shown_value(p, shown);
+    out += fmt::format("| ${}$ | {} | {} | {} |\n", p.latex, value, unit,
+                       detail::markdown_cell(p.description));
   }
   for (const auto& part : key.parts) out += fmt::format("\n**({})** {}\n", part.id, part.question);
+  return out;
+}
+
+std::string render_handout_text(const Key& key,
+                                const std::vector<std::pair<std::string, std::string>>& shown,
+                                std::optional<long> variant, bool with_questions) {
+  std::string out = title_line(key, variant) + "\n\n" + plain_text(key.statement);
+  if (!out.empty() && out.back() != '\n') out += "\n";
+  out += "\nValues:\n";
+  std::size_t width = 0;
+  for (const auto& p : key.parameters) {
+    width = std::max(width, detail::display_width(detail::pretty(p.name)));
+  }
+  for (const auto& p : key.parameters) {
+    const auto [value, unit] = shown_value(p, shown);
+    const std::string name = detail::pretty(p.name);
+    out += fmt::format("  {}{} = {}{}{}\n", name,
+                       std::string(width - detail::display_width(name), ' '), value,
+                       unit == "°" ? "°" : detail::unit_text(unit),
+                       p.description.empty() ? "" : "   (" + p.description + ")");
+  }
+  if (with_questions) {
+    for (const auto& part : key.parts) out += fmt::format("\n({}) {}\n", part.id, part.question);
+  }
   return out;
 }
 

@@ -57,8 +57,7 @@ std::string render_latex(const Key& key) {
   out += statement_latex(key.statement) + "\n\n\\noindent Parameters: ";
   for (std::size_t i = 0; i < key.parameters.size(); ++i) {
     const auto& p = key.parameters[i];
-    out += fmt::format("{}${} = {}{}$", i ? ", " : "", p.latex, format_number(p.value),
-                       detail::unit_latex(p.unit));
+    out += fmt::format("{}${} = {}$", i ? ", " : "", p.latex, detail::parameter_value_latex(p));
   }
   out += ".\n";
   for (const auto& part : key.parts) {

@@ -13,8 +13,10 @@ std::string render_markdown(const Key& key) {
   if (out.back() != '\n') out += "\n";
   out += "\n| Parameter | Value | Unit | Meaning |\n|---|---|---|---|\n";
   for (const auto& p : key.parameters) {
-    out += fmt::format("| ${}$ | {} | {} | {} |\n", p.latex, format_number(p.value), p.unit,
-                       p.description);
+    const auto deg = detail::whole_degrees(p);
+    out += fmt::format("| ${}$ | {} | {} | {} |\n", p.latex,
+                       deg ? *deg + "° = " + format_number(p.value) : format_number(p.value),
+                       p.unit, detail::markdown_cell(p.description));
   }
   for (const auto& part : key.parts) {
     out += fmt::format("\n## ({}) {}\n\n", part.id, part.question);

@@ -1,46 +1,21 @@
 #include <fmt/format.h>
 
 #include "render/common.hpp"
+#include "render/plain_text.hpp"
 #include "render/render.hpp"
 
 namespace wobble {
 
-namespace {
-// Statement Markdown for a terminal: $...$ delimiters dropped, a few LaTeX commands as Unicode.
-std::string plain_statement(const std::string& md) {
-  static const std::vector<std::pair<std::string, std::string>> commands = [] {
-    std::vector<std::pair<std::string, std::string>> c{
-        {"\\times", "×"}, {"\\cdot", "·"}, {"\\sqrt", "√"}, {"\\,", " "},
-        {"^2", "²"},      {"^3", "³"},     {"**", ""},      {"$", ""}};
-    // \\dot\\theta before \\theta: a Greek letter with a combining dot above.
-    std::vector<std::pair<std::string, std::string>> letters;
-    for (const auto& [name, letter] : detail::greek()) {
-      letters.push_back({"\\dot\\" + name, letter + "\u0307"});
-    }
-    for (const auto& [name, letter] : detail::greek()) letters.push_back({"\\" + name, letter});
-    c.insert(c.begin(), letters.begin(), letters.end());
-    return c;
-  }();
-  std::string s = md;
-  for (const auto& [from, to] : commands) {
-    for (std::size_t p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size())) {
-      s.replace(p, from.size(), to);
-    }
-  }
-  return s;
-}
-}  // namespace
 
 std::string render_text(const Key& key) {
   using detail::pretty;
   std::string out = fmt::format("{}  [{}]\n", key.title, key.problem);
   if (!key.source.empty()) out += "Source: " + key.source + "\n";
-  out += "\n" + plain_statement(key.statement);
+  out += "\n" + plain_text(key.statement);
   if (out.back() != '\n') out += "\n";
   out += "\nParameters:";
   for (const auto& p : key.parameters) {
-    out += fmt::format(" {} = {}{};", pretty(p.name), format_number(p.value),
-                       detail::unit_text(p.unit));
+    out += fmt::format(" {} = {};", pretty(p.name), detail::parameter_value_text(p));
   }
   out.back() = '\n';
   for (const auto& part : key.parts) {

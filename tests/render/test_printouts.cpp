@@ -1,0 +1,87 @@
+// What a terminal and a Markdown page show: no LaTeX or Markdown syntax in text, tables that
+// stay tables, parameters shown as given.
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "problem/load.hpp"
+#include "problem/values.hpp"
+#include "render/common.hpp"
+#include "render/handout.hpp"
+#include "render/plain_text.hpp"
+#include "render/render.hpp"
+#include "solvers/solve.hpp"
+
+using namespace wobble;
+
+TEST_CASE("LaTeX math as terminal text") {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"\\omega(\\sin\\alpha\\, x + \\cos\\alpha\\, z)", "ω(sin α x + cos α z)"},
+      {"a \\times a \\times a\\sqrt{3}", "a × a × a√3"},
+      {"d(\\cos(\\alpha/2), \\pm\\sin(\\alpha/2), 0)", "d(cos(α/2), ±sin(α/2), 0)"},
+      {"V_{body} = R(\\alpha, \\beta, \\gamma)\\, V_{inertial}", "V_body = R(α, β, γ) V_inertial"},
+      {"\\dot\\theta(0) = \\dot\\theta_0", "θ̇(0) = θ̇₀"},
+      {"I_1 < I_2 < I_3", "I₁ < I₂ < I₃"},
+      {"\\frac{m R^2}{4}", "(m R²)/4"},
+      {"\\sqrt{a^2 + b^2}", "√(a² + b²)"},
+      {"e_2'", "e₂'"},
+      {"\\mathbf{1} - r r^T", "1 - r rᵀ"},
+      {"\\unknowncommand{x}", "unknowncommandx"},
+  };
+  for (const auto& [latex, text] : cases) {
+    INFO(latex);
+    REQUIRE(math_to_unicode(latex) == text);
+  }
+  REQUIRE(plain_text("the scene `heavy-top`, **bold** and $\\alpha$ \\| a bar") ==
+          "the scene heavy-top, bold and α | a bar");
+}
+
+namespace {
+// LaTeX or Markdown syntax that must never reach a terminal.
+void require_plain(const std::string& text) {
+  for (const std::string leak : {"\\", "$", "`", "{", "}", "**"}) {
+    INFO("leak: " << leak);
+    REQUIRE(text.find(leak) == std::string::npos);
+  }
+}
+}  // namespace
+
+TEST_CASE("every text key and worksheet introduction is plain text") {
+  int keys = 0;
+  for (const auto& p : load_catalog()) {
+    const Key key = solve(p, parameter_values(p, {}));
+    INFO(p.id);
+    // The statement and the parameter line: the part above the first question. Answers are
+    // GiNaC text in Unicode, whose vectors use brackets, not braces.
+    const std::string text = render_text(key);
+    require_plain(text.substr(0, text.find("\n(a)")));
+    require_plain(render_handout_text(key, {}, 7, true));
+    ++keys;
+  }
+  REQUIRE(keys >= 13);
+}
+
+TEST_CASE("Markdown tables keep their columns; angles are shown in degrees as given") {
+  for (const auto& p : load_catalog()) {
+    const Key key = solve(p, parameter_values(p, {}));
+    for (const std::string& md : {render_markdown(key), render_handout(key, {}, std::nullopt)}) {
+      std::size_t pos = md.find("| Parameter |");
+      REQUIRE(pos != std::string::npos);
+      // Every row of the table: five unescaped bars.
+      for (std::size_t line = pos; line < md.size() && md[line] == '|';) {
+        const std::size_t end = md.find('\n', line);
+        const std::string row = md.substr(line, end - line);
+        int bars = 0;
+        for (std::size_t i = 0; i < row.size(); ++i) {
+          bars += row[i] == '|' && (i == 0 || row[i - 1] != '\\');
+        }
+        INFO(p.id << ": " << row);
+        REQUIRE(bars == 5);
+        line = end + 1;
+      }
+    }
+  }
+  const Problem plate = find_problem("flying-plate");
+  const Key key = solve(plate, parameter_values(plate, {}));
+  REQUIRE_THAT(render_text(key), Catch::Contains("α = 15° = 0.2617993878 rad"));
+  REQUIRE_THAT(render_markdown(key), Catch::Contains("spin rate \\|w(0)\\|"));
+}
