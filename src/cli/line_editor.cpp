@@ -2,6 +2,7 @@
 
 #include <editline/readline.h>
 
+#include <clocale>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -10,6 +11,10 @@
 namespace wobble::cli {
 
 check::ReadLine terminal_lines() {
+  // libedit reads multibyte characters (°, ·, ², Greek) only in a multibyte locale; without
+  // this it drops them silently. Only the character type: numbers keep the C locale.
+  static const bool locale_set = std::setlocale(LC_CTYPE, "") != nullptr;
+  (void)locale_set;
   return [](const std::string& prompt, std::string& line) {
     // libedit writes the prompt through C stdio: what the worksheet printed must come first.
     std::cout << std::flush;
