@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <regex>
 #include <vector>
 
 #include "solvers/key.hpp"
@@ -136,6 +137,58 @@ bool subscript_at(const std::string& s, std::size_t i, std::size_t& length) {
 }
 }  // namespace
 
+std::optional<std::string> name_latex(const std::string& name) {
+  const auto us = name.find('_');
+  if (us == std::string::npos || us == 0 || us + 1 >= name.size() ||
+      name.find('_', us + 1) != std::string::npos) {
+    return std::nullopt;
+  }
+  std::string stem = name.substr(0, us), digits;
+  while (!stem.empty() && std::isdigit(static_cast<unsigned char>(stem.back()))) {
+    digits.insert(digits.begin(), stem.back());
+    stem.pop_back();
+  }
+  const std::string sub = name.substr(us + 1);
+  const auto& greek = sym::greek_letters();
+  const bool greek_stem = greek.count(stem) != 0;
+  if (stem.empty() || (!greek_stem && stem.size() > 2)) return std::nullopt;
+  for (const char c : stem + sub) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) return std::nullopt;
+  }
+  const std::string base = greek_stem ? "\\" + stem : stem;
+  std::string subscript;
+  if (greek.count(sub)) {
+    subscript = "\\" + sub;
+  } else if (sub.size() <= 2) {
+    subscript = sub;  // I_xy: indices
+  } else {
+    subscript = "\\mathrm{" + sub + "}";
+  }
+  return base + "_{" + (digits.empty() ? "" : digits + ",") + subscript + "}";
+}
+
+namespace {
+// At i: a Greek letter followed by a combining dot and/or digits ("θ̇0", "φ̇", "θ0"), as LaTeX
+// math, and the index after it; nullopt for anything else (a lone letter maps as usual).
+std::optional<std::pair<std::string, std::size_t>> dotted_greek(const std::string& s,
+                                                                std::size_t i) {
+  for (const auto& [name, letter] : sym::greek_letters()) {
+    if (name == "Pi" || s.compare(i, letter.size(), letter) != 0) continue;
+    std::size_t j = i + letter.size();
+    const bool dot = s.compare(j, 2, "\u0307") == 0;
+    if (dot) j += 2;
+    std::size_t k = j;
+    while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+    if (!dot && k == j) return std::nullopt;
+    const std::string symbol = "\\" + (name == "pi" ? std::string("pi") : name);
+    std::string math = dot ? "\\dot{" + symbol + "}" : symbol;
+    if (k > j) math += "_{" + s.substr(j, k - j) + "}";
+    return std::make_pair("$" + math + "$", k);
+  }
+  return std::nullopt;
+}
+}  // namespace
+
 std::string latex_text(const std::string& s) {
   static const std::vector<std::pair<std::string, std::string>> map{{"\\", "\\textbackslash{}"},
                                                                     {"&", "\\&"},
@@ -184,6 +237,35 @@ std::string latex_text(const std::string& s) {
                                                                     {"→", "$\\to$"}};
   std::string out;
   for (std::size_t i = 0; i < s.size();) {
+    // A Greek letter with a dot above (a time derivative) and digits: θ̇0 -> $\dot{\theta}_{0}$.
+    if (const auto greek = dotted_greek(s, i)) {
+      out += greek->first;
+      i = greek->second;
+      continue;
+    }
+    // A number in e-notation in prose: "4.4e-16" -> 4.4 $\times 10^{-16}$.
+    if (std::isdigit(static_cast<unsigned char>(s[i])) &&
+        (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
+      static const std::regex e_number(R"(^([0-9]+(\.[0-9]+)?)[eE]([-+]?)0*([0-9]+))");
+      std::smatch m;
+      const std::string rest = s.substr(i, 40);
+      if (std::regex_search(rest, m, e_number)) {
+        out += m[1].str() + "$\\times 10^{" + (m[3].str() == "-" ? "-" : "") + m[4].str() + "}$";
+        i += static_cast<std::size_t>(m.length(0));
+        continue;
+      }
+    }
+    // A name with a subscript as a whole word (Omega_body, p_phi, theta_min): math.
+    if (std::isalpha(static_cast<unsigned char>(s[i])) &&
+        (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
+      std::size_t j = i;
+      while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
+      if (const auto math = name_latex(s.substr(i, j - i))) {
+        out += "$" + *math + "$";
+        i = j;
+        continue;
+      }
+    }
     std::size_t sub = 0;
     if (subscript_at(s, i, sub)) {  // the letter before is already out: make it math
       out.back() = '$';

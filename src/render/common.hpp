@@ -37,6 +37,12 @@ std::size_t display_width(const std::string& s);
 /// Text for one Markdown table cell: '|' escaped, line breaks as spaces.
 std::string markdown_cell(const std::string& s);
 
+/// A quantity's name as LaTeX math when it reads as a symbol with a subscript: "Omega_body" ->
+/// "\Omega_{\mathrm{body}}", "theta_min" -> "\theta_{\mathrm{min}}", "p_phi" -> "p_{\phi}",
+/// "I_xy" -> "I_{xy}", "L0_space" -> "L_{0,\mathrm{space}}"; nullopt for a name that is words
+/// ("principal_axes", "max_angle").
+std::optional<std::string> name_latex(const std::string& name);
+
 /// Plain text with Unicode symbols for LaTeX text mode: escapes specials, maps Σ -> $\Sigma$ ...
 std::string latex_text(const std::string& s);
 

@@ -1,5 +1,9 @@
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <optional>
+#include <vector>
+
 #include "render/common.hpp"
 #include "render/render.hpp"
 
@@ -20,6 +24,16 @@ std::string statement_latex(const std::string& md) {
       flush();
       out += '$';
       math = !math;
+    } else if (!math && md[i] == '`') {
+      // A code span (a scene's id): typewriter.
+      const std::size_t close = md.find('`', i + 1);
+      if (close == std::string::npos) {
+        chunk += md[i];
+        continue;
+      }
+      flush();
+      out += "\\texttt{" + detail::latex_text(md.substr(i + 1, close - i - 1)) + "}";
+      i = close;
     } else if (!math && md.compare(i, 2, "**") == 0) {
       flush();
       out += bold ? "}" : "\\textbf{";
@@ -34,6 +48,60 @@ std::string statement_latex(const std::string& md) {
   if (bold) out += '}';
   return out;
 }
+// The one pmatrix in a formula: the text before it, its cells (row-major) and the text after;
+// nullopt if the formula has none or more than one.
+struct MatrixFormula {
+  std::string before, after;
+  std::vector<std::vector<std::string>> rows;
+};
+std::optional<MatrixFormula> split_matrix(const std::string& latex) {
+  const std::string open = "\\begin{pmatrix}", close = "\\end{pmatrix}";
+  const auto b = latex.find(open);
+  const auto e = latex.find(close);
+  if (b == std::string::npos || e == std::string::npos || e < b ||
+      latex.find(open, b + 1) != std::string::npos) {
+    return std::nullopt;
+  }
+  MatrixFormula m{latex.substr(0, b), latex.substr(e + close.size()), {{}}};
+  std::string cell;
+  int depth = 0;
+  const std::string body = latex.substr(b + open.size(), e - b - open.size());
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    const char c = body[i];
+    if (c == '{') ++depth;
+    if (c == '}') --depth;
+    if (depth == 0 && c == '&') {
+      m.rows.back().push_back(cell);
+      cell.clear();
+    } else if (depth == 0 && body.compare(i, 2, "\\\\") == 0) {
+      m.rows.back().push_back(cell);
+      cell.clear();
+      m.rows.emplace_back();
+      ++i;
+    } else {
+      cell += c;
+    }
+  }
+  m.rows.back().push_back(cell);
+  return m;
+}
+
+// A display formula; one with a vector or matrix is shown whole, or entry by entry where the
+// whole would have to shrink below readability.
+std::string display(const std::string& latex) {
+  const auto m = split_matrix(latex);
+  if (!m) return "\\fit{" + latex + "}";
+  std::string entries = m->before.empty() ? "" : "\\fit{" + m->before + "\\text{entry by entry:}}";
+  const bool column = std::all_of(m->rows.begin(), m->rows.end(),
+                                  [](const auto& r) { return r.size() == 1; });
+  for (std::size_t i = 0; i < m->rows.size(); ++i) {
+    for (std::size_t j = 0; j < m->rows[i].size(); ++j) {
+      const std::string index = column ? fmt::format("{}", i + 1) : fmt::format("{},{}", i + 1, j + 1);
+      entries += "\\fit{[\\,\\cdot\\,]_{" + index + "} = " + m->rows[i][j] + "}";
+    }
+  }
+  return "\\fitor{" + latex + "}{" + entries + "}";
+}
 }  // namespace
 
 std::string render_latex(const Key& key) {
@@ -45,13 +113,24 @@ std::string render_latex(const Key& key) {
       "\\usepackage{amsmath,amssymb}\n\\usepackage[margin=2cm]{geometry}\n"
       "\\usepackage{graphicx}\n"
       "\\setcounter{MaxMatrixCols}{20}\n"
-      "% \\fit{math}: a display formula, scaled down only if it is wider than the line.\n"
+      "% \\fit{math}: a display formula, scaled down only if it is wider than the line, and\n"
+      "% never below 70% (smaller is unreadable): a formula still wider is set as a paragraph\n"
+      "% of its own, small, where it may break after a + or a - (\\left( and \\right) become\n"
+      "% plain delimiters there, which do not make a group TeX cannot break).\n"
       "\\newsavebox{\\fitbox}\n"
-      "\\newcommand{\\fit}[1]{\\begin{center}\\sbox{\\fitbox}{$\\displaystyle #1$}"
-      "\\ifdim\\wd\\fitbox>\\linewidth\\resizebox{\\linewidth}{!}{\\usebox{\\fitbox}}"
-      "\\else\\usebox{\\fitbox}\\fi\\end{center}}\n"
+      "\\newcommand{\\fit}[1]{\\sbox{\\fitbox}{$\\displaystyle #1$}%\n"
+      "\\ifdim\\wd\\fitbox>\\linewidth\\ifdim0.7\\wd\\fitbox>\\linewidth\n"
+      "\\begin{flushleft}\\small\\def\\left##1{\\ifx##1.\\else\\mathopen{##1}\\fi}%\n"
+      "\\def\\right##1{\\ifx##1.\\else\\mathclose{##1}\\fi}$\\displaystyle #1$\\end{flushleft}%\n"
+      "\\else\\begin{center}\\resizebox{\\linewidth}{!}{\\usebox{\\fitbox}}\\end{center}\\fi\n"
+      "\\else\\begin{center}\\usebox{\\fitbox}\\end{center}\\fi}\n"
+      "% \\fitor{whole}{entries}: a vector or matrix whole if it fits at 70% or more, else entry\n"
+      "% by entry.\n"
+      "\\newcommand{\\fitor}[2]{\\sbox{\\fitbox}{$\\displaystyle #1$}%\n"
+      "\\ifdim0.7\\wd\\fitbox>\\linewidth #2\\else\\fit{#1}\\fi}\n"
       "\\allowdisplaybreaks\n\\begin{document}\n";
-  out += fmt::format("\\section*{{{} \\quad{{\\normalsize\\texttt{{{}}}}}}}\n",
+  // A long title wraps as a heading does; the id goes on its own line (it cannot hyphenate).
+  out += fmt::format("\\section*{{\\raggedright {}}}\n\\noindent\\texttt{{{}}}\\par\\medskip\n",
                      latex_text(key.title), latex_text(key.problem));
   if (!key.source.empty()) out += "\\noindent\\emph{Source:} " + latex_text(key.source) + "\n\n";
   out += statement_latex(key.statement) + "\n\n\\noindent Parameters: ";
@@ -63,8 +142,11 @@ std::string render_latex(const Key& key) {
   for (const auto& part : key.parts) {
     out += fmt::format("\n\\subsection*{{({}) {}}}\n", part.id, latex_text(part.question));
     for (const auto& a : part.answers) {
-      out += "\\noindent\\texttt{" + latex_text(a.name) + "}:\n";
-      if (!a.symbolic.empty()) out += "\\fit{" + a.latex + "}\n";
+      // The name as a symbol where it reads as one, with the name `check --name` takes.
+      const auto symbol = detail::name_latex(a.name);
+      out += "\\noindent" + (symbol ? "$" + *symbol + "$\\quad" : std::string()) +
+             "{\\small\\texttt{" + latex_text(a.name) + "}}:\n";
+      if (!a.symbolic.empty()) out += display(a.latex) + "\n";
       out += "\\fit{" + std::string(a.symbolic.empty() ? "" : "= ") + value_latex(a.value) +
              detail::unit_latex(a.unit) + "}\n";
       for (const auto& n : a.notes) out += "\\emph{Note:} " + latex_text(n) + "\n\n";
@@ -74,7 +156,7 @@ std::string render_latex(const Key& key) {
       for (const auto& s : part.steps) {
         const std::string& prose = s.latex.empty() ? s.text : s.label;
         out += "\\item " + latex_text(prose);
-        if (!s.latex.empty()) out += "\\fit{" + s.latex + "}";
+        if (!s.latex.empty()) out += display(s.latex);
         out += "\n";
       }
       out += "\\end{enumerate}\n";

@@ -178,11 +178,14 @@ Computed nutation_limit(const Top& t, bool upper) {
   Computed out{exact_scalar(q, e, "rad", t.exact), steps};
   // acos near u = 1 amplifies the root's rounding: compare within sqrt(eps)-scaled bounds there.
   check_routes_agree(out.answer.value.data[0], want, 1.0, 1e4, q);
-  out.steps.push_back(
-      {"θ̇0 = 0: the start is a turning point; dividing f by (u − cos θ0) leaves β d² + c2 d + c1 "
-       "= 0 in d = u − cos θ0, with c1 = " +
-           sym::to_text(c1, t.table) + ", c2 = " + sym::to_text(c2, t.table) + ".",
-       ""});
+  const std::string turning =
+      "θ̇0 = 0: the start is a turning point; dividing f by (u − cos θ0) leaves β d² + c2 d + c1 "
+      "= 0 in d = u − cos θ0, with";
+  out.steps.push_back({turning + " c1 = " + sym::to_text(c1, t.table) +
+                           ", c2 = " + sym::to_text(c2, t.table) + ".",
+                       "c_1 = " + sym::to_latex(c1, t.table) +
+                           ",\\qquad c_2 = " + sym::to_latex(c2, t.table),
+                       turning});
   return out;
 }
 

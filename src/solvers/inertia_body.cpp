@@ -145,15 +145,21 @@ void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
     numeric_parts.push_back(numeric);
 
     std::string size_text;  // "sides a, b, c" or "sides a = 2*L, b = L, c = L"
+    std::string size_latex = "M = " + sym::to_latex(m, t);
     for (std::size_t k = 0; k < sizes.size(); ++k) {
       const std::string value = sym::to_text(sizes[k], t);
       size_text += (k ? ", " : "") + size_names[k] + (value == size_names[k] ? "" : " = " + value);
+      size_latex += ",\\quad " + size_names[k] + " = " + sym::to_latex(sizes[k], t);
     }
+    size_latex += ",\\quad \\text{centre } " + vec_latex(c_exact, t);
     body.steps.push_back(
         {fmt::format("A uniform {} of mass {} (sizes {}), centre at {}; axes along x, "
                      "y, z. Second moments S_ii = ∫ x_i² dm about its centre:",
                      s.shape, sym::to_text(m, t), size_text, vec_text(c_exact, t)),
-         ""});
+         size_latex,
+         fmt::format("A uniform {} with its edges or axis along x, y, z; its mass, sizes and "
+                     "centre (the second moments S_ii = ∫ x_i² dm about the centre follow):",
+                     s.shape)});
     for (const auto& st : derivation.steps) body.steps.push_back({st.text, st.latex});
     const GiNaC::matrix Ic = sym::normalized(derivation.I_cm);
     body.steps.push_back({"About its centre: I_cm = diag(" + sym::to_text(Ic(0, 0), t) + ", " +
@@ -165,7 +171,7 @@ void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
     body.steps.push_back(
         {"Parallel-axis theorem to the origin: I_O = I_cm + M (|d|² 1 − d dᵀ), d = " +
              vec_text(c_exact, t),
-         "I_O = I_{\\mathrm{cm}} + M\\left(|d|^2\\,\\mathbb{1} - d\\,d^{T}\\right),\\quad d = " +
+         "I_O = I_{\\mathrm{cm}} + M\\left(|d|^2\\,\\mathbf{1} - d\\,d^{T}\\right),\\quad d = " +
              vec_latex(c_exact, t),
          "Parallel-axis theorem to the origin:"});
   }

@@ -109,7 +109,7 @@ Computed compute(Context& c, const std::string& quantity) {
     out.steps.push_back(
         {"Parallel-axis theorem, from O to the centre of mass: I_cm = I_O − M "
          "(|r_cm|² 1 − r_cm r_cmᵀ)",
-         "I_{\\mathrm{cm}} = I_O - M\\left(|r_{\\mathrm{cm}}|^2\\,\\mathbb{1} - "
+         "I_{\\mathrm{cm}} = I_O - M\\left(|r_{\\mathrm{cm}}|^2\\,\\mathbf{1} - "
          "r_{\\mathrm{cm}}\\,r_{\\mathrm{cm}}^{T}\\right)",
          "Parallel-axis theorem, from O to the centre of mass:"});
     out.steps.push_back({"I_cm = " + out.answer.symbolic, "I_{\\mathrm{cm}} = " + out.answer.latex,

@@ -26,11 +26,24 @@ std::string format_number(double x) {
   return fmt::format("{:.10g}", x);
 }
 
+std::string number_latex(double x) {
+  // "4.440892099e-16" -> "4.440892099 \times 10^{-16}": a page shows no e-notation.
+  const std::string n = format_number(x);
+  const auto e = n.find('e');
+  if (e == std::string::npos) return n;
+  std::string exponent = n.substr(e + 1);
+  if (!exponent.empty() && exponent[0] == '+') exponent.erase(0, 1);
+  while (exponent.size() > 1 && (exponent[0] == '0' || (exponent[0] == '-' && exponent[1] == '0'))) {
+    exponent.erase(exponent[0] == '-' ? 1 : 0, 1);
+  }
+  return n.substr(0, e) + " \\times 10^{" + exponent + "}";
+}
+
 std::string value_latex(const Value& v) {
-  if (v.shape == Value::Shape::scalar) return format_number(v.data.at(0));
+  if (v.shape == Value::Shape::scalar) return number_latex(v.data.at(0));
   std::string s = "\\begin{pmatrix}";
   for (std::size_t i = 0; i < v.rows; ++i) {
-    for (std::size_t j = 0; j < v.cols; ++j) s += (j ? " & " : " ") + format_number(v.at(i, j));
+    for (std::size_t j = 0; j < v.cols; ++j) s += (j ? " & " : " ") + number_latex(v.at(i, j));
     s += i + 1 < v.rows ? " \\\\" : "";
   }
   return s + " \\end{pmatrix}";

@@ -36,6 +36,9 @@ struct Value {
 /// A number as printed in text, Markdown and LaTeX keys: 10 significant digits ("0", not "-0").
 std::string format_number(double x);
 
+/// A number as LaTeX math, without e-notation: "4.44 \times 10^{-16}".
+std::string number_latex(double x);
+
 /// A value as LaTeX: a number, or a pmatrix (vectors as a column).
 std::string value_latex(const Value& v);
 

@@ -45,7 +45,7 @@ void add_method_steps(const sym::SymPrincipal& sp, const ExactContext& ctx,
   const auto& t = ctx.table;
   steps.push_back(
       {"Characteristic equation det(λ 1 − I) = 0: " + sym::to_text(sp.characteristic, t) + " = 0",
-       "\\det(\\lambda\\,\\mathbb{1} - I) = " + sym::to_latex(sp.characteristic, t) + " = 0",
+       "\\det(\\lambda\\,\\mathbf{1} - I) = " + sym::to_latex(sp.characteristic, t) + " = 0",
        "Characteristic equation:"});
   using M = sym::SymPrincipal::Method;
   switch (sp.method) {
@@ -138,7 +138,7 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
   out.axis_steps.push_back(
       {"Each axis solves (I − λ_k 1) e_k = 0 with |e_k| = 1; e1 and e2 have "
        "their largest-magnitude component positive, and e3 = e1 × e2.",
-       "(I - \\lambda_k\\,\\mathbb{1})\\,e_k = 0,\\quad |e_k| = 1,\\quad e_3 = e_1\\times e_2",
+       "(I - \\lambda_k\\,\\mathbf{1})\\,e_k = 0,\\quad |e_k| = 1,\\quad e_3 = e_1\\times e_2",
        "Each axis solves the equations below; e1 and e2 have their "
        "largest-magnitude component positive:"});
   if (pa.degeneracy != Degeneracy::none) {

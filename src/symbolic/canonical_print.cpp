@@ -12,6 +12,15 @@
 namespace wobble::sym {
 
 namespace {
+// LaTeX source longer than this is not stacked in \frac or put under \sqrt, which TeX can
+// never break across lines: it is written on one level, (a) / (b) and (x)^{1/2}, so that a
+// key's page can wrap it. Measured on the catalog's keys (A4, 2 cm margins, 11 pt, formulas
+// shrunk to 70% at most): at 230 characters a fraction still overflowed its line; 200 leaves
+// none, while fractions up to about two thirds of a line stay stacked.
+constexpr std::size_t kLongLatex = 200;
+}  // namespace
+
+namespace {
 using GiNaC::ex;
 using GiNaC::is_a;
 using GiNaC::numeric;
@@ -245,7 +254,11 @@ class Printer {
       return p < kProduct || (p == kProduct && !latex()) ? paren(s) : s;
     }
     if (n == numeric(1, 2)) {
-      return latex() ? "\\sqrt{" + print(base) + "}" : "sqrt(" + print(base) + ")";
+      if (!latex()) return "sqrt(" + print(base) + ")";
+      const std::string radicand = print(base);
+      // A root over a long expression cannot break across lines: a power 1/2 can.
+      if (radicand.size() > kLongLatex) return "\\left(" + radicand + "\\right)^{1/2}";
+      return "\\sqrt{" + radicand + "}";
     }
     auto [s, p] = print_prec(base);
     if (latex() && is_a<GiNaC::function>(base) && n.is_integer()) {
@@ -347,6 +360,13 @@ class Printer {
     std::string body;
     if (den.empty()) {
       body = join(num);
+    } else if (latex() && frac_part(num).size() + frac_part(den).size() > kLongLatex) {
+      // Too long to stack: a line of its own, (num) / (den), which a page can break.
+      body = "\\left(";
+      body += frac_part(num);
+      body += "\\right) \\big/ \\left(";
+      body += frac_part(den);
+      body += "\\right)";
     } else if (latex()) {
       body = "\\frac{";  // appended piece by piece: GCC 12 -Wrestrict false positive on "a" + s
       body += frac_part(num);

@@ -93,7 +93,7 @@ ShapeDerivation derive_shape_inertia(wobble::ShapeKind kind, const GiNaC::ex& ma
   const auto S = second_moments(kind, mass, sizes, out.steps);
   const ex trace = S[0] + S[1] + S[2];
   for (unsigned i = 0; i < 3; ++i) out.I_cm(i, i) = GiNaC::normal(trace - S[i]);
-  out.steps.push_back({"I = tr(S) 1 − S", "I = \\operatorname{tr}(S)\\,\\mathbb{1} - S"});
+  out.steps.push_back({"I = tr(S) 1 − S", "I = \\operatorname{tr}(S)\\,\\mathbf{1} - S"});
   return out;
 }
 
