@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "cli/commands.hpp"
@@ -22,11 +23,20 @@ void setup_keys(CLI::App& app, KeysOptions& opt) {
                                   "Write one key per variant, e.g. 1-40 (with --out DIR)");
   app.add_option("--out", opt.out, "Folder for --variants")->needs(variants);
   app.add_flag("--force", opt.force, "Overwrite existing files in --out")->needs(variants);
+  app.add_option("--problem", opt.problems,
+                 "Only this problem (an id from `wobble list`); repeatable")
+      ->needs(variants)
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   check->excludes(update);
   check->excludes(variants);
   update->excludes(variants);
-  app.require_option(1, 3);
-  app.footer("$WOBBLE_SOLUTIONS overrides the solutions/ folder.");
+  // One of --check, --update, --variants: run_keys says so in words (CLI11's own group message
+  // reads "Between 1 and 3 of the follow options are required").
+  app.footer(
+      "Give one of --check (compare solutions/ with the program), --update (rewrite solutions/)\n"
+      "or --variants A-B --out DIR [--problem ID]... (a key per student's variant).\n"
+      "$WOBBLE_SOLUTIONS overrides the solutions/ folder.");
 }
 
 namespace {
@@ -56,7 +66,8 @@ int write_variants(const KeysOptions& opt, const std::vector<Problem>& problems)
   std::vector<std::pair<std::filesystem::path, std::string>> files;
   for (const auto& p : problems) {
     for (long n = first; n <= last; ++n) {
-      const Key key = solve(p, parameter_values(p, variant_for(p, n)));
+      Key key = solve(p, parameter_values(p, variant_for(p, n)));
+      key.variant = n;
       const std::string stem = fmt::format("{}-v{}", p.id, n);
       files.emplace_back(dir / (stem + ".md"), render(key, Format::markdown));
       files.emplace_back(dir / (stem + ".json"), render(key, Format::json));
@@ -68,14 +79,28 @@ int write_variants(const KeysOptions& opt, const std::vector<Problem>& problems)
     }
   }
   for (const auto& [path, content] : files) write_atomically(path, content);
-  fmt::print("wrote {} files (variants {} to {} of {} problems) to {}\n", files.size(), first, last,
-             problems.size(), dir.string());
+  fmt::print("wrote {} files (variants {} to {} of {} problem{}) to {}\n", files.size(), first,
+             last, problems.size(), problems.size() == 1 ? "" : "s", dir.string());
   return kExitOk;
 }
 }  // namespace
 
 int run_keys(const KeysOptions& opt) {
-  const auto problems = load_catalog();
+  auto problems = load_catalog();
+  if (!opt.problems.empty()) {
+    std::vector<Problem> chosen;
+    for (const auto& id : opt.problems) {
+      const auto it = std::find_if(problems.begin(), problems.end(),
+                                   [&](const Problem& p) { return p.id == id; });
+      if (it == problems.end()) {
+        std::string known;
+        for (const auto& p : problems) known += (known.empty() ? "" : ", ") + p.id;
+        throw InputError("--problem: unknown problem '" + id + "' (known: " + known + ")");
+      }
+      chosen.push_back(*it);
+    }
+    problems = chosen;
+  }
   if (!opt.variants.empty()) return write_variants(opt, problems);
   if (!opt.check && !opt.update) throw InputError("keys: give --check, --update or --variants");
   const auto dir = solutions_dir();

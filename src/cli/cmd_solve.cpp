@@ -43,6 +43,7 @@ int run_solve(const SolveOptions& opt) {
   const sym::Values values = parameter_values(problem, assignments);
   const auto start = std::chrono::steady_clock::now();
   Key key = solve(problem, values);
+  key.variant = opt.variant;
   const double key_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::optional<CrossCheck> check;
@@ -74,11 +75,11 @@ int run_solve(const SolveOptions& opt) {
     write_top_sketch(top_sketch(problem, values), opt.figure);
   }
   if (opt.handout) {
-    if (opt.format != "markdown" && opt.format != "text") {
-      throw InputError("--handout: prints Markdown (or text); drop --format " + opt.format);
-    }
     const auto shown = shown_values(assignments);
-    fmt::print("{}", render_handout(key, shown, opt.variant));
+    if (opt.format == "json") throw InputError("--handout: text, markdown or latex; not json");
+    fmt::print("{}", opt.format == "latex"      ? render_handout_latex(key, shown, opt.variant)
+                     : opt.format == "markdown" ? render_handout(key, shown, opt.variant)
+                                                : render_handout_text(key, shown, opt.variant, true));
     return kExitOk;
   }
   if (check) {

@@ -84,6 +84,7 @@ struct KeysOptions {
   std::string variants;  ///< "1-40": write one key per variant into `out`
   std::string out;
   bool force = false;
+  std::vector<std::string> problems;  ///< --problem: only these (for --variants)
 };
 void setup_keys(CLI::App& app, KeysOptions& opt);
 int run_keys(const KeysOptions& opt);

@@ -16,6 +16,12 @@ std::string render_handout(const Key& key,
                            const std::vector<std::pair<std::string, std::string>>& shown,
                            std::optional<long> variant);
 
+/// The same handout as a LaTeX document for pdflatex: a name line, the variant number, the
+/// values in a table, each question with room to answer.
+std::string render_handout_latex(const Key& key,
+                                 const std::vector<std::pair<std::string, std::string>>& shown,
+                                 std::optional<long> variant);
+
 /// The same handout as plain terminal text (the worksheet's introduction): the statement's
 /// math in Unicode, one line per parameter; the questions only if `with_questions`.
 std::string render_handout_text(const Key& key,

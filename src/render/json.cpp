@@ -40,6 +40,7 @@ nlohmann::ordered_json key_to_json(const Key& key) {
   J j;
   j["problem"] = key.problem;
   j["title"] = key.title;
+  if (key.variant) j["variant"] = *key.variant;  // only for a student's variant
   j["source"] = key.source;
   j["statement"] = key.statement;
   j["notes"] = key.notes;

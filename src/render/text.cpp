@@ -9,7 +9,9 @@ namespace wobble {
 
 std::string render_text(const Key& key) {
   using detail::pretty;
-  std::string out = fmt::format("{}  [{}]\n", key.title, key.problem);
+  std::string out = fmt::format("{}{}  [{}]\n", key.title,
+                                key.variant ? fmt::format(" (variant {})", *key.variant) : "",
+                                key.problem);
   if (!key.source.empty()) out += "Source: " + key.source + "\n";
   out += "\n" + plain_text(key.statement);
   if (out.back() != '\n') out += "\n";

@@ -243,18 +243,35 @@ TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback
 
 TEST_CASE(
     "variants: the handout has the numbers and no answers; keys per variant; check a variant") {
-  const RunResult handout = run_wobble({"solve", "flying-plate", "--variant", "1", "--handout"});
+  const RunResult handout =
+      run_wobble({"solve", "flying-plate", "--variant", "1", "--handout", "--format", "markdown"});
   REQUIRE(handout.exit_code == 0);
   REQUIRE_THAT(handout.out, Catch::Contains("(variant 1)") && Catch::Contains("| 0.12 | kg |") &&
                                 Catch::Contains("| 24 | ° |") && Catch::Contains("**(h)**"));
   REQUIRE_THAT(handout.out, !Catch::Contains("t_max") && !Catch::Contains("Steps"));
+  // At a terminal (the default format): plain text, the angle as the handout gives it.
+  const RunResult text = run_wobble({"solve", "flying-plate", "--variant", "1", "--handout"});
+  REQUIRE_THAT(text.out, Catch::Contains("(variant 1)") && Catch::Contains("α = 24°") &&
+                             Catch::Contains("(h)") && !Catch::Contains("$"));
   const fs::path dir = scratch_dir() / "variants";
   fs::remove_all(dir);
   const RunResult keys = run_wobble({"keys", "--variants", "1-2", "--out", dir.string()});
   INFO(keys.err);
   REQUIRE(keys.exit_code == 0);
   REQUIRE(fs::exists(dir / "flying-plate-v2.md"));
-  REQUIRE_THAT(slurp(dir / "flying-plate-v1.md"), Catch::Contains("0.12"));
+  // A variant key names its variant and shows the values as the handout does.
+  REQUIRE_THAT(slurp(dir / "flying-plate-v1.md"),
+               Catch::Contains("0.12") && Catch::Contains("variant 1") &&
+                   Catch::Contains("24° = 0.4188790205"));
+  REQUIRE(nlohmann::json::parse(slurp(dir / "flying-plate-v1.json"))["variant"] == 1);
+  // One problem only.
+  const fs::path one = scratch_dir() / "variants-one";
+  fs::remove_all(one);
+  REQUIRE(run_wobble({"keys", "--variants", "1-3", "--problem", "rect-solid", "--out",
+                      one.string()})
+              .exit_code == 0);
+  REQUIRE(std::distance(fs::directory_iterator(one), fs::directory_iterator()) == 6);
+  REQUIRE(fs::exists(one / "rect-solid-v3.json"));
   REQUIRE(run_wobble({"keys", "--variants", "1-2", "--out", dir.string()}).exit_code == 2);
   REQUIRE(run_wobble({"keys", "--variants", "1-2", "--out", dir.string(), "--force"}).exit_code ==
           0);
@@ -294,6 +311,13 @@ TEST_CASE("worksheet driven end to end by piped input: feedback, hint, reveal, s
   const RunResult c = run_shell(exe + " worksheet flying-plate < /dev/null");
   REQUIRE(c.exit_code == 0);
   REQUIRE_THAT(c.out, Catch::Contains("(end of input)") && Catch::Contains("8 not reached"));
+}
+
+TEST_CASE("keys --help says what to give in words") {
+  const RunResult help = run_wobble({"keys", "--help"});
+  REQUIRE(help.exit_code == 0);
+  REQUIRE_THAT(help.out, !Catch::Contains("follow options") && Catch::Contains("Give one of") &&
+                             Catch::Contains("--problem"));
 }
 
 TEST_CASE("worksheet at a UTF-8 terminal (tmux): non-ASCII input is kept and read back") {

@@ -24,7 +24,7 @@ double widest_overfull(const std::string& log) {
 }
 }  // namespace
 
-TEST_CASE("every problem's LaTeX key compiles, with no overfull line and no leaked code") {
+TEST_CASE("every LaTeX key and handout compiles, with no overfull line and no leaked code") {
   const auto dir = scratch_dir() / "latex";
   std::filesystem::create_directories(dir);
   // Things that must never show on a page: GiNaC syntax (a*b, x^2, sin(theta0)), the glyph
@@ -32,8 +32,9 @@ TEST_CASE("every problem's LaTeX key compiles, with no overfull line and no leak
   static const std::regex leaks(R"(\w\*\w|\w\^\w|\b(sin|cos|tan|sqrt)\((theta|phi|psi|alpha)|⊮|\d[eE][-+]?\d)");
   constexpr double kMaxOverfull_pt = 1.0;  // below a point nothing sticks out visibly
   for (const auto& p : wobble::load_catalog()) {
-    for (const std::string variant : {"", " --variant 3"}) {
-      const std::string name = p.id + (variant.empty() ? "" : "-v3");
+    for (const std::string variant : {"", " --variant 3", " --variant 5 --handout"}) {
+      const std::string name =
+          p.id + (variant.empty() ? "" : variant.find("handout") != std::string::npos ? "-handout" : "-v3");
       const auto tex = dir / (name + ".tex");
       const RunResult solve = run_shell("'" + std::string(WOBBLE_EXE) + "' solve " + p.id +
                                         variant + " --format latex > '" + tex.string() + "'");
