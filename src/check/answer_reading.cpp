@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <regex>
 #include <vector>
 
 #include "check/text.hpp"
@@ -120,8 +119,23 @@ std::string prepared(const std::string& typed) {
   for (char& c : s) {
     if (c == '\n' || c == '\r' || c == '\t') c = ' ';
   }
-  static const std::regex signed_exponent(R"(\^\s*([+-])\s*([0-9]+(\.[0-9]+)?))");
-  return trim(std::regex_replace(s, signed_exponent, "^($1$2)"));
+  // "10^-4" -> "10^(-4)": a signed number after '^' (no std::regex: GCC 12 warns inside it).
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    out += s[i];
+    if (s[i] != '^') continue;
+    std::size_t j = i + 1;
+    while (j < s.size() && s[j] == ' ') ++j;
+    if (j >= s.size() || (s[j] != '-' && s[j] != '+')) continue;
+    const char sign = s[j++];
+    while (j < s.size() && s[j] == ' ') ++j;
+    const std::size_t start = j;
+    while (j < s.size() && (std::isdigit(static_cast<unsigned char>(s[j])) || s[j] == '.')) ++j;
+    if (j == start) continue;
+    out += "(" + std::string(1, sign) + s.substr(start, j - start) + ")";
+    i = j - 1;
+  }
+  return trim(out);
 }
 
 // The value and the unit after it ("" if none): the first split whose right side is a unit.

@@ -4,7 +4,6 @@
 #include <cctype>
 #include <cmath>
 #include <map>
-#include <regex>
 #include <vector>
 
 #include "solvers/key.hpp"
@@ -179,10 +178,20 @@ std::optional<std::pair<std::string, std::size_t>> dotted_greek(const std::strin
     if (dot) j += 2;
     std::size_t k = j;
     while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
-    if (!dot && k == j) return std::nullopt;
+    std::string subscript = s.substr(j, k - j);
+    if (k == j && k + 1 < s.size() && s[k] == '_') {  // Ω_i, Ω_ij: a one- or two-letter index
+      std::size_t e = k + 1;
+      while (e < s.size() && e - k - 1 < 3 && std::isalnum(static_cast<unsigned char>(s[e]))) ++e;
+      if (e - k - 1 >= 1 && e - k - 1 <= 2 &&
+          (e == s.size() || !std::isalnum(static_cast<unsigned char>(s[e])))) {
+        subscript = s.substr(k + 1, e - k - 1);
+        k = e;
+      }
+    }
+    if (!dot && subscript.empty()) return std::nullopt;
     const std::string symbol = "\\" + (name == "pi" ? std::string("pi") : name);
     std::string math = dot ? "\\dot{" + symbol + "}" : symbol;
-    if (k > j) math += "_{" + s.substr(j, k - j) + "}";
+    if (!subscript.empty()) math += "_{" + subscript + "}";
     return std::make_pair("$" + math + "$", k);
   }
   return std::nullopt;
@@ -246,12 +255,21 @@ std::string latex_text(const std::string& s) {
     // A number in e-notation in prose: "4.4e-16" -> 4.4 $\times 10^{-16}$.
     if (std::isdigit(static_cast<unsigned char>(s[i])) &&
         (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
-      static const std::regex e_number(R"(^([0-9]+(\.[0-9]+)?)[eE]([-+]?)0*([0-9]+))");
-      std::smatch m;
-      const std::string rest = s.substr(i, 40);
-      if (std::regex_search(rest, m, e_number)) {
-        out += m[1].str() + "$\\times 10^{" + (m[3].str() == "-" ? "-" : "") + m[4].str() + "}$";
-        i += static_cast<std::size_t>(m.length(0));
+      std::size_t j = i;
+      while (j < s.size() && (std::isdigit(static_cast<unsigned char>(s[j])) || s[j] == '.')) ++j;
+      std::size_t k = j + 1;
+      const bool negative = k < s.size() && s[k] == '-';
+      if (k < s.size() && (s[k] == '-' || s[k] == '+')) ++k;
+      while (k < s.size() && s[k] == '0' && k + 1 < s.size() &&
+             std::isdigit(static_cast<unsigned char>(s[k + 1]))) {
+        ++k;  // "e-05" -> 10^{-5}
+      }
+      const std::size_t digits = k;
+      while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+      if (j < s.size() && (s[j] == 'e' || s[j] == 'E') && k > digits) {
+        out += s.substr(i, j - i) + "$\\times 10^{" + (negative ? "-" : "") +
+               s.substr(digits, k - digits) + "}$";
+        i = k;
         continue;
       }
     }

@@ -49,6 +49,13 @@ std::string statement_latex(const std::string& md) {
   if (bold) out += '}';
   return out;
 }
+// A name in typewriter type as typed (latex_text would set Omega_body as a symbol).
+std::string texttt_escaped(const std::string& name) {
+  std::string out;
+  for (const char c : name) out += c == '_' ? std::string("\\_") : std::string(1, c);
+  return out;
+}
+
 // The one pmatrix in a formula: the text before it, its cells (row-major) and the text after;
 // nullopt if the formula has none or more than one.
 struct MatrixFormula {
@@ -187,7 +194,7 @@ std::string render_latex(const Key& key) {
       // The name as a symbol where it reads as one, with the name `check --name` takes.
       const auto symbol = detail::name_latex(a.name);
       out += "\\noindent" + (symbol ? "$" + *symbol + "$\\quad" : std::string()) +
-             "{\\small\\texttt{" + latex_text(a.name) + "}}:\n";
+             "{\\small\\texttt{" + texttt_escaped(a.name) + "}}:\n";
       if (!a.symbolic.empty()) out += display(a.latex) + "\n";
       out += "\\fit{" + std::string(a.symbolic.empty() ? "" : "= ") + value_latex(a.value) +
              detail::unit_latex(a.unit) + "}\n";
@@ -197,7 +204,8 @@ std::string render_latex(const Key& key) {
       out += "\\paragraph{Steps}\n\\begin{enumerate}\n";
       for (const auto& s : part.steps) {
         const std::string& prose = s.latex.empty() ? s.text : s.label;
-        out += "\\item " + latex_text(prose);
+        // Step prose is written for a terminal (sqrt, names): as the text key shows it.
+        out += "\\item " + latex_text(detail::pretty(prose));
         if (!s.latex.empty()) out += display(s.latex);
         out += "\n";
       }

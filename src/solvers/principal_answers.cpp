@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/principal_axes.hpp"
+#include "symbolic/principal_refined.hpp"
 #include "symbolic/canonical_print.hpp"
 #include "symbolic/principal_sym.hpp"
 
@@ -103,10 +104,31 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
   const double tol = moment_tolerance(I_numeric);
 
   std::array<std::size_t, 3> order{0, 1, 2};
+  // Without a closed form, the exact tensor diagonalised in 60 digits (principal_refined.hpp):
+  // double precision alone loses eps |I| / gap in the axes of nearly equal moments.
+  PrincipalAxes refined = pa;
+  if (sp.method == sym::SymPrincipal::Method::numeric && pa.degeneracy == Degeneracy::none) {
+    const sym::RefinedPrincipal r = sym::refined_principal(I_exact, ctx.at);
+    refined.moments = r.moments;
+    refined.axes.col(0) = canonical_sign(r.axes.col(0));
+    refined.axes.col(1) = canonical_sign(r.axes.col(1));
+    const Vec3 e3 = r.axes.col(2);
+    refined.axes.col(2) = refined.axes.col(0).cross(refined.axes.col(1)).dot(e3) < 0 ? Vec3(-e3) : e3;
+    for (int k = 0; k < 3; ++k) {
+      const double gap = std::min(k > 0 ? pa.moments[k] - pa.moments[k - 1] : INFINITY,
+                                  k < 2 ? pa.moments[k + 1] - pa.moments[k] : INFINITY);
+      if (std::abs(refined.moments[k] - pa.moments[k]) > tol ||
+          (refined.axes.col(k) - pa.axes.col(k)).norm() > tol / gap + 64 * kEps) {
+        throw std::logic_error(fmt::format(
+            "{}: the 60-digit principal axis {} disagrees with the double-precision one",
+            axes_name, k + 1));
+      }
+    }
+  }
   if (sp.method == sym::SymPrincipal::Method::numeric) {
-    out.moments = numeric_vector(moments_name, pa.moments, unit,
+    out.moments = numeric_vector(moments_name, refined.moments, unit,
                                  "Numeric: no closed form (the characteristic cubic does not "
-                                 "factor).");
+                                 "factor); computed from the exact tensor in 60 digits.");
   } else {
     std::array<double, 3> values{};
     for (std::size_t i = 0; i < 3; ++i)
@@ -152,8 +174,10 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
     }
   }
   if (!exact_axes[0] || !exact_axes[1] || !exact_axes[2]) {
-    out.axes = numeric_matrix(axes_name, pa.axes, "",
-                              "Numeric: computed at the given values (no closed form).");
+    out.axes = numeric_matrix(axes_name, refined.axes, "",
+                              "Numeric: computed at the given values (no closed form), from the "
+                              "exact tensor in 60 digits, so every printed digit is right even "
+                              "for nearly equal moments.");
     return out;
   }
   if (sp.method == sym::SymPrincipal::Method::block) {

@@ -3,7 +3,8 @@
 // (pdftotext, poppler-utils) none of the leaks a reader would see: program syntax, raw names
 // with underscores, the stroked ⊮ that amssymb prints for \mathbb{1}.
 #include <catch2/catch.hpp>
-#include <regex>
+#include <algorithm>
+#include <cctype>
 
 #include "cli/run.hpp"
 #include "problem/load.hpp"
@@ -12,24 +13,44 @@
 using namespace wobble::test;
 
 namespace {
-// The widest overfull box in a pdflatex log, in pt (0 if none).
+// The widest overfull box in a pdflatex log, in pt (0 if none). (No std::regex: GCC 12 warns
+// inside it under the sanitizer build's -Werror.)
 double widest_overfull(const std::string& log) {
-  static const std::regex overfull(R"(Overfull \\hbox \(([0-9.]+)pt too wide\))");
+  const std::string mark = "Overfull \\hbox (";
   double widest = 0;
-  for (auto it = std::sregex_iterator(log.begin(), log.end(), overfull);
-       it != std::sregex_iterator(); ++it) {
-    widest = std::max(widest, std::stod((*it)[1].str()));
+  for (auto p = log.find(mark); p != std::string::npos; p = log.find(mark, p + 1)) {
+    widest = std::max(widest, std::stod(log.substr(p + mark.size(), 20)));
   }
   return widest;
+}
+
+bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+
+// What must never show on a page: GiNaC syntax (a*b, x^2, sin(theta0)), the glyph amssymb
+// prints for \mathbb{1}, e-notation. The first one found, or "".
+std::string first_leak(const std::string& t) {
+  for (const std::string s : {"⊮", "sin(theta", "cos(theta", "sin(alpha", "cos(alpha",
+                              "sqrt(", "sin(phi", "cos(phi", "sin(psi", "cos(psi"}) {
+    if (t.find(s) != std::string::npos) return s;
+  }
+  for (std::size_t i = 1; i + 1 < t.size(); ++i) {
+    if ((t[i] == '*' || t[i] == '^') && word_char(t[i - 1]) && word_char(t[i + 1])) {
+      return t.substr(i - 1, 3);
+    }
+    const bool e = (t[i] == 'e' || t[i] == 'E') && std::isdigit(static_cast<unsigned char>(t[i - 1]));
+    std::size_t k = i + 1;
+    if (k < t.size() && (t[k] == '-' || t[k] == '+')) ++k;
+    if (e && k < t.size() && std::isdigit(static_cast<unsigned char>(t[k]))) {
+      return t.substr(i - 1, k - i + 2);
+    }
+  }
+  return "";
 }
 }  // namespace
 
 TEST_CASE("every LaTeX key and handout compiles, with no overfull line and no leaked code") {
   const auto dir = scratch_dir() / "latex";
   std::filesystem::create_directories(dir);
-  // Things that must never show on a page: GiNaC syntax (a*b, x^2, sin(theta0)), the glyph
-  // amssymb prints for \mathbb{1}, e-notation.
-  static const std::regex leaks(R"(\w\*\w|\w\^\w|\b(sin|cos|tan|sqrt)\((theta|phi|psi|alpha)|⊮|\d[eE][-+]?\d)");
   constexpr double kMaxOverfull_pt = 1.0;  // below a point nothing sticks out visibly
   for (const auto& p : wobble::load_catalog()) {
     for (const std::string variant : {"", " --variant 3", " --variant 5 --handout"}) {
@@ -48,10 +69,9 @@ TEST_CASE("every LaTeX key and handout compiles, with no overfull line and no le
       REQUIRE(widest_overfull(slurp(dir / (name + ".log"))) <= kMaxOverfull_pt);
       const RunResult text = run_shell("pdftotext '" + (dir / (name + ".pdf")).string() + "' -");
       REQUIRE(text.exit_code == 0);
-      std::smatch m;
-      const bool leaked = std::regex_search(text.out, m, leaks);
-      INFO("leak: " << (leaked ? m.str() : ""));
-      REQUIRE_FALSE(leaked);
+      const std::string leak = first_leak(text.out);
+      INFO("leak: " << leak);
+      REQUIRE(leak.empty());
     }
   }
 }

@@ -1,5 +1,8 @@
 // The hard-case suite (issue 5): one named test per case where naive formulas break. Each
 // tolerance says where it comes from.
+#include <Eigen/Dense>
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -12,10 +15,15 @@
 #include "core/principal_axes.hpp"
 #include "core/shapes.hpp"
 #include "core/torque_free_symmetric.hpp"
+#include "problem/load.hpp"
+#include "problem/values.hpp"
+#include "solvers/solve.hpp"
+#include "temp_files.hpp"
 
 using namespace wobble;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
+using Catch::Matchers::WithinULP;
 
 namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -219,4 +227,123 @@ TEST_CASE("hard 10: a million splitting steps keep |L| and the attitude to round
   const Mat3 R = s.q_BtoS.toRotationMatrix();
   REQUIRE((R.transpose() * R - Mat3::Identity()).cwiseAbs().maxCoeff() <= walk);
   REQUIRE(((s.q_BtoS * s.m_B) - m0).norm() <= walk);
+}
+
+namespace {
+// Four unit masses on the x and y axes and two small ones off them: the x-y moments differ by
+// a few times `small`, so in double precision the axes lose eps |I| / gap.
+std::string near_degenerate_problem(const std::string& small) {
+  return R"TOML(id = "near-degenerate"
+title = "t"
+solver = "inertia"
+statement = "s"
+
+[[parameters]]
+name = "m"
+unit = "kg"
+default = 1
+range = "(0, inf)"
+
+[[parameters]]
+name = "e"
+unit = "kg"
+default = )TOML" + small + R"TOML(
+range = "(0, inf)"
+
+[body]
+masses = [ { mass = "m", at = ["1", "0", "0"] }, { mass = "m", at = ["-1", "0", "0"] },
+           { mass = "m", at = ["0", "1", "0"] }, { mass = "m", at = ["0", "-1", "0"] },
+           { mass = "e", at = ["1", "2", "3"] }, { mass = "2*e", at = ["-2", "1", "1"] } ]
+
+[[parts]]
+id = "a"
+question = "q"
+answers = ["principal_moments", "principal_axes"]
+)TOML";
+}
+}  // namespace
+
+namespace {
+using Big = boost::multiprecision::cpp_bin_float_50;
+using BigVec = std::array<Big, 3>;
+
+// Eigenvalues (ascending) of a symmetric 3x3 by the trigonometric closed form (Smith 1961), and
+// each eigenvector as the cross product of two rows of A - lambda 1: another algorithm than the
+// implementation's Jacobi rotations, in another library's arithmetic. In 50 digits its
+// ill-conditioning near equal moments (digits lost ~ eps_50 / gap) leaves over 30 digits.
+std::array<std::pair<Big, BigVec>, 3> smith_eigen(const std::array<BigVec, 3>& A) {
+  const Big p1 = A[0][1] * A[0][1] + A[0][2] * A[0][2] + A[1][2] * A[1][2];
+  const Big q = (A[0][0] + A[1][1] + A[2][2]) / 3;
+  const Big p2 = (A[0][0] - q) * (A[0][0] - q) + (A[1][1] - q) * (A[1][1] - q) +
+                 (A[2][2] - q) * (A[2][2] - q) + 2 * p1;
+  const Big p = sqrt(p2 / 6);
+  std::array<BigVec, 3> B;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) B[i][j] = (A[i][j] - (i == j ? q : Big(0))) / p;
+  const Big r = (B[0][0] * (B[1][1] * B[2][2] - B[1][2] * B[2][1]) -
+                 B[0][1] * (B[1][0] * B[2][2] - B[1][2] * B[2][0]) +
+                 B[0][2] * (B[1][0] * B[2][1] - B[1][1] * B[2][0])) / 2;
+  const Big phi = acos(r < -1 ? Big(-1) : r > 1 ? Big(1) : r) / 3;
+  const Big pi = boost::math::constants::pi<Big>();
+  const Big largest = q + 2 * p * cos(phi), smallest = q + 2 * p * cos(phi + 2 * pi / 3);
+  const std::array<Big, 3> lambda{smallest, 3 * q - largest - smallest, largest};
+  std::array<std::pair<Big, BigVec>, 3> out;
+  for (int k = 0; k < 3; ++k) {
+    std::array<BigVec, 3> M = A;
+    for (int i = 0; i < 3; ++i) M[i][i] -= lambda[k];
+    // The largest cross product of two rows is the best conditioned.
+    BigVec best{0, 0, 0};
+    Big best_norm = 0;
+    for (int a = 0; a < 3; ++a) {
+      for (int b = a + 1; b < 3; ++b) {
+        const BigVec c{M[a][1] * M[b][2] - M[a][2] * M[b][1], M[a][2] * M[b][0] - M[a][0] * M[b][2],
+                       M[a][0] * M[b][1] - M[a][1] * M[b][0]};
+        const Big n = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        if (n > best_norm) {
+          best_norm = n;
+          best = c;
+        }
+      }
+    }
+    for (auto& x : best) x /= best_norm;
+    out[k] = {lambda[k], best};
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("hard 13: nearly equal moments of an exact tensor: the axes right to the last digit") {
+  for (const std::string small : {"1e-9", "1e-12"}) {
+    INFO("small mass " << small);
+    const Problem p = load_problem(
+        wobble::test::write_file("hard/near-" + small + ".toml", near_degenerate_problem(small)));
+    const Key key = solve(p, parameter_values(p, {}));
+    const auto& moments = key.parts.at(0).answers.at(0).value.data;
+    const auto& axes = key.parts.at(0).answers.at(1).value.data;
+    // The reference: the same tensor summed in 50 digits from the masses.
+    const Big e(small);
+    const std::vector<std::pair<Big, BigVec>> masses{{1, {1, 0, 0}}, {1, {-1, 0, 0}},
+                                                     {1, {0, 1, 0}}, {1, {0, -1, 0}},
+                                                     {e, {1, 2, 3}}, {2 * e, {-2, 1, 1}}};
+    std::array<BigVec, 3> I{};
+    for (const auto& [m, r] : masses) {
+      const Big r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) I[i][j] += m * ((i == j ? r2 : Big(0)) - r[i] * r[j]);
+      }
+    }
+    const auto reference = smith_eigen(I);
+    for (std::size_t k = 0; k < 3; ++k) {
+      // Rounded once from many digits: within an ulp of the reference.
+      REQUIRE_THAT(moments.at(k), WithinULP(static_cast<double>(reference[k].first), 1));
+      Big dot = 0;
+      for (std::size_t i = 0; i < 3; ++i) dot += reference[k].second[i] * axes.at(3 * i + k);
+      const double sign = dot < 0 ? -1.0 : 1.0;
+      for (std::size_t i = 0; i < 3; ++i) {
+        // Each component rounded once (half an ulp of numbers below 1), eps as the bound.
+        REQUIRE_THAT(axes.at(3 * i + k),
+                     WithinAbs(sign * static_cast<double>(reference[k].second[i]), kEps));
+      }
+    }
+  }
 }
