@@ -28,7 +28,8 @@ void setup_solve(CLI::App& app, SolveOptions& opt) {
       ->check(CLI::IsMember({"text", "markdown", "latex", "json"}));
   app.add_option("--part", opt.part, "Print only this part (its id, e.g. b)");
   app.add_option("--figure", opt.figure,
-                 "Write the sketch of e3, w, L and the cones as SVG (torque-free symmetric tops)");
+                 "Write the sketch of e3, w, L and the cones as .svg, .png or .pdf (torque-free "
+                 "symmetric tops); a LaTeX key includes it");
   app.add_flag("--force", opt.force, "Overwrite an existing --figure file");
   app.add_option("--variant", opt.variant, "Per-student values: variant N (1, 2, ...)");
   app.add_flag("--handout", opt.handout,
@@ -69,10 +70,20 @@ int run_solve(const SolveOptions& opt) {
                        " has no sketch (only torque-free "
                        "symmetric tops do)");
     }
+    const std::string ext = std::filesystem::path(opt.figure).extension().string();
+    if (ext != ".svg" && ext != ".png" && ext != ".pdf") {
+      throw InputError("--figure: " + opt.figure + ": the file must end in .svg, .png or .pdf");
+    }
+    if (opt.format == "latex" && ext == ".svg") {
+      throw InputError("--figure: " + opt.figure +
+                       ": pdflatex includes .pdf or .png, not .svg (the LaTeX key includes the "
+                       "sketch)");
+    }
     if (std::filesystem::exists(opt.figure) && !opt.force) {
       throw InputError("--figure: " + opt.figure + " exists; use --force to overwrite it");
     }
     write_top_sketch(top_sketch(problem, values), opt.figure);
+    key.figure = opt.figure;
   }
   if (opt.handout) {
     const auto shown = shown_values(assignments);

@@ -212,7 +212,7 @@ std::string render_bench(const BenchReport& r, const std::string& format) {
 }
 
 void write_bench_plot(const BenchReport& r, const std::filesystem::path& out) {
-  draw_svg_with_gnuplot(
+  draw_with_gnuplot(
       [&](const std::filesystem::path& svg) {
         std::string g = "set encoding utf8\n";
         g += fmt::format(

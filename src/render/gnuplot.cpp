@@ -6,9 +6,12 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "render/atomic_write.hpp"
 
@@ -16,20 +19,44 @@ extern char** environ;
 
 namespace wobble {
 
-void draw_svg_with_gnuplot(const std::function<std::string(const std::filesystem::path&)>& script,
-                           const std::filesystem::path& out) {
+namespace {
+// A new file in `dir` named ".NAME.XXXXXX<suffix>", created exclusively (O_EXCL, mode 0600):
+// a planted file or link of that name is never written through.
+std::filesystem::path exclusive_temp(const std::filesystem::path& dir, const std::string& name,
+                                     const std::string& suffix) {
+  std::string tmpl = (dir / ("." + name + ".XXXXXX" + suffix)).string();
+  const int fd = ::mkstemps(tmpl.data(), static_cast<int>(suffix.size()));
+  if (fd < 0) {
+    throw std::runtime_error(dir.string() + ": cannot create a temporary file: " +
+                             std::strerror(errno));
+  }
+  ::close(fd);
+  return tmpl;
+}
+}  // namespace
+
+void draw_with_gnuplot(const std::function<std::string(const std::filesystem::path&)>& script,
+                       const std::filesystem::path& out) {
   require_regular_or_absent(out);
   const std::filesystem::path dir = out.has_parent_path() ? out.parent_path() : ".";
-  const std::string stem = "." + out.filename().string() + "." + std::to_string(::getpid());
-  const auto svg_tmp = dir / (stem + ".svg.tmp"), script_file = dir / (stem + ".gp");
+  const std::string name = out.filename().string();
+  const auto figure_tmp = exclusive_temp(dir, name, out.extension().string());
+  std::filesystem::path script_file;
+  try {
+    script_file = exclusive_temp(dir, name, ".gp");
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(figure_tmp, ec);
+    throw;
+  }
   auto cleanup = [&] {
     std::error_code ec;
-    std::filesystem::remove(svg_tmp, ec);
+    std::filesystem::remove(figure_tmp, ec);
     std::filesystem::remove(script_file, ec);
   };
   {
-    std::ofstream f(script_file);
-    f << script(svg_tmp);
+    std::ofstream f(script_file, std::ios::trunc);
+    f << script(figure_tmp);
     if (!f) {
       cleanup();
       throw std::runtime_error(out.string() + ": cannot write in " + dir.string());
@@ -54,20 +81,41 @@ void draw_svg_with_gnuplot(const std::function<std::string(const std::filesystem
     posix_spawn_file_actions_destroy(&actions);
   }
   std::error_code ec;
-  if (status != 0 || !std::filesystem::exists(svg_tmp, ec) ||
-      std::filesystem::file_size(svg_tmp, ec) == 0) {
+  if (status != 0 || !std::filesystem::exists(figure_tmp, ec) ||
+      std::filesystem::file_size(figure_tmp, ec) == 0) {
     cleanup();
     throw std::runtime_error(
         out.string() +
         ": gnuplot failed to draw the figure (is gnuplot installed? scripts/setup "
         "installs it)");
   }
-  std::filesystem::rename(svg_tmp, out, ec);
+  std::filesystem::rename(figure_tmp, out, ec);
   if (ec) {
     cleanup();
     throw std::runtime_error(out.string() + ": cannot replace: " + ec.message());
   }
   cleanup();
+}
+
+std::string gnuplot_terminal(const std::filesystem::path& file, int width, int height) {
+  const std::string ext = file.extension().string();
+  if (ext == ".svg") {
+    return fmt::format("set terminal svg size {},{} dynamic font \"Helvetica,15\" background "
+                       "rgb \"white\"\n",
+                       width, height);
+  }
+  if (ext == ".png") {
+    return fmt::format("set terminal pngcairo size {},{} font \"Helvetica,13\" background rgb "
+                       "\"white\"\n",
+                       width, height);
+  }
+  if (ext == ".pdf") {
+    // pdfcairo sizes in inches: 180 pixels to the inch makes a 760-pixel figure about 4.2 in,
+    // the width a LaTeX key includes it at, so its 8 pt text prints at 8 pt.
+    return fmt::format("set terminal pdfcairo size {:.2f}in,{:.2f}in font \"Helvetica,8\"\n",
+                       width / 180.0, height / 180.0);
+  }
+  throw std::invalid_argument(file.string() + ": a figure is .svg, .png or .pdf");
 }
 
 std::string gnuplot_quote(const std::string& text) {

@@ -188,6 +188,11 @@ std::string render_latex(const Key& key) {
     out += fmt::format("{}${} = {}$", i ? ", " : "", p.latex, detail::parameter_value_latex(p));
   }
   out += ".\n";
+  if (!key.figure.empty()) {
+    // The sketch, by the path it was written to (relative paths resolve where pdflatex runs).
+    out += "\\begin{center}\\includegraphics[width=0.62\\linewidth]{" + key.figure +
+           "}\\end{center}\n";
+  }
   for (const auto& part : key.parts) {
     out += fmt::format("\n\\subsection*{{({}) {}}}\n", part.id, latex_text(part.question));
     for (const auto& a : part.answers) {

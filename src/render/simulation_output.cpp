@@ -219,7 +219,7 @@ void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
     if (panels.empty() || panels.back().title != base) panels.push_back({base, {}});
     panels.back().cols.push_back(j);
   }
-  draw_svg_with_gnuplot(
+  draw_with_gnuplot(
       [&](const std::filesystem::path& svg) {
         std::string g = "set encoding utf8\n";
         g += fmt::format(

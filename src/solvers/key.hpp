@@ -92,6 +92,7 @@ struct ParameterValue {
 struct Key {
   std::string problem, title, source, statement;
   std::optional<long> variant;  ///< the student's variant the values are drawn for, if any
+  std::string figure;           ///< a sketch drawn beside the key (a LaTeX key includes it)
   std::vector<std::string> notes;  ///< conventions and choices, printed with every key
   std::vector<ParameterValue> parameters;
   std::vector<PartKey> parts;

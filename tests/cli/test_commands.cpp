@@ -194,11 +194,15 @@ TEST_CASE("solve --figure draws the sketch with gnuplot, never overwrites withou
   REQUIRE(r.exit_code == 0);
   const std::string content = slurp(svg);
   REQUIRE_THAT(content, Catch::StartsWith("<?xml") && Catch::Contains("<svg"));
-  for (const std::string label :
-       {"<text>e3</text>", "<text>ω</text>", "<text>L</text>", "<text>Ω_body</text>",
-        "<text>Ω_space</text>", "body cone", "space cone"}) {
+  // Labels with true subscripts (gnuplot's enhanced text: a smaller, lowered tspan), never a
+  // literal underscore.
+  const std::string sub = "<tspan font-family=\"Helvetica\"  font-size=\"12.0\" dy=\"4.50px\">";
+  for (const std::string& label : std::vector<std::string>{
+           ">e</tspan>" + sub + "3", ">ω</tspan>", ">L</tspan>", ">Ω</tspan>" + sub + "body",
+           ">Ω</tspan>" + sub + "space", "body cone", "space cone"}) {
     CHECK_THAT(content, Catch::Contains(label));
   }
+  CHECK_THAT(content, !Catch::Contains("Ω_") && !Catch::Contains("e3<"));
   // No temporary files left beside it.
   for (const auto& entry : fs::directory_iterator(svg.parent_path())) {
     CHECK(entry.path().filename().string()[0] != '.');
@@ -222,6 +226,38 @@ TEST_CASE("solve --figure draws the sketch with gnuplot, never overwrites withou
   REQUIRE_THAT(slurp(odd), Catch::Contains("<svg"));
   REQUIRE_FALSE(fs::exists("pwned.svg"));
   REQUIRE_FALSE(fs::exists(svg.parent_path() / "pwned.svg"));
+  // PNG and PDF by the extension; anything else is refused before drawing.
+  const fs::path png = svg.parent_path() / "plate.png", pdf = svg.parent_path() / "plate.pdf";
+  REQUIRE(run_wobble({"solve", "flying-plate", "--figure", png.string(), "--force"}).exit_code ==
+          0);
+  REQUIRE(slurp(png).substr(1, 3) == "PNG");
+  REQUIRE(run_wobble({"solve", "flying-plate", "--figure", pdf.string(), "--force"}).exit_code ==
+          0);
+  REQUIRE(slurp(pdf).substr(0, 5) == "%PDF-");
+  const RunResult gif =
+      run_wobble({"solve", "flying-plate", "--figure", (svg.parent_path() / "p.gif").string()});
+  REQUIRE(gif.exit_code == 2);
+  REQUIRE_THAT(gif.err, Catch::Contains(".svg, .png or .pdf"));
+}
+
+TEST_CASE("a LaTeX key includes its sketch and compiles with it, at several angles") {
+  const fs::path dir = scratch_dir() / "latex-figure";
+  fs::create_directories(dir);
+  for (const std::string alpha : {"2deg", "40deg", "85deg"}) {
+    const RunResult r = run_shell("cd '" + dir.string() + "' && '" + WOBBLE_EXE +
+                                  "' solve rect-solid --set alpha=" + alpha +
+                                  " --format latex --figure sketch.pdf --force > key.tex && "
+                                  "pdflatex -interaction=nonstopmode -halt-on-error key.tex");
+    INFO(alpha << "\n" << r.out.substr(r.out.size() > 2000 ? r.out.size() - 2000 : 0));
+    REQUIRE(r.exit_code == 0);
+    REQUIRE_THAT(slurp(dir / "key.tex"),
+                 Catch::Contains("\\includegraphics[width=0.62\\linewidth]{sketch.pdf}"));
+  }
+  // pdflatex cannot include SVG: said before anything is drawn.
+  const RunResult svg = run_wobble({"solve", "rect-solid", "--format", "latex", "--figure",
+                                    (dir / "s.svg").string()});
+  REQUIRE(svg.exit_code == 2);
+  REQUIRE_FALSE(fs::exists(dir / "s.svg"));
 }
 
 TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback") {
