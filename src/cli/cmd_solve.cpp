@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "problem/load.hpp"
 #include "problem/values.hpp"
+#include "render/atomic_write.hpp"
 #include "render/figure.hpp"
 #include "render/handout.hpp"
 #include "render/render.hpp"
@@ -70,6 +71,8 @@ int run_solve(const SolveOptions& opt) {
                        " has no sketch (only torque-free "
                        "symmetric tops do)");
     }
+    // A device or link is never replaced, and an unwritable folder is found before the work.
+    require_writable(opt.figure);
     const std::string ext = std::filesystem::path(opt.figure).extension().string();
     if (ext != ".svg" && ext != ".png" && ext != ".pdf") {
       throw InputError("--figure: " + opt.figure + ": the file must end in .svg, .png or .pdf");
