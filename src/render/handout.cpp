@@ -25,6 +25,18 @@ std::pair<std::string, std::string> shown_value(
   return {format_number(p.value), p.unit};
 }
 
+// "I0 [kg m²], I [kg m²]": the names `wobble check --name` takes, with their SI units, never
+// their values.
+std::string answer_names(const PartKey& part, bool markdown) {
+  std::string out;
+  for (const auto& a : part.answers) {
+    if (!out.empty()) out += ", ";
+    out += markdown ? "`" + a.name + "`" : a.name;
+    if (!a.unit.empty()) out += " [" + detail::pretty(a.unit) + "]";
+  }
+  return out;
+}
+
 std::string title_line(const Key& key, std::optional<long> variant) {
   return key.title + (variant ? fmt::format(" (variant {})", *variant) : "");
 }
@@ -42,7 +54,12 @@ std::string render_handout(const Key& key,
     out += fmt::format("| ${}$ | {} | {} | {} |\n", p.latex, value, unit,
                        detail::markdown_cell(p.description));
   }
-  for (const auto& part : key.parts) out += fmt::format("\n**({})** {}\n", part.id, part.question);
+  for (const auto& part : key.parts) {
+    out += fmt::format("\n**({})** {}\n", part.id, part.question);
+    if (!part.answers.empty()) {
+      out += "\n*Answers to give (`wobble check` names):* " + answer_names(part, true) + "\n";
+    }
+  }
   return out;
 }
 
@@ -65,7 +82,10 @@ std::string render_handout_text(const Key& key,
                        p.description.empty() ? "" : "   (" + p.description + ")");
   }
   if (with_questions) {
-    for (const auto& part : key.parts) out += fmt::format("\n({}) {}\n", part.id, part.question);
+    for (const auto& part : key.parts) {
+      out += fmt::format("\n({}) {}\n", part.id, part.question);
+      if (!part.answers.empty()) out += "    answers to give: " + answer_names(part, false) + "\n";
+    }
   }
   return out;
 }
