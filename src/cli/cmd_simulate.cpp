@@ -29,7 +29,7 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
   app.add_option("--samples", opt.samples,
                  "Number of output times, 2 to 1000000 (default: the scene's)");
   app.add_option("--out", opt.out, "Write the samples to FILE.csv or FILE.json instead");
-  app.add_option("--plot", opt.plot, "Draw the outputs against time as SVG (gnuplot)");
+  app.add_option("--plot", opt.plot, "Draw the outputs against time as .svg, .png or .pdf (gnuplot)");
   app.add_flag("--force", opt.force, "Overwrite existing --out and --plot files");
 }
 
@@ -48,8 +48,11 @@ int run_simulate(const SimulateOptions& opt) {
       throw InputError("--out: " + opt.out + ": the file must end in .csv or .json");
     }
   }
-  if (!opt.plot.empty() && std::filesystem::path(opt.plot).extension() != ".svg") {
-    throw InputError("--plot: " + opt.plot + ": the file must end in .svg");
+  if (!opt.plot.empty()) {
+    const std::string ext = std::filesystem::path(opt.plot).extension().string();
+    if (ext != ".svg" && ext != ".png" && ext != ".pdf") {
+      throw InputError("--plot: " + opt.plot + ": the file must end in .svg, .png or .pdf");
+    }
   }
   refuse_overwrite("--out", opt.out, opt.force);
   refuse_overwrite("--plot", opt.plot, opt.force);

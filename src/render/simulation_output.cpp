@@ -196,42 +196,89 @@ std::string cross_check_text(const CrossCheck& c, double key_time_s) {
   return out;
 }
 
-void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
-                           const std::filesystem::path& out) {
-  // Group columns by output (the part of the name before the last _x/_y/_z/_phi...).
-  struct Panel {
-    std::string title;
-    std::vector<std::size_t> cols;
-  };
+namespace {
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// An Euler angle's column made continuous: a jump over pi between samples is the angle
+// wrapping at +-pi, so a whole turn is added back (the table keeps (-pi, pi]; the plot shows
+// phi and psi growing as they do).
+void unwrap(std::vector<std::vector<double>>& rows, std::size_t j) {
+  double offset = 0.0;
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    const double step = rows[k][j] + offset - rows[k - 1][j];
+    offset -= 2 * M_PI * std::round(step / (2 * M_PI));
+    rows[k][j] += offset;
+  }
+}
+
+using Panel = PlotLayout::Panel;
+
+// Panels: one per output (the part of a column's name before _x/_y/_z/_phi/_psi), the tilt
+// theta on its own (nutation is invisible beside growing phi and psi), invariant errors on a
+// log scale per unit, an error column that is exactly zero left out.
+std::vector<Panel> plot_panels(const SimulationResult& r) {
   std::vector<Panel> panels;
   for (std::size_t j = 1; j < r.columns.size(); ++j) {
     std::string base = r.columns[j];
-    for (const char* suffix : {"_x", "_y", "_z", "_phi", "_theta", "_psi"}) {
-      const std::string sfx(suffix);
-      if (base.size() > sfx.size() &&
-          base.compare(base.size() - sfx.size(), sfx.size(), sfx) == 0) {
-        base.resize(base.size() - sfx.size());
-        break;
+    bool log_scale = false;
+    if (ends_with(base, "_theta")) {
+      base = "tilt θ (" + base.substr(0, base.size() - 6) + ")";
+    } else if (base.rfind("err_", 0) == 0) {
+      const bool all_zero = std::all_of(r.rows.begin(), r.rows.end(),
+                                        [&](const auto& row) { return row[j] == 0.0; });
+      if (all_zero) continue;  // conserved exactly: nothing to draw
+      base = "|invariant error| [" + r.units[j] + "]";
+      log_scale = true;
+    } else {
+      for (const char* suffix : {"_x", "_y", "_z", "_phi", "_psi"}) {
+        if (ends_with(base, suffix)) {
+          base.resize(base.size() - std::string(suffix).size());
+          if (std::string(suffix) == "_phi" || std::string(suffix) == "_psi") {
+            base += " (unwrapped)";
+          }
+          break;
+        }
       }
     }
-    // Errors of quantities with different units go to different panels.
-    if (base.rfind("err_", 0) == 0) base = "invariant errors [" + r.units[j] + "]";
-    if (panels.empty() || panels.back().title != base) panels.push_back({base, {}});
-    panels.back().cols.push_back(j);
+    auto it = std::find_if(panels.begin(), panels.end(),
+                           [&](const Panel& p) { return p.title == base; });
+    if (it == panels.end()) {
+      panels.push_back({base, {}, log_scale});
+      it = panels.end() - 1;
+    }
+    it->cols.push_back(j);
   }
+  return panels;
+}
+}  // namespace
+
+PlotLayout plot_layout(const SimulationResult& r) {
+  PlotLayout layout{plot_panels(r), r.rows};
+  for (std::size_t j = 1; j < r.columns.size(); ++j) {
+    if (ends_with(r.columns[j], "_phi") || ends_with(r.columns[j], "_psi")) unwrap(layout.rows, j);
+  }
+  return layout;
+}
+
+void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
+                           const std::filesystem::path& out) {
+  const PlotLayout layout = plot_layout(r);
+  const auto& panels = layout.panels;
+  const auto& rows = layout.rows;
   draw_with_gnuplot(
-      [&](const std::filesystem::path& svg) {
+      [&](const std::filesystem::path& file) {
         std::string g = "set encoding utf8\n";
-        g += fmt::format(
-            "set terminal svg size 900,{} dynamic font \"Helvetica,13\" background "
-            "rgb \"white\"\n",
-            std::max<std::size_t>(1, panels.size()) * 260);
-        g += fmt::format("set output \"{}\"\n", gnuplot_quote(svg.string()));
+        g += gnuplot_terminal(file, 900, static_cast<int>(std::max<std::size_t>(1, panels.size()) * 240));
+        g += fmt::format("set output \"{}\"\n", gnuplot_quote(file.string()));
         g += fmt::format("set multiplot layout {},1 title \"{}\" noenhanced\n", panels.size(),
                          gnuplot_quote(s.id + ": " + s.title));
-        g += "set grid\nset key outside right\nset xlabel \"t [s]\"\n";
+        // The same margins in every panel, so their time axes line up.
+        g += "set grid\nset key outside right\nset xlabel \"t [s]\"\n"
+             "set lmargin at screen 0.12\nset rmargin at screen 0.72\n";
         g += "$data << EOD\n";
-        for (const auto& row : r.rows) {
+        for (const auto& row : rows) {
           for (std::size_t j = 0; j < row.size(); ++j)
             g += fmt::format("{}{:.17g}", j ? " " : "", row[j]);
           g += "\n";
@@ -240,10 +287,15 @@ void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
         for (const auto& p : panels) {
           g += fmt::format("set ylabel \"[{}]\" noenhanced\n", gnuplot_quote(r.units[p.cols[0]]));
           g += fmt::format("set title \"{}\" noenhanced\n", gnuplot_quote(p.title));
+          g += p.log_scale ? "set logscale y\nset format y \"%.0e\"\n" : "unset logscale y\nset format y \"% h\"\n";
           g += "plot ";
           for (std::size_t k = 0; k < p.cols.size(); ++k) {
+            const std::size_t c = p.cols[k] + 1;
+            // On a log scale, |error|; a sample that is exactly 0 is left out (log 0).
+            const std::string y =
+                p.log_scale ? fmt::format("(abs(${0}) > 0 ? abs(${0}) : NaN)", c) : fmt::format("{}", c);
             g += fmt::format("{}$data using 1:{} with lines lw 2 title \"{}\" noenhanced",
-                             k ? ", " : "", p.cols[k] + 1, gnuplot_quote(r.columns[p.cols[k]]));
+                             k ? ", " : "", y, gnuplot_quote(r.columns[p.cols[k]]));
           }
           g += "\n";
         }

@@ -9,6 +9,7 @@
 /// says how far to trust them).
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "simulate/cross_check.hpp"
 #include "simulate/simulation.hpp"
@@ -24,7 +25,22 @@ std::string simulation_json(const SceneSetup& s, const SimulationResult& r);
 /// Significant digits the text table prints for this run.
 int printed_digits(const SceneSetup& s, const SimulationResult& r);
 
-/// Every output column against time, one panel per output, as SVG through gnuplot (atomic).
+/// What a plot of a run shows: panels of columns (one per output; the tilt theta on its own;
+/// invariant errors as |error| on a log scale, one panel per unit, an error that is exactly zero
+/// left out) and the rows with Euler angles phi and psi unwrapped (continuous, no jump at +-pi).
+struct PlotLayout {
+  struct Panel {
+    std::string title;
+    std::vector<std::size_t> cols;
+    bool log_scale = false;
+  };
+  std::vector<Panel> panels;
+  std::vector<std::vector<double>> rows;
+};
+PlotLayout plot_layout(const SimulationResult& r);
+
+/// Every output column against time, panels as plot_layout says, as .svg, .png or .pdf through
+/// gnuplot (atomic).
 /// @throws std::runtime_error naming the file if gnuplot fails.
 void write_simulation_plot(const SceneSetup& s, const SimulationResult& r,
                            const std::filesystem::path& out);

@@ -82,8 +82,13 @@ TEST_CASE("simulate --plot draws the outputs with gnuplot") {
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const std::string content = slurp(svg);
-  REQUIRE_THAT(content, Catch::Contains("<svg") && Catch::Contains("euler_zyz_theta") &&
-                            Catch::Contains("invariant errors [J]"));
+  REQUIRE_THAT(content, Catch::Contains("<svg") && Catch::Contains("tilt θ (euler_zyz)") &&
+                            Catch::Contains("euler_zyz (unwrapped)") &&
+                            Catch::Contains("|invariant error| [J]") &&
+                            !Catch::Contains("err_p_psi"));  // exactly zero: left out
+  const fs::path png = svg.parent_path() / "top.png";
+  REQUIRE(run_wobble({"simulate", "heavy-top", "--plot", png.string(), "--force"}).exit_code == 0);
+  REQUIRE(slurp(png).substr(1, 3) == "PNG");
 }
 
 TEST_CASE("solve --cross-check compares the closed forms with a simulation") {
