@@ -90,9 +90,16 @@ void read_effects(const Reader& r, const toml::table& root, Scene& s) {
       if (e->get("velocity")) ff.velocity = r.vector3(e->get("velocity"), f + ".velocity", e);
       s.free_flight = ff;
     } else {
-      r.only_keys(*e, f, {"value", "frame"});
+      r.only_keys(*e, f, {"value", "frame", "brake"});
       s.torque = TorqueSpec{r.vector3(e->get("value"), f + ".value", e),
-                            read_frame(r, *e, "frame", f + ".")};
+                            read_frame(r, *e, "frame", f + "."), false};
+      if (const toml::node* b = e->get("brake")) {
+        if (!b->is_boolean()) r.fail(b, f + ".brake", "must be true or false");
+        s.torque->brake = b->as_boolean()->get();
+        if (s.torque->brake && s.torque->frame != Frame::body) {
+          r.fail(b, f + ".brake", "a brake is fixed in the body: give frame = \"body\"");
+        }
+      }
     }
   }
   if (s.gravity && s.free_flight) {

@@ -43,6 +43,9 @@ struct FreeFlightSpec {
 struct TorqueSpec {
   Expr3 value;  ///< N m
   Frame frame = Frame::body;
+  /// A friction brake: the torque (fixed in the body, along a symmetry axis) opposes the spin
+  /// about its axis until that spin stops, then acts no more; it never spins a wheel backwards.
+  bool brake = false;
 };
 
 struct Scene {

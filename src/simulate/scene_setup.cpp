@@ -92,6 +92,41 @@ SceneSetup setup_scene(const Scene& scene, const std::vector<std::string>& assig
   return setup_scene_at(scene, parameter_values(scene.model, assignments));
 }
 
+namespace {
+// The brake's axis must be a symmetry axis (then w along it falls linearly and stops at a time
+// known exactly); the torque must oppose the spin about it.
+void set_brake(SceneSetup& s, const PrincipalAxes& pa) {
+  const Vec3 tau_P = s.model.torque_Nm;
+  const double tau = tau_P.norm();
+  if (!(tau > 0.0)) return;  // no torque: nothing brakes
+  const Vec3 a = tau_P / tau;
+  int axis = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(std::abs(a[k]) - 1.0) <= 1e-12) axis = k;
+  }
+  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+  const double tolerance = pa.degeneracy_tolerance;
+  if (axis < 0 || std::abs(pa.moments[i] - pa.moments[j]) > tolerance) {
+    throw InputError(
+        "effects.torque.brake: a brake acts about a symmetry axis of the body (the other two "
+        "moments equal), so that its spin stops at a time known exactly; this torque is not "
+        "along one");
+  }
+  const double w_a = s.m0_P[axis] / pa.moments[axis];
+  if (w_a * tau_P[axis] > 0.0) {
+    throw InputError(fmt::format(
+        "effects.torque.brake: a brake opposes the spin about its axis; here it would speed up "
+        "the spin ({:.6g} rad/s): give the torque the other sign",
+        w_a));
+  }
+  s.brake_axis_P = Vec3::Zero();
+  s.brake_axis_P[axis] = 1.0;
+  s.brake_stops_s = pa.moments[axis] * std::abs(w_a) / tau;
+  s.effects.back() += fmt::format(", a brake: the spin about its axis stops at t = {:.10g} s",
+                                  *s.brake_stops_s);
+}
+}  // namespace
+
 SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
   const BodyContext ctx(scene.model, values);
   const Eval ev{ctx};
@@ -164,6 +199,7 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
         "initial.omega: the body does not turn and nothing acts on it; give a "
         "non-zero angular velocity");
   }
+  if (scene.torque && scene.torque->brake) set_brake(s, pa);
   s.t_end = ev.positive(scene.t_end, "run.t_end");
   s.samples = scene.samples;
   s.tolerance = scene.tolerance;

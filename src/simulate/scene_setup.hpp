@@ -37,6 +37,10 @@ struct SceneSetup {
   std::string method = "auto";
   std::vector<std::string> outputs;
   std::vector<std::string> effects;  ///< in words, for the header ("torque-free" if none)
+  /// A brake (TorqueSpec::brake): the time its spin stops, s; the torque acts before it only.
+  /// It is exact: about a symmetry axis a, I_a dw_a/dt = tau_a, so w_a falls linearly.
+  std::optional<double> brake_stops_s;
+  Vec3 brake_axis_P = Vec3::Zero();  ///< unit, the brake's axis in P
 };
 
 /// Evaluates the scene at its defaults with `assignments` ("NAME=VALUE") applied.

@@ -96,20 +96,36 @@ std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
                                                            : RkMethod::rkf78;
   const double tol_or_step = rk == RkMethod::rk4 ? choice.step_s : s.tolerance;
   RungeKutta integrator(s.model, rk, tol_or_step, momentum_scale(s));
+  // A brake acts until its spin stops, then no more: the run is split there, and continues
+  // torque-free with the spin about the brake's axis exactly zero (it never turns backwards).
+  RigidBodyModel released = s.model;
+  released.torque = false;
+  RungeKutta after_stop(released, rk, tol_or_step, momentum_scale(s));
+  const double stop = s.brake_stops_s.value_or(INFINITY);
+  bool stopped = false;
   State7 y = pack(s.m0_P, s.q0_PtoS);
   double t = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
+    if (!stopped && times[k] >= stop) {
+      if (stop > t) integrator.advance(y, t, stop);
+      t = stop;
+      const Vec3 m = momentum_of(y);
+      y = pack(m - m.dot(s.brake_axis_P) * s.brake_axis_P, attitude_of(y));
+      stopped = true;
+    }
     if (times[k] > t) {
-      integrator.advance(y, t, times[k]);
+      (stopped ? after_stop : integrator).advance(y, t, times[k]);
       t = times[k];
     }
     out.push_back({momentum_of(y), attitude_of(y)});
     report(progress, k, n);
   }
   result.cost_label = "right-hand-side evaluations";
-  result.cost += integrator.cost().rhs_evals;
-  result.steps += integrator.cost().steps;
-  result.rejected += integrator.cost().rejected;
+  for (const RungeKutta* r : {&integrator, &after_stop}) {
+    result.cost += r->cost().rhs_evals;
+    result.steps += r->cost().steps;
+    result.rejected += r->cost().rejected;
+  }
   return out;
 }
 

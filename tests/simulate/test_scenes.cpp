@@ -367,3 +367,32 @@ TEST_CASE("a plot shows Euler angles unwrapped, the tilt alone, no exactly-zero 
   REQUIRE(tilt_alone);
   REQUIRE_FALSE(zero_error_drawn);
 }
+
+TEST_CASE("a brake stops the spin about its axis and never turns the wheel backwards") {
+  Scene sc = find_scene("wheel-brake");
+  sc.t_end = "10";  // well past the stop (4 s at the defaults)
+  sc.samples = 201;
+  const SceneSetup s = setup_scene(sc, std::vector<std::string>{});
+  REQUIRE(s.brake_stops_s.has_value());
+  // I3 w3 / tau: the cylinder (2 kg, R 0.2 m) has I3 = 0.04 kg m^2, w3 = 20 rad/s, tau 0.2 N m.
+  REQUIRE_THAT(*s.brake_stops_s, WithinRel(0.04 * 20 / 0.2, 4 * kEps));
+  const SimulationResult r = run(s, "auto");
+  const std::size_t wz = column(r, "omega_body_z");
+  for (const auto& row : r.rows) {
+    INFO("t = " << row[0]);
+    // Before the stop w3 falls linearly (tau / I3 = 5 rad/s^2), to the run's tolerance
+    // (1e-9 relative, 20 rad/s: a few 1e-8); after it, exactly zero.
+    const double want = std::max(0.0, 20.0 - 5.0 * row[0]);
+    REQUIRE_THAT(row[wz], WithinAbs(want, 1e-7));
+    if (row[0] >= *s.brake_stops_s) REQUIRE(row[wz] == 0.0);
+  }
+  // Refused: a brake that would speed the spin up, or one not about a symmetry axis.
+  Scene faster = find_scene("wheel-brake");
+  faster.torque->value = {"0", "0", "brake"};
+  REQUIRE_THROWS_WITH(setup_scene(faster, std::vector<std::string>{}),
+                      Catch::Contains("opposes the spin"));
+  Scene sideways = find_scene("wheel-brake");
+  sideways.torque->value = {"-brake", "0", "-brake"};
+  REQUIRE_THROWS_WITH(setup_scene(sideways, std::vector<std::string>{}),
+                      Catch::Contains("symmetry axis"));
+}
