@@ -148,7 +148,15 @@ std::pair<std::string, std::string> split_unit(const std::string& s) {
   return {s, ""};
 }
 
-bool has_symbols(const GiNaC::ex& e) { return !GiNaC::is_a<GiNaC::numeric>(GiNaC::evalf(e)); }
+// Whether e has one of the problem's symbols. (Not by evalf: GiNaC evaluates EllipticK(1)
+// forever, and an answer's range is checked only where it is evaluated, sym::evaluate.)
+bool has_symbols(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) return true;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (has_symbols(e.op(i))) return true;
+  }
+  return false;
+}
 }  // namespace
 
 std::string reading_form(const std::string& typed) {

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -225,6 +226,39 @@ namespace {
 struct DeepEvalf : GiNaC::map_function {
   GiNaC::ex operator()(const GiNaC::ex& e) override { return GiNaC::evalf(e.map(*this)); }
 };
+
+// A number for a message: 6 significant digits.
+std::string shown_number(const GiNaC::ex& k) {
+  if (!GiNaC::is_a<GiNaC::numeric>(k) || !GiNaC::ex_to<GiNaC::numeric>(k).is_real()) {
+    return "not a real number";
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", GiNaC::ex_to<GiNaC::numeric>(k).to_double());
+  return buf;
+}
+
+// EllipticK(k) is finite for -1 < k < 1 only and EllipticE(k) real for -1 <= k <= 1; GiNaC
+// evaluates EllipticK(1) forever (a student's answer hung the grader). Each argument is
+// evaluated first and an out-of-range one refused.
+void check_elliptic_arguments(const GiNaC::ex& e, const std::string& field) {
+  for (std::size_t i = 0; i < e.nops(); ++i) check_elliptic_arguments(e.op(i), field);
+  if (!GiNaC::is_a<GiNaC::function>(e)) return;
+  const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+  if (name != "EllipticK" && name != "EllipticE") return;
+  DeepEvalf deep;
+  const GiNaC::ex k = deep(e.op(0));
+  const bool is_k = name == "EllipticK";
+  bool ok = GiNaC::is_a<GiNaC::numeric>(k) && GiNaC::ex_to<GiNaC::numeric>(k).is_real();
+  if (ok) {
+    const GiNaC::numeric a = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(k));
+    ok = is_k ? a < 1 : a <= 1;
+  }
+  if (!ok) {
+    throw ExpressionError(field + ": " + name + "(k) is " +
+                          (is_k ? "finite only for -1 < k < 1" : "real only for -1 <= k <= 1") +
+                          "; here k = " + shown_number(k));
+  }
+}
 }  // namespace
 
 double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field) {
@@ -232,11 +266,14 @@ double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& fie
   GiNaC::ex v;
   try {
     const GiNaC::ex exact = e.subs(at);
+    check_elliptic_arguments(exact, field);
     v = GiNaC::evalf(exact);
     if (!GiNaC::is_a<GiNaC::numeric>(v)) {
       DeepEvalf deep;
       v = deep(exact);
     }
+  } catch (const ExpressionError&) {
+    throw;
   } catch (const std::exception& x) {
     // GiNaC and CLN report a division by zero (0^m/0^m at m > 0) or a floating-point overflow
     // by exceptions of their own: at these values the expression has no value.
@@ -259,10 +296,23 @@ namespace {
 // counted up to the limits.
 struct Size {
   int nodes = 0, symbolic_powers = 0;
+  double expanded_terms = 0;  ///< the most terms one power of a sum expands to
 };
+// Terms of (k terms)^n expanded: C(n + k - 1, k - 1), saturating far above any limit.
+double expanded_terms(double k, double n) {
+  double c = 1;
+  for (double i = 1; i < k && c < 1e12; ++i) c = c * (n + i) / i;
+  return c;
+}
 void measure(const GiNaC::ex& e, Size& s) {
   if (++s.nodes > 400) return;
   if (GiNaC::is_a<GiNaC::power>(e) && !GiNaC::is_a<GiNaC::numeric>(e.op(1))) ++s.symbolic_powers;
+  if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::add>(e.op(0)) &&
+      e.op(1).info(GiNaC::info_flags::integer)) {
+    const double n = std::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_double());
+    s.expanded_terms = std::max(s.expanded_terms,
+                                expanded_terms(static_cast<double>(e.op(0).nops()), n));
+  }
   for (std::size_t i = 0; i < e.nops() && s.nodes <= 400; ++i) measure(e.op(i), s);
 }
 }  // namespace
@@ -272,7 +322,11 @@ bool is_identically_zero(const GiNaC::ex& e) {
   // bound (fuzzing found an out-of-memory and a 44 s case); beyond these sizes nothing is proved.
   Size size;
   measure(e, size);
-  if (size.nodes > 400 || size.symbolic_powers > 4) return false;
+  // normal() expands powers of sums: (m+R+omega+alpha)^400 would have 1e7 terms (6 GB).
+  constexpr double kMaxExpandedTerms = 2000;
+  if (size.nodes > 400 || size.symbolic_powers > 4 || size.expanded_terms > kMaxExpandedTerms) {
+    return false;
+  }
   try {
     return GiNaC::normal(e).is_zero();
   } catch (const std::exception&) {

@@ -1,6 +1,7 @@
 // The catalog of bad input: every kind the program knows, with its exit code and the words its
 // one-line message must contain. Adding a validation means adding a row.
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <fstream>
 #include <iterator>
 
@@ -622,5 +623,35 @@ TEST_CASE("bad input: exit 2, one line on stderr with the field and value, nothi
     CHECK(r.out.empty());
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     for (const auto& w : row.words) CHECK_THAT(r.err, Catch::Contains(w));
+  }
+}
+
+TEST_CASE("hostile answers are answered within seconds and bounded memory (check and worksheet)") {
+  // Each once hung the grader or grew to gigabytes inside GiNaC: EllipticK at k = +-1 evaluated
+  // forever, normal() expanded (4 terms)^400. Now each is judged (exit 0 or 1) or refused
+  // (exit 2), never an internal error (3), a time-out (124) or a kill. A
+  // row over kMaxSeconds fails; the process gets at most 2 GB of address space (ulimit -v).
+  constexpr double kMaxSeconds = 5;
+  const std::string exe = std::string("'") + WOBBLE_EXE + "'";
+  for (const std::string answer :
+       {"EllipticK(1)", "EllipticK(-1)", "EllipticK(m/m)*m", "EllipticE(2)",
+        "(m+R+omega+alpha)^400", "(m+R+1)^300*(m-R+2)^300", "(m+R)^999-(m+R)^999+m*R^2/4"}) {
+    for (const std::string how : {"check", "worksheet"}) {
+      const std::string command =
+          how == "check" ? exe + " check flying-plate a --name I0 --answer '" + answer + "'"
+                         : "printf '%s\\nq\\n' '" + answer + "' | " + exe + " worksheet flying-plate";
+      const auto start = std::chrono::steady_clock::now();
+      const RunResult r = run_shell("ulimit -v 2000000; timeout 20 " + command);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      INFO(how << " " << answer << ": exit " << r.exit_code << " in " << seconds << " s\n"
+               << r.err);
+      CHECK(seconds < kMaxSeconds);
+      if (how == "check") {
+        CHECK((r.exit_code >= 0 && r.exit_code <= 2));
+      } else {
+        CHECK(r.exit_code == 0);  // the worksheet says so and asks again
+      }
+    }
   }
 }
