@@ -117,11 +117,21 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
   p.body = read_body(r, *body->as_table());
   p.motion = read_motion(r, root, p.solver);
   const toml::array& parts = r.array(root, "parts", "parts");
-  std::set<std::string> ids;
+  std::set<std::string> ids, answer_names;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const std::string f = "parts[" + std::to_string(i) + "]";
     p.parts.push_back(read_part(r, r.table_at(parts, i, f, &root), f));
     if (!ids.insert(p.parts.back().id).second) r.fail(parts.get(i), f + ".id", "part id repeated");
+    // `check --name` finds an answer by its name: two of one name would hide the second.
+    const toml::array& answers = *r.table_at(parts, i, f, &root).get_as<toml::array>("answers");
+    for (std::size_t k = 0; k < p.parts.back().answers.size(); ++k) {
+      const std::string& name = p.parts.back().answers[k].name;
+      if (!answer_names.insert(name).second) {
+        r.fail(answers.get(k), f + ".answers[" + std::to_string(k) + "]",
+               "answer name '" + name + "' is used twice; give one a name of its own "
+               "({ name = \"...\", quantity = \"" + p.parts.back().answers[k].quantity + "\" })");
+      }
+    }
   }
   if (p.parts.empty()) r.fail(&root, "parts", "a problem needs at least one part");
   return p;

@@ -175,7 +175,12 @@ GiNaC::ex SymbolTable::parse(const std::string& text, const std::string& field) 
     throw ExpressionError(field + ": empty expression");
   }
   // Shown in messages: at most the first 40 characters.
-  const std::string shown = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+  // Control bytes (ESC would drive the terminal) and any non-ASCII byte show as '?'.
+  std::string shown = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+  for (char& c : shown) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u > 0x7e) c = '?';
+  }
   if (text.size() > kMaxExpressionLength) {
     throw ExpressionError(field + ": expression \"" + shown + "\" is " +
                           std::to_string(text.size()) + " characters long; the limit is " +

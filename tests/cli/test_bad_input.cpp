@@ -607,6 +607,14 @@ std::vector<Row> catalog() {
        {"simulate", "tennis-racket", "--plot", "/nonexistent/x.svg"},
        2,
        {"/nonexistent/x.svg", "cannot be written"}},
+      {"an answer name used twice (check --name would find only one)",
+       {"solve", file("dupname", with("answers = [\"I\"]", "answers = [\"I\", \"I\"]"))},
+       2,
+       {"answers[1]", "answer name 'I' is used twice"}},
+      {"an escape sequence in an answer is not echoed to the terminal",
+       {"check", "flying-plate", "a", "--name", "I0", "--answer", "m\x1b[31m"},
+       2,
+       {"--answer", "m?[31m", "control"}},
       {"problem file too large",
        {"solve", file("huge", kBase + "# " + std::string(2 << 20, 'x') + "\n")},
        2,
@@ -623,6 +631,7 @@ TEST_CASE("bad input: exit 2, one line on stderr with the field and value, nothi
     CHECK(r.out.empty());
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     for (const auto& w : row.words) CHECK_THAT(r.err, Catch::Contains(w));
+    CHECK(r.err.find('\x1b') == std::string::npos);  // nothing drives the terminal
   }
 }
 
