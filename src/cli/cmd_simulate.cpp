@@ -28,6 +28,9 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
                  "Relative tolerance for the adaptive methods, 1e-14 to 1e-2");
   app.add_option("--samples", opt.samples,
                  "Number of output times, 2 to 1000000 (default: the scene's)");
+  app.add_option("--t-end", opt.t_end,
+                 "End of the run, s (default: the scene's run.t_end); an expression such as 10 "
+                 "or 2*pi");
   app.add_option("--out", opt.out, "Write the samples to FILE.csv or FILE.json instead");
   app.add_option("--plot", opt.plot, "Draw the outputs against time as .svg, .png or .pdf (gnuplot)");
   app.add_flag("--force", opt.force, "Overwrite existing --out and --plot files");
@@ -69,6 +72,7 @@ int run_simulate(const SimulateOptions& opt) {
   if (!opt.plot.empty()) require_writable(opt.plot);
   Scene scene = find_scene(opt.scene);
   if (opt.samples) scene.samples = static_cast<int>(*opt.samples);
+  if (!opt.t_end.empty()) scene.t_end = opt.t_end;  // read and checked (> 0) as run.t_end
   std::vector<std::string> assignments;
   if (opt.variant) {
     // A scene's variant is valid when its setup accepts it (a scene has no solver to ask).
@@ -77,7 +81,19 @@ int run_simulate(const SimulateOptions& opt) {
     });
   }
   assignments.insert(assignments.end(), opt.sets.begin(), opt.sets.end());
-  SceneSetup setup = setup_scene(scene, assignments);
+  SceneSetup setup = [&] {
+    try {
+      return setup_scene(scene, assignments);
+    } catch (const InputError& e) {
+      // The end time came from --t-end: name the option, not the file's field.
+      const std::string field = "run.t_end";
+      const std::string what = e.what();
+      if (!opt.t_end.empty() && what.rfind(field, 0) == 0) {
+        throw InputError("--t-end" + what.substr(field.size()));
+      }
+      throw;
+    }
+  }();
   if (opt.tolerance) setup.tolerance = *opt.tolerance;
   const MethodChoice choice =
       opt.method.empty()

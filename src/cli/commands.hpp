@@ -45,6 +45,7 @@ struct SimulateOptions {
   std::string method;                ///< empty: the scene's own (auto by default)
   std::optional<double> tolerance;   ///< overrides the scene's
   std::optional<long long> samples;  ///< overrides the scene's
+  std::string t_end;                 ///< overrides the scene's run.t_end (an expression, s)
   std::optional<long> variant;
   std::string out, plot;
   bool force = false;

@@ -149,3 +149,11 @@ TEST_CASE("bench --quick (the CI smoke run) reports every problem, component and
   for (const auto& t : j["targets"]) CHECK(t["measured"].template get<double>() >= 0.0);
   REQUIRE_THAT(slurp(svg), Catch::Contains("<svg") && Catch::Contains("odeint_rkf78"));
 }
+
+TEST_CASE("simulate --t-end sets the time span (an expression), --samples the count") {
+  const RunResult r =
+      run_wobble({"simulate", "tennis-racket", "--t-end", "2*pi", "--samples", "5"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE_THAT(r.out, Catch::Contains("time: 0 to 6.283185307 s, 5 samples"));
+}
