@@ -45,8 +45,10 @@ std::string simulation_header(const SceneSetup& s, const SimulationResult& r) {
   } else {
     h += "body: tensor given directly, turning about the origin O\n";
   }
-  h += fmt::format("principal moments there: {:.10g}, {:.10g}, {:.10g} kg m^2 (ascending)\n",
-                   s.moments[0], s.moments[1], s.moments[2]);
+  h += fmt::format("principal moments there: {:.10g}, {:.10g}, {:.10g} kg m^2 ({})\n",
+                   s.moments[0], s.moments[1], s.moments[2],
+                   s.symmetry_axis_last ? "e3 the symmetry axis, as in the heavy-top problem"
+                                        : "ascending");
   for (int i = 0; i < 3; ++i) {
     h += fmt::format("  e{} = {} in the body frame\n", i + 1, vec(s.axes_B.col(i), 10));
   }

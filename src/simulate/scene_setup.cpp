@@ -154,7 +154,14 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
     s.turning_point = "centre of mass";
     I_turn = shift_to_cm(mp.I_O, mp.mass_kg, -mp.r_cm_m);
   }
-  const PrincipalAxes pa = principal_axes(I_turn);
+  PrincipalAxes pa = principal_axes(I_turn);
+  if (scene.gravity && pa.degeneracy == Degeneracy::pair23) {
+    // A top: its unique axis (the axle, the smallest moment about the pivot) is e3, as in the
+    // heavy-top problem, not e1. A cyclic turn of the columns keeps the frame right-handed.
+    pa.moments = Vec3(pa.moments[1], pa.moments[2], pa.moments[0]);
+    pa.axes = (Mat3() << pa.axes.col(1), pa.axes.col(2), pa.axes.col(0)).finished();
+    s.symmetry_axis_last = true;
+  }
   s.moments = pa.moments;
   s.axes_B = pa.axes;
   s.symmetric = pa.degeneracy == Degeneracy::pair12 || pa.degeneracy == Degeneracy::pair23 ||

@@ -3,7 +3,8 @@
 /// A scene with its parameter values applied: everything in numbers, ready to simulate.
 ///
 /// Frames (see problem/scene.hpp): B the frame the body is written in, P the principal frame
-/// at the turning point (columns of axes_B are P's axes in B, moments ascending), S space.
+/// at the turning point (columns of axes_B are P's axes in B, moments ascending, except that a
+/// top under gravity has its axle as e3), S space.
 /// The turning point is the pivot under gravity, otherwise the centre of mass (or the origin O
 /// for a tensor given directly, which carries no mass).
 #include <optional>
@@ -24,6 +25,9 @@ struct SceneSetup {
   Vec3 moments = Vec3::Ones();          ///< principal moments about the turning point, ascending
   Mat3 axes_B = Mat3::Identity();       ///< principal axes (columns) in B
   bool symmetric = false;               ///< two moments equal (core/principal_axes.hpp)
+  /// Under gravity a symmetric top's unique axis (the axle) is e3, its moment last, as in the
+  /// heavy-top problem; otherwise the moments are ascending.
+  bool symmetry_axis_last = false;
   RigidBodyModel model;                 ///< in P
   Vec3 m0_P = Vec3::Zero();             ///< initial angular momentum, P, kg m^2/s
   Quat q0_PtoS = Quat::Identity();

@@ -396,3 +396,13 @@ TEST_CASE("a brake stops the spin about its axis and never turns the wheel backw
   REQUIRE_THROWS_WITH(setup_scene(sideways, std::vector<std::string>{}),
                       Catch::Contains("symmetry axis"));
 }
+
+TEST_CASE("the heavy-top scene numbers its axes as the problem does: e3 is the axle") {
+  const SceneSetup s = setup_scene(find_scene("heavy-top"), {});
+  REQUIRE(s.symmetry_axis_last);
+  // The disc's axle is the body's z axis; its moment about the pivot is the unique one.
+  REQUIRE_THAT((s.axes_B.col(2) - Vec3::UnitZ()).norm(), WithinAbs(0.0, 4 * kEps));
+  REQUIRE(s.moments[0] == s.moments[1]);
+  REQUIRE(s.moments[2] < s.moments[0]);
+  REQUIRE_THAT(s.axes_B.determinant(), WithinAbs(1.0, 4 * kEps));  // still right-handed
+}
