@@ -157,15 +157,36 @@ bool has_symbols(const GiNaC::ex& e) {
   }
   return false;
 }
+
+// Refuses what the rearranging would only slow down (it recurses into brackets and scans each
+// level): the same bounds the expression reader applies afterwards, checked first.
+void check_bounds(const std::string& typed, const std::string& field) {
+  if (typed.size() > 9 * sym::kMaxExpressionLength) {
+    throw InputError(field + ": " + std::to_string(typed.size()) +
+                     " characters; an answer may have at most " +
+                     std::to_string(9 * sym::kMaxExpressionLength));
+  }
+  int depth = 0;
+  for (const char c : typed) {
+    if (opens(c)) ++depth;
+    if (closes(c)) --depth;
+    if (depth > sym::kMaxExpressionDepth) {
+      throw InputError(field + ": brackets nested deeper than " +
+                       std::to_string(sym::kMaxExpressionDepth) + " levels");
+    }
+  }
+}
 }  // namespace
 
 std::string reading_form(const std::string& typed) {
+  check_bounds(typed, "answer");
   const auto [value, unit] = split_unit(prepared(typed));
   return layout(value) + (unit.empty() ? "" : " " + unit);
 }
 
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field) {
+  check_bounds(typed, field);
   const std::string text = prepared(typed);
   if (text.empty()) {
     throw InputError(field +
