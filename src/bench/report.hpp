@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Everything one `wobble bench` run measured, and the targets of issue 5 checked against it
+/// Everything one `wobble bench` run measured, and the performance targets checked against it
 /// (benchmarks report; they never fail a build: CI machines are noisy).
 #include <string>
 #include <vector>

@@ -6,7 +6,7 @@
 /// runge_kutta_dopri5 and runge_kutta_fehlberg78 run on the same right-hand side and
 /// tolerances as peers.
 ///
-/// Problems (issue 5):
+/// Problems:
 /// - P1: free body I = (2, 1, 2/3), m0 = (cos 1.1, 0, sin 1.1), identity attitude, T = 10;
 /// - P2: the same over T = 1e4 (energy and |L| errors against time);
 /// - P3: near the separatrix, I = (1, 2, 3), m0 = (1e-4, 1, 1e-4), T = 200, with its measured

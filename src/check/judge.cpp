@@ -79,6 +79,11 @@ struct Judge {
     }
     return std::abs(v - k) <= opt.rel_tol * (k != 0.0 ? std::abs(k) : scale);
   }
+  // For directions (principal axes): the sine of the angle an axis may be off, from the
+  // relative tolerance or half a unit in the last of N significant figures.
+  double angle_tolerance() const {
+    return opt.sigfigs ? 0.5 * std::pow(10.0, 1 - *opt.sigfigs) : opt.rel_tol;
+  }
   bool all_close(const std::vector<double>& v, const std::vector<double>& k) const {
     for (std::size_t i = 0; i < v.size(); ++i) {
       if (!close(v[i], k[i])) return false;
@@ -117,7 +122,7 @@ Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got) {
     for (int c = 0; c < 3; ++c) axes(r, c) = j.a.value.data[static_cast<std::size_t>(3 * r + c)];
   }
   const Vec3 lambda(moments->value.data[0], moments->value.data[1], moments->value.data[2]);
-  const double tol = j.opt.sigfigs ? 0.5 * std::pow(10.0, 1 - *j.opt.sigfigs) : j.opt.rel_tol;
+  const double tol = j.angle_tolerance();
   const AxesFinding f = judge_axes(got, axes, lambda, tol);
   if (f.correct) {
     return {true, "correct: " + j.a.name + " (" + f.how + ", in any order, each up to sign)", {}};
@@ -281,7 +286,7 @@ Verdict judge_symbolic_axes(const Judge& j, const ReadAnswer& p) {
   }
   const auto key_axes = sym::parse_value_text(j.a.symbolic, ctx.table, "key " + j.a.name);
   const auto key_moments = sym::parse_value_text(moments->symbolic, ctx.table, "key moments");
-  const double tol = j.opt.sigfigs ? 0.5 * std::pow(10.0, 1 - *j.opt.sigfigs) : j.opt.rel_tol;
+  const double tol = j.angle_tolerance();
   for (const auto& point : judging_points(ctx.values)) {
     const auto [got, axes_flat] = at_point(ctx, j.a, p.value, key_axes, point);
     const auto lambda = at_point(ctx, j.a, key_moments, key_moments, point).first;  // unsorted

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Judging a student's answer against the key (issue 6's `wobble check`).
+/// Judging a student's answer against the key (`wobble check`).
 ///
 /// An answer is a number, a vector "[x, y, z]" or a matrix "[[..], [..], [..]]", each optionally
 /// followed by a unit (units.hpp; none means SI), or an expression in the problem's symbols

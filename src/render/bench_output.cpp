@@ -140,7 +140,7 @@ std::string components(const BenchReport& r, bool markdown) {
 
 std::string targets(const BenchReport& r, bool markdown) {
   std::string out = markdown ? "| target | measured | limit | |\n|---|---|---|---|\n"
-                             : "targets (issue 5; measured within this run):\n";
+                             : "targets (measured within this run):\n";
   for (const auto& t : r.targets) {
     const std::string m =
         t.measured < 0 ? "not measured" : fmt::format("{:.3g} {}", t.measured, t.unit);

@@ -50,6 +50,19 @@ std::size_t display_width(const std::string& s) {
   return width;
 }
 
+std::pair<std::string, std::string> shown_value(
+    const ParameterValue& p, const std::vector<std::pair<std::string, std::string>>& shown) {
+  for (const auto& [name, text] : shown) {
+    if (name != p.name) continue;
+    if (text.size() > 3 && text.compare(text.size() - 3, 3, "deg") == 0) {
+      return {text.substr(0, text.size() - 3), "°"};
+    }
+    return {text, p.unit};
+  }
+  if (const auto deg = whole_degrees(p)) return {*deg, "°"};
+  return {format_number(p.value), p.unit};
+}
+
 std::string markdown_cell(const std::string& s) {
   std::string out;
   for (const char c : s) {

@@ -4,6 +4,8 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "solvers/key.hpp"
 
@@ -33,6 +35,11 @@ std::string parameter_value_latex(const ParameterValue& p);
 
 /// Columns a UTF-8 string takes in a terminal: code points, less combining marks (θ̇ is one).
 std::size_t display_width(const std::string& s);
+
+/// A parameter's value and unit as a handout shows them: a variant's own text ("22deg" ->
+/// {"22", "°"}), else the key's value (an angle at whole degrees in degrees, unit "°").
+std::pair<std::string, std::string> shown_value(
+    const ParameterValue& p, const std::vector<std::pair<std::string, std::string>>& shown);
 
 /// Text for one Markdown table cell: '|' escaped, line breaks as spaces.
 std::string markdown_cell(const std::string& s);

@@ -10,21 +10,6 @@
 namespace wobble {
 
 namespace {
-// A parameter's value and unit as the handout shows them: a variant's own text ("22deg" ->
-// "22", "°"), else the key's value (an angle at whole degrees in degrees).
-std::pair<std::string, std::string> shown_value(
-    const ParameterValue& p, const std::vector<std::pair<std::string, std::string>>& shown) {
-  for (const auto& [name, text] : shown) {
-    if (name != p.name) continue;
-    if (text.size() > 3 && text.compare(text.size() - 3, 3, "deg") == 0) {
-      return {text.substr(0, text.size() - 3), "°"};
-    }
-    return {text, p.unit};
-  }
-  if (const auto deg = detail::whole_degrees(p)) return {*deg, "°"};
-  return {format_number(p.value), p.unit};
-}
-
 // "I0 [kg m²], I [kg m²]": the names `wobble check --name` takes, with their SI units, never
 // their values.
 std::string answer_names(const PartKey& part, bool markdown) {
@@ -50,7 +35,7 @@ std::string render_handout(const Key& key,
   if (!out.empty() && out.back() != '\n') out += "\n";
   out += "\n| Parameter | Value | Unit | Meaning |\n|---|---|---|---|\n";
   for (const auto& p : key.parameters) {
-    const auto [value, unit] = shown_value(p, shown);
+    const auto [value, unit] = detail::shown_value(p, shown);
     out += fmt::format("| ${}$ | {} | {} | {} |\n", p.latex, value, unit,
                        detail::markdown_cell(p.description));
   }
@@ -74,7 +59,7 @@ std::string render_handout_text(const Key& key,
     width = std::max(width, detail::display_width(detail::pretty(p.name)));
   }
   for (const auto& p : key.parameters) {
-    const auto [value, unit] = shown_value(p, shown);
+    const auto [value, unit] = detail::shown_value(p, shown);
     const std::string name = detail::pretty(p.name);
     out += fmt::format("  {}{} = {}{}{}\n", name,
                        std::string(width - detail::display_width(name), ' '), value,

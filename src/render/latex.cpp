@@ -131,19 +131,8 @@ std::string render_handout_latex(const Key& key,
   out += statement_latex(key.statement) + "\n\n";
   out += "\\begin{center}\\begin{tabular}{lll}\n\\hline\n";
   for (const auto& p : key.parameters) {
-    std::string value = format_number(p.value), unit = detail::unit_latex(p.unit);
-    for (const auto& [name, text] : shown) {
-      if (name != p.name) continue;
-      value = text;
-      if (text.size() > 3 && text.compare(text.size() - 3, 3, "deg") == 0) {
-        value = text.substr(0, text.size() - 3);
-        unit = "^\\circ";
-      }
-    }
-    if (const auto deg = detail::whole_degrees(p); deg && value == format_number(p.value)) {
-      value = *deg;
-      unit = "^\\circ";
-    }
+    const auto [value, shown_unit] = detail::shown_value(p, shown);
+    const std::string unit = shown_unit == "°" ? "^\\circ" : detail::unit_latex(shown_unit);
     out += fmt::format("${}$ & ${}{}$ & {} \\\\\n", p.latex, value, unit, latex_text(p.description));
   }
   out += "\\hline\n\\end{tabular}\\end{center}\n";

@@ -32,14 +32,6 @@ std::string first_line(const std::string& s) {
   return line;
 }
 
-// Restores GiNaC's global precision on scope exit.
-struct DigitsGuard {
-  long saved = static_cast<long>(GiNaC::Digits);
-  explicit DigitsGuard(long digits) { GiNaC::Digits = digits; }
-  ~DigitsGuard() { GiNaC::Digits = saved; }
-  DigitsGuard(const DigitsGuard&) = delete;
-  DigitsGuard& operator=(const DigitsGuard&) = delete;
-};
 // The exact decimal that a double was typed as: its shortest round-trip text read as a rational
 // ("0.1" -> 1/10, not the binary fraction nearest to it). Exact, so CLN's float contagion cannot
 // drop later operations to double precision.

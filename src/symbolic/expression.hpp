@@ -57,6 +57,15 @@ class SymbolTable {
   std::map<std::string, std::size_t> index_;
 };
 
+/// Sets GiNaC's global precision (decimal digits) for a scope and restores it on exit.
+struct DigitsGuard {
+  long saved = static_cast<long>(GiNaC::Digits);
+  explicit DigitsGuard(long digits) { GiNaC::Digits = digits; }
+  ~DigitsGuard() { GiNaC::Digits = saved; }
+  DigitsGuard(const DigitsGuard&) = delete;
+  DigitsGuard& operator=(const DigitsGuard&) = delete;
+};
+
 /// Values of the parameters, by name (SI).
 using Values = std::map<std::string, double>;
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Refusing expression text that GiNaC's parser would crash on or compute forever, before it
-/// sees it (found by fuzzing, issue 8): control and non-ASCII characters; a function called
+/// sees it (found by fuzzing): control and non-ASCII characters; a function called
 /// with no arguments ("sqrt()" crashes GiNaC 1.8.6's parser); a number with more than 50 digits
 /// or an exponent beyond 400; and exact powers whose exponents, multiplied along a chain of
 /// nested powers, exceed 1000 ("10^99999999" or "((2^999)^999)^999" would be computed digit by

@@ -3,26 +3,19 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "symbolic/expression.hpp"
+
 namespace wobble::sym {
 
 namespace {
 using GiNaC::numeric;
-
-// Restores GiNaC's global precision on scope exit.
-struct Digits {
-  long saved = static_cast<long>(GiNaC::Digits);
-  explicit Digits(long d) { GiNaC::Digits = d; }
-  ~Digits() { GiNaC::Digits = saved; }
-  Digits(const Digits&) = delete;
-  Digits& operator=(const Digits&) = delete;
-};
 
 constexpr long kDigits = 60;
 constexpr int kMaxSweeps = 60;  // cyclic Jacobi converges quadratically: ~6 sweeps for 60 digits
 }  // namespace
 
 RefinedPrincipal refined_principal(const GiNaC::matrix& I, const GiNaC::lst& at) {
-  const Digits guard(kDigits);
+  const DigitsGuard guard(kDigits);
   std::array<std::array<numeric, 3>, 3> a, v;
   numeric norm2 = 0;
   for (unsigned i = 0; i < 3; ++i) {

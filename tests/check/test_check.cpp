@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "check/check_fixture.hpp"
 #include "check/judge.hpp"
 #include "check/units.hpp"
 #include "problem/load.hpp"
@@ -40,25 +41,7 @@ std::string typed(const Value& v, double factor = 1.0) {
   return s + "]";
 }
 
-struct Fixture {
-  Problem problem;
-  sym::Values values;
-  Key key;
-  sym::SymbolTable table;
-  explicit Fixture(const std::string& id)
-      : problem(find_problem(id)),
-        values(parameter_values(problem, {})),
-        key(solve(problem, values)),
-        table(problem.symbol_table()) {}
-  Verdict check(const std::string& name, const std::string& text, Options o = {}) const {
-    for (const auto& p : key.parts) {
-      for (const auto& a : p.answers) {
-        if (a.name == name) return judge({key, table, values}, a, text, o);
-      }
-    }
-    throw std::logic_error("no answer " + name);
-  }
-};
+using Fixture = wobble::test::CheckFixture;
 }  // namespace
 
 TEST_CASE("units: SI factors, dimensions and the grammar's errors") {

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "check/answer_reading.hpp"
+#include "check/check_fixture.hpp"
 #include "check/judge.hpp"
 #include "problem/load.hpp"
 #include "problem/values.hpp"
@@ -21,28 +22,7 @@ using namespace wobble;
 using namespace wobble::check;
 
 namespace {
-struct Fixture {
-  Problem problem;
-  sym::Values values;
-  Key key;
-  sym::SymbolTable table;
-  explicit Fixture(const std::string& id)
-      : problem(find_problem(id)),
-        values(parameter_values(problem, {})),
-        key(solve(problem, values)),
-        table(problem.symbol_table()) {}
-  const Answer& answer(const std::string& name) const {
-    for (const auto& p : key.parts) {
-      for (const auto& a : p.answers) {
-        if (a.name == name) return a;
-      }
-    }
-    throw std::logic_error("no answer " + name);
-  }
-  Verdict check(const std::string& name, const std::string& text, Options o = {}) const {
-    return judge({key, table, values}, answer(name), text, o);
-  }
-};
+using Fixture = wobble::test::CheckFixture;
 
 // The numeric line exactly as the text key prints it (matrices on several lines, indented).
 std::string printed_value(const Answer& a) {

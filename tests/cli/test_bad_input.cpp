@@ -373,7 +373,7 @@ std::vector<Row> catalog() {
        {"check", "flying-plate", "a", "--name", "I0", "--answer", std::string(120000, '1')},
        2,
        {"--answer: 120000 characters", "at most 90000"}},
-      // Found by fuzzing (issue 8): each crashed or hung wobble before its guard.
+      // Found by fuzzing: each crashed or hung wobble before its guard.
       {"--force over a device (it replaced /dev/full when run as root)",
        {"solve", "flying-plate", "--figure", "/dev/null", "--force"},
        2,

@@ -1,4 +1,4 @@
-// The hard-case suite (issue 5): one named test per case where naive formulas break. Each
+// The hard-case suite: one named test per case where naive formulas break. Each
 // tolerance says where it comes from.
 #include <Eigen/Dense>
 #include <boost/math/constants/constants.hpp>
