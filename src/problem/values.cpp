@@ -74,10 +74,9 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
     v = degrees ? constant_value("(" + t + ")*pi/180", field) : constant_value(t, field);
   } catch (const InputError& e) {
     const std::string why = e.what();
-    if (why.find("not finite") != std::string::npos) {
-      throw InputError(field + ": value must be finite, got '" + text + "'");
-    }
     if (why.find("characters long") != std::string::npos ||
+        why.find("outside the range of double") != std::string::npos ||
+        why.find("beyond any value") != std::string::npos ||
         why.find("nested deeper") != std::string::npos ||
         why.find("is refused") != std::string::npos) {
       throw InputError(why);

@@ -18,9 +18,11 @@ struct PrincipalAnswers {
   std::vector<Step> axis_steps;
 };
 
-/// @param point "O" or "cm", for the wording of steps and notes
+/// @param I_numeric_error bound on the entries' error of I_numeric (kg m^2): a tensor moved to
+///        the centre of mass carries the rounding of the larger tensor it came from
 /// @throws std::logic_error if the exact and numeric routes disagree beyond rounding (a bug)
 PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_numeric,
+                                   double I_numeric_error,
                                    const std::string& moments_name, const std::string& axes_name,
                                    const ExactContext& ctx);
 

@@ -6,6 +6,7 @@
 #include "problem/variants.hpp"
 #include "solvers/asymmetric_top_solver.hpp"
 #include "solvers/euler_angles_solver.hpp"
+#include "solvers/exact_answer.hpp"
 #include "solvers/heavy_top_solver.hpp"
 #include "solvers/inertia_solver.hpp"
 #include "solvers/torque_free_solver.hpp"
@@ -55,6 +56,7 @@ std::vector<std::string> key_conventions() {
 
 Key solve(const Problem& problem, const sym::Values& values) {
   Key key;
+  begin_route_checks();
   if (problem.solver == "inertia") {
     key = solve_inertia(problem, values);
   } else if (problem.solver == "torque_free_symmetric") {

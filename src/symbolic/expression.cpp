@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -162,6 +163,84 @@ std::size_t SymbolTable::order_of(const std::string& name) const {
   return it == index_.end() ? names_.size() : it->second;
 }
 
+namespace {
+// "4.3e-403" for a real number of any size (CLN's exponent range is far wider than double's).
+std::string shown_size(const GiNaC::numeric& n) {
+  if (n.is_zero()) return "0";
+  const GiNaC::numeric re = n.real();
+  char buf[64];
+  const double d = re.to_double();
+  if (std::isfinite(d) && std::abs(d) >= std::numeric_limits<double>::min()) {
+    std::snprintf(buf, sizeof buf, "%.2g", d);
+    return buf;
+  }
+  const double l10 = GiNaC::log(GiNaC::abs(re)).to_double() / std::log(10.0);
+  double e = std::floor(l10), mantissa = std::pow(10.0, l10 - e);
+  if (mantissa >= 9.95) mantissa /= 10, e += 1;  // so that it prints as 1.0, not 10
+  std::snprintf(buf, sizeof buf, "%s%.2ge%+.0f", re.csgn() < 0 ? "-" : "", mantissa, e);
+  return buf;
+}
+}  // namespace
+
+namespace {
+// GiNaC folds exp of a number as soon as it is built, and CLN returns 1.0 for exp of a float
+// beyond its range: exp(exp(exp(10))) would read as 1. So exp, sinh and cosh of a number larger
+// than kMaxGrowthArgument (e^100000 = 10^43429, far beyond any value a key holds) are refused
+// when read, and again when evaluated (an argument that becomes such a number at the values).
+constexpr double kMaxGrowthArgument = 1e5;
+// The digits of an evaluation, before rounding once to double.
+constexpr long kBaseDigits = 40;
+
+bool grows_too_far(const GiNaC::ex& argument) {
+  if (!GiNaC::is_a<GiNaC::numeric>(argument)) return false;
+  const GiNaC::numeric& x = GiNaC::ex_to<GiNaC::numeric>(argument);
+  return GiNaC::abs(x.real()) > kMaxGrowthArgument;
+}
+
+std::string too_far_message(const char* name, const GiNaC::ex& argument) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf,
+                "%s of a number about %s is beyond any value wobble evaluates (arguments of exp, "
+                "sinh and cosh must stay below 1e5 in size)",
+                name, shown_size(GiNaC::ex_to<GiNaC::numeric>(argument)).c_str());
+  return buf;
+}
+
+const GiNaC::ex& checked_argument(const char* name, const GiNaC::exvector& args) {
+  const DigitsGuard guard(kBaseDigits);
+  if (grows_too_far(GiNaC::evalf(args.at(0)))) {
+    throw ExpressionError(too_far_message(name, GiNaC::evalf(args[0])));
+  }
+  return args[0];
+}
+GiNaC::ex guarded_exp(const GiNaC::exvector& a) { return GiNaC::exp(checked_argument("exp", a)); }
+GiNaC::ex guarded_sinh(const GiNaC::exvector& a) { return GiNaC::sinh(checked_argument("sinh", a)); }
+GiNaC::ex guarded_cosh(const GiNaC::exvector& a) { return GiNaC::cosh(checked_argument("cosh", a)); }
+
+const GiNaC::prototype_table& guarded_reader() {
+  static const GiNaC::prototype_table table = [] {
+    GiNaC::prototype_table t = GiNaC::get_default_reader();
+    t[GiNaC::prototype("exp", 1)] = guarded_exp;
+    t[GiNaC::prototype("sinh", 1)] = guarded_sinh;
+    t[GiNaC::prototype("cosh", 1)] = guarded_cosh;
+    return t;
+  }();
+  return table;
+}
+
+// The same at the values: each exp, sinh, cosh argument evaluated (innermost first) before the
+// substitution folds it.
+void check_growth(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field) {
+  for (std::size_t i = 0; i < e.nops(); ++i) check_growth(e.op(i), at, field);
+  if (!GiNaC::is_a<GiNaC::function>(e)) return;
+  const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+  if (name != "exp" && name != "sinh" && name != "cosh") return;
+  const DigitsGuard guard(kBaseDigits);
+  const GiNaC::ex x = GiNaC::evalf(e.op(0).subs(at));
+  if (grows_too_far(x)) throw ExpressionError(field + ": " + too_far_message(name.c_str(), x));
+}
+}  // namespace
+
 GiNaC::ex SymbolTable::parse(const std::string& text, const std::string& field) const {
   if (text.find_first_not_of(" \t") == std::string::npos) {
     throw ExpressionError(field + ": empty expression");
@@ -192,9 +271,11 @@ GiNaC::ex SymbolTable::parse(const std::string& text, const std::string& field) 
   tab["pi"] = GiNaC::Pi;
   tab["Pi"] = GiNaC::Pi;
   check_expression_cost(text, field, shown, tab);
-  GiNaC::parser reader(tab, /*strict=*/true);
+  GiNaC::parser reader(tab, /*strict=*/true, guarded_reader());
   try {
     return reader(exact_literals(text));
+  } catch (const ExpressionError& e) {
+    throw ExpressionError(field + ": " + e.what());
   } catch (const std::exception& e) {
     throw ExpressionError(field + ": cannot read expression \"" + shown + "\": " +
                           plain_parse_error(text, first_line(e.what())));
@@ -237,33 +318,51 @@ std::string shown_number(const GiNaC::ex& k) {
 // EllipticK(k) is finite for -1 < k < 1 only and EllipticE(k) real for -1 <= k <= 1; GiNaC
 // evaluates EllipticK(1) forever (a student's answer hung the grader). Each argument is
 // evaluated first and an out-of-range one refused.
-void check_elliptic_arguments(const GiNaC::ex& e, const std::string& field) {
-  for (std::size_t i = 0; i < e.nops(); ++i) check_elliptic_arguments(e.op(i), field);
-  if (!GiNaC::is_a<GiNaC::function>(e)) return;
+//
+// Near the separatrix of a top k is within 1e-80 or 1e-300 of 1 (a wobble 1e-40 of the spin),
+// where K(k) ~ log(4 / sqrt(1 - k^2)) is perfectly finite but 40 digits round k to 1. So k is
+// evaluated with more digits until 1 - |k| shows (up to kMaxDigits), and the whole expression
+// then gets those digits plus the usual 40. Returns the digits needed.
+constexpr long kMaxDigits = 1200;
+
+long elliptic_digits(const GiNaC::ex& e, const std::string& field) {
+  long need = kBaseDigits;
+  for (std::size_t i = 0; i < e.nops(); ++i) need = std::max(need, elliptic_digits(e.op(i), field));
+  if (!GiNaC::is_a<GiNaC::function>(e)) return need;
   const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
-  if (name != "EllipticK" && name != "EllipticE") return;
-  DeepEvalf deep;
-  const GiNaC::ex k = deep(e.op(0));
+  if (name != "EllipticK" && name != "EllipticE") return need;
   const bool is_k = name == "EllipticK";
-  bool ok = GiNaC::is_a<GiNaC::numeric>(k) && GiNaC::ex_to<GiNaC::numeric>(k).is_real();
-  if (ok) {
-    const GiNaC::numeric a = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(k));
-    ok = is_k ? a < 1 : a <= 1;
+  GiNaC::ex k;
+  for (long digits = kBaseDigits; digits <= kMaxDigits; digits *= 3) {
+    // Evaluated with 10 guard digits: a gap within 10^-digits of 0 is rounding, either sign.
+    const DigitsGuard guard(digits + 10);
+    DeepEvalf deep;
+    k = deep(e.op(0));
+    if (!GiNaC::is_a<GiNaC::numeric>(k) || !GiNaC::ex_to<GiNaC::numeric>(k).is_real()) break;
+    const GiNaC::numeric gap = 1 - GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(k));
+    const GiNaC::numeric resolution = GiNaC::numeric(10).power(-digits);
+    if (gap < -resolution) break;
+    if (gap > resolution) {
+      // 1 - |k| = 10^-n: n more digits keep 40 of them in 1 - k^2 (n <= digits here).
+      const double n = -std::log10(std::max(gap.to_double(), 1e-300));
+      const long extra = gap.to_double() > 1e-300 ? static_cast<long>(std::ceil(n)) : digits;
+      return std::max(need, kBaseDigits + extra);
+    }
+    if (!is_k && GiNaC::abs(gap) < resolution) return need;  // EllipticE(±1) = 1
   }
-  if (!ok) {
-    throw ExpressionError(field + ": " + name + "(k) is " +
-                          (is_k ? "finite only for -1 < k < 1" : "real only for -1 <= k <= 1") +
-                          "; here k = " + shown_number(k));
-  }
+  throw ExpressionError(field + ": " + name + "(k) is " +
+                        (is_k ? "finite only for -1 < k < 1" : "real only for -1 <= k <= 1") +
+                        "; here k = " + shown_number(k));
 }
 }  // namespace
 
+
 double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field) {
-  DigitsGuard guard(40);
   GiNaC::ex v;
   try {
+    check_growth(e, at, field);
     const GiNaC::ex exact = e.subs(at);
-    check_elliptic_arguments(exact, field);
+    DigitsGuard guard(elliptic_digits(exact, field));
     v = GiNaC::evalf(exact);
     if (!GiNaC::is_a<GiNaC::numeric>(v)) {
       DeepEvalf deep;
@@ -284,8 +383,42 @@ double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& fie
   const auto& n = GiNaC::ex_to<GiNaC::numeric>(v);
   if (!n.is_real()) throw ExpressionError(field + ": expression is not real");
   const double d = n.to_double();
-  if (!std::isfinite(d)) throw ExpressionError(field + ": expression is not finite");
+  // Beyond double's range the value is refused, never replaced by infinity, 0 or a subnormal
+  // with fewer digits than the key prints.
+  if (!std::isfinite(d) || (!n.is_zero() && std::abs(d) < std::numeric_limits<double>::min())) {
+    throw ExpressionError(field + ": its value, about " + shown_size(n) +
+                          ", is outside the range of double precision (1e-308 to 1e308 in size)");
+  }
   return d;
+}
+
+
+int sign_of(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field) {
+  const GiNaC::ex exact = e.subs(at);
+  if (GiNaC::is_a<GiNaC::numeric>(exact) && GiNaC::ex_to<GiNaC::numeric>(exact).is_rational()) {
+    const int s = GiNaC::ex_to<GiNaC::numeric>(exact).csgn();
+    if (s != 0) return s;
+  }
+  GiNaC::numeric previous;
+  for (long digits = kBaseDigits; digits <= kMaxDigits; digits *= 3) {
+    GiNaC::ex v;
+    {
+      const DigitsGuard guard(std::max(digits, elliptic_digits(exact, field)));
+      DeepEvalf deep;
+      v = deep(exact);
+    }
+    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
+      throw ExpressionError(field + ": expression is not real");
+    }
+    const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(v);
+    if (digits > kBaseDigits && !n.is_zero() && !previous.is_zero() &&
+        n.csgn() == previous.csgn() && GiNaC::abs(n - previous) < GiNaC::abs(n) / 100) {
+      return n.csgn();
+    }
+    previous = n;
+  }
+  throw ExpressionError(field + ": its sign is not decided within 1080 digits (it is 0 or "
+                                "closer to 0 than that)");
 }
 
 namespace {

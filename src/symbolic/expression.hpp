@@ -83,6 +83,13 @@ GiNaC::lst substitution(const SymbolTable& table, const Values& values);
 /// @throws ExpressionError if e does not evaluate to a finite real number.
 double evaluate(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field);
 
+/// The sign (-1 or +1) of e at the parameter values, for an e not identically zero there. Not
+/// from the double value, which can underflow to 0 (a regime decided by a wobble of 1e-200
+/// squared): evaluated with 40, then 120, 360, 1080 digits until two agree on the sign and on
+/// the first two digits.
+/// @throws ExpressionError if e has no real value, or is zero within 1080 digits.
+int sign_of(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field);
+
 /// Exact zero test after normal(): e is identically zero in the parameters. False (not proved)
 /// for an expression of more than 400 nodes or more than 4 powers with a symbolic exponent,
 /// where normal() can grow without bound, and where normal() divides by zero.

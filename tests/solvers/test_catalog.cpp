@@ -8,6 +8,7 @@
 #include "core/inertia.hpp"
 #include "problem/load.hpp"
 #include "problem/values.hpp"
+#include "solvers/exact_answer.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/value_text.hpp"
 #include "temp_files.hpp"
@@ -222,5 +223,54 @@ TEST_CASE("decimals in a problem file are the decimal numbers, exactly (no inter
     // Exact both ways: the same closed form and the same value to the last bit.
     REQUIRE(a[i].symbolic == b[i].symbolic);
     REQUIRE(a[i].value.data == b[i].value.data);
+  }
+}
+
+TEST_CASE("the exact and double routes are compared for every problem at its defaults") {
+  // The comparison is skipped only where the double route over- or underflowed; at the
+  // catalog's values nothing does, so every problem is checked both ways.
+  for (const auto& p : load_catalog()) {
+    const RouteCheckCounts before = route_check_counts();
+    (void)solve(p, parameter_values(p, {}));
+    const RouteCheckCounts after = route_check_counts();
+    INFO(p.id);
+    CHECK(after.skipped == before.skipped);
+    CHECK(after.compared > before.compared);
+  }
+}
+
+TEST_CASE("badly scaled values: the routes agree within the problem's conditioning") {
+  // Each once failed the self-check (exit 3): a near-separatrix racket (period condition number
+  // 1.7e4), a molecule far from its centre of mass, a heavy top tipped to 1e-5 rad of the
+  // bottom, values whose squares leave double's range (the check is skipped, the exact route
+  // answers), and a modulus within 1e-83 of 1 (K(k) needs 120 digits).
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases{
+      {"tennis-racket", {"m=0.33", "a=0.51", "b=0.075", "c=0.011", "omega=16", "epsilon=0.0062"}},
+      {"tennis-racket", {"a=5"}},
+      {"tennis-racket", {"epsilon=1e-40"}},
+      {"tennis-racket", {"omega=1e150"}},
+      {"asymmetric-top", {"w2=1e150"}},
+      {"three-atom-molecule", {"m1=3000"}},
+      {"flying-plate", {"omega=1e-300"}},
+      {"flying-plate", {"omega=1e300"}},
+      {"heavy-top", {"g=1e12"}},
+      {"rect-solid", {"a=1e150"}},
+  };
+  for (const auto& [id, set] : cases) {
+    const Problem p = find_problem(id);
+    INFO(id << " " << set.back());
+    CHECK_NOTHROW(solve(p, parameter_values(p, set)));
+  }
+}
+
+TEST_CASE("a period near the separatrix is K(k) with enough digits (against mpmath)") {
+  // tennis-racket at epsilon = 1e-40: k'^2 = 4.3395e-83; mpmath (120 digits) gives the period
+  // 42.144758224211477 s. 40 digits would round k to 1 and refuse.
+  const Problem p = find_problem("tennis-racket");
+  const Key key = solve(p, parameter_values(p, {"epsilon=1e-40"}));
+  for (const auto& part : key.parts) {
+    for (const auto& a : part.answers) {
+      if (a.name == "period") CHECK_THAT(a.value.data[0], Catch::Matchers::WithinULP(42.144758224211477, 1));
+    }
   }
 }
