@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "cli/commands.hpp"
+#include "core/work_budget.hpp"
 #include "keys/golden.hpp"
 #include "problem/load.hpp"
 #include "problem/values.hpp"
@@ -61,11 +62,15 @@ int write_variants(const KeysOptions& opt, const std::vector<Problem>& problems)
   if (opt.out.empty()) throw InputError("--variants: give the folder with --out DIR");
   const auto [first, last] = variant_range(opt.variants);
   const std::filesystem::path dir = opt.out;
-  std::filesystem::create_directories(dir);
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
+    throw InputError("--out: " + dir.string() + " is a file, not a folder");
+  }
   // Refuse before writing anything, so a refusal leaves the folder as it was.
   std::vector<std::pair<std::filesystem::path, std::string>> files;
   for (const auto& p : problems) {
     for (long n = first; n <= last; ++n) {
+      throw_if_interrupted();
       Key key = solve(p, parameter_values(p, variant_for(p, n)));
       key.variant = n;
       const std::string stem = fmt::format("{}-v{}", p.id, n);
@@ -78,7 +83,13 @@ int write_variants(const KeysOptions& opt, const std::vector<Problem>& problems)
       throw InputError("--out: " + path.string() + " exists; use --force to overwrite it");
     }
   }
-  for (const auto& [path, content] : files) write_atomically(path, content);
+  std::filesystem::create_directories(dir);
+  // All or nothing: every file is staged before any is put in place, and without --force none
+  // replaces a file another run put there meanwhile.
+  StagedFiles set(/*replace=*/opt.force);
+  for (const auto& [path, content] : files) set.stage(path, content);
+  throw_if_interrupted();
+  set.commit();
   fmt::print("wrote {} files (variants {} to {} of {} problem{}) to {}\n", files.size(), first,
              last, problems.size(), problems.size() == 1 ? "" : "s", dir.string());
   return kExitOk;

@@ -9,6 +9,7 @@
 #include "problem/scene.hpp"
 #include "problem/variants.hpp"
 #include "render/atomic_write.hpp"
+#include "core/work_budget.hpp"
 #include "render/simulation_output.hpp"
 #include "simulate/scene_setup.hpp"
 
@@ -33,6 +34,9 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
                  "or 2*pi");
   app.add_option("--out", opt.out, "Write the samples to FILE.csv or FILE.json instead");
   app.add_option("--plot", opt.plot, "Draw the outputs against time as .svg, .png or .pdf (gnuplot)");
+  app.add_option("--max-evaluations", opt.max_evaluations,
+                 "Refuse a run estimated to need more evaluations than this (default 5e7, a "
+                 "few seconds), and stop one that does");
   app.add_flag("--force", opt.force, "Overwrite existing --out and --plot files");
 }
 
@@ -62,6 +66,10 @@ int run_simulate(const SimulateOptions& opt) {
   if (opt.tolerance && !(*opt.tolerance >= 1e-14 && *opt.tolerance <= 1e-2)) {
     throw InputError(
         fmt::format("--tolerance: {} is out of range (expected 1e-14 to 1e-2)", *opt.tolerance));
+  }
+  if (opt.max_evaluations && !(*opt.max_evaluations >= 1 && *opt.max_evaluations <= 1e15)) {
+    throw InputError(fmt::format("--max-evaluations: {} is out of range (expected 1 to 1e15)",
+                                 *opt.max_evaluations));
   }
   if (opt.samples && (*opt.samples < 2 || *opt.samples > 1000000)) {
     throw InputError(
@@ -95,10 +103,13 @@ int run_simulate(const SimulateOptions& opt) {
     }
   }();
   if (opt.tolerance) setup.tolerance = *opt.tolerance;
+  if (opt.max_evaluations) setup.max_evaluations = *opt.max_evaluations;
   const MethodChoice choice =
       opt.method.empty()
           ? choose_method(setup, setup.method, scene.model.file.string() + ": run.method")
           : choose_method(setup, opt.method, "--method");
+  const WorkEstimate work = estimate_work(setup, choice);
+  require_within_budget(work, setup.max_evaluations, "--max-evaluations");
 
   // Progress on a terminal only, and only once a run has taken a moment.
   const bool tty = ::isatty(STDERR_FILENO) != 0;
@@ -113,7 +124,15 @@ int run_simulate(const SimulateOptions& opt) {
     std::fflush(stderr);
     shown = true;
   };
-  const SimulationResult result = simulate(setup, choice, progress);
+  const SimulationResult result = [&] {
+    try {
+      return simulate(setup, choice, progress);
+    } catch (const WorkLimitReached& e) {
+      throw InputError(fmt::format("--max-evaluations: {} (estimated {:.2g} before it started, "
+                                   "from {}); shorten the run or raise --max-evaluations",
+                                   e.what(), work.evaluations, work.basis));
+    }
+  }();
   if (shown) fmt::print(stderr, "\r{:40}\r", "");
 
   // Files first, then stdout: a run that fails to write prints nothing.

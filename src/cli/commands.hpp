@@ -19,7 +19,10 @@ std::vector<std::string> with_variant(const Problem& problem, std::optional<long
 std::vector<std::pair<std::string, std::string>> shown_values(
     const std::vector<std::string>& assignments);
 
-inline constexpr int kExitOk = 0, kExitDifference = 1, kExitBadInput = 2, kExitInternal = 3;
+/// Exit codes: 0 ok, 1 an answer or key differs, 2 bad input (or too much asked), 3 a bug, 130
+/// stopped by Ctrl-C or SIGTERM (128 + SIGINT, as a shell reports it).
+inline constexpr int kExitOk = 0, kExitDifference = 1, kExitBadInput = 2, kExitInternal = 3,
+                     kExitInterrupted = 130;
 
 struct ListOptions {};
 void setup_list(CLI::App& app, ListOptions& opt);
@@ -47,6 +50,7 @@ struct SimulateOptions {
   std::optional<long long> samples;  ///< overrides the scene's
   std::string t_end;                 ///< overrides the scene's run.t_end (an expression, s)
   std::optional<long> variant;
+  std::optional<double> max_evaluations;  ///< the run's budget (default: SceneSetup's)
   std::string out, plot;
   bool force = false;
 };

@@ -6,8 +6,11 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <new>
 
 #include "cli/commands.hpp"
+#include "core/work_budget.hpp"
 #include "problem/problem.hpp"
 
 int main(int argc, char** argv) {
@@ -68,6 +71,9 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
 
+  // The long commands stop cleanly on Ctrl-C: their loops poll the flag and unwind, removing
+  // temporaries (core/work_budget.hpp). The others keep the default (nothing to clean up).
+  if (simulate->parsed() || keys->parsed() || bench->parsed()) wobble::stop_on_signals();
   try {
     if (list->parsed()) return run_list(list_opt);
     if (solve->parsed()) return run_solve(solve_opt);
@@ -76,8 +82,19 @@ int main(int argc, char** argv) {
     if (bench->parsed()) return run_bench(bench_opt);
     if (check->parsed()) return run_check(check_opt);
     if (worksheet->parsed()) return run_worksheet(worksheet_opt);
+  } catch (const wobble::Interrupted&) {
+    fmt::print(stderr, "wobble: interrupted; no file was left half-written\n");
+    return kExitInterrupted;
   } catch (const wobble::InputError& e) {
     fmt::print(stderr, "wobble: {}\n", e.what());
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr,
+               "wobble: out of memory: the input asks for more than this machine can hold\n");
+    return kExitBadInput;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // "filesystem error: cannot ...: Not a directory [path]" in the user's terms: the path first.
+    fmt::print(stderr, "wobble: {}: {}\n", e.path1().string(), e.code().message());
     return kExitBadInput;
   } catch (const std::logic_error& e) {
     fmt::print(stderr, "wobble: internal error (please report): {}\n", e.what());

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <utility>
+
+#include "core/work_budget.hpp"
 
 namespace wobble {
 
@@ -129,13 +132,22 @@ void rk_step(const RigidBodyModel& model, const State7& y, double h, Stages<T>& 
   }
 }
 
+// Once per step: cheap (a relaxed load and a comparison).
+void check_budget(const IntegrationCost& cost, std::int64_t limit) {
+  throw_if_interrupted();
+  if (cost.rhs_evals > limit) {
+    throw WorkLimitReached("the run needed more than " + std::to_string(limit) +
+                           " right-hand-side evaluations");
+  }
+}
+
 void renormalise(State7& y) {
   y.tail<4>() /= y.tail<4>().norm();
 }
 
 template <class T>
 void advance_fixed(const RigidBodyModel& model, State7& y, double span, double h_max,
-                   IntegrationCost& cost) {
+                   IntegrationCost& cost, std::int64_t limit) {
   const auto n =
       std::max<std::int64_t>(static_cast<std::int64_t>(std::ceil(span / h_max * (1 - 1e-12))), 1);
   const double h = span / static_cast<double>(n);
@@ -148,6 +160,7 @@ void advance_fixed(const RigidBodyModel& model, State7& y, double span, double h
     y = y_new;
     renormalise(y);
     ++cost.steps;
+    check_budget(cost, limit);
   }
 }
 }  // namespace
@@ -196,13 +209,13 @@ void RungeKutta::advance(State7& y, double t0, double t1) {
   if (fixed_) {
     switch (method_) {
       case RkMethod::rk4:
-        advance_fixed<Rk4>(model_, y, span, tol_or_step_, cost_);
+        advance_fixed<Rk4>(model_, y, span, tol_or_step_, cost_, limit_);
         return;
       case RkMethod::dopri5:
-        advance_fixed<Dopri5>(model_, y, span, tol_or_step_, cost_);
+        advance_fixed<Dopri5>(model_, y, span, tol_or_step_, cost_, limit_);
         return;
       case RkMethod::rkf78:
-        advance_fixed<Rkf78>(model_, y, span, tol_or_step_, cost_);
+        advance_fixed<Rkf78>(model_, y, span, tol_or_step_, cost_, limit_);
         return;
     }
   }
@@ -257,9 +270,15 @@ void RungeKutta::advance_adaptive(State7& y, double t0, double t1) {
       ++cost_.rejected;
       h_ = h * factor;
     }
+    check_budget(cost_, limit_);
     if (h_ < 1e-14 * std::max(std::abs(t_now), span)) {
-      throw std::runtime_error("Runge-Kutta: step size underflow at t = " + std::to_string(t_now) +
-                               " s");
+      // The motion changes faster than the time can be resolved (a singular or overflowing
+      // scene): the input's doing, said in its terms.
+      char at[32];
+      std::snprintf(at, sizeof at, "%.6g", t_now);
+      throw InputError(std::string("the motion changes too fast to follow at t = ") + at +
+                       " s (the integrator's step fell below 1e-14 of the time); the scene "
+                       "may be singular there: look at its values, or shorten the run");
     }
   }
   if constexpr (T::kFsal) {

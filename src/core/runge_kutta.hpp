@@ -40,6 +40,10 @@ class RungeKutta {
   const IntegrationCost& cost() const { return cost_; }
   RkMethod method() const { return method_; }
 
+  /// Right-hand-side evaluations allowed from now on (unlimited by default): past them advance()
+  /// throws WorkLimitReached. Each step also polls for an interrupt (core/work_budget.hpp).
+  void set_evaluation_limit(std::int64_t evaluations) { limit_ = cost_.rhs_evals + evaluations; }
+
  private:
   const RigidBodyModel& model_;
   RkMethod method_;
@@ -51,6 +55,7 @@ class RungeKutta {
   State7 inverse_scale_;
   double h_ = 0.0;  ///< next trial step (adaptive), 0 until the first call
   IntegrationCost cost_;
+  std::int64_t limit_ = INT64_MAX;
   // First same as last (Dormand-Prince): f at the end of the last accepted step.
   bool fsal_valid_ = false;
   State7 fsal_y_, fsal_k_;

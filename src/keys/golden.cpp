@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/work_budget.hpp"
 #include "problem/values.hpp"
 #include "render/atomic_write.hpp"
 #include "render/render.hpp"
@@ -143,17 +144,22 @@ std::vector<std::string> update_keys(const std::vector<Problem>& problems,
   // Compute every key first, so a failing problem leaves every file untouched.
   std::vector<std::pair<std::filesystem::path, std::string>> files;
   for (const auto& p : problems) {
+    throw_if_interrupted();
     Rendered r = render_default(p);
     files.emplace_back(dir / (p.id + ".json"), std::move(r.json_text));
     files.emplace_back(dir / (p.id + ".md"), std::move(r.markdown));
   }
   std::filesystem::create_directories(dir);
+  // All or nothing: every changed key is staged (written and flushed) before any is renamed in.
+  StagedFiles set(/*replace=*/true);
   std::vector<std::string> changed;
   for (const auto& [path, content] : files) {
     if (std::filesystem::exists(path) && read_file(path) == content) continue;
-    write_atomically(path, content);
+    set.stage(path, content);
     changed.push_back(path.string());
   }
+  throw_if_interrupted();
+  set.commit();
   return changed;
 }
 

@@ -146,6 +146,15 @@ void check_id_is_file_name(const std::string& id, const std::filesystem::path& f
 toml::table parse_toml_file(const std::filesystem::path& file, const std::string& what) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
+    const auto status = std::filesystem::status(file, ec);
+    if (std::filesystem::is_directory(status)) {
+      throw InputError(file.string() + ": is a folder; give a " + what + " file (ID.toml) in it, "
+                       "or an id (wobble list)");
+    }
+    if (std::filesystem::exists(status)) {
+      throw InputError(file.string() + ": is not a regular file (a device or pipe); give a " +
+                       what + " file");
+    }
     throw InputError(file.string() + ": no such " + what + " file");
   }
   // A problem or scene file is a few kilobytes; refuse anything absurd before reading it.

@@ -1,6 +1,7 @@
 #include "render/atomic_write.hpp"
 
 #include <fcntl.h>
+#include <stdio.h>  // renameat2, RENAME_NOREPLACE (glibc 2.28)
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -35,7 +36,10 @@ void require_writable(const std::filesystem::path& target) {
   ::unlink(tmpl.c_str());
 }
 
-void write_atomically(const std::filesystem::path& target, const std::string& content) {
+namespace {
+// The content in an exclusive temporary beside the target, flushed and closed: its path.
+std::filesystem::path write_temporary(const std::filesystem::path& target,
+                                      const std::string& content) {
   require_regular_or_absent(target);
   const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
   std::string name = ".";  // appended piece by piece: GCC 12 -Wrestrict false positive on "a" + s
@@ -67,11 +71,57 @@ void write_atomically(const std::filesystem::path& target, const std::string& co
     ::unlink(tmpl.c_str());
     throw std::runtime_error(target.string() + ": cannot close: " + why);
   }
-  if (::rename(tmpl.c_str(), target.c_str()) != 0) {
+  return tmpl;
+}
+
+// rename without replacing: renameat2 where the file system supports it, else link + unlink
+// (both fail with EEXIST when the target exists).
+bool move_no_replace(const std::filesystem::path& from, const std::filesystem::path& to) {
+  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return true;
+  if (errno != EINVAL && errno != ENOSYS) return false;
+  if (::link(from.c_str(), to.c_str()) != 0) return false;
+  ::unlink(from.c_str());
+  return true;
+}
+}  // namespace
+
+void write_atomically(const std::filesystem::path& target, const std::string& content) {
+  const std::filesystem::path tmp = write_temporary(target, content);
+  if (::rename(tmp.c_str(), target.c_str()) != 0) {
     const std::string why = std::strerror(errno);
-    ::unlink(tmpl.c_str());
+    ::unlink(tmp.c_str());
     throw std::runtime_error(target.string() + ": cannot replace: " + why);
   }
+}
+
+StagedFiles::~StagedFiles() {
+  if (committed_) return;
+  for (const auto& [tmp, target] : staged_) ::unlink(tmp.c_str());
+}
+
+void StagedFiles::stage(const std::filesystem::path& target, const std::string& content) {
+  staged_.emplace_back(write_temporary(target, content), target);
+}
+
+void StagedFiles::commit() {
+  std::size_t moved = 0;
+  for (; moved < staged_.size(); ++moved) {
+    const auto& [tmp, target] = staged_[moved];
+    const bool ok = replace_ ? ::rename(tmp.c_str(), target.c_str()) == 0
+                             : move_no_replace(tmp, target);
+    if (ok) continue;
+    const std::string why = errno == EEXIST ? "it appeared meanwhile (another run writing there?)"
+                                            : std::strerror(errno);
+    // Take back what this set moved (each was absent before: no-replace), remove the rest.
+    if (!replace_) {
+      for (std::size_t i = 0; i < moved; ++i) ::unlink(staged_[i].second.c_str());
+    }
+    for (std::size_t i = moved; i < staged_.size(); ++i) ::unlink(staged_[i].first.c_str());
+    committed_ = true;
+    throw std::runtime_error(target.string() + ": cannot be put in place: " + why +
+                             "; none of this run's files were left");
+  }
+  committed_ = true;
 }
 
 }  // namespace wobble

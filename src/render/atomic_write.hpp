@@ -4,6 +4,8 @@
 /// goes to a temporary file in the same folder, is flushed to disk, then renamed over the target.
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace wobble {
 
@@ -20,5 +22,30 @@ void require_writable(const std::filesystem::path& target);
 ///         not a regular file (a device such as /dev/null, a folder, a symbolic link); the
 ///         temporary is removed and the target is left as it was.
 void write_atomically(const std::filesystem::path& target, const std::string& content);
+
+/// A set of files written all or nothing. stage() writes each content to an exclusive temporary
+/// beside its target (flushed to disk); commit() renames them all into place. Destroyed before
+/// commit (an error, Ctrl-C), it removes its temporaries and no target has changed.
+/// With replace = false, commit() moves each file with no-replace (renameat2), so two runs
+/// writing the same folder at once cannot mix: if a target appeared meanwhile, the files this
+/// set already moved are taken back and commit() throws.
+class StagedFiles {
+ public:
+  explicit StagedFiles(bool replace) : replace_(replace) {}
+  ~StagedFiles();
+  StagedFiles(const StagedFiles&) = delete;
+  StagedFiles& operator=(const StagedFiles&) = delete;
+
+  /// @throws std::runtime_error naming the target if the temporary cannot be written.
+  void stage(const std::filesystem::path& target, const std::string& content);
+  /// @throws std::runtime_error naming the file (nothing of this set left in place).
+  void commit();
+  std::size_t size() const { return staged_.size(); }
+
+ private:
+  bool replace_;
+  bool committed_ = false;
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  ///< temp, target
+};
 
 }  // namespace wobble

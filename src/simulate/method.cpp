@@ -43,7 +43,7 @@ int order(SimMethod m) {
 // method is ~ (h Omega)^(p+1), so h = tol^(1/p) / Omega keeps the global error near tol over
 // a few turns. Omega is the fastest rate in the scene: the spin, and for a heavy top the
 // pendulum rate sqrt(M g d / I1). A rule of thumb, said so in the header.
-double default_step(const SceneSetup& s, int p) {
+double fastest_rate(const SceneSetup& s) {
   double rate = s.model.omega_P(s.m0_P).norm();
   if (s.model.gravity) {
     rate = std::max(rate, std::sqrt(s.model.mass_kg * s.model.g_S.norm() * s.model.d_P_m.norm() /
@@ -52,7 +52,30 @@ double default_step(const SceneSetup& s, int p) {
   if (s.model.torque) {
     rate = std::max(rate, std::sqrt(s.model.torque_Nm.norm() / s.model.I_P.minCoeff()));
   }
-  return std::min(s.t_end, std::pow(s.tolerance, 1.0 / p) / std::max(rate, 1e-300));
+  return rate;
+}
+
+double default_step(const SceneSetup& s, int p) {
+  return std::min(s.t_end, std::pow(s.tolerance, 1.0 / p) / std::max(fastest_rate(s), 1e-300));
+}
+
+// The rate a run reaches: a constant torque spins the body up by at most its size times t_end
+// over the smallest moment; gravity conserves the energy, so T <= T(0) + 2 M g d bounds it.
+double rate_reached(const SceneSetup& s) {
+  const RigidBodyModel& m = s.model;
+  double rate = fastest_rate(s);
+  if (m.gravity) {
+    const double T_max = m.kinetic(s.m0_P) + 2 * m.mass_kg * m.g_S.stableNorm() * m.d_P_m.stableNorm();
+    rate = std::max(rate, std::sqrt(2 * T_max / m.I_P.minCoeff()));
+  }
+  if (m.torque) rate += m.torque_Nm.stableNorm() * s.t_end / m.I_P.minCoeff();
+  return rate;
+}
+
+// Evaluations of an adaptive pair of order p with `stages` new evaluations per step.
+double adaptive_evaluations(const SceneSetup& s, double tolerance, int p, int stages) {
+  const double steps = 0.1 * rate_reached(s) * s.t_end * std::pow(tolerance, -1.0 / p);
+  return std::max(steps, 1.0) * stages;
 }
 }  // namespace
 
@@ -105,6 +128,43 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
       c.reason += fmt::format("; step tol^(1/{}) / rate = {:.3g} s (rule of thumb)", p, c.step_s);
   }
   return c;
+}
+
+WorkEstimate estimate_work(const SceneSetup& s, const MethodChoice& c) {
+  const double samples = s.samples;
+  const bool free = s.model.torque_free();
+  const double tight = std::max(s.tolerance / 100, 1e-14);
+  // The error estimate's run: the exact solution when torque-free, else Fehlberg 7(8) tighter.
+  const double reference = free ? samples : adaptive_evaluations(s, tight, 8, 13);
+  const double rate = rate_reached(s);
+  switch (c.method) {
+    case SimMethod::closed_form:
+    case SimMethod::exact:
+      return {samples, fmt::format("{} samples of the solution", s.samples)};
+    case SimMethod::rk4:
+    case SimMethod::split2:
+    case SimMethod::split4: {
+      const double per_step = c.method == SimMethod::rk4 ? 4 : c.method == SimMethod::split2 ? 3 : 9;
+      const double steps = std::ceil(s.t_end / c.step_s);
+      return {steps * per_step + reference,
+              fmt::format("{:.3g} steps of {:.3g} s over {:.6g} s", steps, c.step_s, s.t_end)};
+    }
+    case SimMethod::dopri5:
+    case SimMethod::rkf78:
+      break;
+  }
+  const bool dp = c.method == SimMethod::dopri5;
+  return {adaptive_evaluations(s, s.tolerance, dp ? 5 : 8, dp ? 6 : 13) + reference,
+          fmt::format("a rate up to {:.3g} rad/s over {:.6g} s at tolerance {:.0e}", rate, s.t_end,
+                      s.tolerance)};
+}
+
+void require_within_budget(const WorkEstimate& w, double limit, const std::string& option) {
+  if (w.evaluations <= limit) return;
+  throw InputError(fmt::format(
+      "{}: this run needs about {:.2g} evaluations ({}), more than the limit of {:.2g}; "
+      "shorten the run (--t-end), loosen --tolerance or lengthen the step, or raise {}",
+      option, w.evaluations, w.basis, limit, option));
 }
 
 }  // namespace wobble

@@ -34,4 +34,18 @@ const std::vector<std::pair<std::string, std::string>>& simulation_method_names(
 MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
                            const std::string& field = "--method");
 
+/// The work a run takes, estimated before it starts: right-hand-side evaluations (or sub-flows,
+/// or evaluations of the solution) of both runs, the samples' and the error estimate's. For the
+/// adaptive pairs, steps ~ 0.1 (rate t_end) tol^(-1/p), fitted to the heavy top from 1e-4 to
+/// 1e-12 (it slightly underestimates: the estimate refuses only what would surely run long).
+struct WorkEstimate {
+  double evaluations = 0;
+  std::string basis;  ///< how it was reckoned, for the message
+};
+WorkEstimate estimate_work(const SceneSetup& s, const MethodChoice& choice);
+
+/// @throws InputError when the estimate exceeds `limit`, naming the estimate, its basis and
+///         `option`, which raises the limit.
+void require_within_budget(const WorkEstimate& w, double limit, const std::string& option);
+
 }  // namespace wobble

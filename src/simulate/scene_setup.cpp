@@ -127,6 +127,49 @@ void set_brake(SceneSetup& s, const PrincipalAxes& pa) {
 }
 }  // namespace
 
+namespace {
+// What a run reaches must stay inside double precision with room for the squares the energy
+// and the integrator's error norm take: |m| grows at most by the torques' size times t_end, the
+// energy is at most |m|^2 / (2 I_min) plus the potential's range. Norms by stableNorm: a torque
+// of 1e200 must not overflow in the check itself.
+constexpr double kMaxEnergyJ = 1e280;
+
+std::string size_text(double x) {
+  return std::isfinite(x) ? fmt::format("{:.3g}", x) : "more than 1e308";
+}
+
+void check_ranges(const SceneSetup& s) {
+  const RigidBodyModel& m = s.model;
+  const double I_min = m.I_P.minCoeff();
+  const double pull = m.gravity ? m.mass_kg * m.g_S.stableNorm() * m.d_P_m.stableNorm() : 0.0;
+  const double torque = (m.torque ? m.torque_Nm.stableNorm() : 0.0) + pull;
+  const double L_max = s.m0_P.stableNorm() + torque * s.t_end;
+  const double E_max = L_max / I_min * L_max / 2 + 2 * pull;
+  if (!(E_max < kMaxEnergyJ)) {
+    const std::string field = m.torque    ? "effects.torque.value"
+                              : m.gravity ? "effects.gravity"
+                                          : "initial.omega";
+    throw InputError(fmt::format(
+        "{}: over the run (t_end = {:.6g} s) the angular momentum reaches {} kg m^2/s and the "
+        "energy {} J, beyond what double precision holds (about 1e308 for the squares "
+        "taken); scale the values down or shorten the run",
+        field, s.t_end, size_text(L_max), size_text(E_max)));
+  }
+  // A component of w(0) whose square underflows: double precision cannot follow its growth
+  // (a wobble of 1e-300 next to a spin of 1).
+  const double size = s.m0_P.stableNorm();
+  for (int i = 0; i < 3; ++i) {
+    const double part = std::abs(s.m0_P[i]);
+    if (part > 0.0 && part < 1e-150 * size) {
+      throw InputError(fmt::format(
+          "initial.omega: along principal axis {} it is {:.3g} of its size: too small for double "
+          "precision to follow (its square underflows); give 0 or at least 1e-150 of the spin",
+          i + 1, part / size));
+    }
+  }
+}
+}  // namespace
+
 SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
   const BodyContext ctx(scene.model, values);
   const Eval ev{ctx};
@@ -212,6 +255,7 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
   s.tolerance = scene.tolerance;
   if (scene.step) s.step = ev.positive(*scene.step, "run.step");
   s.method = scene.method;
+  check_ranges(s);
   s.outputs = scene.outputs;
   for (const auto& o : s.outputs) {
     if (o == "com_position" && !s.has_mass) {

@@ -37,6 +37,10 @@ struct SceneSetup {
   double t_end = 10.0;
   int samples = 101;
   double tolerance = 1e-10;
+  /// The run's budget in evaluations (simulate --max-evaluations): each integrator run stops
+  /// with WorkLimitReached past it. 5e7 is a few seconds at the 60 ns a heavy-top evaluation
+  /// takes (measured).
+  double max_evaluations = 5e7;
   std::optional<double> step;
   std::string method = "auto";
   std::vector<std::string> outputs;

@@ -8,6 +8,7 @@
 
 #include "core/exact_free_body.hpp"
 #include "core/runge_kutta.hpp"
+#include "core/work_budget.hpp"
 #include "simulate/outputs.hpp"
 
 namespace wobble {
@@ -56,6 +57,7 @@ std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
       const ExactFreeMotion motion(s.model.I_P, s.m0_P, s.q0_PtoS);
       describe(motion, result.notes);
       for (std::size_t k = 0; k < n; ++k) {
+        throw_if_interrupted();
         const FreeBodyState st = motion.at(times[k]);
         out.push_back({st.m_B, st.q_BtoS});
         report(progress, k, n);
@@ -73,6 +75,7 @@ std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
       double t = 0.0;
       std::int64_t subflows = 0;
       for (std::size_t k = 0; k < n; ++k) {
+        throw_if_interrupted();
         const double span = times[k] - t;
         if (span > 0.0) {
           const auto steps =
@@ -101,6 +104,9 @@ std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
   RigidBodyModel released = s.model;
   released.torque = false;
   RungeKutta after_stop(released, rk, tol_or_step, momentum_scale(s));
+  const auto budget = static_cast<std::int64_t>(std::min(s.max_evaluations, 9e18));
+  integrator.set_evaluation_limit(budget);
+  after_stop.set_evaluation_limit(budget);
   const double stop = s.brake_stops_s.value_or(INFINITY);
   bool stopped = false;
   State7 y = pack(s.m0_P, s.q0_PtoS);
