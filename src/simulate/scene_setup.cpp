@@ -205,6 +205,7 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
     pa.axes = (Mat3() << pa.axes.col(1), pa.axes.col(2), pa.axes.col(0)).finished();
     s.symmetry_axis_last = true;
   }
+  require_rotating_body(scene.model.file.string(), pa.moments, "a scene");
   s.moments = pa.moments;
   s.axes_B = pa.axes;
   s.symmetric = pa.degeneracy == Degeneracy::pair12 || pa.degeneracy == Degeneracy::pair23 ||

@@ -68,6 +68,7 @@ Asym::Asym(const Problem& p, const sym::Values& values) : BodyContext(p, values)
     w[uk] = t.table.parse(problem.motion->at(key), "motion." + key);
     w_n[k] = value(t, w[uk], "motion." + key);
   }
+  require_rotating_body(file(), I_n, "the asymmetric_top solver");
   if (!(I_n[0] < I_n[1] && I_n[1] < I_n[2])) {
     const bool two_equal = I_n[0] == I_n[1] || I_n[1] == I_n[2];
     throw InputError(fmt::format(

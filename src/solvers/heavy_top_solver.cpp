@@ -77,6 +77,8 @@ Top::Top(const Problem& p, const sym::Values& values) : BodyContext(p, values) {
   psidot = motion(t, "psidot0");
   numeric = {value(t, M, "mass"), value(t, l, "l"), value(t, g, "motion.g"), value(t, I1, "I1"),
              value(t, I3, "I3")};
+  require_rotating_body(file(), Vec3(numeric.I1_kgm2, numeric.I1_kgm2, numeric.I3_kgm2),
+                        "the heavy_top solver");
   if (!(numeric.l_m > 0.0)) {
     throw InputError(
         fmt::format("{}: body: the centre of mass is at z = {:.6g} m; it must be "

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/shapes.hpp"
 #include "core/validity.hpp"
@@ -223,6 +224,24 @@ InertiaBody build_inertia_body(const Problem& problem, const sym::SymbolTable& t
   body.exact = exact_parts.size() == 1 ? exact_parts[0] : sym::combine(exact_parts);
   body.numeric = combine(numeric_parts);
   return body;
+}
+
+void require_rotating_body(const std::string& file, const Vec3& moments_kgm2,
+                           const std::string& who) {
+  const double largest = moments_kgm2.cwiseAbs().maxCoeff();
+  const double smallest = moments_kgm2.minCoeff();
+  // Rounding leaves a rod's zero moment at ~eps times the others.
+  if (smallest > 64 * std::numeric_limits<double>::epsilon() * largest) return;
+  const std::string what =
+      largest > 0.0
+          ? fmt::format("a rod, all its mass on one line, or as thin as one to double precision "
+                        "(a pivot far away): its smallest moment, {:.3g} kg m^2, is 0 within the "
+                        "rounding of the largest, {:.3g} kg m^2",
+                        smallest, largest)
+                    : std::string("a point: all its mass is at one point, so every moment is 0");
+  throw InputError(fmt::format("{}: body: {} needs a body that can spin about every axis; this "
+                               "one is {}",
+                               file, who, what));
 }
 
 }  // namespace wobble

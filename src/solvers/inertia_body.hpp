@@ -26,6 +26,14 @@ struct InertiaBody {
 InertiaBody build_inertia_body(const Problem& problem, const sym::SymbolTable& table,
                                const sym::Values& values);
 
+/// A top needs a moment > 0 about every axis: a rod (all mass on a line) has none about its
+/// line, a point none at all, and the equations of motion divide by each moment.
+/// `moments` are the principal moments (kg m^2) at the values; `who` says who needs them
+/// ("the heavy_top solver", "a scene").
+/// @throws InputError naming the file and saying which body it is.
+void require_rotating_body(const std::string& file, const Vec3& moments_kgm2,
+                           const std::string& who);
+
 /// What a body solver starts from: the problem's symbols, the values as an exact substitution,
 /// and the body built both ways. Built in place and never copied: `exact` refers to `table`.
 /// @throws as build_inertia_body.

@@ -151,7 +151,11 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
                                 "(\\lambda_1, \\lambda_2, \\lambda_3) = " + out.moments.latex,
                                 "In ascending order at the given values:"});
   }
-  if (pa.moments[0] <= pa.degeneracy_tolerance) {
+  if (pa.moments[2] <= pa.degeneracy_tolerance) {
+    out.moments.notes.push_back(
+        "All moments are 0: all the mass is at this point (or there is none), so the tensor is "
+        "zero; it cannot turn a rotation into angular momentum.");
+  } else if (pa.moments[0] <= pa.degeneracy_tolerance) {
     out.moments.notes.push_back(
         "λ1 = 0: all the mass lies on the axis e1 (a line); the tensor is "
         "still valid.");

@@ -82,6 +82,9 @@ Top::Top(const Problem& p, const sym::Values& values) : BodyContext(with_motion(
     throw InputError(
         fmt::format("motion.alpha: {:.10g} rad must lie in [0, pi/2)", t.numeric.alpha_rad));
   }
+  require_rotating_body(problem.file.string(),
+                        Vec3(t.numeric.I1_kgm2, t.numeric.I1_kgm2, t.numeric.I3_kgm2),
+                        "the torque_free_symmetric solver");
   t.numeric.validate();
   t.prolate = t.numeric.I3_kgm2 < t.numeric.I1_kgm2;
   t.oblate = t.numeric.I3_kgm2 > t.numeric.I1_kgm2;
