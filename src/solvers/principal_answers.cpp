@@ -44,6 +44,15 @@ double moment_tolerance(const Mat3& I) {
 void add_method_steps(const sym::SymPrincipal& sp, const ExactContext& ctx,
                       std::vector<Step>& steps) {
   const auto& t = ctx.table;
+  if (sp.too_large) {
+    steps.push_back(
+        {fmt::format("The tensor's entries are too long for a closed form (over {} expression "
+                     "nodes): the moments and axes are computed numerically, from the exact "
+                     "tensor in 60 digits.",
+                     sym::kMaxClosedFormNodes),
+         ""});
+    return;
+  }
   steps.push_back(
       {"Characteristic equation det(λ 1 − I) = 0: " + sym::to_text(sp.characteristic, t) + " = 0",
        "\\det(\\lambda\\,\\mathbf{1} - I) = " + sym::to_latex(sp.characteristic, t) + " = 0",
@@ -129,8 +138,12 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
   }
   if (sp.method == sym::SymPrincipal::Method::numeric) {
     out.moments = numeric_vector(moments_name, refined.moments, unit,
-                                 "Numeric: no closed form (the characteristic cubic does not "
-                                 "factor); computed from the exact tensor in 60 digits.");
+                                 sp.too_large
+                                     ? "Numeric: the tensor is too long for the closed-form "
+                                       "route; computed from the exact tensor in 60 digits."
+                                     : "Numeric: no closed form (the characteristic cubic does "
+                                       "not factor); computed from the exact tensor in 60 "
+                                       "digits.");
   } else {
     std::array<double, 3> values{};
     for (std::size_t i = 0; i < 3; ++i)

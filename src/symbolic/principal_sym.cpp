@@ -67,8 +67,28 @@ SymVec3 cross(const SymVec3& a, const SymVec3& b) {
 }
 }  // namespace
 
+namespace {
+void count_nodes(const ex& e, int& n) {
+  if (++n > kMaxClosedFormNodes) return;
+  for (std::size_t i = 0; i < e.nops() && n <= kMaxClosedFormNodes; ++i) count_nodes(e.op(i), n);
+}
+}  // namespace
+
+int tensor_nodes(const GiNaC::matrix& I) {
+  int n = 0;
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = i; j < 3; ++j) count_nodes(I(i, j), n);
+  }
+  return std::min(n, kMaxClosedFormNodes + 1);
+}
+
 SymPrincipal principal_closed_form(const GiNaC::matrix& I, const GiNaC::symbol& lambda) {
   SymPrincipal out;
+  out.tensor_nodes = tensor_nodes(I);
+  if (out.tensor_nodes > kMaxClosedFormNodes) {
+    out.too_large = true;
+    return out;
+  }
   GiNaC::matrix shifted(3, 3);
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned j = 0; j < 3; ++j) shifted(i, j) = (i == j ? ex(lambda) : ex(0)) - I(i, j);

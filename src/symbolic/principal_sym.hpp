@@ -25,6 +25,10 @@ namespace wobble::sym {
 struct SymPrincipal {
   enum class Method { diagonal, block, factored, numeric };
   Method method = Method::numeric;
+  /// The tensor's entries were too large for the closed-form routes within the time budget
+  /// (kMaxClosedFormNodes): the characteristic polynomial was not formed.
+  bool too_large = false;
+  int tensor_nodes = 0;  ///< the size measured
   /// det(lambda 1 - I), factored where GiNaC could (for the steps).
   GiNaC::ex characteristic;
   /// Three closed-form moments (unordered, repeated roots repeated) unless method is numeric.
@@ -33,6 +37,15 @@ struct SymPrincipal {
   int block_k = -1, block_p = -1, block_q = -1;
   GiNaC::ex block_angle;
 };
+
+/// The symbolic budget: a tensor whose six entries have more expression nodes than this goes the
+/// numeric route at once. Expanding and factoring det(lambda 1 - I) grows fast with the entries
+/// (a file of 40 masses at sqrt(k) coordinates took minutes); the catalog's largest tensor has
+/// 155 nodes (a test keeps it under half the budget); 20 masses at sqrt(k) factor in 0.7 s.
+inline constexpr int kMaxClosedFormNodes = 400;
+
+/// Expression nodes in the six independent entries of I, counted up to kMaxClosedFormNodes + 1.
+int tensor_nodes(const GiNaC::matrix& I);
 
 /// @param lambda the symbol to write the characteristic polynomial in
 SymPrincipal principal_closed_form(const GiNaC::matrix& I, const GiNaC::symbol& lambda);

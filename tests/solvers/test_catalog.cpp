@@ -9,6 +9,8 @@
 #include "problem/load.hpp"
 #include "problem/values.hpp"
 #include "solvers/exact_answer.hpp"
+#include "solvers/inertia_body.hpp"
+#include "symbolic/principal_sym.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/value_text.hpp"
 #include "temp_files.hpp"
@@ -273,4 +275,52 @@ TEST_CASE("a period near the separatrix is K(k) with enough digits (against mpma
       if (a.name == "period") CHECK_THAT(a.value.data[0], Catch::Matchers::WithinULP(42.144758224211477, 1));
     }
   }
+}
+
+TEST_CASE("the symbolic budget: catalog tensors are far inside it, a file of 40 masses beyond") {
+  // The closed-form route's budget (kMaxClosedFormNodes) must never send a catalog problem to
+  // the numeric route: each tensor, about O and about the centre of mass, stays under half of it.
+  int largest = 0;
+  for (const auto& p : load_catalog()) {
+    const BodyContext c(p, parameter_values(p, {}));
+    const auto& e = c.body.exact;
+    largest = std::max(largest, sym::tensor_nodes(e.I_O));
+    if (c.body.has_mass) {
+      const GiNaC::matrix I_cm = sym::normalized(e.I_O.sub(sym::parallel_axis_term(e.mass, e.r_cm)));
+      largest = std::max(largest, sym::tensor_nodes(I_cm));
+    }
+  }
+  INFO("largest catalog tensor: " << largest << " nodes");
+  CHECK(largest * 2 < sym::kMaxClosedFormNodes);
+  // 40 masses at sqrt(k) coordinates (minutes of factoring before the budget): numeric at once.
+  std::string masses;
+  for (int i = 0; i < 40; ++i) {
+    masses += (i ? ", " : "") + std::string("{ mass = \"m\", at = [\"sqrt(") +
+              std::to_string(2 + i % 29) + ")*a\", \"sqrt(" + std::to_string(3 + (7 * i) % 23) +
+              ")*a\", \"" + std::to_string(i % 5 - 2) + "\"] }";
+  }
+  const Problem big = load_problem(test::write_file("budget/big.toml", R"TOML(id = "big"
+title = "t"
+solver = "inertia"
+statement = "s"
+[[parameters]]
+name = "m"
+unit = "kg"
+default = 1
+range = "(0, inf)"
+[[parameters]]
+name = "a"
+unit = "m"
+default = 1
+range = "(0, inf)"
+[body]
+masses = [ )TOML" + masses + R"TOML( ]
+[[parts]]
+id = "a"
+question = "q"
+answers = ["principal_moments", "principal_axes_cm"]
+)TOML"));
+  const Key key = solve(big, parameter_values(big, {}));
+  REQUIRE(key.parts.at(0).answers.size() == 2);
+  CHECK_THAT(key.parts[0].answers[0].notes.at(0), Catch::Contains("too long for the closed-form"));
 }
