@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "cli/commands.hpp"
+#include "problem/values.hpp"
 #include "problem/scene.hpp"
 #include "problem/variants.hpp"
 #include "render/atomic_write.hpp"
@@ -78,6 +79,7 @@ int run_simulate(const SimulateOptions& opt) {
   // An unwritable target is found before the work, not after it.
   if (!opt.out.empty()) require_writable(opt.out);
   if (!opt.plot.empty()) require_writable(opt.plot);
+  require_each_set_once(opt.sets);
   Scene scene = find_scene(opt.scene);
   if (opt.samples) scene.samples = static_cast<int>(*opt.samples);
   if (!opt.t_end.empty()) scene.t_end = opt.t_end;  // read and checked (> 0) as run.t_end

@@ -34,7 +34,7 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
     const std::string af = f + ".answers[" + std::to_string(i) + "]";
     const toml::node* n = answers.get(i);
     if (n->is_string()) {
-      const std::string name = *n->value<std::string>();
+      const std::string name = r.text(n, af);
       p.answers.push_back({name, name, std::nullopt});
     } else if (const toml::table* at = n->as_table()) {
       r.only_keys(*at, af, {"name", "quantity", "tolerance"});
@@ -108,7 +108,7 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
     for (std::size_t i = 0; i < a->size(); ++i) {
       if (!a->get(i)->is_string())
         r.fail(n, "notes[" + std::to_string(i) + "]", "expected a string");
-      p.notes.push_back(*a->get(i)->value<std::string>());
+      p.notes.push_back(r.text(a->get(i), "notes[" + std::to_string(i) + "]"));
     }
   }
   p.parameters = read_parameters(r, root);

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <charconv>
+#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -40,6 +41,26 @@ class Reader {
     }
   }
 
+  // A string node's text. Files hold plain text: a control character (ESC starts a terminal
+  // command, and titles and units are printed) is refused; newlines and tabs are text.
+  std::string text(const toml::node* n, const std::string& field) const {
+    std::string s = *n->value<std::string>();
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const auto c = static_cast<unsigned char>(s[i]);
+      const bool c1 = c == 0xC2 && i + 1 < s.size() &&
+                      static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
+                      static_cast<unsigned char>(s[i + 1]) <= 0x9F;  // U+0080..U+009F
+      if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7F || c1) {
+        char code[16];
+        std::snprintf(code, sizeof code, "U+%04X",
+                      c1 ? static_cast<unsigned char>(s[i + 1]) : static_cast<unsigned>(c));
+        fail(n, field, std::string("contains the control character ") + code +
+                           "; a file holds plain text");
+      }
+    }
+    return s;
+  }
+
   std::string string(const toml::table& t, const std::string& key, const std::string& field,
                      bool required = true, const std::string& fallback = "") const {
     const toml::node* n = t.get(key);
@@ -47,7 +68,7 @@ class Reader {
       if (required) fail(&t, field + key, "missing");
       return fallback;
     }
-    if (auto s = n->value<std::string>(); s && n->is_string()) return *s;
+    if (n->is_string()) return text(n, field + key);
     fail(n, field + key, "expected a string");
   }
 
@@ -55,7 +76,7 @@ class Reader {
   std::string expression(const toml::node* n, const std::string& field,
                          const toml::node* parent) const {
     if (n == nullptr) fail(parent, field, "missing");
-    if (n->is_string()) return *n->value<std::string>();
+    if (n->is_string()) return text(n, field);
     if (n->is_integer()) return std::to_string(*n->value<int64_t>());
     if (n->is_floating_point()) {
       char buf[32];

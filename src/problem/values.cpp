@@ -1,5 +1,7 @@
 #include "problem/values.hpp"
 
+#include <map>
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -111,6 +113,20 @@ sym::Values parameter_values(const Problem& problem, const std::vector<std::stri
     values[name] = parse_parameter_value(p, a.substr(eq + 1), "--set " + name);
   }
   return values;
+}
+
+void require_each_set_once(const std::vector<std::string>& assignments) {
+  std::map<std::string, std::string> seen;
+  for (const auto& a : assignments) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos) continue;  // parameter_values says what is wrong with it
+    const std::string name = trim(a.substr(0, eq));
+    const auto [it, fresh] = seen.emplace(name, trim(a.substr(eq + 1)));
+    if (!fresh) {
+      throw InputError("--set " + name + ": given twice ('" + it->second + "' and '" +
+                       trim(a.substr(eq + 1)) + "'); give each parameter once");
+    }
+  }
 }
 
 }  // namespace wobble

@@ -24,4 +24,9 @@ sym::Values parameter_values(const Problem& problem, const std::vector<std::stri
 /// expressions, `inf` or `-inf`. @throws InputError naming the field.
 Interval parse_interval(const std::string& text, const std::string& field);
 
+/// The user's --set assignments name each parameter once (a variant's values may be overridden
+/// by them, but "--set m=1 --set m=2" is a slip, not a choice).
+/// @throws InputError naming the parameter and both values.
+void require_each_set_once(const std::vector<std::string>& assignments);
+
 }  // namespace wobble

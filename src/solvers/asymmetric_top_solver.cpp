@@ -72,8 +72,9 @@ Asym::Asym(const Problem& p, const sym::Values& values) : BodyContext(p, values)
   if (!(I_n[0] < I_n[1] && I_n[1] < I_n[2])) {
     const bool two_equal = I_n[0] == I_n[1] || I_n[1] == I_n[2];
     throw InputError(fmt::format(
-        "{}: body: the asymmetric-top solver needs I1 < I2 < I3 along x, y, z; here I_xx = {:.6g}, "
-        "I_yy = {:.6g}, I_zz = {:.6g} kg m^2 ({})",
+        "{}: body: the asymmetric-top solver needs the moments about x, y, z in increasing "
+        "order, I_xx < I_yy < I_zz; at these values I_xx = {:.6g}, I_yy = {:.6g}, I_zz = {:.6g} "
+        "kg m^2 ({})",
         file(), I_n[0], I_n[1], I_n[2],
         two_equal ? "two are equal: a symmetric top, for the torque_free_symmetric solver"
                   : "relabel the axes so that the moments increase"));

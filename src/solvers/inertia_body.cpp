@@ -73,8 +73,10 @@ void add_point_masses(const Problem& problem, const Evaluator& ev, InertiaBody& 
     const sym::SymVec3 r_exact = ev.vec(masses[i].at, f + ".at", r);
     for (std::size_t j = 0; j < positions.size(); ++j) {
       // Coinciding within rounding of the positions' own size: the same point.
-      const double scale = std::max({r.norm(), positions[j].norm(), 1e-300});
-      if ((r - positions[j]).norm() <= 8 * std::numeric_limits<double>::epsilon() * scale) {
+      // (stableNorm: at positions of 1e-200 m the squares underflow and every pair "coincides".)
+      const double scale = std::max({r.stableNorm(), positions[j].stableNorm(), 1e-300});
+      if ((r - positions[j]).stableNorm() <=
+          8 * std::numeric_limits<double>::epsilon() * scale) {
         throw InputError(fmt::format(
             "{}.at: coincides with body.masses[{}].at (both at ({:.6g}, {:.6g}, {:.6g}) m)", f, j,
             r.x(), r.y(), r.z()));

@@ -109,6 +109,9 @@ std::string plain_parse_error(const std::string& text, const std::string& ginac_
     if (c == ')' && --depth < 0) return "a ')' has no '(' before it";
   }
   if (depth > 0) return "a '(' is not closed";
+  if (ginac_message.find("division by zero") != std::string::npos) {
+    return "it divides by zero";
+  }
   if (ginac_message.find("got: \",\"") != std::string::npos) {
     return "a ',' where one expression was expected (a vector is written [x, y, z])";
   }
