@@ -8,7 +8,6 @@
 #include <cerrno>
 #include <cstring>
 #include <cstdlib>
-#include <fstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -22,13 +21,26 @@ namespace wobble {
 namespace {
 // A new file in `dir` named ".NAME.XXXXXX<suffix>", created exclusively (O_EXCL, mode 0600):
 // a planted file or link of that name is never written through.
+// `content` is written through the descriptor mkstemps returned, never by reopening the name.
 std::filesystem::path exclusive_temp(const std::filesystem::path& dir, const std::string& name,
-                                     const std::string& suffix) {
+                                     const std::string& suffix, const std::string& content = "") {
   std::string tmpl = (dir / ("." + name + ".XXXXXX" + suffix)).string();
   const int fd = ::mkstemps(tmpl.data(), static_cast<int>(suffix.size()));
   if (fd < 0) {
     throw std::runtime_error(dir.string() + ": cannot create a temporary file: " +
                              std::strerror(errno));
+  }
+  std::size_t written = 0;
+  while (written < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const std::string why = std::strerror(errno);
+      ::close(fd);
+      ::unlink(tmpl.c_str());
+      throw std::runtime_error(dir.string() + ": cannot write a temporary file: " + why);
+    }
+    written += static_cast<std::size_t>(n);
   }
   ::close(fd);
   return tmpl;
@@ -43,7 +55,7 @@ void draw_with_gnuplot(const std::function<std::string(const std::filesystem::pa
   const auto figure_tmp = exclusive_temp(dir, name, out.extension().string());
   std::filesystem::path script_file;
   try {
-    script_file = exclusive_temp(dir, name, ".gp");
+    script_file = exclusive_temp(dir, name, ".gp", script(figure_tmp));
   } catch (...) {
     std::error_code ec;
     std::filesystem::remove(figure_tmp, ec);
@@ -54,14 +66,6 @@ void draw_with_gnuplot(const std::function<std::string(const std::filesystem::pa
     std::filesystem::remove(figure_tmp, ec);
     std::filesystem::remove(script_file, ec);
   };
-  {
-    std::ofstream f(script_file, std::ios::trunc);
-    f << script(figure_tmp);
-    if (!f) {
-      cleanup();
-      throw std::runtime_error(out.string() + ": cannot write in " + dir.string());
-    }
-  }
   // gnuplot SCRIPT, started without a shell: a file name is an argument, never a command line
   // (a quote in it cannot break out), and gnuplot's stderr goes to /dev/null.
   int status = -1;
@@ -89,6 +93,8 @@ void draw_with_gnuplot(const std::function<std::string(const std::filesystem::pa
         ": gnuplot failed to draw the figure (is gnuplot installed? scripts/setup "
         "installs it)");
   }
+  // Readable as any other output (the temporary was created 0600).
+  std::filesystem::permissions(figure_tmp, std::filesystem::perms(0644), ec);
   std::filesystem::rename(figure_tmp, out, ec);
   if (ec) {
     cleanup();
