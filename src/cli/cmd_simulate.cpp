@@ -137,21 +137,34 @@ int run_simulate(const SimulateOptions& opt) {
   }();
   if (shown) fmt::print(stderr, "\r{:40}\r", "");
 
-  // Files first, then stdout: a run that fails to write prints nothing.
-  std::string out = simulation_header(setup, result);
-  if (opt.out.empty()) {
-    out += "\n" + simulation_table(setup, result) + "\n";
-  } else {
+  // Files first, then stdout: a run that fails to write prints nothing. Samples are written as
+  // they are read back, never held whole (a million of them would be gigabytes of text).
+  std::string notes;
+  if (!opt.out.empty()) {
     const bool csv = std::filesystem::path(opt.out).extension() == ".csv";
-    write_atomically(opt.out, csv ? simulation_csv(result) : simulation_json(setup, result));
-    out += fmt::format("wrote {} samples to {}\n", result.rows.size(), opt.out);
+    write_atomically_with(opt.out, [&](const Emit& append) {
+      if (csv) {
+        emit_simulation_csv(result, append);
+      } else {
+        emit_simulation_json(setup, result, append);
+      }
+    });
+    notes += fmt::format("wrote {} samples to {}\n", result.rows.size(), opt.out);
   }
   if (!opt.plot.empty()) {
     write_simulation_plot(setup, result, opt.plot);
-    out += fmt::format("drew {}\n", opt.plot);
+    notes += fmt::format("drew {}\n", opt.plot);
   }
-  out += simulation_footer(setup, result);
-  fmt::print("{}", out);
+  const auto print = [](std::string_view piece) { std::fwrite(piece.data(), 1, piece.size(), stdout); };
+  print(simulation_header(setup, result));
+  if (opt.out.empty()) {
+    print("\n");
+    emit_simulation_table(setup, result, print);
+    print("\n");
+  }
+  print(notes);
+  print(simulation_footer(setup, result));
+  std::fflush(stdout);
   return kExitOk;
 }
 

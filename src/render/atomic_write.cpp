@@ -37,9 +37,10 @@ void require_writable(const std::filesystem::path& target) {
 }
 
 namespace {
+using Producer = std::function<void(const std::function<void(std::string_view)>&)>;
+
 // The content in an exclusive temporary beside the target, flushed and closed: its path.
-std::filesystem::path write_temporary(const std::filesystem::path& target,
-                                      const std::string& content) {
+std::filesystem::path write_temporary(const std::filesystem::path& target, const Producer& produce) {
   require_regular_or_absent(target);
   const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
   std::string name = ".";  // appended piece by piece: GCC 12 -Wrestrict false positive on "a" + s
@@ -47,24 +48,45 @@ std::filesystem::path write_temporary(const std::filesystem::path& target,
   name += ".tmp.XXXXXX";
   std::string tmpl = (dir / name).string();
   const int fd = ::mkstemp(tmpl.data());
+  bool open = fd >= 0;
+  const auto discard = [&] {
+    if (!open) return;
+    ::close(fd);
+    ::unlink(tmpl.c_str());
+    open = false;
+  };
   auto fail = [&](const std::string& what) {
     const std::string why = std::strerror(errno);
-    if (fd >= 0) {
-      ::close(fd);
-      ::unlink(tmpl.c_str());
-    }
+    discard();
     throw std::runtime_error(target.string() + ": cannot " + what + ": " + why);
   };
   if (fd < 0) fail("create a temporary file");
-  std::size_t written = 0;
-  while (written < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      fail("write");
+  const auto write_all = [&](std::string_view content) {
+    std::size_t written = 0;
+    while (written < content.size()) {
+      const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        fail("write");
+      }
+      written += static_cast<std::size_t>(n);
     }
-    written += static_cast<std::size_t>(n);
+  };
+  std::string buffer;
+  constexpr std::size_t kBuffer = std::size_t{1} << 16;
+  try {
+    produce([&](std::string_view piece) {
+      buffer += piece;
+      if (buffer.size() >= kBuffer) {
+        write_all(buffer);
+        buffer.clear();
+      }
+    });
+  } catch (...) {
+    discard();  // the producer failed (or was interrupted): no temporary is left behind
+    throw;
   }
+  write_all(buffer);
   if (::fchmod(fd, 0644) != 0 || ::fsync(fd) != 0) fail("flush");
   if (::close(fd) != 0) {
     const std::string why = std::strerror(errno);
@@ -86,7 +108,11 @@ bool move_no_replace(const std::filesystem::path& from, const std::filesystem::p
 }  // namespace
 
 void write_atomically(const std::filesystem::path& target, const std::string& content) {
-  const std::filesystem::path tmp = write_temporary(target, content);
+  write_atomically_with(target, [&](const auto& append) { append(content); });
+}
+
+void write_atomically_with(const std::filesystem::path& target, const Producer& produce) {
+  const std::filesystem::path tmp = write_temporary(target, produce);
   if (::rename(tmp.c_str(), target.c_str()) != 0) {
     const std::string why = std::strerror(errno);
     ::unlink(tmp.c_str());
@@ -100,7 +126,8 @@ StagedFiles::~StagedFiles() {
 }
 
 void StagedFiles::stage(const std::filesystem::path& target, const std::string& content) {
-  staged_.emplace_back(write_temporary(target, content), target);
+  staged_.emplace_back(write_temporary(target, [&](const auto& append) { append(content); }),
+                       target);
 }
 
 void StagedFiles::commit() {

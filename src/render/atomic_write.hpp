@@ -3,7 +3,9 @@
 /// Writing a file so that readers see the old content or the new, never a part: the content
 /// goes to a temporary file in the same folder, is flushed to disk, then renamed over the target.
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -22,6 +24,12 @@ void require_writable(const std::filesystem::path& target);
 ///         not a regular file (a device such as /dev/null, a folder, a symbolic link); the
 ///         temporary is removed and the target is left as it was.
 void write_atomically(const std::filesystem::path& target, const std::string& content);
+
+/// The same for content produced a piece at a time: `produce` is called once with a function
+/// that appends a piece (buffered, written as it grows), so a large file is never held whole.
+void write_atomically_with(
+    const std::filesystem::path& target,
+    const std::function<void(const std::function<void(std::string_view)>& append)>& produce);
 
 /// A set of files written all or nothing. stage() writes each content to an exclusive temporary
 /// beside its target (flushed to disk); commit() renames them all into place. Destroyed before

@@ -64,7 +64,7 @@ std::string simulation_header(const SceneSetup& s, const SimulationResult& r) {
   return h;
 }
 
-std::string simulation_table(const SceneSetup& s, const SimulationResult& r) {
+void emit_simulation_table(const SceneSetup& s, const SimulationResult& r, const Emit& emit) {
   const int d = printed_digits(s, r);
   const std::size_t width = static_cast<std::size_t>(d) + 8;
   std::vector<std::size_t> w;
@@ -73,37 +73,57 @@ std::string simulation_table(const SceneSetup& s, const SimulationResult& r) {
   // column to the decimal place of that value's d-th digit, so a small value gets fewer
   // significant digits, and one below half that place (a spin braked to rest, 1.2e-14) is 0.
   std::vector<int> last_place(r.columns.size(), 0);
-  for (std::size_t j = 0; j < r.columns.size(); ++j) {
-    double largest = 0.0;
-    for (const auto& row : r.rows) largest = std::max(largest, std::abs(row[j]));
+  for (std::size_t j = 0; j < r.columns.size() && j < r.rows.cols(); ++j) {
+    const double largest = r.rows.largest(j);
     last_place[j] = largest > 0.0 ? static_cast<int>(std::floor(std::log10(largest))) - d + 1 : 0;
   }
-  std::string out;
+  std::string line;
   for (std::size_t j = 0; j < r.columns.size(); ++j)
-    out += fmt::format("{:>{}}", r.columns[j], w[j]);
-  out += "\n";
+    line += fmt::format("{:>{}}", r.columns[j], w[j]);
+  emit(line + "\n");
+  line.clear();
   for (std::size_t j = 0; j < r.units.size(); ++j)
-    out += fmt::format("{:>{}}", "[" + r.units[j] + "]", w[j]);
-  out += "\n";
-  for (const auto& row : r.rows) {
+    line += fmt::format("{:>{}}", "[" + r.units[j] + "]", w[j]);
+  emit(line + "\n");
+  r.rows.for_each([&](std::size_t, const std::vector<double>& row) {
+    line.clear();
     for (std::size_t j = 0; j < row.size(); ++j) {
       // Errors are printed to 3 digits: they are sizes, not values.
       const bool err = r.columns[j].rfind("err_", 0) == 0;
       if (err) {
-        out += fmt::format("{:>{}.3g}", row[j], w[j]);
+        line += fmt::format("{:>{}.3g}", row[j], w[j]);
         continue;
       }
       const double v = row[j], place = std::pow(10.0, last_place[j]);
       if (std::abs(v) < 0.5 * place) {
-        out += fmt::format("{:>{}}", "0", w[j]);
+        line += fmt::format("{:>{}}", "0", w[j]);
         continue;
       }
       const int digits = static_cast<int>(std::floor(std::log10(std::abs(v)))) - last_place[j] + 1;
-      out += fmt::format("{:>{}.{}g}", v, w[j], std::max(digits, 1));
+      line += fmt::format("{:>{}.{}g}", v, w[j], std::max(digits, 1));
     }
-    out += "\n";
-  }
+    emit(line + "\n");
+  });
+}
+
+namespace {
+std::string collected(const std::function<void(const Emit&)>& produce) {
+  std::string out;
+  produce([&](std::string_view piece) { out += piece; });
   return out;
+}
+}  // namespace
+
+std::string simulation_table(const SceneSetup& s, const SimulationResult& r) {
+  return collected([&](const Emit& e) { emit_simulation_table(s, r, e); });
+}
+
+std::string simulation_csv(const SimulationResult& r) {
+  return collected([&](const Emit& e) { emit_simulation_csv(r, e); });
+}
+
+std::string simulation_json(const SceneSetup& s, const SimulationResult& r) {
+  return collected([&](const Emit& e) { emit_simulation_json(s, r, e); });
 }
 
 std::string simulation_footer(const SceneSetup& s, const SimulationResult& r) {
@@ -135,33 +155,33 @@ std::string simulation_footer(const SceneSetup& s, const SimulationResult& r) {
   return f;
 }
 
-std::string simulation_csv(const SimulationResult& r) {
-  std::string out;
+void emit_simulation_csv(const SimulationResult& r, const Emit& emit) {
+  std::string line;
   for (std::size_t j = 0; j < r.columns.size(); ++j) {
-    out += (j ? "," : "") + r.columns[j] + " [" + r.units[j] + "]";
+    line += (j ? "," : "") + r.columns[j] + " [" + r.units[j] + "]";
   }
-  out += "\n";
-  for (const auto& row : r.rows) {
-    for (std::size_t j = 0; j < row.size(); ++j)
-      out += fmt::format("{}{:.17g}", j ? "," : "", row[j]);
-    out += "\n";
-  }
-  return out;
+  emit(line + "\n");
+  r.rows.for_each([&](std::size_t, const std::vector<double>& row) {
+    line.clear();
+    for (std::size_t j = 0; j < row.size(); ++j) line += fmt::format("{}{:.17g}", j ? "," : "", row[j]);
+    emit(line + "\n");
+  });
 }
 
-std::string simulation_json(const SceneSetup& s, const SimulationResult& r) {
-  nlohmann::ordered_json j;
-  j["scene"] = s.id;
-  j["title"] = s.title;
-  j["method"] = name_of(r.choice.method);
-  j["reason"] = r.choice.reason;
-  j["effects"] = s.effects;
-  j["principal_moments"] = {s.moments[0], s.moments[1], s.moments[2]};
-  j["t_end"] = s.t_end;
-  j["tolerance"] = s.tolerance;
-  j["columns"] = r.columns;
-  j["units"] = r.units;
-  j["rows"] = r.rows;
+// The JSON document with its rows written one per line as they are read back (the rest by
+// nlohmann-json): the same document as one dump, without holding the rows.
+void emit_simulation_json(const SceneSetup& s, const SimulationResult& r, const Emit& emit) {
+  nlohmann::ordered_json head;
+  head["scene"] = s.id;
+  head["title"] = s.title;
+  head["method"] = name_of(r.choice.method);
+  head["reason"] = r.choice.reason;
+  head["effects"] = s.effects;
+  head["principal_moments"] = {s.moments[0], s.moments[1], s.moments[2]};
+  head["t_end"] = s.t_end;
+  head["tolerance"] = s.tolerance;
+  head["columns"] = r.columns;
+  head["units"] = r.units;
   nlohmann::ordered_json inv = nlohmann::ordered_json::array();
   for (const auto& i : r.invariants) {
     inv.push_back({{"name", i.name},
@@ -169,13 +189,36 @@ std::string simulation_json(const SceneSetup& s, const SimulationResult& r) {
                    {"max_abs_error", i.max_abs},
                    {"relative_error", i.relative()}});
   }
-  j["invariants"] = inv;
-  j["cost"] = {{"count", r.cost},
-               {"of", r.cost_label},
-               {"steps", r.steps},
-               {"rejected", r.rejected},
-               {"run_time_s", r.run_time_s}};
-  return j.dump(1) + "\n";
+  nlohmann::ordered_json tail;
+  tail["invariants"] = inv;
+  tail["cost"] = {{"count", r.cost},
+                  {"of", r.cost_label},
+                  {"steps", r.steps},
+                  {"rejected", r.rejected},
+                  {"run_time_s", r.run_time_s}};
+  // "{\n ...\n}": the members of each object without its braces, joined around "rows".
+  const auto members = [](const nlohmann::ordered_json& o) {
+    const std::string text = o.dump(1);
+    return text.substr(2, text.size() - 4);
+  };
+  emit("{\n" + members(head) + ",\n \"rows\": [");
+  std::string line;
+  r.rows.for_each([&](std::size_t k, const std::vector<double>& row) {
+    line = k ? ",\n  [" : "\n  [";
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      // Shortest round trip, as nlohmann writes a double; non-finite values are null in JSON.
+      line += j ? ", " : "";
+      if (!std::isfinite(row[j])) {
+        line += "null";
+        continue;
+      }
+      const std::size_t at = line.size();
+      fmt::format_to(std::back_inserter(line), "{}", row[j]);
+      if (line.find_first_of(".e", at) == std::string::npos) line += ".0";  // stays a float
+    }
+    emit(line + "]");
+  });
+  emit(std::string(r.rows.empty() ? "]" : "\n ]") + ",\n" + members(tail) + "\n}\n");
 }
 
 std::string cross_check_text(const CrossCheck& c, double key_time_s) {
@@ -203,17 +246,19 @@ bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// An Euler angle's column made continuous: a jump over pi between samples is the angle
-// wrapping at +-pi, so a whole turn is added back (the table keeps (-pi, pi]; the plot shows
-// phi and psi growing as they do).
-void unwrap(std::vector<std::vector<double>>& rows, std::size_t j) {
-  double offset = 0.0;
-  for (std::size_t k = 1; k < rows.size(); ++k) {
-    const double step = rows[k][j] + offset - rows[k - 1][j];
-    offset -= 2 * M_PI * std::round(step / (2 * M_PI));
-    rows[k][j] += offset;
+// An Euler angle's column made continuous, sample by sample: a jump over pi between samples
+// is the angle wrapping at +-pi, so a whole turn is added back (the table keeps (-pi, pi]; the
+// plot shows phi and psi growing as they do).
+struct Unwrapper {
+  double offset = 0.0, previous = 0.0;
+  bool started = false;
+  double operator()(double v) {
+    if (started) offset -= 2 * M_PI * std::round((v + offset - previous) / (2 * M_PI));
+    started = true;
+    previous = v + offset;
+    return previous;
   }
-}
+};
 
 using Panel = PlotLayout::Panel;
 
@@ -228,9 +273,7 @@ std::vector<Panel> plot_panels(const SimulationResult& r) {
     if (ends_with(base, "_theta")) {
       base = "tilt θ (" + base.substr(0, base.size() - 6) + ")";
     } else if (base.rfind("err_", 0) == 0) {
-      const bool all_zero = std::all_of(r.rows.begin(), r.rows.end(),
-                                        [&](const auto& row) { return row[j] == 0.0; });
-      if (all_zero) continue;  // conserved exactly: nothing to draw
+      if (r.rows.largest(j) == 0.0) continue;  // conserved exactly: nothing to draw
       base = "|invariant error| [" + r.units[j] + "]";
       log_scale = true;
     } else {
@@ -257,10 +300,41 @@ std::vector<Panel> plot_panels(const SimulationResult& r) {
 }  // namespace
 
 PlotLayout plot_layout(const SimulationResult& r) {
-  PlotLayout layout{plot_panels(r), r.rows};
+  PlotLayout layout{plot_panels(r), {}};
+  std::vector<std::size_t> angles;
   for (std::size_t j = 1; j < r.columns.size(); ++j) {
-    if (ends_with(r.columns[j], "_phi") || ends_with(r.columns[j], "_psi")) unwrap(layout.rows, j);
+    if (ends_with(r.columns[j], "_phi") || ends_with(r.columns[j], "_psi")) angles.push_back(j);
   }
+  std::vector<Unwrapper> unwrap(angles.size());
+  // Up to kPlotBuckets buckets of consecutive samples; of each, the first and last rows and
+  // those where a column is smallest or largest, so every curve keeps its envelope.
+  const std::size_t n = r.rows.size();
+  const std::size_t per_bucket = std::max<std::size_t>(1, (n + kPlotBuckets - 1) / kPlotBuckets);
+  std::vector<std::vector<double>> bucket;
+  const auto flush = [&] {
+    if (bucket.empty()) return;
+    std::vector<std::size_t> keep{0, bucket.size() - 1};
+    for (std::size_t j = 1; j < r.rows.cols() && per_bucket > 1; ++j) {
+      std::size_t lo = 0, hi = 0;
+      for (std::size_t i = 1; i < bucket.size(); ++i) {
+        if (bucket[i][j] < bucket[lo][j]) lo = i;
+        if (bucket[i][j] > bucket[hi][j]) hi = i;
+      }
+      keep.push_back(lo);
+      keep.push_back(hi);
+    }
+    std::sort(keep.begin(), keep.end());
+    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+    for (const std::size_t i : keep) layout.rows.push_back(bucket[i]);
+    bucket.clear();
+  };
+  r.rows.for_each([&](std::size_t, const std::vector<double>& row) {
+    std::vector<double> shown = row;
+    for (std::size_t a = 0; a < angles.size(); ++a) shown[angles[a]] = unwrap[a](row[angles[a]]);
+    bucket.push_back(std::move(shown));
+    if (bucket.size() == per_bucket) flush();
+  });
+  flush();
   return layout;
 }
 

@@ -8,7 +8,9 @@
 /// place. CSV and JSON carry every double to 17 significant digits (for programs; the footer
 /// says how far to trust them).
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "simulate/cross_check.hpp"
@@ -16,18 +18,31 @@
 
 namespace wobble {
 
+/// Text handed over a piece at a time (a line, a row), so that a million samples are written
+/// without being held: to a file (render/atomic_write), to stdout, or collected in a string.
+using Emit = std::function<void(std::string_view)>;
+
 std::string simulation_header(const SceneSetup& s, const SimulationResult& r);
-std::string simulation_table(const SceneSetup& s, const SimulationResult& r);
 std::string simulation_footer(const SceneSetup& s, const SimulationResult& r);
+void emit_simulation_table(const SceneSetup& s, const SimulationResult& r, const Emit& emit);
+void emit_simulation_csv(const SimulationResult& r, const Emit& emit);
+void emit_simulation_json(const SceneSetup& s, const SimulationResult& r, const Emit& emit);
+/// The same, collected (for tests and small runs).
+std::string simulation_table(const SceneSetup& s, const SimulationResult& r);
 std::string simulation_csv(const SimulationResult& r);
 std::string simulation_json(const SceneSetup& s, const SimulationResult& r);
 
 /// Significant digits the text table prints for this run.
 int printed_digits(const SceneSetup& s, const SimulationResult& r);
 
+/// A plot draws at most this many buckets of samples (each at most 2 + 2 columns rows): beyond
+/// it, more samples add nothing a picture 900 pixels wide can show, only memory and file size.
+inline constexpr std::size_t kPlotBuckets = 1000;
+
 /// What a plot of a run shows: panels of columns (one per output; the tilt theta on its own;
 /// invariant errors as |error| on a log scale, one panel per unit, an error that is exactly zero
-/// left out) and the rows with Euler angles phi and psi unwrapped (continuous, no jump at +-pi).
+/// left out) and the rows with Euler angles phi and psi unwrapped (continuous, no jump at +-pi);
+/// past kPlotBuckets samples, of each bucket only the rows where a column is at its extremes.
 struct PlotLayout {
   struct Panel {
     std::string title;

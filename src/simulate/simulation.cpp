@@ -45,11 +45,10 @@ void describe(const ExactFreeMotion& motion, std::vector<std::string>& notes) {
 
 }  // namespace
 
-std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
-                                const std::vector<double>& times, SimulationResult& result,
-                                const std::function<void(double)>& progress) {
-  std::vector<SimState> out;
-  out.reserve(times.size());
+void propagate_each(const SceneSetup& s, const MethodChoice& choice,
+                    const std::vector<double>& times, SimulationResult& result,
+                    const std::function<void(std::size_t k, const SimState& state)>& at_sample,
+                    const std::function<void(double)>& progress) {
   const std::size_t n = times.size();
   switch (choice.method) {
     case SimMethod::closed_form:
@@ -59,12 +58,12 @@ std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
       for (std::size_t k = 0; k < n; ++k) {
         throw_if_interrupted();
         const FreeBodyState st = motion.at(times[k]);
-        out.push_back({st.m_B, st.q_BtoS});
+        at_sample(k, {st.m_B, st.q_BtoS});
         report(progress, k, n);
       }
       result.cost_label = "evaluations of the solution";
       result.cost += static_cast<std::int64_t>(n);
-      return out;
+      return;
     }
     case SimMethod::split2:
     case SimMethod::split4: {
@@ -84,12 +83,12 @@ std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
           result.steps += steps;
           t = times[k];
         }
-        out.push_back({st.m_B, st.q_BtoS});
+        at_sample(k, {st.m_B, st.q_BtoS});
         report(progress, k, n);
       }
       result.cost_label = "sub-flows";
       result.cost += subflows;
-      return out;
+      return;
     }
     default:
       break;
@@ -123,7 +122,7 @@ std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
       (stopped ? after_stop : integrator).advance(y, t, times[k]);
       t = times[k];
     }
-    out.push_back({momentum_of(y), attitude_of(y)});
+    at_sample(k, {momentum_of(y), attitude_of(y)});
     report(progress, k, n);
   }
   result.cost_label = "right-hand-side evaluations";
@@ -132,6 +131,16 @@ std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
     result.steps += r->cost().steps;
     result.rejected += r->cost().rejected;
   }
+}
+
+std::vector<SimState> propagate(const SceneSetup& s, const MethodChoice& choice,
+                                const std::vector<double>& times, SimulationResult& result,
+                                const std::function<void(double)>& progress) {
+  std::vector<SimState> out;
+  out.reserve(times.size());
+  propagate_each(
+      s, choice, times, result, [&](std::size_t, const SimState& st) { out.push_back(st); },
+      progress);
   return out;
 }
 
@@ -149,9 +158,6 @@ SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
   const auto first_half = [&](double f) {
     if (progress) progress(exact ? f : 0.5 * f);
   };
-  const std::vector<SimState> states = propagate(s, choice, times, r, first_half);
-  r.run_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
   const std::vector<ConservedQuantity> conserved = conserved_quantities(s);
   std::vector<Vec3> at_start;
   for (const auto& q : conserved) {
@@ -161,23 +167,25 @@ SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
   const Columns columns = output_columns(s, conserved);
   r.columns = columns.names;
   r.units = columns.units;
-  const auto make_rows = [&](const std::vector<SimState>& states_, bool track) {
-    std::vector<std::vector<double>> rows;
-    for (std::size_t k = 0; k < states_.size(); ++k) {
-      std::vector<double> errors;
-      for (std::size_t i = 0; i < conserved.size(); ++i) {
-        const double e =
-            (conserved[i].value(states_[k], times[k]) - at_start[i]).cwiseAbs().maxCoeff();
-        if (track) r.invariants[i].max_abs = std::max(r.invariants[i].max_abs, e);
-        errors.push_back(e);
-      }
-      rows.push_back(output_row(s, states_[k], times[k], errors));
+  const auto make_row = [&](const SimState& state, std::size_t k, bool track) {
+    std::vector<double> errors;
+    for (std::size_t i = 0; i < conserved.size(); ++i) {
+      const double e = (conserved[i].value(state, times[k]) - at_start[i]).cwiseAbs().maxCoeff();
+      if (track) r.invariants[i].max_abs = std::max(r.invariants[i].max_abs, e);
+      errors.push_back(e);
     }
-    return rows;
+    return output_row(s, state, times[k], errors);
   };
-  r.rows = make_rows(states, true);
+  // Each sample becomes a row as it is computed (the rows go to a file past a few MiB): memory
+  // does not grow with the number of samples.
+  propagate_each(
+      s, choice, times, r,
+      [&](std::size_t k, const SimState& state) { r.rows.append(make_row(state, k, true)); },
+      first_half);
+  r.run_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  // How far to trust the samples: a second, more accurate run, compared column by column.
+  // How far to trust the samples: a second, more accurate run, compared column by column as
+  // its samples arrive.
   if (exact) {
     r.error_reference = "exact";
     return r;
@@ -198,19 +206,25 @@ SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
   const auto second_half = [&](double f) {
     if (progress) progress(0.5 + 0.5 * f);
   };
-  const auto ref_rows = make_rows(propagate(tight, ref, times, rc, second_half), false);
+  std::vector<double> scale(r.columns.size(), 0.0), diff(r.columns.size(), 0.0);
+  propagate_each(
+      tight, ref, times, rc,
+      [&](std::size_t k, const SimState& state) {
+        const std::vector<double> ref_row = make_row(state, k, false);
+        const std::vector<double> row = r.rows[k];
+        for (std::size_t j = 1; j < r.columns.size(); ++j) {
+          scale[j] = std::max(scale[j], std::abs(ref_row[j]));
+          double d = row[j] - ref_row[j];
+          if (r.units[j] == "rad") d = std::remainder(d, 2 * M_PI);  // angles wrap at +-pi
+          diff[j] = std::max(diff[j], std::abs(d));
+        }
+      },
+      second_half);
   r.estimate_cost = rc.cost;
   double worst = 0.0;
   for (std::size_t j = 1; j < r.columns.size(); ++j) {
     if (r.columns[j].rfind("err_", 0) == 0) continue;
-    double scale = 0.0, diff = 0.0;
-    for (std::size_t k = 0; k < r.rows.size(); ++k) {
-      scale = std::max(scale, std::abs(ref_rows[k][j]));
-      double d = r.rows[k][j] - ref_rows[k][j];
-      if (r.units[j] == "rad") d = std::remainder(d, 2 * M_PI);  // angles wrap at +-pi
-      diff = std::max(diff, std::abs(d));
-    }
-    if (scale > 0.0) worst = std::max(worst, diff / scale);
+    if (scale[j] > 0.0) worst = std::max(worst, diff[j] / scale[j]);
   }
   r.error_estimate = worst;
   return r;

@@ -19,6 +19,7 @@
 
 #include "simulate/invariants.hpp"
 #include "simulate/method.hpp"
+#include "simulate/row_store.hpp"
 
 namespace wobble {
 
@@ -33,7 +34,7 @@ struct SimulationResult {
   MethodChoice choice;
   std::vector<std::string> notes;  ///< facts of the motion (kind, period) for the header
   std::vector<std::string> columns, units;
-  std::vector<std::vector<double>> rows;
+  RowStore rows;  ///< one row per sample (in a temporary file past a few MiB)
   std::vector<InvariantError> invariants;
   std::string cost_label;  ///< "right-hand-side evaluations", "sub-flows" or "evaluations"
   std::int64_t cost = 0;
@@ -51,6 +52,13 @@ struct SimulationResult {
 /// @throws std::runtime_error if an adaptive integrator's step underflows.
 SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
                           const std::function<void(double)>& progress = {});
+
+/// Each state at `times` (ascending, from 0) by the given method, handed to `at_sample` as it
+/// is computed (nothing kept). Adds the cost to `result`.
+void propagate_each(const SceneSetup& s, const MethodChoice& choice,
+                    const std::vector<double>& times, SimulationResult& result,
+                    const std::function<void(std::size_t k, const SimState& state)>& at_sample,
+                    const std::function<void(double)>& progress = {});
 
 /// The state at each of `times` (ascending, from 0) by the given method, without outputs;
 /// used by simulate and by `solve --cross-check`. Adds the cost to `result`.

@@ -406,3 +406,53 @@ TEST_CASE("the heavy-top scene numbers its axes as the problem does: e3 is the a
   REQUIRE(s.moments[2] < s.moments[0]);
   REQUIRE_THAT(s.axes_B.determinant(), WithinAbs(1.0, 4 * kEps));  // still right-handed
 }
+
+TEST_CASE("rows past the in-memory limit go to a temporary file and come back unchanged") {
+  // 26 columns: 40 330 rows fit in 2^20 numbers; 100 000 rows spill, and reads interleave with
+  // appends (the error estimate reads row k while rows are still arriving elsewhere).
+  RowStore store;
+  const std::size_t cols = 26, rows = 100000;
+  const auto value = [](std::size_t k, std::size_t j) {
+    return std::ldexp(static_cast<double>(k * 31 + j), -7) - 1000.0;
+  };
+  std::vector<double> row(cols);
+  for (std::size_t k = 0; k < rows; ++k) {
+    for (std::size_t j = 0; j < cols; ++j) row[j] = value(k, j);
+    store.append(row);
+    if (k % 9973 == 0) REQUIRE(store[k / 2][3] == value(k / 2, 3));
+  }
+  REQUIRE(store.size() == rows);
+  CHECK(store.back()[cols - 1] == value(rows - 1, cols - 1));
+  std::size_t seen = 0;
+  bool equal = true;
+  store.for_each([&](std::size_t k, const std::vector<double>& r) {
+    for (std::size_t j = 0; j < cols; ++j) equal = equal && r[j] == value(k, j);
+    ++seen;
+  });
+  CHECK(seen == rows);
+  CHECK(equal);
+  CHECK(store.largest(0) == value(rows - 1, 0));  // the values grow with k
+  CHECK_THROWS_AS(store.append(std::vector<double>(3)), std::invalid_argument);
+}
+
+TEST_CASE("a plot of 200 000 samples keeps each curve's envelope in a bounded number of rows") {
+  const Scene scene = find_scene("tennis-racket");
+  SceneSetup s = setup_scene(scene, {});
+  s.samples = 200000;
+  const SimulationResult r = simulate(s, choose_method(s, "auto"));
+  const PlotLayout layout = plot_layout(r);
+  // Each bucket keeps its first and last row and each column's extremes.
+  CHECK(layout.rows.size() <= kPlotBuckets * (2 + 2 * r.columns.size()));
+  CHECK(layout.rows.front()[0] == 0.0);
+  CHECK(layout.rows.back()[0] == s.t_end);
+  for (std::size_t j = 1; j < r.columns.size(); ++j) {
+    if (r.columns[j].find("_phi") != std::string::npos ||
+        r.columns[j].find("_psi") != std::string::npos) {
+      continue;  // unwrapped in the plot
+    }
+    double largest = 0.0;
+    for (const auto& row : layout.rows) largest = std::max(largest, std::abs(row[j]));
+    INFO(r.columns[j]);
+    CHECK(largest == r.rows.largest(j));  // the extreme sample is among those drawn
+  }
+}
