@@ -390,3 +390,48 @@ TEST_CASE("worksheet at a UTF-8 terminal (tmux): non-ASCII input is kept and rea
                           Catch::Contains("correct: I\n") && Catch::Contains("15°") &&
                           Catch::Contains("correct: angle_omega_e3"));
 }
+
+TEST_CASE("Ctrl-C stops a long command cleanly: exit 130, no file and no temporary left") {
+  const fs::path dir = scratch_dir() / "interrupted";
+  fs::remove_all(dir);
+  const std::string exe = std::string("'") + WOBBLE_EXE + "'";
+  // keys for 300 variants of every problem takes minutes; SIGINT comes after a second.
+  const RunResult keys = run_shell("timeout --preserve-status -s INT 1 " + exe +
+                                   " keys --variants 1-300 --out '" + dir.string() + "'");
+  INFO(keys.err);
+  CHECK(keys.exit_code == 130);
+  CHECK_THAT(keys.err, Catch::Contains("interrupted"));
+  CHECK(!fs::exists(dir));  // nothing was staged yet: the folder was never made
+  // A long simulation with files to write: neither file nor temporary appears.
+  fs::create_directories(dir);
+  const RunResult sim = run_shell("timeout --preserve-status -s INT 1 " + exe +
+                                  " simulate heavy-top --t-end 2000 --max-evaluations 1e10 --out '" +
+                                  (dir / "run.csv").string() + "' --plot '" +
+                                  (dir / "run.svg").string() + "'");
+  INFO(sim.err);
+  CHECK(sim.exit_code == 130);
+  CHECK(fs::is_empty(dir));
+}
+
+TEST_CASE("two keys --variants runs into one folder: one wins whole, the other writes nothing") {
+  // Without --force neither may replace a file; before, both could exit 0 and mix the folder.
+  const std::string exe = std::string("'") + WOBBLE_EXE + "'";
+  for (int trial = 0; trial < 10; ++trial) {
+    const fs::path dir = scratch_dir() / ("race" + std::to_string(trial));
+    fs::remove_all(dir);
+    const std::string one = exe + " keys --variants 1-1 --problem flying-plate --out '" +
+                            dir.string() + "' >/dev/null 2>&1";
+    const RunResult r =
+        run_shell("(" + one + "; echo $? > '" + dir.string() + ".a') & (" + one + "; echo $? > '" +
+                  dir.string() + ".b') & wait; cat '" + dir.string() + ".a' '" + dir.string() +
+                  ".b'");
+    INFO("trial " << trial << ": exit codes " << r.out);
+    CHECK((r.out == "0\n2\n" || r.out == "2\n0\n"));
+    std::size_t files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) {
+      (void)e;
+      ++files;
+    }
+    CHECK(files == 2);  // the winner's .md and .json, no temporary
+  }
+}
