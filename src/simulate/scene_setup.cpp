@@ -197,6 +197,12 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
     s.turning_point = "centre of mass";
     I_turn = shift_to_cm(mp.I_O, mp.mass_kg, -mp.r_cm_m);
   }
+  if (!I_turn.allFinite()) {
+    throw InputError(fmt::format(
+        "body: its inertia tensor about the {} leaves double precision's range (entries beyond "
+        "1e308 kg m^2); scale the sizes or masses down",
+        s.turning_point));
+  }
   PrincipalAxes pa = principal_axes(I_turn);
   if (scene.gravity && pa.degeneracy == Degeneracy::pair23) {
     // A top: its unique axis (the axle, the smallest moment about the pivot) is e3, as in the

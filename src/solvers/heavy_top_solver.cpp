@@ -166,8 +166,15 @@ Computed nutation_limit(const Top& t, bool upper) {
   const ex c2 = sym::tidy(2 * u0 * beta - P - a * a);
   const ex root = GiNaC::sqrt(sym::simplify(c2 * c2 - 4 * beta * c1));
   // The other limit: the root of beta d^2 + c2 d + c1 with u0 + d in [-1, 1] (the third root of
-  // the cubic is beyond u = 1); which sign that is, is decided at the values.
-  const ex d_plus = (-c2 + root) / (2 * beta), d_minus = (-c2 - root) / (2 * beta);
+  // the cubic is beyond u = 1); which one that is, is decided at the values. Written without
+  // cancellation (q = -(c2 + sign(c2) root)/2, the roots q/beta and c1/q): (-c2 +- root)/(2 beta)
+  // subtracts nearly equal numbers when beta is small (g = 1e-150 lost all 40 digits), and
+  // c1/q stays finite as g -> 0.
+  const int c2_sign = sym::is_identically_zero(c2.subs(t.exact.at))
+                          ? 1
+                          : sym::sign_of(c2, t.exact.at, "c2");
+  const ex q_root = -(c2 + c2_sign * root) / 2;
+  const ex d_plus = q_root / beta, d_minus = c1 / q_root;
   const double u0n = std::cos(t.start.theta);
   const double dp = value(t, d_plus, "d+"), dm = value(t, d_minus, "d-");
   const auto in_range = [&](double d) { return u0n + d >= -1 - 1e-12 && u0n + d <= 1 + 1e-12; };

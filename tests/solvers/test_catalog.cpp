@@ -256,6 +256,9 @@ TEST_CASE("badly scaled values: the routes agree within the problem's conditioni
       {"flying-plate", {"omega=1e-300"}},
       {"flying-plate", {"omega=1e300"}},
       {"heavy-top", {"g=1e12"}},
+      {"heavy-top", {"g=1e-150"}},   // the nutation limit's quadratic, nearly linear
+      {"asymmetric-top", {"w1=1e12"}},  // k ~ 1e-11: k'^2 rounds to 1
+      {"asymmetric-top", {"w3=1e12"}},
       {"rect-solid", {"a=1e150"}},
   };
   for (const auto& [id, set] : cases) {
@@ -323,4 +326,21 @@ answers = ["principal_moments", "principal_axes_cm"]
   const Key key = solve(big, parameter_values(big, {}));
   REQUIRE(key.parts.at(0).answers.size() == 2);
   CHECK_THAT(key.parts[0].answers[0].notes.at(0), Catch::Contains("too long for the closed-form"));
+}
+
+TEST_CASE("a heavy top without gravity to speak of nods by nothing: theta_max = theta0") {
+  // g = 1e-150: the other nutation limit is u0 - beta s^2/a^2 + ..., 1e-151 from cos(theta0).
+  // Written as (-c2 + root)/(2 beta) it cancelled all 40 digits and gave pi/2; as c1/q it is
+  // theta0 to the last digit.
+  const Problem p = find_problem("heavy-top");
+  const Key key = solve(p, parameter_values(p, {"g=1e-150"}));
+  bool seen = false;
+  for (const auto& part : key.parts) {
+    for (const auto& a : part.answers) {
+      if (a.name != "theta_max") continue;
+      seen = true;
+      CHECK_THAT(a.value.data[0], Catch::Matchers::WithinULP(M_PI / 6, 1));
+    }
+  }
+  CHECK(seen);
 }
