@@ -5,6 +5,8 @@
 #include "bench/report.hpp"
 #include "cli/commands.hpp"
 #include "core/input_error.hpp"
+#include "core/work_budget.hpp"
+#include "render/atomic_write.hpp"
 #include "render/bench_output.hpp"
 
 namespace wobble::cli {
@@ -21,11 +23,14 @@ int run_bench(const BenchOptions& opt) {
   if (!opt.plot.empty() && std::filesystem::exists(opt.plot) && !opt.force) {
     throw InputError("--plot: " + opt.plot + " exists; use --force to overwrite it");
   }
+  // An unwritable plot is found before a minute of measuring, not after.
+  if (!opt.plot.empty()) require_writable(opt.plot);
   const bench::TimingPlan plan = opt.quick ? bench::TimingPlan{3, 1e-4} : bench::TimingPlan{};
   BenchReport report;
   report.machine = bench::machine_description();
   report.quick = opt.quick;
   for (const auto& p : bench::bench_problems()) {
+    throw_if_interrupted();
     report.problems.push_back(p);
     const auto runs = bench::work_precision(p, opt.quick, plan);
     report.runs.insert(report.runs.end(), runs.begin(), runs.end());
@@ -38,8 +43,9 @@ int run_bench(const BenchOptions& opt) {
   report.drift = bench::drift_table(opt.quick);
   report.long_run = bench::long_splitting_run(opt.quick);
   bench::evaluate_targets(report);
-  fmt::print("{}", render_bench(report, opt.format));
+  // The file first, then stdout: a run that fails to write prints nothing.
   if (!opt.plot.empty()) write_bench_plot(report, opt.plot);
+  fmt::print("{}", render_bench(report, opt.format));
   return kExitOk;
 }
 

@@ -132,7 +132,7 @@ namespace {
 // and the integrator's error norm take: |m| grows at most by the torques' size times t_end, the
 // energy is at most |m|^2 / (2 I_min) plus the potential's range. Norms by stableNorm: a torque
 // of 1e200 must not overflow in the check itself.
-constexpr double kMaxEnergyJ = 1e280;
+constexpr double kMaxEnergyJ = 1e280, kMaxMomentum = 1e150;
 
 std::string size_text(double x) {
   return std::isfinite(x) ? fmt::format("{:.3g}", x) : "more than 1e308";
@@ -145,7 +145,8 @@ void check_ranges(const SceneSetup& s) {
   const double torque = (m.torque ? m.torque_Nm.stableNorm() : 0.0) + pull;
   const double L_max = s.m0_P.stableNorm() + torque * s.t_end;
   const double E_max = L_max / I_min * L_max / 2 + 2 * pull;
-  if (!(E_max < kMaxEnergyJ)) {
+  // |L|^2 is taken too (|L| conserved, the error norm): L itself must stay below 1e150.
+  if (!(E_max < kMaxEnergyJ) || !(L_max < kMaxMomentum)) {
     const std::string field = m.torque    ? "effects.torque.value"
                               : m.gravity ? "effects.gravity"
                                           : "initial.omega";
