@@ -8,6 +8,7 @@
 #include <exception>
 #include <filesystem>
 #include <new>
+#include <string_view>
 
 #include "cli/commands.hpp"
 #include "core/work_budget.hpp"
@@ -100,6 +101,13 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "wobble: internal error (please report): {}\n", e.what());
     return kExitInternal;
   } catch (const std::exception& e) {
+    // A numerical library's own failure (Boost.Math's "Error in function boost::...") is not
+    // the user's input, which is validated first: it is reported as the bug it is.
+    if (std::string_view(e.what()).find("boost::") != std::string_view::npos) {
+      fmt::print(stderr, "wobble: internal error (please report): a numerical routine failed: {}\n",
+                 e.what());
+      return kExitInternal;
+    }
     fmt::print(stderr, "wobble: {}\n", e.what());
     return kExitBadInput;
   }
