@@ -12,6 +12,7 @@
 
 #include "cli/commands.hpp"
 #include "core/work_budget.hpp"
+#include "problem/data_dir.hpp"
 #include "problem/problem.hpp"
 
 int main(int argc, char** argv) {
@@ -22,6 +23,10 @@ int main(int argc, char** argv) {
   CLI::App app{"wobble: worked, checked answers for rigid-body rotation problems", "wobble"};
   app.set_version_flag("--version", std::string("wobble ") + WOBBLE_VERSION);
   app.require_subcommand(1);
+  std::string data_dir;
+  app.add_option("--data-dir", data_dir,
+                 "Folder holding problems/, scenes/ and solutions/ (default: installed next to "
+                 "the program, else the source tree)");
 
   ListOptions list_opt;
   SolveOptions solve_opt;
@@ -76,6 +81,7 @@ int main(int argc, char** argv) {
   // temporaries (core/work_budget.hpp). The others keep the default (nothing to clean up).
   if (simulate->parsed() || keys->parsed() || bench->parsed()) wobble::stop_on_signals();
   try {
+    if (!data_dir.empty()) wobble::set_data_dir(data_dir);
     if (list->parsed()) return run_list(list_opt);
     if (solve->parsed()) return run_solve(solve_opt);
     if (keys->parsed()) return run_keys(keys_opt);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/work_budget.hpp"
+#include "problem/data_dir.hpp"
 #include "problem/values.hpp"
 #include "render/atomic_write.hpp"
 #include "render/render.hpp"
@@ -89,10 +90,7 @@ Rendered render_default(const Problem& p) {
 }
 }  // namespace
 
-std::filesystem::path solutions_dir() {
-  if (const char* env = std::getenv("WOBBLE_SOLUTIONS"); env != nullptr && *env != '\0') return env;
-  return std::filesystem::path(WOBBLE_SOURCE_DIR) / "solutions";
-}
+std::filesystem::path solutions_dir() { return data_folder("solutions"); }
 
 std::vector<std::string> compare_keys(const J& expected, const J& actual) {
   std::vector<std::string> out;

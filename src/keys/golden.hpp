@@ -18,7 +18,7 @@ namespace wobble {
 
 inline constexpr double kKeyRelTol = 1e-12;
 
-/// $WOBBLE_SOLUTIONS if set, else the source tree's solutions/.
+/// The folder of the golden keys (problem/data_dir.hpp says where).
 std::filesystem::path solutions_dir();
 
 /// The differences between an expected and an actual key document, one line each, with the

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "problem/data_dir.hpp"
 #include "problem/toml_reader.hpp"
 #include "problem/values.hpp"
 
@@ -138,10 +139,7 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
 }
 }  // namespace
 
-std::filesystem::path problems_dir() {
-  if (const char* env = std::getenv("WOBBLE_PROBLEMS"); env != nullptr && *env != '\0') return env;
-  return std::filesystem::path(WOBBLE_SOURCE_DIR) / "problems";
-}
+std::filesystem::path problems_dir() { return data_folder("problems"); }
 
 Problem find_problem(const std::string& id_or_file) {
   return load_problem(resolve_id_or_file(id_or_file, problems_dir(), "problem"));

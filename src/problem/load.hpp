@@ -19,7 +19,7 @@ Problem load_problem(const std::filesystem::path& file);
 /// The same from text already read (`name` stands for the file in messages): for the fuzzers.
 Problem load_problem_text(const std::string& text, const std::filesystem::path& name);
 
-/// The folder of the problem catalog: $WOBBLE_PROBLEMS if set, else the source tree's problems/.
+/// The folder of the problem catalog (problem/data_dir.hpp says where).
 std::filesystem::path problems_dir();
 
 /// Resolves "ID" (a file ID.toml in problems_dir()) or a path to a .toml file, and loads it.

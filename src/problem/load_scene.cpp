@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "problem/data_dir.hpp"
 #include "problem/scene.hpp"
 #include "problem/toml_reader.hpp"
 
@@ -197,10 +198,7 @@ Scene load_scene_text(const std::string& text, const std::filesystem::path& name
   return load_scene_table(detail::parse_toml_text(text, name, "scene"), name);
 }
 
-std::filesystem::path scenes_dir() {
-  if (const char* env = std::getenv("WOBBLE_SCENES"); env != nullptr && *env != '\0') return env;
-  return std::filesystem::path(WOBBLE_SOURCE_DIR) / "scenes";
-}
+std::filesystem::path scenes_dir() { return data_folder("scenes"); }
 
 std::vector<Scene> load_scenes() {
   std::vector<Scene> out;
