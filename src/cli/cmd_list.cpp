@@ -8,8 +8,9 @@ namespace wobble::cli {
 
 void setup_list(CLI::App& app, ListOptions&) {
   app.footer(
-      "Problems are the files problems/ID.toml ($WOBBLE_PROBLEMS overrides the folder), scenes "
-      "the files scenes/ID.toml ($WOBBLE_SCENES).");
+      "Problems are the files problems/ID.toml, scenes the files scenes/ID.toml, in the data "
+      "folder: --data-dir, else $WOBBLE_PROBLEMS and $WOBBLE_SCENES (or $WOBBLE_DATA_DIR), else "
+      "share/wobble next to the program, else the source tree.");
 }
 
 int run_list(const ListOptions&) {

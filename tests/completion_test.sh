@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The bash completion offers each command's options exactly as its --help lists them, and the
+# catalog's ids from `wobble list`. Usage: completion_test.sh WOBBLE_EXE COMPLETION_SCRIPT
+set -euo pipefail
+exe="$1"
+source "$2"
+PATH="$(dirname "$exe"):$PATH"
+status=0
+offered() {  # words... -> what _wobble offers for the last one
+  COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); COMPREPLY=(); _wobble
+  printf '%s\n' "${COMPREPLY[@]}" | sort | tr '\n' ' '
+}
+for cmd in solve check worksheet simulate bench keys; do
+  want=$( { "$exe" "$cmd" --help | grep -oE '^\s+--[a-z-]+' | tr -d ' '; echo --help; } | sort | tr '\n' ' ')
+  got=$(offered wobble "$cmd" --)
+  if [[ "$want" != "$got" ]]; then
+    echo "completion: $cmd offers [$got]; its --help lists [$want]"; status=1
+  fi
+done
+[[ "$(offered wobble simulate tennis)" == "tennis-racket " ]] || { echo "completion: no scene id"; status=1; }
+[[ "$(offered wobble solve flying-p)" == "flying-plate " ]] || { echo "completion: no problem id"; status=1; }
+exit $status
