@@ -206,6 +206,13 @@ Computed nutation_limit(const Top& t, bool upper) {
                        "c_1 = " + sym::to_latex(c1, t.table) +
                            ",\\qquad c_2 = " + sym::to_latex(c2, t.table),
                        turning});
+  const std::string roots =
+      "Its roots, written without subtracting nearly equal numbers: q/β and c1/q with q = −(c2 + "
+      "sgn(c2) √(c2² − 4 β c1))/2; the one with cos θ in [−1, 1] is the other limit.";
+  out.steps.push_back({roots,
+                       "d = \\frac{q}{\\beta}\\ \\text{or}\\ \\frac{c_1}{q},\\quad q = "
+                       "-\\tfrac12\\left(c_2 + \\operatorname{sgn}(c_2)\\sqrt{c_2^2 - 4\\beta c_1}\\right)",
+                       "Its roots, without cancellation:"});
   return out;
 }
 
