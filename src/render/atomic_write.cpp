@@ -11,6 +11,19 @@
 
 namespace wobble {
 
+bool write_fully(int fd, std::string_view data) {
+  std::size_t written = 0;
+  while (written < data.size()) {
+    const ssize_t n = ::write(fd, data.data() + written, data.size() - written);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
 void require_regular_or_absent(const std::filesystem::path& target) {
   // Renaming over /dev/null or a link would replace the device node or the link itself (and as
   // root nothing stops it).
@@ -62,15 +75,7 @@ std::filesystem::path write_temporary(const std::filesystem::path& target, const
   };
   if (fd < 0) fail("create a temporary file");
   const auto write_all = [&](std::string_view content) {
-    std::size_t written = 0;
-    while (written < content.size()) {
-      const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
-      if (n < 0) {
-        if (errno == EINTR) continue;
-        fail("write");
-      }
-      written += static_cast<std::size_t>(n);
-    }
+    if (!write_fully(fd, content)) fail("write");
   };
   std::string buffer;
   constexpr std::size_t kBuffer = std::size_t{1} << 16;

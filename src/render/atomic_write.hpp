@@ -11,6 +11,10 @@
 
 namespace wobble {
 
+/// Writes all of `data` to `fd`, retrying after a signal (EINTR) and after a short write.
+/// @return false with errno set on a write error.
+bool write_fully(int fd, std::string_view data);
+
 /// @throws std::runtime_error if `target` exists and is not a regular file (a device such as
 ///         /dev/null, a folder, a symbolic link): wobble replaces regular files only.
 void require_regular_or_absent(const std::filesystem::path& target);

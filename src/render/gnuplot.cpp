@@ -30,17 +30,11 @@ std::filesystem::path exclusive_temp(const std::filesystem::path& dir, const std
     throw std::runtime_error(dir.string() + ": cannot create a temporary file: " +
                              std::strerror(errno));
   }
-  std::size_t written = 0;
-  while (written < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const std::string why = std::strerror(errno);
-      ::close(fd);
-      ::unlink(tmpl.c_str());
-      throw std::runtime_error(dir.string() + ": cannot write a temporary file: " + why);
-    }
-    written += static_cast<std::size_t>(n);
+  if (!write_fully(fd, content)) {
+    const std::string why = std::strerror(errno);
+    ::close(fd);
+    ::unlink(tmpl.c_str());
+    throw std::runtime_error(dir.string() + ": cannot write a temporary file: " + why);
   }
   ::close(fd);
   return tmpl;

@@ -106,26 +106,6 @@ void emit_simulation_table(const SceneSetup& s, const SimulationResult& r, const
   });
 }
 
-namespace {
-std::string collected(const std::function<void(const Emit&)>& produce) {
-  std::string out;
-  produce([&](std::string_view piece) { out += piece; });
-  return out;
-}
-}  // namespace
-
-std::string simulation_table(const SceneSetup& s, const SimulationResult& r) {
-  return collected([&](const Emit& e) { emit_simulation_table(s, r, e); });
-}
-
-std::string simulation_csv(const SimulationResult& r) {
-  return collected([&](const Emit& e) { emit_simulation_csv(r, e); });
-}
-
-std::string simulation_json(const SceneSetup& s, const SimulationResult& r) {
-  return collected([&](const Emit& e) { emit_simulation_json(s, r, e); });
-}
-
 std::string simulation_footer(const SceneSetup& s, const SimulationResult& r) {
   std::string f;
   if (r.invariants.empty()) {

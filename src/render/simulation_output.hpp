@@ -19,7 +19,7 @@
 namespace wobble {
 
 /// Text handed over a piece at a time (a line, a row), so that a million samples are written
-/// without being held: to a file (render/atomic_write), to stdout, or collected in a string.
+/// without being held: to a file (render/atomic_write) or to stdout.
 using Emit = std::function<void(std::string_view)>;
 
 std::string simulation_header(const SceneSetup& s, const SimulationResult& r);
@@ -27,10 +27,6 @@ std::string simulation_footer(const SceneSetup& s, const SimulationResult& r);
 void emit_simulation_table(const SceneSetup& s, const SimulationResult& r, const Emit& emit);
 void emit_simulation_csv(const SimulationResult& r, const Emit& emit);
 void emit_simulation_json(const SceneSetup& s, const SimulationResult& r, const Emit& emit);
-/// The same, collected (for tests and small runs).
-std::string simulation_table(const SceneSetup& s, const SimulationResult& r);
-std::string simulation_csv(const SimulationResult& r);
-std::string simulation_json(const SceneSetup& s, const SimulationResult& r);
 
 /// Significant digits the text table prints for this run.
 int printed_digits(const SceneSetup& s, const SimulationResult& r);
