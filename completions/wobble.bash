@@ -29,6 +29,7 @@ _wobble() {
   case "$cmd" in
     solve) options="--set --variant --format --part --handout --figure --force --cross-check --help" ;;
     check) options="--answer --name --set --variant --tolerance --sigfigs --help" ;;
+    list) options="--solvers --help" ;;
     worksheet) options="--variant --set --help" ;;
     simulate) options="--set --variant --method --tolerance --samples --t-end --max-evaluations --out --plot --force --help" ;;
     bench) options="--quick --format --plot --force --help" ;;

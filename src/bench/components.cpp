@@ -17,7 +17,7 @@
 #include "core/elliptic.hpp"
 #include "core/exact_free_body.hpp"
 #include "core/principal_axes.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 
 namespace wobble::bench {
 

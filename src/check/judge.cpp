@@ -44,7 +44,7 @@ void check_shape(const Answer& a, const sym::ValueText& v) {
 std::string entry_name(const Answer& a, std::size_t i) {
   if (a.value.shape == Value::Shape::vector) {
     // Moments are compared in increasing order: name them by rank, not by an axis.
-    if (a.name.rfind("principal_moments", 0) == 0 && a.value.data.size() == 3) {
+    if (a.kind == AnswerKind::principal_moments && a.value.data.size() == 3) {
       return std::string("the ") + std::array<const char*, 3>{"smallest", "middle", "largest"}[i] +
              " moment";
     }
@@ -97,50 +97,24 @@ struct Judge {
   }
 };
 
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
-
-// The key's moments that go with a principal_axes answer (principal_moments, or
-// principal_moments_cm for principal_axes_cm).
-const Answer* moments_for_axes(const Key& key, const Answer& axes) {
-  const std::string suffix = axes.name.substr(std::string("principal_axes").size());
-  for (const auto& part : key.parts) {
-    for (const auto& b : part.answers) {
-      if (b.name == "principal_moments" + suffix) return &b;
-    }
-  }
-  return nullptr;
-}
 
 // Principal axes by meaning (axes_judge.hpp): the sine of the angle within the tolerance.
 Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got) {
-  const Answer* moments = moments_for_axes(j.ctx.key, j.a);
-  if (moments == nullptr || moments->value.data.size() != 3 || j.a.value.data.size() != 9) {
-    throw std::logic_error("check: " + j.a.name + " without its principal moments in the key");
+  const auto& moments = j.a.axis_moments;
+  if (moments.size() != 3 || j.a.value.data.size() != 9) {
+    throw std::logic_error("check: " + j.a.name + " without the moments of its axes");
   }
   Mat3 axes;
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c) axes(r, c) = j.a.value.data[static_cast<std::size_t>(3 * r + c)];
   }
-  const Vec3 lambda(moments->value.data[0], moments->value.data[1], moments->value.data[2]);
+  const Vec3 lambda(moments[0], moments[1], moments[2]);
   const double tol = j.angle_tolerance();
   const AxesFinding f = judge_axes(got, axes, lambda, tol);
   if (f.correct) {
     return {true, "correct: " + j.a.name + " (" + f.how + ", in any order, each up to sign)", {}};
   }
   return {false, "incorrect: " + j.a.name, f.problems};
-}
-
-// "L_body" -> ("L", "body"): the stem and the frame of an answer's name, for the frames a key
-// names (body, space, and the intermediate "primed" frame of Euler angles).
-std::optional<std::pair<std::string, std::string>> frame_of(const std::string& name) {
-  for (const std::string frame : {"body", "space", "primed"}) {
-    const std::string suffix = "_" + frame;
-    if (name.size() > suffix.size() &&
-        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
-      return std::make_pair(name.substr(0, name.size() - suffix.size()), frame);
-    }
-  }
-  return std::nullopt;
 }
 
 // The likely mistake behind a wrong number, or its size.
@@ -161,7 +135,7 @@ std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
     }
   }
   if (j.all_close(v, j.scaled(k, -1.0))) {
-    const bool precession = j.a.name.find("Omega") != std::string::npos;
+    const bool precession = j.a.sign == SignConvention::sense_of_precession;
     if (precession && v.size() == 1) {
       // A signed rate given as its magnitude (or the sign flipped): the sign is the physics.
       out.push_back(fmt::format(
@@ -192,17 +166,17 @@ std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
                   "2 pi rad/s (the number in rad/s labelled Hz?)");
     return out;
   }
-  // The same vector in another frame: "L_body" answered for "L_space" and the like.
-  if (const auto mine = frame_of(j.a.name)) {
+  // The same vector in another frame: L0_body answered for L0_space and the like.
+  if (j.a.frame != AnswerFrame::none) {
     for (const auto& part : j.ctx.key.parts) {
       for (const auto& b : part.answers) {
-        const auto theirs = frame_of(b.name);
-        if (!theirs || theirs->first != mine->first || theirs->second == mine->second ||
+        if (b.frame == AnswerFrame::none || b.frame == j.a.frame || b.unit != j.a.unit ||
             b.value.data.size() != v.size() || !j.all_close(v, b.value.data)) {
           continue;
         }
-        out.push_back("these are the " + theirs->second + "-frame components (" + b.name + "); " +
-                      j.a.name + " asks for the " + mine->second + "-frame ones");
+        out.push_back(fmt::format("these are the {}-frame components ({}); {} asks for the "
+                                  "{}-frame ones",
+                                  frame_name(b.frame), b.name, j.a.name, frame_name(j.a.frame)));
         return out;
       }
     }
@@ -254,7 +228,7 @@ std::pair<std::vector<double>, std::vector<double>> at_point(const Context& ctx,
   std::vector<double> got, want;
   for (const auto& e : mine.entries) got.push_back(sym::evaluate(e, at, kField));
   for (const auto& e : key.entries) want.push_back(sym::evaluate(e, at, "key " + a.name));
-  if (starts_with(a.name, "principal_moments")) {
+  if (a.kind == AnswerKind::principal_moments) {
     std::sort(got.begin(), got.end());
     std::sort(want.begin(), want.end());
   }
@@ -280,12 +254,9 @@ std::vector<sym::Values> judging_points(const sym::Values& set) {
 Verdict judge_symbolic_axes(const Judge& j, const ReadAnswer& p) {
   const Context& ctx = j.ctx;
   const Verdict here = judge_axes_answer(j, at_point(ctx, j.a, p.value, p.value, ctx.values).first);
-  const Answer* moments = moments_for_axes(ctx.key, j.a);
-  if (!here.correct || j.a.symbolic.empty() || moments == nullptr || moments->symbolic.empty()) {
-    return here;
-  }
+  if (!here.correct || j.a.symbolic.empty() || j.a.axis_moments_symbolic.empty()) return here;
   const auto key_axes = sym::parse_value_text(j.a.symbolic, ctx.table, "key " + j.a.name);
-  const auto key_moments = sym::parse_value_text(moments->symbolic, ctx.table, "key moments");
+  const auto key_moments = sym::parse_value_text(j.a.axis_moments_symbolic, ctx.table, "key moments");
   const double tol = j.angle_tolerance();
   for (const auto& point : judging_points(ctx.values)) {
     const auto [got, axes_flat] = at_point(ctx, j.a, p.value, key_axes, point);
@@ -316,7 +287,7 @@ Verdict judge_symbolic_axes(const Judge& j, const ReadAnswer& p) {
 Verdict judge_symbolic(const Context& ctx, const Answer& a, const ReadAnswer& p,
                        const Options& opt) {
   const Judge j{ctx, a, opt, zero_scale(ctx.key, a)};
-  if (starts_with(a.name, "principal_axes")) return judge_symbolic_axes(j, p);
+  if (a.kind == AnswerKind::principal_axes) return judge_symbolic_axes(j, p);
   if (a.symbolic.empty()) {
     throw InputError(kField + ": " + a.name + " has no closed form in the key; give a number");
   }
@@ -345,7 +316,7 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const ReadAnswer& p,
   return {true,
           "correct: " + a.name +
               " (your expression equals the key's at the set values and three more points" +
-              (starts_with(a.name, "principal_moments") ? ", in any order)" : ")"),
+              (a.kind == AnswerKind::principal_moments ? ", in any order)" : ")"),
           {}};
 }
 }  // namespace
@@ -378,12 +349,12 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   for (const auto& e : p.value.entries)
     got.push_back(sym::evaluate(e, GiNaC::lst{}, kField) * to_key);
   const Judge j{ctx, a, opt, zero_scale(ctx.key, a)};
-  if (starts_with(a.name, "principal_axes") && got.size() == 9) return judge_axes_answer(j, got);
+  if (a.kind == AnswerKind::principal_axes && got.size() == 9) return judge_axes_answer(j, got);
   std::vector<double> compare = got;
-  if (starts_with(a.name, "principal_moments")) std::sort(compare.begin(), compare.end());
+  if (a.kind == AnswerKind::principal_moments) std::sort(compare.begin(), compare.end());
   if (j.all_close(compare, a.value.data)) {
     const std::string note =
-        starts_with(a.name, "principal_moments") && compare != got ? " (in any order)" : "";
+        a.kind == AnswerKind::principal_moments && compare != got ? " (in any order)" : "";
     return {true, "correct: " + a.name + note, {}};
   }
   return {false, "incorrect: " + a.name, diagnose(j, key_unit, compare, a.value.data)};

@@ -3,7 +3,7 @@
 
 #include "check/judge.hpp"
 #include "cli/commands.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
 

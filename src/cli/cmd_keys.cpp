@@ -6,7 +6,7 @@
 #include "cli/commands.hpp"
 #include "core/work_budget.hpp"
 #include "keys/golden.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "problem/variants.hpp"
 #include "render/atomic_write.hpp"

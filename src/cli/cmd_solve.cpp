@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "render/atomic_write.hpp"
 #include "render/figure.hpp"
@@ -14,7 +14,7 @@
 #include "render/simulation_output.hpp"
 #include "simulate/cross_check.hpp"
 #include "solvers/solve.hpp"
-#include "solvers/torque_free_solver.hpp"
+#include "solvers/registry.hpp"
 
 namespace wobble::cli {
 
@@ -29,8 +29,8 @@ void setup_solve(CLI::App& app, SolveOptions& opt) {
       ->check(CLI::IsMember({"text", "markdown", "latex", "json"}));
   app.add_option("--part", opt.part, "Print only this part (its id, e.g. b)");
   app.add_option("--figure", opt.figure,
-                 "Write the sketch of e3, w, L and the cones as .svg, .png or .pdf (torque-free "
-                 "symmetric tops); a LaTeX key includes it");
+                 "Write the sketch of e3, w, L and the cones as .svg, .png or .pdf (solvers that "
+                 "draw one: `wobble list --solvers`); a LaTeX key includes it");
   app.add_flag("--force", opt.force, "Overwrite an existing --figure file");
   app.add_option("--variant", opt.variant, "Per-student values: variant N (1, 2, ...)");
   app.add_flag("--handout", opt.handout,
@@ -48,8 +48,15 @@ int run_solve(const SolveOptions& opt) {
   key.variant = opt.variant;
   const double key_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const SolverInfo& solver = solver_info(problem.solver);
   std::optional<CrossCheck> check;
-  if (opt.cross_check) check = cross_check_torque_free(problem, values, key);
+  if (opt.cross_check) {
+    if (!solver.cross_checked_by_simulation) {
+      throw InputError("--cross-check: problem " + problem.id + " (solver " + solver.name +
+                       ") has no simulation cross-check; see `wobble list --solvers`");
+    }
+    check = cross_check_torque_free(problem, values, key);
+  }
   if (!opt.part.empty()) {
     std::string known;
     for (const auto& p : key.parts) {
@@ -66,10 +73,9 @@ int run_solve(const SolveOptions& opt) {
     }
   }
   if (!opt.figure.empty()) {
-    if (problem.solver != "torque_free_symmetric") {
-      throw InputError("--figure: problem " + problem.id +
-                       " has no sketch (only torque-free "
-                       "symmetric tops do)");
+    if (solver.sketch == nullptr) {
+      throw InputError("--figure: problem " + problem.id + " (solver " + solver.name +
+                       ") has no sketch; see `wobble list --solvers`");
     }
     // A device or link is never replaced, and an unwritable folder is found before the work.
     require_writable(opt.figure);
@@ -85,7 +91,7 @@ int run_solve(const SolveOptions& opt) {
     if (std::filesystem::exists(opt.figure) && !opt.force) {
       throw InputError("--figure: " + opt.figure + " exists; use --force to overwrite it");
     }
-    write_top_sketch(top_sketch(problem, values), opt.figure);
+    write_top_sketch(solver.sketch(problem, values), opt.figure);
     key.figure = opt.figure;
   }
   if (opt.handout) {

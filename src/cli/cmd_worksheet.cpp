@@ -6,7 +6,7 @@
 #include "check/worksheet.hpp"
 #include "cli/commands.hpp"
 #include "cli/line_editor.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "render/handout.hpp"
 #include "solvers/solve.hpp"

@@ -24,7 +24,9 @@ std::vector<std::pair<std::string, std::string>> shown_values(
 inline constexpr int kExitOk = 0, kExitDifference = 1, kExitBadInput = 2, kExitInternal = 3,
                      kExitInterrupted = 130;
 
-struct ListOptions {};
+struct ListOptions {
+  bool solvers = false;  ///< the solvers and their quantities instead of the catalog
+};
 void setup_list(CLI::App& app, ListOptions& opt);
 int run_list(const ListOptions& opt);
 

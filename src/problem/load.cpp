@@ -56,42 +56,69 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
   }
   return p;
 }
-// The [motion] table: exactly the keys the solver takes (problem.hpp), each an expression.
+const SolverSchema& schema_for(const Reader& r, const toml::table& root, const std::string& solver,
+                               const SolverSchemas& schemas) {
+  std::vector<std::string> known;
+  for (const auto& s : schemas) {
+    if (s.name == solver) return s;
+    known.push_back(s.name);
+  }
+  r.fail(root.get("solver"), "solver",
+         fmt::format("unknown solver '{}' (known: {})", solver, fmt::join(known, ", ")));
+}
+
+// The [motion] table: exactly the keys the solver takes (its registry row), each an expression.
 std::optional<MotionSpec> read_motion(Reader& r, const toml::table& root,
-                                      const std::string& solver) {
+                                      const SolverSchema& solver) {
   const toml::node* n = root.get("motion");
-  const auto it = motion_keys().find(solver);
-  if (it == motion_keys().end()) {
-    if (n != nullptr) r.fail(n, "motion", "the " + solver + " solver takes no [motion] table");
+  const auto& keys = solver.motion_keys;
+  if (keys.empty()) {
+    if (n != nullptr) r.fail(n, "motion", "the " + solver.name + " solver takes no [motion] table");
     return std::nullopt;
   }
-  const std::string wanted = "a table { " + fmt::format("{}", fmt::join(it->second, ", ")) + " }";
+  const std::string wanted = "a table { " + fmt::format("{}", fmt::join(keys, ", ")) + " }";
   if (n == nullptr) r.fail(&root, "motion", "missing (" + wanted + ")");
   const toml::table* t = n->as_table();
   if (t == nullptr) r.fail(n, "motion", "expected " + wanted);
-  r.only_keys(*t, "motion", {it->second.begin(), it->second.end()});
+  r.only_keys(*t, "motion", {keys.begin(), keys.end()});
   MotionSpec m;
-  for (const auto& key : it->second) {
+  for (const auto& key : keys) {
     m.exprs[key] = r.expression(t->get(key), "motion." + key, t);
   }
   return m;
 }
+
+// Every answer's quantity is one the solver computes: a typo is refused here, with its line.
+void check_quantities(const Reader& r, const toml::array& answers, const std::string& field,
+                      const PartSpec& part, const SolverSchema& solver) {
+  const auto& known = solver.quantities;
+  for (std::size_t k = 0; k < part.answers.size(); ++k) {
+    const std::string& q = part.answers[k].quantity;
+    if (std::find(known.begin(), known.end(), q) != known.end()) continue;
+    r.fail(answers.get(k), field + ".answers[" + std::to_string(k) + "]",
+           fmt::format("unknown quantity '{}' for the {} solver (it computes: {})", q, solver.name,
+                       fmt::join(known, ", ")));
+  }
+}
 }  // namespace
 
 namespace {
-Problem load_problem_table(const toml::table& root, const std::filesystem::path& file);
+Problem load_problem_table(const toml::table& root, const std::filesystem::path& file,
+                           const SolverSchemas& schemas);
 }  // namespace
 
-Problem load_problem(const std::filesystem::path& file) {
-  return load_problem_table(parse_toml_file(file, "problem"), file);
+Problem load_problem(const std::filesystem::path& file, const SolverSchemas& schemas) {
+  return load_problem_table(parse_toml_file(file, "problem"), file, schemas);
 }
 
-Problem load_problem_text(const std::string& text, const std::filesystem::path& name) {
-  return load_problem_table(parse_toml_text(text, name, "problem"), name);
+Problem load_problem_text(const std::string& text, const std::filesystem::path& name,
+                          const SolverSchemas& schemas) {
+  return load_problem_table(parse_toml_text(text, name, "problem"), name, schemas);
 }
 
 namespace {
-Problem load_problem_table(const toml::table& root, const std::filesystem::path& file) {
+Problem load_problem_table(const toml::table& root, const std::filesystem::path& file,
+                           const SolverSchemas& schemas) {
   Reader r(file);
   r.only_keys(root, "",
               {"id", "title", "source", "statement", "solver", "notes", "parameters", "body",
@@ -103,6 +130,7 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
   p.source = r.string(root, "source", "", false, "");
   p.statement = r.string(root, "statement", "");
   p.solver = r.string(root, "solver", "");
+  const SolverSchema& solver = schema_for(r, root, p.solver, schemas);
   if (const toml::node* n = root.get("notes")) {
     const toml::array* a = n->as_array();
     if (a == nullptr) r.fail(n, "notes", "expected an array of strings");
@@ -116,7 +144,7 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
   const toml::node* body = root.get("body");
   if (body == nullptr || !body->is_table()) r.fail(&root, "body", "missing (a table)");
   p.body = read_body(r, *body->as_table());
-  p.motion = read_motion(r, root, p.solver);
+  p.motion = read_motion(r, root, solver);
   const toml::array& parts = r.array(root, "parts", "parts");
   std::set<std::string> ids, answer_names;
   for (std::size_t i = 0; i < parts.size(); ++i) {
@@ -125,6 +153,7 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
     if (!ids.insert(p.parts.back().id).second) r.fail(parts.get(i), f + ".id", "part id repeated");
     // `check --name` finds an answer by its name: two of one name would hide the second.
     const toml::array& answers = *r.table_at(parts, i, f, &root).get_as<toml::array>("answers");
+    check_quantities(r, answers, f, p.parts.back(), solver);
     for (std::size_t k = 0; k < p.parts.back().answers.size(); ++k) {
       const std::string& name = p.parts.back().answers[k].name;
       if (!answer_names.insert(name).second) {
@@ -141,14 +170,14 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
 
 std::filesystem::path problems_dir() { return data_folder("problems"); }
 
-Problem find_problem(const std::string& id_or_file) {
-  return load_problem(resolve_id_or_file(id_or_file, problems_dir(), "problem"));
+Problem find_problem(const std::string& id_or_file, const SolverSchemas& schemas) {
+  return load_problem(resolve_id_or_file(id_or_file, problems_dir(), "problem"), schemas);
 }
 
-std::vector<Problem> load_catalog() {
+std::vector<Problem> load_catalog(const SolverSchemas& schemas) {
   std::vector<Problem> out;
   for (const auto& f : toml_files_in(problems_dir(), "problem")) {
-    out.push_back(load_problem(f));
+    out.push_back(load_problem(f, schemas));
     check_id_is_file_name(out.back().id, f);
   }
   return out;

@@ -33,14 +33,4 @@ const std::string& MotionSpec::at(const std::string& key) const {
   return it->second;
 }
 
-const std::map<std::string, std::vector<std::string>>& motion_keys() {
-  static const std::map<std::string, std::vector<std::string>> keys{
-      {"torque_free_symmetric", {"omega", "alpha"}},
-      {"asymmetric_top", {"w1", "w2", "w3"}},
-      {"euler_angles", {"phi", "theta", "psi", "phidot", "thetadot", "psidot"}},
-      {"heavy_top", {"g", "theta0", "thetadot0", "phidot0", "psidot0"}},
-  };
-  return keys;
-}
-
 }  // namespace wobble

@@ -55,20 +55,13 @@ struct BodySpec {
 };
 
 /// The `[motion]` table: the initial conditions and constants a dynamics solver takes, as
-/// expressions in the parameters, by key. Which keys, per solver (all required):
-/// - torque_free_symmetric: omega, alpha (w(0) = omega (sin(alpha) x + cos(alpha) z), body axes
-///   equal to space axes at t = 0; alpha must name a parameter: its series is taken in it);
-/// - asymmetric_top: w1, w2, w3 (w(0) in the body frame, e1, e2, e3 along x, y, z);
-/// - euler_angles: phi, theta, psi, phidot, thetadot, psidot (Taylor's z-y-z angles and rates);
-/// - heavy_top: g, theta0, thetadot0, phidot0, psidot0.
+/// expressions in the parameters, by key. Which keys a solver requires is its registry row's
+/// (solvers/registry.hpp); what they mean, its header's.
 struct MotionSpec {
   std::map<std::string, std::string> exprs;
   /// @throws std::logic_error for a key the loader did not check (a solver's bug).
   const std::string& at(const std::string& key) const;
 };
-
-/// The `[motion]` keys of each solver that takes one (the loader requires exactly these).
-const std::map<std::string, std::vector<std::string>>& motion_keys();
 
 struct AnswerSpec {
   std::string name;                 ///< the name in the key (JSON)

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "solvers/torque_free_solver.hpp"
+#include "solvers/sketch.hpp"
 
 namespace wobble {
 

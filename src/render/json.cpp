@@ -51,12 +51,18 @@ nlohmann::ordered_json key_to_json(const Key& key) {
   for (const auto& part : key.parts) {
     J answers = J::array();
     for (const auto& a : part.answers) {
-      answers.push_back({{"name", a.name},
-                         {"symbolic", a.symbolic.empty() ? J(nullptr) : J(a.symbolic)},
-                         {"latex", a.latex},
-                         {"value", value_json(a.value)},
-                         {"unit", a.unit},
-                         {"notes", a.notes}});
+      J entry{{"name", a.name}};
+      if (a.quantity != a.name) entry["quantity"] = a.quantity;
+      // What the answer is (solvers/key.hpp): an export reads these, never the name.
+      entry["kind"] = kind_name(a.kind);
+      if (a.frame != AnswerFrame::none) entry["frame"] = frame_name(a.frame);
+      if (a.sign != SignConvention::none) entry["sign"] = sign_name(a.sign);
+      entry["symbolic"] = a.symbolic.empty() ? J(nullptr) : J(a.symbolic);
+      entry["latex"] = a.latex;
+      entry["value"] = value_json(a.value);
+      entry["unit"] = a.unit;
+      entry["notes"] = a.notes;
+      answers.push_back(entry);
     }
     J steps = J::array();
     for (const auto& s : part.steps) steps.push_back({{"text", s.text}, {"latex", s.latex}});

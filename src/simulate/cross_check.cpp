@@ -13,7 +13,7 @@ namespace {
 double key_value(const Key& key, const std::string& name) {
   for (const auto& part : key.parts) {
     for (const auto& a : part.answers) {
-      if (a.name == name) return a.value.data.at(0);
+      if (a.quantity == name) return a.value.data.at(0);
     }
   }
   throw InputError("--cross-check: the key has no answer '" + name + "'");

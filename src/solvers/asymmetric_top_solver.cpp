@@ -10,6 +10,7 @@
 #include "core/exact_free_body.hpp"
 #include "solvers/exact_answer.hpp"
 #include "solvers/inertia_body.hpp"
+#include "solvers/quantity_table.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/canonical_print.hpp"
 
@@ -177,174 +178,273 @@ std::vector<Step> elliptic_steps(const Asym& t) {
   };
 }
 
-Computed quantity(const Asym& t, const std::string& q) {
+// A sum of three products of rounded inputs, or the square root of one: a few roundings.
+constexpr double kShortRouteUlps = 8;
+// The period's double route: the AGM for K and the invariants' products, a few hundred
+// operations' rounding at most (the input's amplification near the separatrix is added apart).
+constexpr double kPeriodRouteUlps = 256;
+
+std::vector<ex> euler_c(const Asym& t) {
+  const auto& I = t.I;
+  return {sym::tidy((I[1] - I[2]) / I[0]), sym::tidy((I[2] - I[0]) / I[1]),
+          sym::tidy((I[0] - I[1]) / I[2])};
+}
+
+std::vector<Step> euler_steps(const Asym& t, const std::vector<ex>& c) {
+  std::vector<Step> steps{
+      {"Torque-free Euler equations in the principal frame: I1 dw1/dt = (I2 − I3) w2 w3, "
+       "I2 dw2/dt = (I3 − I1) w3 w1, I3 dw3/dt = (I1 − I2) w1 w2.",
+       "I_1\\dot\\omega_1 = (I_2 - I_3)\\,\\omega_2\\omega_3,\\ I_2\\dot\\omega_2 = (I_3 - "
+       "I_1)\\,\\omega_3\\omega_1,\\ I_3\\dot\\omega_3 = (I_1 - I_2)\\,\\omega_1\\omega_2",
+       "Euler's equations:"}};
+  std::vector<std::string> text;
+  for (int k = 0; k < 3; ++k) {
+    text.push_back(fmt::format("dw{}/dt = {:.6g} w{} w{}", k + 1,
+                               value(t, c[static_cast<std::size_t>(k)], "c"), (k + 1) % 3 + 1,
+                               (k + 2) % 3 + 1));
+  }
+  steps.push_back({"For these moments: " + text[0] + ", " + text[1] + ", " + text[2] + ".", ""});
+  return steps;
+}
+
+Computed euler_coefficients(const Asym& t, const std::string& q) {
+  const std::vector<ex> c = euler_c(t);
+  Computed out{exact_vector(q, c, "", t.exact), euler_steps(t, c)};
+  out.answer.notes.push_back(
+      "dw1/dt = c1 w2 w3, dw2/dt = c2 w3 w1, dw3/dt = c3 w1 w2; c2 > 0 > c1, c3 for I1 < I2 "
+      "< I3.");
+  return out;
+}
+
+Computed dw_dt0(const Asym& t, const std::string& q) {
+  const std::vector<ex> c = euler_c(t);
+  const auto& w = t.w;
+  const std::vector<ex> d{sym::tidy(c[0] * w[1] * w[2]), sym::tidy(c[1] * w[2] * w[0]),
+                          sym::tidy(c[2] * w[0] * w[1])};
+  return {exact_vector(q, d, "rad/s^2", t.exact), euler_steps(t, c)};
+}
+
+// "Omega_axis2" -> 1: the axis a spin quantity is about.
+int axis_of(const std::string& q) { return q.back() - '1'; }
+
+Computed omega_pair(const Asym& t, const std::string& q) {
+  const AxisSpin a = axis_spin(t, axis_of(q), t.spin);
+  Computed out{exact_vector(q, {a.Omega_i, a.Omega_j}, "rad/s", t.exact),
+               {{axis_steps_text(a), ""}}};
+  out.answer.notes.push_back(
+      fmt::format("(Ω{}, Ω{}) for spin at s = |w(0)| about e{}.", a.i + 1, a.j + 1, a.k + 1));
+  return out;
+}
+
+Computed spin_rate(const Asym& t, const std::string& q) {
+  const AxisSpin a = axis_spin(t, axis_of(q), t.spin);
+  const ex rate = sym::simplified_sqrt(a.stable ? a.product : sym::tidy(-a.product));
+  Computed out{exact_scalar(q, rate, a.stable ? "rad/s" : "1/s", t.exact),
+               {{axis_steps_text(a), ""}}};
+  const double Pn = value(t, a.product, "Omega_i Omega_j");
+  check_routes_agree(out.answer.value.data[0], std::sqrt(std::abs(Pn)), out.answer.value.data[0],
+                     kShortRouteUlps, q);
+  out.answer.notes.push_back(
+      a.stable ? fmt::format("Stable (Ω{} Ω{} > 0; e{} is the {} axis): small oscillations of "
+                             "w{}, w{} at this angular frequency.",
+                             a.i + 1, a.j + 1, a.k + 1, a.k == 0 ? "smallest" : "largest",
+                             a.i + 1, a.j + 1)
+               : fmt::format("Unstable (Ω{} Ω{} < 0; e2 is the intermediate axis): w{}, w{} "
+                             "grow as exp(rate t): the tennis-racket flip.",
+                             a.i + 1, a.j + 1, a.i + 1, a.j + 1));
+  out.steps.push_back({a.stable ? "Ω_i Ω_j > 0: w_i, w_j oscillate at sqrt(Ω_i Ω_j)."
+                                : "Ω_i Ω_j < 0: w_i, w_j grow as exp(sqrt(−Ω_i Ω_j) t).",
+                       ""});
+  return out;
+}
+
+Computed energy(const Asym& t, const std::string& q) {
   const auto& I = t.I;
   const auto& w = t.w;
-  if (q == "euler_coefficients" || q == "dw_dt0") {
-    const std::vector<ex> c{sym::tidy((I[1] - I[2]) / I[0]), sym::tidy((I[2] - I[0]) / I[1]),
-                            sym::tidy((I[0] - I[1]) / I[2])};
-    std::vector<Step> steps{
-        {"Torque-free Euler equations in the principal frame: I1 dw1/dt = (I2 − I3) w2 w3, "
-         "I2 dw2/dt = (I3 − I1) w3 w1, I3 dw3/dt = (I1 − I2) w1 w2.",
-         "I_1\\dot\\omega_1 = (I_2 - I_3)\\,\\omega_2\\omega_3,\\ I_2\\dot\\omega_2 = (I_3 - "
-         "I_1)\\,\\omega_3\\omega_1,\\ I_3\\dot\\omega_3 = (I_1 - I_2)\\,\\omega_1\\omega_2",
-         "Euler's equations:"}};
-    std::vector<std::string> text;
-    for (int k = 0; k < 3; ++k) {
-      text.push_back(fmt::format("dw{}/dt = {:.6g} w{} w{}", k + 1,
-                                 value(t, c[static_cast<std::size_t>(k)], "c"), (k + 1) % 3 + 1,
-                                 (k + 2) % 3 + 1));
-    }
-    steps.push_back({"For these moments: " + text[0] + ", " + text[1] + ", " + text[2] + ".", ""});
-    if (q == "euler_coefficients") {
-      Computed out{exact_vector(q, c, "", t.exact), steps};
-      out.answer.notes.push_back(
-          "dw1/dt = c1 w2 w3, dw2/dt = c2 w3 w1, dw3/dt = c3 w1 w2; c2 > 0 > c1, c3 for I1 < I2 "
-          "< I3.");
-      return out;
-    }
-    const std::vector<ex> d{sym::tidy(c[0] * w[1] * w[2]), sym::tidy(c[1] * w[2] * w[0]),
-                            sym::tidy(c[2] * w[0] * w[1])};
-    return {exact_vector(q, d, "rad/s^2", t.exact), steps};
-  }
-  for (int k = 0; k < 3; ++k) {
-    const std::string suffix = fmt::format("_axis{}", k + 1);
-    if (q != "Omega" + suffix && q != "rate" + suffix) continue;
-    const AxisSpin a = axis_spin(t, k, t.spin);
-    std::vector<Step> steps{{axis_steps_text(a), ""}};
-    if (q == "Omega" + suffix) {
-      Computed out{exact_vector(q, {a.Omega_i, a.Omega_j}, "rad/s", t.exact), steps};
-      out.answer.notes.push_back(
-          fmt::format("(Ω{}, Ω{}) for spin at s = |w(0)| about e{}.", a.i + 1, a.j + 1, a.k + 1));
-      return out;
-    }
-    const ex rate = sym::simplified_sqrt(a.stable ? a.product : sym::tidy(-a.product));
-    Computed out{exact_scalar(q, rate, a.stable ? "rad/s" : "1/s", t.exact), steps};
-    const double Pn = value(t, a.product, "Omega_i Omega_j");
-    check_routes_agree(out.answer.value.data[0], std::sqrt(std::abs(Pn)), out.answer.value.data[0],
-                       8, q);
-    out.answer.notes.push_back(
-        a.stable ? fmt::format("Stable (Ω{} Ω{} > 0; e{} is the {} axis): small oscillations of "
-                               "w{}, w{} at this angular frequency.",
-                               a.i + 1, a.j + 1, a.k + 1, a.k == 0 ? "smallest" : "largest",
-                               a.i + 1, a.j + 1)
-                 : fmt::format("Unstable (Ω{} Ω{} < 0; e2 is the intermediate axis): w{}, w{} "
-                               "grow as exp(rate t): the tennis-racket flip.",
-                               a.i + 1, a.j + 1, a.i + 1, a.j + 1));
-    out.steps.push_back({a.stable ? "Ω_i Ω_j > 0: w_i, w_j oscillate at sqrt(Ω_i Ω_j)."
-                                  : "Ω_i Ω_j < 0: w_i, w_j grow as exp(sqrt(−Ω_i Ω_j) t).",
-                         ""});
-    return out;
-  }
-  const auto numeric = double_route(
+  const ex T = sym::tidy(
+      (I[0] * GiNaC::pow(w[0], 2) + I[1] * GiNaC::pow(w[1], 2) + I[2] * GiNaC::pow(w[2], 2)) / 2);
+  Computed out{exact_scalar(q, T, "J", t.exact), {}};
+  check_routes_agree(out.answer.value.data[0], 0.5 * t.I_n.dot(t.w_n.cwiseAbs2()),
+                     out.answer.value.data[0], kShortRouteUlps, q);
+  out.steps.push_back(
+      {"T = ½ (I1 w1² + I2 w2² + I3 w3²), conserved.",
+       "T = \\tfrac12\\left(I_1\\omega_1^2 + I_2\\omega_2^2 + I_3\\omega_3^2\\right)",
+       "Kinetic energy:"});
+  return out;
+}
+
+Computed L_magnitude(const Asym& t, const std::string& q) {
+  const auto& I = t.I;
+  const auto& w = t.w;
+  const ex L2 = sym::tidy(GiNaC::pow(I[0] * w[0], 2) + GiNaC::pow(I[1] * w[1], 2) +
+                          GiNaC::pow(I[2] * w[2], 2));
+  Computed out{exact_scalar(q, sym::simplified_sqrt(L2), "kg m^2/s", t.exact), {}};
+  check_routes_agree(out.answer.value.data[0], t.I_n.cwiseProduct(t.w_n).norm(),
+                     out.answer.value.data[0], kShortRouteUlps, q);
+  out.steps.push_back({"|L| = sqrt((I1 w1)² + (I2 w2)² + (I3 w3)²), conserved.",
+                       "|L| = \\sqrt{(I_1\\omega_1)^2 + (I_2\\omega_2)^2 + (I_3\\omega_3)^2}",
+                       "Angular momentum:"});
+  return out;
+}
+
+// core's closed form of the motion, the independent route of the elliptic quantities; nothing
+// when its doubles left the range, or when the motion is not elliptic (a spin about one axis).
+std::optional<ExactFreeMotion> elliptic_route(const Asym& t) {
+  auto numeric = double_route(
       [&] { return ExactFreeMotion(t.I_n, t.I_n.cwiseProduct(t.w_n), Quat::Identity()); });
-  if (q == "energy") {
-    const ex T = sym::tidy(
-        (I[0] * GiNaC::pow(w[0], 2) + I[1] * GiNaC::pow(w[1], 2) + I[2] * GiNaC::pow(w[2], 2)) / 2);
-    Computed out{exact_scalar(q, T, "J", t.exact), {}};
-    check_routes_agree(out.answer.value.data[0], 0.5 * t.I_n.dot(t.w_n.cwiseAbs2()),
-                       out.answer.value.data[0], 8, q);
+  if (numeric && numeric->kind() != ExactFreeMotion::Kind::elliptic) numeric.reset();
+  return numeric;
+}
+
+Computed modulus(const Asym& t, const std::string& q) {
+  require_period(t, q);
+  const Elliptic& e = elliptic(t);
+  Computed out{exact_scalar(q, GiNaC::sqrt(e.k2), "", t.exact), elliptic_steps(t)};
+  if (const auto numeric = elliptic_route(t)) {
+    // Compared as k^2 against 1 - k'^2: sqrt(1 - k'^2) of a k'^2 that rounds to 1 (a spin
+    // about e1 or e3, k ~ 1e-12) has no digits left, k^2 all of them within kRouteUlps of 1.
+    const double k = out.answer.value.data[0];
+    check_routes_agree(k * k, 1.0 - numeric->kc2(), 1.0, kRouteUlps, q);
+  }
+  out.answer.notes.push_back(
+      "The modulus of Jacobi's functions sn(u, k), cn(u, k), dn(u, k); k² is k2 below.");
+  return out;
+}
+
+Computed modulus_squared(const Asym& t, const std::string& q) {
+  require_period(t, q);
+  const Elliptic& e = elliptic(t);
+  Computed out{exact_scalar(q, q == "k2" ? e.k2 : e.kc2, "", t.exact), elliptic_steps(t)};
+  if (const auto numeric = elliptic_route(t); numeric && q == "kc2")
+    check_routes_agree(out.answer.value.data[0], numeric->kc2(), 1.0, kRouteUlps, q);
+  // k^2 > 1/2: the turning points of w are nearer the separatrix than the axis.
+  const double k2 = value(t, e.k2, "k2");
+  out.answer.notes.push_back(
+      q == "kc2" ? "k'² = 1 − k², from the invariants' factored forms: it keeps its digits "
+                   "near the separatrix, where k → 1."
+      : k2 > 0.5 ? "k near 1: w(0) is near the separatrix (a spin near e2)."
+                 : "k small: w stays near the axis it circulates about (nearly the "
+                   "small-oscillation motion).");
+  return out;
+}
+
+Computed period(const Asym& t, const std::string& q) {
+  require_period(t, q);
+  const Elliptic& e = elliptic(t);
+  const ex T = q == "period" ? e.period : e.period / 2;
+  Computed out{exact_scalar(q, T, "s", t.exact), elliptic_steps(t)};
+  if (const auto numeric = elliptic_route(t)) {
+    const double part = q == "period" ? 1 : 2;
+    const double Tn = numeric->period_s() / part;
+    // Near the separatrix the period is ill-conditioned in the moments (k'^2 is a small
+    // difference of them): the double route inherits their rounding, amplified.
+    const double moved = rounding_sensitivity(
+        [&](const std::vector<double>& x) {
+          const Vec3 I_x{x[0], x[1], x[2]}, w_x{x[3], x[4], x[5]};
+          return ExactFreeMotion(I_x, I_x.cwiseProduct(w_x), Quat::Identity()).period_s() / part;
+        },
+        {t.I_n[0], t.I_n[1], t.I_n[2], t.w_n[0], t.w_n[1], t.w_n[2]});
+    check_routes_agree(out.answer.value.data[0], Tn, Tn, kPeriodRouteUlps, q, moved);
+  }
+  if (q == "flip_interval") {
     out.steps.push_back(
-        {"T = ½ (I1 w1² + I2 w2² + I3 w3²), conserved.",
-         "T = \\tfrac12\\left(I_1\\omega_1^2 + I_2\\omega_2^2 + I_3\\omega_3^2\\right)",
-         "Kinetic energy:"});
-    return out;
+        {"w2 ∝ sn(λ t) changes sign every half period: started near e2, w "
+         "swings from near +e2 to near −e2 and back; the body flips over.",
+         ""});
+    // cos 25.8°: within that cone about e2 the half-period turn is a flip of the racket.
+    constexpr double kFlipCone = 0.9;
+    const double near_e2 = std::abs(t.w_n[1]) / t.w_n.norm();
+    out.answer.notes.push_back(
+        near_e2 > kFlipCone ? fmt::format("w(0) is {:.3g}° from e2: each half period the body "
+                                          "turns over (the tennis-racket flip).",
+                                          std::acos(near_e2) * 180 / M_PI)
+                            : "w(0) is far from e2: w2 changes sign each half period, but this "
+                              "is no flip of a spin about e2.");
   }
-  if (q == "L_magnitude") {
-    const ex L2 = sym::tidy(GiNaC::pow(I[0] * w[0], 2) + GiNaC::pow(I[1] * w[1], 2) +
-                            GiNaC::pow(I[2] * w[2], 2));
-    Computed out{exact_scalar(q, sym::simplified_sqrt(L2), "kg m^2/s", t.exact), {}};
-    check_routes_agree(out.answer.value.data[0], t.I_n.cwiseProduct(t.w_n).norm(),
-                       out.answer.value.data[0], 8, q);
-    out.steps.push_back({"|L| = sqrt((I1 w1)² + (I2 w2)² + (I3 w3)²), conserved.",
-                         "|L| = \\sqrt{(I_1\\omega_1)^2 + (I_2\\omega_2)^2 + (I_3\\omega_3)^2}",
-                         "Angular momentum:"});
-    return out;
+  return out;
+}
+
+// The small-oscillation estimate about the axis w circulates about, with the lecture's rate.
+Computed period_small_oscillation(const Asym& t, const std::string& q) {
+  require_period(t, q);
+  const Elliptic& e = elliptic(t);
+  const int k = t.regime == Regime::about_e3 ? 2 : 0;
+  const AxisSpin a = axis_spin(t, k, t.w[static_cast<unsigned>(k)]);
+  const ex estimate = 2 * GiNaC::Pi / sym::simplified_sqrt(a.product);
+  Computed out{exact_scalar(q, estimate, "s", t.exact), {{axis_steps_text(a), ""}}};
+  out.steps.front().text = fmt::format(
+      "Small oscillations about e{k} with s = w{k}(0) (the lecture's Ω1, Ω2 for k = 3): "
+      "T ≈ 2π / sqrt(Ω_i Ω_j).",
+      fmt::arg("k", k + 1));
+  const double exact_T = value(t, e.period, "period");
+  out.answer.notes.push_back(fmt::format(
+      "The exact period is {}: the estimate is off by {:.3g}% (it is exact as w(0) → e{}).",
+      format_number(exact_T), 100 * (out.answer.value.data[0] - exact_T) / exact_T, k + 1));
+  return out;
+}
+
+using K = AnswerKind;
+using F = AnswerFrame;
+constexpr SignConvention kNoSign = SignConvention::none;
+
+std::vector<QuantityRow<const Asym>> make_rows() {
+  std::vector<QuantityRow<const Asym>> r{
+      {{"euler_coefficients", "", K::vector, F::none, kNoSign,
+        "c in dw1/dt = c1 w2 w3, ...: ((I2-I3)/I1, (I3-I1)/I2, (I1-I2)/I3)"},
+       euler_coefficients},
+      {{"dw_dt0", "rad/s^2", K::vector, F::body, kNoSign, "dw/dt at t = 0"}, dw_dt0},
+  };
+  for (int k = 1; k <= 3; ++k) {
+    r.push_back({{fmt::format("Omega_axis{}", k), "rad/s", K::vector, F::none, kNoSign,
+                  fmt::format("(Omega_i, Omega_j) of the lecture for spin s = |w(0)| about e{}", k)},
+                 omega_pair});
+    r.push_back({{fmt::format("rate_axis{}", k), "rad/s or 1/s", K::rate, F::none, kNoSign,
+                  fmt::format("sqrt|Omega_i Omega_j| about e{}: oscillation frequency (stable) or "
+                              "growth rate (unstable)",
+                              k)},
+                 spin_rate});
   }
-  if (q == "k" || q == "k2" || q == "kc2" || q == "period" || q == "flip_interval" ||
-      q == "period_small_oscillation") {
-    require_period(t, q);
-    const Elliptic& e = elliptic(t);
-    const bool elliptic_numeric = numeric && numeric->kind() == ExactFreeMotion::Kind::elliptic;
-    if (q == "k") {
-      Computed out{exact_scalar(q, GiNaC::sqrt(e.k2), "", t.exact), elliptic_steps(t)};
-      if (elliptic_numeric) {
-        // Compared as k^2 against 1 - k'^2: sqrt(1 - k'^2) of a k'^2 that rounds to 1 (a spin
-        // about e1 or e3, k ~ 1e-12) has no digits left, k^2 all of them within 64 eps of 1.
-        const double k = out.answer.value.data[0];
-        check_routes_agree(k * k, 1.0 - numeric->kc2(), 1.0, 64, q);
-      }
-      out.answer.notes.push_back(
-          "The modulus of Jacobi's functions sn(u, k), cn(u, k), dn(u, k); k² is k2 below.");
-      return out;
-    }
-    if (q == "k2" || q == "kc2") {
-      Computed out{exact_scalar(q, q == "k2" ? e.k2 : e.kc2, "", t.exact), elliptic_steps(t)};
-      if (elliptic_numeric && q == "kc2")
-        check_routes_agree(out.answer.value.data[0], numeric->kc2(), 1.0, 64, q);
-      const double k2 = value(t, e.k2, "k2");
-      out.answer.notes.push_back(
-          q == "kc2" ? "k'² = 1 − k², from the invariants' factored forms: it keeps its digits "
-                       "near the separatrix, where k → 1."
-          : k2 > 0.5 ? "k near 1: w(0) is near the separatrix (a spin near e2)."
-                     : "k small: w stays near the axis it circulates about (nearly the "
-                       "small-oscillation motion).");
-      return out;
-    }
-    if (q == "period" || q == "flip_interval") {
-      const ex T = q == "period" ? e.period : e.period / 2;
-      Computed out{exact_scalar(q, T, "s", t.exact), elliptic_steps(t)};
-      if (elliptic_numeric) {
-        const double part = q == "period" ? 1 : 2;
-        const double Tn = numeric->period_s() / part;
-        // Near the separatrix the period is ill-conditioned in the moments (k'^2 is a small
-        // difference of them): the double route inherits their rounding, amplified.
-        const double moved = rounding_sensitivity(
-            [&](const std::vector<double>& x) {
-              const Vec3 I_x{x[0], x[1], x[2]}, w_x{x[3], x[4], x[5]};
-              return ExactFreeMotion(I_x, I_x.cwiseProduct(w_x), Quat::Identity()).period_s() / part;
-            },
-            {t.I_n[0], t.I_n[1], t.I_n[2], t.w_n[0], t.w_n[1], t.w_n[2]});
-        check_routes_agree(out.answer.value.data[0], Tn, Tn, 256, q, moved);
-      }
-      if (q == "flip_interval") {
-        out.steps.push_back(
-            {"w2 ∝ sn(λ t) changes sign every half period: started near e2, w "
-             "swings from near +e2 to near −e2 and back; the body flips over.",
-             ""});
-        const double near_e2 = std::abs(t.w_n[1]) / t.w_n.norm();
-        out.answer.notes.push_back(
-            near_e2 > 0.9 ? fmt::format("w(0) is {:.3g}° from e2: each half period the body "
-                                        "turns over (the tennis-racket flip).",
-                                        std::acos(near_e2) * 180 / M_PI)
-                          : "w(0) is far from e2: w2 changes sign each half period, but this "
-                            "is no flip of a spin about e2.");
-      }
-      return out;
-    }
-    // The small-oscillation estimate about the axis w circulates about, with the lecture's rate.
-    const int k = t.regime == Regime::about_e3 ? 2 : 0;
-    const AxisSpin a = axis_spin(t, k, w[static_cast<unsigned>(k)]);
-    const ex estimate = 2 * GiNaC::Pi / sym::simplified_sqrt(a.product);
-    Computed out{exact_scalar(q, estimate, "s", t.exact), {{axis_steps_text(a), ""}}};
-    out.steps.front().text = fmt::format(
-        "Small oscillations about e{k} with s = w{k}(0) (the lecture's Ω1, Ω2 for k = 3): "
-        "T ≈ 2π / sqrt(Ω_i Ω_j).",
-        fmt::arg("k", k + 1));
-    const double exact_T = value(t, e.period, "period");
-    out.answer.notes.push_back(fmt::format(
-        "The exact period is {}: the estimate is off by {:.3g}% (it is exact as w(0) → e{}).",
-        format_number(exact_T), 100 * (out.answer.value.data[0] - exact_T) / exact_T, k + 1));
-    return out;
-  }
-  throw InputError(
-      fmt::format("{}: unknown quantity '{}' for the asymmetric_top solver", t.file(), q));
+  std::vector<QuantityRow<const Asym>> rest{
+      {{"energy", "J", K::scalar, F::none, kNoSign, "the kinetic energy T"}, energy},
+      {{"L_magnitude", "kg m^2/s", K::scalar, F::none, kNoSign, "|L|"}, L_magnitude},
+      {{"k", "", K::scalar, F::none, kNoSign, "the modulus of the exact solution"}, modulus},
+      {{"k2", "", K::scalar, F::none, kNoSign, "k^2"}, modulus_squared},
+      {{"kc2", "", K::scalar, F::none, kNoSign, "k'^2 = 1 - k^2, without cancellation"},
+       modulus_squared},
+      {{"period", "s", K::scalar, F::none, kNoSign, "the period of w(t), 4 K(k) / lambda"},
+       period},
+      {{"flip_interval", "s", K::scalar, F::none, kNoSign,
+        "half the period: w2 changes sign (the flip near e2)"},
+       period},
+      {{"period_small_oscillation", "s", K::scalar, F::none, kNoSign,
+        "2 pi / rate about the axis w circulates about (the estimate)"},
+       period_small_oscillation},
+  };
+  r.insert(r.end(), rest.begin(), rest.end());
+  return r;
+}
+
+const std::vector<QuantityRow<const Asym>>& rows() {
+  static const std::vector<QuantityRow<const Asym>> r = make_rows();
+  return r;
 }
 }  // namespace
 
 Key solve_asymmetric_top(const Problem& problem, const sym::Values& values) {
   const Asym t(problem, values);
-  return assemble_parts(problem, [&](const std::string& q) { return quantity(t, q); });
+  return assemble_parts(problem,
+                        [&](const std::string& q) { return compute_quantity(rows(), t, q); });
+}
+
+SolverInfo asymmetric_top_solver() {
+  SolverInfo s;
+  s.name = "asymmetric_top";
+  s.summary = "a body with I1 < I2 < I3 along x, y, z, spun at w(0), no torque: Euler's "
+              "equations, stability, the exact elliptic period";
+  s.motion_keys = {"w1", "w2", "w3"};
+  s.quantities = quantity_infos(rows());
+  s.solve = solve_asymmetric_top;
+  return s;
 }
 
 }  // namespace wobble

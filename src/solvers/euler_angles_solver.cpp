@@ -8,6 +8,7 @@
 
 #include "core/euler_angles.hpp"
 #include "solvers/exact_answer.hpp"
+#include "solvers/quantity_table.hpp"
 #include "solvers/inertia_body.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/canonical_print.hpp"
@@ -75,13 +76,21 @@ Angles::Angles(const Problem& p, const sym::Values& values) : BodyContext(p, val
   singular = sym::is_identically_zero(ex(GiNaC::sin(theta)).subs(t.exact.at));
 }
 
-void check_all(const Answer& a, const std::vector<double>& numeric, double ulps) {
+void check_all(const std::string& name, const std::vector<double>& exact,
+               const std::vector<double>& numeric, double ulps) {
   double scale = 0;
   for (double x : numeric) scale = std::max(scale, std::abs(x));
   for (std::size_t i = 0; i < numeric.size(); ++i) {
-    check_routes_agree(a.value.data.at(i), numeric[i], scale, ulps, a.name);
+    check_routes_agree(exact.at(i), numeric[i], scale, ulps, name);
   }
 }
+void check_all(const Answer& a, const std::vector<double>& numeric, double ulps) {
+  check_all(a.name, a.value.data, numeric, ulps);
+}
+// A rotation matrix's entries: products of a few sines and cosines, each rounded.
+constexpr double kRotationUlps = 16;
+// The rotation rebuilt from angles that were themselves read from a rotation: twice that.
+constexpr double kRoundTripUlps = 2 * kRotationUlps;
 std::vector<double> entries(const Mat3& m) {
   std::vector<double> out;
   for (int i = 0; i < 3; ++i) {
@@ -201,13 +210,14 @@ Computed angles_back(const Angles& t, bool zxz) {
   // conditioned (sin(theta) not tiny).
   const EulerConvention c = zxz ? EulerConvention::zxz : EulerConvention::zyz;
   const Vec3 got(out.answer.value.data[0], out.answer.value.data[1], out.answer.value.data[2]);
-  check_all({q, "", "", Value::matrix(3, 3, entries(rotation_from_euler(got, c))), "", {}, {}},
-            entries(R), 32);
-  if (std::sin(theta_n) > 1e-6) {
+  check_all(q, entries(rotation_from_euler(got, c)), entries(R), kRoundTripUlps);
+  // Near gimbal lock the reading's angles move by eps / sin(theta): no comparison below this.
+  constexpr double kWellConditionedSin = 1e-6;
+  if (std::sin(theta_n) > kWellConditionedSin) {
     // Core's reading, up to whole turns (at +-pi rounding may land on either end).
     const Vec3 core = euler_from_rotation(R, c);
     for (int i = 0; i < 3; ++i) {
-      check_routes_agree(std::remainder(got[i] - core[i], 2 * M_PI), 0.0, M_PI, 64, q);
+      check_routes_agree(std::remainder(got[i] - core[i], 2 * M_PI), 0.0, M_PI, kRouteUlps, q);
     }
   }
   out.answer.notes.push_back(t.singular ? "Gimbal lock: only one combination of φ and ψ is "
@@ -217,121 +227,178 @@ Computed angles_back(const Angles& t, bool zxz) {
   return out;
 }
 
-Computed quantity(const Angles& t, const std::string& q) {
-  const Mat3 R = rotation_from_euler(t.angles_n, EulerConvention::zyz);
-  if (q == "R_zyz" || q == "R_phy711") {
-    const GiNaC::matrix Rs = R_zyz(t);
-    const bool phy = q == "R_phy711";
-    Computed out{exact_matrix(q, phy ? Rs.transpose() : Rs, "", t.exact), {rotation_step()}};
-    check_all(out.answer, entries(phy ? Mat3(R.transpose()) : R), 16);
-    if (phy) {
-      out.steps.push_back(
-          {"PHY 711 (the convention of most quantum-mechanics texts): the same three turns, "
-           "α = φ about z, β = θ about the new y, γ = ψ about the new z, but R(α, β, γ) acts on "
-           "components: v_body = R(α, β, γ) v_inertial, so it is the transpose of Taylor's R.",
-           "R(\\alpha,\\beta,\\gamma) = R_z(\\gamma)^T R_y(\\beta)^T R_z(\\alpha)^T = "
-           "R_{zyz}^T",
-           "PHY 711's matrix:"});
-    }
-    return out;
-  }
-  if (q == "angles_phy711") {
-    Computed out{exact_vector(q, {t.phi, t.theta, t.psi}, "rad", t.exact),
-                 {{"α = φ, β = θ, γ = ψ: both are z-y-z sequences of the same turns; they differ "
-                   "in what the matrix acts on (frames against components), not in the angles.",
-                   ""}}};
-    out.answer.notes.push_back(
-        "The lectures' warning is about most classical-mechanics texts (Goldstein: z-x-z), whose "
-        "angles differ: see angles_zxz.");
-    return out;
-  }
-  if (q == "angles_zxz") {
-    const std::vector<ex> a{wrapped(t, t.phi + GiNaC::Pi / 2), t.theta,
-                            wrapped(t, t.psi - GiNaC::Pi / 2)};
-    Computed out{exact_vector(q, a, "rad", t.exact),
-                 {{"Ry(θ) = Rz(π/2) Rx(θ) Rz(−π/2), so Rz(φ) Ry(θ) Rz(ψ) = Rz(φ + π/2) Rx(θ) "
-                   "Rz(ψ − π/2): Goldstein's angles are (φ + π/2, θ, ψ − π/2), each kept in "
-                   "(−π, π].",
-                   "\\phi_x = \\phi + \\tfrac{\\pi}{2},\\ \\theta_x = \\theta,\\ \\psi_x = \\psi - "
-                   "\\tfrac{\\pi}{2}",
-                   "To z-x-z:"}}};
-    const Vec3 got(out.answer.value.data[0], out.answer.value.data[1], out.answer.value.data[2]);
-    check_all({q,
-               "",
-               "",
-               Value::matrix(3, 3, entries(rotation_from_euler(got, EulerConvention::zxz))),
-               "",
-               {},
-               {}},
-              entries(R), 32);
-    return out;
-  }
-  if (q == "omega_space" || q == "omega_body" || q == "omega_primed") {
-    const NumericOmega n = numeric_omega(t);
-    const bool space = q == "omega_space", body = q == "omega_body";
-    std::vector<ex> w = space ? omega_space(t) : body ? omega_body(t) : omega_primed(t);
-    Computed out{exact_vector(q, w, "rad/s", t.exact),
-                 {{"w = φ̇ z + θ̇ e2' + ψ̇ e3: the three turns' angular velocities add (each about "
-                   "its own axis at that instant).",
-                   "\\omega = \\dot\\phi\\,\\hat z + \\dot\\theta\\,\\hat e_2' + "
-                   "\\dot\\psi\\,\\hat e_3",
-                   "Angular velocity:"}}};
+Mat3 rotation_n(const Angles& t) { return rotation_from_euler(t.angles_n, EulerConvention::zyz); }
+
+Computed rotation(const Angles& t, const std::string& q) {
+  const Mat3 R = rotation_n(t);
+  const GiNaC::matrix Rs = R_zyz(t);
+  const bool phy = q == "R_phy711";
+  Computed out{exact_matrix(q, phy ? Rs.transpose() : Rs, "", t.exact), {rotation_step()}};
+  check_all(out.answer, entries(phy ? Mat3(R.transpose()) : R), kRotationUlps);
+  if (phy) {
     out.steps.push_back(
-        space ? Step{"In the space basis: e2' = (−sin φ, cos φ, 0), e3 = (sin θ cos φ, sin θ sin "
-                     "φ, cos θ).",
-                     ""}
-        : body ? Step{"In the body basis: z = (−sin θ cos ψ, sin θ sin ψ, cos θ), e2' = (sin ψ, "
-                      "cos ψ, 0).",
-                      ""}
-               : Step{"In the primed basis (after the turns by φ and θ, before ψ; e3' = e3): z = "
-                      "(−sin θ, 0, cos θ), e2' = (0, 1, 0).",
-                      ""});
-    check_all(out.answer, entries(space ? n.space : body ? n.body : n.primed), 64);
-    if (!space) {
-      out.answer.notes.push_back(body ? "Components along e1, e2, e3 (they turn with the body)."
-                                      : "Components along e1', e2', e3' = e3: the basis of choice "
-                                        "for a symmetric top (it does not spin with ψ).");
-    }
-    return out;
+        {"PHY 711 (the convention of most quantum-mechanics texts): the same three turns, "
+         "α = φ about z, β = θ about the new y, γ = ψ about the new z, but R(α, β, γ) acts on "
+         "components: v_body = R(α, β, γ) v_inertial, so it is the transpose of Taylor's R.",
+         "R(\\alpha,\\beta,\\gamma) = R_z(\\gamma)^T R_y(\\beta)^T R_z(\\alpha)^T = "
+         "R_{zyz}^T",
+         "PHY 711's matrix:"});
   }
-  if (q == "L_primed" || q == "kinetic_energy") {
-    const auto w = omega_primed(t);
-    const NumericOmega n = numeric_omega(t);
-    const double I1n = value(t, t.I1, "I1"), I3n = value(t, t.I3, "I3");
-    const Vec3 Ln(I1n * n.primed[0], I1n * n.primed[1], I3n * n.primed[2]);
-    if (q == "L_primed") {
-      Computed out{exact_vector(q, {t.I1 * w[0], t.I1 * w[1], t.I3 * w[2]}, "kg m^2/s", t.exact),
-                   {{"L = (I1 w1', I1 w2', I3 w3'): with I1 = I2 the tensor is diag(I1, I1, I3) "
-                     "in the primed basis too.",
-                     "L = \\left(-I_1\\dot\\phi\\sin\\theta,\\ I_1\\dot\\theta,\\ "
-                     "I_3(\\dot\\phi\\cos\\theta + \\dot\\psi)\\right)",
-                     "Angular momentum:"}}};
-      check_all(out.answer, entries(Ln), 64);
-      return out;
-    }
-    const ex T =
-        t.I1 / 2 * (GiNaC::pow(t.phidot * GiNaC::sin(t.theta), 2) + GiNaC::pow(t.thetadot, 2)) +
-        t.I3 / 2 * GiNaC::pow(w[2], 2);
-    Computed out{exact_scalar(q, T, "J", t.exact),
-                 {{"T = ½ w · L = ½ I1 (φ̇² sin²θ + θ̇²) + ½ I3 (φ̇ cos θ + ψ̇)².",
-                   "T = \\tfrac{I_1}{2}\\left(\\dot\\phi^2\\sin^2\\theta + "
-                   "\\dot\\theta^2\\right) + \\tfrac{I_3}{2}\\left(\\dot\\phi\\cos\\theta + "
-                   "\\dot\\psi\\right)^2",
-                   "Kinetic energy:"}}};
-    check_routes_agree(out.answer.value.data[0], 0.5 * n.primed.dot(Ln),
-                       0.5 * n.primed.norm() * Ln.norm(), 64, q);
-    return out;
+  return out;
+}
+
+Computed angles_phy711(const Angles& t, const std::string& q) {
+  Computed out{exact_vector(q, {t.phi, t.theta, t.psi}, "rad", t.exact),
+               {{"α = φ, β = θ, γ = ψ: both are z-y-z sequences of the same turns; they differ "
+                 "in what the matrix acts on (frames against components), not in the angles.",
+                 ""}}};
+  out.answer.notes.push_back(
+      "The lectures' warning is about most classical-mechanics texts (Goldstein: z-x-z), whose "
+      "angles differ: see angles_zxz.");
+  return out;
+}
+
+Computed angles_zxz(const Angles& t, const std::string& q) {
+  const std::vector<ex> a{wrapped(t, t.phi + GiNaC::Pi / 2), t.theta,
+                          wrapped(t, t.psi - GiNaC::Pi / 2)};
+  Computed out{exact_vector(q, a, "rad", t.exact),
+               {{"Ry(θ) = Rz(π/2) Rx(θ) Rz(−π/2), so Rz(φ) Ry(θ) Rz(ψ) = Rz(φ + π/2) Rx(θ) "
+                 "Rz(ψ − π/2): Goldstein's angles are (φ + π/2, θ, ψ − π/2), each kept in "
+                 "(−π, π].",
+                 "\\phi_x = \\phi + \\tfrac{\\pi}{2},\\ \\theta_x = \\theta,\\ \\psi_x = \\psi - "
+                 "\\tfrac{\\pi}{2}",
+                 "To z-x-z:"}}};
+  const Vec3 got(out.answer.value.data[0], out.answer.value.data[1], out.answer.value.data[2]);
+  check_all(q, entries(rotation_from_euler(got, EulerConvention::zxz)), entries(rotation_n(t)),
+            kRoundTripUlps);
+  return out;
+}
+
+Computed angular_velocity(const Angles& t, const std::string& q) {
+  const NumericOmega n = numeric_omega(t);
+  const bool space = q == "omega_space", body = q == "omega_body";
+  std::vector<ex> w = space ? omega_space(t) : body ? omega_body(t) : omega_primed(t);
+  Computed out{exact_vector(q, w, "rad/s", t.exact),
+               {{"w = φ̇ z + θ̇ e2' + ψ̇ e3: the three turns' angular velocities add (each about "
+                 "its own axis at that instant).",
+                 "\\omega = \\dot\\phi\\,\\hat z + \\dot\\theta\\,\\hat e_2' + "
+                 "\\dot\\psi\\,\\hat e_3",
+                 "Angular velocity:"}}};
+  out.steps.push_back(
+      space ? Step{"In the space basis: e2' = (−sin φ, cos φ, 0), e3 = (sin θ cos φ, sin θ sin "
+                   "φ, cos θ).",
+                   ""}
+      : body ? Step{"In the body basis: z = (−sin θ cos ψ, sin θ sin ψ, cos θ), e2' = (sin ψ, "
+                    "cos ψ, 0).",
+                    ""}
+             : Step{"In the primed basis (after the turns by φ and θ, before ψ; e3' = e3): z = "
+                    "(−sin θ, 0, cos θ), e2' = (0, 1, 0).",
+                    ""});
+  check_all(out.answer, entries(space ? n.space : body ? n.body : n.primed), kRouteUlps);
+  if (!space) {
+    out.answer.notes.push_back(body ? "Components along e1, e2, e3 (they turn with the body)."
+                                    : "Components along e1', e2', e3' = e3: the basis of choice "
+                                      "for a symmetric top (it does not spin with ψ).");
   }
-  if (q == "angles_back_zyz" || q == "angles_back_zxz")
-    return angles_back(t, q == "angles_back_zxz");
-  throw InputError(
-      fmt::format("{}: unknown quantity '{}' for the euler_angles solver", t.file(), q));
+  return out;
+}
+
+// L in the primed basis, numerically: the independent route of L_primed and the energy.
+Vec3 L_primed_n(const Angles& t, const NumericOmega& n) {
+  const double I1n = value(t, t.I1, "I1"), I3n = value(t, t.I3, "I3");
+  return {I1n * n.primed[0], I1n * n.primed[1], I3n * n.primed[2]};
+}
+
+Computed L_primed(const Angles& t, const std::string& q) {
+  const auto w = omega_primed(t);
+  Computed out{exact_vector(q, {t.I1 * w[0], t.I1 * w[1], t.I3 * w[2]}, "kg m^2/s", t.exact),
+               {{"L = (I1 w1', I1 w2', I3 w3'): with I1 = I2 the tensor is diag(I1, I1, I3) "
+                 "in the primed basis too.",
+                 "L = \\left(-I_1\\dot\\phi\\sin\\theta,\\ I_1\\dot\\theta,\\ "
+                 "I_3(\\dot\\phi\\cos\\theta + \\dot\\psi)\\right)",
+                 "Angular momentum:"}}};
+  check_all(out.answer, entries(L_primed_n(t, numeric_omega(t))), kRouteUlps);
+  return out;
+}
+
+Computed kinetic_energy(const Angles& t, const std::string& q) {
+  const auto w = omega_primed(t);
+  const NumericOmega n = numeric_omega(t);
+  const Vec3 Ln = L_primed_n(t, n);
+  const ex T =
+      t.I1 / 2 * (GiNaC::pow(t.phidot * GiNaC::sin(t.theta), 2) + GiNaC::pow(t.thetadot, 2)) +
+      t.I3 / 2 * GiNaC::pow(w[2], 2);
+  Computed out{exact_scalar(q, T, "J", t.exact),
+               {{"T = ½ w · L = ½ I1 (φ̇² sin²θ + θ̇²) + ½ I3 (φ̇ cos θ + ψ̇)².",
+                 "T = \\tfrac{I_1}{2}\\left(\\dot\\phi^2\\sin^2\\theta + "
+                 "\\dot\\theta^2\\right) + \\tfrac{I_3}{2}\\left(\\dot\\phi\\cos\\theta + "
+                 "\\dot\\psi\\right)^2",
+                 "Kinetic energy:"}}};
+  check_routes_agree(out.answer.value.data[0], 0.5 * n.primed.dot(Ln),
+                     0.5 * n.primed.norm() * Ln.norm(), kRouteUlps, q);
+  return out;
+}
+
+Computed reading_back(const Angles& t, const std::string& q) {
+  return angles_back(t, q == "angles_back_zxz");
+}
+
+using K = AnswerKind;
+using F = AnswerFrame;
+constexpr SignConvention kNoSign = SignConvention::none;
+
+const std::vector<QuantityRow<const Angles>>& rows() {
+  static const std::vector<QuantityRow<const Angles>> r{
+      {{"R_zyz", "", K::matrix, F::none, kNoSign,
+        "Taylor's Rz(phi) Ry(theta) Rz(psi): body components to space components"},
+       rotation},
+      {{"R_phy711", "", K::matrix, F::none, kNoSign,
+        "PHY 711's R(alpha, beta, gamma): inertial components to body ones (R_zyz transposed)"},
+       rotation},
+      {{"angles_phy711", "rad", K::vector, F::none, kNoSign,
+        "(alpha, beta, gamma) = (phi, theta, psi)"},
+       angles_phy711},
+      {{"angles_zxz", "rad", K::vector, F::none, kNoSign,
+        "Goldstein's z-x-z angles of the same rotation"},
+       angles_zxz},
+      {{"omega_space", "rad/s", K::vector, F::space, kNoSign, "w in the space basis"},
+       angular_velocity},
+      {{"omega_body", "rad/s", K::vector, F::body, kNoSign, "w in the body basis"},
+       angular_velocity},
+      {{"omega_primed", "rad/s", K::vector, F::primed, kNoSign,
+        "w in the primed basis (after the turns by phi and theta, before psi)"},
+       angular_velocity},
+      {{"L_primed", "kg m^2/s", K::vector, F::primed, kNoSign,
+        "a symmetric top's L in the primed basis"},
+       L_primed},
+      {{"kinetic_energy", "J", K::scalar, F::none, kNoSign, "a symmetric top's T"},
+       kinetic_energy},
+      {{"angles_back_zyz", "rad", K::vector, F::none, kNoSign,
+        "the z-y-z angles read back from R (gimbal lock: psi = 0)"},
+       reading_back},
+      {{"angles_back_zxz", "rad", K::vector, F::none, kNoSign,
+        "the z-x-z angles read back from R (gimbal lock: psi = 0)"},
+       reading_back},
+  };
+  return r;
 }
 }  // namespace
 
 Key solve_euler_angles(const Problem& problem, const sym::Values& values) {
   const Angles t(problem, values);
-  return assemble_parts(problem, [&](const std::string& q) { return quantity(t, q); });
+  return assemble_parts(problem,
+                        [&](const std::string& q) { return compute_quantity(rows(), t, q); });
+}
+
+SolverInfo euler_angles_solver() {
+  SolverInfo s;
+  s.name = "euler_angles";
+  s.summary = "Euler angles and their rates: the rotation in three conventions, w in three "
+              "bases, a symmetric top's L and T, the angles read back";
+  s.motion_keys = {"phi", "theta", "psi", "phidot", "thetadot", "psidot"};
+  s.quantities = quantity_infos(rows());
+  s.solve = solve_euler_angles;
+  return s;
 }
 
 }  // namespace wobble

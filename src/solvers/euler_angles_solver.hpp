@@ -7,25 +7,21 @@
 /// e1, e2, e3 in space); PHY 711's R(alpha, beta, gamma) takes inertial components to body ones:
 /// it is R's transpose at alpha = phi, beta = theta, gamma = psi. Goldstein's z-x-z angles of the
 /// same rotation are (phi + pi/2, theta, psi - pi/2). Angles are given in (-pi, pi] (phi, psi)
-/// and [0, pi] (theta). Quantities, by the names the keys use (README, "Solvers"):
-///
-///     R_zyz, R_phy711         the rotation matrices of the two conventions          (none)
-///     angles_phy711           (alpha, beta, gamma) = (phi, theta, psi)             rad
-///     angles_zxz              Goldstein's angles of the same rotation              rad
-///     omega_space, omega_body, omega_primed   w in the space, body and primed (after phi and
-///                             theta, before psi) bases                              rad/s
-///     L_primed, kinetic_energy  a symmetric top's L in the primed basis and T      kg m^2/s, J
-///     angles_back_zyz, angles_back_zxz   the angles read back from R; at theta = 0 or pi
-///                             only phi + psi (phi - psi) is defined: psi = 0        rad
+/// and [0, pi] (theta). Its quantities, with units and meanings, are the rows of its table
+/// (`wobble solvers`, README "Solvers").
 ///
 /// Each value is checked against core/euler_angles.hpp and core rotations (an independent route).
 #include "problem/problem.hpp"
 #include "solvers/key.hpp"
+#include "solvers/registry.hpp"
 
 namespace wobble {
 
-/// @throws InputError: a body tensor that is not diag(I1, I1, I3), angles outside their ranges,
-///   an unknown quantity; and all of build_inertia_body's.
+/// @throws InputError: a body tensor that is not diag(I1, I1, I3), angles outside their ranges;
+///   and all of build_inertia_body's.
 Key solve_euler_angles(const Problem& problem, const sym::Values& values);
+
+/// Its registry entry.
+SolverInfo euler_angles_solver();
 
 }  // namespace wobble

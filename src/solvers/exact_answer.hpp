@@ -35,6 +35,12 @@ Answer numeric_vector(const std::string& name, const Vec3& v, const std::string&
 Answer numeric_matrix(const std::string& name, const Mat3& m, const std::string& unit,
                       const std::string& why);
 
+/// The rounding a double-precision route of core/ may carry, in ulps of its scale: each is a
+/// closed form of at most a few dozen operations, each rounding by half an ulp, in forms that do
+/// not amplify it more than twofold (cancellations are removed by construction; where a route
+/// does amplify, the caller adds rounding_sensitivity). The exact route is rounded once.
+inline constexpr double kRouteUlps = 64.0;
+
 /// The solvers' self-check: an exact value (rounded once from 40 digits) against the same
 /// quantity by an independent double-precision route in core/. The double route carries its own
 /// rounding, up to `ulps` eps of max(scale, |exact|), and the rounding of its inputs, which it

@@ -11,6 +11,7 @@
 #include "core/heavy_top.hpp"
 #include "solvers/exact_answer.hpp"
 #include "solvers/inertia_body.hpp"
+#include "solvers/quantity_table.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/canonical_print.hpp"
 
@@ -197,7 +198,7 @@ Computed nutation_limit(const Top& t, bool upper) {
       },
       {t.numeric.M_kg, t.numeric.l_m, t.numeric.g_m_s2, t.numeric.I1_kgm2, t.numeric.I3_kgm2,
        t.start.theta, t.start.thetadot, t.start.phidot, t.start.psidot});
-  check_routes_agree(out.answer.value.data[0], want, 1.0, 64, q, acos_amplified + moved);
+  check_routes_agree(out.answer.value.data[0], want, 1.0, kRouteUlps, q, acos_amplified + moved);
   const std::string turning =
       "θ̇0 = 0: the start is a turning point; dividing f by (u − cos θ0) leaves β d² + c2 d + c1 "
       "= 0 in d = u − cos θ0, with";
@@ -271,17 +272,121 @@ Computed steady(const Top& t, const std::string& q) {
                  "I_1\\cos\\theta\\,\\dot\\phi^2 - I_3\\omega_3\\,\\dot\\phi + Mgl = 0",
                  "Steady precession:"}}};
   const double want = slow ? rates->slow : rates->fast;
-  if (std::isfinite(want)) check_routes_agree(out.answer.value.data[0], want, want, 64, q);
+  if (std::isfinite(want)) check_routes_agree(out.answer.value.data[0], want, want, kRouteUlps, q);
   out.answer.notes.push_back(
       slow ? "The slow precession: for a fast top ≈ M g l / (I3 ω3), independent of θ."
            : "The fast precession: for a fast top ≈ I3 ω3 / (I1 cos θ), nearly the free nutation.");
   return out;
 }
 
-Computed quantity_of(const Top& t, const std::string& q);
+// The spin's and the least stable spin's double routes: a product, a square root, a quotient.
+constexpr double kSpinRouteUlps = 16;
 
+Computed lagrangian0(const Top& t, const std::string& q) {
+  const ex c = GiNaC::cos(t.theta), s = GiNaC::sin(t.theta);
+  const auto& k = t.constants;
+  const ex L = t.I1 / 2 * (GiNaC::pow(t.phidot * s, 2) + GiNaC::pow(t.thetadot, 2)) +
+               t.I3 / 2 * GiNaC::pow(t.w3, 2) - t.M * t.g * t.l * c;
+  Computed out{exact_scalar(q, L, "J", t.exact), {lagrangian_step()}};
+  const double Vn = t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m * std::cos(t.start.theta);
+  check_routes_agree(out.answer.value.data[0], k.energy - 2 * Vn, k.energy + std::abs(Vn),
+                     kRouteUlps, q);
+  return out;
+}
+
+Computed momentum(const Top& t, const std::string& q) {
+  const auto& k = t.constants;
+  Computed out{exact_scalar(q, q == "p_phi" ? t.p_phi : t.p_psi, "kg m^2/s", t.exact),
+               {lagrangian_step(), momenta_step()}};
+  const double want = q == "p_phi" ? k.p_phi : k.p_psi;
+  check_routes_agree(out.answer.value.data[0], want, std::abs(k.p_psi) + std::abs(k.p_phi),
+                     kRouteUlps, q);
+  return out;
+}
+
+Computed energy(const Top& t, const std::string& q) {
+  const auto& k = t.constants;
+  const ex E = q == "energy" ? t.energy_prime + t.I3 / 2 * GiNaC::pow(t.w3, 2) : t.energy_prime;
+  Computed out{exact_scalar(q, E, "J", t.exact), {lagrangian_step(), momenta_step()}};
+  if (q == "energy_prime") out.steps.push_back(potential_step());
+  const double Vn = t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m;
+  check_routes_agree(out.answer.value.data[0], q == "energy" ? k.energy : k.energy_prime,
+                     std::abs(k.energy) + Vn, kRouteUlps, q);
+  return out;
+}
+
+Computed nutation(const Top& t, const std::string& q) { return nutation_limit(t, q == "theta_max"); }
+Computed kind_of_motion(const Top& t, const std::string&) { return motion_kind(t); }
+
+Computed spin(const Top& t, const std::string& q) {
+  const auto& k = t.constants;
+  const ex w_min = sym::simplified_sqrt(sym::tidy(4 * t.M * t.g * t.l * t.I1 / (t.I3 * t.I3)));
+  const Step sleeping{
+      "The vertical (sleeping) top: small tilts stay small when p_ψ² ≥ 4 M g l I1, i.e. "
+      "ω3 ≥ 2 sqrt(M g l I1)/I3.",
+      "p_\\psi^2 \\ge 4MglI_1 \\iff \\omega_3 \\ge \\frac{2\\sqrt{MglI_1}}{I_3}",
+      "Sleeping top:"};
+  Computed out{exact_scalar(q, q == "omega3" ? t.w3 : w_min, "rad/s", t.exact), {sleeping}};
+  const bool stable = sleeping_top_is_stable(k.p_psi, t.numeric.M_kg, t.numeric.g_m_s2,
+                                             t.numeric.l_m, t.numeric.I1_kgm2);
+  if (q == "omega3_min") {
+    const double wn =
+        2 * std::sqrt(t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m * t.numeric.I1_kgm2) /
+        t.numeric.I3_kgm2;
+    check_routes_agree(out.answer.value.data[0], wn, wn, kSpinRouteUlps, q);
+    out.answer.notes.push_back(fmt::format(
+        "This top's spin ω3 = {} rad/s is {} the minimum: stood vertical, it would {}.",
+        format_number(k.w3), stable ? "at least" : "below",
+        stable ? "sleep (stay up)" : "fall away from the vertical"));
+  } else {
+    check_routes_agree(out.answer.value.data[0], k.w3, std::abs(k.w3), kSpinRouteUlps, q);
+  }
+  return out;
+}
+
+using K = AnswerKind;
+using F = AnswerFrame;
+constexpr SignConvention kNoSign = SignConvention::none;
+
+const std::vector<QuantityRow<const Top>>& rows() {
+  static const std::vector<QuantityRow<const Top>> r{
+      {{"lagrangian0", "J", K::scalar, F::none, kNoSign,
+        "L = I1/2 (phidot^2 sin^2 + thetadot^2) + I3/2 w3^2 - M g l cos(theta) at t = 0"},
+       lagrangian0},
+      {{"p_phi", "kg m^2/s", K::scalar, F::none, kNoSign, "the conserved momentum of phi"},
+       momentum},
+      {{"p_psi", "kg m^2/s", K::scalar, F::none, kNoSign,
+        "the conserved momentum of psi, I3 w3"},
+       momentum},
+      {{"energy", "J", K::scalar, F::none, kNoSign, "E = T + M g l cos(theta)"}, energy},
+      {{"energy_prime", "J", K::scalar, F::none, kNoSign,
+        "E' = E - p_psi^2/(2 I3), the level of the effective potential"},
+       energy},
+      {{"theta_min", "rad", K::angle, F::none, kNoSign, "the upper nutation limit (least tilt)"},
+       nutation},
+      {{"theta_max", "rad", K::angle, F::none, kNoSign, "the lower nutation limit (most tilt)"},
+       nutation},
+      {{"u_phidot_zero", "", K::scalar, F::none, kNoSign,
+        "p_phi / p_psi, where phidot = 0: against the limits, waves, cusps or loops"},
+       kind_of_motion},
+      {{"omega3", "rad/s", K::rate, F::none, kNoSign, "the spin w3 = phidot cos(theta) + psidot"},
+       spin},
+      {{"omega3_min", "rad/s", K::rate, F::none, kNoSign,
+        "the sleeping top's least stable spin 2 sqrt(M g l I1)/I3"},
+       spin},
+      {{"phidot_slow", "rad/s", K::rate, F::none, kNoSign,
+        "the slow steady precession at theta0 with this spin"},
+       steady},
+      {{"phidot_fast", "rad/s", K::rate, F::none, kNoSign,
+        "the fast steady precession at theta0 with this spin"},
+       steady},
+  };
+  return r;
+}
+
+// Every answer of a top whose rates are zero says so first: the forms are written without them.
 Computed quantity(const Top& t, const std::string& q) {
-  Computed out = quantity_of(t, q);
+  Computed out = compute_quantity(rows(), t, q);
   if (!t.zero_rates.empty()) {
     out.steps.insert(
         out.steps.begin(),
@@ -291,69 +396,22 @@ Computed quantity(const Top& t, const std::string& q) {
   }
   return out;
 }
-
-Computed quantity_of(const Top& t, const std::string& q) {
-  const ex s = GiNaC::sin(t.theta), c = GiNaC::cos(t.theta);
-  const auto& k = t.constants;
-  if (q == "lagrangian0") {
-    const ex L = t.I1 / 2 * (GiNaC::pow(t.phidot * s, 2) + GiNaC::pow(t.thetadot, 2)) +
-                 t.I3 / 2 * GiNaC::pow(t.w3, 2) - t.M * t.g * t.l * c;
-    Computed out{exact_scalar(q, L, "J", t.exact), {lagrangian_step()}};
-    const double Vn = t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m * std::cos(t.start.theta);
-    check_routes_agree(out.answer.value.data[0], k.energy - 2 * Vn, k.energy + std::abs(Vn), 64, q);
-    return out;
-  }
-  if (q == "p_phi" || q == "p_psi") {
-    Computed out{exact_scalar(q, q == "p_phi" ? t.p_phi : t.p_psi, "kg m^2/s", t.exact),
-                 {lagrangian_step(), momenta_step()}};
-    const double want = q == "p_phi" ? k.p_phi : k.p_psi;
-    check_routes_agree(out.answer.value.data[0], want, std::abs(k.p_psi) + std::abs(k.p_phi), 64,
-                       q);
-    return out;
-  }
-  if (q == "energy" || q == "energy_prime") {
-    const ex E = q == "energy" ? t.energy_prime + t.I3 / 2 * GiNaC::pow(t.w3, 2) : t.energy_prime;
-    Computed out{exact_scalar(q, E, "J", t.exact), {lagrangian_step(), momenta_step()}};
-    if (q == "energy_prime") out.steps.push_back(potential_step());
-    const double Vn = t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m;
-    check_routes_agree(out.answer.value.data[0], q == "energy" ? k.energy : k.energy_prime,
-                       std::abs(k.energy) + Vn, 64, q);
-    return out;
-  }
-  if (q == "theta_min" || q == "theta_max") return nutation_limit(t, q == "theta_max");
-  if (q == "u_phidot_zero") return motion_kind(t);
-  if (q == "omega3" || q == "omega3_min") {
-    const ex w_min = sym::simplified_sqrt(sym::tidy(4 * t.M * t.g * t.l * t.I1 / (t.I3 * t.I3)));
-    const Step sleeping{
-        "The vertical (sleeping) top: small tilts stay small when p_ψ² ≥ 4 M g l I1, i.e. "
-        "ω3 ≥ 2 sqrt(M g l I1)/I3.",
-        "p_\\psi^2 \\ge 4MglI_1 \\iff \\omega_3 \\ge \\frac{2\\sqrt{MglI_1}}{I_3}",
-        "Sleeping top:"};
-    Computed out{exact_scalar(q, q == "omega3" ? t.w3 : w_min, "rad/s", t.exact), {sleeping}};
-    const bool stable = sleeping_top_is_stable(k.p_psi, t.numeric.M_kg, t.numeric.g_m_s2,
-                                               t.numeric.l_m, t.numeric.I1_kgm2);
-    if (q == "omega3_min") {
-      const double wn =
-          2 * std::sqrt(t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m * t.numeric.I1_kgm2) /
-          t.numeric.I3_kgm2;
-      check_routes_agree(out.answer.value.data[0], wn, wn, 16, q);
-      out.answer.notes.push_back(fmt::format(
-          "This top's spin ω3 = {} rad/s is {} the minimum: stood vertical, it would {}.",
-          format_number(k.w3), stable ? "at least" : "below",
-          stable ? "sleep (stay up)" : "fall away from the vertical"));
-    } else {
-      check_routes_agree(out.answer.value.data[0], k.w3, std::abs(k.w3), 16, q);
-    }
-    return out;
-  }
-  if (q == "phidot_slow" || q == "phidot_fast") return steady(t, q);
-  throw InputError(fmt::format("{}: unknown quantity '{}' for the heavy_top solver", t.file(), q));
-}
 }  // namespace
 
 Key solve_heavy_top(const Problem& problem, const sym::Values& values) {
   const Top t(problem, values);
   return assemble_parts(problem, [&](const std::string& q) { return quantity(t, q); });
+}
+
+SolverInfo heavy_top_solver() {
+  SolverInfo s;
+  s.name = "heavy_top";
+  s.summary = "a symmetric top on a pivot under gravity: conserved momenta, energy, nutation "
+              "limits, the kind of motion, sleeping and steady precession";
+  s.motion_keys = {"g", "theta0", "thetadot0", "phidot0", "psidot0"};
+  s.quantities = quantity_infos(rows());
+  s.solve = solve_heavy_top;
+  return s;
 }
 
 }  // namespace wobble

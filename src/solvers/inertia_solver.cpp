@@ -9,6 +9,7 @@
 
 #include "solvers/inertia_body.hpp"
 #include "solvers/principal_answers.hpp"
+#include "solvers/quantity_table.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/canonical_print.hpp"
 
@@ -81,64 +82,112 @@ const PrincipalAnswers& principal(Context& c, bool about_cm) {
   return *slot;
 }
 
-Computed compute(Context& c, const std::string& quantity) {
-  const auto& t = c.table;
-  if (quantity == "mass") {
-    require_mass(c, quantity);
-    return {exact_scalar(quantity, c.body.exact.mass, "kg", c.exact),
-            {{"M = Σ m = " + sym::to_text(c.body.exact.mass, t),
-              "M = \\sum m = " + sym::to_latex(c.body.exact.mass, t), "Total mass:"}}};
-  }
-  if (quantity == "I") {
-    check_against_numeric(c.body.exact.I_O, c.body.numeric.I_O, c, quantity, 0);
-    Computed out{exact_matrix(quantity, c.body.exact.I_O, "kg m^2", c.exact), c.body.steps};
-    out.steps.push_back({"Tensor about the origin: I = " + out.answer.symbolic,
-                         "I = " + out.answer.latex, "Tensor about the origin:"});
-    return out;
-  }
-  if (quantity == "center_of_mass") {
-    require_mass(c, quantity);
-    const auto& r = c.body.exact.r_cm;
-    Computed out{exact_vector(quantity, {r[0], r[1], r[2]}, "m", c.exact), {}};
-    out.steps.push_back(
-        {"r_cm = Σ m r / Σ m = " + out.answer.symbolic,
-         "r_{\\mathrm{cm}} = \\frac{\\sum_p m_p r_p}{\\sum_p m_p} = " + out.answer.latex,
-         "Centre of mass:"});
-    return out;
-  }
-  if (quantity == "I_cm") {
-    require_mass(c, quantity);
-    const auto& exact = I_cm_exact(c);
-    check_against_numeric(exact, I_cm_numeric(c), c, quantity, 1);
-    Computed out{exact_matrix(quantity, exact, "kg m^2", c.exact), {}};
-    out.steps.push_back(
-        {"Parallel-axis theorem, from O to the centre of mass: I_cm = I_O − M "
-         "(|r_cm|² 1 − r_cm r_cmᵀ)",
-         "I_{\\mathrm{cm}} = I_O - M\\left(|r_{\\mathrm{cm}}|^2\\,\\mathbf{1} - "
-         "r_{\\mathrm{cm}}\\,r_{\\mathrm{cm}}^{T}\\right)",
-         "Parallel-axis theorem, from O to the centre of mass:"});
-    out.steps.push_back({"I_cm = " + out.answer.symbolic, "I_{\\mathrm{cm}} = " + out.answer.latex,
-                         "About the centre of mass:"});
-    return out;
-  }
-  for (const bool cm : {false, true}) {
-    const std::string suffix = cm ? "_cm" : "";
-    if (quantity != "principal_moments" + suffix && quantity != "principal_axes" + suffix) continue;
-    if (cm) require_mass(c, quantity);
-    const auto& p = principal(c, cm);
-    if (quantity == "principal_moments" + suffix) return {p.moments, p.moment_steps};
-    return {p.axes, p.axis_steps};
-  }
-  throw InputError(fmt::format(
-      "{}: unknown quantity '{}' for the inertia solver (known: mass, I, center_of_mass, I_cm, "
-      "principal_moments, principal_axes, principal_moments_cm, principal_axes_cm)",
-      c.problem.file.string(), quantity));
+Computed mass(Context& c, const std::string& quantity) {
+  require_mass(c, quantity);
+  return {exact_scalar(quantity, c.body.exact.mass, "kg", c.exact),
+          {{"M = Σ m = " + sym::to_text(c.body.exact.mass, c.table),
+            "M = \\sum m = " + sym::to_latex(c.body.exact.mass, c.table), "Total mass:"}}};
+}
+
+Computed tensor_about_origin(Context& c, const std::string& quantity) {
+  check_against_numeric(c.body.exact.I_O, c.body.numeric.I_O, c, quantity, 0);
+  Computed out{exact_matrix(quantity, c.body.exact.I_O, "kg m^2", c.exact), c.body.steps};
+  out.steps.push_back({"Tensor about the origin: I = " + out.answer.symbolic,
+                       "I = " + out.answer.latex, "Tensor about the origin:"});
+  return out;
+}
+
+Computed center_of_mass(Context& c, const std::string& quantity) {
+  require_mass(c, quantity);
+  const auto& r = c.body.exact.r_cm;
+  Computed out{exact_vector(quantity, {r[0], r[1], r[2]}, "m", c.exact), {}};
+  out.steps.push_back(
+      {"r_cm = Σ m r / Σ m = " + out.answer.symbolic,
+       "r_{\\mathrm{cm}} = \\frac{\\sum_p m_p r_p}{\\sum_p m_p} = " + out.answer.latex,
+       "Centre of mass:"});
+  return out;
+}
+
+Computed tensor_about_cm(Context& c, const std::string& quantity) {
+  require_mass(c, quantity);
+  const auto& exact = I_cm_exact(c);
+  check_against_numeric(exact, I_cm_numeric(c), c, quantity, 1);
+  Computed out{exact_matrix(quantity, exact, "kg m^2", c.exact), {}};
+  out.steps.push_back(
+      {"Parallel-axis theorem, from O to the centre of mass: I_cm = I_O − M "
+       "(|r_cm|² 1 − r_cm r_cmᵀ)",
+       "I_{\\mathrm{cm}} = I_O - M\\left(|r_{\\mathrm{cm}}|^2\\,\\mathbf{1} - "
+       "r_{\\mathrm{cm}}\\,r_{\\mathrm{cm}}^{T}\\right)",
+       "Parallel-axis theorem, from O to the centre of mass:"});
+  out.steps.push_back({"I_cm = " + out.answer.symbolic, "I_{\\mathrm{cm}} = " + out.answer.latex,
+                       "About the centre of mass:"});
+  return out;
+}
+
+bool about_cm(const std::string& quantity) {
+  return quantity.size() > 3 && quantity.compare(quantity.size() - 3, 3, "_cm") == 0;
+}
+
+Computed principal_moments(Context& c, const std::string& quantity) {
+  if (about_cm(quantity)) require_mass(c, quantity);
+  const auto& p = principal(c, about_cm(quantity));
+  return {p.moments, p.moment_steps};
+}
+
+Computed principal_axes(Context& c, const std::string& quantity) {
+  if (about_cm(quantity)) require_mass(c, quantity);
+  const auto& p = principal(c, about_cm(quantity));
+  Computed out{p.axes, p.axis_steps};
+  out.answer.axis_moments = p.moments.value.data;
+  out.answer.axis_moments_symbolic = p.moments.symbolic;
+  return out;
+}
+
+using K = AnswerKind;
+using F = AnswerFrame;
+constexpr SignConvention kNoSign = SignConvention::none;
+
+const std::vector<QuantityRow<Context>>& rows() {
+  static const std::vector<QuantityRow<Context>> r{
+      {{"mass", "kg", K::scalar, F::none, kNoSign, "the total mass M"}, mass},
+      {{"I", "kg m^2", K::tensor, F::none, kNoSign, "the inertia tensor about the origin O"},
+       tensor_about_origin},
+      {{"center_of_mass", "m", K::vector, F::none, kNoSign, "r_cm = sum m r / M"},
+       center_of_mass},
+      {{"I_cm", "kg m^2", K::tensor, F::none, kNoSign,
+        "the tensor about the centre of mass (parallel-axis theorem)"},
+       tensor_about_cm},
+      {{"principal_moments", "kg m^2", K::principal_moments, F::none, kNoSign,
+        "the principal moments about O, ascending"},
+       principal_moments},
+      {{"principal_axes", "", K::principal_axes, F::none, kNoSign,
+        "the principal axes about O, unit columns e1, e2, e3"},
+       principal_axes},
+      {{"principal_moments_cm", "kg m^2", K::principal_moments, F::none, kNoSign,
+        "the principal moments about the centre of mass"},
+       principal_moments},
+      {{"principal_axes_cm", "", K::principal_axes, F::none, kNoSign,
+        "the principal axes about the centre of mass"},
+       principal_axes},
+  };
+  return r;
 }
 }  // namespace
 
 Key solve_inertia(const Problem& problem, const sym::Values& values) {
   Context c(problem, values);
-  return assemble_parts(problem, [&](const std::string& q) { return compute(c, q); });
+  return assemble_parts(problem,
+                        [&](const std::string& q) { return compute_quantity(rows(), c, q); });
+}
+
+SolverInfo inertia_solver() {
+  SolverInfo s;
+  s.name = "inertia";
+  s.summary = "a body of point masses, shapes or a given tensor: mass, centre of mass, the "
+              "tensor about O and the centre of mass, principal moments and axes";
+  s.quantities = quantity_infos(rows());
+  s.solve = solve_inertia;
+  return s;
 }
 
 }  // namespace wobble

@@ -12,6 +12,38 @@ double Value::scale() const {
   return s;
 }
 
+const char* kind_name(AnswerKind k) {
+  switch (k) {
+    case AnswerKind::scalar: return "scalar";
+    case AnswerKind::angle: return "angle";
+    case AnswerKind::rate: return "rate";
+    case AnswerKind::vector: return "vector";
+    case AnswerKind::matrix: return "matrix";
+    case AnswerKind::tensor: return "tensor";
+    case AnswerKind::principal_moments: return "principal_moments";
+    case AnswerKind::principal_axes: return "principal_axes";
+  }
+  return "?";
+}
+
+const char* frame_name(AnswerFrame f) {
+  switch (f) {
+    case AnswerFrame::none: return "none";
+    case AnswerFrame::body: return "body";
+    case AnswerFrame::space: return "space";
+    case AnswerFrame::primed: return "primed";
+  }
+  return "?";
+}
+
+const char* sign_name(SignConvention s) {
+  switch (s) {
+    case SignConvention::none: return "none";
+    case SignConvention::sense_of_precession: return "sense_of_precession";
+  }
+  return "?";
+}
+
 void append_steps(PartKey& part, const std::vector<Step>& steps) {
   for (const auto& s : steps) {
     bool seen = false;

@@ -42,8 +42,49 @@ std::string number_latex(double x);
 /// A value as LaTeX: a number, or a pmatrix (vectors as a column).
 std::string value_latex(const Value& v);
 
+/// What an answer is, set by its solver's registry row (solvers/registry.hpp): the judge, the
+/// renderers and the exports read it, never the answer's name.
+enum class AnswerKind {
+  scalar,             ///< a number (a mass, an energy, a modulus)
+  angle,              ///< a number in radians
+  rate,               ///< a number in rad/s (or 1/s)
+  vector,             ///< three components in `frame`
+  matrix,             ///< a 3x3 matrix that is not an inertia tensor (a rotation)
+  tensor,             ///< an inertia tensor, kg m^2
+  principal_moments,  ///< three moments, ascending; judged in any order
+  principal_axes,     ///< unit columns e1, e2, e3; judged each up to sign, degenerate pairs as
+                      ///< planes (core/principal_axes.hpp decides which moments are equal)
+};
+
+/// The basis a vector's components are given in.
+enum class AnswerFrame {
+  none,    ///< not a vector, or no frame applies (a centre of mass in the problem's axes)
+  body,    ///< the body's principal axes e1, e2, e3
+  space,   ///< the fixed axes
+  primed,  ///< the line-of-nodes basis of Euler angles (e1', e2', e3' = z)
+};
+
+/// What the sign of an answer says.
+enum class SignConvention {
+  none,                ///< an ordinary signed quantity
+  sense_of_precession  ///< signed along e3: + with the spin (oblate), - against (prolate)
+};
+
+/// Names for messages and the JSON key ("principal_axes", "body", "sense_of_precession").
+const char* kind_name(AnswerKind k);
+const char* frame_name(AnswerFrame f);
+const char* sign_name(SignConvention s);
+
 struct Answer {
   std::string name;
+  std::string quantity;  ///< the solver's quantity (the name unless the problem renamed it)
+  AnswerKind kind = AnswerKind::scalar;
+  AnswerFrame frame = AnswerFrame::none;
+  SignConvention sign = SignConvention::none;
+  /// principal_axes only: the moments of the columns, ascending (the judge needs them to know
+  /// which axes form a degenerate plane).
+  std::vector<double> axis_moments;
+  std::string axis_moments_symbolic;  ///< their exact form, GiNaC text ("" if numeric only)
   std::string symbolic;  ///< GiNaC text; empty if numeric only
   std::string latex;     ///< LaTeX of the symbolic form (or of the value if numeric only)
   Value value;

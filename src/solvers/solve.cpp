@@ -4,12 +4,8 @@
 
 #include "problem/values.hpp"
 #include "problem/variants.hpp"
-#include "solvers/asymmetric_top_solver.hpp"
-#include "solvers/euler_angles_solver.hpp"
 #include "solvers/exact_answer.hpp"
-#include "solvers/heavy_top_solver.hpp"
-#include "solvers/inertia_solver.hpp"
-#include "solvers/torque_free_solver.hpp"
+#include "solvers/registry.hpp"
 
 namespace wobble {
 
@@ -40,10 +36,6 @@ std::vector<std::string> variant_for(const Problem& problem, long n) {
   });
 }
 
-std::vector<std::string> solver_names() {
-  return {"inertia", "torque_free_symmetric", "asymmetric_top", "heavy_top", "euler_angles"};
-}
-
 std::vector<std::string> key_conventions() {
   return {
       "SI units; angles in radians.",
@@ -55,23 +47,9 @@ std::vector<std::string> key_conventions() {
 }
 
 Key solve(const Problem& problem, const sym::Values& values) {
-  Key key;
+  const SolverInfo& solver = solver_info(problem.solver);
   begin_route_checks();
-  if (problem.solver == "inertia") {
-    key = solve_inertia(problem, values);
-  } else if (problem.solver == "torque_free_symmetric") {
-    key = solve_torque_free_symmetric(problem, values);
-  } else if (problem.solver == "asymmetric_top") {
-    key = solve_asymmetric_top(problem, values);
-  } else if (problem.solver == "heavy_top") {
-    key = solve_heavy_top(problem, values);
-  } else if (problem.solver == "euler_angles") {
-    key = solve_euler_angles(problem, values);
-  } else {
-    throw InputError(fmt::format("{}: solver: unknown solver '{}' (known: {})",
-                                 problem.file.string(), problem.solver,
-                                 fmt::join(solver_names(), ", ")));
-  }
+  Key key = solver.solve(problem, values);
   key.problem = problem.id;
   key.title = problem.title;
   key.source = problem.source;

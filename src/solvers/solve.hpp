@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The solvers, by the name a problem file gives in `solver`.
+/// Solving a problem: its solver (solvers/registry.hpp) at parameter values, and the variants.
 #include <functional>
 #include <string>
 #include <vector>
@@ -26,9 +26,6 @@ Key assemble_parts(const Problem& problem,
 /// draw is as reproducible as the first.
 /// @throws InputError for n out of range, or when 100 draws all fail (naming the last reason).
 std::vector<std::string> variant_for(const Problem& problem, long n);
-
-/// Names of the solvers, for messages and the README.
-std::vector<std::string> solver_names();
 
 /// The conventions every key states.
 std::vector<std::string> key_conventions();

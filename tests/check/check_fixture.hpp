@@ -4,7 +4,7 @@
 #include <string>
 
 #include "check/judge.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
 

@@ -11,7 +11,7 @@
 #include "check/check_fixture.hpp"
 #include "check/judge.hpp"
 #include "check/units.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/value_text.hpp"

@@ -11,7 +11,7 @@
 #include "check/answer_reading.hpp"
 #include "check/check_fixture.hpp"
 #include "check/judge.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "render/common.hpp"
 #include "solvers/solve.hpp"

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/run.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/scene.hpp"
 #include "temp_files.hpp"
 

@@ -7,7 +7,7 @@
 #include <cctype>
 
 #include "cli/run.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "temp_files.hpp"
 
 using namespace wobble::test;

@@ -2,7 +2,7 @@
 // number, a vector and a matrix of real keys.
 #include "check/judge.hpp"
 #include "fuzz_common.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
 

@@ -1,6 +1,6 @@
 // Problem files: parse, then solve at the defaults and render every format.
 #include "fuzz_common.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "render/render.hpp"
 #include "solvers/solve.hpp"

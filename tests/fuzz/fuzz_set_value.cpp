@@ -1,6 +1,6 @@
 // --set values: a length, an angle (degrees allowed) and a rate of a real problem.
 #include "fuzz_common.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -15,7 +15,7 @@
 #include "core/principal_axes.hpp"
 #include "core/shapes.hpp"
 #include "core/torque_free_symmetric.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
 #include "temp_files.hpp"

@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "temp_files.hpp"
 
@@ -87,6 +87,32 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
   CHECK_THAT(
       load_error(replaced(kGood, "masses = [", "tensor = [[1,0,0],[0,1,0],[0,0,1]]\nmasses = [")),
       Contains("cannot be combined"));
+}
+
+TEST_CASE("the solver, its motion keys and each quantity are checked when the file loads") {
+  using Catch::Contains;
+  // A schema of the loader's own (problem/solver_schema.hpp), not the program's registry.
+  const SolverSchemas schemas{{"inertia", {}, {"I", "mass"}},
+                              {"spinner", {"omega"}, {"rate"}}};
+  const auto error = [&](const std::string& text) -> std::string {
+    try {
+      (void)load_problem(test::write_file("load/schema.toml", text), schemas);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "(loaded)";
+  };
+  CHECK(error(replaced(kGood, "{ name = \"I_about_O\", quantity = \"I\" }", "\"mass\"")) ==
+        "(loaded)");
+  CHECK_THAT(error(replaced(kGood, "quantity = \"I\"", "quantity = \"Ixx\"")),
+             Contains("schema.toml:") && Contains("unknown quantity 'Ixx' for the inertia solver") &&
+                 Contains("it computes: I, mass"));
+  CHECK_THAT(error(replaced(kGood, "solver = \"inertia\"", "solver = \"inertial\"")),
+             Contains("schema.toml:3: solver: unknown solver 'inertial' (known: inertia, spinner)"));
+  CHECK_THAT(error(replaced(kGood, "solver = \"inertia\"", "solver = \"spinner\"")),
+             Contains("motion: missing (a table { omega })"));
+  CHECK_THAT(error(kGood + "\n[motion]\nomega = \"1\"\n"),
+             Contains("the inertia solver takes no [motion] table"));
 }
 
 TEST_CASE("problem lookup: by id, by file, and unknown ids list the known ones") {

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <set>
 
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "problem/variants.hpp"
 #include "solvers/solve.hpp"

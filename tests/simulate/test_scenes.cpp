@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "core/exact_free_body.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/scene.hpp"
 #include "problem/values.hpp"
 #include "render/simulation_output.hpp"

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "core/inertia.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "solvers/exact_answer.hpp"
 #include "solvers/inertia_body.hpp"

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/inertia.hpp"
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
 

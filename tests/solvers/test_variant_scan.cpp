@@ -5,7 +5,7 @@
 // variant.
 #include <catch2/catch.hpp>
 
-#include "problem/load.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
 
