@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/exact_free_body.hpp"
+#include "solvers/body_requirements.hpp"
 #include "solvers/exact_answer.hpp"
 #include "solvers/inertia_body.hpp"
 #include "solvers/quantity_table.hpp"
@@ -42,25 +43,12 @@ double value(const Asym& t, const ex& e, const std::string& field) {
   return sym::evaluate(e, t.exact.at, field);
 }
 
-GiNaC::matrix tensor_about_centre(const Asym& t) {
-  const auto& e = t.body.exact;
-  if (!t.body.has_mass) return sym::normalized(e.I_O);
-  return sym::normalized(e.I_O.sub(sym::parallel_axis_term(e.mass, e.r_cm)));
-}
+const std::string kWho = "the asymmetric_top solver";
 
 Asym::Asym(const Problem& p, const sym::Values& values) : BodyContext(p, values) {
   Asym& t = *this;
   const GiNaC::matrix Ic = tensor_about_centre(t);
-  for (unsigned i = 0; i < 3; ++i) {
-    for (unsigned j = i + 1; j < 3; ++j) {
-      if (!sym::is_identically_zero(Ic(i, j))) {
-        throw InputError(fmt::format(
-            "{}: body: the asymmetric-top solver needs the principal axes along x, y, z, but "
-            "I_{}{} = {}",
-            file(), "xyz"[i], "xyz"[j], sym::to_text(Ic(i, j), t.table)));
-      }
-    }
-  }
+  require_principal_axes_along_xyz(t, Ic, kWho, "about the centre of mass");
   for (int k = 0; k < 3; ++k) {
     const auto uk = static_cast<unsigned>(k);
     I[uk] = Ic(uk, uk);
@@ -69,11 +57,11 @@ Asym::Asym(const Problem& p, const sym::Values& values) : BodyContext(p, values)
     w[uk] = t.table.parse(problem.motion->at(key), "motion." + key);
     w_n[k] = value(t, w[uk], "motion." + key);
   }
-  require_rotating_body(file(), I_n, "the asymmetric_top solver");
+  require_rotating_body(file(), I_n, kWho);
   if (!(I_n[0] < I_n[1] && I_n[1] < I_n[2])) {
     const bool two_equal = I_n[0] == I_n[1] || I_n[1] == I_n[2];
     throw InputError(fmt::format(
-        "{}: body: the asymmetric-top solver needs the moments about x, y, z in increasing "
+        "{}: body: the asymmetric_top solver needs the moments about x, y, z in increasing "
         "order, I_xx < I_yy < I_zz; at these values I_xx = {:.6g}, I_yy = {:.6g}, I_zz = {:.6g} "
         "kg m^2 ({})",
         file(), I_n[0], I_n[1], I_n[2],

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/euler_angles.hpp"
+#include "solvers/body_requirements.hpp"
 #include "solvers/exact_answer.hpp"
 #include "solvers/quantity_table.hpp"
 #include "solvers/inertia_body.hpp"
@@ -32,25 +33,8 @@ double value(const Angles& t, const ex& e, const std::string& field) {
 
 Angles::Angles(const Problem& p, const sym::Values& values) : BodyContext(p, values) {
   Angles& t = *this;
-  const auto& b = t.body.exact;
-  const GiNaC::matrix I = t.body.has_mass
-                              ? sym::normalized(b.I_O.sub(sym::parallel_axis_term(b.mass, b.r_cm)))
-                              : sym::normalized(b.I_O);
-  for (unsigned i = 0; i < 3; ++i) {
-    for (unsigned j = i + 1; j < 3; ++j) {
-      if (!sym::is_identically_zero(I(i, j))) {
-        throw InputError(
-            fmt::format("{}: body: the Euler-angle problems take a symmetric top, "
-                        "diag(I1, I1, I3) in the body frame, but I_{}{} = {}",
-                        file(), "xyz"[i], "xyz"[j], sym::to_text(I(i, j), t.table)));
-      }
-    }
-  }
-  if (!sym::is_identically_zero(I(0, 0) - I(1, 1))) {
-    throw InputError(fmt::format("{}: body: not symmetric about e3: I_xx = {} but I_yy = {}",
-                                 file(), sym::to_text(I(0, 0), t.table),
-                                 sym::to_text(I(1, 1), t.table)));
-  }
+  const GiNaC::matrix I = tensor_about_centre(t);
+  require_symmetric_about_z(t, I, "the euler_angles solver", "about the centre of mass");
   I1 = I(0, 0);
   I3 = I(2, 2);
   const std::array<ex*, 6> fields{&phi, &theta, &psi, &phidot, &thetadot, &psidot};

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/heavy_top.hpp"
+#include "solvers/body_requirements.hpp"
 #include "solvers/exact_answer.hpp"
 #include "solvers/inertia_body.hpp"
 #include "solvers/quantity_table.hpp"
@@ -41,32 +42,11 @@ ex motion(Top& t, const std::string& key) {
 
 Top::Top(const Problem& p, const sym::Values& values) : BodyContext(p, values) {
   Top& t = *this;
-  if (!t.body.has_mass) {
-    throw InputError(file() + ": body: the heavy top needs masses or shapes (its mass and centre)");
-  }
+  const std::string who = "the heavy_top solver";
+  require_mass(t, who);
   const auto& b = t.body.exact;
-  for (unsigned i = 0; i < 3; ++i) {
-    for (unsigned j = i + 1; j < 3; ++j) {
-      if (!sym::is_identically_zero(b.I_O(i, j))) {
-        throw InputError(fmt::format(
-            "{}: body: the heavy top must be symmetric about z through the pivot, but I_{}{} = {}",
-            file(), "xyz"[i], "xyz"[j], sym::to_text(b.I_O(i, j), t.table)));
-      }
-    }
-  }
-  if (!sym::is_identically_zero(b.I_O(0, 0) - b.I_O(1, 1))) {
-    throw InputError(fmt::format(
-        "{}: body: not symmetric about z: about the pivot I_xx = {} but I_yy = {}", file(),
-        sym::to_text(b.I_O(0, 0), t.table), sym::to_text(b.I_O(1, 1), t.table)));
-  }
-  for (int i = 0; i < 2; ++i) {
-    if (!sym::is_identically_zero(b.r_cm[i])) {
-      throw InputError(
-          fmt::format("{}: body: the centre of mass must be on the z axis (the "
-                      "symmetry axis through the pivot), but its {} is {}",
-                      file(), "xy"[i], sym::to_text(b.r_cm[i], t.table)));
-    }
-  }
+  require_centre_on_z(t, who);  // first: an off-axis centre also makes products of inertia
+  require_symmetric_about_z(t, b.I_O, who, "about the pivot");
   M = b.mass;
   l = sym::tidy(b.r_cm[2]);
   I1 = sym::tidy(b.I_O(0, 0));

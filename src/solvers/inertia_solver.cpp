@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 
+#include "solvers/body_requirements.hpp"
 #include "solvers/inertia_body.hpp"
 #include "solvers/principal_answers.hpp"
 #include "solvers/quantity_table.hpp"
@@ -26,11 +27,9 @@ struct Context : BodyContext {
   std::optional<PrincipalAnswers> about_O, about_cm;
 };
 
+// A mass and a centre: not a tensor given directly (body_requirements.hpp).
 void require_mass(const Context& c, const std::string& quantity) {
-  if (!c.body.has_mass) {
-    throw InputError(fmt::format("{}: '{}' needs a body with mass; the tensor is given directly",
-                                 c.problem.file.string(), quantity));
-  }
+  wobble::require_mass(c, "the quantity '" + quantity + "'");
 }
 
 // The exact tensor must match core's numeric one. Each entry of the tensor about O is a sum over
@@ -56,10 +55,7 @@ void check_against_numeric(const GiNaC::matrix& exact, const Mat3& numeric, cons
 }
 
 const GiNaC::matrix& I_cm_exact(Context& c) {
-  if (!c.I_cm_exact) {
-    const auto& e = c.body.exact;
-    c.I_cm_exact = sym::normalized(e.I_O.sub(sym::parallel_axis_term(e.mass, e.r_cm)));
-  }
+  if (!c.I_cm_exact) c.I_cm_exact = tensor_about_centre(c);
   return *c.I_cm_exact;
 }
 

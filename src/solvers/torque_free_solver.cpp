@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/torque_free_symmetric.hpp"
+#include "solvers/body_requirements.hpp"
 #include "solvers/exact_answer.hpp"
 #include "solvers/inertia_body.hpp"
 #include "solvers/quantity_table.hpp"
@@ -25,6 +26,8 @@ const Problem& with_motion(const Problem& problem) {
   return problem;
 }
 
+const std::string kWho = "the torque_free_symmetric solver";
+
 struct Top : BodyContext {
   Top(const Problem& problem, const sym::Values& values);
   ex I1, I3, omega, alpha;  // exact
@@ -36,35 +39,11 @@ double value(const Top& t, const ex& e, const std::string& field) {
   return sym::evaluate(e, t.exact.at, field);
 }
 
-// The tensor about the centre of mass must be diag(I1, I1, I3) identically in the parameters.
-void require_symmetric_about_z(const Top& t, const GiNaC::matrix& I) {
-  const std::string file = t.problem.file.string();
-  for (unsigned i = 0; i < 3; ++i) {
-    for (unsigned j = i + 1; j < 3; ++j) {
-      if (!sym::is_identically_zero(I(i, j))) {
-        throw InputError(fmt::format(
-            "{}: body: the torque-free symmetric solver needs principal axes along x, y, z, but "
-            "I_{}{} = {}; an asymmetric top needs solver = \"asymmetric_top\"",
-            file, "xyz"[i], "xyz"[j], sym::to_text(I(i, j), t.table)));
-      }
-    }
-  }
-  if (!sym::is_identically_zero(I(0, 0) - I(1, 1))) {
-    throw InputError(fmt::format(
-        "{}: body: not axially symmetric about z: I_xx = {} but I_yy = {}; an asymmetric top "
-        "needs solver = \"asymmetric_top\"",
-        file, sym::to_text(I(0, 0), t.table), sym::to_text(I(1, 1), t.table)));
-  }
-}
-
 Top::Top(const Problem& p, const sym::Values& values) : BodyContext(with_motion(p), values) {
   Top& t = *this;
-  if (!t.body.has_mass) {
-    throw InputError(problem.file.string() + ": body: needs masses or shapes, not a tensor");
-  }
-  const auto& e = t.body.exact;
-  const GiNaC::matrix I_cm = sym::normalized(e.I_O.sub(sym::parallel_axis_term(e.mass, e.r_cm)));
-  require_symmetric_about_z(t, I_cm);
+  require_mass(t, kWho);
+  const GiNaC::matrix I_cm = tensor_about_centre(t);
+  require_symmetric_about_z(t, I_cm, kWho, "about the centre of mass", "asymmetric_top");
   t.I1 = I_cm(0, 0);
   t.I3 = I_cm(2, 2);
   t.omega = t.table.parse(problem.motion->at("omega"), "motion.omega");
@@ -85,7 +64,7 @@ Top::Top(const Problem& p, const sym::Values& values) : BodyContext(with_motion(
   }
   require_rotating_body(problem.file.string(),
                         Vec3(t.numeric.I1_kgm2, t.numeric.I1_kgm2, t.numeric.I3_kgm2),
-                        "the torque_free_symmetric solver");
+                        kWho);
   t.numeric.validate();
   t.prolate = t.numeric.I3_kgm2 < t.numeric.I1_kgm2;
   t.oblate = t.numeric.I3_kgm2 > t.numeric.I1_kgm2;
