@@ -25,6 +25,8 @@ const std::map<std::string, Named>& names() {
       {"deg", {M_PI / 180, {0, 0, 0}, true}}, {"rev", {2 * M_PI, {0, 0, 0}, true}},
       {"J", {1.0, {1, 2, -2}, false}},        {"N", {1.0, {1, 1, -2}, false}},
       {"Hz", {2 * M_PI, {0, 0, -1}, true}},       {"rpm", {2 * M_PI / 60, {0, 0, -1}, true}},
+      // Days, as a key's notes print long periods (the Earth's wobble): 86400 s, singular too.
+      {"day", {86400.0, {0, 0, 1}, false}},   {"days", {86400.0, {0, 0, 1}, false}},
   };
   return n;
 }
@@ -51,7 +53,7 @@ Unit parse_unit(const std::string& text, const std::string& field) {
   u.text = text;
   const auto fail = [&](const std::string& why) -> Unit {
     throw InputError(field + ": cannot read the unit '" + text + "': " + why +
-                     " (units: kg, g, m, cm, mm, s, ms, min, h, rad, deg, rev, J, N, Hz, rpm; "
+                     " (units: kg, g, m, cm, mm, s, ms, min, h, day, rad, deg, rev, J, N, Hz, rpm; "
                      "e.g. 'kg m^2', 'rad/s')");
   };
   bool denominator = false, any = false;

@@ -4,7 +4,7 @@
 ///
 /// A unit is a product of names with integer powers, '/' putting what follows in the
 /// denominator: "kg m^2", "kg*m^2/s", "rad/s", "m/s^2", "deg", "rev/s", "1/s" (or "s^-1").
-/// Names: kg, g; m, cm, mm; s, ms, min, h; rad, deg, rev; J, N, Hz, rpm. An unknown name, a
+/// Names: kg, g; m, cm, mm; s, ms, min, h, day (or days); rad, deg, rev; J, N, Hz, rpm. An unknown name, a
 /// missing or non-integer power is an error.
 ///
 /// Radians, one rule everywhere: an angle is a pure number, so rad/s and 1/s are the same unit

@@ -7,20 +7,47 @@
 namespace wobble {
 
 namespace {
+// The principal moments about the centre of mass per unit mass (m^2), from the sizes in order.
+using MomentsPerMass = Vec3 (*)(const std::vector<double>& s);
+
+double sq(double x) { return x * x; }
+
 struct ShapeInfo {
   ShapeKind kind;
   std::string_view name;
   std::vector<std::string> sizes;
+  MomentsPerMass moments;  ///< the closed form (symbolic/shape_integrals integrates it apart)
 };
 
-const std::array<ShapeInfo, 6>& shape_table() {
-  static const std::array<ShapeInfo, 6> table{{
-      {ShapeKind::box, "box", {"a", "b", "c"}},
-      {ShapeKind::plate, "plate", {"a", "b"}},
-      {ShapeKind::disc, "disc", {"R"}},
-      {ShapeKind::cylinder, "cylinder", {"R", "h"}},
-      {ShapeKind::sphere, "sphere", {"R"}},
-      {ShapeKind::rod, "rod", {"L"}},
+// One entry per shape: its name, its sizes and its tensor about the centre of mass.
+const std::array<ShapeInfo, 7>& shape_table() {
+  static const std::array<ShapeInfo, 7> table{{
+      {ShapeKind::box, "box", {"a", "b", "c"},
+       [](const std::vector<double>& s) -> Vec3 {
+         return Vec3{sq(s[1]) + sq(s[2]), sq(s[0]) + sq(s[2]), sq(s[0]) + sq(s[1])} / 12.0;
+       }},
+      {ShapeKind::plate, "plate", {"a", "b"},
+       [](const std::vector<double>& s) -> Vec3 {
+         return Vec3{sq(s[1]), sq(s[0]), sq(s[0]) + sq(s[1])} / 12.0;
+       }},
+      {ShapeKind::disc, "disc", {"R"},
+       [](const std::vector<double>& s) -> Vec3 {
+         return {sq(s[0]) / 4.0, sq(s[0]) / 4.0, sq(s[0]) / 2.0};
+       }},
+      {ShapeKind::cylinder, "cylinder", {"R", "h"},
+       [](const std::vector<double>& s) -> Vec3 {
+         const double side = sq(s[0]) / 4.0 + sq(s[1]) / 12.0;
+         return {side, side, sq(s[0]) / 2.0};
+       }},
+      {ShapeKind::sphere, "sphere", {"R"},
+       [](const std::vector<double>& s) -> Vec3 { return Vec3::Constant(0.4 * sq(s[0])); }},
+      {ShapeKind::rod, "rod", {"L"},
+       [](const std::vector<double>& s) -> Vec3 { return {sq(s[0]) / 12.0, sq(s[0]) / 12.0, 0.0}; }},
+      {ShapeKind::cone, "cone", {"R", "h"},
+       [](const std::vector<double>& s) -> Vec3 {
+         const double side = 3.0 / 20.0 * sq(s[0]) + 3.0 / 80.0 * sq(s[1]);
+         return {side, side, 3.0 / 10.0 * sq(s[0])};
+       }},
   }};
   return table;
 }
@@ -40,6 +67,12 @@ ShapeKind shape_kind_from_name(std::string_view name) {
     known += (known.empty() ? "" : ", ") + std::string(s.name);
   }
   throw std::invalid_argument("unknown shape '" + std::string(name) + "' (known: " + known + ")");
+}
+
+std::vector<ShapeKind> shape_kinds() {
+  std::vector<ShapeKind> out;
+  for (const auto& s : shape_table()) out.push_back(s.kind);
+  return out;
 }
 
 std::string_view shape_kind_name(ShapeKind kind) {
@@ -65,30 +98,7 @@ Mat3 shape_inertia_about_cm(ShapeKind kind, double mass_kg, const std::vector<do
                                   " must be finite and > 0");
     }
   }
-  const auto sq = [&](std::size_t i) { return sizes_m[i] * sizes_m[i]; };
-  Vec3 diag = Vec3::Zero();
-  switch (kind) {
-    case ShapeKind::box:
-      diag = {sq(1) + sq(2), sq(0) + sq(2), sq(0) + sq(1)};
-      diag /= 12.0;
-      break;
-    case ShapeKind::plate:
-      diag = {sq(1), sq(0), sq(0) + sq(1)};
-      diag /= 12.0;
-      break;
-    case ShapeKind::disc:
-      diag = {sq(0) / 4.0, sq(0) / 4.0, sq(0) / 2.0};
-      break;
-    case ShapeKind::cylinder:
-      diag = {sq(0) / 4.0 + sq(1) / 12.0, sq(0) / 4.0 + sq(1) / 12.0, sq(0) / 2.0};
-      break;
-    case ShapeKind::sphere:
-      diag = Vec3::Constant(0.4 * sq(0));
-      break;
-    case ShapeKind::rod:
-      diag = {sq(0) / 12.0, sq(0) / 12.0, 0.0};
-      break;
-  }
+  const Vec3 diag = info(kind).moments(sizes_m);
   return mass_kg * diag.asDiagonal().toDenseMatrix();
 }
 

@@ -33,9 +33,10 @@ std::string parameter_value_text(const ParameterValue& p) {
 
 std::string parameter_value_latex(const ParameterValue& p) {
   if (const auto deg = whole_degrees(p)) {
-    return *deg + "^\\circ = " + format_number(p.value) + unit_latex(p.unit);
+    return *deg + "^\\circ = " + number_latex(p.value) + unit_latex(p.unit);
   }
-  return format_number(p.value) + unit_latex(p.unit);
+  // A page shows no e-notation: 8.034e+37 as 8.034 \times 10^{37}.
+  return number_latex(p.value) + unit_latex(p.unit);
 }
 
 std::size_t display_width(const std::string& s) {

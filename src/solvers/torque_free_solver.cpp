@@ -41,7 +41,6 @@ double value(const Top& t, const ex& e, const std::string& field) {
 
 Top::Top(const Problem& p, const sym::Values& values) : BodyContext(with_motion(p), values) {
   Top& t = *this;
-  require_mass(t, kWho);
   const GiNaC::matrix I_cm = tensor_about_centre(t);
   require_symmetric_about_z(t, I_cm, kWho, "about the centre of mass", "asymmetric_top");
   t.I1 = I_cm(0, 0);
@@ -207,6 +206,36 @@ Computed precession_body(const Top& t, const std::string& q) {
   return out;
 }
 
+// One turn of w about e3 as seen on the body: Euler's free-wobble period (the Earth's pole).
+Computed precession_period(const Top& t, const std::string& q) {
+  Computed out{{}, {{"Seen on the body, w turns about e3 once in T = 2π / |Ω_body| = "
+                     "2π I1 / (|I3 − I1| ω cos α).",
+                     "T = \\frac{2\\pi}{|\\Omega_{\\mathrm{body}}|} = \\frac{2\\pi I_1}{|I_3 - "
+                     "I_1|\\,\\omega\\cos\\alpha}",
+                     "The period of the body-frame precession:"}}};
+  if (!t.prolate && !t.oblate) {
+    out.exists = false;
+    out.steps.push_back({"I1 = I3: w does not move on the body; there is no period.", ""});
+    return out;
+  }
+  const ex T = 2 * GiNaC::Pi * sym::simplify(t.I1 / moment_gap(t)) / (t.omega * GiNaC::cos(t.alpha));
+  out.answer = exact_scalar(q, T, "s", t.exact);
+  const double want = 2 * M_PI / std::abs(t.numeric.omega_body_rate());
+  // I3 - I1 of rounded moments: a nearly round body (the Earth: 1/305) amplifies their rounding.
+  const double moved = rounding_sensitivity(
+      [](const std::vector<double>& x) {
+        return 2 * M_PI / std::abs(SymmetricTop{x[0], x[1], x[2], x[3]}.omega_body_rate());
+      },
+      {t.numeric.I1_kgm2, t.numeric.I3_kgm2, t.numeric.omega_rad_s, t.numeric.alpha_rad});
+  check_routes_agree(out.answer.value.data[0], want, want, kRouteUlps, q, moved);
+  constexpr double kSecondsPerDay = 86400.0;
+  out.answer.notes.push_back(
+      fmt::format("{} days; in turns of the spin, I1 / |I3 − I1| / cos α = {}.",
+                  format_number(out.answer.value.data[0] / kSecondsPerDay),
+                  format_number(out.answer.value.data[0] * t.numeric.omega_rad_s / (2 * M_PI))));
+  return out;
+}
+
 Computed precession_space(const Top& t, const std::string& q) {
   const ex rate_space = rate_space_of(t);
   std::vector<ex> v{sym::simplify(L_exact(t, 0) / t.I1), 0, sym::simplify(L_exact(t, 2) / t.I1)};
@@ -336,6 +365,9 @@ const std::vector<QuantityRow<const Top>>& rows() {
       {{"Omega_body_rate", "rad/s", K::rate, F::none, kSense,
         "Omega_body's component along e3 (signed)"},
        precession_body},
+      {{"precession_period_body", "s", K::scalar, F::none, kNoSign,
+        "2 pi / |Omega_body|: one turn of w about e3 seen on the body (Euler's period)"},
+       precession_period},
       {{"Omega_space", "rad/s", K::vector, F::space, kNoSign,
         "the precession of e3 and w about L in space, at t = 0"},
        precession_space},

@@ -79,6 +79,22 @@ std::array<ex, 3> second_moments(wobble::ShapeKind kind, const ex& M, const std:
                        "\\frac{M}{\\frac{4}{3}\\pi R^3}\\int_0^R r^2\\,4\\pi r^2\\,dr"});
       return {each, each, each};
     }
+    case K::cone: {
+      // Apex up at z = 3h/4, base at z = -h/4 (the centre of mass at 0): radius R (3h/4 - z)/h.
+      const ex top = 3 * s[1] / 4, bottom = -s[1] / 4;
+      const ex radius = s[0] * (top - z) / s[1];
+      const ex shell = 2 * GiNaC::Pi * r;
+      auto over = [&](const ex& f) {
+        return integrate(z, bottom, top, integrate(r, 0, radius, f * shell));
+      };
+      const ex rho = M / over(1);
+      steps.push_back(
+          {"Apex at z = 3h/4, base at z = −h/4, radius R (3h/4 − z)/h: S_xx = S_yy = ½ ρ ∫∫ r² 2π r "
+           "dr dz, S_zz = ρ ∫∫ z² 2π r dr dz, ρ = M/(π R² h/3)",
+           "S_{xx} = S_{yy} = \\frac{\\rho}{2}\\int_{-h/4}^{3h/4}\\int_0^{R(3h/4 - z)/h} "
+           "r^2\\,2\\pi r\\,dr\\,dz,\\ S_{zz} = \\rho\\int\\int z^2\\,2\\pi r\\,dr\\,dz"});
+      return {rho * over(r * r) / 2, rho * over(r * r) / 2, rho * over(z * z)};
+    }
   }
   throw std::logic_error("derive_shape_inertia: unhandled shape kind");
 }

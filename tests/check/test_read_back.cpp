@@ -284,3 +284,17 @@ TEST_CASE("degenerate or not is the key's own decision, whatever the tolerance")
     }
   }
 }
+
+TEST_CASE("a period the key's note gives in days reads back in days") {
+  const Fixture earth("earth-free-precession");
+  const Answer& T = earth.answer("precession_period_body");
+  // The note, as printed: "303.6241743 days; ...": its number with the unit as written.
+  const std::string note = T.notes.at(0);
+  const std::string days = note.substr(0, note.find(';'));
+  REQUIRE_THAT(days, Catch::EndsWith(" days"));
+  INFO(days);
+  REQUIRE(earth.check("precession_period_body", days).correct);
+  REQUIRE(earth.check("precession_period_body", "1 day").correct == false);
+  // The Chandler period (433 days, in the problem's notes) is not Euler's: it is judged wrong.
+  REQUIRE_FALSE(earth.check("precession_period_body", "433 days").correct);
+}
