@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# The Debian package installs and runs on a clean Debian 12: `cpack -G DEB` from the build
+# folder, a minimal Debian 12 made by debootstrap in a temporary folder, the package installed
+# there with apt-get (which must find every dependency the package declares), and every problem
+# of the catalog solved by the installed program, with nothing of the build machine in reach.
+# Usage: deb_test.sh BUILD_DIR. Exit 77 (reported as skipped) without root, debootstrap or a
+# way to mount /proc in the root (the program finds its data through /proc/self/exe).
+set -euo pipefail
+build="$(cd "$1" && pwd)"
+skip() { echo "deb test skipped: $*"; exit 77; }
+[[ $(id -u) -eq 0 ]] || skip "needs root (debootstrap, chroot)"
+command -v debootstrap >/dev/null || skip "needs debootstrap (scripts/setup --tests installs it)"
+
+work="$(mktemp -d /tmp/wobble-deb.XXXXXX)"
+root="$work/root"
+cleanup() {
+  if mountpoint -q "$root/proc" 2>/dev/null; then umount "$root/proc"; fi
+  rm -rf "$work"
+}
+trap cleanup EXIT
+
+cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work/pkg" >"$work/cpack.log" 2>&1 ||
+  { cat "$work/cpack.log"; exit 1; }
+deb="$(ls "$work"/pkg/wobble_*.deb)"
+depends="$(dpkg-deb -f "$deb" Depends)"
+echo "package: $(basename "$deb"), $(du -h "$deb" | cut -f1); Depends: $depends"
+for lib in libginac11 libcln6 libfmt9 libedit2 libtomlplusplus3; do
+  [[ "$depends" == *"$lib"* ]] || { echo "the package does not declare $lib"; exit 1; }
+done
+
+debootstrap --variant=minbase bookworm "$root" http://deb.debian.org/debian >"$work/debootstrap.log" 2>&1 ||
+  { tail -20 "$work/debootstrap.log"; exit 1; }
+mount -t proc proc "$root/proc" 2>/dev/null || skip "cannot mount /proc in the clean root"
+cp /etc/resolv.conf "$root/etc/resolv.conf"
+cp "$deb" "$root/tmp/"
+in_root() { chroot "$root" env -i PATH=/usr/bin:/bin HOME=/root "$@"; }
+in_root apt-get update -qq
+in_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+  "/tmp/$(basename "$deb")" >"$work/install.log" 2>&1 || { tail -20 "$work/install.log"; exit 1; }
+
+[[ "$(in_root sh -c 'command -v wobble')" == /usr/bin/wobble ]]
+in_root wobble solve flying-plate >"$work/key.txt"
+head -1 "$work/key.txt"
+status=0
+for id in $(in_root wobble list | awk '/^problems/ {on = 1; next} /^[a-z]/ {on = 0} on {print $1}'); do
+  in_root wobble solve "$id" >/dev/null || { echo "installed wobble cannot solve $id"; status=1; }
+done
+in_root wobble keys --check >"$work/keys.txt" || status=1
+tail -1 "$work/keys.txt"
+in_root wobble check flying-plate a --name I0 --answer "m*R^2/4" || status=1
+exit $status
