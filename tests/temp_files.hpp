@@ -1,5 +1,6 @@
 #pragma once
-// A per-process scratch folder for files the tests write (no randomness: named by pid).
+// A per-process scratch folder for files the tests write (no randomness: named by pid), removed
+// when the process exits (ctest starts one process per test case: hundreds of them).
 #include <unistd.h>
 
 #include <filesystem>
@@ -15,6 +16,13 @@ inline std::filesystem::path scratch_dir() {
     std::filesystem::create_directories(d);
     return d;
   }();
+  static const struct Remover {
+    std::filesystem::path path;
+    ~Remover() {
+      std::error_code ignored;  // a file still open elsewhere: leave it, never throw at exit
+      std::filesystem::remove_all(path, ignored);
+    }
+  } remover{dir};
   return dir;
 }
 

@@ -5,155 +5,13 @@
 #include <fstream>
 #include <iterator>
 
+#include "cli/bad_input_fixtures.hpp"
 #include "cli/run.hpp"
 #include "temp_files.hpp"
 
 using namespace wobble::test;
 
 namespace {
-// A minimal valid problem; each bad file below changes one thing in it.
-const std::string kBase = R"TOML(id = "tmp"
-title = "t"
-solver = "inertia"
-statement = "s"
-
-[[parameters]]
-name = "m"
-unit = "kg"
-default = 1
-range = "(0, inf)"
-
-[body]
-masses = [ { mass = "m", at = ["1", "0", "0"] }, { mass = "m", at = ["0", "1", "0"] } ]
-
-[[parts]]
-id = "a"
-question = "q"
-answers = ["I"]
-)TOML";
-
-std::string with(const std::string& from, const std::string& to) {
-  std::string s = kBase;
-  const auto p = s.find(from);
-  if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "'");
-  return s.replace(p, from.size(), to);
-}
-
-std::string file(const std::string& name, const std::string& content) {
-  return write_file("bad/" + name + ".toml", content).string();
-}
-
-// A torque-free problem: a box spun about z.
-const std::string kTop = R"TOML(id = "top"
-title = "t"
-solver = "torque_free_symmetric"
-statement = "s"
-
-[[parameters]]
-name = "m"
-unit = "kg"
-default = 1
-range = "(0, inf)"
-
-[[parameters]]
-name = "alpha"
-unit = "rad"
-default = 0.1
-range = "[0, pi/2)"
-
-[body]
-shapes = [ { shape = "box", mass = "m", sizes = ["1", "1", "2"] } ]
-
-[motion]
-omega = "3"
-alpha = "alpha"
-
-[[parts]]
-id = "a"
-question = "q"
-answers = ["max_angle"]
-)TOML";
-
-std::string top_with(const std::string& from, const std::string& to) {
-  std::string s = kTop;
-  const auto p = s.find(from);
-  if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "'");
-  return s.replace(p, from.size(), to);
-}
-
-// An asymmetric top spun exactly about its intermediate axis: valid except for a period.
-const std::string kAsym = R"TOML(id = "asym"
-title = "t"
-solver = "asymmetric_top"
-statement = "s"
-
-[[parameters]]
-name = "s"
-unit = "rad/s"
-default = 3
-range = "(0, inf)"
-
-[body]
-tensor = [["1", "0", "0"], ["0", "2", "0"], ["0", "0", "2.5"]]
-
-[motion]
-w1 = "0"
-w2 = "s"
-w3 = "0"
-
-[[parts]]
-id = "a"
-question = "q"
-answers = ["period"]
-)TOML";
-
-std::string asym_with(const std::string& from, const std::string& to) {
-  std::string s = kAsym;
-  const auto p = s.find(from);
-  if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "'");
-  return s.replace(p, from.size(), to);
-}
-
-// A problem of the repository with one thing changed.
-std::string repo_problem_with(const std::string& id, const std::string& from,
-                              const std::string& to) {
-  std::ifstream in(std::string(WOBBLE_SOURCE_DIR) + "/problems/" + id + ".toml");
-  std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto p = s.find(from);
-  if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "' in " + id);
-  s.replace(p, from.size(), to);
-  const auto idp = s.find("id = \"" + id + "\"");
-  if (idp != std::string::npos) s.replace(idp, 7 + id.size(), "id = \"tmp\"");
-  return s;
-}
-
-// A minimal valid scene: a box spun about y; each bad scene changes one thing.
-const std::string kScene = R"TOML(id = "s"
-title = "t"
-
-[body]
-shapes = [ { shape = "box", mass = 1, sizes = [3, 2, 1] } ]
-
-[initial]
-omega = [0.1, 2, 0.1]
-
-[run]
-t_end = 1
-samples = 3
-outputs = ["omega_body"]
-)TOML";
-
-std::string scene_with(const std::string& from, const std::string& to) {
-  std::string s = kScene;
-  const auto p = s.find(from);
-  if (p == std::string::npos) throw std::logic_error("test setup: no '" + from + "'");
-  return s.replace(p, from.size(), to);
-}
-
-std::string existing_file() {
-  return write_file("bad/existing.csv", "keep me\n").string();
-}
-
 struct Row {
   std::string what;
   std::vector<std::string> args;
@@ -726,22 +584,68 @@ std::vector<Row> catalog() {
 }
 }  // namespace
 
-TEST_CASE("bad input: exit 2, one line on stderr with the field and value, nothing on stdout") {
-  // Every row is answered within kMaxSeconds: bad input never hangs (generous for the
-  // sanitizer builds; a plain build answers each in well under a second).
+namespace {
+// Exit 2 (or the row's code), one line on stderr with the field and value, nothing on stdout,
+// within kMaxSeconds: bad input never hangs (generous for the sanitizer builds; a plain build
+// answers each in well under a second).
+void check_row(const Row& row) {
   constexpr double kMaxSeconds = 5;
-  for (const auto& row : catalog()) {
-    const auto start = std::chrono::steady_clock::now();
-    const RunResult r = run_wobble(row.args);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    INFO(row.what << " (" << seconds << " s)\nstderr: " << r.err << "stdout: " << r.out);
-    CHECK(seconds < kMaxSeconds);
-    CHECK(r.exit_code == row.exit_code);
-    CHECK(r.out.empty());
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    for (const auto& w : row.words) CHECK_THAT(r.err, Catch::Contains(w));
-    CHECK(r.err.find('\x1b') == std::string::npos);  // nothing drives the terminal
+  write_fixture_files_for(row.args);
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult r = run_wobble(row.args);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  INFO(row.what << " (" << seconds << " s)\nstderr: " << r.err << "stdout: " << r.out);
+  CHECK(seconds < kMaxSeconds);
+  CHECK(r.exit_code == row.exit_code);
+  CHECK(r.out.empty());
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  for (const auto& w : row.words) CHECK_THAT(r.err, Catch::Contains(w));
+  CHECK(r.err.find('\x1b') == std::string::npos);  // nothing drives the terminal
+}
+
+const std::vector<Row>& rows() {
+  static const std::vector<Row> all = catalog();
+  return all;
+}
+
+// One Catch2 test case per row ("bad input: " + what), so ctest runs them in parallel and a
+// failure names its row.
+struct RowTest : Catch::ITestInvoker {
+  explicit RowTest(std::size_t i) : index(i) {}
+  void invoke() const override { check_row(rows().at(index)); }
+  std::size_t index;
+};
+
+struct RegisterRows {
+  RegisterRows() {
+    static std::vector<std::string> names;  // the registry keeps references to the names
+    names.reserve(rows().size());
+    for (std::size_t i = 0; i < rows().size(); ++i) {
+      std::string name = "bad input: " + rows()[i].what;
+      // ctest's discovery splits names at ';' (a CMake list).
+      std::replace(name.begin(), name.end(), ';', ',');
+      if (std::find(names.begin(), names.end(), name) != names.end()) {
+        throw std::logic_error("two bad-input rows are named '" + name + "'");
+      }
+      names.push_back(name);
+      Catch::AutoReg(new RowTest(i), CATCH_INTERNAL_LINEINFO, Catch::StringRef(),
+                     Catch::NameAndTags{names.back(), "[bad-input]"});
+    }
+  }
+};
+const RegisterRows register_rows;
+}  // namespace
+
+TEST_CASE("the bad-input catalog names every row once and covers every command") {
+  std::vector<std::string> commands;
+  for (const auto& row : rows()) {
+    REQUIRE_FALSE(row.what.empty());
+    REQUIRE_FALSE(row.words.empty());
+    if (!row.args.empty()) commands.push_back(row.args.front());
+  }
+  for (const std::string c : {"solve", "check", "simulate", "keys", "bench"}) {
+    CHECK(std::count(commands.begin(), commands.end(), c) > 0);
   }
 }
 
