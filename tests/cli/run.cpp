@@ -43,4 +43,22 @@ RunResult run_wobble(const std::vector<std::string>& args,
   return run_shell(line);
 }
 
+std::vector<std::string> problem_ids() {
+  std::istringstream list(run_wobble({"list"}).out);
+  std::vector<std::string> ids;
+  bool in_problems = false;
+  for (std::string line; std::getline(list, line);) {
+    if (line.rfind("  ", 0) != 0) {
+      in_problems = line.rfind("problems", 0) == 0;
+    } else if (in_problems) {
+      ids.push_back(line.substr(2, line.find(' ', 2) - 2));
+    }
+  }
+  return ids;
+}
+
+bool have_tool(const std::string& name) {
+  return run_shell("command -v " + quote(name)).exit_code == 0;
+}
+
 }  // namespace wobble::test

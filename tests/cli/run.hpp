@@ -19,4 +19,21 @@ RunResult run_wobble(const std::vector<std::string>& args,
 /// Runs a shell command line; returns its exit code (stdout/stderr captured likewise).
 RunResult run_shell(const std::string& command_line);
 
+/// The problem ids, as `wobble list` prints them.
+std::vector<std::string> problem_ids();
+
+/// Whether the program `name` is on the PATH.
+bool have_tool(const std::string& name);
+
 }  // namespace wobble::test
+
+/// Ends the test case as skipped when `tool` is missing: ctest reports it skipped, not passed
+/// (tests/CMakeLists.txt sets SKIP_REGULAR_EXPRESSION on the message), so a machine without
+/// pdflatex or gnuplot shows what it did not test.
+#define WOBBLE_NEEDS_TOOL(tool)                                      \
+  do {                                                               \
+    if (!::wobble::test::have_tool(tool)) {                          \
+      WARN("SKIPPED: this test needs " << (tool) << " on the PATH"); \
+      return;                                                        \
+    }                                                                \
+  } while (false)

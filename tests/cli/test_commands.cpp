@@ -184,82 +184,6 @@ TEST_CASE("keys are byte-identical across processes and equal to the stored solu
   }
 }
 
-TEST_CASE("solve --figure draws the sketch with gnuplot, never overwrites without --force") {
-  const fs::path svg = scratch_dir() / "figure" / "plate.svg";
-  fs::create_directories(svg.parent_path());
-  fs::remove(svg);
-  const RunResult r =
-      run_wobble({"solve", "flying-plate", "--figure", svg.string(), "--part", "c"});
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  const std::string content = slurp(svg);
-  REQUIRE_THAT(content, Catch::StartsWith("<?xml") && Catch::Contains("<svg"));
-  // Labels with true subscripts (gnuplot's enhanced text: a smaller, lowered tspan), never a
-  // literal underscore.
-  const std::string sub = "<tspan font-family=\"Helvetica\"  font-size=\"12.0\" dy=\"4.50px\">";
-  for (const std::string& label : std::vector<std::string>{
-           ">e</tspan>" + sub + "3", ">ω</tspan>", ">L</tspan>", ">Ω</tspan>" + sub + "body",
-           ">Ω</tspan>" + sub + "space", "body cone", "space cone"}) {
-    CHECK_THAT(content, Catch::Contains(label));
-  }
-  CHECK_THAT(content, !Catch::Contains("Ω_") && !Catch::Contains("e3<"));
-  // No temporary files left beside it.
-  for (const auto& entry : fs::directory_iterator(svg.parent_path())) {
-    CHECK(entry.path().filename().string()[0] != '.');
-  }
-  // An existing file is kept unless --force.
-  std::ofstream(svg) << "mine\n";
-  const RunResult again = run_wobble({"solve", "flying-plate", "--figure", svg.string()});
-  REQUIRE(again.exit_code == 2);
-  REQUIRE_THAT(again.err, Catch::Contains("exists; use --force"));
-  REQUIRE(slurp(svg) == "mine\n");
-  REQUIRE(run_wobble({"solve", "rect-solid", "--figure", svg.string(), "--force"}).exit_code == 0);
-  REQUIRE_THAT(slurp(svg), Catch::Contains("prolate body"));
-  // Problems without a sketch say so.
-  const RunResult none = run_wobble({"solve", "taylor-10-35", "--figure", svg.string(), "--force"});
-  REQUIRE(none.exit_code == 2);
-  REQUIRE_THAT(none.err, Catch::Contains("has no sketch"));
-  // A file name is never a command line: quotes and a semicolon are just characters (gnuplot
-  // is started without a shell).
-  const fs::path odd = svg.parent_path() / "it's; touch pwned.svg";
-  REQUIRE(run_wobble({"solve", "flying-plate", "--figure", odd.string()}).exit_code == 0);
-  REQUIRE_THAT(slurp(odd), Catch::Contains("<svg"));
-  REQUIRE_FALSE(fs::exists("pwned.svg"));
-  REQUIRE_FALSE(fs::exists(svg.parent_path() / "pwned.svg"));
-  // PNG and PDF by the extension; anything else is refused before drawing.
-  const fs::path png = svg.parent_path() / "plate.png", pdf = svg.parent_path() / "plate.pdf";
-  REQUIRE(run_wobble({"solve", "flying-plate", "--figure", png.string(), "--force"}).exit_code ==
-          0);
-  REQUIRE(slurp(png).substr(1, 3) == "PNG");
-  REQUIRE(run_wobble({"solve", "flying-plate", "--figure", pdf.string(), "--force"}).exit_code ==
-          0);
-  REQUIRE(slurp(pdf).substr(0, 5) == "%PDF-");
-  const RunResult gif =
-      run_wobble({"solve", "flying-plate", "--figure", (svg.parent_path() / "p.gif").string()});
-  REQUIRE(gif.exit_code == 2);
-  REQUIRE_THAT(gif.err, Catch::Contains(".svg, .png or .pdf"));
-}
-
-TEST_CASE("a LaTeX key includes its sketch and compiles with it, at several angles") {
-  const fs::path dir = scratch_dir() / "latex-figure";
-  fs::create_directories(dir);
-  for (const std::string alpha : {"2deg", "40deg", "85deg"}) {
-    const RunResult r = run_shell("cd '" + dir.string() + "' && '" + WOBBLE_EXE +
-                                  "' solve rect-solid --set alpha=" + alpha +
-                                  " --format latex --figure sketch.pdf --force > key.tex && "
-                                  "pdflatex -interaction=nonstopmode -halt-on-error key.tex");
-    INFO(alpha << "\n" << r.out.substr(r.out.size() > 2000 ? r.out.size() - 2000 : 0));
-    REQUIRE(r.exit_code == 0);
-    REQUIRE_THAT(slurp(dir / "key.tex"),
-                 Catch::Contains("\\includegraphics[width=0.62\\linewidth]{sketch.pdf}"));
-  }
-  // pdflatex cannot include SVG: said before anything is drawn.
-  const RunResult svg = run_wobble({"solve", "rect-solid", "--format", "latex", "--figure",
-                                    (dir / "s.svg").string()});
-  REQUIRE(svg.exit_code == 2);
-  REQUIRE_FALSE(fs::exists(dir / "s.svg"));
-}
-
 TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback") {
   const RunResult right =
       run_wobble({"check", "taylor-10-35", "a", "--answer", "[[10,0,0],[0,6,1],[0,1,6]] kg m^2"});
@@ -356,39 +280,6 @@ TEST_CASE("keys --help says what to give in words") {
   REQUIRE(help.exit_code == 0);
   REQUIRE_THAT(help.out, !Catch::Contains("follow options") && Catch::Contains("Give one of") &&
                              Catch::Contains("--problem"));
-}
-
-TEST_CASE("worksheet at a UTF-8 terminal (tmux): non-ASCII input is kept and read back") {
-  // A real terminal, so that the line editor (libedit) reads the keys: it dropped multibyte
-  // characters in the C locale. A private tmux server, bounded waits, killed at the end.
-  const std::string exe = std::string("'") + WOBBLE_EXE + "'";
-  const std::string tmux = "LANG=C.UTF-8 tmux -u -L wobble-test-" + std::to_string(::getpid());
-  REQUIRE(run_shell(tmux + " -f /dev/null new-session -d -x 120 -y 50 \"LANG=C.UTF-8 " + exe +
-                    " worksheet flying-plate; sleep 20\"")
-              .exit_code == 0);
-  const auto screen = [&] { return run_shell(tmux + " capture-pane -p -S -100").out; };
-  const auto wait_for = [&](const std::string& text) {
-    for (int i = 0; i < 100 && screen().find(text) == std::string::npos; ++i) ::usleep(50000);
-    return screen();
-  };
-  wait_for("I0 [kg m^2] =");
-  const auto type = [&](const std::string& keys) {
-    REQUIRE(run_shell(tmux + " send-keys -l '" + keys + "'").exit_code == 0);
-    REQUIRE(run_shell(tmux + " send-keys Enter").exit_code == 0);
-  };
-  type("m·R²/4");
-  wait_for("I [kg m^2] =");
-  type("[ 0.00072 0 0 ] [ 0 0.00072 0 ] [ 0 0 0.00144 ] kg m²");
-  wait_for("(b)");
-  type("s");
-  wait_for("angle_omega_e3 [rad] =");
-  type("15°");
-  const std::string shown = wait_for("correct: angle_omega_e3");
-  (void)run_shell(tmux + " kill-server");
-  INFO(shown);
-  REQUIRE_THAT(shown, Catch::Contains("m·R²/4") && Catch::Contains("correct: I0") &&
-                          Catch::Contains("correct: I\n") && Catch::Contains("15°") &&
-                          Catch::Contains("correct: angle_omega_e3"));
 }
 
 TEST_CASE("Ctrl-C stops a long command cleanly: exit 130, no file and no temporary left") {

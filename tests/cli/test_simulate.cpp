@@ -74,23 +74,6 @@ TEST_CASE("simulate --out writes CSV or JSON atomically and never overwrites wit
   }
 }
 
-TEST_CASE("simulate --plot draws the outputs with gnuplot") {
-  const fs::path svg = scratch_dir() / "simulate" / "top.svg";
-  fs::create_directories(svg.parent_path());
-  fs::remove(svg);
-  const RunResult r = run_wobble({"simulate", "heavy-top", "--plot", svg.string()});
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  const std::string content = slurp(svg);
-  REQUIRE_THAT(content, Catch::Contains("<svg") && Catch::Contains("tilt θ (euler_zyz)") &&
-                            Catch::Contains("euler_zyz (unwrapped)") &&
-                            Catch::Contains("|invariant error| [J]") &&
-                            !Catch::Contains("err_p_psi"));  // exactly zero: left out
-  const fs::path png = svg.parent_path() / "top.png";
-  REQUIRE(run_wobble({"simulate", "heavy-top", "--plot", png.string(), "--force"}).exit_code == 0);
-  REQUIRE(slurp(png).substr(1, 3) == "PNG");
-}
-
 TEST_CASE("solve --cross-check compares the closed forms with a simulation") {
   for (const std::string id : {"rect-solid", "flying-plate", "flying-square-plate"}) {
     const RunResult r = run_wobble({"solve", id, "--cross-check", "--set", "alpha=40deg"});

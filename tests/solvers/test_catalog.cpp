@@ -344,3 +344,44 @@ TEST_CASE("a heavy top without gravity to speak of nods by nothing: theta_max = 
   }
   CHECK(seen);
 }
+
+namespace {
+// A problem file outside problems/, for the lookup by path.
+const std::string kTwoMasses = R"TOML(id = "two"
+title = "Two masses"
+solver = "inertia"
+statement = "Two masses."
+
+[[parameters]]
+name = "m"
+unit = "kg"
+default = 1
+range = "(0, inf)"
+
+[body]
+masses = [ { mass = "m", at = [1, 0, 0] }, { mass = "2*m", at = [0, 1, 0] } ]
+
+[[parts]]
+id = "a"
+question = "Tensor?"
+answers = ["I"]
+)TOML";
+}  // namespace
+
+TEST_CASE("problem lookup: by id, by file, and unknown ids list the known ones") {
+  REQUIRE(find_problem("taylor-10-35").id == "taylor-10-35");
+  REQUIRE(find_problem(test::write_file("load/two.toml", kTwoMasses).string()).id == "two");
+  REQUIRE_THROWS_WITH(
+      find_problem("taylor-10-53"),
+      Catch::Contains("unknown problem 'taylor-10-53'") && Catch::Contains("taylor-10-35"));
+  REQUIRE_THROWS_WITH(find_problem("/nonexistent/x.toml"), Catch::Contains("no such problem file"));
+}
+
+TEST_CASE("every part of every problem has a hint for the worksheet") {
+  for (const auto& p : wobble::load_catalog()) {
+    for (const auto& part : p.parts) {
+      INFO(p.id << " part " << part.id);
+      REQUIRE(part.hint.size() >= 20);  // a sentence, not a placeholder
+    }
+  }
+}
