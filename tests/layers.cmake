@@ -1,7 +1,7 @@
 # The layers point one way (src/CMakeLists.txt): a file of a layer includes headers of its own
 # layer and of layers below it only. Fails naming every include that runs against the order.
 #   cmake -DSRC=<repository>/src -P layers.cmake
-set(order core symbolic problem solvers "check simulate" bench render keys cli)
+set(order core io symbolic problem solvers "check simulate" bench render keys cli)
 set(rank 0)
 foreach(level IN LISTS order)
   string(REPLACE " " ";" names "${level}")

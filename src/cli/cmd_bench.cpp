@@ -6,7 +6,7 @@
 #include "cli/commands.hpp"
 #include "core/input_error.hpp"
 #include "core/work_budget.hpp"
-#include "render/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "render/bench_output.hpp"
 
 namespace wobble::cli {

@@ -9,7 +9,7 @@
 #include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "problem/variants.hpp"
-#include "render/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "render/render.hpp"
 #include "solvers/solve.hpp"
 

@@ -9,7 +9,7 @@
 #include "problem/values.hpp"
 #include "problem/scene.hpp"
 #include "problem/variants.hpp"
-#include "render/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "core/work_budget.hpp"
 #include "render/simulation_output.hpp"
 #include "simulate/scene_setup.hpp"

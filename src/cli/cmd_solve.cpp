@@ -7,7 +7,7 @@
 #include "cli/commands.hpp"
 #include "solvers/catalog.hpp"
 #include "problem/values.hpp"
-#include "render/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "render/figure.hpp"
 #include "render/handout.hpp"
 #include "render/render.hpp"

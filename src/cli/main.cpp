@@ -12,12 +12,12 @@
 
 #include "cli/commands.hpp"
 #include "core/work_budget.hpp"
-#include "problem/data_dir.hpp"
+#include "io/data_dir.hpp"
 #include "problem/problem.hpp"
 
 int main(int argc, char** argv) {
   // Past a file-size limit (or on a full disk) a write should fail and be reported, with the
-  // temporary removed and the old file kept (render/atomic_write), not kill the process.
+  // temporary removed and the old file kept (io/atomic_write), not kill the process.
   std::signal(SIGXFSZ, SIG_IGN);
   using namespace wobble::cli;
   CLI::App app{"wobble: worked, checked answers for rigid-body rotation problems", "wobble"};

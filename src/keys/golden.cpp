@@ -9,9 +9,9 @@
 #include <sstream>
 
 #include "core/work_budget.hpp"
-#include "problem/data_dir.hpp"
+#include "io/data_dir.hpp"
 #include "problem/values.hpp"
-#include "render/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "render/render.hpp"
 #include "solvers/solve.hpp"
 

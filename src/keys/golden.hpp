@@ -18,7 +18,7 @@ namespace wobble {
 
 inline constexpr double kKeyRelTol = 1e-12;
 
-/// The folder of the golden keys (problem/data_dir.hpp says where).
+/// The folder of the golden keys (io/data_dir.hpp says where).
 std::filesystem::path solutions_dir();
 
 /// The differences between an expected and an actual key document, one line each, with the

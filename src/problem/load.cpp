@@ -9,13 +9,10 @@
 #include <cstdlib>
 #include <set>
 
-#include "problem/data_dir.hpp"
+#include "io/data_dir.hpp"
 #include "problem/toml_reader.hpp"
 #include "problem/values.hpp"
 
-#ifndef WOBBLE_SOURCE_DIR
-#error "WOBBLE_SOURCE_DIR must be defined by the build"
-#endif
 
 namespace wobble {
 

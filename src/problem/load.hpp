@@ -23,7 +23,7 @@ Problem load_problem(const std::filesystem::path& file, const SolverSchemas& sch
 Problem load_problem_text(const std::string& text, const std::filesystem::path& name,
                           const SolverSchemas& schemas);
 
-/// The folder of the problem catalog (problem/data_dir.hpp says where).
+/// The folder of the problem catalog (io/data_dir.hpp says where).
 std::filesystem::path problems_dir();
 
 /// Resolves "ID" (a file ID.toml in problems_dir()) or a path to a .toml file, and loads it.

@@ -1,13 +1,10 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "problem/data_dir.hpp"
+#include "io/data_dir.hpp"
 #include "problem/scene.hpp"
 #include "problem/toml_reader.hpp"
 
-#ifndef WOBBLE_SOURCE_DIR
-#error "WOBBLE_SOURCE_DIR must be defined by the build"
-#endif
 
 namespace wobble {
 

@@ -74,7 +74,7 @@ Scene load_scene(const std::filesystem::path& file);
 /// The same from text already read (`name` stands for the file in messages): for the fuzzers.
 Scene load_scene_text(const std::string& text, const std::filesystem::path& name);
 
-/// The folder of the example scenes (problem/data_dir.hpp says where).
+/// The folder of the example scenes (io/data_dir.hpp says where).
 std::filesystem::path scenes_dir();
 
 /// Every scene in scenes_dir(), sorted by id; each file's id must equal its file name.

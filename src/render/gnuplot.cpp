@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "render/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 
 extern char** environ;
 

@@ -19,7 +19,7 @@
 namespace wobble {
 
 /// Text handed over a piece at a time (a line, a row), so that a million samples are written
-/// without being held: to a file (render/atomic_write) or to stdout.
+/// without being held: to a file (io/atomic_write) or to stdout.
 using Emit = std::function<void(std::string_view)>;
 
 std::string simulation_header(const SceneSetup& s, const SimulationResult& r);

@@ -1,4 +1,4 @@
-#include "render/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 
 #include <fcntl.h>
 #include <stdio.h>  // renameat2, RENAME_NOREPLACE (glibc 2.28)

@@ -1,4 +1,4 @@
-#include "problem/data_dir.hpp"
+#include "io/data_dir.hpp"
 
 #include <cstdlib>
 #include <optional>
