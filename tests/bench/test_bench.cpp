@@ -52,7 +52,7 @@ TEST_CASE("time_ratio_at interpolates log-log between the bracketing points") {
   REQUIRE(time_ratio_at(runs, "Q", "a", "b", 1e-8) < 0);   // another problem
 }
 
-TEST_CASE("targets are judged as the issue states them") {
+TEST_CASE("targets are judged as the bench states them") {
   Report r;
   r.components.push_back({"elliptic", "wobble exact w(t) (m(t) / I)", "", 2.0, "eps", 50});
   r.components.push_back(

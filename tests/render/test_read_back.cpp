@@ -149,7 +149,7 @@ TEST_CASE("Hz, rev/s and rpm on an angular rate count turns: 1 Hz = 2 pi rad/s, 
     }
   }
   REQUIRE(rates >= 15);  // the catalog has 16 nonzero scalar rates
-  // The issue's own case, to the digits quoted.
+  // A rate in Hz (turns per second) to the digits a student would quote.
   const Fixture plate("flying-plate");
   REQUIRE(plate.check("Omega_body_rate", "1.5373 Hz").correct);
   REQUIRE_FALSE(plate.check("Omega_body_rate", "9.659 Hz").correct);
