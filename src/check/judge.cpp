@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -24,6 +25,15 @@ const std::string kField = "--answer";
 // that equals the key's at exactly those points, which the point choice makes unlikely) is
 // farther off.
 constexpr double kIdentityTolerance = 1e-9;
+// A value typed to N significant figures is right when it is within half a unit of the last
+// figure; the typed decimal and the key are each rounded to binary, which may put an exact half
+// a few ulps outside: this much relative slack keeps the boundary where the decimal puts it.
+constexpr double kHalfUnitSlack = 1e-9;
+// The parameter points an expression is judged at besides the set values: each parameter
+// scaled by one of these in turn. Not simple ratios (2, 1/2), so that a look-alike that equals
+// the key only at special values is unlikely to agree at all four points; within 30% so that
+// every point stays inside the parameters' ranges near the set values.
+constexpr std::array<double, 3> kProbeFactors{1.13, 0.87, 1.29};
 
 std::string shape_words(std::size_t rows, std::size_t cols, bool vector, bool matrix) {
   if (matrix) return fmt::format("a {}x{} matrix [[..], ..]", rows, cols);
@@ -75,7 +85,7 @@ struct Judge {
     if (opt.sigfigs) {
       const double ref = k != 0.0 ? std::abs(k) : scale;
       const double place = std::pow(10.0, std::floor(std::log10(ref)) - *opt.sigfigs + 1);
-      return std::abs(v - k) <= 0.5 * place * (1 + 1e-9);
+      return std::abs(v - k) <= 0.5 * place * (1 + kHalfUnitSlack);
     }
     return std::abs(v - k) <= opt.rel_tol * (k != 0.0 ? std::abs(k) : scale);
   }
@@ -238,11 +248,10 @@ std::pair<std::vector<double>, std::vector<double>> at_point(const Context& ctx,
 // The set values and three more points, each parameter scaled in turn.
 std::vector<sym::Values> judging_points(const sym::Values& set) {
   std::vector<sym::Values> points{set};
-  const double factors[] = {1.13, 0.87, 1.29};
-  for (int f = 0; f < 3; ++f) {
+  for (std::size_t f = 0; f < kProbeFactors.size(); ++f) {
     sym::Values v = set;
     std::size_t i = 0;
-    for (auto& [name, x] : v) x *= factors[(f + i++) % 3];
+    for (auto& [name, x] : v) x *= kProbeFactors[(f + i++) % kProbeFactors.size()];
     points.push_back(v);
   }
   return points;

@@ -27,8 +27,12 @@
 
 namespace wobble::check {
 
+/// The relative tolerance of an answer when neither the user nor the problem file gives one: 1%,
+/// what a hand calculation with three significant figures keeps.
+inline constexpr double kDefaultRelativeTolerance = 0.01;
+
 struct Options {
-  double rel_tol = 0.01;
+  double rel_tol = kDefaultRelativeTolerance;
   bool rel_tol_given = false;  ///< given by the user: wins over the problem file's per answer
   std::optional<int> sigfigs;
 };

@@ -23,7 +23,8 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--variant", opt.variant, "Your variant's values (as on your handout)");
   app.add_option("--tolerance", opt.tolerance,
-                 "Relative tolerance for numbers (default: the problem's, else 0.01)");
+                 fmt::format("Relative tolerance for numbers (default: the problem's, else {:g})",
+                             check::kDefaultRelativeTolerance));
   app.add_option("--sigfigs", opt.sigfigs, "Accept a number that rounds correctly to N digits");
 }
 

@@ -27,9 +27,9 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
                  "auto, closed_form, exact, rk4, dopri5, rkf78, split2 or split4 (default: the "
                  "scene's, usually auto)");
   app.add_option("--tolerance", opt.tolerance,
-                 "Relative tolerance for the adaptive methods, 1e-14 to 1e-2");
+                 "Relative tolerance for the adaptive methods, " + scene_tolerance_range());
   app.add_option("--samples", opt.samples,
-                 "Number of output times, 2 to 1000000 (default: the scene's)");
+                 "Number of output times, " + scene_samples_range() + " (default: the scene's)");
   app.add_option("--t-end", opt.t_end,
                  "End of the run, s (default: the scene's run.t_end); an expression such as 10 "
                  "or 2*pi");
@@ -64,17 +64,17 @@ int run_simulate(const SimulateOptions& opt) {
   }
   refuse_overwrite("--out", opt.out, opt.force);
   refuse_overwrite("--plot", opt.plot, opt.force);
-  if (opt.tolerance && !(*opt.tolerance >= 1e-14 && *opt.tolerance <= 1e-2)) {
-    throw InputError(
-        fmt::format("--tolerance: {} is out of range (expected 1e-14 to 1e-2)", *opt.tolerance));
+  if (opt.tolerance && !(*opt.tolerance >= kMinSceneTolerance && *opt.tolerance <= kMaxSceneTolerance)) {
+    throw InputError(fmt::format("--tolerance: {} is out of range (expected {})", *opt.tolerance,
+                                 scene_tolerance_range()));
   }
   if (opt.max_evaluations && !(*opt.max_evaluations >= 1 && *opt.max_evaluations <= 1e15)) {
     throw InputError(fmt::format("--max-evaluations: {} is out of range (expected 1 to 1e15)",
                                  *opt.max_evaluations));
   }
-  if (opt.samples && (*opt.samples < 2 || *opt.samples > 1000000)) {
+  if (opt.samples && (*opt.samples < kMinSamples || *opt.samples > kMaxSamples)) {
     throw InputError(
-        fmt::format("--samples: {} is out of range (expected 2 to 1000000)", *opt.samples));
+        fmt::format("--samples: {} is out of range (expected {})", *opt.samples, scene_samples_range()));
   }
   // An unwritable target is found before the work, not after it.
   if (!opt.out.empty()) require_writable(opt.out);

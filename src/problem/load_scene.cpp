@@ -1,12 +1,22 @@
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "io/data_dir.hpp"
 #include "problem/scene.hpp"
 #include "problem/toml_reader.hpp"
 
-
 namespace wobble {
+
+std::string scene_tolerance_range() {
+  // Printed as their exponents: the limits are powers of ten.
+  return fmt::format("1e{} to 1e{}", std::lround(std::log10(kMinSceneTolerance)),
+                     std::lround(std::log10(kMaxSceneTolerance)));
+}
+
+std::string scene_samples_range() { return fmt::format("{} to {}", kMinSamples, kMaxSamples); }
 
 namespace {
 using detail::Reader;
@@ -113,14 +123,14 @@ void read_run(const Reader& r, const toml::table& root, Scene& s) {
   s.t_end = r.expression(t.get("t_end"), "run.t_end", &t);
   if (const toml::node* k = t.get("samples")) {
     const auto v = k->value<int64_t>();
-    if (!k->is_integer() || !v || *v < 2 || *v > 1000000)
-      r.fail(k, "run.samples", "expected a whole number from 2 to 1000000");
+    if (!k->is_integer() || !v || *v < kMinSamples || *v > kMaxSamples)
+      r.fail(k, "run.samples", "expected a whole number from " + scene_samples_range());
     s.samples = static_cast<int>(*v);
   }
   if (const toml::node* k = t.get("tolerance")) {
     const auto v = k->value<double>();
-    if (!v || !(*v >= 1e-14 && *v <= 1e-2))
-      r.fail(k, "run.tolerance", "expected a number from 1e-14 to 1e-2");
+    if (!v || !(*v >= kMinSceneTolerance && *v <= kMaxSceneTolerance))
+      r.fail(k, "run.tolerance", "expected a number from " + scene_tolerance_range());
     s.tolerance = *v;
   }
   s.method = r.string(t, "method", "run.", false, "auto");

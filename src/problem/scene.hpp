@@ -48,6 +48,18 @@ struct TorqueSpec {
   bool brake = false;
 };
 
+/// The relative tolerances a scene may ask of the adaptive methods. Below 1e-14 each step's own
+/// rounding (a few eps, over the thousands of steps of a run) is larger than what is asked, so
+/// the tolerance could not be met; above 1e-2 the error estimate of a pair is no longer small
+/// against the solution it estimates. The same limits hold in a scene file and for --tolerance.
+inline constexpr double kMinSceneTolerance = 1e-14, kMaxSceneTolerance = 1e-2;
+/// The sample counts: at least both ends of the run; at most a million (written in bounded
+/// memory: simulate/row_store.hpp).
+inline constexpr long kMinSamples = 2, kMaxSamples = 1000000;
+/// "1e-14 to 1e-2" and "2 to 1000000", for the messages that state the limits.
+std::string scene_tolerance_range();
+std::string scene_samples_range();
+
 struct Scene {
   /// id, title, statement (the scene's description), parameters and body, as in a problem.
   Problem model;
@@ -60,7 +72,7 @@ struct Scene {
   std::vector<std::string> outputs;  ///< names from scene_output_names(), in the file's order
   std::string t_end = "10";          ///< s, > 0
   int samples = 101;                 ///< output times, evenly spaced over [0, t_end], >= 2
-  double tolerance = 1e-10;          ///< relative, in [1e-14, 1e-2]
+  double tolerance = 1e-10;          ///< relative, in [kMinSceneTolerance, kMaxSceneTolerance]
   std::string method = "auto";       ///< auto or a name from simulation_method_names()
   std::optional<std::string> step;   ///< s, fixed-step methods only
 };

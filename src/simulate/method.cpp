@@ -130,10 +130,15 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
   return c;
 }
 
+double reference_tolerance(const SceneSetup& s) {
+  constexpr double kTighter = 100;
+  return std::max(s.tolerance / kTighter, kMinSceneTolerance);
+}
+
 WorkEstimate estimate_work(const SceneSetup& s, const MethodChoice& c) {
   const double samples = s.samples;
   const bool free = s.model.torque_free();
-  const double tight = std::max(s.tolerance / 100, 1e-14);
+  const double tight = reference_tolerance(s);
   // The error estimate's run: the exact solution when torque-free, else Fehlberg 7(8) tighter.
   const double reference = free ? samples : adaptive_evaluations(s, tight, 8, 13);
   const double rate = rate_reached(s);

@@ -48,4 +48,9 @@ WorkEstimate estimate_work(const SceneSetup& s, const MethodChoice& choice);
 ///         `option`, which raises the limit.
 void require_within_budget(const WorkEstimate& w, double limit, const std::string& option);
 
+/// The tolerance of the tighter run that estimates a simulation's error: a hundred times
+/// tighter (two more digits, enough to measure the first two of the error), never tighter than
+/// any scene may ask (kMinSceneTolerance: the steps' own rounding is larger below it).
+double reference_tolerance(const SceneSetup& s);
+
 }  // namespace wobble

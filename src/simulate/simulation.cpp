@@ -195,13 +195,13 @@ SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
     ref.method = SimMethod::exact;
     r.error_reference = "the exact solution";
   } else {
-    const double tol = std::max(s.tolerance / 100, 1e-14);
+    const double tol = reference_tolerance(s);
     if (choice.method == SimMethod::rkf78 && tol >= s.tolerance) return r;  // nothing tighter
     ref.method = SimMethod::rkf78;
     r.error_reference = fmt::format("rkf78 at tolerance {:.0e}", tol);
   }
   SceneSetup tight = s;
-  tight.tolerance = std::max(s.tolerance / 100, 1e-14);
+  tight.tolerance = reference_tolerance(s);
   SimulationResult rc;
   const auto second_half = [&](double f) {
     if (progress) progress(0.5 + 0.5 * f);

@@ -75,8 +75,9 @@ void add_point_masses(const Problem& problem, const Evaluator& ev, InertiaBody& 
       // Coinciding within rounding of the positions' own size: the same point.
       // (stableNorm: at positions of 1e-200 m the squares underflow and every pair "coincides".)
       const double scale = std::max({r.stableNorm(), positions[j].stableNorm(), 1e-300});
+      constexpr double kSamePointUlps = 8;  // a few roundings of each coordinate
       if ((r - positions[j]).stableNorm() <=
-          8 * std::numeric_limits<double>::epsilon() * scale) {
+          kSamePointUlps * std::numeric_limits<double>::epsilon() * scale) {
         throw InputError(fmt::format(
             "{}.at: coincides with body.masses[{}].at (both at ({:.6g}, {:.6g}, {:.6g}) m)", f, j,
             r.x(), r.y(), r.z()));
@@ -232,8 +233,9 @@ void require_rotating_body(const std::string& file, const Vec3& moments_kgm2,
                            const std::string& who) {
   const double largest = moments_kgm2.cwiseAbs().maxCoeff();
   const double smallest = moments_kgm2.minCoeff();
-  // Rounding leaves a rod's zero moment at ~eps times the others.
-  if (smallest > 64 * std::numeric_limits<double>::epsilon() * largest) return;
+  // Rounding leaves a rod's zero moment at ~eps times the others: a few dozen eps at most.
+  constexpr double kZeroMomentUlps = 64;
+  if (smallest > kZeroMomentUlps * std::numeric_limits<double>::epsilon() * largest) return;
   const std::string what =
       largest > 0.0
           ? fmt::format("a rod, all its mass on one line, or as thin as one to double precision "

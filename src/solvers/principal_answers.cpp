@@ -38,8 +38,13 @@ std::string degeneracy_note(const PrincipalAxes& pa) {
 // Tolerance for the exact route agreeing with the numeric one: the eigen residual bound
 // 8 n eps |I| (n = 3) on moments, and on axes the same over the smallest gap between moments.
 double moment_tolerance(const Mat3& I) {
-  return 8.0 * 3.0 * kEps * std::max(I.norm(), 1e-300);
+  constexpr double kResidualFactor = 8.0, kDimension = 3.0;
+  return kResidualFactor * kDimension * kEps * std::max(I.norm(), 1e-300);
 }
+
+// A unit axis carries its own rounding (a few eps per component, normalised) besides what the
+// moments' error moves it by: this many eps.
+constexpr double kAxisRoundingUlps = 64;
 
 void add_method_steps(const sym::SymPrincipal& sp, const ExactContext& ctx,
                       std::vector<Step>& steps) {
@@ -129,7 +134,7 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
       const double gap = std::min(k > 0 ? pa.moments[k] - pa.moments[k - 1] : INFINITY,
                                   k < 2 ? pa.moments[k + 1] - pa.moments[k] : INFINITY);
       if (std::abs(refined.moments[k] - pa.moments[k]) > tol ||
-          (refined.axes.col(k) - pa.axes.col(k)).norm() > tol / gap + 64 * kEps) {
+          (refined.axes.col(k) - pa.axes.col(k)).norm() > tol / gap + kAxisRoundingUlps * kEps) {
         throw std::logic_error(fmt::format(
             "{}: the 60-digit principal axis {} disagrees with the double-precision one",
             axes_name, k + 1));
@@ -228,7 +233,7 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
     // Agreement with the numeric solver; an axis is as good as eps |I| over the nearest gap.
     const double gap = std::min(k > 0 ? pa.moments[k] - pa.moments[k - 1] : INFINITY,
                                 k < 2 ? pa.moments[k + 1] - pa.moments[k] : INFINITY);
-    if ((values.col(k) - pa.axes.col(k)).norm() > tol / gap + 64 * kEps) {
+    if ((values.col(k) - pa.axes.col(k)).norm() > tol / gap + kAxisRoundingUlps * kEps) {
       throw std::logic_error(
           fmt::format("{}: exact axis {} disagrees with the numeric solver", axes_name, k + 1));
     }
