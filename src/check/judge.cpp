@@ -10,6 +10,7 @@
 
 #include "check/answer_reading.hpp"
 #include "check/axes_judge.hpp"
+#include "check/diagnosis.hpp"
 #include "check/text.hpp"
 #include "check/units.hpp"
 #include "core/inertia.hpp"
@@ -49,18 +50,6 @@ void check_shape(const Answer& a, const sym::ValueText& v) {
                                  shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
                                  shape_words(v.rows, v.cols, v.is_vector, v.is_matrix)));
   }
-}
-
-std::string entry_name(const Answer& a, std::size_t i) {
-  if (a.value.shape == Value::Shape::vector) {
-    // Moments are compared in increasing order: name them by rank, not by an axis.
-    if (a.kind == AnswerKind::principal_moments && a.value.data.size() == 3) {
-      return std::string("the ") + std::array<const char*, 3>{"smallest", "middle", "largest"}[i] +
-             " moment";
-    }
-    return "entry " + (a.value.data.size() == 3 ? std::string(1, "xyz"[i]) : std::to_string(i + 1));
-  }
-  return fmt::format("entry ({}, {})", i / a.value.cols + 1, i % a.value.cols + 1);
 }
 
 // The largest value of the same unit in the key: the scale a zero is judged against.
@@ -127,105 +116,13 @@ Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got) {
   return {false, "incorrect: " + j.a.name, f.problems};
 }
 
-// The likely mistake behind a wrong number, or its size.
+// What the judge found, as data for the diagnosis (diagnosis.hpp).
 std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
                                   const std::vector<double>& v, const std::vector<double>& k) {
-  std::vector<std::string> out;
-  const bool matrix = j.a.value.shape == Value::Shape::matrix;
-  if (matrix && v.size() == 9) {
-    std::vector<double> flipped = k;
-    for (std::size_t i = 0; i < 9; ++i) {
-      if (i / 3 != i % 3) flipped[i] = -flipped[i];
-    }
-    if (j.all_close(v, flipped)) {
-      out.push_back(
-          "the products of inertia have the wrong sign: I_xy = -sum m x y (so that "
-          "L = I w)");
-      return out;
-    }
-  }
-  if (j.all_close(v, j.scaled(k, -1.0))) {
-    const bool precession = j.a.sign == SignConvention::sense_of_precession;
-    if (precession && v.size() == 1) {
-      // A signed rate given as its magnitude (or the sign flipped): the sign is the physics.
-      out.push_back(fmt::format(
-          "the size is right but not the sign: {} is signed along e3, and {} here: the "
-          "precession runs {} the spin ({}; check prolate, I3 < I1, against oblate, I3 > I1)",
-          j.a.name, k[0] < 0 ? "negative" : "positive", k[0] < 0 ? "against" : "with",
-          k[0] < 0 ? "a prolate body" : "an oblate body"));
-    } else {
-      out.push_back(precession ? "the sense is reversed: the precession runs the other way "
-                                 "(check prolate, I3 < I1, against oblate, I3 > I1)"
-                               : "the sign is reversed");
-    }
-    return out;
-  }
-  if (key_unit.angle && key_unit.dim == std::array<int, 3>{0, 0, 0} &&
-      j.all_close(v, j.scaled(k, 180.0 / M_PI))) {
-    out.push_back("this is the angle in degrees: give radians, or write the unit (12 deg)");
-    return out;
-  }
-  // Rates (rad/s and 1/s alike, units.hpp): turns per second for radians per second.
-  if (key_unit.dim == std::array<int, 3>{0, 0, -1} &&
-      j.all_close(v, j.scaled(k, 1.0 / (2 * M_PI)))) {
-    out.push_back("this is revolutions per second: multiply by 2 pi for rad/s, or write rev/s");
-    return out;
-  }
-  if (key_unit.dim == std::array<int, 3>{0, 0, -1} && j.all_close(v, j.scaled(k, 2 * M_PI))) {
-    out.push_back("this is 2 pi times the answer: Hz, rev/s and rpm count turns, so 1 Hz = "
-                  "2 pi rad/s (the number in rad/s labelled Hz?)");
-    return out;
-  }
-  // The same vector in another frame: L0_body answered for L0_space and the like.
-  if (j.a.frame != AnswerFrame::none) {
-    for (const auto& part : j.ctx.key.parts) {
-      for (const auto& b : part.answers) {
-        if (b.frame == AnswerFrame::none || b.frame == j.a.frame || b.unit != j.a.unit ||
-            b.value.data.size() != v.size() || !j.all_close(v, b.value.data)) {
-          continue;
-        }
-        out.push_back(fmt::format("these are the {}-frame components ({}); {} asks for the "
-                                  "{}-frame ones",
-                                  frame_name(b.frame), b.name, j.a.name, frame_name(j.a.frame)));
-        return out;
-      }
-    }
-  }
-  // Another answer of the key first: it is the more specific diagnosis (max_angle is exactly
-  // twice angle_L_e3, L0_space is L0_body turned).
-  for (const auto& part : j.ctx.key.parts) {
-    for (const auto& b : part.answers) {
-      if (&b == &j.a || b.unit != j.a.unit || b.value.data.size() != v.size()) continue;
-      if (j.all_close(v, b.value.data)) {
-        out.push_back("this is " + b.name + " (part " + part.id + "), not " + j.a.name);
-        return out;
-      }
-    }
-  }
-  for (const double f : {2.0, 0.5, 4.0, 0.25, 12.0, 1.0 / 12, 3.0, 1.0 / 3}) {
-    if (j.all_close(v, j.scaled(k, f))) {
-      const std::string factor =
-          f >= 1 ? fmt::format("{:g} times", f) : fmt::format("1/{:g} of", 1 / f);
-      out.push_back(
-          fmt::format("this is {} the answer: a factor {:g} is off (a 1/12 or 1/3 "
-                      "in a moment of inertia, a 1/2 in an energy?)",
-                      factor, f >= 1 ? f : 1 / f));
-      return out;
-    }
-  }
-  if (v.size() == 1) {
-    out.push_back(fmt::format("off by {:.3g}% of the answer",
-                              100 * std::abs(v[0] - k[0]) / std::max(std::abs(k[0]), 1e-300)));
-  } else {
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      if (!j.close(v[i], k[i])) {
-        out.push_back(
-            fmt::format("{} is off by {:.3g}%", entry_name(j.a, i),
-                        100 * std::abs(v[i] - k[i]) / (k[i] != 0 ? std::abs(k[i]) : j.scale)));
-      }
-    }
-  }
-  return out;
+  const Finding f{j.a, j.ctx.key, v, k, key_unit,
+                  [&j](double typed, double expected) { return j.close(typed, expected); },
+                  j.scale};
+  return check::diagnose(f);
 }
 
 // The values of the student's and the key's entries at one parameter point; principal moments

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "check/check_fixture.hpp"
+#include "check/diagnosis.hpp"
 #include "check/judge.hpp"
 #include "check/units.hpp"
 #include "solvers/catalog.hpp"
@@ -157,7 +158,7 @@ bool is_tensor(const Answer& a) {
   return a.value.shape == Value::Shape::matrix && (a.name == "I" || named(a, "I_"));
 }
 
-std::vector<Mistake> known_mistakes() {
+std::vector<Mistake> mistakes_to_make() {
   std::vector<Mistake> m;
   m.push_back({"products of inertia with the wrong sign",
                [](const Answer& a) {
@@ -201,7 +202,7 @@ TEST_CASE("each known mistake is named, on every answer of every problem where i
     const Fixture f(p.id);
     for (const auto& part : f.key.parts) {
       for (const auto& a : part.answers) {
-        for (const auto& mistake : known_mistakes()) {
+        for (const auto& mistake : mistakes_to_make()) {
           if (!mistake.applies(a)) continue;
           const Value wrong = mistake.make(a);
           INFO(p.id << " " << a.name << ": " << mistake.kind << ": " << typed(wrong));
@@ -223,7 +224,7 @@ TEST_CASE("each known mistake is named, on every answer of every problem where i
     }
   }
   // Each mistake met at least once, so this test cannot pass by applying to nothing.
-  for (const auto& mistake : known_mistakes()) {
+  for (const auto& mistake : mistakes_to_make()) {
     INFO(mistake.kind);
     REQUIRE(seen[mistake.kind] > 0);
   }
@@ -428,4 +429,66 @@ answers = [ { name = "I", quantity = "I", tolerance = 0.1 } ]
   strict.rel_tol = 0.01;
   strict.rel_tol_given = true;
   REQUIRE_FALSE(f.check("I", five_percent_off, strict).correct);  // the user's 1% wins
+}
+
+TEST_CASE("the diagnosis table: each known mistake is named by the value that makes it") {
+  using wobble::check::Finding;
+  Answer rate;
+  rate.name = "Omega_body_rate";
+  rate.kind = AnswerKind::rate;
+  rate.sign = SignConvention::sense_of_precession;
+  rate.unit = "rad/s";
+  rate.value = Value::scalar(-2.0);
+  Answer L_body, L_space;
+  L_body.name = "L0_body";
+  L_body.frame = AnswerFrame::body;
+  L_space.name = "L0_space";
+  L_space.frame = AnswerFrame::space;
+  for (Answer* a : {&L_body, &L_space}) {
+    a->kind = AnswerKind::vector;
+    a->unit = "kg m^2/s";
+  }
+  L_body.value = Value::vector({1.0, 0.0, 3.0});
+  L_space.value = Value::vector({2.0, 0.5, 2.5});
+  Answer I;
+  I.name = "I";
+  I.kind = AnswerKind::tensor;
+  I.unit = "kg m^2";
+  I.value = Value::matrix(3, 3, {2, -1, 0, -1, 2, 0, 0, 0, 3});
+  Answer space_rate;
+  space_rate.name = "Omega_space_rate";
+  space_rate.kind = AnswerKind::rate;
+  space_rate.unit = "rad/s";
+  space_rate.value = Value::scalar(3.0);
+  Key key;
+  key.parts.push_back({"a", "?", {rate, L_body, L_space, I, space_rate}, {}, {}});
+  const auto close = [](double v, double k) { return std::abs(v - k) <= 0.01 * std::abs(k) + 1e-12; };
+  const auto first = [&](const Answer& a, std::vector<double> typed, const std::string& unit) {
+    const Finding f{a, key, std::move(typed), a.value.data, parse_unit(unit, "unit"), close, 1.0};
+    return wobble::check::diagnose(f).at(0);
+  };
+  CHECK_THAT(first(key.parts[0].answers[3], {2, 1, 0, 1, 2, 0, 0, 0, 3}, "kg m^2"),
+             Catch::Contains("products of inertia have the wrong sign"));
+  CHECK_THAT(first(key.parts[0].answers[0], {2.0}, "rad/s"),
+             Catch::Contains("the size is right but not the sign") &&
+                 Catch::Contains("against the spin"));
+  CHECK_THAT(first(key.parts[0].answers[0], {-2.0 / (2 * M_PI)}, "rad/s"),
+             Catch::Contains("revolutions per second"));
+  CHECK_THAT(first(key.parts[0].answers[0], {-4 * M_PI}, "rad/s"), Catch::Contains("2 pi times"));
+  CHECK_THAT(first(key.parts[0].answers[0], {3.0}, "rad/s"),
+             Catch::Contains("this is Omega_space_rate (part a), not Omega_body_rate"));
+  CHECK_THAT(first(key.parts[0].answers[2], {1.0, 0.0, 3.0}, "kg m^2/s"),
+             Catch::Contains("these are the body-frame components (L0_body)") &&
+                 Catch::Contains("L0_space asks for the space-frame ones"));
+  CHECK_THAT(first(key.parts[0].answers[1], {2.0, 0.0, 6.0}, "kg m^2/s"),
+             Catch::Contains("2 times the answer"));
+  CHECK_THAT(first(key.parts[0].answers[1], {1.0, 0.0, 3.3}, "kg m^2/s"),
+             Catch::Contains("entry z is off by 10%"));
+  Answer angle;
+  angle.name = "alpha";
+  angle.kind = AnswerKind::angle;
+  angle.unit = "rad";
+  angle.value = Value::scalar(0.5);
+  CHECK_THAT(first(angle, {0.5 * 180 / M_PI}, "rad"), Catch::Contains("in degrees"));
+  REQUIRE(wobble::check::known_mistakes().size() == 8);
 }
