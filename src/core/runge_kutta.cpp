@@ -271,14 +271,19 @@ void RungeKutta::advance_adaptive(State7& y, double t0, double t1) {
       h_ = h * factor;
     }
     check_budget(cost_, limit_);
-    if (h_ < 1e-14 * std::max(std::abs(t_now), span)) {
+    // Steps below this share of the time change t by a few ulps: the time cannot resolve them.
+    constexpr double kSmallestStepShare = 1e-14;
+    if (h_ < kSmallestStepShare * std::max(std::abs(t_now), span)) {
       // The motion changes faster than the time can be resolved (a singular or overflowing
       // scene): the input's doing, said in its terms.
       char at[32];
       std::snprintf(at, sizeof at, "%.6g", t_now);
+      char share[32];
+      std::snprintf(share, sizeof share, "%.0e", kSmallestStepShare);
       throw InputError(std::string("the motion changes too fast to follow at t = ") + at +
-                       " s (the integrator's step fell below 1e-14 of the time); the scene "
-                       "may be singular there: look at its values, or shorten the run");
+                       " s (the integrator's step fell below " + share +
+                       " of the time); the scene may be singular there: look at its values, or "
+                       "shorten the run");
     }
   }
   if constexpr (T::kFsal) {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/euler_angles.hpp"
 #include "core/principal_axes.hpp"
@@ -158,14 +159,17 @@ void check_ranges(const SceneSetup& s) {
   }
   // A component of w(0) whose square underflows: double precision cannot follow its growth
   // (a wobble of 1e-300 next to a spin of 1).
+  // Near the square root of double's smallest normal number (1.5e-154), with a margin for the
+  // moments and rates that multiply the square: a smaller share squares to nothing.
+  constexpr double smallest_share = 1e-150;
   const double size = s.m0_P.stableNorm();
   for (int i = 0; i < 3; ++i) {
     const double part = std::abs(s.m0_P[i]);
-    if (part > 0.0 && part < 1e-150 * size) {
+    if (part > 0.0 && part < smallest_share * size) {
       throw InputError(fmt::format(
           "initial.omega: along principal axis {} it is {:.3g} of its size: too small for double "
-          "precision to follow (its square underflows); give 0 or at least 1e-150 of the spin",
-          i + 1, part / size));
+          "precision to follow (its square underflows); give 0 or at least {:.2g} of the spin",
+          i + 1, part / size, smallest_share));
     }
   }
 }
