@@ -12,6 +12,12 @@
 namespace wobble {
 
 namespace {
+// A span that is a whole number of steps up to rounding (t_end = 1, h = 0.1: 10.000000000000002
+// steps) must not get one more tiny step: ratios within this of a whole number count as it.
+constexpr double kStepCountSlack = 1e-12;
+}  // namespace
+
+namespace {
 // Explicit Runge-Kutta tableaux as compile-time constants: the stage loops below are unrolled
 // over them and the zero coefficients drop out (a measured 20-30% of the step's time with the
 // run-time tableau this replaced). A: lower triangular; B: weights of the propagated solution;
@@ -149,7 +155,7 @@ template <class T>
 void advance_fixed(const RigidBodyModel& model, State7& y, double span, double h_max,
                    IntegrationCost& cost, std::int64_t limit) {
   const auto n =
-      std::max<std::int64_t>(static_cast<std::int64_t>(std::ceil(span / h_max * (1 - 1e-12))), 1);
+      std::max<std::int64_t>(static_cast<std::int64_t>(std::ceil(span / h_max * (1 - kStepCountSlack))), 1);
   const double h = span / static_cast<double>(n);
   Stages<T> k;
   State7 y_new, err;
@@ -242,7 +248,7 @@ void RungeKutta::advance_adaptive(State7& y, double t0, double t1) {
   if (k0_valid) k[0] = fsal_k_;
   double t_now = t0;
   while (t_now < t1) {
-    const bool last = t_now + h_ * (1 + 1e-12) >= t1;
+    const bool last = t_now + h_ * (1 + kStepCountSlack) >= t1;  // no sliver of a last step
     const double h = last ? t1 - t_now : h_;
     if (!k0_valid) {  // f(y) once per accepted state, however many tries the step takes
       k[0] = model_.rhs(y);

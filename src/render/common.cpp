@@ -19,8 +19,10 @@ std::optional<std::string> whole_degrees(const ParameterValue& p) {
   if (p.unit != "rad" || p.value == 0.0) return std::nullopt;
   const double half_degrees = p.value * 360 / M_PI;
   const double rounded = std::round(half_degrees);
-  // A value typed as "15deg" is the double nearest 15 pi/180: within a few ulps of it.
-  if (std::abs(half_degrees - rounded) > 1e-9 * std::max(1.0, std::abs(rounded))) {
+  // A value typed as "15deg" is the double nearest 15 pi/180: within a few ulps of it; a value
+  // 1e-9 away from whole half degrees was not typed in degrees.
+  constexpr double kTypedInDegrees = 1e-9;
+  if (std::abs(half_degrees - rounded) > kTypedInDegrees * std::max(1.0, std::abs(rounded))) {
     return std::nullopt;
   }
   return format_number(rounded / 2);

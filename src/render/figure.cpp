@@ -89,7 +89,9 @@ std::string label_beyond(int tag, const Vec3& from, const Vec3& to, const std::s
 // by `turn` rad from it (so the two cones' arrows do not overlap at w), in the sense `sign`.
 std::string precession_arrow(int tag, const Vec3& axis, const Vec3& through, double turn,
                              double sign, const std::string& colour, const std::string& label) {
-  if (sign == 0.0 || (through - through.dot(axis) * axis).norm() < 1e-9) return "";
+  // A rim this small (w along the axis: no wobble) has no tangent worth drawing.
+  constexpr double kSmallestRim = 1e-9;
+  if (sign == 0.0 || (through - through.dot(axis) * axis).norm() < kSmallestRim) return "";
   const Vec3 tip = Eigen::AngleAxisd(turn, axis) * through;
   const Vec3 tangent = (sign > 0 ? 1.0 : -1.0) * axis.cross(tip).normalized();
   const Vec3 to = tip + 0.3 * tangent;

@@ -26,7 +26,9 @@ int symmetry_axis(const SceneSetup& s) {
   if (j < 0) return -1;
   const Vec3 d = s.model.d_P_m;
   const double off = std::hypot(d[(j + 1) % 3], d[(j + 2) % 3]);
-  return off <= 1e-12 * std::max(d.norm(), 1e-300) ? j : -1;
+  // On the axis up to the rounding of the offset (a few eps of its length).
+  constexpr double kOnAxis = 1e-12;
+  return off <= kOnAxis * std::max(d.norm(), 1e-300) ? j : -1;
 }
 }  // namespace
 

@@ -103,7 +103,10 @@ void set_brake(SceneSetup& s, const PrincipalAxes& pa) {
   const Vec3 a = tau_P / tau;
   int axis = -1;
   for (int k = 0; k < 3; ++k) {
-    if (std::abs(std::abs(a[k]) - 1.0) <= 1e-12) axis = k;
+    // Along a principal axis up to the rounding of the axes (a few eps; far below any tilt a
+    // scene would give on purpose).
+    constexpr double kAlongAxis = 1e-12;
+    if (std::abs(std::abs(a[k]) - 1.0) <= kAlongAxis) axis = k;
   }
   const int i = (axis + 1) % 3, j = (axis + 2) % 3;
   const double tolerance = pa.degeneracy_tolerance;

@@ -14,6 +14,11 @@
 namespace wobble {
 
 namespace {
+// A span that is a whole number of splitting steps up to rounding gets no extra tiny step.
+constexpr double kStepCountSlack = 1e-12;
+}  // namespace
+
+namespace {
 void report(const std::function<void(double)>& progress, std::size_t k, std::size_t n) {
   if (progress && (n < 100 || k % (n / 100) == 0))
     progress(static_cast<double>(k) / static_cast<double>(n));
@@ -78,7 +83,7 @@ void propagate_each(const SceneSetup& s, const MethodChoice& choice,
         const double span = times[k] - t;
         if (span > 0.0) {
           const auto steps =
-              static_cast<std::int64_t>(std::ceil(span / choice.step_s * (1 - 1e-12)));
+              static_cast<std::int64_t>(std::ceil(span / choice.step_s * (1 - kStepCountSlack)));
           split_free_body(body, st, span / static_cast<double>(steps), steps, order, &subflows);
           result.steps += steps;
           t = times[k];

@@ -158,7 +158,11 @@ Computed nutation_limit(const Top& t, bool upper) {
   const ex d_plus = q_root / beta, d_minus = c1 / q_root;
   const double u0n = std::cos(t.start.theta);
   const double dp = value(t, d_plus, "d+"), dm = value(t, d_minus, "d-");
-  const auto in_range = [&](double d) { return u0n + d >= -1 - 1e-12 && u0n + d <= 1 + 1e-12; };
+  // A root at u = +-1 (a limit at the vertical) may round a few ulps outside [-1, 1].
+  constexpr double kRootSlack = 1e-12;
+  const auto in_range = [&](double d) {
+    return u0n + d >= -1 - kRootSlack && u0n + d <= 1 + kRootSlack;
+  };
   const bool plus = in_range(dp) && (!in_range(dm) || std::abs(dp) <= std::abs(dm));
   const ex d = plus ? d_plus : d_minus;
   const double dn = plus ? dp : dm;

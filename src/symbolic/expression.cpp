@@ -126,7 +126,14 @@ std::optional<GiNaC::ex> pi_multiple(double d) {
   const long double ratio = static_cast<long double>(d) / 3.14159265358979323846264338327950288L;
   for (int den = 1; den <= kMaxDenominator; ++den) {
     const long double num = std::nearbyint(ratio * den);
-    if (num == 0 || std::fabs(num) > 1e6 || std::fabs(ratio * den - num) > 1e-12L * den) continue;
+    // A double nearest a rational multiple of pi is within ~1e-16 of it; 1e-12 leaves room for
+    // a value computed in a few steps, and is far below the gap 1/720^2 between candidates.
+    constexpr long double kPiMultipleSlack = 1e-12L;
+    constexpr long double kLargestNumerator = 1e6L;
+    if (num == 0 || std::fabs(num) > kLargestNumerator ||
+        std::fabs(ratio * den - num) > kPiMultipleSlack * den) {
+      continue;
+    }
     const GiNaC::ex candidate = GiNaC::numeric(static_cast<long>(num), den) * GiNaC::Pi;
     if (evaluate(candidate, GiNaC::lst{}, "value") == d) return candidate;
   }
