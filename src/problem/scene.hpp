@@ -56,6 +56,8 @@ inline constexpr double kMinSceneTolerance = 1e-14, kMaxSceneTolerance = 1e-2;
 /// The sample counts: at least both ends of the run; at most a million (written in bounded
 /// memory: simulate/row_store.hpp).
 inline constexpr long kMinSamples = 2, kMaxSamples = 1000000;
+/// A scene's tolerance when its file gives none: ten digits, what the tables print.
+inline constexpr double kDefaultSceneTolerance = 1e-10;
 /// "1e-14 to 1e-2" and "2 to 1000000", for the messages that state the limits.
 std::string scene_tolerance_range();
 std::string scene_samples_range();
@@ -72,7 +74,7 @@ struct Scene {
   std::vector<std::string> outputs;  ///< names from scene_output_names(), in the file's order
   std::string t_end = "10";          ///< s, > 0
   int samples = 101;                 ///< output times, evenly spaced over [0, t_end], >= 2
-  double tolerance = 1e-10;          ///< relative, in [kMinSceneTolerance, kMaxSceneTolerance]
+  double tolerance = kDefaultSceneTolerance;  ///< relative, in [kMin.., kMaxSceneTolerance]
   std::string method = "auto";       ///< auto or a name from simulation_method_names()
   std::optional<std::string> step;   ///< s, fixed-step methods only
 };

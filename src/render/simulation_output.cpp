@@ -31,7 +31,7 @@ int printed_digits(const SceneSetup& s, const SimulationResult& r) {
   if (is_exact(r)) return 10;
   if (r.error_estimate >= 0.0) {
     // Digits whose place value exceeds the estimated error of the column's largest value.
-    const double e = std::max(r.error_estimate, 1e-16);
+    const double e = std::max(r.error_estimate, std::numeric_limits<double>::epsilon());
     return std::clamp(static_cast<int>(std::floor(-std::log10(e))), 2, 10);
   }
   return std::clamp(static_cast<int>(std::floor(-std::log10(s.tolerance))) - 1, 2, 10);
@@ -125,7 +125,9 @@ std::string simulation_footer(const SceneSetup& s, const SimulationResult& r) {
           "(against {}, {} more evaluations); the table prints {} digits\n",
           r.error_estimate, r.error_reference, r.estimate_cost, printed_digits(s, r));
     } else {
-      f += "estimated error of the samples: not available (no tighter run than rkf78 at 1e-14)\n";
+      f += fmt::format(
+          "estimated error of the samples: not available (no tighter run than rkf78 at {:.0e})\n",
+          kMinSceneTolerance);
     }
   }
   f += fmt::format("cost: {} {}", r.cost, r.cost_label);

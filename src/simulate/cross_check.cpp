@@ -59,9 +59,9 @@ CrossCheck cross_check_torque_free(const Problem& problem, const sym::Values& va
   const std::string w = "(" + problem.motion->at("omega") + ")",
                     a = "(" + problem.motion->at("alpha") + ")";
   scene.omega = {w + "*sin" + a, "0", w + "*cos" + a};
-  scene.t_end = fmt::format("{:.17g}", 1.5 * t_max);
-  scene.samples = 4001;
-  scene.tolerance = 1e-12;
+  scene.t_end = fmt::format("{:.17g}", kCrossCheckSpan * t_max);
+  scene.samples = kCrossCheckSamples;
+  scene.tolerance = kCrossCheckTolerance;
   scene.outputs = {"e3_space"};
   const SceneSetup s = setup_scene_at(scene, values);
   const MethodChoice choice = choose_method(s, "rkf78");
@@ -75,7 +75,8 @@ CrossCheck cross_check_torque_free(const Problem& problem, const sym::Values& va
   out.simulation_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.rhs_evals = cost.cost;
-  out.method = "Fehlberg 7(8) at tolerance 1e-12, 4001 samples over 1.5 t_max";
+  out.method = fmt::format("Fehlberg 7(8) at tolerance {:.0e}, {} samples over {:g} t_max",
+                           kCrossCheckTolerance, kCrossCheckSamples, kCrossCheckSpan);
 
   // e3 of the problem (the symmetry axis z of the body) in space, and w in the body.
   const Vec3 e3_P = s.axes_B.transpose() * Vec3::UnitZ();

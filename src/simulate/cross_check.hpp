@@ -31,6 +31,12 @@ struct CrossCheckRow {
 /// wobble of 1e-6 rad keep four digits; below that the relative difference would be noise.
 inline constexpr double kSmallestResolvedWobble = 1e-6;
 
+/// The cross-check's run, as the header's first paragraph says: Fehlberg 7(8) at this tolerance,
+/// this many samples, over this many t_max (the maximum and the half turn after it).
+inline constexpr double kCrossCheckTolerance = 1e-12;
+inline constexpr int kCrossCheckSamples = 4001;
+inline constexpr double kCrossCheckSpan = 1.5;  ///< in units of t_max
+
 struct CrossCheck {
   std::vector<CrossCheckRow> rows;
   std::string not_compared;  ///< why nothing was simulated (rows empty), or ""

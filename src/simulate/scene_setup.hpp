@@ -36,7 +36,7 @@ struct SceneSetup {
   Vec3 g_S = Vec3::Zero(), x0_S = Vec3::Zero(), v0_S = Vec3::Zero();  ///< free flight
   double t_end = 10.0;
   int samples = 101;
-  double tolerance = 1e-10;
+  double tolerance = kDefaultSceneTolerance;
   /// The run's budget in evaluations (simulate --max-evaluations): each integrator run stops
   /// with WorkLimitReached past it. 5e7 is a few seconds at the 60 ns a heavy-top evaluation
   /// takes (measured).
