@@ -286,8 +286,11 @@ TEST_CASE("Ctrl-C stops a long command cleanly: exit 130, no file and no tempora
   const fs::path dir = scratch_dir() / "interrupted";
   fs::remove_all(dir);
   const std::string exe = std::string("'") + WOBBLE_EXE + "'";
-  // keys for 300 variants of every problem takes minutes; SIGINT comes after a second.
-  const RunResult keys = run_shell("timeout --preserve-status -s INT 1 " + exe +
+  // keys for 300 variants of every problem takes minutes; SIGINT comes after kSignalAfter, long
+  // after the program has started and installed its handler even under the sanitizers on a
+  // loaded machine (at one second, the signal sometimes came first: exit 130, but no message).
+  const std::string kSignalAfter = "3";
+  const RunResult keys = run_shell("timeout --preserve-status -s INT " + kSignalAfter + " " + exe +
                                    " keys --variants 1-300 --out '" + dir.string() + "'");
   INFO(keys.err);
   CHECK(keys.exit_code == 130);
@@ -295,8 +298,9 @@ TEST_CASE("Ctrl-C stops a long command cleanly: exit 130, no file and no tempora
   CHECK(!fs::exists(dir));  // nothing was staged yet: the folder was never made
   // A long simulation with files to write: neither file nor temporary appears.
   fs::create_directories(dir);
-  const RunResult sim = run_shell("timeout --preserve-status -s INT 1 " + exe +
-                                  " simulate heavy-top --t-end 2000 --max-evaluations 1e10 --out '" +
+  // 20000 s of the heavy top: about 17 s in a release build, so the signal comes mid-run.
+  const RunResult sim = run_shell("timeout --preserve-status -s INT " + kSignalAfter + " " + exe +
+                                  " simulate heavy-top --t-end 20000 --max-evaluations 1e11 --out '" +
                                   (dir / "run.csv").string() + "' --plot '" +
                                   (dir / "run.svg").string() + "'");
   INFO(sim.err);
