@@ -89,11 +89,6 @@ struct Judge {
     }
     return true;
   }
-  std::vector<double> scaled(const std::vector<double>& k, double f) const {
-    std::vector<double> out = k;
-    for (double& x : out) x *= f;
-    return out;
-  }
 };
 
 
