@@ -16,14 +16,14 @@ bool Finding::all_close(const std::vector<double>& v, const std::vector<double>&
   return true;
 }
 
-std::vector<double> Finding::expected_times(double factor) const {
-  std::vector<double> out = expected;
+namespace {
+using Wrong = std::vector<WrongAnswer>;
+
+std::vector<double> times(const std::vector<double>& v, double factor) {
+  std::vector<double> out = v;
   for (double& x : out) x *= factor;
   return out;
 }
-
-namespace {
-using Seen = std::optional<std::string>;
 
 // The entry's name in a message: by rank for moments (compared in increasing order), by axis
 // for a 3-vector, by position otherwise.
@@ -38,97 +38,105 @@ std::string entry_name(const Answer& a, std::size_t i) {
   return fmt::format("entry ({}, {})", i / a.value.cols + 1, i % a.value.cols + 1);
 }
 
-Seen products_of_inertia_sign(const Finding& f) {
-  if (f.answer.value.shape != Value::Shape::matrix || f.typed.size() != 9) return {};
-  std::vector<double> flipped = f.expected;
+Wrong products_of_inertia_sign(const Answer& a, const Key&, const Unit&) {
+  if (a.value.shape != Value::Shape::matrix || a.value.data.size() != 9) return {};
+  std::vector<double> flipped = a.value.data;
   for (std::size_t i = 0; i < 9; ++i) {
     if (i / 3 != i % 3) flipped[i] = -flipped[i];
   }
-  if (!f.all_close(f.typed, flipped)) return {};
-  return "the products of inertia have the wrong sign: I_xy = -sum m x y (so that L = I w)";
+  return {{"", flipped,
+           "the products of inertia have the wrong sign: I_xy = -sum m x y (so that L = I w)"}};
 }
 
-Seen reversed_sign(const Finding& f) {
-  if (!f.all_close(f.typed, f.expected_times(-1.0))) return {};
-  const bool precession = f.answer.sign == SignConvention::sense_of_precession;
-  if (precession && f.typed.size() == 1) {
-    // A signed rate given as its magnitude (or the sign flipped): the sign is the physics.
-    const bool against = f.expected[0] < 0;
-    return fmt::format(
-        "the size is right but not the sign: {} is signed along e3, and {} here: the "
-        "precession runs {} the spin ({}; check prolate, I3 < I1, against oblate, I3 > I1)",
-        f.answer.name, against ? "negative" : "positive", against ? "against" : "with",
-        against ? "a prolate body" : "an oblate body");
-  }
-  if (precession) {
+std::string reversed_sign_message(const Answer& a) {
+  if (a.sign != SignConvention::sense_of_precession) return "the sign is reversed";
+  if (a.value.data.size() != 1) {
     return "the sense is reversed: the precession runs the other way (check prolate, I3 < I1, "
            "against oblate, I3 > I1)";
   }
-  return "the sign is reversed";
+  // A signed rate given as its magnitude (or the sign flipped): the sign is the physics.
+  const bool against = a.value.data[0] < 0;
+  return fmt::format(
+      "the size is right but not the sign: {} is signed along e3, and {} here: the "
+      "precession runs {} the spin ({}; check prolate, I3 < I1, against oblate, I3 > I1)",
+      a.name, against ? "negative" : "positive", against ? "against" : "with",
+      against ? "a prolate body" : "an oblate body");
+}
+
+Wrong reversed_sign(const Answer& a, const Key&, const Unit&) {
+  return {{"", times(a.value.data, -1.0), reversed_sign_message(a)}};
 }
 
 bool pure_angle(const Unit& u) { return u.angle && u.dim == std::array<int, 3>{0, 0, 0}; }
 // Rates: rad/s and 1/s alike (units.hpp).
 bool per_second(const Unit& u) { return u.dim == std::array<int, 3>{0, 0, -1}; }
 
-Seen degrees_for_radians(const Finding& f) {
-  if (!pure_angle(f.key_unit) || !f.all_close(f.typed, f.expected_times(180.0 / M_PI))) return {};
-  return "this is the angle in degrees: give radians, or write the unit (12 deg)";
+Wrong degrees_for_radians(const Answer& a, const Key&, const Unit& key_unit) {
+  if (!pure_angle(key_unit)) return {};
+  return {{"", times(a.value.data, 180.0 / M_PI),
+           "this is the angle in degrees: give radians, or write the unit (12 deg)"}};
 }
 
-Seen turns_per_second(const Finding& f) {
-  if (!per_second(f.key_unit) || !f.all_close(f.typed, f.expected_times(1.0 / (2 * M_PI)))) {
-    return {};
-  }
-  return "this is revolutions per second: multiply by 2 pi for rad/s, or write rev/s";
+Wrong turns_per_second(const Answer& a, const Key&, const Unit& key_unit) {
+  if (!per_second(key_unit)) return {};
+  return {{"", times(a.value.data, 1.0 / (2 * M_PI)),
+           "this is revolutions per second: multiply by 2 pi for rad/s, or write rev/s"}};
 }
 
-Seen hertz_as_radians(const Finding& f) {
-  if (!per_second(f.key_unit) || !f.all_close(f.typed, f.expected_times(2 * M_PI))) return {};
-  return "this is 2 pi times the answer: Hz, rev/s and rpm count turns, so 1 Hz = 2 pi rad/s "
-         "(the number in rad/s labelled Hz?)";
+Wrong hertz_as_radians(const Answer& a, const Key&, const Unit& key_unit) {
+  if (!per_second(key_unit)) return {};
+  return {{"", times(a.value.data, 2 * M_PI),
+           "this is 2 pi times the answer: Hz, rev/s and rpm count turns, so 1 Hz = 2 pi rad/s "
+           "(the number in rad/s labelled Hz?)"}};
 }
 
 // The same vector in another frame: L0_body answered for L0_space and the like.
-Seen other_frame(const Finding& f) {
-  if (f.answer.frame == AnswerFrame::none) return {};
-  for (const auto& part : f.key.parts) {
+Wrong other_frame(const Answer& a, const Key& key, const Unit&) {
+  Wrong out;
+  if (a.frame == AnswerFrame::none) return out;
+  for (const auto& part : key.parts) {
     for (const auto& b : part.answers) {
-      if (b.frame == AnswerFrame::none || b.frame == f.answer.frame || b.unit != f.answer.unit ||
-          !f.all_close(f.typed, b.value.data)) {
+      if (b.frame == AnswerFrame::none || b.frame == a.frame || b.unit != a.unit ||
+          b.value.data.size() != a.value.data.size()) {
         continue;
       }
-      return fmt::format("these are the {}-frame components ({}); {} asks for the {}-frame ones",
-                         frame_name(b.frame), b.name, f.answer.name, frame_name(f.answer.frame));
+      out.push_back({"", b.value.data,
+                     fmt::format("these are the {}-frame components ({}); {} asks for the {}-frame "
+                                 "ones",
+                                 frame_name(b.frame), b.name, a.name, frame_name(a.frame))});
     }
   }
-  return {};
+  return out;
 }
 
 // Another answer of the key: more specific than a factor (max_angle is exactly twice
 // angle_L_e3, L0_space is L0_body turned).
-Seen other_answer(const Finding& f) {
-  for (const auto& part : f.key.parts) {
+Wrong other_answer(const Answer& a, const Key& key, const Unit&) {
+  Wrong out;
+  for (const auto& part : key.parts) {
     for (const auto& b : part.answers) {
-      if (&b == &f.answer || b.unit != f.answer.unit) continue;
-      if (f.all_close(f.typed, b.value.data)) {
-        return "this is " + b.name + " (part " + part.id + "), not " + f.answer.name;
+      if (&b == &a || b.name == a.name || b.unit != a.unit ||
+          b.value.data.size() != a.value.data.size()) {
+        continue;
       }
+      out.push_back({"", b.value.data, "this is " + b.name + " (part " + part.id + "), not " + a.name});
     }
   }
-  return {};
+  return out;
 }
 
-Seen factor_off(const Finding& f) {
+Wrong factor_off(const Answer& a, const Key&, const Unit&) {
+  Wrong out;
   for (const double factor : {2.0, 0.5, 4.0, 0.25, 12.0, 1.0 / 12, 3.0, 1.0 / 3}) {
-    if (!f.all_close(f.typed, f.expected_times(factor))) continue;
     const double whole = factor >= 1 ? factor : 1 / factor;
-    return fmt::format(
-        "this is {} the answer: a factor {:g} is off (a 1/12 or 1/3 in a moment of inertia, a "
-        "1/2 in an energy?)",
-        factor >= 1 ? fmt::format("{:g} times", whole) : fmt::format("1/{:g} of", whole), whole);
+    out.push_back(
+        {"", times(a.value.data, factor),
+         fmt::format("this is {} the answer: a factor {:g} is off (a 1/12 or 1/3 in a moment of "
+                     "inertia, a 1/2 in an energy?)",
+                     factor >= 1 ? fmt::format("{:g} times", whole) : fmt::format("1/{:g} of", whole),
+                     whole)});
   }
-  return {};
+  return out;
 }
 }  // namespace
 
@@ -146,9 +154,21 @@ const std::vector<Mistake>& known_mistakes() {
   return table;
 }
 
-std::vector<std::string> diagnose(const Finding& f) {
+std::vector<WrongAnswer> wrong_answers(const Answer& answer, const Key& key, const Unit& key_unit) {
+  std::vector<WrongAnswer> out;
+  if (answer.kind == AnswerKind::principal_axes) return out;
   for (const auto& mistake : known_mistakes()) {
-    if (auto message = mistake.message_if_seen(f)) return {*message};
+    for (auto& w : mistake.wrong_answers(answer, key, key_unit)) {
+      w.mistake = mistake.name;
+      out.push_back(std::move(w));
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> diagnose(const Finding& f) {
+  for (const auto& wrong : wrong_answers(f.answer, f.key, f.key_unit)) {
+    if (f.all_close(f.typed, wrong.values)) return {wrong.message};
   }
   const auto& v = f.typed;
   const auto& k = f.expected;

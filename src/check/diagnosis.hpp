@@ -1,8 +1,11 @@
 #pragma once
 /// @file
-/// Diagnosing a wrong number: which known mistake it is (a table of predicate and message), else
-/// how far off each entry is. The judge (judge.hpp) decides that an answer is wrong and hands
-/// over what it found as data; nothing here decides right or wrong.
+/// Diagnosing a wrong number: which known mistake it is, else how far off each entry is. Each
+/// known mistake is a row that gives the wrong answers it leads to (the key's value turned by
+/// the mistake) with their message; a typed value close to one of them is that mistake. The
+/// same rows give the exports their wrong answers to recognise (export/graded_variants.hpp).
+/// The judge (judge.hpp) decides that an answer is wrong and hands over what it found as data;
+/// nothing here decides right or wrong.
 ///
 /// The mistakes, tried in this order (the first that matches is named): products of inertia
 /// with the wrong sign; a reversed sign (for a signed precession rate: what its sign means);
@@ -10,7 +13,6 @@
 /// components in another frame (answer kind and frame, solvers/key.hpp); another answer of the
 /// key; a factor 2, 1/2, 4, 1/4, 12, 1/12, 3 or 1/3.
 #include <functional>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,18 +32,31 @@ struct Finding {
   double zero_scale = 1.0;  ///< what a zero is judged against (judge.hpp)
 
   bool all_close(const std::vector<double>& v, const std::vector<double>& k) const;
-  std::vector<double> expected_times(double factor) const;
 };
 
-/// One known mistake: its name (for tests and the README) and a test that returns the message
-/// when the finding shows it.
+/// A wrong answer that a known mistake leads to: its values (SI, in the key's order, as
+/// Value::data) and what the judge says to it.
+struct WrongAnswer {
+  std::string mistake;  ///< the mistake's name
+  std::vector<double> values;
+  std::string message;
+};
+
+/// One known mistake: its name (for tests and the README) and the wrong answers it leads to for
+/// an answer of a key (none where it does not apply: degrees for an answer that is no angle).
 struct Mistake {
   std::string name;
-  std::function<std::optional<std::string>(const Finding&)> message_if_seen;
+  std::function<std::vector<WrongAnswer>(const Answer&, const Key&, const Unit& key_unit)>
+      wrong_answers;
 };
 
 /// The known mistakes, in the order they are tried.
 const std::vector<Mistake>& known_mistakes();
+
+/// Every known mistake's wrong answers for `answer` of `key`, in the order they are tried (the
+/// first close to a typed value names it). None for principal axes: they are judged by meaning
+/// (axes_judge.hpp).
+std::vector<WrongAnswer> wrong_answers(const Answer& answer, const Key& key, const Unit& key_unit);
 
 /// The first known mistake's message, else how far off the value (or each wrong entry) is.
 std::vector<std::string> diagnose(const Finding& finding);
