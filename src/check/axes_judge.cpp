@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "core/principal_axes.hpp"
 
@@ -24,18 +25,9 @@ struct Eigenspace {
 };
 
 std::vector<Eigenspace> eigenspaces(const Vec3& moments) {
-  const double scale = moments.cwiseAbs().maxCoeff();
-  switch (degeneracy_of(moments, scale)) {
-    case Degeneracy::all:
-      return {{{0, 1, 2}}};
-    case Degeneracy::pair12:
-      return {{{0, 1}}, {{2}}};
-    case Degeneracy::pair23:
-      return {{{0}}, {{1, 2}}};
-    case Degeneracy::none:
-      break;
-  }
-  return {{{0}}, {{1}}, {{2}}};
+  std::vector<Eigenspace> out;
+  for (auto& columns : eigenspace_columns(moments)) out.push_back({std::move(columns)});
+  return out;
 }
 
 std::string shown(const Vec3& v) {
@@ -102,6 +94,21 @@ AxesFinding judge_vectors(const std::array<Vec3, 3>& typed, const Mat3& axes,
   return out;
 }
 }  // namespace
+
+std::vector<std::vector<int>> eigenspace_columns(const Vec3& moments) {
+  const double scale = moments.cwiseAbs().maxCoeff();
+  switch (degeneracy_of(moments, scale)) {
+    case Degeneracy::all:
+      return {{0, 1, 2}};
+    case Degeneracy::pair12:
+      return {{0, 1}, {2}};
+    case Degeneracy::pair23:
+      return {{0}, {1, 2}};
+    case Degeneracy::none:
+      break;
+  }
+  return {{0}, {1}, {2}};
+}
 
 AxesFinding judge_axes(const std::vector<double>& typed, const Mat3& key_axes,
                        const Vec3& key_moments, double angle_tolerance) {

@@ -23,6 +23,11 @@ struct AxesFinding {
   std::vector<std::string> problems;  ///< one line each, when wrong
 };
 
+/// The key's principal directions as groups of its axis columns (0-based): one column for a
+/// single axis, two for a degenerate pair's plane, three when all moments are equal. Decided by
+/// core's rule on the ascending moments.
+std::vector<std::vector<int>> eigenspace_columns(const Vec3& key_moments);
+
 /// `typed` is the student's 3x3 matrix, row-major; `key_axes` has the key's axes as columns,
 /// `key_moments` ascending.
 AxesFinding judge_axes(const std::vector<double>& typed, const Mat3& key_axes,

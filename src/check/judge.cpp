@@ -26,10 +26,6 @@ const std::string kField = "--answer";
 // that equals the key's at exactly those points, which the point choice makes unlikely) is
 // farther off.
 constexpr double kIdentityTolerance = 1e-9;
-// A value typed to N significant figures is right when it is within half a unit of the last
-// figure; the typed decimal and the key are each rounded to binary, which may put an exact half
-// a few ulps outside: this much relative slack keeps the boundary where the decimal puts it.
-constexpr double kHalfUnitSlack = 1e-9;
 // The parameter points an expression is judged at besides the set values: each parameter
 // scaled by one of these in turn. Not simple ratios (2, 1/2), so that a look-alike that equals
 // the key only at special values is unlikely to agree at all four points; within 30% so that
@@ -50,18 +46,6 @@ void check_shape(const Answer& a, const sym::ValueText& v) {
                                  shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
                                  shape_words(v.rows, v.cols, v.is_vector, v.is_matrix)));
   }
-}
-
-// The largest value of the same unit in the key: the scale a zero is judged against.
-double zero_scale(const Key& key, const Answer& a) {
-  double s = 0.0;
-  for (const auto& part : key.parts) {
-    for (const auto& b : part.answers) {
-      if (b.unit != a.unit) continue;
-      for (double x : b.value.data) s = std::max(s, std::abs(x));
-    }
-  }
-  return s > 0.0 ? s : 1.0;
 }
 
 struct Judge {
@@ -222,11 +206,26 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const ReadAnswer& p,
 }
 }  // namespace
 
-Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
-              const Options& options) {
-  // The problem file's tolerance for this answer, unless the user gave one.
+double zero_scale(const Key& key, const Answer& a) {
+  double s = 0.0;
+  for (const auto& part : key.parts) {
+    for (const auto& b : part.answers) {
+      if (b.unit != a.unit) continue;
+      for (double x : b.value.data) s = std::max(s, std::abs(x));
+    }
+  }
+  return s > 0.0 ? s : 1.0;
+}
+
+Options options_for(const Answer& a, const Options& options) {
   Options opt = options;
   if (!options.rel_tol_given && a.check_tolerance) opt.rel_tol = *a.check_tolerance;
+  return opt;
+}
+
+Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
+              const Options& options) {
+  const Options opt = options_for(a, options);
   const ReadAnswer p = read_answer(text, ctx.table, kField);
   check_shape(a, p.value);
   if (p.symbolic) return judge_symbolic(ctx, a, p, opt);

@@ -31,6 +31,11 @@ namespace wobble::check {
 /// what a hand calculation with three significant figures keeps.
 inline constexpr double kDefaultRelativeTolerance = 0.01;
 
+/// A value typed to N significant figures is right when it is within half a unit of the last
+/// figure; the typed decimal and the key are each rounded to binary, which may put an exact half
+/// a few ulps outside: this much relative slack keeps the boundary where the decimal puts it.
+inline constexpr double kHalfUnitSlack = 1e-9;
+
 struct Options {
   double rel_tol = kDefaultRelativeTolerance;
   bool rel_tol_given = false;  ///< given by the user: wins over the problem file's per answer
@@ -48,6 +53,13 @@ struct Context {
   const sym::SymbolTable& table;
   const sym::Values& values;  ///< the parameter values the key was computed at
 };
+
+/// The scale a zero entry of `a` is judged against: the largest value of the same unit in the
+/// key (1 if there is none).
+double zero_scale(const Key& key, const Answer& a);
+
+/// The options `a` is judged with: the problem file's tolerance for it, unless the user gave one.
+Options options_for(const Answer& a, const Options& options);
 
 /// @throws InputError for an empty or unreadable answer, a wrong shape (a vector for a number),
 ///   or an unreadable unit.

@@ -1,7 +1,12 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <nlohmann/json.hpp>
+
 #include "check/judge.hpp"
+#include "check/submission.hpp"
+#include "core/input_error.hpp"
+#include "export/gradescope.hpp"
 #include "cli/commands.hpp"
 #include "solvers/catalog.hpp"
 #include "problem/values.hpp"
@@ -12,11 +17,17 @@ namespace wobble::cli {
 void setup_check(CLI::App& app, CheckOptions& opt) {
   app.add_option("problem", opt.problem, "Problem id (see `wobble list`) or a .toml file")
       ->required();
-  app.add_option("part", opt.part, "Part id (a, b, ...)")->required();
-  app.add_option("--answer", opt.answer,
-                 "Your answer: 0.21 kg m^2, 3.1 rad/s, 12 deg, [1, 0, 2], [[..],[..],[..]], "
-                 "m*a^2/6")
-      ->required();
+  auto* part = app.add_option("part", opt.part, "Part id (a, b, ...)");
+  auto* answer = app.add_option(
+      "--answer", opt.answer,
+      "Your answer: 0.21 kg m^2, 3.1 rad/s, 12 deg, [1, 0, 2], [[..],[..],[..]], m*a^2/6");
+  auto* answers = app.add_option(
+      "--answers", opt.answers,
+      "A file with every answer, one per line (NAME = ANSWER; `variant = N` for your values)");
+  app.add_option("--format", opt.format, "With --answers: text, json or gradescope")
+      ->needs(answers)
+      ->check(CLI::IsMember({"text", "json", "gradescope"}));
+  answers->excludes(answer)->excludes(part);
   app.add_option("--name", opt.name, "Which answer of the part (needed when it has several)");
   app.add_option("--set", opt.sets, "Parameter value NAME=VALUE, as for solve")
       ->expected(1)
@@ -28,13 +39,70 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
   app.add_option("--sigfigs", opt.sigfigs, "Accept a number that rounds correctly to N digits");
 }
 
-int run_check(const CheckOptions& opt) {
-  if (opt.tolerance && !(*opt.tolerance > 0.0 && *opt.tolerance < 1.0)) {
+check::Options judge_options(std::optional<double> tolerance, std::optional<int> sigfigs) {
+  if (tolerance && !(*tolerance > 0.0 && *tolerance < 1.0)) {
     throw InputError(
-        fmt::format("--tolerance: {} must be between 0 and 1 (0.01 is 1%)", *opt.tolerance));
+        fmt::format("--tolerance: {} must be between 0 and 1 (0.01 is 1%)", *tolerance));
   }
-  if (opt.sigfigs && (*opt.sigfigs < 1 || *opt.sigfigs > 15)) {
-    throw InputError(fmt::format("--sigfigs: {} must be from 1 to 15", *opt.sigfigs));
+  if (sigfigs && (*sigfigs < 1 || *sigfigs > 15)) {
+    throw InputError(fmt::format("--sigfigs: {} must be from 1 to 15", *sigfigs));
+  }
+  check::Options o;
+  if (tolerance) {
+    o.rel_tol = *tolerance;
+    o.rel_tol_given = true;
+  }
+  o.sigfigs = sigfigs;
+  return o;
+}
+
+namespace {
+int check_submission(const CheckOptions& opt, const check::Options& o) {
+  const std::string text = read_text_file(opt.answers, "--answers");
+  const Problem problem = find_problem(opt.problem);
+  std::optional<long> variant = check::submission_variant(text);
+  if (variant && opt.variant && *variant != *opt.variant) {
+    throw InputError(fmt::format("--variant: {} differs from the submission's variant {}",
+                                 *opt.variant, *variant));
+  }
+  if (!variant) variant = opt.variant;
+  const sym::Values values = parameter_values(problem, with_variant(problem, variant, opt.sets));
+  const Key key = solve(problem, values);
+  const sym::SymbolTable table = problem.symbol_table();
+  const auto result = check::judge_submission({key, table, values}, text, o);
+  if (opt.format == "gradescope") {
+    fmt::print("{}", exports::gradescope_results(result));
+  } else if (opt.format == "json") {
+    nlohmann::json answers = nlohmann::json::array();
+    for (const auto& a : result.answers) {
+      answers.push_back({{"part", a.part},
+                         {"name", a.name},
+                         {"answered", a.answered},
+                         {"correct", a.verdict.correct},
+                         {"verdict", a.verdict.line},
+                         {"feedback", a.verdict.feedback}});
+    }
+    fmt::print("{}\n", nlohmann::json{{"problem", problem.id},
+                                      {"variant", variant ? nlohmann::json(*variant) : nlohmann::json()},
+                                      {"answers", answers},
+                                      {"problems", result.problems}}
+                           .dump(2));
+  } else {
+    for (const auto& a : result.answers) {
+      fmt::print("({}) {}\n", a.part, a.verdict.line);
+      for (const auto& f : a.verdict.feedback) fmt::print("  {}\n", f);
+    }
+    for (const auto& p : result.problems) fmt::print("{}\n", p);
+  }
+  return result.all_correct() ? kExitOk : kExitDifference;
+}
+}  // namespace
+
+int run_check(const CheckOptions& opt) {
+  const check::Options o = judge_options(opt.tolerance, opt.sigfigs);
+  if (!opt.answers.empty()) return check_submission(opt, o);
+  if (opt.part.empty()) {
+    throw InputError("check: give PART and --answer, or --answers FILE with every answer");
   }
   const Problem problem = find_problem(opt.problem);
   const sym::Values values =
@@ -70,12 +138,6 @@ int run_check(const CheckOptions& opt) {
                           names));
   }
   const sym::SymbolTable table = problem.symbol_table();
-  check::Options o;
-  if (opt.tolerance) {
-    o.rel_tol = *opt.tolerance;
-    o.rel_tol_given = true;
-  }
-  o.sigfigs = opt.sigfigs;
   const check::Verdict v = check::judge({key, table, values}, *answer, opt.answer, o);
   fmt::print("{}\n", v.line);
   for (const auto& f : v.feedback) fmt::print("  {}\n", f);

@@ -41,26 +41,9 @@ void setup_keys(CLI::App& app, KeysOptions& opt) {
 }
 
 namespace {
-// "A-B" or "N": the variants to write.
-std::pair<long, long> variant_range(const std::string& text) {
-  const auto dash = text.find('-');
-  try {
-    std::size_t used = 0;
-    const long a = std::stol(text.substr(0, dash), &used);
-    if (used != (dash == std::string::npos ? text.size() : dash)) throw std::invalid_argument("");
-    const long b = dash == std::string::npos ? a : std::stol(text.substr(dash + 1), &used);
-    if (dash != std::string::npos && used != text.size() - dash - 1)
-      throw std::invalid_argument("");
-    if (a < 1 || b < a || b - a >= 1000) throw std::invalid_argument("");
-    return {a, b};
-  } catch (const std::exception&) {
-    throw InputError("--variants: '" + text + "' is not a range such as 1-40 (at most 1000)");
-  }
-}
-
 int write_variants(const KeysOptions& opt, const std::vector<Problem>& problems) {
   if (opt.out.empty()) throw InputError("--variants: give the folder with --out DIR");
-  const auto [first, last] = variant_range(opt.variants);
+  const auto [first, last] = variant_range(opt.variants, "--variants");
   const std::filesystem::path dir = opt.out;
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "check/judge.hpp"
 #include "problem/problem.hpp"
 
 namespace wobble::cli {
@@ -14,6 +15,10 @@ namespace wobble::cli {
 /// The assignments of `variant` (if any) followed by the user's --set ones (which win).
 std::vector<std::string> with_variant(const Problem& problem, std::optional<long> variant,
                                       const std::vector<std::string>& sets);
+
+/// "A-B" or "N" as a range of variant numbers (at most 1000 of them), for `option`.
+/// @throws InputError naming `option` and the text.
+std::pair<long, long> variant_range(const std::string& text, const std::string& option);
 
 /// "NAME=VALUE" assignments as (name, value text) pairs, for a handout.
 std::vector<std::pair<std::string, std::string>> shown_values(
@@ -61,12 +66,19 @@ int run_simulate(const SimulateOptions& opt);
 
 struct CheckOptions {
   std::string problem, part, answer, name;
+  std::string answers;        ///< a submission file: every answer at once (check/submission.hpp)
+  std::string format = "text";  ///< with --answers: text, json or gradescope
   std::vector<std::string> sets;
   std::optional<double> tolerance;  ///< default: the problem file's, else 1%
   std::optional<int> sigfigs;
   std::optional<long> variant;
 };
 void setup_check(CLI::App& app, CheckOptions& opt);
+/// The judge's options from --tolerance and --sigfigs.
+/// @throws InputError for a tolerance outside (0, 1) or sigfigs outside 1..15.
+check::Options judge_options(std::optional<double> tolerance, std::optional<int> sigfigs);
+/// A text file a user names with `option`, refused if missing, not a regular file or over 1 MB.
+std::string read_text_file(const std::string& path, const std::string& option);
 int run_check(const CheckOptions& opt);  ///< 0 right, 1 wrong
 
 struct WorksheetOptions {
@@ -95,5 +107,20 @@ struct KeysOptions {
 };
 void setup_keys(CLI::App& app, KeysOptions& opt);
 int run_keys(const KeysOptions& opt);
+
+struct ExportOptions {
+  std::vector<std::string> problems;  ///< ids or .toml files (several for PrairieLearn)
+  std::string variants;               ///< "A-B"; empty: the system's default
+  std::string out, deb;
+  bool force = false;
+  std::optional<double> tolerance;
+  std::optional<int> sigfigs;
+};
+/// `wobble export prairielearn|moodle|gradescope`: three subcommands sharing the options.
+struct ExportCommands {
+  CLI::App *prairielearn = nullptr, *moodle = nullptr, *gradescope = nullptr;
+};
+ExportCommands setup_export(CLI::App& app, ExportOptions& opt);
+int run_export(const ExportCommands& commands, const ExportOptions& opt);
 
 }  // namespace wobble::cli

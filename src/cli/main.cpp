@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   BenchOptions bench_opt;
   CheckOptions check_opt;
   WorksheetOptions worksheet_opt;
+  ExportOptions export_opt;
   CLI::App* list = app.add_subcommand("list", "List the problems with their titles");
   CLI::App* solve = app.add_subcommand("solve", "Print the worked key of a problem");
   CLI::App* keys = app.add_subcommand("keys", "Check or update the golden keys in solutions/");
@@ -52,6 +53,9 @@ int main(int argc, char** argv) {
   CLI::App* worksheet =
       app.add_subcommand("worksheet", "Work through a problem part by part, with feedback");
   setup_worksheet(*worksheet, worksheet_opt);
+  CLI::App* exporter = app.add_subcommand(
+      "export", "Export a problem with its variants to PrairieLearn, Moodle or Gradescope");
+  const ExportCommands export_commands = setup_export(*exporter, export_opt);
 
   // CLI11 would only say "a subcommand is required"; name the word the user typed instead.
   const auto known =
@@ -59,7 +63,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && argv[1][0] != '-' && known.empty()) {
     fmt::print(stderr,
                "wobble: unknown command '{}' (commands: list, solve, check, worksheet, simulate, "
-               "bench, keys; "
+               "bench, keys, export; "
                "see --help)\n",
                argv[1]);
     return kExitBadInput;
@@ -79,7 +83,7 @@ int main(int argc, char** argv) {
 
   // The long commands stop cleanly on Ctrl-C: their loops poll the flag and unwind, removing
   // temporaries (core/work_budget.hpp). The others keep the default (nothing to clean up).
-  if (simulate->parsed() || keys->parsed() || bench->parsed()) wobble::stop_on_signals();
+  if (simulate->parsed() || keys->parsed() || bench->parsed() || exporter->parsed()) wobble::stop_on_signals();
   try {
     if (!data_dir.empty()) wobble::set_data_dir(data_dir);
     if (list->parsed()) return run_list(list_opt);
@@ -89,6 +93,7 @@ int main(int argc, char** argv) {
     if (bench->parsed()) return run_bench(bench_opt);
     if (check->parsed()) return run_check(check_opt);
     if (worksheet->parsed()) return run_worksheet(worksheet_opt);
+    if (exporter->parsed()) return run_export(export_commands, export_opt);
   } catch (const wobble::Interrupted&) {
     fmt::print(stderr, "wobble: interrupted; no file was left half-written\n");
     return kExitInterrupted;

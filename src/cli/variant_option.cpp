@@ -1,4 +1,5 @@
 #include "cli/commands.hpp"
+#include "core/input_error.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
 
@@ -11,6 +12,22 @@ std::vector<std::string> with_variant(const Problem& problem, std::optional<long
   if (variant) out = variant_for(problem, *variant);
   out.insert(out.end(), sets.begin(), sets.end());
   return out;
+}
+
+std::pair<long, long> variant_range(const std::string& text, const std::string& option) {
+  const auto dash = text.find('-');
+  try {
+    std::size_t used = 0;
+    const long a = std::stol(text.substr(0, dash), &used);
+    if (used != (dash == std::string::npos ? text.size() : dash)) throw std::invalid_argument("");
+    const long b = dash == std::string::npos ? a : std::stol(text.substr(dash + 1), &used);
+    if (dash != std::string::npos && used != text.size() - dash - 1)
+      throw std::invalid_argument("");
+    if (a < 1 || b < a || b - a >= 1000) throw std::invalid_argument("");
+    return {a, b};
+  } catch (const std::exception&) {
+    throw InputError(option + ": '" + text + "' is not a range such as 1-40 (at most 1000)");
+  }
 }
 
 std::vector<std::pair<std::string, std::string>> shown_values(

@@ -1,0 +1,124 @@
+#include "check/submission.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include "core/input_error.hpp"
+
+namespace wobble::check {
+
+namespace {
+// A submission is a few dozen lines; a larger text is no submission.
+constexpr std::size_t kMaxSubmissionBytes = 1 << 20;
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  const auto b = s.find_last_not_of(" \t\r");
+  return s.substr(a, b - a + 1);
+}
+
+struct Line {
+  int number = 0;
+  std::string name, answer;
+};
+
+// NAME = ANSWER or NAME: ANSWER; comments and blank lines give nothing.
+std::optional<Line> read_line(const std::string& raw, int number) {
+  const std::string text = trim(raw);
+  if (text.empty() || text[0] == '#') return {};
+  const auto eq = text.find('='), colon = text.find(':');
+  const auto at = std::min(eq, colon);
+  if (at == std::string::npos) return Line{number, text, ""};
+  return Line{number, trim(text.substr(0, at)), trim(text.substr(at + 1))};
+}
+
+std::vector<Line> read_lines(const std::string& text) {
+  if (text.size() > kMaxSubmissionBytes) {
+    throw InputError(fmt::format("--answers: the submission has {} bytes; at most {} are read",
+                                 text.size(), kMaxSubmissionBytes));
+  }
+  std::vector<Line> out;
+  std::istringstream in(text);
+  std::string raw;
+  int number = 0;
+  while (std::getline(in, raw)) {
+    if (auto line = read_line(raw, ++number)) out.push_back(*line);
+  }
+  return out;
+}
+
+// An InputError's message without the option it names: the student typed no option.
+std::string reason(const std::string& message) {
+  const std::string field = "--answer: ";
+  return message.rfind(field, 0) == 0 ? message.substr(field.size()) : message;
+}
+}  // namespace
+
+bool SubmissionResult::all_correct() const {
+  return problems.empty() && std::all_of(answers.begin(), answers.end(), [](const auto& a) {
+           return a.verdict.correct;
+         });
+}
+
+std::optional<long> submission_variant(const std::string& text) {
+  for (const auto& line : read_lines(text)) {
+    if (line.name != "variant") continue;
+    try {
+      std::size_t used = 0;
+      const long n = std::stol(line.answer, &used);
+      if (used == line.answer.size()) return n;
+    } catch (const std::exception&) {
+    }
+    throw InputError(fmt::format("--answers: line {}: variant '{}' is not a whole number",
+                                 line.number, line.answer));
+  }
+  return {};
+}
+
+SubmissionResult judge_submission(const Context& ctx, const std::string& text, const Options& opt) {
+  SubmissionResult result;
+  std::map<std::string, Line> given;
+  for (const auto& line : read_lines(text)) {
+    if (line.name == "variant") continue;
+    if (line.answer.empty() && line.name.find_first_of(" \t") != std::string::npos) {
+      result.problems.push_back(
+          fmt::format("line {}: '{}' is not NAME = ANSWER", line.number, line.name));
+    } else if (!given.emplace(line.name, line).second) {
+      result.problems.push_back(
+          fmt::format("line {}: {} is answered twice (the first is judged)", line.number, line.name));
+    }
+  }
+  for (const auto& part : ctx.key.parts) {
+    for (const auto& a : part.answers) {
+      SubmittedAnswer s{part.id, a.name, false, "", {}};
+      const auto it = given.find(a.name);
+      if (it == given.end() || it->second.answer.empty()) {
+        s.verdict = {false, "incorrect: " + a.name + " is not answered", {}};
+      } else {
+        s.answered = true;
+        s.typed = it->second.answer;
+        try {
+          s.verdict = judge(ctx, a, s.typed, opt);
+        } catch (const InputError& e) {
+          s.verdict = {false, "incorrect: " + a.name + ": " + reason(e.what()), {}};
+        }
+      }
+      if (it != given.end()) given.erase(it);
+      result.answers.push_back(std::move(s));
+    }
+  }
+  for (const auto& [name, line] : given) {
+    std::string names;
+    for (const auto& s : result.answers) names += (names.empty() ? "" : ", ") + s.name;
+    result.problems.push_back(
+        fmt::format("line {}: '{}' is no answer of this problem (answers: {})", line.number, name,
+                    names));
+  }
+  return result;
+}
+
+}  // namespace wobble::check

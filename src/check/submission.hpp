@@ -1,0 +1,43 @@
+#pragma once
+/// @file
+/// Judging a whole submission: a text with one answer per line, as a student hands it in to an
+/// autograder (Gradescope) or to `wobble check --answers`.
+///
+///     # comments and blank lines are skipped
+///     variant = 17              (optional: the values of the student's handout)
+///     p_phi = 0.0123 kg m^2/s
+///     theta_min: 0.61
+///
+/// A line is NAME = ANSWER or NAME: ANSWER, NAME an answer of the key (`wobble solve` lists
+/// them). Each answer is judged alone (judge.hpp): an unreadable answer is wrong with the reason,
+/// a missing one is wrong as "not answered", a line naming no answer is reported, and none of
+/// these stops the others from being judged.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "check/judge.hpp"
+
+namespace wobble::check {
+
+struct SubmittedAnswer {
+  std::string part, name;
+  bool answered = false;
+  std::string typed;
+  Verdict verdict;
+};
+
+struct SubmissionResult {
+  std::vector<SubmittedAnswer> answers;  ///< every answer of the key, in the key's order
+  std::vector<std::string> problems;     ///< lines that name no answer, or name one twice
+  bool all_correct() const;
+};
+
+/// The submission's "variant = N" line, if it has one.
+/// @throws InputError naming the line for a variant that is not a whole number.
+std::optional<long> submission_variant(const std::string& text);
+
+/// @throws InputError for a text too large (over 1 MB) for a submission.
+SubmissionResult judge_submission(const Context& ctx, const std::string& text, const Options& opt);
+
+}  // namespace wobble::check

@@ -1,0 +1,134 @@
+#include "export/prairielearn.hpp"
+
+#include <boost/uuid/name_generator_sha1.hpp>
+#include <boost/uuid/uuid_io.hpp>
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "export/html_text.hpp"
+#include "export/prairielearn_server_py.hpp"
+
+namespace wobble::exports {
+
+namespace {
+using nlohmann::json;
+
+const char* shape_name(Value::Shape s) {
+  switch (s) {
+    case Value::Shape::scalar:
+      return "scalar";
+    case Value::Shape::vector:
+      return "vector";
+    case Value::Shape::matrix:
+      return "matrix";
+  }
+  return "scalar";
+}
+
+json answer_json(const GradedAnswer& g) {
+  const Answer& a = g.answer;
+  json mistakes = json::array();
+  for (const auto& m : g.mistakes) {
+    mistakes.push_back({{"mistake", m.mistake}, {"values", m.values}, {"message", m.message}});
+  }
+  return {{"input", input_name(g)},
+          {"name", a.name},
+          {"part", g.part},
+          {"kind", kind_name(a.kind)},
+          {"frame", frame_name(a.frame)},
+          {"shape", shape_name(a.value.shape)},
+          {"rows", a.value.rows},
+          {"cols", a.value.cols},
+          {"unit", a.unit},
+          {"value", a.value.data},
+          {"rel_tol", g.rel_tol},
+          {"zero_scale", g.zero_scale},
+          {"eigenspaces", g.eigenspaces},
+          {"mistakes", mistakes}};
+}
+
+// One input per answer, with its name and unit beside it; the feedback under it after grading.
+std::string answer_input(const GradedAnswer& g) {
+  const Answer& a = g.answer;
+  const std::string name = input_name(g);
+  const std::string unit = a.unit.empty() ? "" : unit_html(a.unit);
+  std::string html;
+  if (a.value.shape == Value::Shape::scalar) {
+    html = fmt::format(
+        "<pl-number-input answers-name=\"{}\" label=\"<code>{}</code> =\" suffix=\"{}\" "
+        "show-help-text=\"false\"></pl-number-input>\n",
+        name, html_escape(a.name), unit);
+  } else {
+    html = fmt::format(
+        "<p><code>{}</code>{} =</p>\n<pl-matrix-component-input answers-name=\"{}\" rows=\"{}\" "
+        "columns=\"{}\"></pl-matrix-component-input>\n{}",
+        html_escape(a.name), a.frame == AnswerFrame::none ? "" : fmt::format(" ({} frame)", frame_name(a.frame)),
+        name, a.value.rows, a.value.cols, unit.empty() ? "" : "<p>in " + unit + "</p>\n");
+  }
+  html += fmt::format(
+      "<pl-submission-panel>{{{{#feedback.{0}}}}}<p><code>{1}</code>: {{{{feedback.{0}}}}}</p>"
+      "{{{{/feedback.{0}}}}}</pl-submission-panel>\n",
+      name, html_escape(a.name));
+  return html;
+}
+
+std::string question_html(const Problem& problem, const VariantSet& set) {
+  std::string html = "<pl-question-panel>\n" + statement_html(problem.statement, "$", "$") +
+                     "<p>Your values (variant {{params.variant}}):</p>\n"
+                     "<table class=\"table table-sm w-auto\">\n"
+                     "{{#params.values}}<tr><td>${{latex}}$</td><td>{{text}}</td></tr>"
+                     "{{/params.values}}\n</table>\n</pl-question-panel>\n";
+  const GradedVariant& first = set.variants.front();
+  for (const auto& part : first.key.parts) {
+    html += fmt::format("<p><strong>({})</strong> {}</p>\n", part.id, html_escape(part.question));
+    for (const auto& g : first.answers) {
+      if (g.part == part.id) html += answer_input(g);
+    }
+  }
+  return html;
+}
+}  // namespace
+
+std::string input_name(const GradedAnswer& a) { return a.part + "_" + a.answer.name; }
+
+std::string question_uuid(const std::string& problem_id) {
+  boost::uuids::name_generator_sha1 generate(boost::uuids::ns::url());
+  return boost::uuids::to_string(generate("wobble/problem/" + problem_id));
+}
+
+std::string variants_json(const VariantSet& set, const check::Options& options) {
+  json variants = json::array();
+  for (const auto& v : set.variants) {
+    json values = json::array();
+    for (const auto& [name, text] : v.values) {
+      std::string latex = name;
+      for (const auto& p : v.key.parameters) {
+        if (p.name == name) latex = p.latex;
+      }
+      values.push_back({{"name", name}, {"latex", latex}, {"text", text}});
+    }
+    json answers = json::array();
+    for (const auto& g : v.answers) answers.push_back(answer_json(g));
+    variants.push_back({{"number", v.number}, {"values", values}, {"answers", answers}});
+  }
+  json rules = {{"half_unit_slack", check::kHalfUnitSlack}};
+  rules["sigfigs"] = options.sigfigs ? json(*options.sigfigs) : json(nullptr);
+  return json{{"rules", rules}, {"variants", variants}}.dump(1) + "\n";
+}
+
+std::vector<OutputFile> prairielearn_question(const Problem& problem, const VariantSet& set,
+                                              const check::Options& options) {
+  const json info = {{"uuid", question_uuid(problem.id)},
+                     {"title", problem.title},
+                     {"topic", "Rigid-body rotation"},
+                     {"tags", {"wobble", problem.id}},
+                     {"type", "v3"},
+                     {"singleVariant", set.variants.size() == 1}};
+  return {{"info.json", info.dump(2) + "\n"},
+          {"question.html", question_html(problem, set)},
+          {"server.py", std::string(kPrairieLearnServerPy)},
+          {"variants.json", variants_json(set, options)}};
+}
+
+}  // namespace wobble::exports
