@@ -1,0 +1,183 @@
+#!/usr/bin/env python3
+"""Exports one problem to PrairieLearn and Moodle as an instructor would, and checks the files.
+
+    export_test.py WOBBLE PROBLEM_ID
+
+- PrairieLearn: info.json has every field PrairieLearn requires (uuid, type, title, topic) and
+  no other than its schema allows; server.py grades every variant as prairielearn_grade.py says.
+- Moodle: the XML is well formed and has, for each calculated question, each element Moodle's
+  XML import reads (question/format/xml/format.php, import_calculated); every dataset's item
+  count matches its items; every answer's formula names a dataset.
+- Round trip: for every exported variant, the values in both exports equal
+  `wobble solve ID --variant N --format json`, bit for bit.
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import prairielearn_grade  # noqa: E402
+
+VARIANTS = "1-20"
+PL_ALLOWED = {"comment", "uuid", "type", "title", "topic", "tags", "clientFiles",
+              "clientTemplates", "template", "gradingMethod", "singleVariant",
+              "showCorrectAnswer", "partialCredit", "options", "externalGradingOptions",
+              "dependencies", "workspaceOptions", "sharingSets", "sharePublicly",
+              "shareSourcePublicly"}
+UUID = re.compile(r"^[0-9a-fA-F]{8}-[0-9a-fA-F]{4}-[0-9a-fA-F]{4}-[0-9a-fA-F]{4}-[0-9a-fA-F]{12}$")
+failures = []
+
+
+def fail(message):
+    failures.append(message)
+
+
+def run(args):
+    out = subprocess.run(args, capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.exit("%s failed (%d): %s" % (" ".join(args), out.returncode, out.stderr))
+    return out.stdout
+
+
+def flat(value):
+    if isinstance(value, list):
+        return [x for row in value for x in flat(row)]
+    return [value]
+
+
+KEYS = {}
+
+
+def key_values(wobble, problem, number):
+    """name -> flat values of `wobble solve --variant number --format json`."""
+    if number not in KEYS:
+        key = json.loads(run([wobble, "solve", problem, "--variant", str(number), "--format", "json"]))
+        KEYS[number] = {a["name"]: flat(a["value"]) for p in key["parts"] for a in p["answers"]}
+    return KEYS[number]
+
+
+def check_prairielearn(wobble, problem, folder):
+    question = os.path.join(folder, problem)
+    with open(os.path.join(question, "info.json"), encoding="utf-8") as f:
+        info = json.load(f)
+    for field in ("uuid", "type", "title", "topic"):
+        if field not in info:
+            fail("info.json: no %s" % field)
+    if set(info) - PL_ALLOWED:
+        fail("info.json: fields PrairieLearn refuses: %s" % sorted(set(info) - PL_ALLOWED))
+    if not UUID.match(info.get("uuid", "")) or info.get("type") != "v3":
+        fail("info.json: uuid %r, type %r" % (info.get("uuid"), info.get("type")))
+    with open(os.path.join(question, "variants.json"), encoding="utf-8") as f:
+        table = json.load(f)
+    for v in table["variants"]:
+        key = key_values(wobble, problem, v["number"])
+        for a in v["answers"]:
+            if a["value"] != key.get(a["name"]):
+                fail("PrairieLearn variant %d %s: %s, solve gives %s" % (
+                    v["number"], a["name"], a["value"], key.get(a["name"])))
+    sys.argv = ["prairielearn_grade.py", question]
+    try:
+        prairielearn_grade.main()
+    except SystemExit as e:
+        if e.code:
+            fail("PrairieLearn grading failed")
+    return len(table["variants"])
+
+
+def text(element, path):
+    found = element.find(path)
+    if found is None:
+        fail("moodle: <%s> missing in %s" % (path, element.tag))
+        return ""
+    return found.text or ""
+
+
+def check_moodle(wobble, problem, quiz_file):
+    root = ET.parse(quiz_file).getroot()
+    if root.tag != "quiz":
+        fail("moodle: root is <%s>, not <quiz>" % root.tag)
+    questions = root.findall("question")
+    if not questions or questions[0].get("type") != "category":
+        fail("moodle: the first question is not the category")
+    checked = 0
+    for q in questions[1:]:
+        if q.get("type") != "calculated":
+            fail("moodle: question type %s" % q.get("type"))
+            continue
+        name = text(q, "name/text")
+        if q.find("questiontext").get("format") != "html":
+            fail("moodle: %s: question text format" % name)
+        text(q, "questiontext/text")
+        for tag in ("generalfeedback/text", "defaultgrade", "penalty", "hidden", "synchronize",
+                    "single", "answernumbering", "shuffleanswers", "unitgradingtype",
+                    "unitpenalty", "showunits", "unitsleft"):
+            text(q, tag)
+        datasets = {}
+        for d in q.findall("dataset_definitions/dataset_definition"):
+            for tag in ("status/text", "name/text", "type", "distribution/text", "minimum/text",
+                        "maximum/text", "decimals/text", "itemcount", "number_of_items"):
+                text(d, tag)
+            items = d.findall("dataset_items/dataset_item")
+            numbers = [int(text(i, "number")) for i in items]
+            if numbers != list(range(1, len(items) + 1)) or int(text(d, "itemcount")) != len(items):
+                fail("moodle: %s: dataset %s items %s" % (name, text(d, "name/text"), numbers))
+            datasets[text(d, "name/text")] = [float(text(i, "value")) for i in items]
+        answers = q.findall("answer")
+        if not answers or answers[0].get("fraction") != "100":
+            fail("moodle: %s: the right answer is not first" % name)
+        for a in answers:
+            for tag in ("text", "tolerance", "tolerancetype", "correctanswerformat",
+                        "correctanswerlength", "feedback/text"):
+                text(a, tag)
+            wildcard = text(a, "text").strip("{}")
+            if wildcard not in datasets:
+                fail("moodle: %s: answer {%s} has no dataset" % (name, wildcard))
+        # Round trip: "NAME" or "NAME, entry ..." against solve's values of that variant.
+        parts = re.match(r"^\S+ \((\w+)\) (\w+)(.*)$", name)
+        answer = parts.group(2)
+        entry = entry_index(parts.group(3))
+        for number, value in zip(datasets["variant"], datasets["ans"]):
+            want = key_values(wobble, problem, int(number))[answer][entry]
+            if value != want:
+                fail("moodle: %s variant %d: %r, solve gives %r" % (name, number, value, want))
+            checked += 1
+    return len(questions) - 1, checked
+
+
+def entry_index(words):
+    if not words:
+        return 0
+    for i, rank in enumerate(("smallest", "middle", "largest")):
+        if rank in words:
+            return i
+    m = re.search(r"its ([xyz]) component", words)
+    if m:
+        return "xyz".index(m.group(1))
+    m = re.search(r"entry \((\d+), (\d+)\)", words)
+    if m:
+        return (int(m.group(1)) - 1) * 3 + int(m.group(2)) - 1
+    return int(re.search(r"entry (\d+)", words).group(1)) - 1
+
+
+def main():
+    wobble, problem = sys.argv[1], sys.argv[2]
+    with tempfile.TemporaryDirectory() as tmp:
+        run([wobble, "export", "prairielearn", problem, "--variants", VARIANTS, "--out",
+             os.path.join(tmp, "questions")])
+        variants = check_prairielearn(wobble, problem, os.path.join(tmp, "questions"))
+        quiz = os.path.join(tmp, "quiz.xml")
+        run([wobble, "export", "moodle", problem, "--variants", VARIANTS, "--out", quiz])
+        questions, items = check_moodle(wobble, problem, quiz)
+    print("%s: PrairieLearn %d variants, Moodle %d questions (%d dataset items against solve)" % (
+        problem, variants, questions, items))
+    if failures:
+        print("\n".join(failures[:30]))
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
