@@ -68,6 +68,14 @@ int main(int argc, char** argv) {
                argv[1]);
     return kExitBadInput;
   }
+  if (argc > 1 && std::string_view(argv[1]) == "export" &&
+      (argc == 2 || (argv[2][0] != '-' && exporter->get_subcommands([&](CLI::App* sub) {
+                                              return sub->get_name() == argv[2];
+                                            }).empty()))) {
+    fmt::print(stderr, "wobble: export: {} (systems: prairielearn, moodle, gradescope)\n",
+               argc == 2 ? std::string("name the system") : fmt::format("unknown system '{}'", argv[2]));
+    return kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -175,6 +175,13 @@ inline std::string scene_with(const std::string& from, const std::string& to) {
   return s.replace(p, from.size(), to);
 }
 
+// Any other file a row names (an answers file): its path, the content kept until the row runs.
+inline std::string text_file(const std::string& name, const std::string& content) {
+  const std::string path = (scratch_dir() / "bad" / name).string();
+  fixture_files()[path] = content;
+  return path;
+}
+
 inline std::string existing_file() {
   const std::string path = (scratch_dir() / "bad" / "existing.csv").string();
   fixture_files()[path] = "keep me\n";
