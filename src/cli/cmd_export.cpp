@@ -47,7 +47,9 @@ void write_files(const std::vector<std::pair<fs::path, std::string>>& files, boo
     }
     require_regular_or_absent(path);
   }
-  for (const auto& [path, content] : files) fs::create_directories(path.parent_path());
+  for (const auto& [path, content] : files) {
+    if (!path.parent_path().empty()) fs::create_directories(path.parent_path());
+  }
   StagedFiles set(/*replace=*/force);
   for (const auto& [path, content] : files) set.stage(path, content);
   throw_if_interrupted();
