@@ -18,7 +18,8 @@ constexpr int kRelative = 1, kNominal = 2;
 // The correct answer as Moodle shows it: 2 = significant figures, 6 of them.
 constexpr int kSignificantFigures = 2, kShownFigures = 6;
 
-std::string number(double x) { return fmt::format("{:.17g}", x); }
+// The shortest text that reads back as the same double (what a student sees in the values).
+std::string number(double x) { return fmt::format("{}", x == 0.0 ? 0.0 : x); }
 
 std::string cdata(const std::string& text) {
   // "]]>" cannot appear inside CDATA: split it across two sections.
@@ -58,13 +59,14 @@ std::pair<std::string, std::string> split_value(const std::string& shown) {
 struct Dataset {
   std::string name;
   std::vector<double> items;  ///< one per variant
+  std::vector<std::string> shown;  ///< the items as the handout shows them (else number())
 };
 
 std::string dataset_xml(const Dataset& d) {
   std::string items;
   for (std::size_t i = 0; i < d.items.size(); ++i) {
     items += fmt::format("<dataset_item><number>{}</number><value>{}</value></dataset_item>\n",
-                         i + 1, number(d.items[i]));
+                         i + 1, d.shown.empty() ? number(d.items[i]) : d.shown[i]);
   }
   const auto [lo, hi] = std::minmax_element(d.items.begin(), d.items.end());
   return fmt::format(
@@ -117,8 +119,9 @@ std::string question_text(const Question& q) {
     for (const auto& p : first.key.parameters) {
       if (p.name == name) latex = p.latex;
     }
-    html += fmt::format("<tr><td>\\({}\\)</td><td>{{{}}} {}</td></tr>\n", html_escape(latex),
-                        wildcard(name), html_escape(split_value(shown).second));
+    const std::string unit = split_value(shown).second;
+    html += fmt::format("<tr><td>\\({}\\)</td><td>{{{}}}{}{}</td></tr>\n", html_escape(latex),
+                        wildcard(name), unit == "°" || unit.empty() ? "" : " ", html_escape(unit));
   }
   html += "</table>\n";
   for (const auto& part : first.key.parts) {
@@ -136,7 +139,7 @@ std::string question_xml(const Question& q) {
   const auto& variants = q.set.variants;
   const GradedAnswer& g0 = variants.front().answers[q.answer];
   std::vector<Dataset> datasets;
-  Dataset variant{"variant", {}}, right{"ans", {}};
+  Dataset variant{"variant", {}, {}}, right{"ans", {}, {}};
   double smallest_scale = std::numeric_limits<double>::infinity();
   bool any_zero = false;
   for (const auto& v : variants) {
@@ -149,8 +152,11 @@ std::string question_xml(const Question& q) {
   }
   datasets.push_back(variant);
   for (std::size_t p = 0; p < variants.front().values.size(); ++p) {
-    Dataset d{wildcard(variants.front().values[p].first), {}};
-    for (const auto& v : variants) d.items.push_back(std::stod(split_value(v.values[p].second).first));
+    Dataset d{wildcard(variants.front().values[p].first), {}, {}};
+    for (const auto& v : variants) {
+      d.shown.push_back(split_value(v.values[p].second).first);
+      d.items.push_back(std::stod(d.shown.back()));
+    }
     datasets.push_back(d);
   }
   datasets.push_back(right);
@@ -163,7 +169,8 @@ std::string question_xml(const Question& q) {
       auto it = std::find_if(mistakes.begin(), mistakes.end(),
                              [&](const auto& s) { return s.first == m.message; });
       if (it == mistakes.end()) {
-        mistakes.push_back({m.message, {fmt::format("m{}", mistakes.size() + 1), right.items}});
+        mistakes.push_back(
+            {m.message, {fmt::format("m{}", mistakes.size() + 1), right.items, {}}});
         it = mistakes.end() - 1;
       }
       it->second.items[i] = m.values[q.entry];
@@ -176,6 +183,9 @@ std::string question_xml(const Question& q) {
   const double tolerance = any_zero ? g0.rel_tol * smallest_scale : g0.rel_tol;
   std::string answers = answer_xml(100, "{ans}", tolerance, type, "correct");
   for (const auto& [message, d] : mistakes) {
+    // A mistake that leaves this entry right in every variant (the reversed sign of a zero
+    // entry) is no answer of its own here.
+    if (d.items == right.items) continue;
     answers += answer_xml(0, "{" + d.name + "}", tolerance, type, "incorrect: " + message);
     datasets.push_back(d);
   }

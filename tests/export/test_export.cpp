@@ -1,0 +1,103 @@
+// The exports' gradable variants: what is listed, what refuses a variant, what no variant lists;
+// and the text of a problem as a learning system's HTML.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+#include "check/units.hpp"
+#include "export/graded_variants.hpp"
+#include "export/html_text.hpp"
+#include "problem/values.hpp"
+#include "solvers/catalog.hpp"
+#include "solvers/solve.hpp"
+
+using namespace wobble;
+using Catch::Matchers::Contains;
+
+TEST_CASE("every listed mistake is what the judge names for its value, and is judged wrong") {
+  const Problem p = find_problem("heavy-top");
+  const auto set = exports::graded_variants(p, 1, 10, check::Options{});
+  REQUIRE(set.variants.size() == 10);
+  const sym::SymbolTable table = p.symbol_table();
+  std::size_t listed = 0;
+  for (const auto& v : set.variants) {
+    const sym::Values values = parameter_values(p, variant_for(p, v.number));
+    for (const auto& g : v.answers) {
+      for (const auto& m : g.mistakes) {
+        const auto verdict = check::judge({v.key, table, values}, g.answer,
+                                          exports::answer_text(g.answer, m.values), {});
+        INFO("variant " << v.number << " " << g.answer.name << ": " << m.mistake);
+        CHECK_FALSE(verdict.correct);
+        REQUIRE(verdict.feedback.size() == 1);
+        CHECK(verdict.feedback[0] == m.message);
+        ++listed;
+      }
+    }
+  }
+  CHECK(listed > 100);
+}
+
+TEST_CASE("a variant whose mistake lies within the tolerance is drawn again, and says why") {
+  // Heavy-top variants 1-50 (drawn in the order of their numbers): variant 21's Lagrangian is
+  // within 1% of its energy, and variant 1 is too slow a top to precess steadily.
+  const Problem p = find_problem("heavy-top");
+  const auto set = exports::graded_variants(p, 1, 20, check::Options{});
+  const auto refused = [&](long n) {
+    return std::find_if(set.rejected.begin(), set.rejected.end(),
+                        [&](const exports::Rejection& r) { return r.number == n; });
+  };
+  REQUIRE(refused(21) != set.rejected.end());
+  CHECK_THAT(refused(21)->reason, Contains("lagrangian0 (part a): another answer of the key") &&
+                                      Contains("which the judge accepts (tolerance 1%)"));
+  REQUIRE(refused(1) != set.rejected.end());
+  CHECK_THAT(refused(1)->reason, Contains("phidot_slow (part d) does not exist"));
+  for (const auto& v : set.variants) CHECK(refused(v.number) == set.rejected.end());
+  // With a tolerance of 0.1% the Lagrangian is told from the energy.
+  check::Options strict;
+  strict.rel_tol = 0.001;
+  strict.rel_tol_given = true;
+  const auto tight = exports::graded_variants(p, 21, 1, strict);
+  CHECK(tight.variants.front().number == 21);
+}
+
+TEST_CASE("a mistake within the tolerance in every variant is listed in none") {
+  // Near the separatrix k and k^2 are both 1 to six digits: no number tells them apart.
+  const Problem p = find_problem("tennis-racket");
+  const auto set = exports::graded_variants(p, 1, 5, check::Options{});
+  REQUIRE(set.variants.size() == 5);
+  REQUIRE(set.unlisted.size() == 2);
+  CHECK_THAT(set.unlisted[0], Contains("k (part c): another answer of the key"));
+  for (const auto& v : set.variants) {
+    for (const auto& g : v.answers) {
+      if (g.answer.name != "k") continue;
+      for (const auto& m : g.mistakes) CHECK_THAT(m.message, !Contains("this is k2"));
+    }
+  }
+}
+
+TEST_CASE("a mistake equal to the key is no mistake: the frames coincide at t = 0") {
+  // rect-solid's L0_body and L0_space are equal at t = 0, and the products of inertia of a
+  // diagonal tensor are zero: neither is listed, and no variant is refused for it.
+  const Problem p = find_problem("rect-solid");
+  const auto set = exports::graded_variants(p, 1, 5, check::Options{});
+  CHECK(set.rejected.empty());
+  int checked = 0;
+  for (const auto& g : set.variants.front().answers) {
+    for (const auto& m : g.mistakes) {
+      INFO(g.answer.name << ": " << m.message);
+      if (g.answer.name == "L0_body" || g.answer.name == "L0_space") {
+        CHECK_THAT(m.message, !Contains("L0_body") && !Contains("L0_space"));
+        ++checked;
+      }
+      CHECK(m.mistake != "products of inertia with the wrong sign");
+    }
+  }
+  CHECK(checked > 0);
+}
+
+TEST_CASE("a statement as HTML: math for the system's MathJax, code, escapes, paragraphs") {
+  CHECK(exports::statement_html("A $\\theta_0 < 1$ tilt, `heavy-top` & more.\n\nNext", "\\(",
+                                "\\)") ==
+        "<p>A \\(\\theta_0 &lt; 1\\) tilt, <code>heavy-top</code> &amp; more.</p>\n<p>Next</p>\n");
+  CHECK(exports::unit_html("kg m^2/s") == "kg m²/s");
+}
