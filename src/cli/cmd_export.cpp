@@ -21,11 +21,11 @@ namespace {
 namespace fs = std::filesystem;
 
 void add_common(CLI::App& sub, ExportOptions& opt, bool several) {
-  sub.add_option("problem", opt.problems,
-                 several ? "Problem ids (see `wobble list`) or .toml files"
-                         : "Problem id (see `wobble list`) or a .toml file")
-      ->required()
-      ->expected(1, several ? 100 : 1);
+  auto* problems = sub.add_option("problem", opt.problems,
+                                  several ? "Problem ids (see `wobble list`) or .toml files"
+                                          : "Problem id (see `wobble list`) or a .toml file")
+                       ->required();
+  if (!several) problems->expected(1);
   sub.add_flag("--force", opt.force, "Replace files that exist");
   sub.add_option("--tolerance", opt.tolerance,
                  "Relative tolerance of every answer (default: the problem's, else 0.01)");
