@@ -22,8 +22,8 @@ constexpr std::uintmax_t kMaxDebBytes = 512ull << 20;
 std::string setup_sh(const std::string& deb_name) {
   return fmt::format(R"SH(#!/usr/bin/env bash
 # Gradescope runs this once when it builds the autograder image: it installs wobble from the
-# Debian package beside it (Debian 12 libraries; choose a Debian 12 base image, or an Ubuntu one
-# that provides libfmt9, libginac11 and libtomlplusplus3).
+# Debian package beside it. The package needs Debian 12's libraries (libfmt9, libginac11,
+# libtomlplusplus3, libzip4); where they are missing apt-get stops and names them.
 set -euo pipefail
 cd "$(dirname "$0")"
 apt-get update -qq
