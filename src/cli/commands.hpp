@@ -108,6 +108,15 @@ struct KeysOptions {
 void setup_keys(CLI::App& app, KeysOptions& opt);
 int run_keys(const KeysOptions& opt);
 
+struct ServeOptions {
+  std::string host = "127.0.0.1";
+  int port = 8080;
+  std::string problems;  ///< a folder of .toml problems; empty: the catalog
+  bool reveal = false;
+};
+void setup_serve(CLI::App& app, ServeOptions& opt);
+int run_serve(const ServeOptions& opt);  ///< serves until Ctrl-C
+
 struct ExportOptions {
   std::vector<std::string> problems;  ///< ids or .toml files (several for PrairieLearn)
   std::string variants;               ///< "A-B"; empty: the system's default

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   CheckOptions check_opt;
   WorksheetOptions worksheet_opt;
   ExportOptions export_opt;
+  ServeOptions serve_opt;
   CLI::App* list = app.add_subcommand("list", "List the problems with their titles");
   CLI::App* solve = app.add_subcommand("solve", "Print the worked key of a problem");
   CLI::App* keys = app.add_subcommand("keys", "Check or update the golden keys in solutions/");
@@ -56,6 +57,9 @@ int main(int argc, char** argv) {
   CLI::App* exporter = app.add_subcommand(
       "export", "Export a problem with its variants to PrairieLearn, Moodle or Gradescope");
   const ExportCommands export_commands = setup_export(*exporter, export_opt);
+  CLI::App* server = app.add_subcommand(
+      "serve", "Serve the worksheet to a class in the browser (math typeset, answers judged)");
+  setup_serve(*server, serve_opt);
 
   // CLI11 would only say "a subcommand is required"; name the word the user typed instead.
   const auto known =
@@ -63,7 +67,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && argv[1][0] != '-' && known.empty()) {
     fmt::print(stderr,
                "wobble: unknown command '{}' (commands: list, solve, check, worksheet, simulate, "
-               "bench, keys, export; "
+               "bench, keys, export, serve; "
                "see --help)\n",
                argv[1]);
     return kExitBadInput;
@@ -91,7 +95,8 @@ int main(int argc, char** argv) {
 
   // The long commands stop cleanly on Ctrl-C: their loops poll the flag and unwind, removing
   // temporaries (core/work_budget.hpp). The others keep the default (nothing to clean up).
-  if (simulate->parsed() || keys->parsed() || bench->parsed() || exporter->parsed()) wobble::stop_on_signals();
+  if (simulate->parsed() || keys->parsed() || bench->parsed() || exporter->parsed() ||
+      server->parsed()) wobble::stop_on_signals();
   try {
     if (!data_dir.empty()) wobble::set_data_dir(data_dir);
     if (list->parsed()) return run_list(list_opt);
@@ -102,6 +107,7 @@ int main(int argc, char** argv) {
     if (check->parsed()) return run_check(check_opt);
     if (worksheet->parsed()) return run_worksheet(worksheet_opt);
     if (exporter->parsed()) return run_export(export_commands, export_opt);
+    if (server->parsed()) return run_serve(serve_opt);
   } catch (const wobble::Interrupted&) {
     fmt::print(stderr, "wobble: interrupted; no file was left half-written\n");
     return kExitInterrupted;

@@ -1,0 +1,214 @@
+// `wobble serve` in process: a server on a free loopback port, asked as a page and a class
+// would ask it (cpp-httplib's client), including what a student must never see and requests
+// made to break it.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "serve/server.hpp"
+#include "solvers/catalog.hpp"
+#include "solvers/key.hpp"
+// Last: it includes <resolv.h>, whose _res macro breaks Eigen's headers after it.
+#include <httplib.h>
+
+using namespace wobble;
+using nlohmann::json;
+using Catch::Matchers::Contains;
+
+namespace {
+struct Running {
+  explicit Running(bool reveal = false) {
+    serve::ServeOptions o;
+    o.port = 0;
+    o.problems = load_catalog();
+    o.reveal = reveal;
+    server = std::make_unique<serve::Server>(std::move(o));
+    port = server->bind();
+    thread = std::thread([this] { server->run(); });
+  }
+  ~Running() {
+    server->stop();
+    thread.join();
+  }
+  httplib::Client client() const {
+    httplib::Client c("127.0.0.1", port);
+    c.set_read_timeout(30, 0);
+    return c;
+  }
+  std::unique_ptr<serve::Server> server;
+  int port = 0;
+  std::thread thread;
+};
+
+json get_json(httplib::Client& c, const std::string& path, int status = 200) {
+  const auto res = c.Get(path.c_str());
+  REQUIRE(res);
+  INFO(path << ": " << res->body);
+  REQUIRE(res->status == status);
+  return json::parse(res->body);
+}
+
+json post_check(httplib::Client& c, const std::string& id, const json& body, int status = 200) {
+  const auto res = c.Post(("/api/problems/" + id + "/check").c_str(), body.dump(),
+                          "application/json");
+  REQUIRE(res);
+  INFO(body.dump() << ": " << res->body);
+  REQUIRE(res->status == status);
+  return json::parse(res->body);
+}
+
+// The numbers of a key's answers as wobble prints them (10 significant digits) and as JSON
+// prints them (all digits), leaving out those that are also a parameter's value or too short
+// to mean anything ("0", "1", "-1").
+std::vector<std::string> key_numbers(const json& key) {
+  std::vector<std::string> params, out;
+  for (const auto& [name, p] : key["parameters"].items()) {
+    params.push_back(format_number(p["value"].get<double>()));
+  }
+  const auto add = [&](double x) {
+    const std::string s = format_number(x);
+    if (s.size() >= 4 && std::find(params.begin(), params.end(), s) == params.end()) {
+      out.push_back(s);
+      out.push_back(json(x).dump());
+    }
+  };
+  for (const auto& part : key["parts"]) {
+    for (const auto& a : part["answers"]) {
+      const auto& v = a["value"];
+      if (v.is_number()) add(v.get<double>());
+      for (const auto& row : v.is_array() ? v : json::array()) {
+        if (row.is_number()) add(row.get<double>());
+        for (const auto& x : row.is_array() ? row : json::array()) add(x.get<double>());
+      }
+    }
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("a student's responses never hold a key value, and the key needs the token") {
+  Running r;
+  auto c = r.client();
+  const json list = get_json(c, "/api/problems");
+  REQUIRE(list.size() == load_catalog().size());
+  std::size_t scanned = 0;
+  for (const auto& p : list) {
+    const std::string id = p["id"];
+    get_json(c, "/api/problems/" + id + "/key", 403);
+    httplib::Headers bearer{{"Authorization", "Bearer " + r.server->token()}};
+    const auto key_res = c.Get(("/api/problems/" + id + "/key?variant=2").c_str(), bearer);
+    REQUIRE(key_res);
+    REQUIRE(key_res->status == 200);
+    const json key = json::parse(key_res->body);
+    std::vector<std::string> bodies;
+    const auto view = c.Get(("/api/problems/" + id + "?variant=2").c_str());
+    bodies.push_back(view->body);
+    for (const auto& part : json::parse(view->body)["parts"]) {
+      bodies.push_back(c.Get(("/api/problems/" + id + "/hint?part=" + part["id"].get<std::string>()).c_str())->body);
+      for (const auto& a : part["answers"]) {
+        const json wrong = post_check(c, id, {{"part", part["id"]}, {"name", a["name"]},
+                                              {"answer", "7"}, {"variant", 2}}, 
+                                      a["shape"] == "scalar" ? 200 : 400);
+        bodies.push_back(wrong.dump());
+      }
+    }
+    const auto numbers = key_numbers(key);
+    CHECK(!numbers.empty());
+    // The scan looks for what is there: each number's JSON form is in the key itself.
+    for (std::size_t i = 1; i < numbers.size(); i += 2) {
+      CHECK(key_res->body.find(numbers[i]) != std::string::npos);
+    }
+    for (const auto& number : numbers) {
+      for (const auto& body : bodies) {
+        INFO(id << ": " << number << " in " << body.substr(0, 300));
+        CHECK(body.find(number) == std::string::npos);
+        ++scanned;
+      }
+    }
+  }
+  CHECK(scanned > 500);
+}
+
+TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own values") {
+  Running r(/*reveal=*/true);
+  auto c = r.client();
+  const json key = get_json(c, "/api/problems/flying-plate/key?variant=5");
+  const auto& I0 = key["parts"][0]["answers"][0];
+  REQUIRE(I0["name"] == "I0");
+  const std::string right = format_number(I0["value"].get<double>()) + " kg m^2";
+  CHECK(post_check(c, "flying-plate", {{"part", "a"}, {"name", "I0"}, {"answer", right},
+                                       {"variant", 5}})["correct"] == true);
+  // The default values' answer is wrong for variant 5.
+  const json at_default = post_check(c, "flying-plate", {{"part", "a"}, {"name", "I0"},
+                                                         {"answer", right}});
+  CHECK(at_default["correct"] == false);
+  const std::string doubled = format_number(2 * I0["value"].get<double>());
+  const json twice = post_check(c, "flying-plate", {{"part", "a"}, {"name", "I0"},
+                                                    {"answer", doubled}, {"variant", 5}});
+  CHECK(twice["correct"] == false);
+  CHECK_THAT(twice["feedback"][0].get<std::string>(), Contains("2 times the answer"));
+  CHECK_THAT(get_json(c, "/api/problems/flying-plate/hint?part=a")["hint"].get<std::string>(),
+             !Contains("xx") && Contains("m"));
+}
+
+TEST_CASE("bad requests get a 4xx with a message, and the server keeps serving") {
+  Running r;
+  auto c = r.client();
+  const auto status = [&](const httplib::Result& res) { return res ? res->status : -1; };
+  CHECK(status(c.Post("/api/problems/four-masses/check", "{not json", "application/json")) == 400);
+  CHECK(status(c.Post("/api/problems/four-masses/check", "[1, 2]", "application/json")) == 400);
+  CHECK(status(c.Post("/api/problems/four-masses/check",
+                      json{{"part", "a"}, {"answer", 5}}.dump(), "application/json")) == 400);
+  CHECK(status(c.Post("/api/problems/four-masses/check",
+                      json{{"part", "z"}, {"answer", "1"}}.dump(), "application/json")) == 404);
+  CHECK(status(c.Post("/api/problems/four-masses/check",
+                      json{{"part", "a"}, {"answer", "1"}, {"variant", -3}}.dump(),
+                      "application/json")) == 400);
+  CHECK(status(c.Post("/api/problems/four-masses/check",
+                      json{{"part", "a"}, {"answer", "(m+a)^99999"}}.dump(),
+                      "application/json")) == 400);
+  const std::string huge(serve::kMaxBody + 1, 'x');
+  CHECK(status(c.Post("/api/problems/four-masses/check", huge, "application/json")) == 413);
+  CHECK(status(c.Get("/api/problems/no-such-problem")) == 404);
+  CHECK(status(c.Get("/api/problems/four-masses?variant=0")) == 400);
+  CHECK(status(c.Get("/api/problems/four-masses?variant=1e3")) == 400);
+  CHECK(status(c.Get("/api/problems/four-masses/hint?part=q")) == 404);
+  CHECK(status(c.Get("/assets/../../etc/passwd")) == 404);
+  CHECK(status(c.Get("/assets/%2e%2e/%2e%2e/etc/passwd")) == 404);
+  CHECK(status(c.Get("/assets/katex/../page.js")) == 404);
+  CHECK(status(c.Get("/nothing-here")) == 404);
+  const auto res = c.Get("/api/problems/no-such-problem");
+  CHECK_THAT(res->body, Contains("\"error\""));
+  CHECK(status(c.Get("/api/problems")) == 200);
+  CHECK(status(c.Get("/assets/katex/katex.min.js")) == 200);
+  CHECK(status(c.Get("/assets/katex/fonts/KaTeX_Main-Regular.woff2")) == 200);
+  CHECK(status(c.Get("/assets/three/three.min.js")) == 200);
+}
+
+TEST_CASE("a client that connects and sends nothing is dropped, and blocks no one") {
+  Running r;
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  REQUIRE(fd >= 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(static_cast<std::uint16_t>(r.port));
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  REQUIRE(::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+  auto c = r.client();
+  const auto start = std::chrono::steady_clock::now();
+  CHECK(c.Get("/api/problems")->status == 200);  // served while the silent one waits
+  char byte = 0;
+  const auto got = ::recv(fd, &byte, 1, 0);  // the server closes it after its read timeout
+  const double waited =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ::close(fd);
+  CHECK(got == 0);
+  // Closed after the read timeout, give or take the server's polling.
+  CHECK(waited < serve::kReadTimeoutSeconds + 5);
+}
