@@ -8,19 +8,20 @@ _wobble() {
   local i
   for ((i = 1; i < COMP_CWORD; i++)); do
     case "${COMP_WORDS[i]}" in
-      list|solve|keys|simulate|bench|check|worksheet|export) cmd="${COMP_WORDS[i]}"; break ;;
+      list|solve|keys|simulate|bench|check|worksheet|export|serve) cmd="${COMP_WORDS[i]}"; break ;;
     esac
   done
   if [[ -z "$cmd" ]]; then
     if [[ "$prev" == --data-dir ]]; then
       COMPREPLY=($(compgen -d -- "$cur"))
     else
-      COMPREPLY=($(compgen -W "list solve check worksheet simulate bench keys export --data-dir --help --version" -- "$cur"))
+      COMPREPLY=($(compgen -W "list solve check worksheet simulate bench keys export serve --data-dir --help --version" -- "$cur"))
     fi
     return
   fi
   case "$prev" in
     --out|--plot|--figure|--answers|--deb) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --problems) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     --format) COMPREPLY=($(compgen -W "text markdown latex json csv gradescope" -- "$cur")); return ;;
     --method) COMPREPLY=($(compgen -W "auto closed_form exact rk4 dopri5 rkf78 split2 split4" -- "$cur")); return ;;
     --problem) COMPREPLY=($(compgen -W "$(_wobble_ids problems)" -- "$cur")); return ;;
@@ -30,6 +31,7 @@ _wobble() {
     solve) options="--set --variant --format --part --handout --figure --force --cross-check --help" ;;
     check) options="--answer --answers --format --name --set --variant --tolerance --sigfigs --help" ;;
     list) options="--solvers --help" ;;
+    serve) options="--host --port --problems --reveal --help" ;;
     worksheet) options="--variant --set --help" ;;
     simulate) options="--set --variant --method --tolerance --samples --t-end --max-evaluations --out --plot --force --help" ;;
     bench) options="--quick --format --plot --force --help" ;;
