@@ -54,6 +54,7 @@ std::optional<long> read_variant(const std::string& text) {
 }
 
 struct Entry {
+  std::vector<std::string> assignments;  ///< the variant's NAME=VALUE as drawn
   sym::Values values;
   Key key;
 };
@@ -88,7 +89,7 @@ struct Server::Impl {
     sym::Values values = parameter_values(p, assignments);
     Key key = solve(p, values);
     key.variant = variant;
-    auto e = std::make_shared<const Entry>(Entry{std::move(values), std::move(key)});
+    auto e = std::make_shared<const Entry>(Entry{assignments, std::move(values), std::move(key)});
     keys.emplace(at, e);
     return e;
   }
@@ -138,7 +139,8 @@ struct Server::Impl {
       with_problem(req, res, [&](const Problem& p) {
         const auto variant = read_variant(req.get_param_value("variant"));
         std::lock_guard lock(work);
-        send_json(res, web::student_view_json(p, entry(p, variant)->key, variant));
+        const auto e = entry(p, variant);
+        send_json(res, web::student_view_json(p, e->key, variant, e->assignments));
       });
     });
     http.Get("/api/problems/([^/]+)/hint",
@@ -216,7 +218,15 @@ struct Server::Impl {
                                               name.substr(0, 40)));
     }
     const sym::SymbolTable table = p.symbol_table();
-    const check::Verdict v = check::judge({e->key, table, e->values}, *a, answer, {});
+    check::Verdict v;
+    try {
+      v = check::judge({e->key, table, e->values}, *a, answer, {});
+    } catch (const InputError& error) {
+      // The judge names the command line's option; on the page the answer box is the field.
+      const std::string field = "--answer: ";
+      const std::string what = error.what();
+      throw InputError(what.rfind(field, 0) == 0 ? "answer: " + what.substr(field.size()) : what);
+    }
     send_json(res, json{{"correct", v.correct}, {"verdict", v.line}, {"feedback", v.feedback}}.dump());
   }
 };

@@ -28,14 +28,26 @@ const PartSpec* spec_of(const Problem& problem, const std::string& id) {
 }  // namespace
 
 std::string student_view_json(const Problem& problem, const Key& key,
-                              std::optional<long> variant) {
+                              std::optional<long> variant,
+                              const std::vector<std::string>& assignments) {
   json parameters = json::array();
   for (const auto& p : key.parameters) {
-    parameters.push_back({{"name", p.name},
-                          {"latex", p.latex},
-                          {"value", format_number(p.value)},
-                          {"unit", p.unit},
-                          {"description", p.description}});
+    json row = {{"name", p.name},
+                {"latex", p.latex},
+                {"value", format_number(p.value)},
+                {"unit", p.unit},
+                {"description", p.description}};
+    for (const auto& a : assignments) {
+      const auto eq = a.find('=');
+      const std::string drawn = a.substr(eq + 1);
+      if (a.substr(0, eq) != p.name || drawn.size() < 4 ||
+          drawn.compare(drawn.size() - 3, 3, "deg") != 0) {
+        continue;
+      }
+      // An angle drawn in whole degrees: as the handout shows it.
+      row["shown"] = drawn.substr(0, drawn.size() - 3) + "° = " + format_number(p.value) + " rad";
+    }
+    parameters.push_back(row);
   }
   json parts = json::array();
   for (const auto& part : key.parts) {

@@ -6,6 +6,7 @@
 /// hint's text (that comes on request after tries): served to anyone.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "problem/problem.hpp"
 #include "solvers/key.hpp"
@@ -13,9 +14,11 @@
 namespace wobble::web {
 
 /// `key` is the problem's key at the variant's values (its answers are not read beyond their
-/// names, units, kinds and shapes).
+/// names, units, kinds and shapes); `assignments` the variant's "NAME=VALUE" as drawn, so that
+/// a value shows as the handout shows it ("16°" with its radians).
 std::string student_view_json(const Problem& problem, const Key& key,
-                              std::optional<long> variant);
+                              std::optional<long> variant,
+                              const std::vector<std::string>& assignments);
 
 /// The problem list: [{"id", "title"}], in the catalog's order.
 std::string problem_list_json(const std::vector<Problem>& problems);

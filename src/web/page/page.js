@@ -15,6 +15,18 @@ function el(tag, attrs, ...children) {
   return e;
 }
 
+// Units as a reader writes them: kg m^2/s -> kg m²/s.
+function prettyUnit(unit) {
+  const sup = {'-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶',
+               '7': '⁷', '8': '⁸', '9': '⁹'};
+  return unit.replace(/\^(-?\d+)/g, (m, p) => [...p].map(c => sup[c]).join(''));
+}
+
+// Text with `code` spans as <code>, the rest as text (never parsed as HTML).
+function withCode(text) {
+  return text.split('`').map((piece, i) => i % 2 ? el('code', {}, piece) : piece);
+}
+
 function typeset(node) {
   renderMathInElement(node, {
     delimiters: [{left: '$', right: '$', display: false}],
@@ -38,7 +50,7 @@ async function showList() {
 
 function parameterRow(p) {
   const name = el('td', {}, '$' + p.latex + '$');
-  return el('tr', {}, name, el('td', {}, p.value + (p.unit ? ' ' + p.unit : '')),
+  return el('tr', {}, name, el('td', {}, p.shown || (p.value + (p.unit ? ' ' + prettyUnit(p.unit) : ''))),
             el('td', {class: 'unit'}, p.description));
 }
 
@@ -52,7 +64,7 @@ async function showProblem(id, variant) {
   box.addEventListener('change', () => {
     location.hash = '#/' + id + (box.value ? '/' + box.value : '');
   });
-  const statement = el('div', {class: 'statement'}, view.statement);
+  const statement = el('div', {class: 'statement'}, ...withCode(view.statement));
   const values = el('table', {class: 'values'}, ...view.parameters.map(parameterRow));
   const parts = view.parts.map(part => partView(id, variant, part, state, () => {
     summary.textContent = state.right + ' of ' + state.total + ' answers right';
@@ -61,7 +73,7 @@ async function showProblem(id, variant) {
                        el('div', {class: 'variant'}, 'Variant ', box), values, ...parts, summary);
   typeset(main);
   const first = main.querySelector('.answer input');
-  if (first) first.focus();
+  if (first) first.focus({preventScroll: true});
 }
 
 function partView(id, variant, part, state, update) {
@@ -69,6 +81,14 @@ function partView(id, variant, part, state, update) {
                                               part.question));
   let wrong = 0;
   const hint = el('div', {class: 'hint', hidden: ''});
+  // After the second wrong try in this part, its hint.
+  async function wrongTry() {
+    if (++wrong < 2 || !part.has_hint || !hint.hidden) return;
+    const h = await getJson('api/problems/' + encodeURIComponent(id) + '/hint?part=' +
+                            encodeURIComponent(part.id));
+    hint.textContent = 'Hint: ' + h.hint;
+    hint.hidden = false;
+  }
   for (const a of part.answers) {
     state.total += 1;
     const input = el('input', {type: 'text', autocomplete: 'off', spellcheck: 'false',
@@ -85,12 +105,7 @@ function partView(id, variant, part, state, update) {
         verdict.className = 'verdict ' + (v.correct ? 'right' : 'wrong');
         verdict.textContent = [v.verdict, ...v.feedback].join(' — ');
         if (v.correct && !counted) { counted = true; state.right += 1; update(); }
-        if (!v.correct && ++wrong >= 2 && part.has_hint && hint.hidden) {
-          const h = await getJson('api/problems/' + encodeURIComponent(id) + '/hint?part=' +
-                                  encodeURIComponent(part.id));
-          hint.textContent = 'Hint: ' + h.hint;
-          hint.hidden = false;
-        }
+        if (!v.correct) await wrongTry();
         if (v.correct) {
           const inputs = [...main.querySelectorAll('.answer input')];
           const next = inputs[inputs.indexOf(input) + 1];
@@ -99,9 +114,10 @@ function partView(id, variant, part, state, update) {
       } catch (e) {
         verdict.className = 'verdict wrong';
         verdict.textContent = e.message;
+        await wrongTry();  // an answer the judge cannot read is a try too
       }
     });
-    const unit = a.unit ? ' [' + a.unit + ']' : '';
+    const unit = a.unit ? ' [' + prettyUnit(a.unit) + ']' : '';
     const shape = a.shape === 'vector' ? ' (a vector [x, y, z])' :
                   a.shape === 'matrix' ? ' (a matrix [[..], [..], [..]])' : '';
     div.append(el('div', {class: 'answer'}, el('label', {}, a.name + unit + shape), input, verdict));
