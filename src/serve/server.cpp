@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include <sys/socket.h>
+
 #include "check/judge.hpp"
 #include "core/input_error.hpp"
 #include "problem/values.hpp"
@@ -57,6 +59,7 @@ struct Entry {
   std::vector<std::string> assignments;  ///< the variant's NAME=VALUE as drawn
   sym::Values values;
   Key key;
+  sym::SymbolTable table;  ///< the problem's symbols, made once (used under the work lock)
 };
 }  // namespace
 
@@ -71,6 +74,7 @@ struct Server::Impl {
   ServeOptions options;
   httplib::Server http;
   std::mutex work;  // GiNaC is not thread-safe: solving and judging one at a time
+  int listening = -1;
   std::map<std::pair<std::string, long>, std::shared_ptr<const Entry>> keys;
 
   const Problem& problem(const std::string& id) const {
@@ -89,7 +93,8 @@ struct Server::Impl {
     sym::Values values = parameter_values(p, assignments);
     Key key = solve(p, values);
     key.variant = variant;
-    auto e = std::make_shared<const Entry>(Entry{assignments, std::move(values), std::move(key)});
+    auto e = std::make_shared<const Entry>(
+        Entry{assignments, std::move(values), std::move(key), p.symbol_table()});
     keys.emplace(at, e);
     return e;
   }
@@ -217,10 +222,9 @@ struct Server::Impl {
       return send_error(res, 404, fmt::format("part {} has no answer '{}'", part_id,
                                               name.substr(0, 40)));
     }
-    const sym::SymbolTable table = p.symbol_table();
     check::Verdict v;
     try {
-      v = check::judge({e->key, table, e->values}, *a, answer, {});
+      v = check::judge({e->key, e->table, e->values}, *a, answer, {});
     } catch (const InputError& error) {
       // The judge names the command line's option; on the page the answer box is the field.
       const std::string field = "--answer: ";
@@ -234,10 +238,23 @@ struct Server::Impl {
 Server::Server(ServeOptions options) : impl_(std::make_unique<Impl>()) {
   impl_->options = std::move(options);
   if (impl_->options.token.empty()) impl_->options.token = new_token();
+  // The listening socket: reusable right after a restart (not shared with another process, as
+  // SO_REUSEPORT would allow), and remembered to widen its backlog once bound (bind()).
+  impl_->http.set_socket_options([this](int sock) {
+    const int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    impl_->listening = sock;
+  });
   impl_->http.set_payload_max_length(kMaxBody);
   impl_->http.set_read_timeout(kReadTimeoutSeconds, 0);
   impl_->http.set_write_timeout(kReadTimeoutSeconds, 0);
   impl_->http.set_keep_alive_timeout(kReadTimeoutSeconds);
+  impl_->http.set_keep_alive_max_count(1000);
+  impl_->http.set_tcp_nodelay(true);  // no 40 ms wait for a delayed ACK between header and body
+  // A student's browser keeps its connection open between checks and holds a worker meanwhile;
+  // enough workers that a class's connections are served at once (the work itself is serialised
+  // below, so they mostly wait on the network).
+  impl_->http.new_task_queue = [] { return new httplib::ThreadPool(kWorkers); };
   impl_->routes();
 }
 
@@ -252,6 +269,9 @@ int Server::bind() {
                                  "machine's address)",
                                  o.host, o.port));
   }
+  // cpp-httplib listens with a backlog of 5: a class connecting at once would overflow it
+  // (connections dropped, or stalled for a minute). Listening again sets the backlog.
+  if (impl_->listening >= 0) ::listen(impl_->listening, kListenBacklog);
   return port;
 }
 

@@ -31,6 +31,10 @@ namespace wobble::serve {
 inline constexpr std::size_t kMaxBody = 16 * 1024;
 /// A connection that sends nothing for this long is closed.
 inline constexpr int kReadTimeoutSeconds = 5;
+/// Connections served at once: a class of a few hundred, each browser keeping one open.
+inline constexpr std::size_t kWorkers = 256;
+/// Connections waiting to be accepted: a class arriving at once.
+inline constexpr int kListenBacklog = 1024;
 /// Keys kept at once; beyond, the cache starts again (a class uses a few hundred).
 inline constexpr std::size_t kMaxCachedKeys = 4096;
 
