@@ -14,18 +14,6 @@ namespace wobble::exports {
 namespace {
 using nlohmann::json;
 
-const char* shape_name(Value::Shape s) {
-  switch (s) {
-    case Value::Shape::scalar:
-      return "scalar";
-    case Value::Shape::vector:
-      return "vector";
-    case Value::Shape::matrix:
-      return "matrix";
-  }
-  return "scalar";
-}
-
 json answer_json(const GradedAnswer& g) {
   const Answer& a = g.answer;
   json mistakes = json::array();

@@ -44,6 +44,15 @@ const char* sign_name(SignConvention s) {
   return "?";
 }
 
+const char* shape_name(Value::Shape s) {
+  switch (s) {
+    case Value::Shape::scalar: return "scalar";
+    case Value::Shape::vector: return "vector";
+    case Value::Shape::matrix: return "matrix";
+  }
+  return "?";
+}
+
 void append_steps(PartKey& part, const std::vector<Step>& steps) {
   for (const auto& s : steps) {
     bool seen = false;

@@ -74,6 +74,8 @@ enum class SignConvention {
 const char* kind_name(AnswerKind k);
 const char* frame_name(AnswerFrame f);
 const char* sign_name(SignConvention s);
+/// "scalar", "vector" or "matrix": how a value is typed (the exports and the page's inputs).
+const char* shape_name(Value::Shape s);
 
 struct Answer {
   std::string name;

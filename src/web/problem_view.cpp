@@ -7,18 +7,6 @@ namespace wobble::web {
 namespace {
 using nlohmann::json;
 
-const char* shape_name(Value::Shape s) {
-  switch (s) {
-    case Value::Shape::scalar:
-      return "scalar";
-    case Value::Shape::vector:
-      return "vector";
-    case Value::Shape::matrix:
-      return "matrix";
-  }
-  return "scalar";
-}
-
 const PartSpec* spec_of(const Problem& problem, const std::string& id) {
   for (const auto& p : problem.parts) {
     if (p.id == id) return &p;
