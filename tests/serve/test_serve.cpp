@@ -257,17 +257,7 @@ LoadResult class_at_work(const Running& r, int students, int checks_each) {
         out.latency_ms.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count());
-        if (!res || res->status >= 500) {
-          ++out.errors;
-          if (std::getenv("WOBBLE_LOAD_DEBUG")) {
-            std::fprintf(stderr, "%s after %.0f ms (request %zu)\n",
-                         res ? std::to_string(res->status).c_str()
-                             : httplib::to_string(res.error()).c_str(),
-                         std::chrono::duration<double, std::milli>(
-                             std::chrono::steady_clock::now() - start).count(),
-                         out.latency_ms.size());
-          }
-        }
+        if (!res || res->status >= 500) ++out.errors;
         return res;
       };
       const auto view = timed([&] { return c.Get(("/api/problems/" + id + "?variant=" + variant).c_str()); });
