@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "core/input_error.hpp"
 #include "core/work_budget.hpp"
+#include "problem/scene.hpp"
 #include "serve/server.hpp"
 #include "solvers/catalog.hpp"
 
@@ -53,6 +54,7 @@ int run_serve(const ServeOptions& opt) {
   so.host = opt.host;
   so.port = opt.port;
   so.problems = problems_of(opt.problems);
+  so.scenes = load_scenes();
   const std::size_t count = so.problems.size();
   so.reveal = opt.reveal;
   serve::Server server(std::move(so));
@@ -66,8 +68,8 @@ int run_serve(const ServeOptions& opt) {
   if (opt.reveal) {
     fmt::print("keys: shown to everyone (--reveal)\n");
   } else {
-    fmt::print("instructor token: {} (keys: {}api/problems/ID/key?token={})\n", server.token(),
-               url, server.token());
+    fmt::print("instructor: {}?token={} (the page with the keys; the token is {})\n", url,
+               server.token(), server.token());
   }
   std::fflush(stdout);
   std::atomic<bool> done{false};

@@ -117,6 +117,16 @@ struct ServeOptions {
 void setup_serve(CLI::App& app, ServeOptions& opt);
 int run_serve(const ServeOptions& opt);  ///< serves until Ctrl-C
 
+struct PageOptions {
+  std::string problem;  ///< an id or a .toml file
+  std::optional<long> variant;
+  bool key = false;  ///< the answers too (an instructor's page)
+  std::string out;
+  bool force = false;
+};
+void setup_page(CLI::App& app, PageOptions& opt);
+int run_page(const PageOptions& opt);
+
 struct ExportOptions {
   std::vector<std::string> problems;  ///< ids or .toml files (several for PrairieLearn)
   std::string variants;               ///< "A-B"; empty: the system's default

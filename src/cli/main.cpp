@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   WorksheetOptions worksheet_opt;
   ExportOptions export_opt;
   ServeOptions serve_opt;
+  PageOptions page_opt;
   CLI::App* list = app.add_subcommand("list", "List the problems with their titles");
   CLI::App* solve = app.add_subcommand("solve", "Print the worked key of a problem");
   CLI::App* keys = app.add_subcommand("keys", "Check or update the golden keys in solutions/");
@@ -60,6 +61,9 @@ int main(int argc, char** argv) {
   CLI::App* server = app.add_subcommand(
       "serve", "Serve the worksheet to a class in the browser (math typeset, answers judged)");
   setup_serve(*server, serve_opt);
+  CLI::App* page = app.add_subcommand(
+      "page", "Write a problem's page as one HTML file (3-D motion, typeset math; no server)");
+  setup_page(*page, page_opt);
 
   // CLI11 would only say "a subcommand is required"; name the word the user typed instead.
   const auto known =
@@ -67,7 +71,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && argv[1][0] != '-' && known.empty()) {
     fmt::print(stderr,
                "wobble: unknown command '{}' (commands: list, solve, check, worksheet, simulate, "
-               "bench, keys, export, serve; "
+               "bench, keys, export, serve, page; "
                "see --help)\n",
                argv[1]);
     return kExitBadInput;
@@ -108,6 +112,7 @@ int main(int argc, char** argv) {
     if (worksheet->parsed()) return run_worksheet(worksheet_opt);
     if (exporter->parsed()) return run_export(export_commands, export_opt);
     if (server->parsed()) return run_serve(serve_opt);
+    if (page->parsed()) return run_page(page_opt);
   } catch (const wobble::Interrupted&) {
     fmt::print(stderr, "wobble: interrupted; no file was left half-written\n");
     return kExitInterrupted;

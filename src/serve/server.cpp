@@ -15,6 +15,7 @@
 #include "render/render.hpp"
 #include "solvers/solve.hpp"
 #include "web/assets.hpp"
+#include "web/motion.hpp"
 #include "web/problem_view.hpp"
 // Last: it includes <resolv.h>, whose _res macro breaks Eigen's headers after it.
 #include <httplib.h>
@@ -76,6 +77,7 @@ struct Server::Impl {
   std::mutex work;  // GiNaC is not thread-safe: solving and judging one at a time
   int listening = -1;
   std::map<std::pair<std::string, long>, std::shared_ptr<const Entry>> keys;
+  std::map<std::pair<std::string, long>, std::string> motions;  ///< by (id, variant or 0)
 
   const Problem& problem(const std::string& id) const {
     for (const auto& p : options.problems) {
@@ -97,6 +99,15 @@ struct Server::Impl {
         Entry{assignments, std::move(values), std::move(key), p.symbol_table()});
     keys.emplace(at, e);
     return e;
+  }
+
+  // The motion of (id, variant), computed once by `make`. Call with `work` held.
+  template <class Make>
+  const std::string& motion(const std::string& id, std::optional<long> variant, Make make) {
+    const auto at = std::make_pair(id, variant.value_or(0));
+    if (auto it = motions.find(at); it != motions.end()) return it->second;
+    if (motions.size() >= kMaxCachedKeys) motions.clear();
+    return motions.emplace(at, make()).first->second;
   }
 
   bool instructor(const httplib::Request& req) const {
@@ -169,6 +180,45 @@ struct Server::Impl {
                  std::lock_guard lock(work);
                  send_json(res, render_json(entry(p, variant)->key));
                });
+             });
+    http.Get("/api/problems/([^/]+)/motion",
+             [this](const httplib::Request& req, httplib::Response& res) {
+               with_problem(req, res, [&](const Problem& p) {
+                 if (!web::has_motion(p)) {
+                   return send_error(res, 404, fmt::format("problem {} has no motion to show",
+                                                           p.id));
+                 }
+                 const auto variant = read_variant(req.get_param_value("variant"));
+                 std::lock_guard lock(work);
+                 send_json(res, motion(p.id, variant, [&] {
+                   return web::problem_motion_json(p, entry(p, variant)->assignments);
+                 }));
+               });
+             });
+    http.Get("/api/session", [this](const httplib::Request& req, httplib::Response& res) {
+      send_json(res, json{{"key", instructor(req)}}.dump());
+    });
+    http.Get("/api/scenes", [this](const httplib::Request&, httplib::Response& res) {
+      json list = json::array();
+      for (const auto& s : options.scenes) {
+        list.push_back({{"id", s.model.id}, {"title", s.model.title}});
+      }
+      send_json(res, list.dump());
+    });
+    http.Get("/api/scenes/([^/]+)/motion",
+             [this](const httplib::Request& req, httplib::Response& res) {
+               const std::string id = req.matches[1];
+               for (const auto& s : options.scenes) {
+                 if (s.model.id != id) continue;
+                 try {
+                   std::lock_guard lock(work);
+                   return send_json(res, motion("scene:" + id, std::nullopt,
+                                                [&] { return web::scene_motion_json(s); }));
+                 } catch (const InputError& e) {
+                   return send_error(res, 400, e.what());
+                 }
+               }
+               send_error(res, 404, fmt::format("no scene '{}'", id.substr(0, 80)));
              });
     http.Post("/api/problems/([^/]+)/check",
               [this](const httplib::Request& req, httplib::Response& res) {

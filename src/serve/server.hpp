@@ -11,19 +11,25 @@
 ///                                           judge's verdict: {"correct", "verdict", "feedback"}
 ///   GET  /api/problems/ID/hint?part=P       {"hint"}
 ///   GET  /api/problems/ID/key[?variant=N]   the JSON key: instructors only (the token)
+///   GET  /api/problems/ID/motion[?variant=N] the motion for the 3-D view (web/motion.hpp);
+///                                           404 for a problem without one
+///   GET  /api/session[?token=T]             {"key": whether this request may see keys}
+///   GET  /api/scenes                        [{"id", "title"}]
+///   GET  /api/scenes/ID/motion              a scene's motion at its defaults
 ///
 /// Answers and keys are never sent to a student: the key endpoint answers only with the token
 /// the server prints at start (header "Authorization: Bearer TOKEN" or ?token=), or to everyone
 /// when started with `reveal` (self-study). Every request is validated: a 4xx with
 /// {"error": "..."} for malformed JSON, a body over kMaxBody, an unknown problem, part or
 /// answer, a bad variant; a client that sends nothing is dropped after kReadTimeout. The keys
-/// are computed once per (problem, variant) and kept (up to kMaxCachedKeys). GiNaC is not
+/// and motions are computed once per (problem, variant) and kept (up to kMaxCachedKeys). GiNaC is not
 /// thread-safe, so solving and judging run one at a time (each takes milliseconds).
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "problem/problem.hpp"
+#include "problem/scene.hpp"
 
 namespace wobble::serve {
 
@@ -42,6 +48,7 @@ struct ServeOptions {
   std::string host = "127.0.0.1";
   int port = 8080;  ///< 0: any free port
   std::vector<Problem> problems;
+  std::vector<Scene> scenes;
   bool reveal = false;  ///< keys for everyone (self-study)
   std::string token;    ///< the instructor's token (empty: one is drawn)
 };

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "simulate/problem_scene.hpp"
 #include "simulate/simulation.hpp"
 
 namespace wobble {
@@ -54,11 +55,7 @@ CrossCheck cross_check_torque_free(const Problem& problem, const sym::Values& va
     return none;
   }
   // The problem as a scene: w(0) = omega (sin alpha, 0, cos alpha) in the body, body = space.
-  Scene scene;
-  scene.model = problem;
-  const std::string w = "(" + problem.motion->at("omega") + ")",
-                    a = "(" + problem.motion->at("alpha") + ")";
-  scene.omega = {w + "*sin" + a, "0", w + "*cos" + a};
+  Scene scene = *motion_scene(problem);
   scene.t_end = fmt::format("{:.17g}", kCrossCheckSpan * t_max);
   scene.samples = kCrossCheckSamples;
   scene.tolerance = kCrossCheckTolerance;

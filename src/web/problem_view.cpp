@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "web/motion.hpp"
+
 namespace wobble::web {
 
 namespace {
@@ -58,7 +60,8 @@ std::string student_view_json(const Problem& problem, const Key& key,
   }
   json view = {{"id", problem.id},     {"title", problem.title},
                {"statement", problem.statement}, {"notes", key.notes},
-               {"parameters", parameters}, {"parts", parts}};
+               {"parameters", parameters}, {"parts", parts},
+               {"has_motion", has_motion(problem)}};
   view["variant"] = variant ? json(*variant) : json(nullptr);
   return view.dump();
 }

@@ -1,10 +1,19 @@
 // The worksheet in the browser: the problem list, a problem with its statement typeset by KaTeX,
-// its values for a variant, an input per answer judged by the server (the same judge as
-// `wobble check`), the hint after two wrong tries, and a summary. The URL holds the problem and
-// the variant (#/ID/N), so a reload comes back to the same place.
+// its values for a variant, its motion in 3-D (view3d.js), an input per answer judged by the
+// server (the same judge as `wobble check`), the hint after two wrong tries, and a summary. The
+// URL holds the problem and the variant (#/ID/N), so a reload comes back to the same place.
+// With the instructor's token in the address (?token=...) or a server started with --reveal,
+// each answer shows the key as well.
+//
+// Written by `wobble page` as one file, the page carries its problem in WOBBLE_DATA (view,
+// motion, and the key only if asked for) and needs no server: the statement, values, the 3-D
+// view and the questions, without the judge.
 'use strict';
 
 const main = document.getElementById('main');
+const offline = typeof WOBBLE_DATA !== 'undefined';
+const token = new URLSearchParams(location.search).get('token');
+let current = null;  // the 3-D view shown, stopped when the page moves on
 
 function el(tag, attrs, ...children) {
   const e = document.createElement(tag);
@@ -22,9 +31,11 @@ function prettyUnit(unit) {
   return unit.replace(/\^(-?\d+)/g, (m, p) => [...p].map(c => sup[c]).join(''));
 }
 
-// Text with `code` spans as <code>, the rest as text (never parsed as HTML).
+// Text with `code` spans as <code> and **strong** spans as <strong>, the rest as text (never
+// parsed as HTML).
 function withCode(text) {
-  return text.split('`').map((piece, i) => i % 2 ? el('code', {}, piece) : piece);
+  return text.split('`').flatMap((piece, i) => i % 2 ? [el('code', {}, piece)] :
+    piece.split('**').map((part, j) => j % 2 ? el('strong', {}, part) : part));
 }
 
 function typeset(node) {
@@ -43,9 +54,39 @@ async function getJson(url, options) {
 
 async function showList() {
   const problems = await getJson('api/problems');
-  main.replaceChildren(el('h1', {}, 'Problems'),
-    el('ul', {class: 'problems'}, ...problems.map(p =>
-      el('li', {}, el('a', {href: '#/' + p.id}, p.title), el('span', {class: 'id'}, p.id)))));
+  const scenes = await getJson('api/scenes');
+  const list = (items, prefix) => el('ul', {class: 'problems'}, ...items.map(p =>
+    el('li', {}, el('a', {href: '#/' + prefix + p.id}, p.title), el('span', {class: 'id'}, p.id))));
+  main.replaceChildren(el('h1', {}, 'Problems'), list(problems, ''),
+                       el('h2', {}, 'Motions'), list(scenes, 'scene/'));
+}
+
+// A motion section: the 3-D view of `motion` (JSON from the server or the file).
+function motionSection(motion) {
+  current = motionView(motion);
+  return el('section', {class: 'motion-section'}, el('h2', {}, 'The motion'), current.element);
+}
+
+async function showScene(id) {
+  const motion = await getJson('api/scenes/' + encodeURIComponent(id) + '/motion');
+  main.replaceChildren(el('h1', {}, motion.title), motionSection(motion));
+}
+
+// The key of a problem for an instructor (null for a student: the server refuses without the
+// token, and the page does not ask).
+async function keyFor(id, query) {
+  if (offline) return WOBBLE_DATA.key || null;
+  const session = await getJson('api/session' + (token ? '?token=' + encodeURIComponent(token) : ''));
+  if (!session.key) return null;
+  const sep = query ? '&' : '?';
+  return getJson('api/problems/' + encodeURIComponent(id) + '/key' + query +
+                 (token ? sep + 'token=' + encodeURIComponent(token) : ''));
+}
+
+function keyLine(answer) {
+  const value = Array.isArray(answer.value) ? JSON.stringify(answer.value) : String(answer.value);
+  return el('div', {class: 'key-answer'}, 'Key: ', answer.latex ? '$' + answer.latex + '$ = ' : '',
+            value + (answer.unit ? ' ' + prettyUnit(answer.unit) : ''));
 }
 
 function parameterRow(p) {
@@ -56,7 +97,10 @@ function parameterRow(p) {
 
 async function showProblem(id, variant) {
   const query = variant ? '?variant=' + variant : '';
-  const view = await getJson('api/problems/' + encodeURIComponent(id) + query);
+  const view = offline ? WOBBLE_DATA.view : await getJson('api/problems/' + encodeURIComponent(id) + query);
+  const motion = !view.has_motion ? null : offline ? WOBBLE_DATA.motion :
+                 await getJson('api/problems/' + encodeURIComponent(id) + '/motion' + query);
+  const key = await keyFor(id, query);
   const state = {right: 0, total: 0};
   const summary = el('p', {class: 'summary'});
   const box = el('input', {type: 'number', min: '1', max: '1000000', value: variant || '',
@@ -66,17 +110,21 @@ async function showProblem(id, variant) {
   });
   const statement = el('div', {class: 'statement'}, ...withCode(view.statement));
   const values = el('table', {class: 'values'}, ...view.parameters.map(parameterRow));
-  const parts = view.parts.map(part => partView(id, variant, part, state, () => {
+  const keyParts = key ? Object.fromEntries(key.parts.map(p => [p.id, p])) : {};
+  const parts = view.parts.map(part => partView(id, variant, part, state, keyParts[part.id], () => {
     summary.textContent = state.right + ' of ' + state.total + ' answers right';
   }));
-  main.replaceChildren(el('h1', {}, view.title), statement,
-                       el('div', {class: 'variant'}, 'Variant ', box), values, ...parts, summary);
+  const variantLine = offline ? el('div', {class: 'variant'}, view.variant ? 'Variant ' + view.variant : '')
+                              : el('div', {class: 'variant'}, 'Variant ', box);
+  main.replaceChildren(el('h1', {}, view.title), statement, variantLine, values,
+                       ...(motion ? [motionSection(motion)] : []), ...parts,
+                       ...(offline ? [] : [summary]));
   typeset(main);
   const first = main.querySelector('.answer input');
   if (first) first.focus({preventScroll: true});
 }
 
-function partView(id, variant, part, state, update) {
+function partView(id, variant, part, state, partKey, update) {
   const div = el('div', {class: 'part'}, el('p', {}, el('strong', {}, '(' + part.id + ') '),
                                               part.question));
   let wrong = 0;
@@ -90,6 +138,13 @@ function partView(id, variant, part, state, update) {
     hint.hidden = false;
   }
   for (const a of part.answers) {
+    const keyed = partKey && partKey.answers.find(k => k.name === a.name);
+    if (offline) {
+      // No judge without the server: the answer's name and unit, and the key if it was asked for.
+      div.append(el('div', {class: 'answer'}, el('label', {}, a.name + (a.unit ? ' [' + prettyUnit(a.unit) + ']' : '')),
+                    ...(keyed ? [keyLine(keyed)] : [])));
+      continue;
+    }
     state.total += 1;
     const input = el('input', {type: 'text', autocomplete: 'off', spellcheck: 'false',
                                'data-answer': a.name});
@@ -120,17 +175,23 @@ function partView(id, variant, part, state, update) {
     const unit = a.unit ? ' [' + prettyUnit(a.unit) + ']' : '';
     const shape = a.shape === 'vector' ? ' (a vector [x, y, z])' :
                   a.shape === 'matrix' ? ' (a matrix [[..], [..], [..]])' : '';
-    div.append(el('div', {class: 'answer'}, el('label', {}, a.name + unit + shape), input, verdict));
+    div.append(el('div', {class: 'answer'}, el('label', {}, a.name + unit + shape), input, verdict,
+                  ...(keyed ? [keyLine(keyed)] : [])));
   }
   for (const absent of part.absent) div.append(el('p', {class: 'unit'}, absent + ' does not exist at these values'));
-  div.append(hint);
+  if (!offline) div.append(hint);
   return div;
 }
 
 async function route() {
+  if (current) current.destroy();
+  current = null;
   const [, id, variant] = location.hash.split('/');
   try {
-    if (id) await showProblem(decodeURIComponent(id), variant); else await showList();
+    if (offline) await showProblem(WOBBLE_DATA.view.id, WOBBLE_DATA.view.variant);
+    else if (id === 'scene') await showScene(decodeURIComponent(variant));
+    else if (id) await showProblem(decodeURIComponent(id), variant);
+    else await showList();
   } catch (e) {
     main.replaceChildren(el('p', {class: 'verdict wrong'}, e.message));
   }
