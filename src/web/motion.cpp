@@ -17,11 +17,18 @@ namespace wobble::web {
 namespace {
 using nlohmann::json;
 
-// 6 significant digits: a thousandth of a pixel on any screen.
+// Lengths and times: 6 significant digits, far finer than a pixel.
 double shown(double x) { return std::stod(fmt::format("{:.6g}", x)); }
+// Unit vectors, quaternions, w over |w(0)|, angles: to kDirectionStep, a hundredth of a pixel
+// on a 1000-pixel view. Absolute, as a picture's precision is: a wobble of 1e-6 rad shows as
+// none, as it does on the screen.
+double direction(double x) { return std::round(x / kDirectionStep) * kDirectionStep; }
 json vec(const Vec3& v) { return json::array({shown(v.x()), shown(v.y()), shown(v.z())}); }
+json unit_vec(const Vec3& v) {
+  return json::array({direction(v.x()), direction(v.y()), direction(v.z())});
+}
 json quat(const Quat& q) {
-  return json::array({shown(q.w()), shown(q.x()), shown(q.y()), shown(q.z())});
+  return json::array({direction(q.w()), direction(q.x()), direction(q.y()), direction(q.z())});
 }
 
 // The body as drawn, relative to the turning point, in B.
@@ -98,23 +105,58 @@ double natural_span(const SceneSetup& s, bool from_problem, double omega0) {
   return 4.0 * turn / omega0;
 }
 
+// The largest turn of the attitude between two consecutive states, rad.
+double largest_turn(const std::vector<SimState>& states) {
+  double largest = 0.0;
+  for (std::size_t k = 1; k < states.size(); ++k) {
+    largest = std::max(largest, states[k - 1].q_PtoS.angularDistance(states[k].q_PtoS));
+  }
+  return largest;
+}
+
 std::string motion_json(const Scene& scene, const sym::Values& values, bool from_problem) {
   SceneSetup s = setup_scene_at(scene, values);
   const Vec3 w0_P = s.model.omega_P(s.m0_P);
   const double omega0 = w0_P.norm();
+  // Two significant digits, rounded up: the span is "about two precessions", and does not
+  // carry a period to all its digits.
   double span = natural_span(s, from_problem, omega0);
+  if (from_problem) {
+    const double unit = std::pow(10.0, std::floor(std::log10(span)) - 1);
+    span = std::ceil(span / unit) * unit;
+  }
+  // Samples for |w(0)|; |w| changes along the motion (an asymmetric body's, a heavy top's), so
+  // the run is sampled again, finer, if a step turned further than allowed.
   int samples = std::clamp(static_cast<int>(std::ceil(span * omega0 / kMaxTurnPerSample)) + 1,
                            kMinSamples, kMaxSamples);
   if ((samples - 1) * kMaxTurnPerSample < span * omega0) {
     span = (samples - 1) * kMaxTurnPerSample / omega0;
   }
   s.t_end = span;
-  s.samples = samples;
   const MethodChoice choice = choose_method(s, from_problem ? "auto" : s.method);
-  std::vector<double> times(static_cast<std::size_t>(samples));
-  for (int k = 0; k < samples; ++k) times[k] = span * k / (samples - 1);
-  SimulationResult cost;
-  const std::vector<SimState> states = propagate(s, choice, times, cost);
+  std::vector<double> times;
+  std::vector<SimState> states;
+  for (int round = 0; round < 4; ++round) {
+    times.resize(static_cast<std::size_t>(samples));
+    for (int k = 0; k < samples; ++k) times[k] = span * k / (samples - 1);
+    SimulationResult cost;
+    s.samples = samples;
+    states = propagate(s, choice, times, cost);
+    const double turn = largest_turn(states);
+    if (turn <= kMaxTurnPerSample) break;
+    const double finer = std::ceil((samples - 1) * turn / kMaxTurnPerSample * 1.05);
+    if (finer + 1 > kMaxSamples) {
+      // As many samples as allowed, over the part of the run they cover at the allowed turn.
+      span *= (kMaxSamples - 1) / finer;
+      samples = kMaxSamples;
+    } else {
+      samples = static_cast<int>(finer) + 1;
+    }
+  }
+  if (largest_turn(states) > kMaxTurnPerSample) {
+    throw InputError(fmt::format("{}: the motion turns too fast to be shown ({:.3g} rad between "
+                                 "samples)", s.id, largest_turn(states)));
+  }
 
   const Quat q_BtoP(Mat3(s.axes_B.transpose()));
   const double w_scale = omega0 > 0.0 ? omega0 : 1.0;
@@ -123,9 +165,9 @@ std::string motion_json(const Scene& scene, const sym::Values& values, bool from
     const SimState& st = states[k];
     t.push_back(shown(times[k]));
     q.push_back(quat((st.q_PtoS * q_BtoP).normalized()));
-    w.push_back(vec(s.axes_B * s.model.omega_P(st.m_P) / w_scale));
+    w.push_back(unit_vec(s.axes_B * s.model.omega_P(st.m_P) / w_scale));
     const Vec3 L_S = st.q_PtoS * st.m_P;
-    L.push_back(vec(L_S.norm() > 0.0 ? Vec3(L_S.normalized()) : Vec3::Zero()));
+    L.push_back(unit_vec(L_S.norm() > 0.0 ? Vec3(L_S.normalized()) : Vec3::Zero()));
   }
   json out = {{"id", s.id},
               {"title", s.title},
@@ -143,11 +185,11 @@ std::string motion_json(const Scene& scene, const sym::Values& values, bool from
     const Vec3 e3_B = Vec3::UnitZ();
     const Vec3 w0_B = s.axes_B * w0_P, L0_S = s.q0_PtoS * s.m0_P;
     const Vec3 w0_S = s.q0_BtoS * w0_B;
-    out["cones"] = {{"body_axis_B", vec(e3_B)},
-                    {"body_half_angle", shown(std::atan2(e3_B.cross(w0_B).norm(), e3_B.dot(w0_B)))},
-                    {"space_axis_S", vec(L0_S.normalized())},
-                    {"space_half_angle",
-                     shown(std::atan2(L0_S.cross(w0_S).norm(), L0_S.dot(w0_S)))}};
+    out["cones"] = {
+        {"body_axis_B", unit_vec(e3_B)},
+        {"body_half_angle", direction(std::atan2(e3_B.cross(w0_B).norm(), e3_B.dot(w0_B)))},
+        {"space_axis_S", unit_vec(L0_S.normalized())},
+        {"space_half_angle", direction(std::atan2(L0_S.cross(w0_S).norm(), L0_S.dot(w0_S)))}};
   }
   return out.dump();
 }

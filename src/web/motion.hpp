@@ -9,8 +9,10 @@
 /// point (centre of mass, pivot or origin O: simulate/scene_setup.hpp) at the origin; space S
 /// is z up. Each sample holds t (s), the attitude q_BtoS as (w, x, y, z), w in the body divided
 /// by |w(0)|, and the direction of L in space. Magnitudes are left out on purpose: the samples
-/// are shown to students, and |w| or |L| can be a key's answer. Numbers carry 6 significant
-/// digits, far finer than a pixel.
+/// are shown to students, and |w| or |L| can be a key's answer. Directions, quaternions and
+/// angles are rounded to kDirectionStep, lengths and times to 6 significant digits: finer than
+/// a pixel, and never a key's value to its printed digits. (The motion itself is there to be
+/// watched: as from a film of it, a patient student can measure an angle or a period.)
 ///
 /// Sampling: every step of the attitude turns at most kMaxTurnPerSample, so slerp between two
 /// samples stays on the motion to the eye; the span shows what the motion is about (two space
@@ -25,6 +27,7 @@
 namespace wobble::web {
 
 inline constexpr double kMaxTurnPerSample = 0.2;  ///< rad
+inline constexpr double kDirectionStep = 1e-5;
 inline constexpr int kMaxSamples = 3001;
 inline constexpr int kMinSamples = 241;
 

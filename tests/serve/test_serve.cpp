@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "serve/server.hpp"
+#include "problem/scene.hpp"
 #include "solvers/catalog.hpp"
 #include "solvers/key.hpp"
 // Last: it includes <resolv.h>, whose _res macro breaks Eigen's headers after it.
@@ -29,6 +30,7 @@ struct Running {
     serve::ServeOptions o;
     o.port = 0;
     o.problems = load_catalog();
+    o.scenes = load_scenes();
     o.reveal = reveal;
     server = std::make_unique<serve::Server>(std::move(o));
     port = server->bind();
@@ -112,6 +114,11 @@ TEST_CASE("a student's responses never hold a key value, and the key needs the t
     const auto view = c.Get(("/api/problems/" + id + "?variant=2").c_str());
     bodies.push_back(view->body);
     const json view_json = json::parse(view->body);  // kept alive for the loop below
+    if (view_json["has_motion"] == true) {
+      bodies.push_back(get_json(c, "/api/problems/" + id + "/motion?variant=2").dump());
+    } else {
+      get_json(c, "/api/problems/" + id + "/motion?variant=2", 404);
+    }
     for (const auto& part : view_json["parts"]) {
       bodies.push_back(c.Get(("/api/problems/" + id + "/hint?part=" + part["id"].get<std::string>()).c_str())->body);
       for (const auto& a : part["answers"]) {
@@ -136,6 +143,10 @@ TEST_CASE("a student's responses never hold a key value, and the key needs the t
     }
   }
   CHECK(scanned > 500);
+  // The page asks whether it may show keys: not without the token.
+  CHECK(get_json(c, "/api/session")["key"] == false);
+  CHECK(get_json(c, "/api/session?token=" + r.server->token())["key"] == true);
+  CHECK(get_json(c, "/api/session?token=guess")["key"] == false);
 }
 
 TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own values") {
@@ -186,6 +197,12 @@ TEST_CASE("bad requests get a 4xx with a message, and the server keeps serving")
   CHECK(status(c.Get("/assets/%2e%2e/%2e%2e/etc/passwd")) == 404);
   CHECK(status(c.Get("/assets/katex/../page.js")) == 404);
   CHECK(status(c.Get("/nothing-here")) == 404);
+  CHECK(status(c.Get("/api/problems/no-such-problem/motion")) == 404);
+  CHECK(status(c.Get("/api/problems/box-corner/motion")) == 404);  // a problem without motion
+  CHECK(status(c.Get("/api/problems/heavy-top/motion?variant=x")) == 400);
+  CHECK(status(c.Get("/api/scenes/no-such-scene/motion")) == 404);
+  CHECK(status(c.Get("/api/scenes/../problems/motion")) == 404);
+  CHECK(status(c.Get("/api/scenes/heavy-top/motion")) == 200);
   const auto res = c.Get("/api/problems/no-such-problem");
   CHECK_THAT(res->body, Contains("\"error\""));
   CHECK(status(c.Get("/api/problems")) == 200);
