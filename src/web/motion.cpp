@@ -171,6 +171,7 @@ std::string motion_json(const Scene& scene, const sym::Values& values, bool from
   }
   json out = {{"id", s.id},
               {"title", s.title},
+              {"description", s.description},
               {"method", name_of(choice.method)},
               {"method_reason", choice.reason},
               {"turning_point", s.turning_point},

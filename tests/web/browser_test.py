@@ -8,8 +8,13 @@ Opens the problem list and a problem at a variant; the math renders (KaTeX eleme
 error); a right answer typed with Enter is accepted and the focus moves on; a wrong one gets its
 named mistake, and after the second wrong try the part's hint appears; a reload comes back to the
 same problem and variant; two browsers on different variants are judged each on their own
-values; the browser logs no error. Screenshots are written to SCREENSHOT_DIR to look at.
-Exits 77 (skipped) without the browser or its driver.
+values; the browser logs no error. The 3-D view draws (its canvas is not blank) and moves (the
+red e3 arrow's pixels are elsewhere at two times), for a problem, the heavy top, the tennis
+racket and a scene; its frames per second are measured. The instructor's page (the token in the
+address) shows the key, and every key value pasted back into its box is judged right. The page
+written by `wobble page` works from a file URL: math, 3-D view, the key only with --key.
+Screenshots are written to SCREENSHOT_DIR to look at. Exits 77 (skipped) without the browser or
+its driver.
 """
 import json
 import os
@@ -37,6 +42,13 @@ if not os.path.exists(DRIVER):
 failures = []
 
 
+START = time.monotonic()
+
+
+def stage(what):
+    print("%6.1f s  %s" % (time.monotonic() - START, what), flush=True)
+
+
 def expect(condition, message):
     if not condition:
         failures.append(message)
@@ -50,8 +62,9 @@ def fetch(url):
 
 def browser():
     options = webdriver.ChromeOptions()
+    # WebGL without a GPU: SwiftShader, which Chromium now uses only when asked.
     for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1000,1400",
-                "--disable-dev-shm-usage", "--no-proxy-server"):
+                "--disable-dev-shm-usage", "--no-proxy-server", "--enable-unsafe-swiftshader"):
         options.add_argument(arg)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     service = webdriver.chrome.service.Service(executable_path=DRIVER)
@@ -73,6 +86,58 @@ def verdict_of(driver, name):
     return box
 
 
+# The 3-D canvas read back: how many of its pixels are not the background, and where the pure red
+# of the e3 arrow is (count, centre x, centre y).
+CANVAS_PIXELS = """
+const c = document.querySelector('canvas.view3d');
+const off = document.createElement('canvas');
+off.width = c.width; off.height = c.height;
+const g = off.getContext('2d');
+g.drawImage(c, 0, 0);
+const d = g.getImageData(0, 0, c.width, c.height).data;
+let red = 0, x = 0, y = 0, drawn = 0;
+for (let i = 0; i < d.length; i += 4) {
+  const r = d[i], gr = d[i + 1], b = d[i + 2], p = i / 4;
+  if (r > 200 && gr < 70 && b < 70) { red += 1; x += p % c.width; y += Math.floor(p / c.width); }
+  if (Math.abs(r - 0xf4) + Math.abs(gr - 0xf6) + Math.abs(b - 0xfa) > 30) drawn += 1;
+}
+return [drawn / (d.length / 4), red, red ? x / red : 0, red ? y / red : 0];
+"""
+
+
+def view_at(driver, t):
+    driver.execute_script("window.wobbleView.pause(); window.wobbleView.setTime(arguments[0]);", t)
+    return driver.execute_script(CANVAS_PIXELS)
+
+
+def check_view(driver, name, shots):
+    """The 3-D view on the page drawn and moving; returns its frames per second while playing."""
+    WebDriverWait(driver, 20).until(lambda d: d.execute_script("return !!window.wobbleView"))
+    T = driver.execute_script("return window.wobbleView.duration")
+    drawn, red, x0, y0 = view_at(driver, 0.0)
+    expect(drawn > 0.02, "%s: the 3-D view is blank (%.4f of its pixels drawn)" % (name, drawn))
+    expect(red > 20, "%s: no e3 arrow at t = 0 (%d red pixels)" % (name, red))
+    driver.save_screenshot(os.path.join(shots, name + "-t0.png"))
+    _, red1, x1, y1 = view_at(driver, T / 4)
+    moved = ((x1 - x0) ** 2 + (y1 - y0) ** 2) ** 0.5
+    expect(red1 > 20 and moved > 5, "%s: e3 did not move between t = 0 and %g s (%.1f px)"
+           % (name, T / 4, moved))
+    driver.save_screenshot(os.path.join(shots, name + "-t1.png"))
+    driver.execute_script("window.wobbleView.play()")
+    before = driver.execute_script("return window.wobbleView.rendered")
+    time.sleep(2)
+    fps = (driver.execute_script("return window.wobbleView.rendered") - before) / 2
+    expect(fps > 0, "%s: the view does not animate" % name)
+    return fps
+
+
+def severe_errors(driver):
+    # The unreadable answer typed on purpose is refused with a 400, which the browser logs;
+    # anything else is an error.
+    return [e for e in driver.get_log("browser") if e["level"] == "SEVERE" and
+            not ("/check" in e["message"] and "status of 400" in e["message"])]
+
+
 def main():
     wobble, shots = sys.argv[1], sys.argv[2]
     os.makedirs(shots, exist_ok=True)
@@ -81,7 +146,7 @@ def main():
     try:
         first = server.stdout.readline()
         base = re.search(r"http://[0-9.]+:\d+/", first).group(0)
-        token = re.search(r"token: ([0-9a-f]+)", server.stdout.readline()).group(1)
+        token = re.search(r"token=([0-9a-f]+)", server.stdout.readline()).group(1)
         key = fetch(base + "api/problems/flying-plate/key?variant=5&token=" + token)
         i0 = key["parts"][0]["answers"][0]
         right = "%r %s" % (i0["value"], i0["unit"])
@@ -135,19 +200,75 @@ def main():
         answer_input(d2, "I0").send_keys(right, Keys.ENTER)
         v2 = verdict_of(d2, "I0")
         expect(v2.text.startswith("incorrect"), "variant 5's answer at the defaults: %r" % v2.text)
+        # The 3-D views: a torque-free top with its cones, the heavy top, the racket, a scene.
+        stage("worksheet done")
+        fps = {}
+        d.get(base + "#/flying-plate/5")
+        wait_for(d, ".part input")
+        fps["flying-plate"] = check_view(d, "view-flying-plate", shots)
+        for path, name in (("#/heavy-top/3", "view-heavy-top"),
+                           ("#/tennis-racket", "view-tennis-racket"),
+                           ("#/scene/wheel-brake", "view-scene-wheel-brake")):
+            d.get(base + path)
+            d.refresh()
+            wait_for(d, "canvas.view3d")
+            fps[name] = check_view(d, name, shots)
+        stage("3-D views done")
+        # The instructor's page: the key under each answer, each one judged right pasted back.
+        for other in (d, d2):
+            other.get(base)  # the list: their views stop drawing, leaving the CPU to this one
+        d3 = browser()
+        drivers.append(d3)
+        d3.get(base + "?token=" + token + "#/flying-plate/5")
+        wait_for(d3, ".key-value")
+        # Paused: software WebGL drawing 60 frames a second slows the typing (tens of seconds).
+        d3.execute_script("window.wobbleView.pause()")
+        boxes = d3.find_elements(By.CSS_SELECTOR, ".answer input")
+        values = d3.find_elements(By.CSS_SELECTOR, ".key-value")
+        expect(len(values) == len(boxes) > 5, "the key shows %d values for %d answers"
+               % (len(values), len(boxes)))
+        for box, value in zip(boxes, values):
+            box.send_keys(value.text, Keys.ENTER)
+            name = box.get_attribute("data-answer")
+            v = verdict_of(d3, name)
+            expect(v.text.startswith("correct"), "the key's %s pasted back (%r): %r"
+                   % (name, value.text, v.text))
+        d3.save_screenshot(os.path.join(shots, "instructor-flying-plate-5.png"))
+        expect(not d.find_elements(By.CSS_SELECTOR, ".key-value"), "a student sees the key")
+        stage("instructor's page done")
+        # The page as one file, opened from disk: no server, no network.
+        for problem, extra, keyed in (("heavy-top", ["--variant", "3"], False),
+                                      ("flying-plate", ["--key"], True)):
+            out = os.path.join(shots, problem + "-page.html")
+            if os.path.exists(out):
+                os.remove(out)
+            subprocess.run([wobble, "page", problem, "--out", out] + extra, check=True,
+                           stdout=subprocess.DEVNULL)
+            d4 = browser()
+            d4.get("file://" + out)
+            wait_for(d4, ".part")
+            expect(len(d4.find_elements(By.CSS_SELECTOR, ".katex")) > 0 and
+                   not d4.find_elements(By.CSS_SELECTOR, ".katex-error"),
+                   "%s page from disk: math not typeset" % problem)
+            check_view(d4, "file-" + problem, shots)
+            shown = len(d4.find_elements(By.CSS_SELECTOR, ".key-value"))
+            expect((shown > 0) == keyed, "%s page from disk: %d key values (key asked: %s)"
+                   % (problem, shown, keyed))
+            severe = severe_errors(d4)
+            expect(not severe, "%s page from disk: browser errors: %s" % (problem, severe))
+            d4.quit()
         for driver in drivers:
-            # The unreadable answer typed on purpose is refused with a 400, which the browser
-            # logs; anything else is an error.
-            severe = [e for e in driver.get_log("browser") if e["level"] == "SEVERE" and
-                      not ("/check" in e["message"] and "status of 400" in e["message"])]
+            severe = severe_errors(driver)
             expect(not severe, "browser errors: %s" % severe)
+        print("3-D view, frames per second in headless Chromium (software WebGL): " +
+              ", ".join("%s %.0f" % (k, v) for k, v in fps.items()))
     finally:
         for driver in drivers:
             driver.quit()
         server.terminate()
         server.wait(timeout=10)
-    print("browser: list, typeset math, right, named mistake, hint, reload, two variants;"
-          " screenshots in %s" % shots)
+    print("browser: list, typeset math, right, named mistake, hint, reload, two variants, 3-D"
+          " views, instructor's key, the page from disk; screenshots in %s" % shots)
     if failures:
         print("\n".join(failures))
         sys.exit(1)

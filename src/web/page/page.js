@@ -69,7 +69,10 @@ function motionSection(motion) {
 
 async function showScene(id) {
   const motion = await getJson('api/scenes/' + encodeURIComponent(id) + '/motion');
-  main.replaceChildren(el('h1', {}, motion.title), motionSection(motion));
+  main.replaceChildren(el('h1', {}, motion.title),
+                       el('div', {class: 'statement'}, ...withCode(motion.description.trim())),
+                       motionSection(motion));
+  typeset(main);
 }
 
 // The key of a problem for an instructor (null for a student: the server refuses without the
@@ -86,7 +89,7 @@ async function keyFor(id, query) {
 function keyLine(answer) {
   const value = Array.isArray(answer.value) ? JSON.stringify(answer.value) : String(answer.value);
   return el('div', {class: 'key-answer'}, 'Key: ', answer.latex ? '$' + answer.latex + '$ = ' : '',
-            value + (answer.unit ? ' ' + prettyUnit(answer.unit) : ''));
+            el('span', {class: 'key-value'}, value + (answer.unit ? ' ' + prettyUnit(answer.unit) : '')));
 }
 
 function parameterRow(p) {

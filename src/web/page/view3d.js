@@ -261,16 +261,32 @@ function addTrace(scene, quats, radius) {
   return line;
 }
 
-// w in the body over |w(0)|, its three components against t, with the present marked.
+// w in the body over |w(0)|, its three components against t, with the present marked. The
+// curves are drawn once per size into a canvas of their own; each frame copies it and adds the
+// present.
 function drawPlot(plot, motion, t, T) {
   const width = plot.clientWidth, height = plot.clientHeight;
-  if (plot.width !== Math.round(width * devicePixelRatio)) {
-    plot.width = Math.round(width * devicePixelRatio);
-    plot.height = Math.round(height * devicePixelRatio);
+  const ratio = devicePixelRatio;
+  if (!plot.curves || plot.width !== Math.round(width * ratio)) {
+    plot.width = Math.round(width * ratio);
+    plot.height = Math.round(height * ratio);
+    plot.curves = document.createElement('canvas');
+    plot.curves.width = plot.width;
+    plot.curves.height = plot.height;
+    drawCurves(plot.curves.getContext('2d'), motion, width, height, T, ratio);
   }
   const g = plot.getContext('2d');
-  g.setTransform(devicePixelRatio, 0, 0, devicePixelRatio, 0, 0);
-  g.clearRect(0, 0, width, height);
+  g.setTransform(1, 0, 0, 1, 0, 0);
+  g.clearRect(0, 0, plot.width, plot.height);
+  g.drawImage(plot.curves, 0, 0);
+  g.setTransform(ratio, 0, 0, ratio, 0, 0);
+  const x = 30 + (width - 40) * t / T;
+  g.strokeStyle = '#333'; g.lineWidth = 1;
+  g.beginPath(); g.moveTo(x, 4); g.lineTo(x, height - 4); g.stroke();
+}
+
+function drawCurves(g, motion, width, height, T, ratio) {
+  g.setTransform(ratio, 0, 0, ratio, 0, 0);
   let top = 0;
   for (const w of motion.w_B) top = Math.max(top, Math.abs(w[0]), Math.abs(w[1]), Math.abs(w[2]));
   top = top || 1;
@@ -291,6 +307,4 @@ function drawPlot(plot, motion, t, T) {
     g.fillStyle = PLOT_COLORS[c];
     g.fillText(name, width - 90 + 28 * c, 12);
   });
-  g.strokeStyle = '#333'; g.lineWidth = 1;
-  g.beginPath(); g.moveTo(x(t), 4); g.lineTo(x(t), height - 4); g.stroke();
 }
