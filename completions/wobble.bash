@@ -8,14 +8,14 @@ _wobble() {
   local i
   for ((i = 1; i < COMP_CWORD; i++)); do
     case "${COMP_WORDS[i]}" in
-      list|solve|keys|simulate|bench|check|worksheet|export|serve) cmd="${COMP_WORDS[i]}"; break ;;
+      list|solve|keys|simulate|bench|check|worksheet|export|serve|page) cmd="${COMP_WORDS[i]}"; break ;;
     esac
   done
   if [[ -z "$cmd" ]]; then
     if [[ "$prev" == --data-dir ]]; then
       COMPREPLY=($(compgen -d -- "$cur"))
     else
-      COMPREPLY=($(compgen -W "list solve check worksheet simulate bench keys export serve --data-dir --help --version" -- "$cur"))
+      COMPREPLY=($(compgen -W "list solve check worksheet simulate bench keys export serve page --data-dir --help --version" -- "$cur"))
     fi
     return
   fi
@@ -32,6 +32,7 @@ _wobble() {
     check) options="--answer --answers --format --name --set --variant --tolerance --sigfigs --help" ;;
     list) options="--solvers --help" ;;
     serve) options="--host --port --problems --reveal --help" ;;
+    page) options="--variant --key --out --force --help" ;;
     worksheet) options="--variant --set --help" ;;
     simulate) options="--set --variant --method --tolerance --samples --t-end --max-evaluations --out --plot --force --help" ;;
     bench) options="--quick --format --plot --force --help" ;;
@@ -50,7 +51,7 @@ _wobble() {
     COMPREPLY=($(compgen -W "$options" -- "$cur"))
   elif [[ "$cmd" == simulate ]]; then
     COMPREPLY=($(compgen -W "$(_wobble_ids scenes)" -- "$cur"))
-  elif [[ "$cmd" =~ ^(solve|check|worksheet|export)$ ]]; then
+  elif [[ "$cmd" =~ ^(solve|check|worksheet|export|page)$ ]]; then
     COMPREPLY=($(compgen -W "$(_wobble_ids problems)" -- "$cur"))
   fi
 }

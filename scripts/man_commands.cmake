@@ -1,7 +1,7 @@
 # Writes help2man's include file for wobble.1: a COMMANDS section with each command's --help.
 #   cmake -DWOBBLE=<program> -DOUT=<file> -P man_commands.cmake
 set(text "[COMMANDS]\n")
-foreach(cmd list solve check worksheet simulate bench keys serve "export prairielearn" "export moodle"
+foreach(cmd list solve check worksheet simulate bench keys serve page "export prairielearn" "export moodle"
             "export gradescope")
   separate_arguments(words UNIX_COMMAND "${cmd}")
   execute_process(COMMAND "${WOBBLE}" ${words} --help OUTPUT_VARIABLE help RESULT_VARIABLE rc)

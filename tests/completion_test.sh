@@ -10,7 +10,7 @@ offered() {  # words... -> what _wobble offers for the last one
   COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); COMPREPLY=(); _wobble
   printf '%s\n' "${COMPREPLY[@]}" | sort | tr '\n' ' '
 }
-for cmd in list solve check worksheet simulate bench keys serve; do  # export: its systems below
+for cmd in list solve check worksheet simulate bench keys serve page; do  # export: its systems below
   want=$( { "$exe" "$cmd" --help | grep -oE '^\s+--[a-z-]+' | tr -d ' '; echo --help; } | sort | tr '\n' ' ')
   got=$(offered wobble "$cmd" --)
   if [[ "$want" != "$got" ]]; then
