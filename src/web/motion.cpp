@@ -94,13 +94,12 @@ double natural_span(const SceneSetup& s, bool from_problem, double omega0) {
     return std::min(turn * L / mgl, 10.0 * pendulum);
   }
   if (!(omega0 > 0.0)) return 1.0;
-  const ExactFreeMotion free(s.moments, s.m0_P, s.q0_PtoS);
   if (s.symmetric) {
-    // Two turns of the body cone about the space cone: the space precession |L| / I_perp.
-    const Vec3& I = s.moments;
-    const double I_perp = I[0] == I[1] ? I[0] : I[1];
-    return 2.0 * turn * I_perp / L;
+    // Two turns of the body cone about the space cone: the space precession |L| / I_perp. The
+    // moments ascend, so the middle one is one of the equal pair.
+    return 2.0 * turn * s.moments[1] / L;
   }
+  const ExactFreeMotion free(s.moments, s.m0_P, s.q0_PtoS);
   if (std::isfinite(free.period_s())) return 2.0 * free.period_s();
   return 4.0 * turn / omega0;
 }
