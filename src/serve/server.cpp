@@ -106,7 +106,7 @@ struct Server::Impl {
   const std::string& motion(const std::string& id, std::optional<long> variant, Make make) {
     const auto at = std::make_pair(id, variant.value_or(0));
     if (auto it = motions.find(at); it != motions.end()) return it->second;
-    if (motions.size() >= kMaxCachedKeys) motions.clear();
+    if (motions.size() >= kMaxCachedMotions) motions.clear();
     return motions.emplace(at, make()).first->second;
   }
 

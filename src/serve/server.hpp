@@ -22,8 +22,9 @@
 /// when started with `reveal` (self-study). Every request is validated: a 4xx with
 /// {"error": "..."} for malformed JSON, a body over kMaxBody, an unknown problem, part or
 /// answer, a bad variant; a client that sends nothing is dropped after kReadTimeout. The keys
-/// and motions are computed once per (problem, variant) and kept (up to kMaxCachedKeys). GiNaC is not
-/// thread-safe, so solving and judging run one at a time (each takes milliseconds).
+/// and motions are computed once per (problem, variant) and kept (up to kMaxCachedKeys and
+/// kMaxCachedMotions). GiNaC is not thread-safe, so solving and judging run one at a time (each
+/// takes milliseconds).
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,8 @@ inline constexpr std::size_t kWorkers = 256;
 inline constexpr int kListenBacklog = 1024;
 /// Keys kept at once; beyond, the cache starts again (a class uses a few hundred).
 inline constexpr std::size_t kMaxCachedKeys = 4096;
+/// Motions kept at once (up to ~200 KB each: at most ~100 MB).
+inline constexpr std::size_t kMaxCachedMotions = 512;
 
 struct ServeOptions {
   std::string host = "127.0.0.1";
