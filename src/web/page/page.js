@@ -86,8 +86,13 @@ async function keyFor(id, query) {
                  (token ? sep + 'token=' + encodeURIComponent(token) : ''));
 }
 
+// A key's number as wobble's text key prints it: 10 significant digits.
+function keyNumber(x) {
+  return Array.isArray(x) ? '[' + x.map(keyNumber).join(', ') + ']' : String(Number(x.toPrecision(10)));
+}
+
 function keyLine(answer) {
-  const value = Array.isArray(answer.value) ? JSON.stringify(answer.value) : String(answer.value);
+  const value = keyNumber(answer.value);
   return el('div', {class: 'key-answer'}, 'Key: ', answer.latex ? '$' + answer.latex + '$ = ' : '',
             el('span', {class: 'key-value'}, value + (answer.unit ? ' ' + prettyUnit(answer.unit) : '')));
 }
