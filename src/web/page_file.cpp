@@ -2,7 +2,6 @@
 
 #include <boost/archive/iterators/base64_from_binary.hpp>
 #include <boost/archive/iterators/transform_width.hpp>
-#include <regex>
 #include <stdexcept>
 
 #include "web/assets.hpp"
@@ -35,52 +34,66 @@ std::string script_text(std::string_view text) {
 }
 
 // KaTeX's style with its fonts inlined: each font's woff2 as a data: URL (every browser that
-// runs the page reads woff2), the woff and ttf alternatives dropped.
+// runs the page reads woff2), the woff and ttf alternatives dropped. The style names its fonts
+// as `url(fonts/NAME.EXT) format('KIND')`, the alternatives separated by commas. (Plain string
+// search: GCC 12's <regex> does not build warning-free under the sanitizers.)
 std::string katex_style() {
-  std::string css(built_in("katex/katex.min.css"));
-  static const std::regex others(R"(,url\(fonts/[A-Za-z0-9_-]+\.(woff|ttf)\) format\('(woff|truetype)'\))");
-  css = std::regex_replace(css, others, "");
-  static const std::regex woff2(R"(url\(fonts/([A-Za-z0-9_-]+\.woff2)\))");
+  const std::string css(built_in("katex/katex.min.css"));
+  const std::string url = "url(fonts/";
   std::string out;
-  auto begin = std::sregex_iterator(css.begin(), css.end(), woff2);
   std::size_t last = 0;
-  for (auto it = begin; it != std::sregex_iterator(); ++it) {
-    out.append(css, last, it->position() - last);
-    out += "url(data:font/woff2;base64," + base64(built_in("katex/fonts/" + (*it)[1].str())) + ")";
-    last = it->position() + it->length();
+  for (std::size_t at = css.find(url); at != std::string::npos; at = css.find(url, last)) {
+    const std::size_t name_end = css.find(')', at);
+    const std::size_t format_end = css.find(')', name_end + 1);
+    if (name_end == std::string::npos || format_end == std::string::npos) {
+      throw std::logic_error("KaTeX's style names a font in a form this program does not know");
+    }
+    out.append(css, last, at - last);
+    const std::string name = css.substr(at + url.size(), name_end - at - url.size());
+    const bool woff2 = name.size() > 6 && name.compare(name.size() - 6, 6, ".woff2") == 0;
+    if (woff2) {
+      out += "url(data:font/woff2;base64," + base64(built_in("katex/fonts/" + name)) + ")";
+      out.append(css, name_end + 1, format_end + 1 - (name_end + 1));
+    } else if (!out.empty() && out.back() == ',') {
+      out.pop_back();  // the comma before an alternative dropped with it
+    }
+    last = format_end + 1;
   }
   out.append(css, last);
+  return out;
+}
+
+// Each `BEFORE PATH AFTER` of the page (PATH an asset) replaced by what `inline_asset` makes of it.
+template <class F>
+std::string replace_links(const std::string& html, const std::string& before,
+                          const std::string& after, F inline_asset) {
+  std::string out;
+  std::size_t last = 0;
+  for (std::size_t at = html.find(before); at != std::string::npos;
+       at = html.find(before, last)) {
+    const std::size_t path_end = html.find(after, at + before.size());
+    if (path_end == std::string::npos) throw std::logic_error("the page has an unclosed link");
+    out.append(html, last, at - last);
+    out += inline_asset(html.substr(at + before.size(), path_end - at - before.size()));
+    last = path_end + after.size();
+  }
+  out.append(html, last);
   return out;
 }
 }  // namespace
 
 std::string self_contained_page(const std::string& view_json, const std::string& motion_json,
                                 const std::string& key_json) {
-  std::string html(built_in("page.html"));
-  static const std::regex link(R"re(<link rel="stylesheet" href="assets/([^"]+)">)re");
-  static const std::regex script(R"re(<script src="assets/([^"]+)"></script>)re");
-  std::string out;
-  std::size_t last = 0;
-  std::smatch m;
-  for (auto it = html.cbegin(); std::regex_search(it, html.cend(), m, link);
-       it = m.suffix().first) {
-    const auto at = static_cast<std::size_t>(m.position() + (it - html.cbegin()));
-    out.append(html, last, at - last);
-    const std::string path = m[1].str();
-    out += "<style>" + (path == "katex/katex.min.css" ? katex_style() : std::string(built_in(path))) +
-           "</style>";
-    last = at + m.length();
-  }
-  out.append(html, last);
-  html.swap(out);
-  out.clear();
-  last = 0;
+  const std::string html = replace_links(
+      std::string(built_in("page.html")), "<link rel=\"stylesheet\" href=\"assets/", "\">",
+      [](const std::string& path) {
+        return "<style>" +
+               (path == "katex/katex.min.css" ? katex_style() : std::string(built_in(path))) +
+               "</style>";
+      });
   bool data_written = false;
-  for (auto it = html.cbegin(); std::regex_search(it, html.cend(), m, script);
-       it = m.suffix().first) {
-    const auto at = static_cast<std::size_t>(m.position() + (it - html.cbegin()));
-    out.append(html, last, at - last);
-    const std::string path = m[1].str();
+  return replace_links(html, "<script src=\"assets/", "\"></script>", [&](const std::string& path) {
+    std::string out;
     if (path == "view3d.js" && !data_written) {
       // The problem's data, before the page's own scripts read it.
       out += "<script>const WOBBLE_DATA = " +
@@ -90,11 +103,8 @@ std::string self_contained_page(const std::string& view_json, const std::string&
              ";</script>\n";
       data_written = true;
     }
-    out += "<script>" + script_text(built_in(path)) + "</script>";
-    last = at + m.length();
-  }
-  out.append(html, last);
-  return out;
+    return out + "<script>" + script_text(built_in(path)) + "</script>";
+  });
 }
 
 }  // namespace wobble::web
