@@ -9,8 +9,13 @@ std::string term(const Problem& p, const std::string& key) {
 }
 }  // namespace
 
+bool has_motion_scene(const Problem& problem) {
+  return problem.motion && (problem.solver == "torque_free_symmetric" ||
+                            problem.solver == "asymmetric_top" || problem.solver == "heavy_top");
+}
+
 std::optional<Scene> motion_scene(const Problem& problem) {
-  if (!problem.motion) return std::nullopt;
+  if (!has_motion_scene(problem)) return std::nullopt;
   Scene scene;
   scene.model = problem;
   if (problem.solver == "torque_free_symmetric") {
@@ -25,8 +30,6 @@ std::optional<Scene> motion_scene(const Problem& problem) {
     scene.orientation.kind = OrientationSpec::Kind::euler;
     scene.orientation.euler = {"0", problem.motion->at("theta0"), "0"};
     scene.gravity = GravitySpec{problem.motion->at("g"), {"0", "0", "0"}};
-  } else {
-    return std::nullopt;
   }
   return scene;
 }

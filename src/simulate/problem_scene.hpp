@@ -21,6 +21,10 @@
 
 namespace wobble {
 
+/// Whether the problem has a motion (a `[motion]` table and one of the solvers above): cheap,
+/// for every view of a problem.
+bool has_motion_scene(const Problem& problem);
+
 /// The problem as a scene (outputs and run settings left at their defaults), or none.
 std::optional<Scene> motion_scene(const Problem& problem);
 

@@ -195,7 +195,7 @@ std::string motion_json(const Scene& scene, const sym::Values& values, bool from
 }
 }  // namespace
 
-bool has_motion(const Problem& problem) { return motion_scene(problem).has_value(); }
+bool has_motion(const Problem& problem) { return has_motion_scene(problem); }
 
 std::string problem_motion_json(const Problem& problem,
                                 const std::vector<std::string>& assignments) {

@@ -42,7 +42,7 @@ function motionView(motion) {
   for (const part of motion.parts) {
     const scaled = Object.assign({}, part, {center: part.center.map(x => x / extent),
                                             sizes: (part.sizes || []).map(x => x / extent)});
-    bodyFrame.add(partMesh(scaled, 1, motion.turning_point === 'pivot'));
+    bodyFrame.add(partMesh(scaled, motion.turning_point === 'pivot'));
   }
 
   const arrow = (color, length) => new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1),
@@ -181,8 +181,9 @@ function partExtent(part) {
   }
 }
 
-// A part as three.js draws it, centred at its centre of mass, its axis along z.
-function partMesh(part, extent, onPivot) {
+// A part as three.js draws it, centred at its centre of mass, its axis along z; its lengths
+// relative to the body's extent (1).
+function partMesh(part, onPivot) {
   const group = new THREE.Group();
   const material = new THREE.MeshStandardMaterial({color: VIEW_COLORS.body, metalness: 0.1, roughness: 0.6});
   const mark = new THREE.MeshStandardMaterial({color: VIEW_COLORS.mark});
@@ -198,7 +199,7 @@ function partMesh(part, extent, onPivot) {
     case 'rod': mesh = alongZ(new THREE.CylinderBufferGeometry(0.02 * s[0], 0.02 * s[0], s[0], 12)); break;
     // The centre of mass of a cone is h/4 above its base; three's cone is centred at h/2.
     case 'cone': mesh = alongZ(new THREE.ConeBufferGeometry(s[0], s[1], 48).translate(0, -s[1] / 4, 0)); break;
-    default: mesh = new THREE.SphereBufferGeometry(0.06 * extent, 16, 8);
+    default: mesh = new THREE.SphereBufferGeometry(0.06, 16, 8);
   }
   group.add(new THREE.Mesh(mesh, material));
   if (['disc', 'cylinder', 'cone', 'sphere'].includes(part.shape)) {
@@ -215,7 +216,7 @@ function partMesh(part, extent, onPivot) {
   const c = new THREE.Vector3().fromArray(part.center);
   if (onPivot && c.length() > 0) {
     // The light axle from the pivot to the part.
-    const axle = new THREE.Mesh(new THREE.CylinderBufferGeometry(0.012 * extent, 0.012 * extent, c.length(), 8),
+    const axle = new THREE.Mesh(new THREE.CylinderBufferGeometry(0.012, 0.012, c.length(), 8),
                                 mark);
     axle.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), c.clone().normalize());
     axle.position.copy(c.clone().multiplyScalar(0.5));
