@@ -248,6 +248,16 @@ long resident_bytes() {
 
 constexpr int kLoadReadTimeoutSeconds = 600;
 
+// The resident size may grow between two equal rounds by the allocator's pools (a tenth of what
+// the first round left) and, under AddressSanitizer, by its quarantine: freed blocks are held
+// back from reuse up to quarantine_size_mb (256 MB by default) to catch use after free, so a
+// second round that frees as much as it allocates still raises the resident size by up to that.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr long kQuarantineBytes = 256L << 20;
+#else
+constexpr long kQuarantineBytes = 0;
+#endif
+
 struct LoadResult {
   std::vector<double> latency_ms;
   int errors = 0;
@@ -325,8 +335,8 @@ TEST_CASE("a class at work: 200 students, 20 checks each, no error, memory flat"
   CHECK(first.errors == 0);
   CHECK(second.errors == 0);
   // The keys are cached after the first round: the second holds no more memory than the first
-  // left, give or take the allocator's pools (a tenth).
-  CHECK(after_second <= after_first + after_first / 10);
+  // left, give or take the allocator's pools and the sanitizer's quarantine.
+  CHECK(after_second <= after_first + after_first / 10 + kQuarantineBytes);
   // Measured, not asserted (timings on a shared machine are noise for a test): reported here
   // and in the README.
   std::printf("load: %zu requests; first round (keys computed) p50 %.1f ms, p99 %.1f ms; "
