@@ -1,10 +1,14 @@
 #pragma once
 /// @file
-/// A 50-digit reference for the exact torque-free solution (bench and hard-case tests).
+/// 50-digit references for the exact solutions (bench and hard-case tests): the torque-free
+/// body and the heavy symmetric top.
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_3.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include "core/exact_heavy_top.hpp"
 #include "core/inertia.hpp"
 
 namespace wobble::bench {
@@ -41,6 +45,107 @@ struct MpMotion {
   /// The first time u reaches K (u0 is in [-K, K]).
   double first_K_time() const {
     return static_cast<double>((boost::math::ellint_1(k) - u0) / lambda);
+  }
+};
+
+/// The heavy top (core/exact_heavy_top.hpp's conventions) at 50 digits by a second route:
+/// the roots of f(u) polished by Newton's method on the cubic at 50 digits (started from
+/// double's), sn, cn, dn, F and Pi(n; phi | k) from Boost.Math (ellint_3, not Carlson's R_J),
+/// the Euler angles' increments reduced modulo 2 pi at 50 digits. Only the final rotations are
+/// composed in double: a few eps. For a nutating top (u1 < u2), the axis not vertical at t = 0.
+struct MpHeavyTop {
+  using mp = boost::multiprecision::cpp_bin_float_50;
+  HeavyTop top;
+  Vec3 m0;
+  Quat q0;
+  mp I1, I3, a, b, w3, beta, u0, u1, u2, u3, k, rate, tau0, theta0, Kc;
+  Vec3 nodes0;
+
+  MpHeavyTop(const HeavyTop& t, const Vec3& m, const Quat& q) : top(t), m0(m), q0(q.normalized()) {
+    I1 = top.I1_kgm2;
+    I3 = top.I3_kgm2;
+    const mp qw = q0.w(), qx = q0.x(), qy = q0.y(), qz = q0.z();
+    const mp n2 = qw * qw + qx * qx + qy * qy + qz * qz;
+    // Rows and columns of R(q) / |q|^2 as needed: e3 = R z, (R v)_z = row 3 . v.
+    const mp e3x = 2 * (qx * qz + qw * qy) / n2, e3y = 2 * (qy * qz - qw * qx) / n2;
+    u0 = (qw * qw - qx * qx - qy * qy + qz * qz) / n2;
+    const mp r31 = 2 * (qx * qz - qw * qy) / n2, r32 = 2 * (qy * qz + qw * qx) / n2;
+    const mp mx = m0.x(), my = m0.y(), mz = m0.z();
+    a = mz / I1;
+    b = (r31 * mx + r32 * my + u0 * mz) / I1;
+    w3 = mz / I3;
+    beta = 2 * mp(top.M_kg) * mp(top.g_m_s2) * mp(top.l_m) / I1;
+    const mp sin0 = sqrt(e3x * e3x + e3y * e3y);
+    theta0 = atan2(sin0, u0);
+    // thetadot = w_S . n0, n0 = (-e3y, e3x, 0) / sin0; w_S = R w_B.
+    const mp wx = mx / I1, wy = my / I1, wz = mz / I3;
+    const mp r11 = (qw * qw + qx * qx - qy * qy - qz * qz) / n2, r12 = 2 * (qx * qy - qw * qz) / n2;
+    const mp r21 = 2 * (qx * qy + qw * qz) / n2, r22 = (qw * qw - qx * qx + qy * qy - qz * qz) / n2;
+    const mp wSx = r11 * wx + r12 * wy + e3x * wz, wSy = r21 * wx + r22 * wy + e3y * wz;
+    const mp thetadot = (-e3y * wSx + e3x * wSy) / sin0;
+    const mp phidot = (b - a * u0) / (sin0 * sin0);
+    const mp alpha = thetadot * thetadot + phidot * phidot * sin0 * sin0 + beta * u0;
+    const auto f = [&](const mp& u) { return (1 - u * u) * (alpha - beta * u) - (b - a * u) * (b - a * u); };
+    const auto df = [&](const mp& u) {
+      return -2 * u * (alpha - beta * u) - beta * (1 - u * u) + 2 * a * (b - a * u);
+    };
+    const ExactHeavyTop start(top, m0, q0);
+    const auto polish = [&](mp u) {
+      for (int i = 0; i < 8; ++i) u -= f(u) / df(u);
+      return u;
+    };
+    u1 = polish(start.nutation().u_min);
+    u2 = polish(start.nutation().u_max);
+    u3 = polish(start.u3());
+    k = sqrt((u2 - u1) / (u3 - u1));
+    Kc = boost::math::ellint_1(k);
+    rate = sqrt(beta * (u3 - u1)) / 2;
+    const mp s = sqrt(std::max(mp(0), (u0 - u1) / (u2 - u1)));
+    const mp F0 = boost::math::ellint_1(k, asin(std::min(mp(1), s)));
+    tau0 = thetadot > 0 ? mp(-F0) : F0;
+    nodes0 = Vec3(static_cast<double>(-e3y / sin0), static_cast<double>(e3x / sin0), 0.0);
+  }
+
+  /// Pi(n; am tau | k), am continued past K by its quasi-period (am(tau + 2K) = am(tau) + pi).
+  mp Pi(const mp& n, const mp& tau) const {
+    const mp j = round(tau / (2 * Kc));
+    const mp r = tau - 2 * Kc * j;
+    mp cn, dn;
+    const mp sn = boost::math::jacobi_elliptic(k, r, &cn, &dn);
+    const mp am = atan2(sn, cn);
+    const mp pi = boost::math::constants::pi<mp>();
+    return boost::math::ellint_3(k, n, am) + 2 * j * boost::math::ellint_3(k, n, pi / 2);
+  }
+
+  FreeBodyState at(double t_s) const {
+    const mp t = t_s, tau = tau0 + rate * t, du = u2 - u1;
+    mp cn, dn;
+    const mp sn = boost::math::jacobi_elliptic(k, tau, &cn, &dn);
+    const mp u = u1 + du * sn * sn;
+    const mp n_plus = du / (1 - u1), n_minus = -du / (1 + u1);
+    const mp I_plus = (Pi(n_plus, tau) - Pi(n_plus, tau0)) / rate;
+    const mp I_minus = (Pi(n_minus, tau) - Pi(n_minus, tau0)) / rate;
+    const mp half_plus = (b - a) / (2 * (1 - u1)), half_minus = (b + a) / (2 * (1 + u1));
+    const mp two_pi = 2 * boost::math::constants::pi<mp>();
+    const auto reduced = [&](const mp& x) { return static_cast<double>(x - two_pi * round(x / two_pi)); };
+    const mp dphi = half_plus * I_plus + half_minus * I_minus;
+    const mp dpsi = (w3 - a) * t - half_plus * I_plus + half_minus * I_minus;
+    const mp theta = atan2(sqrt(1 - u * u), u);
+    const auto rot_z = [](double x) { return Quat(Eigen::AngleAxisd(x, Vec3::UnitZ())); };
+    const Quat turn_phi = rot_z(reduced(dphi));
+    FreeBodyState out;
+    out.q_BtoS = (turn_phi * Quat(Eigen::AngleAxisd(static_cast<double>(theta - theta0), nodes0)) *
+                  q0 * rot_z(reduced(dpsi)))
+                     .normalized();
+    // Rates at t: phi' = (b - a u)/(1 - u^2), psi' = w3 - u phi', theta' = -u'/sin.
+    const mp phidot = (b - a * u) / (1 - u * u), psidot = w3 - u * phidot;
+    const mp thetadot = -2 * du * sn * cn * dn * rate / sqrt(1 - u * u);
+    const Vec3 e3 = out.q_BtoS * Vec3::UnitZ();
+    const Vec3 w_S = static_cast<double>(phidot) * Vec3::UnitZ() +
+                     static_cast<double>(thetadot) * (turn_phi * nodes0) + static_cast<double>(psidot) * e3;
+    const Vec3 w_B = out.q_BtoS.conjugate() * w_S;
+    out.m_B = Vec3(top.I1_kgm2 * w_B.x(), top.I1_kgm2 * w_B.y(), m0.z());
+    return out;
   }
 };
 

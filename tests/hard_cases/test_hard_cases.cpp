@@ -347,3 +347,35 @@ TEST_CASE("hard 13: nearly equal moments of an exact tensor: the axes right to t
     }
   }
 }
+
+TEST_CASE("hard 14: the heavy top's closed form against 50 digits") {
+  // The bench's top P4 (released at rest at 30 degrees, spin 150 rad/s: cusps), and waves,
+  // loops and a wide slow swing of the same body.
+  const HeavyTop top{0.5, 0.08, 9.81, 0.0035125, 0.000625};
+  struct Case {
+    double theta, thetadot, phidot, psidot;
+  };
+  for (const Case c : {Case{M_PI / 6, 0, 0, 150}, Case{0.8, 0, 4, 150}, Case{0.8, 0, -3, 150},
+                       Case{0.5, -1.0, 0.5, 30}}) {
+    const Quat q0(Eigen::AngleAxisd(c.theta, Vec3::UnitY()));
+    const double st = std::sin(c.theta);
+    const Vec3 m0(-top.I1_kgm2 * c.phidot * st, top.I1_kgm2 * c.thetadot,
+                  top.I3_kgm2 * (c.phidot * std::cos(c.theta) + c.psidot));
+    const ExactHeavyTop exact(top, m0, q0);
+    const bench::MpHeavyTop ref(top, m0, q0);
+    for (const double t : {0.013, 0.5, 1.0, 2.0}) {
+      const FreeBodyState e = exact.at(t), r = ref.at(t);
+      const double dq = (e.q_BtoS.toRotationMatrix() - r.q_BtoS.toRotationMatrix()).norm();
+      const double dm = (e.m_B - r.m_B).norm() / m0.norm();
+      // Each phase the closed form accumulates (the spin w3 t, the nutation's 2 pi t / P) is
+      // rounded relative to its size, and so is its rate: a few eps per radian turned; on top,
+      // both sides compose four rotations in double (a few eps each).
+      const double turned = std::abs(m0.z() / top.I3_kgm2) * t + 2 * M_PI * t / exact.nutation_period_s();
+      const double bound = kEps * (32 + 8 * turned);
+      INFO("theta0 " << c.theta << " t " << t << ": attitude " << dq / kEps << " eps, momentum "
+                     << dm / kEps << " eps, turned " << turned << " rad");
+      CHECK(dq <= bound);
+      CHECK(dm <= bound);
+    }
+  }
+}

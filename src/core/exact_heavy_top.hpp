@@ -1,0 +1,86 @@
+#pragma once
+/// @file
+/// The heavy symmetric top solved exactly: its state at any time t, without stepping.
+///
+/// Frames and units as core/rigid_body.hpp and core/heavy_top.hpp: S has z up (against
+/// gravity), B is the body frame with e3 the symmetry axis; the pivot is B's origin and the
+/// centre of mass sits at l e3; moments (I1, I1, I3) about the pivot (kg m^2); the state is
+/// (m_B, q_BtoS). Taylor's z-y-z Euler angles, u = cos(theta).
+///
+/// The motion (Goldstein 5.7; Landau-Lifshitz 35): u' ^2 = f(u) = beta (u - u1)(u - u2)(u - u3),
+/// u1 <= u2 the nutation limits (core/heavy_top.hpp), u3 >= 1. Then
+///   u(t) = u1 + (u2 - u1) sn^2(tau, k),  tau = tau0 + tau' t,  tau'^2 = beta (u3 - u1) / 4,
+///   k^2 = (u2 - u1) / (u3 - u1) (k'^2 = (u3 - u2) / (u3 - u1) from the differences, never 1 - k^2),
+/// and the azimuth and spin rates split into partial fractions over 1 - u and 1 + u,
+///   phi' = (b - a u)/(1 - u^2) = 1/2 [(b - a)/(1 - u) + (b + a)/(1 + u)],
+///   psi' = w3 - u phi' = w3 - a - 1/2 (b - a)/(1 - u) + 1/2 (b + a)/(1 + u),
+/// with 1 -+ u = (1 -+ u1)(1 - n± sn^2), n+ = (u2 - u1)/(1 - u1), n- = -(u2 - u1)/(1 + u1), so
+/// each is a linear term plus an incomplete elliptic integral of the third kind,
+/// Pi(n; am tau) = tau + n G(tau), G continued past K through the periods (core/elliptic.hpp).
+/// The attitude follows from the Euler angles relative to the start, which never needs psi0
+/// or phi0 themselves: q(t) = Rz(dphi) Rot(n0, theta - theta0) q0 Rz(dpsi), n0 the line of
+/// nodes at t = 0.
+#include <limits>
+
+#include "core/free_body.hpp"
+#include "core/heavy_top.hpp"
+
+namespace wobble {
+
+class ExactHeavyTop {
+ public:
+  /// sleeping: the axis vertical and not moving, the body spins about it for ever (stable or
+  /// not: the exact motion never leaves it); steady: u stays at its start (steady precession);
+  /// nutating: u between the nutation limits.
+  enum class Kind { sleeping, steady, nutating };
+
+  /// @throws std::invalid_argument for an invalid top, a non-finite state, or an axis that
+  ///   starts vertical while it moves (theta is not a coordinate there; start a moment later).
+  ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& q0_BtoS);
+
+  /// The state at t (s), any t: (m_B, q_BtoS).
+  FreeBodyState at(double t_s) const;
+  /// cos(theta(t)): the height of the axis' tip on the unit sphere.
+  double u_at(double t_s) const;
+
+  Kind kind() const { return kind_; }
+  /// u1 <= u2 (and theta_max >= theta_min): the nutation limits.
+  const Nutation& nutation() const { return nutation_; }
+  /// The third root of f, >= 1.
+  double u3() const { return u3_; }
+  /// Period of theta(t) in s (infinite when theta is constant).
+  double nutation_period_s() const { return period_; }
+
+ private:
+  struct Phase {
+    double j = 0.0;                       ///< tau = r + 2 K j
+    double r = 0.0;                       ///< in [-K, K]
+    double sn = 0.0, cn = 0.0, dn = 0.0;  ///< of r
+  };
+  Phase phase(double tau) const;
+  /// (Pi(n; am tau) - tau) / n continued past K; 0 for a term that is switched off.
+  double excess(const Phase& p, double n, double complete) const;
+  /// theta(t) - theta0, phi(t) - phi0, psi(t) - psi0.
+  struct Angles {
+    double dtheta = 0.0, dphi = 0.0, dpsi = 0.0, u = 0.0, udot = 0.0;
+    double one_minus_u = 0.0, one_plus_u = 0.0;  ///< as sums of terms >= 0 (no cancellation)
+  };
+  Angles angles(double t) const;
+
+  HeavyTop top_;
+  Vec3 m0_;
+  Quat q0_;
+  Kind kind_ = Kind::sleeping;
+  Nutation nutation_{};
+  double u0_ = 1.0, theta0_ = 0.0, w3_ = 0.0, a_ = 0.0, b_ = 0.0;
+  Vec3 nodes0_S_ = Vec3::UnitY();  ///< line of nodes at t = 0
+  // nutating
+  double u3_ = std::numeric_limits<double>::infinity(), du_ = 0.0, kc2_ = 1.0, K_ = 0.0;
+  double rate_ = 0.0, tau0_ = 0.0;  ///< tau' and tau(0)
+  double period_ = std::numeric_limits<double>::infinity();
+  double n_plus_ = 0.0, n_minus_ = 0.0, c_plus_ = 0.0, c_minus_ = 0.0;  ///< c± = coefficient of G±
+  double complete_plus_ = 0.0, complete_minus_ = 0.0, G_plus0_ = 0.0, G_minus0_ = 0.0;
+  double phidot_lin_ = 0.0, psidot_lin_ = 0.0;  ///< the linear parts of phi' and psi'
+};
+
+}  // namespace wobble
