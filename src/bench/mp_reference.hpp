@@ -2,6 +2,8 @@
 /// @file
 /// 50-digit references for the exact solutions (bench and hard-case tests): the torque-free
 /// body and the heavy symmetric top.
+#include <algorithm>
+#include <array>
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_3.hpp>
@@ -16,7 +18,8 @@ namespace wobble::bench {
 // The exact solution's m(t) evaluated again at 50 digits, from the same formulas (for a body
 // with ascending moments circling its third axis): sn, cn, dn and F by Boost.Math in
 // multiprecision, where k = sqrt(1 - k'^2) keeps k'^2 = 1e-16.
-/// Valid for ascending moments I1 < I2 < I3 and m circling e3 (m3^2 (I3-I2)/I3 > m1^2 (I2-I1)/I1).
+/// Valid for moments in monotonic order (ascending or descending) with m circling e3
+/// (m3^2 (I3-I2)/I3 > m1^2 (I2-I1)/I1); mp_free_momentum turns any body into that frame.
 struct MpMotion {
   using mp = boost::multiprecision::cpp_bin_float_50;
   mp a1, a2, a3, lambda, u0, k, s1, s2, s3;
@@ -32,7 +35,7 @@ struct MpMotion {
     k = sqrt(1 - d31 * D / (d32 * B));
     s1 = m1 < 0 ? -1 : 1;
     s3 = m3 < 0 ? -1 : 1;
-    s2 = s1 * s3;
+    s2 = s1 * s3 * (d32 < 0 ? -1 : 1);  // moments descending: m circles the least axis
     u0 = boost::math::ellint_1(k, atan2(s2 * m2 / a2, abs(m1) / a1));
   }
   Vec3 m_at(double t) const {
@@ -47,6 +50,28 @@ struct MpMotion {
     return static_cast<double>((boost::math::ellint_1(k) - u0) / lambda);
   }
 };
+
+/// m(t) of any free body with three distinct moments at 50 digits: the body turned into the
+/// frame MpMotion serves (axes sorted by a proper permutation, then reversed if m circles the
+/// axis of least moment, as core/exact_free_body does) and back.
+inline Vec3 mp_free_momentum(const Vec3& I, const Vec3& m0, double t) {
+  std::array<int, 3> idx{0, 1, 2};
+  std::sort(idx.begin(), idx.end(), [&](int x, int y) { return I[x] < I[y]; });
+  Mat3 S = Mat3::Zero();
+  for (int i = 0; i < 3; ++i) S(i, idx[i]) = 1.0;
+  if (S.determinant() < 0) S.row(2) *= -1.0;
+  Vec3 J(I[idx[0]], I[idx[1]], I[idx[2]]);
+  Vec3 m = S * m0;
+  const double D = m[2] * m[2] * (J[2] - J[1]) / J[2] - m[0] * m[0] * (J[1] - J[0]) / J[0];
+  if (D < 0) {
+    Mat3 flip;
+    flip << 0, 0, 1, 0, -1, 0, 1, 0, 0;
+    S = flip * S;
+    J = Vec3(J[2], J[1], J[0]);
+    m = flip * m;
+  }
+  return S.transpose() * MpMotion(J, m).m_at(t);
+}
 
 /// The heavy top (core/exact_heavy_top.hpp's conventions) at 50 digits by a second route:
 /// the roots of f(u) polished by Newton's method on the cubic at 50 digits (started from

@@ -11,7 +11,11 @@
 /// - P2: the same over T = 1e4 (energy and |L| errors against time);
 /// - P3: near the separatrix, I = (1, 2, 3), m0 = (1e-4, 1, 1e-4), T = 200, with its measured
 ///   condition (how far a 1-ulp change of m0 moves m(T));
-/// - P4: a heavy top; reference: the tightest run of Fehlberg 7(8) (1e-14), stated as such.
+/// - P4: a heavy top.
+/// References, never the method measured: the free body's m(T) at 50 digits (bench/
+/// mp_reference.hpp; its attitude from the exact solution in double), the heavy top's closed
+/// form at 50 digits. Exact rows: the free body's and the heavy top's exact solutions (one
+/// state at T, set-up included).
 /// Error: the larger of |m(T) - m_ref(T)| / |m0| and the Frobenius distance of the attitudes.
 #include <cstdint>
 #include <string>
@@ -28,7 +32,6 @@ struct BenchProblem {
   Vec3 m0 = Vec3::Zero();
   Quat q0 = Quat::Identity();
   double T = 10.0;
-  bool exact_reference = true;  ///< torque-free: the exact solution; else the tightest rkf78
 };
 
 std::vector<BenchProblem> bench_problems();
@@ -54,6 +57,11 @@ struct DriftRow {
   std::vector<double> times, energy_error, L_error;
 };
 std::vector<DriftRow> drift_table(bool quick);
+
+/// The time `method` needs for error `target` on `problem`, interpolated log-log along its
+/// curve between the two runs that bracket the target; negative if the curve does not reach it.
+double time_at_error(const std::vector<Run>& runs, const std::string& problem,
+                     const std::string& method, double target);
 
 /// The time method `a` needs for error `target` on `problem`, over the time `b` needs, each
 /// interpolated log-log along its curve; negative if either curve does not reach the target.

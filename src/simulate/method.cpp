@@ -3,15 +3,18 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/input_error.hpp"
+#include "core/principal_axes.hpp"
 
 namespace wobble {
 
 const std::vector<std::pair<std::string, std::string>>& simulation_method_names() {
   static const std::vector<std::pair<std::string, std::string>> names{
       {"closed_form", "torque-free axially symmetric body: exact formulas, no integration"},
-      {"exact", "torque-free body: Jacobi elliptic functions, any t without stepping"},
+      {"exact",
+       "torque-free body or heavy symmetric top: elliptic functions, any t without stepping"},
       {"rk4", "classical Runge-Kutta, fixed step (order 4)"},
       {"dopri5", "Dormand-Prince 5(4), adaptive"},
       {"rkf78", "Fehlberg 7(8), adaptive"},
@@ -23,6 +26,21 @@ const std::vector<std::pair<std::string, std::string>>& simulation_method_names(
 
 std::string name_of(SimMethod m) {
   return simulation_method_names()[static_cast<std::size_t>(m)].first;
+}
+
+std::optional<HeavyTop> exact_heavy_top(const SceneSetup& s) {
+  const RigidBodyModel& m = s.model;
+  if (!m.gravity || m.torque) return std::nullopt;
+  const double eps = std::numeric_limits<double>::epsilon();
+  const Vec3& I = m.I_P;
+  if (std::abs(I[0] - I[1]) > kDegeneracyEps * eps * I.maxCoeff()) return std::nullopt;
+  const Vec3& d = m.d_P_m;
+  if (!(d.z() > 0.0) || std::hypot(d.x(), d.y()) > kDegeneracyEps * eps * d.norm())
+    return std::nullopt;
+  const Vec3 e3 = s.q0_PtoS * Vec3::UnitZ();
+  if (std::hypot(e3.x(), e3.y()) == 0.0 && (s.m0_P.x() != 0.0 || s.m0_P.y() != 0.0))
+    return std::nullopt;
+  return HeavyTop{m.mass_kg, d.z(), -m.g_S.z(), 0.5 * (I[0] + I[1]), I[2]};
 }
 
 namespace {
@@ -90,6 +108,10 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
     } else if (free) {
       c = {SimMethod::exact,
            "torque-free: exact solution in Jacobi elliptic functions, no integration"};
+    } else if (exact_heavy_top(s)) {
+      c = {SimMethod::exact,
+           "a heavy symmetric top (gravity alone, pivot on the axle): exact solution in "
+           "elliptic functions and integrals, no integration"};
     } else {
       c = {SimMethod::rkf78,
            "torques present; Fehlberg 7(8) reaches every tolerance from 1e-4 to 1e-14 in less "
@@ -109,10 +131,14 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
     c.reason = "requested";
     const bool needs_free = c.method == SimMethod::closed_form || c.method == SimMethod::exact ||
                             c.method == SimMethod::split2 || c.method == SimMethod::split4;
-    if (needs_free && !free) {
+    const bool heavy_top_exact = c.method == SimMethod::exact && exact_heavy_top(s);
+    if (needs_free && !free && !heavy_top_exact) {
       throw InputError(field + " " + requested +
                        ": applies to torque-free motion only, and this scene has " +
                        (s.model.gravity ? "gravity about a pivot" : "a torque") +
+                       (c.method == SimMethod::exact && s.model.gravity && !s.model.torque
+                            ? " on a body that is no symmetric top pivoted on its axle"
+                            : "") +
                        "; use rk4, dopri5, rkf78 or auto");
     }
     if (c.method == SimMethod::closed_form && !s.symmetric) {
@@ -139,8 +165,9 @@ WorkEstimate estimate_work(const SceneSetup& s, const MethodChoice& c) {
   const double samples = s.samples;
   const bool free = s.model.torque_free();
   const double tight = reference_tolerance(s);
-  // The error estimate's run: the exact solution when torque-free, else Fehlberg 7(8) tighter.
-  const double reference = free ? samples : adaptive_evaluations(s, tight, 8, 13);
+  // The error estimate's run: the exact solution when there is one, else Fehlberg 7(8) tighter.
+  const double reference =
+      free || exact_heavy_top(s) ? samples : adaptive_evaluations(s, tight, 8, 13);
   const double rate = rate_reached(s);
   switch (c.method) {
     case SimMethod::closed_form:

@@ -3,14 +3,17 @@
 /// The methods `wobble simulate` can use, and the automatic choice among them.
 ///
 /// auto picks, in order: the closed form (torque-free, axially symmetric), the exact elliptic
-/// solution (torque-free), else the adaptive pair that costs least for the effects present:
+/// solution (torque-free, or a heavy symmetric top: gravity alone on a top pivoted on its
+/// axle, core/exact_heavy_top.hpp), else the adaptive pair that costs least for the effects present:
 /// Fehlberg 7(8). Measured by `wobble bench` on the free body (P1) and the heavy top (P4), it
 /// reaches a smaller error in less time than Dormand-Prince 5(4) at every tolerance from 1e-4
 /// to 1e-14 (P1 at 1e-12: 12.8 us and 2.0e-12 against 71.8 us and 9.6e-13; P4 at 1e-6:
 /// 162 us and 6.9e-5 against 298 us and 3.5e-4).
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/heavy_top.hpp"
 #include "simulate/scene_setup.hpp"
 
 namespace wobble {
@@ -24,6 +27,12 @@ struct MethodChoice {
 };
 
 std::string name_of(SimMethod m);
+
+/// The scene as the heavy symmetric top the exact solution serves, when it is one: gravity and
+/// no torque, I1 == I2 (within the degeneracy rule of core/principal_axes.hpp; their mean is
+/// used), the centre of mass on +e3 (off it by no more than that rule's share of |d|), and not
+/// started with the axle vertical and moving (theta is no coordinate there).
+std::optional<HeavyTop> exact_heavy_top(const SceneSetup& s);
 /// Every method name, in the order above, with a one-line description.
 const std::vector<std::pair<std::string, std::string>>& simulation_method_names();
 

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "core/exact_free_body.hpp"
+#include "core/exact_heavy_top.hpp"
 #include "core/runge_kutta.hpp"
 #include "core/work_budget.hpp"
 #include "simulate/outputs.hpp"
@@ -48,6 +49,41 @@ void describe(const ExactFreeMotion& motion, std::vector<std::string>& notes) {
                   motion.period_s(), motion.kc2(), motion.period_s() / 2));
 }
 
+void describe(const ExactHeavyTop& top, std::vector<std::string>& notes) {
+  constexpr double kDeg = 180.0 / M_PI;
+  switch (top.kind()) {
+    case ExactHeavyTop::Kind::sleeping:
+      notes.push_back("the axle stays vertical (a sleeping top): the body spins about it");
+      return;
+    case ExactHeavyTop::Kind::steady:
+      notes.push_back(fmt::format("steady precession at theta = {:.10g} deg",
+                                  top.nutation().theta_min * kDeg));
+      return;
+    case ExactHeavyTop::Kind::nutating:
+      break;
+  }
+  notes.push_back(fmt::format(
+      "theta nods between {:.10g} and {:.10g} deg with period {:.10g} s (elliptic parameter "
+      "k^2 = {:.6g})",
+      top.nutation().theta_min * kDeg, top.nutation().theta_max * kDeg, top.nutation_period_s(),
+      (top.nutation().u_max - top.nutation().u_min) / (top.u3() - top.nutation().u_min)));
+}
+
+template <class Motion>
+void sample_exact(const Motion& motion, const std::vector<double>& times, SimulationResult& result,
+                  const std::function<void(std::size_t k, const SimState& state)>& at_sample,
+                  const std::function<void(double)>& progress) {
+  const std::size_t n = times.size();
+  describe(motion, result.notes);
+  for (std::size_t k = 0; k < n; ++k) {
+    throw_if_interrupted();
+    const FreeBodyState st = motion.at(times[k]);
+    at_sample(k, {st.m_B, st.q_BtoS});
+    report(progress, k, n);
+  }
+  result.cost_label = "evaluations of the solution";
+  result.cost += static_cast<std::int64_t>(n);
+}
 }  // namespace
 
 void propagate_each(const SceneSetup& s, const MethodChoice& choice,
@@ -58,16 +94,12 @@ void propagate_each(const SceneSetup& s, const MethodChoice& choice,
   switch (choice.method) {
     case SimMethod::closed_form:
     case SimMethod::exact: {
-      const ExactFreeMotion motion(s.model.I_P, s.m0_P, s.q0_PtoS);
-      describe(motion, result.notes);
-      for (std::size_t k = 0; k < n; ++k) {
-        throw_if_interrupted();
-        const FreeBodyState st = motion.at(times[k]);
-        at_sample(k, {st.m_B, st.q_BtoS});
-        report(progress, k, n);
+      if (const auto top = exact_heavy_top(s)) {
+        sample_exact(ExactHeavyTop(*top, s.m0_P, s.q0_PtoS), times, result, at_sample, progress);
+      } else {
+        sample_exact(ExactFreeMotion(s.model.I_P, s.m0_P, s.q0_PtoS), times, result, at_sample,
+                     progress);
       }
-      result.cost_label = "evaluations of the solution";
-      result.cost += static_cast<std::int64_t>(n);
       return;
     }
     case SimMethod::split2:
@@ -196,7 +228,7 @@ SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
     return r;
   }
   MethodChoice ref;
-  if (s.model.torque_free()) {
+  if (s.model.torque_free() || exact_heavy_top(s)) {
     ref.method = SimMethod::exact;
     r.error_reference = "the exact solution";
   } else {

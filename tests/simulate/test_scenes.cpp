@@ -58,12 +58,42 @@ TEST_CASE("auto picks the closed form, the exact solution, or an adaptive pair, 
   REQUIRE(choose_method(setup_scene(find_scene("tennis-racket"), {}), "auto").method ==
           SimMethod::exact);
   const SceneSetup top = setup_scene(find_scene("heavy-top"), {});
-  const MethodChoice c = choose_method(top, "auto");
+  const MethodChoice exact = choose_method(top, "auto");
+  REQUIRE(exact.method == SimMethod::exact);
+  REQUIRE_THAT(exact.reason, Catch::Contains("heavy symmetric top"));
+  // The same top with its centre of mass off the axle is no symmetric top: Fehlberg 7(8).
+  SceneSetup off_axis = top;
+  off_axis.model.d_P_m.x() = 1e-3;
+  const MethodChoice c = choose_method(off_axis, "auto");
   REQUIRE(c.method == SimMethod::rkf78);
   REQUIRE_THAT(c.reason, Catch::Contains("Fehlberg"));
-  SceneSetup loose = top;
+  REQUIRE_THROWS_WITH(choose_method(off_axis, "exact"), Catch::Contains("no symmetric top"));
+  SceneSetup loose = off_axis;
   loose.tolerance = 1e-4;  // Fehlberg is cheaper at every tolerance measured
   REQUIRE(choose_method(loose, "auto").method == SimMethod::rkf78);
+}
+
+TEST_CASE("the heavy-top scene's exact solution and Fehlberg 7(8) at 1e-13 agree") {
+  const SceneSetup s = setup_scene(find_scene("heavy-top"), {});
+  const SimulationResult exact = run(s, "exact");
+  SceneSetup tight = s;
+  tight.tolerance = 1e-13;
+  const SimulationResult rk = run(tight, "rkf78");
+  REQUIRE(exact.rows.size() == rk.rows.size());
+  REQUIRE_THAT(exact.notes.front(), Catch::Contains("theta nods between"));
+  // Fehlberg 7(8) at 1e-13 per step: within steps * 1e-13 of the truth in each angle (errors
+  // add along the run, no contraction); the exact one is far closer.
+  REQUIRE(rk.steps > 0);
+  const double kBound = static_cast<double>(rk.steps) * tight.tolerance;
+  for (std::size_t k = 0; k < exact.rows.size(); ++k) {
+    for (std::size_t j = 1; j < exact.columns.size(); ++j) {
+      if (exact.columns[j].rfind("err_", 0) == 0) continue;
+      double d = exact.rows[k][j] - rk.rows[k][j];
+      if (exact.units[j] == "rad") d = std::remainder(d, 2 * M_PI);
+      INFO(exact.columns[j] << " at row " << k);
+      REQUIRE_THAT(d, WithinAbs(0.0, kBound * std::max(1.0, std::abs(rk.rows[k][j]))));
+    }
+  }
 }
 
 TEST_CASE("closed form, exact solver, integrators and splittings agree on a symmetric body") {
