@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "core/free_body.hpp"
 
@@ -35,36 +38,48 @@ double component_ns(const Report& r, const std::string& method) {
 
 void evaluate_targets(Report& r) {
   r.targets.clear();
-  constexpr double kError = 1e-12;  // where the curves are compared
-  const auto at = [&](const std::string& problem, const std::string& method) {
-    return time_at_error(r.runs, problem, method, kError);
+  // Where the curves are compared: 1e-12 where the peers reach it (P1); near the separatrix
+  // (P3, condition 240: a change of eps in m0 moves m(T) by 240 eps) and on the heavy top (P4)
+  // no peer reaches 1e-12 at any tolerance down to 1e-14, so there 1e-9 and 1e-10.
+  const auto at = [&](const std::string& problem, const std::string& method, double error) {
+    return time_at_error(r.runs, problem, method, error);
   };
   const auto ratio = [](double a, double b) { return a > 0 && b > 0 ? a / b : -1.0; };
   // The best of a set: the least time any of them needs for the error (negative if none reach it).
-  const auto best = [&](const std::string& problem, std::initializer_list<const char*> methods) {
+  const auto best = [&](const std::string& problem, std::initializer_list<const char*> methods,
+                        double error) {
     double t = -1.0;
     for (const char* m : methods) {
-      const double x = at(problem, m);
+      const double x = at(problem, m, error);
       if (x > 0 && (t < 0 || x < t)) t = x;
     }
     return t;
   };
-  for (const char* problem : {"P1", "P3", "P4"}) {
-    const std::string P = problem;
+  const auto peers = {"odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45", "cvode_adams"};
+  for (const auto& [P, error] : {std::pair<std::string, double>{"P1", 1e-12}, {"P3", 1e-9},
+                                 {"P4", 1e-10}}) {
+    const std::string e = fmt::format("{:.0e}", error);
     // Method for method: the same pair, the same right-hand side, the same tolerances.
-    r.targets.push_back({P + ": dopri5 / odeint_dopri5 time at error 1e-12 (order 5 with 5)",
-                         ratio(at(P, "dopri5"), at(P, "odeint_dopri5")), 1.0, "x"});
-    r.targets.push_back({P + ": rkf78 / odeint_rkf78 time at error 1e-12 (order 8 with 8)",
-                         ratio(at(P, "rkf78"), at(P, "odeint_rkf78")), 1.0, "x"});
+    r.targets.push_back({P + ": dopri5 / odeint_dopri5 time at error " + e + " (the same method)",
+                         ratio(at(P, "dopri5", error), at(P, "odeint_dopri5", error)), 1.0, "x"});
+    r.targets.push_back({P + ": rkf78 / odeint_rkf78 time at error " + e + " (the same method)",
+                         ratio(at(P, "rkf78", error), at(P, "odeint_rkf78", error)), 1.0, "x"});
+    r.targets.push_back({P + ": rkf78 / gsl_rk8pd time at error " + e + " (order 8 with 8)",
+                         ratio(at(P, "rkf78", error), at(P, "gsl_rk8pd", error)), 1.0, "x"});
     // Best against best, over every integrator on either side.
-    r.targets.push_back({P + ": best wobble integrator / best peer time at error 1e-12",
-                         ratio(best(P, {"dopri5", "rkf78"}), best(P, {"odeint_dopri5", "odeint_rkf78"})),
-                         0.67, "x"});
+    r.targets.push_back({P + ": best wobble integrator / best peer time at error " + e,
+                         ratio(best(P, {"dopri5", "rkf78"}, error), best(P, peers, error)), 0.67,
+                         "x"});
   }
   // The heavy top's closed form against the best integrator at 1e-12, at equal or smaller error.
   for (const auto& run : r.runs) {
     if (run.problem != "P4" || run.method != "exact") continue;
-    const double integrator = best("P4", {"dopri5", "rkf78", "odeint_dopri5", "odeint_rkf78"});
+    constexpr double kError = 1e-12;
+    const double integrator = best("P4",
+                                   {"dopri5", "rkf78", "odeint_dopri5", "odeint_rkf78", "gsl_rk8pd",
+                                    "gsl_rkf45", "cvode_adams"},
+                                   kError);
+    // At equal or smaller error only.
     r.targets.push_back({"P4: exact heavy top / best integrator time at error 1e-12",
                          run.error <= kError ? ratio(run.time_s, integrator) : -1.0, 0.05, "x"});
     r.targets.push_back({"P4: exact heavy top error against 50 digits", run.error / 0x1p-52, 16.0,

@@ -8,6 +8,7 @@
 
 #include "bench/mp_reference.hpp"
 #include "bench/odeint.hpp"
+#include "bench/peers.hpp"
 #include "core/exact_free_body.hpp"
 #include "core/exact_heavy_top.hpp"
 #include "core/runge_kutta.hpp"
@@ -191,6 +192,19 @@ std::vector<Run> work_precision(const BenchProblem& p, bool quick, const TimingP
     runs.push_back(measure(
         p, ref, "odeint_rkf78", true, tol_text(tol), [&] { return run_odeint<ode_rkf78>(p, tol); },
         plan));
+    const State7 y0 = pack(p.m0, p.q0);
+    const auto peer = [](const PeerRun& r) {
+      return Outcome{momentum_of(r.y), attitude_of(r.y), r.evals};
+    };
+    for (const auto& [name, method] : {std::pair{"gsl_rk8pd", GslMethod::rk8pd},
+                                       std::pair{"gsl_rkf45", GslMethod::rkf45}}) {
+      runs.push_back(measure(
+          p, ref, name, true, tol_text(tol),
+          [&, method = method] { return peer(run_gsl(p.model, y0, p.T, tol, method)); }, plan));
+    }
+    runs.push_back(measure(
+        p, ref, "cvode_adams", true, tol_text(tol),
+        [&] { return peer(run_cvode_adams(p.model, y0, p.T, tol)); }, plan));
   }
   for (double h : steps) {
     runs.push_back(measure(

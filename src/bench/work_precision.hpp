@@ -1,10 +1,10 @@
 #pragma once
 /// @file
 /// Work-precision of the integrators: for each method and each tolerance or step of a sweep,
-/// the error reached against the exact solution (or a stated reference), the invariants' errors,
-/// the right-hand-side evaluations and the median run time; Boost.Odeint's controlled
-/// runge_kutta_dopri5 and runge_kutta_fehlberg78 run on the same right-hand side and
-/// tolerances as peers.
+/// the error reached against a reference, the invariants' errors, the right-hand-side
+/// evaluations and the median run time. Peers on the same right-hand side and tolerances:
+/// Boost.Odeint's controlled runge_kutta_dopri5 and runge_kutta_fehlberg78, GSL's rk8pd and
+/// rkf45, SUNDIALS CVODE in Adams mode (bench/peers.hpp).
 ///
 /// Problems:
 /// - P1: free body I = (2, 1, 2/3), m0 = (cos 1.1, 0, sin 1.1), identity attitude, T = 10;
@@ -38,7 +38,7 @@ std::vector<BenchProblem> bench_problems();
 
 struct Run {
   std::string problem, method;
-  bool peer = false;          ///< a Boost.Odeint peer
+  bool peer = false;          ///< another library's integrator
   std::string setting;        ///< "tol 1e-08" or "h 0.01"
   double error = 0.0;         ///< at T, against the reference
   double energy_error = 0.0;  ///< relative, at T

@@ -23,12 +23,14 @@ std::string cell(const std::string& text) {
 
 // The same line style for a method in every panel.
 int style_of(const std::string& method) {
-  static const char* order[] = {"exact",        "dopri5", "rkf78",  "odeint_dopri5",
-                                "odeint_rkf78", "rk4",    "split2", "split4"};
-  for (int i = 0; i < 8; ++i) {
+  static const char* order[] = {"exact",     "dopri5",    "rkf78",       "odeint_dopri5",
+                                "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45", "cvode_adams",
+                                "rk4",       "split2",    "split4"};
+  constexpr int n = sizeof order / sizeof order[0];
+  for (int i = 0; i < n; ++i) {
     if (method == order[i]) return i + 1;
   }
-  return 9;
+  return n + 1;
 }
 
 std::string us(double s) {
@@ -43,7 +45,7 @@ std::string err(double e) {
 std::string ratios(const BenchReport& r, const bench::BenchProblem& p, bool markdown) {
   std::string out;
   for (const double target : {1e-8, 1e-12}) {
-    for (const char* peer : {"odeint_dopri5", "odeint_rkf78"}) {
+    for (const char* peer : {"odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45", "cvode_adams"}) {
       for (const char* mine : {"dopri5", "rkf78"}) {
         const double ratio = bench::time_ratio_at(r.runs, p.id, mine, peer, target);
         if (ratio < 0) continue;

@@ -15,11 +15,12 @@ namespace {
 const TimingPlan kOnce{1, 0.0};  // one run per point: these tests check values, not speed
 }
 
-TEST_CASE("the P1 sweep runs every method and both peers, and tighter is more accurate") {
+TEST_CASE("the P1 sweep runs every method and every peer, and tighter is more accurate") {
   const BenchProblem p1 = bench_problems().at(0);
   const std::vector<Run> runs = work_precision(p1, true, kOnce);
   for (const std::string m :
-       {"exact", "dopri5", "rkf78", "odeint_dopri5", "odeint_rkf78", "rk4", "split2", "split4"}) {
+       {"exact", "dopri5", "rkf78", "odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45",
+        "cvode_adams", "rk4", "split2", "split4"}) {
     INFO(m);
     REQUIRE(std::any_of(runs.begin(), runs.end(), [&](const Run& r) { return r.method == m; }));
   }
@@ -91,7 +92,8 @@ TEST_CASE("targets are judged as the bench states them") {
   REQUIRE(find("P2: splitting energy").met());                     // 1.5 <= 2
   REQUIRE_FALSE(find("slowest wobble solve").met());               // 60 ms > 25 ms
   REQUIRE_FALSE(find("P1: dopri5 / odeint_dopri5").met());         // not measured
-  REQUIRE_FALSE(find("P4: best wobble integrator / best peer").met());  // the peer never reaches it
+  // At 1e-10 Fehlberg takes 100 us, the peer 20 us: 5x, not met.
+  REQUIRE_THAT(find("P4: best wobble integrator / best peer").measured, WithinRel(5.0, 1e-12));
   REQUIRE_THAT(find("P4: exact heavy top / best integrator").measured,
                WithinRel(5.0 / std::sqrt(100.0 * 300.0), 1e-12));
   REQUIRE(find("P4: exact heavy top / best integrator").met());   // 0.029 <= 0.05
