@@ -1,6 +1,8 @@
 #include "core/exact_heavy_top.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <stdexcept>
 
 #include "core/elliptic.hpp"
@@ -36,15 +38,28 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
     return;
   }
   nodes0_S_ = Vec3(-e3.y(), e3.x(), 0.0) / sin0;
+  // Distances to the poles without cancellation: 1 -+ u0 = sin^2 / (1 +- u0) on the side where
+  // the sum is large.
+  const double sin0_2 = sin0 * sin0;
+  const double one_plus_u0 = u0_ < 0.0 ? sin0_2 / (1.0 - u0_) : 1.0 + u0_;
+  const double one_minus_u0 = u0_ > 0.0 ? sin0_2 / (1.0 + u0_) : 1.0 - u0_;
+  // b -+ a = L . (z -+ e3) / I1 and b - a u0 = L . (z - u0 e3) / I1, each from a vector whose
+  // small components are formed without cancellation: near a pole b and a nearly cancel.
+  const Vec3 L_S = q0_ * m0_;
+  b_minus_a_ = L_S.dot(Vec3(-e3.x(), -e3.y(), one_minus_u0)) / I1;
+  b_plus_a_ = L_S.dot(Vec3(e3.x(), e3.y(), one_plus_u0)) / I1;
   HeavyTopStart start;
   start.theta = std::atan2(sin0, u0_);
   start.thetadot = w_S.dot(nodes0_S_);
-  start.phidot = (b_ - a_ * u0_) / (sin0 * sin0);
+  start.phidot = L_S.dot(Vec3(-u0_ * e3.x(), -u0_ * e3.y(), sin0_2)) / (I1 * sin0_2);
   start.psidot = w3_ - start.phidot * u0_;
   nutation_ = nutation_limits(top, start);
   theta0_ = start.theta;  // the steady case keeps it
   const double u1 = nutation_.u_min, u2 = nutation_.u_max;
-  du_ = u2 - u1;
+  // The limits' distances to the poles: the start's and the roots' offsets d from u0.
+  one_plus_u1_ = std::max(0.0, one_plus_u0 + nutation_.d_min);
+  one_minus_u2_ = std::max(0.0, one_minus_u0 - nutation_.d_max);
+  du_ = nutation_.d_max - nutation_.d_min;
   if (du_ == 0.0) {
     kind_ = Kind::steady;
     phidot_lin_ = start.phidot;
@@ -57,30 +72,44 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   // kinetic term P = thetadot^2 + phidot^2 sin^2 >= 0 so that no large terms cancel.
   const double P = start.thetadot * start.thetadot + start.phidot * start.phidot * sin0 * sin0;
   u3_ = std::max(1.0, u0_ + (P + a_ * a_) / beta - u1 - u2);
-  kc2_ = (u3_ - u2) / (u3_ - u1);
+  // u3 - u2 = (u3 - 1) + (1 - u2), u3 - u1 = (u3 - u2) + du: sums.
+  const double u3_minus_u2 = (u3_ - 1.0) + one_minus_u2_, u3_minus_u1 = u3_minus_u2 + du_;
+  kc2_ = u3_minus_u2 / u3_minus_u1;
   K_ = kc2_ > 0.0 ? complete_K(kc2_) : std::numeric_limits<double>::infinity();
-  rate_ = 0.5 * std::sqrt(beta * (u3_ - u1));
+  rate_ = 0.5 * std::sqrt(beta * u3_minus_u1);
   period_ = 2.0 * K_ / rate_;
   // tau0: sn^2(tau0) = (u0 - u1)/du, on the rising side (u' >= 0) for tau0 in [0, K].
-  const double s2 = std::max(0.0, u0_ - u1) / du_, c2 = std::max(0.0, u2 - u0_) / du_;
-  const double h = std::sqrt(s2 + c2);
-  const double F0 = incomplete_F(std::sqrt(s2) / h, std::sqrt(c2) / h, kc2_);
+  double sn0 = std::sqrt(std::max(0.0, -nutation_.d_min) / du_);
+  double cn0 = std::sqrt(std::max(0.0, nutation_.d_max) / du_);
+  // Near a turning point the smaller of sn, cn comes from a difference u0 - u_limit that is a
+  // rounding, and so carries only sqrt(eps) (a start at rest could begin moving at 1e-7 of its
+  // rates): take it from the start's velocity instead, u' = 2 du sn cn dn tau'.
+  const double dn0 = std::sqrt((u3_minus_u2 + nutation_.d_max) / u3_minus_u1);
+  const double v = std::abs(sin0 * start.thetadot) / (2.0 * du_ * dn0 * rate_);
+  if (sn0 >= cn0) {
+    cn0 = v / sn0;
+  } else {
+    sn0 = v / cn0;
+  }
+  const double h = std::hypot(sn0, cn0);
+  const double F0 = incomplete_F(sn0 / h, cn0 / h, kc2_);
   tau0_ = start.thetadot > 0.0 ? -F0 : F0;  // theta rising is u falling
   // The partial fractions over 1 - u and 1 + u; a term whose numerator is zero is left out (at
   // u1 = -1 the numerator b + a is zero with it, and n- would be infinite).
-  n_plus_ = du_ / (1.0 - u1);
-  phidot_lin_ = 0.5 * (b_ - a_) / (1.0 - u1);
+  const double one_minus_u1 = one_minus_u2_ + du_;
+  n_plus_ = du_ / one_minus_u1;
+  phidot_lin_ = 0.5 * b_minus_a_ / one_minus_u1;
   psidot_lin_ = w3_ - a_ - phidot_lin_;
-  if (b_ - a_ != 0.0) {
-    c_plus_ = 0.5 * (b_ - a_) * n_plus_ / ((1.0 - u1) * rate_);
+  if (b_minus_a_ != 0.0) {
+    c_plus_ = 0.5 * b_minus_a_ * n_plus_ / (one_minus_u1 * rate_);
     if (kc2_ > 0.0) complete_plus_ = complete_third_kind_excess(kc2_, n_plus_);
   }
-  if (b_ + a_ != 0.0 && 1.0 + u1 > 0.0) {
-    n_minus_ = -du_ / (1.0 + u1);
-    const double lin = 0.5 * (b_ + a_) / (1.0 + u1);
+  if (b_plus_a_ != 0.0 && one_plus_u1_ > 0.0) {
+    n_minus_ = -du_ / one_plus_u1_;
+    const double lin = 0.5 * b_plus_a_ / one_plus_u1_;
     phidot_lin_ += lin;
     psidot_lin_ += lin;
-    c_minus_ = 0.5 * (b_ + a_) * n_minus_ / ((1.0 + u1) * rate_);
+    c_minus_ = 0.5 * b_plus_a_ * n_minus_ / (one_plus_u1_ * rate_);
     if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess(kc2_, n_minus_);
   }
   const Phase p0 = phase(tau0_);
@@ -124,19 +153,35 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
     return a;
   }
   const Phase p = phase(tau0_ + rate_ * t);
-  const double u1 = nutation_.u_min, u2 = nutation_.u_max;
+  const double u1 = nutation_.u_min;
   a.u = u1 + du_ * p.sn * p.sn;
   a.udot = 2.0 * du_ * p.sn * p.cn * p.dn * rate_;
   // sin(theta) from 1 - u = (1 - u2) + du cn^2 and 1 + u = (1 + u1) + du sn^2: sums, no
   // cancellation near the poles.
-  a.one_minus_u = (1.0 - u2) + du_ * p.cn * p.cn;
-  a.one_plus_u = (1.0 + u1) + du_ * p.sn * p.sn;
+  a.one_minus_u = one_minus_u2_ + du_ * p.cn * p.cn;
+  a.one_plus_u = one_plus_u1_ + du_ * p.sn * p.sn;
   a.dtheta = std::atan2(std::sqrt(a.one_minus_u * a.one_plus_u), a.u) - theta0_;
   const double dG_plus = c_plus_ != 0.0 ? excess(p, n_plus_, complete_plus_) - G_plus0_ : 0.0;
   const double dG_minus = c_minus_ != 0.0 ? excess(p, n_minus_, complete_minus_) - G_minus0_ : 0.0;
   a.dphi = phidot_lin_ * t + c_plus_ * dG_plus + c_minus_ * dG_minus;
   a.dpsi = psidot_lin_ * t - c_plus_ * dG_plus + c_minus_ * dG_minus;
   return a;
+}
+
+double ExactHeavyTop::euler_rate_bound() const {
+  if (kind_ == Kind::sleeping) return std::abs(w3_);
+  // phi' = 1/2 (b - a)/(1 - u) + 1/2 (b + a)/(1 + u) is monotonic between the poles in each
+  // term: its extremes are at the nutation limits; psi' = w3 - u phi'.
+  // (Steady precession: du = 0, both limits are the start.)
+  double bound = 0.0;
+  for (const auto& [one_minus, one_plus, u] :
+       {std::tuple{one_minus_u2_ + du_, one_plus_u1_, nutation_.u_min},
+        std::tuple{one_minus_u2_, one_plus_u1_ + du_, nutation_.u_max}}) {
+    const double phidot = (one_minus > 0.0 ? 0.5 * b_minus_a_ / one_minus : 0.0) +
+                          (one_plus > 0.0 ? 0.5 * b_plus_a_ / one_plus : 0.0);
+    bound = std::max(bound, std::abs(phidot) + std::abs(w3_ - u * phidot));
+  }
+  return bound;
 }
 
 double ExactHeavyTop::u_at(double t) const {
@@ -155,7 +200,7 @@ FreeBodyState ExactHeavyTop::at(double t) const {
   s.q_BtoS = (turn_phi * Quat(Eigen::AngleAxisd(a.dtheta, nodes0_S_)) * q0_ * rot_z(a.dpsi))
                  .normalized();
   // The angular velocity from the Euler rates: w = phi' z + theta' n + psi' e3.
-  const double phidot = 0.5 * (b_ - a_) / a.one_minus_u + 0.5 * (b_ + a_) / a.one_plus_u;
+  const double phidot = 0.5 * b_minus_a_ / a.one_minus_u + 0.5 * b_plus_a_ / a.one_plus_u;
   const double psidot = w3_ - a.u * phidot;
   const double sin_theta = std::sqrt(a.one_minus_u * a.one_plus_u);
   const double thetadot = sin_theta > 0.0 ? -a.udot / sin_theta : 0.0;

@@ -50,6 +50,11 @@ class ExactHeavyTop {
   double u3() const { return u3_; }
   /// Period of theta(t) in s (infinite when theta is constant).
   double nutation_period_s() const { return period_; }
+  /// The largest |phi'| + |psi'| over the motion (rad/s): the Euler angles' phases grow at up
+  /// to this rate and are rounded relative to their size, so after t the attitude carries
+  /// about eps * rate * t of rounding. It grows as 1/sin(theta_limit) when the axle passes
+  /// near the vertical (the Euler angles' singularity), where an integrator does better.
+  double euler_rate_bound() const;
 
  private:
   struct Phase {
@@ -73,10 +78,12 @@ class ExactHeavyTop {
   Kind kind_ = Kind::sleeping;
   Nutation nutation_{};
   double u0_ = 1.0, theta0_ = 0.0, w3_ = 0.0, a_ = 0.0, b_ = 0.0;
+  double b_minus_a_ = 0.0, b_plus_a_ = 0.0;  ///< without the cancellation near the poles
   Vec3 nodes0_S_ = Vec3::UnitY();  ///< line of nodes at t = 0
   // nutating
   double u3_ = std::numeric_limits<double>::infinity(), du_ = 0.0, kc2_ = 1.0, K_ = 0.0;
   double rate_ = 0.0, tau0_ = 0.0;  ///< tau' and tau(0)
+  double one_plus_u1_ = 0.0, one_minus_u2_ = 0.0;  ///< from the start and the roots in d
   double period_ = std::numeric_limits<double>::infinity();
   double n_plus_ = 0.0, n_minus_ = 0.0, c_plus_ = 0.0, c_minus_ = 0.0;  ///< c± = coefficient of G±
   double complete_plus_ = 0.0, complete_minus_ = 0.0, G_plus0_ = 0.0, G_minus0_ = 0.0;

@@ -101,6 +101,8 @@ Nutation nutation_limits(const HeavyTop& top, const HeavyTopStart& s) {
   Nutation n;
   n.u_min = std::max(-1.0, u0 + d_min);
   n.u_max = std::min(1.0, u0 + d_max);
+  n.d_min = std::max(d_min, lo);
+  n.d_max = std::min(d_max, hi);
   n.theta_min = std::acos(n.u_max);
   n.theta_max = std::acos(n.u_min);
   return n;

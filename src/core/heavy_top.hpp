@@ -51,6 +51,9 @@ HeavyTopConstants heavy_top_constants(const HeavyTop& top, const HeavyTopStart& 
 /// theta_min = acos(u_max) <= theta0 <= theta_max = acos(u_min).
 struct Nutation {
   double u_min = 0, u_max = 0, theta_min = 0, theta_max = 0;
+  /// u_min - cos(theta0) and u_max - cos(theta0) as found (the roots in d), not rounded into u:
+  /// a limit near a pole, 1 + u_min, is then (1 + cos(theta0)) + d_min without cancellation.
+  double d_min = 0, d_max = 0;
 };
 /// @throws std::invalid_argument for an invalid top or a start with sin(theta0) = 0 (the axis
 ///   vertical: the sleeping top, where theta is not a coordinate of the nutation).

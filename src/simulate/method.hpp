@@ -33,6 +33,10 @@ std::string name_of(SimMethod m);
 /// used), the centre of mass on +e3 (off it by no more than that rule's share of |d|), and not
 /// started with the axle vertical and moving (theta is no coordinate there).
 std::optional<HeavyTop> exact_heavy_top(const SceneSetup& s);
+/// The relative rounding error the exact heavy top would carry over the run (its Euler
+/// angles' phases: core/exact_heavy_top.hpp, euler_rate_bound); auto takes it only when this
+/// is within the scene's tolerance (infinite when the scene is no such top).
+double exact_heavy_top_rounding(const SceneSetup& s);
 /// Every method name, in the order above, with a one-line description.
 const std::vector<std::pair<std::string, std::string>>& simulation_method_names();
 
