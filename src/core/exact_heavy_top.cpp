@@ -28,7 +28,6 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   u0_ = e3.z();
   w3_ = m0_.z() / top.I3_kgm2;
   a_ = m0_.z() / I1;               // p_psi / I1
-  b_ = Vec3(q0_ * m0_).z() / I1;  // p_phi / I1
   if (sin0 == 0.0) {
     if (m0_.x() != 0.0 || m0_.y() != 0.0)
       throw std::invalid_argument(

@@ -77,7 +77,7 @@ class ExactHeavyTop {
   Quat q0_;
   Kind kind_ = Kind::sleeping;
   Nutation nutation_{};
-  double u0_ = 1.0, theta0_ = 0.0, w3_ = 0.0, a_ = 0.0, b_ = 0.0;
+  double u0_ = 1.0, theta0_ = 0.0, w3_ = 0.0, a_ = 0.0;  ///< a = p_psi / I1
   double b_minus_a_ = 0.0, b_plus_a_ = 0.0;  ///< without the cancellation near the poles
   Vec3 nodes0_S_ = Vec3::UnitY();  ///< line of nodes at t = 0
   // nutating

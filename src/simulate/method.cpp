@@ -126,9 +126,9 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
            "elliptic functions and integrals, no integration"};
     } else if (exact_heavy_top(s)) {
       c = {SimMethod::rkf78,
-           fmt::format("a heavy symmetric top whose axle passes so near the vertical that the "
-                       "exact solution's Euler angles would carry {:.1e} of rounding, more than "
-                       "the tolerance; Fehlberg 7(8)",
+           fmt::format("a heavy symmetric top, but the exact solution's Euler angles would "
+                       "carry {:.1e} of rounding over the run (their rates grow near the "
+                       "vertical), more than the tolerance; Fehlberg 7(8)",
                        exact_heavy_top_rounding(s))};
     } else {
       c = {SimMethod::rkf78,

@@ -61,6 +61,13 @@ TEST_CASE("auto picks the closed form, the exact solution, or an adaptive pair, 
   const MethodChoice exact = choose_method(top, "auto");
   REQUIRE(exact.method == SimMethod::exact);
   REQUIRE_THAT(exact.reason, Catch::Contains("heavy symmetric top"));
+  // Asked for more than the closed form's rounding allows (a tolerance below its 4 eps per
+  // radian turned): Fehlberg 7(8), and why.
+  SceneSetup strict = top;
+  strict.tolerance = 1e-17;
+  const MethodChoice rounding = choose_method(strict, "auto");
+  REQUIRE(rounding.method == SimMethod::rkf78);
+  REQUIRE_THAT(rounding.reason, Catch::Contains("of rounding over the run"));
   // The same top with its centre of mass off the axle is no symmetric top: Fehlberg 7(8).
   SceneSetup off_axis = top;
   off_axis.model.d_P_m.x() = 1e-3;
