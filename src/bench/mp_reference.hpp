@@ -58,7 +58,7 @@ inline Vec3 mp_free_momentum(const Vec3& I, const Vec3& m0, double t) {
   std::array<int, 3> idx{0, 1, 2};
   std::sort(idx.begin(), idx.end(), [&](int x, int y) { return I[x] < I[y]; });
   Mat3 S = Mat3::Zero();
-  for (int i = 0; i < 3; ++i) S(i, idx[i]) = 1.0;
+  for (std::size_t i = 0; i < 3; ++i) S(static_cast<Eigen::Index>(i), idx[i]) = 1.0;
   if (S.determinant() < 0) S.row(2) *= -1.0;
   Vec3 J(I[idx[0]], I[idx[1]], I[idx[2]]);
   Vec3 m = S * m0;
