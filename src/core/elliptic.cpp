@@ -71,4 +71,19 @@ double complete_third_kind_excess(double kc2, double n) {
   return boost::math::ellint_rj(0.0, kc2, 1.0, 1.0 - n, Fast()) / 3.0;
 }
 
+ReducedArgument reduce_by_half_period(double u, double K, double kc2) {
+  ReducedArgument a;
+  a.r = u;
+  if (std::isfinite(K)) {
+    a.j = std::nearbyint(u / (2.0 * K));
+    a.r = u - 2.0 * K * a.j;
+  }
+  a.of_r = jacobi_sncndn(a.r, kc2);
+  return a;
+}
+
+double third_kind_excess(const ReducedArgument& a, double kc2, double n, double complete) {
+  return 2.0 * a.j * complete + third_kind_excess(a.of_r.sn, a.of_r.cn, kc2, n);
+}
+
 }  // namespace wobble

@@ -32,4 +32,17 @@ double third_kind_excess(double sin_phi, double cos_phi, double kc2, double n);
 /// The complete counterpart: (Pi(n | k) - K(k)) / n = R_J(0, kc2, 1, 1 - n) / 3, kc2 > 0.
 double complete_third_kind_excess(double kc2, double n);
 
+/// An argument reduced by the period 2K that sn and cn have up to sign: u = r + 2 K j with r
+/// in [-K, K], and sn, cn, dn of r (of u itself: sn and cn times (-1)^j, dn the same). K
+/// infinite (the separatrix, kc2 = 0): no reduction, j = 0.
+struct ReducedArgument {
+  double j = 0.0, r = 0.0;
+  SnCnDn of_r{};
+};
+ReducedArgument reduce_by_half_period(double u, double K, double kc2);
+
+/// (Pi(n; am u | k) - u) / n for any u, continued past |u| = K through the periods: 2 j times
+/// `complete` (complete_third_kind_excess(kc2, n)) plus the incomplete excess of r.
+double third_kind_excess(const ReducedArgument& a, double kc2, double n, double complete);
+
 }  // namespace wobble

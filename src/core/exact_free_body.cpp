@@ -104,26 +104,21 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   Q_ = R0 * to_L_frame(m).transpose();
 }
 
-// u reduced by the period 2K (r in [-K, K], j periods), and sn, cn, dn of u itself: sn and cn
-// change sign every 2K, dn does not.
+// u reduced by the period 2K, and sn, cn, dn of u itself: sn and cn change sign every 2K, dn
+// does not.
 ExactFreeMotion::Phase ExactFreeMotion::phase(double u) const {
   Phase p;
-  p.r = u;
-  if (std::isfinite(K_)) {
-    p.j = std::nearbyint(u / (2.0 * K_));
-    p.r = u - 2.0 * K_ * p.j;
-  }
-  p.reduced = jacobi_sncndn(p.r, kc2_);
-  const double odd = std::fmod(p.j, 2.0) == 0.0 ? 1.0 : -1.0;
-  p.sn = odd * p.reduced.sn;
-  p.cn = odd * p.reduced.cn;
-  p.dn = p.reduced.dn;
+  p.reduced = reduce_by_half_period(u, K_, kc2_);
+  const double odd = std::fmod(p.reduced.j, 2.0) == 0.0 ? 1.0 : -1.0;
+  p.sn = odd * p.reduced.of_r.sn;
+  p.cn = odd * p.reduced.of_r.cn;
+  p.dn = p.reduced.of_r.dn;
   return p;
 }
 
 // (Pi(n; am u) - u)/n, continued past |u| = K through the periods.
 double ExactFreeMotion::G(const Phase& p) const {
-  return 2.0 * p.j * Gc_ + third_kind_excess(p.reduced.sn, p.reduced.cn, kc2_, n_);
+  return third_kind_excess(p.reduced, kc2_, n_, Gc_);
 }
 
 // m in W: (s1 a1 cn, s2 a2 sn, s3 a3 dn).

@@ -55,8 +55,7 @@ class ExactFreeMotion {
   double phi_rate_ = 0.0, phi_coef_ = 0.0, G0_ = 0.0, Gc_ = 0.0;
   Mat3 Q_ = Mat3::Identity();  ///< R_WtoS(0) P(m0)^T
   struct Phase {
-    double j = 0.0, r = 0.0;              ///< u = r + 2 K j, r in [-K, K]
-    SnCnDn reduced{};                     ///< of r
+    ReducedArgument reduced;              ///< u = r + 2 K j, and sn, cn, dn of r
     double sn = 0.0, cn = 0.0, dn = 0.0;  ///< of u
   };
   Phase phase(double u) const;

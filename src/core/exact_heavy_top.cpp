@@ -120,27 +120,6 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   theta0_ = angles(0.0).dtheta;
 }
 
-// tau reduced by the period 2K of sn^2 (r in [-K, K]); u, u' and the integrals' reduced parts
-// need only r.
-ExactHeavyTop::Phase ExactHeavyTop::phase(double tau) const {
-  Phase p;
-  p.r = tau;
-  if (std::isfinite(K_)) {
-    p.j = std::nearbyint(tau / (2.0 * K_));
-    p.r = tau - 2.0 * K_ * p.j;
-  }
-  const SnCnDn s = jacobi_sncndn(p.r, kc2_);
-  p.sn = s.sn;
-  p.cn = s.cn;
-  p.dn = s.dn;
-  return p;
-}
-
-double ExactHeavyTop::excess(const Phase& p, double n, double complete) const {
-  if (n == 0.0) return 0.0;
-  return 2.0 * p.j * complete + third_kind_excess(p.sn, p.cn, kc2_, n);
-}
-
 ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
   Angles a;
   a.u = u0_;
@@ -152,13 +131,14 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
     return a;
   }
   const Phase p = phase(tau0_ + rate_ * t);
+  const double sn = p.of_r.sn, cn = p.of_r.cn, dn = p.of_r.dn;
   const double u1 = nutation_.u_min;
-  a.u = u1 + du_ * p.sn * p.sn;
-  a.udot = 2.0 * du_ * p.sn * p.cn * p.dn * rate_;
+  a.u = u1 + du_ * sn * sn;
+  a.udot = 2.0 * du_ * sn * cn * dn * rate_;
   // sin(theta) from 1 - u = (1 - u2) + du cn^2 and 1 + u = (1 + u1) + du sn^2: sums, no
   // cancellation near the poles.
-  a.one_minus_u = one_minus_u2_ + du_ * p.cn * p.cn;
-  a.one_plus_u = one_plus_u1_ + du_ * p.sn * p.sn;
+  a.one_minus_u = one_minus_u2_ + du_ * cn * cn;
+  a.one_plus_u = one_plus_u1_ + du_ * sn * sn;
   a.dtheta = std::atan2(std::sqrt(a.one_minus_u * a.one_plus_u), a.u) - theta0_;
   const double dG_plus = c_plus_ != 0.0 ? excess(p, n_plus_, complete_plus_) - G_plus0_ : 0.0;
   const double dG_minus = c_minus_ != 0.0 ? excess(p, n_minus_, complete_minus_) - G_minus0_ : 0.0;

@@ -22,6 +22,7 @@
 /// nodes at t = 0.
 #include <limits>
 
+#include "core/elliptic.hpp"
 #include "core/free_body.hpp"
 #include "core/heavy_top.hpp"
 
@@ -57,14 +58,13 @@ class ExactHeavyTop {
   double euler_rate_bound() const;
 
  private:
-  struct Phase {
-    double j = 0.0;                       ///< tau = r + 2 K j
-    double r = 0.0;                       ///< in [-K, K]
-    double sn = 0.0, cn = 0.0, dn = 0.0;  ///< of r
-  };
-  Phase phase(double tau) const;
+  /// tau reduced by the period 2K of sn^2: u, u' and the integrals' reduced parts need only r.
+  using Phase = ReducedArgument;
+  Phase phase(double tau) const { return reduce_by_half_period(tau, K_, kc2_); }
   /// (Pi(n; am tau) - tau) / n continued past K; 0 for a term that is switched off.
-  double excess(const Phase& p, double n, double complete) const;
+  double excess(const Phase& p, double n, double complete) const {
+    return n == 0.0 ? 0.0 : third_kind_excess(p, kc2_, n, complete);
+  }
   /// theta(t) - theta0, phi(t) - phi0, psi(t) - psi0.
   struct Angles {
     double dtheta = 0.0, dphi = 0.0, dpsi = 0.0, u = 0.0, udot = 0.0;

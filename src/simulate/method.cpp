@@ -120,16 +120,16 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
     } else if (free) {
       c = {SimMethod::exact,
            "torque-free: exact solution in Jacobi elliptic functions, no integration"};
-    } else if (exact_heavy_top(s) && exact_heavy_top_rounding(s) <= s.tolerance) {
+    } else if (const double rounding = exact_heavy_top_rounding(s); rounding <= s.tolerance) {
       c = {SimMethod::exact,
            "a heavy symmetric top (gravity alone, pivot on the axle): exact solution in "
            "elliptic functions and integrals, no integration"};
-    } else if (exact_heavy_top(s)) {
+    } else if (std::isfinite(rounding)) {  // a heavy top, but the closed form would round more
       c = {SimMethod::rkf78,
            fmt::format("a heavy symmetric top, but the exact solution's Euler angles would "
                        "carry {:.1e} of rounding over the run (their rates grow near the "
                        "vertical), more than the tolerance; Fehlberg 7(8)",
-                       exact_heavy_top_rounding(s))};
+                       rounding)};
     } else {
       c = {SimMethod::rkf78,
            "torques present; Fehlberg 7(8) reaches every tolerance from 1e-4 to 1e-14 in less "

@@ -7,37 +7,17 @@
 #include <limits>
 #include <vector>
 
-#include "bench/odeint.hpp"
 #include "core/exact_heavy_top.hpp"
+#include "heavy_top_lagrange.hpp"
 
 using namespace wobble;
 using Catch::Matchers::WithinAbs;
 
 namespace {
-namespace ode = boost::numeric::odeint;
-using State = std::array<double, 4>;  // theta, thetadot, phi, psi
-
-// L = I1/2 (phidot^2 sin^2 + thetadot^2) + I3/2 w3^2 - M g l cos with p_phi and p_psi = I3 w3
-// conserved: phidot = (p_phi - p_psi cos) / (I1 sin^2), psidot = w3 - phidot cos.
-struct Lagrange {
-  HeavyTop top;
-  double p_phi, p_psi;
-  double phidot(double theta) const {
-    const double st = std::sin(theta);
-    return (p_phi - p_psi * std::cos(theta)) / (top.I1_kgm2 * st * st);
-  }
-  void operator()(const State& x, State& d, double) const {
-    const double st = std::sin(x[0]), ct = std::cos(x[0]), pd = phidot(x[0]);
-    d[0] = x[1];
-    d[1] = (top.I1_kgm2 * pd * pd * st * ct - p_psi * pd * st + top.M_kg * top.g_m_s2 * top.l_m * st) /
-           top.I1_kgm2;
-    d[2] = pd;
-    d[3] = p_psi / top.I3_kgm2 - pd * ct;
-  }
-};
-
-using Stepper = ode::controlled_runge_kutta<ode::runge_kutta_fehlberg78<State>>;
-using Checker = ode::default_error_checker<double, ode::array_algebra, ode::default_operations>;
+using namespace wobble::testing;
+using State = LagrangeState;
+using Stepper = LagrangeStepper;
+using Checker = LagrangeChecker;
 constexpr double kLagrangeTol = 1e-14;
 
 Quat euler_zyz(double phi, double theta, double psi) {
@@ -58,19 +38,11 @@ Vec3 momentum(const HeavyTop& top, double theta, double thetadot, double phidot,
 double attitude_distance(const Quat& a, const Quat& b) {
   return (a.toRotationMatrix() - b.toRotationMatrix()).norm();
 }
-
-const HeavyTop kTop{0.5, 0.08, 9.81, 0.5 * 0.05 * 0.05 / 4 + 0.5 * 0.08 * 0.08,
-                    0.5 * 0.05 * 0.05 / 2};
 }  // namespace
 
 TEST_CASE("exact heavy top: the closed form follows Lagrange's equations") {
-  // Cusps (released at rest), waves (phidot > 0 throughout), loops (phidot changes sign), a start
-  // between the limits (thetadot != 0), a slow top that swings wide, a hanging start.
-  const std::vector<HeavyTopStart> starts{{M_PI / 6, 0, 0, 150}, {0.8, 0, 4, 150},
-                                          {0.8, 0, -3, 150},     {0.9, 2.0, 1.0, 120},
-                                          {0.5, -1.0, 0.5, 30},  {2.5, 0.3, 0.0, 60}};
   constexpr double kT = 1.5;
-  for (const auto& s : starts) {
+  for (const auto& s : kHeavyTopStarts) {
     INFO("theta0 " << s.theta << " thetadot0 " << s.thetadot << " phidot0 " << s.phidot);
     const Vec3 m0 = momentum(kTop, s.theta, s.thetadot, s.phidot, 0.0, s.psidot);
     const ExactHeavyTop exact(kTop, m0, euler_zyz(0.0, s.theta, 0.0));
