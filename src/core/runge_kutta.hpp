@@ -1,22 +1,28 @@
 #pragma once
 /// @file
 /// Runge-Kutta integrators for the rigid body (core/rigid_body.hpp): fixed-step RK4, and the
-/// embedded pairs Dormand-Prince 5(4) and Fehlberg 7(8) with step-size control.
+/// embedded pairs Dormand-Prince 5(4), Fehlberg 7(8) and Dormand-Prince 8(5,3) (DOP853) with
+/// step-size control. Tableaux: core/runge_kutta_tableaux.hpp.
 ///
 /// Error control is on the whole state (momentum and attitude): a step is accepted when
 /// max_i |err_i| / (tol * scale_i) <= 1, where scale is the size of the momentum for its three
 /// components and 1 for the four quaternion components, so `tol` is a relative error per step.
-/// Both pairs propagate the higher-order solution (local extrapolation), like Boost.Odeint.
+/// The pairs propagate the higher-order solution (local extrapolation), like Boost.Odeint.
 /// After every step the quaternion is renormalised (the exact flow keeps it unit; RK does not).
-/// Step sizes are chosen to land exactly on the requested output times.
+/// advance() shortens the last step to land exactly on the requested time. sample() does so
+/// only at the last output time: Dormand-Prince 5(4) and DOP853 give the times between from
+/// each step's dense output (continuous extensions of order 4 and 7), so many output times
+/// cost little more than few; Fehlberg 7(8) and fixed steps land on every one.
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <string>
 
 #include "core/rigid_body.hpp"
 
 namespace wobble {
 
-enum class RkMethod { rk4, dopri5, rkf78 };
+enum class RkMethod { rk4, dopri5, rkf78, dop853 };
 
 struct IntegrationCost {
   std::int64_t rhs_evals = 0;
@@ -27,7 +33,7 @@ struct IntegrationCost {
 /// Advances a state through successive output times, keeping its step size between calls.
 class RungeKutta {
  public:
-  /// Adaptive (dopri5, rkf78): `tol_or_step` is the relative tolerance. Fixed step (rk4, or
+  /// Adaptive (dopri5, rkf78, dop853): `tol_or_step` is the relative tolerance. Fixed step (rk4, or
   /// any method with fixed_step = true, used to measure orders): it is the largest step (s).
   /// `momentum_scale` (kg m^2/s, > 0) is the size the momentum error is measured against.
   /// @throws std::invalid_argument for a non-positive or non-finite step, tolerance or scale.
@@ -36,6 +42,12 @@ class RungeKutta {
 
   /// y(t0) -> y(t1), t1 > t0. @throws std::runtime_error if the step size underflows.
   void advance(State7& y, double t0, double t1);
+
+  /// y(t0) -> y(times.back()), calling at(k, y(times[k])) for each output time in turn (times
+  /// in increasing order; those <= t0 get y(t0)). The states given are unit-quaternion states.
+  /// @throws std::invalid_argument if the times are not in increasing order.
+  using SampleSink = std::function<void(std::size_t k, const State7& y)>;
+  void sample(State7& y, double t0, std::span<const double> times, const SampleSink& at);
 
   const IntegrationCost& cost() const { return cost_; }
   RkMethod method() const { return method_; }
@@ -49,8 +61,13 @@ class RungeKutta {
   RkMethod method_;
   double tol_or_step_;
   bool fixed_;
+  // `output(t_old, t_new, y_old, y_new, stages)` sees each accepted step before y_new is
+  // renormalised.
+  template <class Tableau, class Output>
+  void advance_adaptive(State7& y, double t0, double t1, const Output& output);
   template <class Tableau>
-  void advance_adaptive(State7& y, double t0, double t1);
+  void sample_dense(State7& y, double t0, std::span<const double> times, std::size_t next,
+                    const SampleSink& at);
 
   State7 inverse_scale_;
   double h_ = 0.0;  ///< next trial step (adaptive), 0 until the first call

@@ -3,9 +3,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "core/exact_free_body.hpp"
 #include "core/runge_kutta.hpp"
+#include "core/runge_kutta_tableaux.hpp"
 
 using namespace wobble;
 using Catch::Matchers::WithinAbs;
@@ -39,7 +41,8 @@ TEST_CASE("each Runge-Kutta method converges at its order when the step halves (
   // exact solution's round-off (~1e-15): the observed order log2(e(h)/e(h/2)) is then the
   // method's up to higher-order terms, which the halvings below leave within 0.3.
   for (const auto& [method, h0] : {std::pair{RkMethod::rk4, 0.2}, std::pair{RkMethod::dopri5, 0.2},
-                                   std::pair{RkMethod::rkf78, 0.5}}) {
+                                   std::pair{RkMethod::rkf78, 0.5},
+                                   std::pair{RkMethod::dop853, 0.6}}) {
     const double e1 = error_at(model, method, h0, true, 10.0),
                  e2 = error_at(model, method, h0 / 2, true, 10.0),
                  e3 = error_at(model, method, h0 / 4, true, 10.0);
@@ -53,7 +56,7 @@ TEST_CASE("each Runge-Kutta method converges at its order when the step halves (
 
 TEST_CASE("adaptive pairs meet their tolerance, and tighter costs more") {
   const RigidBodyModel model = free_model();
-  for (const RkMethod method : {RkMethod::dopri5, RkMethod::rkf78}) {
+  for (const RkMethod method : {RkMethod::dopri5, RkMethod::rkf78, RkMethod::dop853}) {
     std::int64_t last_evals = 0;
     for (const double tol : {1e-6, 1e-9, 1e-12}) {
       IntegrationCost cost;
@@ -66,6 +69,94 @@ TEST_CASE("adaptive pairs meet their tolerance, and tighter costs more") {
       last_evals = cost.rhs_evals;
     }
   }
+}
+
+TEST_CASE("dense output: states between the steps as accurate as at them, the steps unchanged") {
+  const RigidBodyModel model = free_model();
+  const ExactFreeMotion exact(kI, kM0, Quat::Identity());
+  constexpr double kTol = 1e-10, kT = 10.0;
+  const auto times_of = [&](std::size_t n) {
+    std::vector<double> t(n);
+    for (std::size_t i = 0; i < n; ++i) t[i] = kT * static_cast<double>(i + 1) / static_cast<double>(n);
+    return t;
+  };
+  for (const RkMethod method : {RkMethod::dopri5, RkMethod::dop853}) {
+    const auto run = [&](std::size_t n, double* worst) {
+      RungeKutta rk(model, method, kTol, 1.0);
+      State7 y = pack(kM0, Quat::Identity());
+      const std::vector<double> times = times_of(n);
+      rk.sample(y, 0.0, times, [&](std::size_t k, const State7& s) {
+        const FreeBodyState ex = exact.at(times[k]);
+        const double e = std::max((momentum_of(s) - ex.m_B).norm(),
+                                  (attitude_of(s).toRotationMatrix() -
+                                   ex.q_BtoS.toRotationMatrix()).norm());
+        if (worst) *worst = std::max(*worst, e);
+        // Unit quaternion as given, not only after attitude_of normalises it.
+        REQUIRE_THAT(s.tail<4>().norm(), WithinAbs(1.0, 4 * std::numeric_limits<double>::epsilon()));
+      });
+      return std::pair{rk.cost(), y};
+    };
+    double worst = 0.0;
+    const auto [few, y_few] = run(10, nullptr);
+    const auto [many, y_many] = run(10000, &worst);
+    RungeKutta plain(model, method, kTol, 1.0);
+    State7 y_plain = pack(kM0, Quat::Identity());
+    plain.advance(y_plain, 0.0, kT);
+    INFO(name_of(method) << ": worst sample error " << worst << "; steps " << few.steps << " / "
+                         << many.steps << ", evaluations " << few.rhs_evals << " / "
+                         << many.rhs_evals);
+    // The same bound as the step ends' (above): the interpolants' error is of the local
+    // error's size (orders 4 and 7, one less than the steps').
+    REQUIRE(worst <= 100 * kTol);
+    REQUIRE(worst > 0.0);
+    // The output times never shorten a step: the same steps, and the same end state as
+    // advance() (bit for bit).
+    REQUIRE(many.steps == few.steps);
+    REQUIRE(few.steps == plain.cost().steps);
+    REQUIRE(y_many == y_plain);
+    REQUIRE(y_few == y_plain);
+    // Dormand-Prince's interpolant costs no evaluation; DOP853's three per step with an output.
+    const std::int64_t extra = method == RkMethod::dopri5 ? 0 : 3 * many.steps;
+    REQUIRE(many.rhs_evals <= plain.cost().rhs_evals + extra);
+  }
+}
+
+TEST_CASE("the tableaux: weights sum to one, error weights to zero, interpolants end at y_new") {
+  namespace tab = rk_tableau;
+  const double eps = std::numeric_limits<double>::epsilon();
+  // Each sum has at most 16 terms of size up to ~500 (DOP853's D): rounding within
+  // 16 * 500 eps of the exact sum.
+  const double bound = 16 * 500 * eps;
+  const auto sum = [](const auto& row) {
+    double s = 0.0;
+    for (const double c : row) s += c;
+    return s;
+  };
+  REQUIRE_THAT(sum(tab::Dop853::B), WithinAbs(1.0, bound));
+  REQUIRE_THAT(sum(tab::Dop853::E), WithinAbs(0.0, bound));
+  REQUIRE_THAT(sum(tab::Dop853::E3), WithinAbs(0.0, bound));
+  REQUIRE_THAT(sum(tab::Dopri5::B), WithinAbs(1.0, bound));
+  // Shampine's interpolant at x = 1 is the step's own solution: sum_p P[j][p] = B[j].
+  for (std::size_t j = 0; j < tab::Dopri5::S; ++j) {
+    REQUIRE_THAT(sum(tab::Dopri5::P[j]), WithinAbs(tab::Dopri5::B[j], bound));
+  }
+  // Every row of A sums to its node c_i; the nodes lie in [0, 1] (DOP853's three extra stages
+  // at 0.1, 0.2 and 7/9, Hairer's values).
+  for (const auto& row : tab::Dop853::A) {
+    REQUIRE(sum(row) >= -bound);
+    REQUIRE(sum(row) <= 1.0 + bound);
+  }
+  REQUIRE_THAT(sum(tab::Dop853::kExtraA[0]), WithinAbs(0.1, bound));
+  REQUIRE_THAT(sum(tab::Dop853::kExtraA[1]), WithinAbs(0.2, bound));
+  REQUIRE_THAT(sum(tab::Dop853::kExtraA[2]), WithinAbs(7.0 / 9.0, bound));
+}
+
+TEST_CASE("output times out of order are refused") {
+  RungeKutta rk(free_model(), RkMethod::dop853, 1e-8, 1.0);
+  State7 y = pack(kM0, Quat::Identity());
+  const std::vector<double> times{1.0, 0.5};
+  REQUIRE_THROWS_AS(rk.sample(y, 0.0, times, [](std::size_t, const State7&) {}),
+                    std::invalid_argument);
 }
 
 TEST_CASE("Runge-Kutta energy error drifts at most linearly in time (a bound)") {
