@@ -33,6 +33,7 @@ struct Report {
   std::vector<Run> runs;
   std::vector<ComponentRow> components;
   std::vector<DriftRow> drift;  ///< P2: errors against time
+  std::vector<DenseRow> dense;  ///< P2: the cost of many output times
   LongRun long_run;
   std::vector<Target> targets;
 };

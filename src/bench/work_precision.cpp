@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "bench/mp_reference.hpp"
 #include "bench/odeint.hpp"
@@ -184,6 +185,9 @@ std::vector<Run> work_precision(const BenchProblem& p, bool quick, const TimingP
     runs.push_back(measure(
         p, ref, "rkf78", false, tol_text(tol),
         [&] { return run_wobble_rk(p, RkMethod::rkf78, tol); }, plan));
+    runs.push_back(measure(
+        p, ref, "dop853", false, tol_text(tol),
+        [&] { return run_wobble_rk(p, RkMethod::dop853, tol); }, plan));
     using ode_dopri5 = boost::numeric::odeint::runge_kutta_dopri5<Array7>;
     using ode_rkf78 = boost::numeric::odeint::runge_kutta_fehlberg78<Array7>;
     runs.push_back(measure(
@@ -255,6 +259,37 @@ std::vector<DriftRow> drift_table(bool quick) {
       t = c;
       record(row, s.m_B);
     }
+    out.push_back(row);
+  }
+  return out;
+}
+
+std::vector<DenseRow> dense_output_table(bool quick, const TimingPlan& plan) {
+  const BenchProblem p = bench_problems().at(1);  // P2
+  constexpr double kTol = 1e-10;
+  const std::size_t many = quick ? 10000 : 100000;
+  const auto times_of = [&](std::size_t n) {
+    std::vector<double> t(n);
+    for (std::size_t i = 0; i < n; ++i)
+      t[i] = p.T * static_cast<double>(i + 1) / static_cast<double>(n);
+    return t;
+  };
+  const std::vector<double> few_times = times_of(10), many_times = times_of(many);
+  std::vector<DenseRow> out;
+  for (const RkMethod m : {RkMethod::dopri5, RkMethod::dop853, RkMethod::rkf78}) {
+    DenseRow row{name_of(m), fmt::format("tol {:.0e}", kTol), 10, many, 0, 0, 0.0, 0.0};
+    const auto run = [&](const std::vector<double>& times) {
+      RungeKutta rk(p.model, m, kTol, p.m0.norm());
+      State7 y = pack(p.m0, p.q0);
+      double sum = 0.0;  // the sink's work, and what keeps the samples from being optimised out
+      rk.sample(y, 0.0, times, [&](std::size_t, const State7& s) { sum += s[0]; });
+      if (!std::isfinite(sum)) throw std::runtime_error("dense output bench: a non-finite state");
+      return rk.cost().rhs_evals;
+    };
+    row.evals_few = run(few_times);
+    row.evals_many = run(many_times);
+    row.time_few_s = median_time_s([&] { (void)run(few_times); }, plan);
+    row.time_many_s = median_time_s([&] { (void)run(many_times); }, plan);
     out.push_back(row);
   }
   return out;

@@ -58,6 +58,17 @@ struct DriftRow {
 };
 std::vector<DriftRow> drift_table(bool quick);
 
+/// What output times cost: one adaptive run over P2 (T = 1e4) at tolerance 1e-10, its states
+/// given at 10 and at `many` (1e5; 1e4 if quick) equally spaced times (dense output where the
+/// method has one, core/runge_kutta.hpp). The sink only sums a component.
+struct DenseRow {
+  std::string method, setting;
+  std::size_t few = 10, many = 0;  ///< the two numbers of output times
+  std::int64_t evals_few = 0, evals_many = 0;
+  double time_few_s = 0.0, time_many_s = 0.0;
+};
+std::vector<DenseRow> dense_output_table(bool quick, const TimingPlan& plan);
+
 /// The time `method` needs for error `target` on `problem`, interpolated log-log along its
 /// curve between the two runs that bracket the target; negative if the curve does not reach it.
 double time_at_error(const std::vector<Run>& runs, const std::string& problem,

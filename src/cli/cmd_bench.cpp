@@ -41,6 +41,7 @@ int run_bench(const BenchOptions& opt) {
     report.components.insert(report.components.end(), rows.begin(), rows.end());
   }
   report.drift = bench::drift_table(opt.quick);
+  report.dense = bench::dense_output_table(opt.quick, plan);
   report.long_run = bench::long_splitting_run(opt.quick);
   bench::evaluate_targets(report);
   // The file first, then stdout: a run that fails to write prints nothing.

@@ -24,7 +24,7 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
   app.add_option("--variant", opt.variant,
                  "Per-student values: variant N of the scene's parameters");
   app.add_option("--method", opt.method,
-                 "auto, closed_form, exact, rk4, dopri5, rkf78, split2 or split4 (default: the "
+                 "auto, closed_form, exact, rk4, dopri5, rkf78, dop853, split2 or split4 (default: the "
                  "scene's, usually auto)");
   app.add_option("--tolerance", opt.tolerance,
                  "Relative tolerance for the adaptive methods, " + scene_tolerance_range());

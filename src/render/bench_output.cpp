@@ -23,9 +23,9 @@ std::string cell(const std::string& text) {
 
 // The same line style for a method in every panel.
 int style_of(const std::string& method) {
-  static const char* order[] = {"exact",     "dopri5",    "rkf78",       "odeint_dopri5",
-                                "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45", "cvode_adams",
-                                "rk4",       "split2",    "split4"};
+  static const char* order[] = {"exact",     "dopri5",      "rkf78",     "dop853",
+                                "odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45",
+                                "cvode_adams", "rk4",       "split2",    "split4"};
   constexpr int n = sizeof order / sizeof order[0];
   for (int i = 0; i < n; ++i) {
     if (method == order[i]) return i + 1;
@@ -46,7 +46,7 @@ std::string ratios(const BenchReport& r, const bench::BenchProblem& p, bool mark
   std::string out;
   for (const double target : {1e-8, 1e-12}) {
     for (const char* peer : {"odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45", "cvode_adams"}) {
-      for (const char* mine : {"dopri5", "rkf78"}) {
+      for (const char* mine : {"dopri5", "rkf78", "dop853"}) {
         const double ratio = bench::time_ratio_at(r.runs, p.id, mine, peer, target);
         if (ratio < 0) continue;
         out += fmt::format("{}{} / {} at error {:.0e}: {:.2f}\n", markdown ? "- " : "  ", mine,
@@ -132,6 +132,18 @@ std::string components(const BenchReport& r, bool markdown) {
       out += (markdown ? "- " : "  ") + line + "\n";
     }
   }
+  if (!r.dense.empty()) {
+    out += "\nP2 sampled at few and at many output times (one run each; dense output in dopri5 "
+           "and dop853, rkf78 lands on every time):\n" +
+           std::string(markdown ? "\n" : "");
+    for (const auto& d : r.dense) {
+      out += fmt::format("{}{} {}: {} times {:.3g} ms ({} evaluations), {} times {:.3g} ms ({} "
+                         "evaluations): {:.2f}x\n",
+                         markdown ? "- " : "  ", d.method, d.setting, d.few, d.time_few_s * 1e3,
+                         d.evals_few, d.many, d.time_many_s * 1e3, d.evals_many,
+                         d.time_many_s / d.time_few_s);
+    }
+  }
   const auto& l = r.long_run;
   out += fmt::format(
       "\nP2 long run, Strang splitting h = 0.01, {} steps: |L| relative error {:.1e} at the end; "
@@ -184,6 +196,18 @@ std::string render_bench(const BenchReport& r, const std::string& format) {
                        {"ns_per_call", c.ns_per_call}});
     }
     j["components"] = comps;
+    nlohmann::ordered_json dense = nlohmann::ordered_json::array();
+    for (const auto& d : r.dense) {
+      dense.push_back({{"method", d.method},
+                       {"setting", d.setting},
+                       {"few_times", d.few},
+                       {"many_times", d.many},
+                       {"evaluations_few", d.evals_few},
+                       {"evaluations_many", d.evals_many},
+                       {"time_few_s", d.time_few_s},
+                       {"time_many_s", d.time_many_s}});
+    }
+    j["dense_output"] = dense;
     nlohmann::ordered_json ts = nlohmann::ordered_json::array();
     for (const auto& t : r.targets) {
       ts.push_back({{"target", t.what},

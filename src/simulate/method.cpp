@@ -19,6 +19,7 @@ const std::vector<std::pair<std::string, std::string>>& simulation_method_names(
       {"rk4", "classical Runge-Kutta, fixed step (order 4)"},
       {"dopri5", "Dormand-Prince 5(4), adaptive"},
       {"rkf78", "Fehlberg 7(8), adaptive"},
+      {"dop853", "Dormand-Prince 8(5,3), adaptive, samples from its dense output"},
       {"split2", "Lie-Poisson splitting, Strang (order 2), torque-free"},
       {"split4", "Lie-Poisson splitting, Yoshida composition (order 4), torque-free"},
   };
@@ -157,7 +158,7 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
                        (c.method == SimMethod::exact && s.model.gravity && !s.model.torque
                             ? " on a body that is no symmetric top pivoted on its axle"
                             : "") +
-                       "; use rk4, dopri5, rkf78 or auto");
+                       "; use rk4, dopri5, rkf78, dop853 or auto");
     }
     if (c.method == SimMethod::closed_form && !s.symmetric) {
       throw InputError(fmt::format(
@@ -201,10 +202,14 @@ WorkEstimate estimate_work(const SceneSetup& s, const MethodChoice& c) {
     }
     case SimMethod::dopri5:
     case SimMethod::rkf78:
+    case SimMethod::dop853:
       break;
   }
+  // New evaluations per step: 6 (Dormand-Prince, first same as last), 13 (Fehlberg), 12 and
+  // 3 more for the dense output of a step with samples (DOP853).
   const bool dp = c.method == SimMethod::dopri5;
-  return {adaptive_evaluations(s, s.tolerance, dp ? 5 : 8, dp ? 6 : 13) + reference,
+  const int stages = dp ? 6 : c.method == SimMethod::rkf78 ? 13 : 15;
+  return {adaptive_evaluations(s, s.tolerance, dp ? 5 : 8, stages) + reference,
           fmt::format("a rate up to {:.3g} rad/s over {:.6g} s at tolerance {:.0e}", rate, s.t_end,
                       s.tolerance)};
 }

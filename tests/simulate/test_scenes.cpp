@@ -120,10 +120,11 @@ TEST_CASE("the heavy-top scene's exact solution and Fehlberg 7(8) at 1e-13 agree
 TEST_CASE("closed form, exact solver, integrators and splittings agree on a symmetric body") {
   const SceneSetup s = setup_scene(find_scene("flying-plate"), {});
   const SimulationResult ref = run(s, "closed_form");
-  // Bounds: exact ~1e-15; rkf78 at 1e-10 and dopri5 at 1e-10 over ~100-1000 steps (<= 1e-8 of
-  // the unit vectors); splittings at the step from the tolerance rule, whose error is about
+  // Bounds: exact ~1e-15; rkf78, dop853 and dopri5 at 1e-10 over ~100-1000 steps (<= 1e-8 of
+  // the unit vectors; dopri5 and dop853 samples from their dense output, whose error is of
+  // the steps' size); splittings at the step from the tolerance rule, whose error is about
   // the tolerance times the turns made (~2 here) -> 1e-8 as well; rk4 likewise.
-  for (const std::string m : {"exact", "rkf78", "dopri5", "rk4", "split2", "split4"}) {
+  for (const std::string m : {"exact", "rkf78", "dopri5", "dop853", "rk4", "split2", "split4"}) {
     const SimulationResult r = run(s, m);
     INFO(m);
     for (const std::string c : {"e3_space_x", "e3_space_y", "omega_body_x", "omega_body_z"}) {
@@ -392,15 +393,20 @@ TEST_CASE("a brake stops the spin about its axis and never turns the wheel backw
   REQUIRE(s.brake_stops_s.has_value());
   // I3 w3 / tau: the cylinder (2 kg, R 0.2 m) has I3 = 0.04 kg m^2, w3 = 20 rad/s, tau 0.2 N m.
   REQUIRE_THAT(*s.brake_stops_s, WithinRel(0.04 * 20 / 0.2, 4 * kEps));
-  const SimulationResult r = run(s, "auto");
-  const std::size_t wz = column(r, "omega_body_z");
-  for (const auto& row : r.rows) {
-    INFO("t = " << row[0]);
-    // Before the stop w3 falls linearly (tau / I3 = 5 rad/s^2), to the run's tolerance
-    // (1e-9 relative, 20 rad/s: a few 1e-8); after it, exactly zero.
-    const double want = std::max(0.0, 20.0 - 5.0 * row[0]);
-    REQUIRE_THAT(row[wz], WithinAbs(want, 1e-7));
-    if (row[0] >= *s.brake_stops_s) REQUIRE(row[wz] == 0.0);
+  // auto (Fehlberg 7(8), landing on every sample) and DOP853 (samples before and after the
+  // stop from its dense output, the stop itself landed on).
+  for (const std::string method : {"auto", "dop853"}) {
+    const SimulationResult r = run(s, method);
+    const std::size_t wz = column(r, "omega_body_z");
+    REQUIRE(r.rows.size() == 201);
+    for (const auto& row : r.rows) {
+      INFO(method << ", t = " << row[0]);
+      // Before the stop w3 falls linearly (tau / I3 = 5 rad/s^2), to the run's tolerance
+      // (1e-9 relative, 20 rad/s: a few 1e-8); after it, exactly zero.
+      const double want = std::max(0.0, 20.0 - 5.0 * row[0]);
+      REQUIRE_THAT(row[wz], WithinAbs(want, 1e-7));
+      if (row[0] >= *s.brake_stops_s) REQUIRE(row[wz] == 0.0);
+    }
   }
   // Refused: a brake that would speed the spin up, or one not about a symmetry axis.
   Scene faster = find_scene("wheel-brake");
