@@ -264,6 +264,17 @@ std::vector<DriftRow> drift_table(bool quick) {
   return out;
 }
 
+std::vector<ExactDriftPoint> exact_error_against_time() {
+  const BenchProblem p = bench_problems().at(1);  // P2
+  const ExactFreeMotion exact(p.model.I_P, p.m0, p.q0);
+  std::vector<ExactDriftPoint> out;
+  for (double t = 10.0; t <= 1e7; t *= 10.0) {
+    const double e = (exact.momentum_at(t) - mp_free_momentum(p.model.I_P, p.m0, t)).norm();
+    out.push_back({t, t / exact.period_s(), e / (std::numeric_limits<double>::epsilon() * p.m0.norm())});
+  }
+  return out;
+}
+
 std::vector<DenseRow> dense_output_table(bool quick, const TimingPlan& plan) {
   const BenchProblem p = bench_problems().at(1);  // P2
   constexpr double kTol = 1e-10;

@@ -58,6 +58,14 @@ struct DriftRow {
 };
 std::vector<DriftRow> drift_table(bool quick);
 
+/// The exact solution's error against time on P2's body: |m(t) - m_50(t)| / (eps |m0|) at
+/// t = 10, 100, ..., 1e7 (1e6 periods and more), m_50 the same motion at 50 digits from the
+/// same double inputs (bench/mp_reference.hpp).
+struct ExactDriftPoint {
+  double t_s = 0.0, periods = 0.0, error_eps = 0.0;
+};
+std::vector<ExactDriftPoint> exact_error_against_time();
+
 /// What output times cost: one adaptive run over P2 (T = 1e4) at tolerance 1e-10, its states
 /// given at 10 and at `many` (1e5; 1e4 if quick) equally spaced times (dense output where the
 /// method has one, core/runge_kutta.hpp). The sink only sums a component.

@@ -42,6 +42,7 @@ int run_bench(const BenchOptions& opt) {
   }
   report.drift = bench::drift_table(opt.quick);
   report.dense = bench::dense_output_table(opt.quick, plan);
+  report.exact_drift = bench::exact_error_against_time();
   report.long_run = bench::long_splitting_run(opt.quick);
   bench::evaluate_targets(report);
   // The file first, then stdout: a run that fails to write prints nothing.

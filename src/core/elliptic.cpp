@@ -82,6 +82,30 @@ ReducedArgument reduce_by_half_period(double u, double K, double kc2) {
   return a;
 }
 
+ReducedArgument reduce_by_half_period(const DoubleDouble& u, const DoubleDouble& K, double kc2) {
+  ReducedArgument a;
+  const DoubleDouble two_K(2.0 * K.hi, 2.0 * K.lo);
+  a.j = std::nearbyint(u.hi / two_K.hi);
+  // j 2K exactly to double-double: j is an integer below 2^53, so j * 2K.hi by two_prod.
+  const DoubleDouble r = u - (two_prod(a.j, two_K.hi) + DoubleDouble(a.j * two_K.lo));
+  a.r = r.value();
+  a.of_r = jacobi_sncndn(a.r, kc2);
+  return a;
+}
+
+DoubleDouble complete_K_dd(const DoubleDouble& kc2) {
+  DoubleDouble a(1.0), b = sqrt(kc2);
+  // Quadratic convergence: from b = 1e-8 (k'^2 = 1e-16) about 10 steps reach 2^-104; the
+  // bound only guards against a loop that would not end.
+  constexpr int kMaxSteps = 64;
+  for (int i = 0; i < kMaxSteps && std::abs((a - b).hi) > 0x1p-104 * a.hi; ++i) {
+    const DoubleDouble mean = DoubleDouble(0.5) * (a + b);
+    b = sqrt(a * b);
+    a = mean;
+  }
+  return dd_pi() / (DoubleDouble(2.0) * a);
+}
+
 double third_kind_excess(const ReducedArgument& a, double kc2, double n, double complete) {
   return 2.0 * a.j * complete + third_kind_excess(a.of_r.sn, a.of_r.cn, kc2, n);
 }

@@ -8,6 +8,8 @@
 /// u = K (see shared numerics notes). This routine takes k'^2 itself, computed by the caller in
 /// factored form, and stays accurate down to k'^2 = 1e-16 (tests/core/test_elliptic.cpp measures
 /// it against Boost.Math at 50 digits). The elliptic integrals come from Boost.Math (Carlson).
+#include "core/double_double.hpp"
+
 namespace wobble {
 
 struct SnCnDn {
@@ -40,6 +42,14 @@ struct ReducedArgument {
   SnCnDn of_r{};
 };
 ReducedArgument reduce_by_half_period(double u, double K, double kc2);
+/// The same for u and K to double-double (kc2 > 0): r = u - 2 K j formed in double-double, so
+/// that r keeps the digits of u and K however many periods u spans (in double, u's rounding,
+/// eps |u|, would be r's error).
+ReducedArgument reduce_by_half_period(const DoubleDouble& u, const DoubleDouble& K, double kc2);
+
+/// K(k) to double-double, from k'^2 to double-double (0 < kc2 <= 1): pi / (2 AGM(1, k')),
+/// the arithmetic-geometric mean iterated in double-double until its two means agree.
+DoubleDouble complete_K_dd(const DoubleDouble& kc2);
 
 /// (Pi(n; am u | k) - u) / n for any u, continued past |u| = K through the periods: 2 j times
 /// `complete` (complete_third_kind_excess(kc2, n)) plus the incomplete excess of r.

@@ -63,10 +63,15 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   if (S.determinant() < 0) S.row(2) *= -1.0;
   Vec3 J(I_[idx[0]], I_[idx[1]], I_[idx[2]]);
   Vec3 m = S * m0_;
-  // D = |m|^2 - 2 T J2 = m3^2 (J3-J2)/J3 - m1^2 (J2-J1)/J1, in factored form.
-  const double alpha = std::sqrt((J[2] - J[1]) / J[2]), beta = std::sqrt((J[1] - J[0]) / J[0]);
-  const double a3 = alpha * std::abs(m[2]), b1 = beta * std::abs(m[0]);
-  const double D = (a3 - b1) * (a3 + b1);
+  // D = |m|^2 - 2 T J2 = m3^2 (J3-J2)/J3 - m1^2 (J2-J1)/J1, in factored form, to
+  // double-double (it decides k'^2, and so the period, whose rounding grows with time).
+  using DD = DoubleDouble;
+  const auto difference = [](double x, double y) { return two_sum(x, -y); };  // exact
+  const DD alpha = sqrt(difference(J[2], J[1]) / DD(J[2])),
+           beta = sqrt(difference(J[1], J[0]) / DD(J[0]));
+  const DD a3 = alpha * DD(std::abs(m[2])), b1 = beta * DD(std::abs(m[0]));
+  const DD D_dd = (a3 - b1) * (a3 + b1);
+  const double D = D_dd.hi;
   Mat3 flip = Mat3::Identity();
   if (D < 0.0) {  // m circles the axis of least moment: make it W's third axis
     flip << 0, 0, 1, 0, -1, 0, 1, 0, 0;
@@ -80,13 +85,20 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   M_ = m.norm();
   const double A = m1 * m1 * d31 / J[0] + m2 * m2 * d32 / J[1];  // 2 T J3 - |m|^2
   const double B = m2 * m2 * d21 / J[1] + m3 * m3 * d31 / J[2];  // |m|^2 - 2 T J1
+  // The phase's rate and period to double-double (the phase u0 + lambda t is formed so too).
+  const DD d21_dd = difference(J[1], J[0]), d31_dd = difference(J[2], J[0]),
+           d32_dd = difference(J[2], J[1]);
+  const DD B_dd = two_prod(m2, m2) * d21_dd / DD(J[1]) + two_prod(m3, m3) * d31_dd / DD(J[2]);
   amp_ = Vec3(std::sqrt(m1 * m1 + m2 * m2 * J[0] * d32 / (J[1] * d31)),
               std::sqrt(m1 * m1 * J[1] * d31 / (J[0] * d32) + m2 * m2),
               std::sqrt(m2 * m2 * J[2] * d21 / (J[1] * d31) + m3 * m3));
-  lambda_ = std::sqrt(d32 * B / (J[0] * J[1] * J[2]));
+  lambda_dd_ = sqrt(d32_dd * B_dd / (DD(J[0]) * DD(J[1]) * DD(J[2])));
+  lambda_ = lambda_dd_.value();
   // k'^2 = (J3-J1) D / ((J3-J2) B): every factor keeps its sign, so no cancellation.
-  kc2_ = std::clamp(d31 * D / (d32 * B), 0.0, 1.0);
+  const DD kc2_dd = d31_dd * D_dd / (d32_dd * B_dd);
+  kc2_ = std::clamp(kc2_dd.value(), 0.0, 1.0);
   (void)A;
+  (void)B;
   sign_ = Vec3(sgn(m1), 0.0, sgn(m3));
   sign_[1] = sign_[0] * sign_[2] * sgn(d32);
   const double sn0 = std::clamp(sign_[1] * m2 / amp_[1], -1.0, 1.0);
@@ -94,21 +106,33 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   const double h = std::hypot(sn0, cn0);
   u0_ = incomplete_F(sn0 / h, cn0 / h, kc2_);
   K_ = kc2_ > 0.0 ? complete_K(kc2_) : std::numeric_limits<double>::infinity();
-  if (kc2_ > 0.0) period_ = 4.0 * K_ / lambda_;
+  if (kc2_ > 0.0 && kc2_dd.hi <= 1.0) {
+    K_dd_ = complete_K_dd(kc2_dd);
+    K_ = K_dd_.value();
+    period_ = (DD(4.0) * K_dd_ / lambda_dd_).value();
+  } else if (kc2_ > 0.0) {  // k'^2 rounded to 1: a sphere up to rounding; K = pi / 2
+    K_dd_ = DD(0.5) * dd_pi();
+    period_ = (DD(4.0) * K_dd_ / lambda_dd_).value();
+  }
   n_ = -J[2] * d21 / (J[0] * d32);
   phi_rate_ = M_ / J[0];
   phi_coef_ = M_ * d21 * d31 / (J[0] * J[0] * d32 * lambda_);
   Gc_ = kc2_ > 0.0 ? complete_third_kind_excess(kc2_, n_) : 0.0;
-  G0_ = G(phase(u0_));
+  G0_ = G(phase_at(0.0));
   const Mat3 R0 = q0_.toRotationMatrix() * C_.transpose();  // W -> S at t = 0
   Q_ = R0 * to_L_frame(m).transpose();
 }
 
-// u reduced by the period 2K, and sn, cn, dn of u itself: sn and cn change sign every 2K, dn
-// does not.
-ExactFreeMotion::Phase ExactFreeMotion::phase(double u) const {
+// u = u0 + lambda t reduced by the period 2K, and sn, cn, dn of u itself: sn and cn change
+// sign every 2K, dn does not. u and its reduction in double-double: in double, the rounding of
+// lambda t and of j 2K (eps u) would be the phase's error, growing with t.
+ExactFreeMotion::Phase ExactFreeMotion::phase_at(double t) const {
   Phase p;
-  p.reduced = reduce_by_half_period(u, K_, kc2_);
+  if (std::isfinite(K_)) {
+    p.reduced = reduce_by_half_period(DoubleDouble(u0_) + lambda_dd_ * DoubleDouble(t), K_dd_, kc2_);
+  } else {
+    p.reduced = reduce_by_half_period(u0_ + lambda_ * t, K_, kc2_);
+  }
   const double odd = std::fmod(p.reduced.j, 2.0) == 0.0 ? 1.0 : -1.0;
   p.sn = odd * p.reduced.of_r.sn;
   p.cn = odd * p.reduced.of_r.cn;
@@ -127,7 +151,7 @@ Vec3 ExactFreeMotion::m_W(const Phase& p) const {
 }
 
 FreeBodyState ExactFreeMotion::at_elliptic(double t) const {
-  const Phase p = phase(u0_ + lambda_ * t);
+  const Phase p = phase_at(t);
   const double Gu = G(p);
   const Vec3 m = m_W(p);
   const double phi = phi_rate_ * t - phi_coef_ * (Gu - G0_);
@@ -148,7 +172,7 @@ Vec3 ExactFreeMotion::momentum_at(double t) const {
       break;
   }
   // m alone needs sn, cn, dn of u, not the third-kind integral of the attitude.
-  return C_.transpose() * m_W(phase(u0_ + lambda_ * t));
+  return C_.transpose() * m_W(phase_at(t));
 }
 
 FreeBodyState ExactFreeMotion::at(double t) const {

@@ -132,6 +132,14 @@ std::string components(const BenchReport& r, bool markdown) {
       out += (markdown ? "- " : "  ") + line + "\n";
     }
   }
+  if (!r.exact_drift.empty()) {
+    out += "\nP2's exact solution against 50 digits, |m(t) - m_50(t)| in eps |m0|:\n" +
+           std::string(markdown ? "\n" : "");
+    for (const auto& d : r.exact_drift) {
+      out += fmt::format("{}t = {:.0e} s ({:.3g} periods): {:.2f} eps\n", markdown ? "- " : "  ",
+                         d.t_s, d.periods, d.error_eps);
+    }
+  }
   if (!r.dense.empty()) {
     out += "\nP2 sampled at few and at many output times (one run each; dense output in dopri5 "
            "and dop853, rkf78 lands on every time):\n" +
@@ -208,6 +216,11 @@ std::string render_bench(const BenchReport& r, const std::string& format) {
                        {"time_many_s", d.time_many_s}});
     }
     j["dense_output"] = dense;
+    nlohmann::ordered_json drift = nlohmann::ordered_json::array();
+    for (const auto& d : r.exact_drift) {
+      drift.push_back({{"t_s", d.t_s}, {"periods", d.periods}, {"error_eps", d.error_eps}});
+    }
+    j["exact_error_against_time"] = drift;
     nlohmann::ordered_json ts = nlohmann::ordered_json::array();
     for (const auto& t : r.targets) {
       ts.push_back({{"target", t.what},

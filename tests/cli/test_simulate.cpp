@@ -130,8 +130,10 @@ TEST_CASE("bench --quick (the CI smoke run) reports every problem, component and
   // Timings are not judged here (CI machines are noisy); that every target was measured is.
   // Per problem P1, P3, P4: four method-for-method ratios and best against best (15); the
   // heavy top's closed form: time and error (2); the elliptic functions (2), the splitting (2),
-  // dense output of dopri5 and dop853 (2), the keys' process times (2).
-  REQUIRE(j["targets"].size() == 25);
+  // dense output of dopri5 and dop853 (2), the exact solution's error to t = 1e7 (1), the keys'
+  // process times (2).
+  REQUIRE(j["targets"].size() == 26);
+  REQUIRE(j["exact_error_against_time"].size() == 7);
   for (const auto& t : j["targets"]) {
     INFO(t["target"]);
     CHECK(t["measured"].template get<double>() >= 0.0);
