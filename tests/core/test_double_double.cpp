@@ -1,0 +1,65 @@
+// Double-double arithmetic (core/double_double.hpp) and the complete integral K to
+// double-double (core/elliptic.hpp), against Boost.Multiprecision at 50 digits.
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "core/double_double.hpp"
+#include "core/elliptic.hpp"
+
+using namespace wobble;
+using Catch::Matchers::WithinAbs;
+using mp = boost::multiprecision::cpp_bin_float_50;
+
+namespace {
+mp exact(const DoubleDouble& x) {
+  return mp(x.hi) + mp(x.lo);
+}
+// Relative error in units of 2^-104 (a double-double's precision is about 2^-106; its
+// operations' bounds are a few of these, Hida, Li and Bailey's QD library).
+double error_in_u(const DoubleDouble& got, const mp& want) {
+  return static_cast<double>(abs(exact(got) - want) / abs(want)) / 0x1p-104;
+}
+}  // namespace
+
+TEST_CASE("two_sum and two_prod are exact") {
+  for (const auto& [a, b] : {std::pair{0.1, 0.7}, std::pair{1e16, 1.0 + 0x1p-52},
+                             std::pair{-3.0, 1.0 / 3.0}, std::pair{M_PI, M_E * 1e-20}}) {
+    REQUIRE(exact(two_sum(a, b)) == mp(a) + mp(b));
+    REQUIRE(exact(two_prod(a, b)) == mp(a) * mp(b));
+  }
+}
+
+TEST_CASE("double-double +, *, / and sqrt within a few 2^-104 of 50 digits") {
+  const DoubleDouble x = two_prod(M_PI, 1.0 / 3.0), y = two_sum(M_E, 1e-17), z = two_prod(7.0, 0.1);
+  const mp X = exact(x), Y = exact(y), Z = exact(z);
+  // Bounds: the QD library's, 2 u for + and *, 4 u for / and sqrt (u = 2^-104), doubled.
+  CHECK(error_in_u(x + y, X + Y) <= 4.0);
+  CHECK(error_in_u(x - z, X - Z) <= 4.0);
+  CHECK(error_in_u(x * y, X * Y) <= 4.0);
+  CHECK(error_in_u(x / y, X / Y) <= 8.0);
+  CHECK(error_in_u(sqrt(y), sqrt(Y)) <= 8.0);
+  CHECK(error_in_u(dd_pi(), boost::math::constants::pi<mp>()) <= 1.0);
+  // Not merely double: the low word carries digits a double would have lost.
+  REQUIRE(std::abs(static_cast<double>((exact(x * y) - X * Y) / (X * Y))) <
+          std::numeric_limits<double>::epsilon() / 1e6);
+}
+
+TEST_CASE("K by the AGM in double-double, from k'^2 = 1 to 1e-16, against 50 digits") {
+  for (const double kc2 : {1.0, 0.5, 0.1, 1e-4, 1e-8, 1e-12, 1e-16}) {
+    const mp k = sqrt(1 - mp(kc2));
+    const mp want = boost::math::ellint_1(k);
+    const double e = error_in_u(complete_K_dd(DoubleDouble(kc2)), want);
+    INFO("k'^2 = " << kc2 << ": " << e << " u");
+    // Some ten AGM steps, each a few u, and the final division: 64 u, far below a double's
+    // 2^52 u.
+    REQUIRE(e <= 64.0);
+    // The double K agrees with it to a double's rounding.
+    REQUIRE_THAT(complete_K(kc2), WithinAbs(static_cast<double>(want),
+                                            8 * std::numeric_limits<double>::epsilon() *
+                                                static_cast<double>(want)));
+  }
+}
