@@ -23,9 +23,11 @@ namespace wobble::bench {
 struct MpMotion {
   using mp = boost::multiprecision::cpp_bin_float_50;
   mp a1, a2, a3, lambda, u0, k, s1, s2, s3;
+  mp n, phi_rate, phi_coef;  ///< the precession angle's constants (core/exact_free_body.hpp)
   MpMotion(const Vec3& I, const Vec3& m0) {
     const mp J1 = I[0], J2 = I[1], J3 = I[2], m1 = m0[0], m2 = m0[1], m3 = m0[2];
     const mp d21 = J2 - J1, d31 = J3 - J1, d32 = J3 - J2;
+    const mp M = sqrt(m1 * m1 + m2 * m2 + m3 * m3);
     const mp B = m2 * m2 * d21 / J2 + m3 * m3 * d31 / J3;
     const mp D = m3 * m3 * d32 / J3 - m1 * m1 * d21 / J1;
     a1 = sqrt(m1 * m1 + m2 * m2 * J1 * d32 / (J2 * d31));
@@ -37,6 +39,26 @@ struct MpMotion {
     s3 = m3 < 0 ? -1 : 1;
     s2 = s1 * s3 * (d32 < 0 ? -1 : 1);  // moments descending: m circles the least axis
     u0 = boost::math::ellint_1(k, atan2(s2 * m2 / a2, abs(m1) / a1));
+    n = -J3 * d21 / (J1 * d32);
+    phi_rate = M / J1;
+    phi_coef = M * d21 * d31 / (J1 * J1 * d32 * lambda);
+  }
+  /// (Pi(n; am u | k) - u) / n by a second route: Legendre's Pi from Boost.Math's ellint_3 (not
+  /// Carlson's R_J), am u from the reduced argument, continued through the periods.
+  mp G(const mp& u) const {
+    const mp K = boost::math::ellint_1(k), j = round(u / (2 * K)), r = u - 2 * K * j;
+    mp cn, dn;
+    const mp sn = boost::math::jacobi_elliptic(k, r, &cn, &dn);
+    const mp Pi = boost::math::ellint_3(k, n, atan2(sn, cn)) +
+                  2 * j * boost::math::ellint_3(k, n, boost::math::constants::pi<mp>() / 2);
+    return (Pi - u) / n;
+  }
+  /// The precession angle phi(t) of the attitude R = Q Rz(phi) P(m(t)), reduced to [-pi, pi].
+  double phi_at(double t) const {
+    const mp u = u0 + lambda * mp(t);
+    const mp phi = phi_rate * mp(t) - phi_coef * (G(u) - G(u0));
+    const mp two_pi = 2 * boost::math::constants::pi<mp>();
+    return static_cast<double>(phi - two_pi * round(phi / two_pi));
   }
   Vec3 m_at(double t) const {
     mp cn, dn;
@@ -54,7 +76,12 @@ struct MpMotion {
 /// m(t) of any free body with three distinct moments at 50 digits: the body turned into the
 /// frame MpMotion serves (axes sorted by a proper permutation, then reversed if m circles the
 /// axis of least moment, as core/exact_free_body does) and back.
-inline Vec3 mp_free_momentum(const Vec3& I, const Vec3& m0, double t) {
+/// The working frame of mp_free_momentum: m_W = C m, moments J in W.
+struct MpWorkingFrame {
+  Mat3 C;
+  Vec3 J, m;
+};
+inline MpWorkingFrame mp_working_frame(const Vec3& I, const Vec3& m0) {
   std::array<int, 3> idx{0, 1, 2};
   std::sort(idx.begin(), idx.end(), [&](int x, int y) { return I[x] < I[y]; });
   Mat3 S = Mat3::Zero();
@@ -70,7 +97,32 @@ inline Vec3 mp_free_momentum(const Vec3& I, const Vec3& m0, double t) {
     J = Vec3(J[2], J[1], J[0]);
     m = flip * m;
   }
-  return S.transpose() * MpMotion(J, m).m_at(t);
+  return {S, J, m};
+}
+
+inline Vec3 mp_free_momentum(const Vec3& I, const Vec3& m0, double t) {
+  const MpWorkingFrame w = mp_working_frame(I, m0);
+  return w.C.transpose() * MpMotion(w.J, w.m).m_at(t);
+}
+
+/// The attitude q_PtoS(t) of the same motion: R_WtoS = Q Rz(phi) P(m_W), with phi and m at 50
+/// digits and only this composition in double (a few eps). P(m) is the rotation taking m to
+/// |m| z of core/exact_free_body.cpp (rows (m1 m3, m2 m3, -rho^2)/(rho |m|), (-m2, m1, 0)/rho,
+/// m/|m|): phi is measured from it, so the reference must use the same one.
+inline Quat mp_free_attitude(const Vec3& I, const Vec3& m0, const Quat& q0, double t) {
+  const MpWorkingFrame w = mp_working_frame(I, m0);
+  const MpMotion motion(w.J, w.m);
+  const auto P = [](const Vec3& m) {
+    const double rho2 = m[0] * m[0] + m[1] * m[1], rho = std::sqrt(rho2), M = m.norm();
+    Mat3 R;
+    R.row(0) << m[0] * m[2] / (rho * M), m[1] * m[2] / (rho * M), -rho2 / (rho * M);
+    R.row(1) << -m[1] / rho, m[0] / rho, 0.0;
+    R.row(2) = m.transpose() / M;
+    return R;
+  };
+  const Mat3 Q = q0.normalized().toRotationMatrix() * w.C.transpose() * P(w.m).transpose();
+  const Mat3 Rz = Eigen::AngleAxisd(motion.phi_at(t), Vec3::UnitZ()).toRotationMatrix();
+  return Quat(Mat3(Q * Rz * P(motion.m_at(t)) * w.C)).normalized();
 }
 
 /// The heavy top (core/exact_heavy_top.hpp's conventions) at 50 digits by a second route:

@@ -12,9 +12,8 @@
 /// - P3: near the separatrix, I = (1, 2, 3), m0 = (1e-4, 1, 1e-4), T = 200, with its measured
 ///   condition (how far a 1-ulp change of m0 moves m(T));
 /// - P4: a heavy top.
-/// References, never the method measured: the free body's m(T) at 50 digits (bench/
-/// mp_reference.hpp; its attitude from the exact solution in double), the heavy top's closed
-/// form at 50 digits. Exact rows: the free body's and the heavy top's exact solutions (one
+/// References, never the method measured: the free body's m(T) and attitude at 50 digits
+/// (bench/mp_reference.hpp), the heavy top's closed form at 50 digits. Exact rows: the free body's and the heavy top's exact solutions (one
 /// state at T, set-up included).
 /// Error: the larger of |m(T) - m_ref(T)| / |m0| and the Frobenius distance of the attitudes.
 #include <cstdint>
@@ -58,11 +57,11 @@ struct DriftRow {
 };
 std::vector<DriftRow> drift_table(bool quick);
 
-/// The exact solution's error against time on P2's body: |m(t) - m_50(t)| / (eps |m0|) at
-/// t = 10, 100, ..., 1e7 (1e6 periods and more), m_50 the same motion at 50 digits from the
-/// same double inputs (bench/mp_reference.hpp).
+/// The exact solution's error against time on P2's body at t = 10, 100, ..., 1e7 (1e6
+/// periods): |m(t) - m_50(t)| / (eps |m0|) and the attitudes' Frobenius distance / eps, the
+/// reference the same motion at 50 digits from the same double inputs (bench/mp_reference.hpp).
 struct ExactDriftPoint {
-  double t_s = 0.0, periods = 0.0, error_eps = 0.0;
+  double t_s = 0.0, periods = 0.0, error_eps = 0.0, attitude_eps = 0.0;
 };
 std::vector<ExactDriftPoint> exact_error_against_time();
 

@@ -106,6 +106,33 @@ DoubleDouble complete_K_dd(const DoubleDouble& kc2) {
   return dd_pi() / (DoubleDouble(2.0) * a);
 }
 
+DoubleDouble complete_third_kind_excess_dd(const DoubleDouble& kc2, const DoubleDouble& n) {
+  // cel(kc, p, a, b) = int_0^(pi/2) (a cos^2 + b sin^2) / ((cos^2 + p sin^2)
+  // sqrt(cos^2 + kc^2 sin^2)) dphi; with p = 1 - n, a = 0, b = 1 it is (Pi(n) - K) / n.
+  using DD = DoubleDouble;
+  DD p = DD(1.0) - n, qc = sqrt(kc2), a(0.0), b(1.0), e = qc, em(1.0);
+  p = sqrt(p);
+  b = b / p;
+  // Each step squares the relative gap |g - qc| / g; once below 2^-53 the next would be
+  // below 2^-106: the sum is complete. The bound guards against a loop that would not end.
+  constexpr int kMaxSteps = 64;
+  for (int i = 0; i < kMaxSteps; ++i) {
+    const DD f = a;
+    a = a + b / p;
+    DD g = e / p;
+    b = b + f * g;
+    b = b + b;
+    p = g + p;
+    g = em;
+    em = em + qc;
+    if (std::abs((g - qc).hi) <= 0x1p-53 * g.hi) break;
+    qc = sqrt(e);
+    qc = qc + qc;
+    e = qc * em;
+  }
+  return DD(0.5) * dd_pi() * (b + a * em) / (em * (em + p));
+}
+
 double third_kind_excess(const ReducedArgument& a, double kc2, double n, double complete) {
   return 2.0 * a.j * complete + third_kind_excess(a.of_r.sn, a.of_r.cn, kc2, n);
 }

@@ -118,6 +118,14 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   phi_rate_ = M_ / J[0];
   phi_coef_ = M_ * d21 * d31 / (J[0] * J[0] * d32 * lambda_);
   Gc_ = kc2_ > 0.0 ? complete_third_kind_excess(kc2_, n_) : 0.0;
+  if (kc2_ > 0.0) {
+    // The precession's terms that grow with t, phi_rate t and phi_coef 2 j Gc, to double-double.
+    const DD M_dd = sqrt(two_prod(m1, m1) + two_prod(m2, m2) + two_prod(m3, m3));
+    const DD n_dd = -(DD(J[2]) * d21_dd) / (DD(J[0]) * d32_dd);
+    phi_rate_dd_ = M_dd / DD(J[0]);
+    const DD phi_coef_dd = M_dd * d21_dd * d31_dd / (DD(J[0]) * DD(J[0]) * d32_dd * lambda_dd_);
+    phi_per_half_period_dd_ = DD(2.0) * phi_coef_dd * complete_third_kind_excess_dd(kc2_dd, n_dd);
+  }
   G0_ = G(phase_at(0.0));
   const Mat3 R0 = q0_.toRotationMatrix() * C_.transpose();  // W -> S at t = 0
   Q_ = R0 * to_L_frame(m).transpose();
@@ -150,11 +158,26 @@ Vec3 ExactFreeMotion::m_W(const Phase& p) const {
   return Vec3(sign_[0] * amp_[0] * p.cn, sign_[1] * amp_[1] * p.sn, sign_[2] * amp_[2] * p.dn);
 }
 
+// phi = phi_rate t - phi_coef (G(u) - G0), G(u) = 2 j Gc + (the excess of r). The two terms
+// that grow with t, phi_rate t - phi_coef 2 j Gc, are formed and reduced by 2 pi in
+// double-double (in double their rounding, eps per radian turned, would be phi's error); the
+// bounded rest in double.
+double ExactFreeMotion::precession_angle(double t, const Phase& p) const {
+  if (!std::isfinite(K_)) return phi_rate_ * t - phi_coef_ * (G(p) - G0_);  // the separatrix
+  const DoubleDouble growing =
+      phi_rate_dd_ * DoubleDouble(t) - phi_per_half_period_dd_ * DoubleDouble(p.reduced.j);
+  const DoubleDouble two_pi = DoubleDouble(2.0) * dd_pi();
+  const double turns = std::nearbyint(growing.hi / two_pi.hi);
+  const DoubleDouble reduced =
+      growing - (two_prod(turns, two_pi.hi) + DoubleDouble(turns * two_pi.lo));
+  const double excess = third_kind_excess(p.reduced.of_r.sn, p.reduced.of_r.cn, kc2_, n_);
+  return reduced.value() - phi_coef_ * (excess - G0_);
+}
+
 FreeBodyState ExactFreeMotion::at_elliptic(double t) const {
   const Phase p = phase_at(t);
-  const double Gu = G(p);
   const Vec3 m = m_W(p);
-  const double phi = phi_rate_ * t - phi_coef_ * (Gu - G0_);
+  const double phi = precession_angle(t, p);
   const Mat3 R_WtoS = Q_ * rot_z(phi) * to_L_frame(m);
   FreeBodyState s;
   s.m_B = C_.transpose() * m;

@@ -53,6 +53,7 @@ class ExactFreeMotion {
   Vec3 J_ = Vec3::Ones(), amp_ = Vec3::Zero(), sign_ = Vec3::Ones();
   double M_ = 0.0, lambda_ = 0.0, u0_ = 0.0, kc2_ = 0.0, K_ = 0.0, n_ = 0.0;
   DoubleDouble lambda_dd_, K_dd_;  ///< lambda and K to double-double, for the phase
+  DoubleDouble phi_rate_dd_, phi_per_half_period_dd_;  ///< phi_rate and phi_coef 2 Gc, likewise
   double phi_rate_ = 0.0, phi_coef_ = 0.0, G0_ = 0.0, Gc_ = 0.0;
   Mat3 Q_ = Mat3::Identity();  ///< R_WtoS(0) P(m0)^T
   struct Phase {
@@ -60,6 +61,7 @@ class ExactFreeMotion {
     double sn = 0.0, cn = 0.0, dn = 0.0;  ///< of u
   };
   Phase phase_at(double t_s) const;
+  double precession_angle(double t_s, const Phase& p) const;
   double G(const Phase& p) const;
   Vec3 m_W(const Phase& p) const;
 };

@@ -380,7 +380,7 @@ TEST_CASE("hard 14: the heavy top's closed form against 50 digits") {
   }
 }
 
-TEST_CASE("hard 15: the free body's m(t) after a million periods, against 50 digits") {
+TEST_CASE("hard 15: the free body after a million periods, m(t) and attitude against 50 digits") {
   // The phase u0 + lambda t and its reduction by 2K in double-double: in double their rounding,
   // eps u, was the error (measured 2.9e-13 after T = 1e4 on this body, ~1300 eps). Against the
   // same formulas at 50 digits from the same double inputs: each component within 8 eps of
@@ -391,14 +391,35 @@ TEST_CASE("hard 15: the free body's m(t) after a million periods, against 50 dig
       {Vec3(1.0, 2.0, 3.0), Vec3(0.3, 1.0, 0.8)},
       {Vec3(1.0, 2.0, 3.0), Vec3(1e-3, 1.0, 2e-3)},  // k'^2 ~ 1e-6: near the separatrix
   };
+  // The attitude likewise: its precession angle's growing terms (phi_rate t and the complete
+  // third-kind integral times the half periods) in double-double, reduced by 2 pi there; the
+  // reference's angle by Legendre's Pi (Boost.Math ellint_3) at 50 digits. Within 16 eps (the
+  // rotations composed in double on either side, a few eps each) plus what the reduced phase's
+  // own rounding moves: r is a double in [-K, K], off by up to eps K, and the attitude turns at
+  // |w| per unit of t, 1 / lambda per unit of u, so by sqrt(2) |w| eps K / lambda in Frobenius
+  // norm; four times that, for r's rounding and sn's. Near the separatrix (K ~ 8) this is
+  // ~60 eps at the fast flip, within the first period as after a million (measured alike).
+  const Quat q0(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
   for (const auto& [I, m0] : bodies) {
-    const ExactFreeMotion exact(I, m0, Quat::Identity());
+    const ExactFreeMotion exact(I, m0, q0);
     std::vector<double> times{10.0, 1e3, 1e5, 1e7, 1e6 * exact.period_s() + 0.37};
     for (const double t : times) {
-      const double error = (exact.momentum_at(t) - bench::mp_free_momentum(I, m0, t)).norm();
+      const FreeBodyState s = exact.at(t);
+      const double error = (s.m_B - bench::mp_free_momentum(I, m0, t)).norm();
+      const double attitude =
+          (s.q_BtoS.toRotationMatrix() -
+           bench::mp_free_attitude(I, m0, q0, t).toRotationMatrix()).norm();
+      const bench::MpWorkingFrame w = bench::mp_working_frame(I, m0);
+      const bench::MpMotion ref(w.J, w.m);
+      const double K = static_cast<double>(boost::math::ellint_1(ref.k));
+      const double speed = s.m_B.cwiseQuotient(I).norm();
+      const double phase_rounding =
+          4 * std::sqrt(2.0) * speed * kEps * K / static_cast<double>(ref.lambda);
       INFO("I = " << I.transpose() << ", t = " << t << ": " << error / (kEps * m0.norm())
-                  << " eps |m0|");
+                  << " eps |m0|, attitude " << attitude / kEps << " eps, bound "
+                  << (16 * kEps + phase_rounding) / kEps << " eps");
       REQUIRE(error <= 8 * kEps * m0.norm());
+      REQUIRE(attitude <= 16 * kEps + phase_rounding);
     }
   }
 }
