@@ -89,4 +89,12 @@ inline DoubleDouble dd_pi() {
   return {3.141592653589793116e+00, 1.224646799147353207e-16};
 }
 
+/// x - 2 pi q, q the nearest whole number of turns, rounded to double: an angle that keeps its
+/// last digits however many turns x holds (|x| below 2^52 turns, q exact in a double).
+inline double remainder_two_pi(const DoubleDouble& x) {
+  const DoubleDouble two_pi(2.0 * dd_pi().hi, 2.0 * dd_pi().lo);
+  const double turns = std::nearbyint(x.hi / two_pi.hi);
+  return (x - (two_prod(turns, two_pi.hi) + DoubleDouble(turns * two_pi.lo))).value();
+}
+
 }  // namespace wobble

@@ -166,12 +166,8 @@ double ExactFreeMotion::precession_angle(double t, const Phase& p) const {
   if (!std::isfinite(K_)) return phi_rate_ * t - phi_coef_ * (G(p) - G0_);  // the separatrix
   const DoubleDouble growing =
       phi_rate_dd_ * DoubleDouble(t) - phi_per_half_period_dd_ * DoubleDouble(p.reduced.j);
-  const DoubleDouble two_pi = DoubleDouble(2.0) * dd_pi();
-  const double turns = std::nearbyint(growing.hi / two_pi.hi);
-  const DoubleDouble reduced =
-      growing - (two_prod(turns, two_pi.hi) + DoubleDouble(turns * two_pi.lo));
   const double excess = third_kind_excess(p.reduced.of_r.sn, p.reduced.of_r.cn, kc2_, n_);
-  return reduced.value() - phi_coef_ * (excess - G0_);
+  return remainder_two_pi(growing) - phi_coef_ * (excess - G0_);
 }
 
 FreeBodyState ExactFreeMotion::at_elliptic(double t) const {

@@ -28,6 +28,10 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   u0_ = e3.z();
   w3_ = m0_.z() / top.I3_kgm2;
   a_ = m0_.z() / I1;               // p_psi / I1
+  // The spin's rate to double-double: psi grows by w3 t, hundreds of radians, whose rounding
+  // would otherwise be the attitude's error (eps per radian).
+  const DoubleDouble w3_dd = DoubleDouble(m0_.z()) / DoubleDouble(top.I3_kgm2);
+  psidot_lin_dd_ = w3_dd;
   if (sin0 == 0.0) {
     if (m0_.x() != 0.0 || m0_.y() != 0.0)
       throw std::invalid_argument(
@@ -63,6 +67,8 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
     kind_ = Kind::steady;
     phidot_lin_ = start.phidot;
     psidot_lin_ = start.psidot;
+    phidot_lin_dd_ = DoubleDouble(start.phidot);
+    psidot_lin_dd_ = w3_dd - two_prod(start.phidot, u0_);
     return;
   }
   kind_ = Kind::nutating;
@@ -99,6 +105,8 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   n_plus_ = du_ / one_minus_u1;
   phidot_lin_ = 0.5 * b_minus_a_ / one_minus_u1;
   psidot_lin_ = w3_ - a_ - phidot_lin_;
+  phidot_lin_dd_ = DoubleDouble(phidot_lin_);
+  psidot_lin_dd_ = w3_dd - DoubleDouble(m0_.z()) / DoubleDouble(I1) - DoubleDouble(phidot_lin_);
   if (b_minus_a_ != 0.0) {
     c_plus_ = 0.5 * b_minus_a_ * n_plus_ / (one_minus_u1 * rate_);
     if (kc2_ > 0.0) complete_plus_ = complete_third_kind_excess(kc2_, n_plus_);
@@ -108,6 +116,8 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
     const double lin = 0.5 * b_plus_a_ / one_plus_u1_;
     phidot_lin_ += lin;
     psidot_lin_ += lin;
+    phidot_lin_dd_ = phidot_lin_dd_ + DoubleDouble(lin);
+    psidot_lin_dd_ = psidot_lin_dd_ + DoubleDouble(lin);
     c_minus_ = 0.5 * b_plus_a_ * n_minus_ / (one_plus_u1_ * rate_);
     if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess(kc2_, n_minus_);
   }
@@ -125,9 +135,13 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
   a.u = u0_;
   a.one_minus_u = 1.0 - u0_;
   a.one_plus_u = 1.0 + u0_;
+  // The linear parts, which grow with t, in double-double and reduced by 2 pi there.
+  const DoubleDouble t_dd(t);
+  const double phi_lin = remainder_two_pi(phidot_lin_dd_ * t_dd);
+  const double psi_lin = remainder_two_pi(psidot_lin_dd_ * t_dd);
   if (kind_ != Kind::nutating) {
-    a.dphi = phidot_lin_ * t;
-    a.dpsi = kind_ == Kind::sleeping ? w3_ * t : psidot_lin_ * t;
+    a.dphi = phi_lin;
+    a.dpsi = psi_lin;
     return a;
   }
   const Phase p = phase(tau0_ + rate_ * t);
@@ -142,8 +156,8 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
   a.dtheta = std::atan2(std::sqrt(a.one_minus_u * a.one_plus_u), a.u) - theta0_;
   const double dG_plus = c_plus_ != 0.0 ? excess(p, n_plus_, complete_plus_) - G_plus0_ : 0.0;
   const double dG_minus = c_minus_ != 0.0 ? excess(p, n_minus_, complete_minus_) - G_minus0_ : 0.0;
-  a.dphi = phidot_lin_ * t + c_plus_ * dG_plus + c_minus_ * dG_minus;
-  a.dpsi = psidot_lin_ * t - c_plus_ * dG_plus + c_minus_ * dG_minus;
+  a.dphi = phi_lin + c_plus_ * dG_plus + c_minus_ * dG_minus;
+  a.dpsi = psi_lin - c_plus_ * dG_plus + c_minus_ * dG_minus;
   return a;
 }
 

@@ -88,6 +88,7 @@ class ExactHeavyTop {
   double n_plus_ = 0.0, n_minus_ = 0.0, c_plus_ = 0.0, c_minus_ = 0.0;  ///< c± = coefficient of G±
   double complete_plus_ = 0.0, complete_minus_ = 0.0, G_plus0_ = 0.0, G_minus0_ = 0.0;
   double phidot_lin_ = 0.0, psidot_lin_ = 0.0;  ///< the linear parts of phi' and psi'
+  DoubleDouble phidot_lin_dd_, psidot_lin_dd_;   ///< the same to double-double, for phi and psi
 };
 
 }  // namespace wobble

@@ -367,9 +367,11 @@ TEST_CASE("hard 14: the heavy top's closed form against 50 digits") {
       const FreeBodyState e = exact.at(t), r = ref.at(t);
       const double dq = (e.q_BtoS.toRotationMatrix() - r.q_BtoS.toRotationMatrix()).norm();
       const double dm = (e.m_B - r.m_B).norm() / m0.norm();
-      // Each phase the closed form accumulates (the spin w3 t, the nutation's 2 pi t / P) is
-      // rounded relative to its size, and so is its rate: a few eps per radian turned; on top,
-      // both sides compose four rotations in double (a few eps each).
+      // The linear phases (w3 t and the precession's) are formed in double-double and reduced
+      // by 2 pi there; the rest still grows with t: the nutation's phase and the elliptic
+      // constants come from the cubic's roots in double, each rounded relative to its size (P4
+      // measured 39 eps at t = 2, 64 before the double-double phases). A few eps per radian
+      // turned bounds it; on top, both sides compose four rotations in double (a few eps each).
       const double turned = std::abs(m0.z() / top.I3_kgm2) * t + 2 * M_PI * t / exact.nutation_period_s();
       const double bound = kEps * (32 + 8 * turned);
       INFO("theta0 " << c.theta << " t " << t << ": attitude " << dq / kEps << " eps, momentum "
