@@ -13,8 +13,8 @@
 ///   condition (how far a 1-ulp change of m0 moves m(T));
 /// - P4: a heavy top.
 /// References, never the method measured: the free body's m(T) and attitude at 50 digits
-/// (bench/mp_reference.hpp), the heavy top's closed form at 50 digits. Exact rows: the free body's and the heavy top's exact solutions (one
-/// state at T, set-up included).
+/// (bench/mp_reference.hpp), the heavy top's closed form at 50 digits. Exact rows: the free
+/// body's and the heavy top's exact solutions (one state at T, set-up included).
 /// Error: the larger of |m(T) - m_ref(T)| / |m0| and the Frobenius distance of the attitudes.
 #include <cstdint>
 #include <string>

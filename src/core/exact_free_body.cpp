@@ -84,7 +84,7 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   const double m1 = m[0], m2 = m[1], m3 = m[2];
   M_ = m.norm();
   const double A = m1 * m1 * d31 / J[0] + m2 * m2 * d32 / J[1];  // 2 T J3 - |m|^2
-  const double B = m2 * m2 * d21 / J[1] + m3 * m3 * d31 / J[2];  // |m|^2 - 2 T J1
+  // B = |m|^2 - 2 T J1, to double-double.
   // The phase's rate and period to double-double (the phase u0 + lambda t is formed so too).
   const DD d21_dd = difference(J[1], J[0]), d31_dd = difference(J[2], J[0]),
            d32_dd = difference(J[2], J[1]);
@@ -98,7 +98,6 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   const DD kc2_dd = d31_dd * D_dd / (d32_dd * B_dd);
   kc2_ = std::clamp(kc2_dd.value(), 0.0, 1.0);
   (void)A;
-  (void)B;
   sign_ = Vec3(sgn(m1), 0.0, sgn(m3));
   sign_[1] = sign_[0] * sign_[2] * sgn(d32);
   const double sn0 = std::clamp(sign_[1] * m2 / amp_[1], -1.0, 1.0);
@@ -137,7 +136,8 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
 ExactFreeMotion::Phase ExactFreeMotion::phase_at(double t) const {
   Phase p;
   if (std::isfinite(K_)) {
-    p.reduced = reduce_by_half_period(DoubleDouble(u0_) + lambda_dd_ * DoubleDouble(t), K_dd_, kc2_);
+    const DoubleDouble u = DoubleDouble(u0_) + lambda_dd_ * DoubleDouble(t);
+    p.reduced = reduce_by_half_period(u, K_dd_, kc2_);
   } else {
     p.reduced = reduce_by_half_period(u0_ + lambda_ * t, K_, kc2_);
   }

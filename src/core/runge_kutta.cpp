@@ -141,7 +141,9 @@ struct StepInterpolant {
     State7 y;
     for (int j = 0; j < 7; ++j) {  // written out, as in axpy(), for the same reason
       double acc = c[n - 1].data()[j] * x;
-      for (std::size_t i = n - 1; i-- > 0;) acc = (acc + c[i].data()[j]) * ((n - 1 - i) % 2 == 0 ? x : odd);
+      for (std::size_t i = n - 1; i-- > 0;) {
+        acc = (acc + c[i].data()[j]) * ((n - 1 - i) % 2 == 0 ? x : odd);
+      }
       y.data()[j] = y_old.data()[j] + acc;
     }
     return y;

@@ -58,8 +58,7 @@ struct Dopri5 {
   static constexpr std::array<std::array<double, 4>, S> P{
       {{1, -8048581381.0 / 2820520608, 8663915743.0 / 2820520608, -12715105075.0 / 11282082432},
        {0, 0, 0, 0},
-       {0, 131558114200.0 / 32700410799, -68118460800.0 / 10900136933,
-        87487479700.0 / 32700410799},
+       {0, 131558114200.0 / 32700410799, -68118460800.0 / 10900136933, 87487479700.0 / 32700410799},
        {0, -1754552775.0 / 470086768, 14199869525.0 / 1410260304, -10690763975.0 / 1880347072},
        {0, 127303824393.0 / 49829197408, -318862633887.0 / 49829197408,
         701980252875.0 / 199316789632},
@@ -97,7 +96,6 @@ struct Rkf78 {
   static constexpr bool kTwoEstimates = false;
   static constexpr bool kDense = false;  // Fehlberg's pair has no continuous extension
 };
-
 
 // Dormand and Prince's DOP853 (Hairer, Norsett and Wanner, Solving ODEs I, 2nd ed., and
 // Hairer's dop853.f): order 8, twelve stages and a thirteenth, f at the new solution, that is

@@ -59,9 +59,9 @@ TEST_CASE("K by the AGM in double-double, from k'^2 = 1 to 1e-16, against 50 dig
     // 2^52 u.
     REQUIRE(e <= 64.0);
     // The double K agrees with it to a double's rounding.
-    REQUIRE_THAT(complete_K(kc2), WithinAbs(static_cast<double>(want),
-                                            8 * std::numeric_limits<double>::epsilon() *
-                                                static_cast<double>(want)));
+    REQUIRE_THAT(complete_K(kc2),
+                 WithinAbs(static_cast<double>(want),
+                           8 * std::numeric_limits<double>::epsilon() * static_cast<double>(want)));
   }
 }
 
