@@ -10,6 +10,7 @@
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include "core/exact_free_body.hpp"
 #include "core/exact_heavy_top.hpp"
 #include "core/inertia.hpp"
 
@@ -106,20 +107,12 @@ inline Vec3 mp_free_momentum(const Vec3& I, const Vec3& m0, double t) {
 }
 
 /// The attitude q_PtoS(t) of the same motion: R_WtoS = Q Rz(phi) P(m_W), with phi and m at 50
-/// digits and only this composition in double (a few eps). P(m) is the rotation taking m to
-/// |m| z of core/exact_free_body.cpp (rows (m1 m3, m2 m3, -rho^2)/(rho |m|), (-m2, m1, 0)/rho,
-/// m/|m|): phi is measured from it, so the reference must use the same one.
+/// digits and only this composition in double (a few eps). P(m) is core's precession_frame:
+/// phi is measured from it, so the reference must use the same one.
 inline Quat mp_free_attitude(const Vec3& I, const Vec3& m0, const Quat& q0, double t) {
   const MpWorkingFrame w = mp_working_frame(I, m0);
   const MpMotion motion(w.J, w.m);
-  const auto P = [](const Vec3& m) {
-    const double rho2 = m[0] * m[0] + m[1] * m[1], rho = std::sqrt(rho2), M = m.norm();
-    Mat3 R;
-    R.row(0) << m[0] * m[2] / (rho * M), m[1] * m[2] / (rho * M), -rho2 / (rho * M);
-    R.row(1) << -m[1] / rho, m[0] / rho, 0.0;
-    R.row(2) = m.transpose() / M;
-    return R;
-  };
+  const auto P = precession_frame;
   const Mat3 Q = q0.normalized().toRotationMatrix() * w.C.transpose() * P(w.m).transpose();
   const Mat3 Rz = Eigen::AngleAxisd(motion.phi_at(t), Vec3::UnitZ()).toRotationMatrix();
   return Quat(Mat3(Q * Rz * P(motion.m_at(t)) * w.C)).normalized();

@@ -10,17 +10,6 @@
 namespace wobble {
 
 namespace {
-// The rotation taking m to |m| z: rows u1 = (m1 m3, m2 m3, -rho^2)/(rho |m|),
-// u2 = (-m2, m1, 0)/rho, u3 = m/|m|, rho^2 = m1^2 + m2^2 > 0.
-Mat3 to_L_frame(const Vec3& m) {
-  const double rho2 = m[0] * m[0] + m[1] * m[1], rho = std::sqrt(rho2), M = m.norm();
-  Mat3 P;
-  P.row(0) << m[0] * m[2] / (rho * M), m[1] * m[2] / (rho * M), -rho2 / (rho * M);
-  P.row(1) << -m[1] / rho, m[0] / rho, 0.0;
-  P.row(2) = m.transpose() / M;
-  return P;
-}
-
 Mat3 rot_z(double phi) {
   Mat3 R;
   const double c = std::cos(phi), s = std::sin(phi);
@@ -32,6 +21,17 @@ double sgn(double x) {
   return x < 0.0 ? -1.0 : 1.0;
 }
 }  // namespace
+
+// Rows u1 = (m1 m3, m2 m3, -rho^2)/(rho |m|), u2 = (-m2, m1, 0)/rho, u3 = m/|m|,
+// rho^2 = m1^2 + m2^2 > 0.
+Mat3 precession_frame(const Vec3& m) {
+  const double rho2 = m[0] * m[0] + m[1] * m[1], rho = std::sqrt(rho2), M = m.norm();
+  Mat3 P;
+  P.row(0) << m[0] * m[2] / (rho * M), m[1] * m[2] / (rho * M), -rho2 / (rho * M);
+  P.row(1) << -m[1] / rho, m[0] / rho, 0.0;
+  P.row(2) = m.transpose() / M;
+  return P;
+}
 
 ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& q0_PtoS)
     : I_(I_P), m0_(m0_P), q0_(q0_PtoS.normalized()) {
@@ -127,7 +127,7 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   }
   G0_ = G(phase_at(0.0));
   const Mat3 R0 = q0_.toRotationMatrix() * C_.transpose();  // W -> S at t = 0
-  Q_ = R0 * to_L_frame(m).transpose();
+  Q_ = R0 * precession_frame(m).transpose();
 }
 
 // u = u0 + lambda t reduced by the period 2K, and sn, cn, dn of u itself: sn and cn change
@@ -174,7 +174,7 @@ FreeBodyState ExactFreeMotion::at_elliptic(double t) const {
   const Phase p = phase_at(t);
   const Vec3 m = m_W(p);
   const double phi = precession_angle(t, p);
-  const Mat3 R_WtoS = Q_ * rot_z(phi) * to_L_frame(m);
+  const Mat3 R_WtoS = Q_ * rot_z(phi) * precession_frame(m);
   FreeBodyState s;
   s.m_B = C_.transpose() * m;
   s.q_BtoS = Quat(Mat3(R_WtoS * C_)).normalized();

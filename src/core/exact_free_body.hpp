@@ -23,6 +23,10 @@
 
 namespace wobble {
 
+/// P(m): the rotation taking m (working frame) to |m| z, from which the attitude's precession
+/// angle phi is measured (R_WtoS = Q Rz(phi) P(m)); m must not lie on the z axis.
+Mat3 precession_frame(const Vec3& m);
+
 class ExactFreeMotion {
  public:
   enum class Kind { steady, symmetric, elliptic };
