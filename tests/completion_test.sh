@@ -24,6 +24,10 @@ for system in prairielearn moodle gradescope; do
     echo "completion: export $system offers [$got]; its --help lists [$want]"; status=1
   fi
 done
+# The methods offered are those simulate --help names (which it takes from the method table).
+want=$("$exe" simulate --help | grep -E '^\s+--method' | sed -E 's/^\s+--method TEXT\s+//; s/ \(default.*//; s/,? or / /; s/,//g' | tr ' ' '\n' | sort | tr '\n' ' ')
+got=$(offered wobble simulate --method '')
+[[ "$want" == "$got" ]] || { echo "completion: --method offers [$got]; simulate --help names [$want]"; status=1; }
 [[ "$(offered wobble export pr)" == "prairielearn " ]] || { echo "completion: no export system"; status=1; }
 [[ "$(offered wobble simulate tennis)" == "tennis-racket " ]] || { echo "completion: no scene id"; status=1; }
 [[ "$(offered wobble solve flying-p)" == "flying-plate " ]] || { echo "completion: no problem id"; status=1; }

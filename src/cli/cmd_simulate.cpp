@@ -23,9 +23,13 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--variant", opt.variant,
                  "Per-student values: variant N of the scene's parameters");
+  // The names from the method table, so that a new method is offered where it is listed.
+  std::string methods = "auto";
+  const auto& names = simulation_method_names();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    methods += (i + 1 == names.size() ? " or " : ", ") + names[i].first;
   app.add_option("--method", opt.method,
-                 "auto, closed_form, exact, rk4, dopri5, rkf78, dop853, split2 or split4 (default: the "
-                 "scene's, usually auto)");
+                 methods + " (default: the scene's, usually auto)");
   app.add_option("--tolerance", opt.tolerance,
                  "Relative tolerance for the adaptive methods, " + scene_tolerance_range());
   app.add_option("--samples", opt.samples,
