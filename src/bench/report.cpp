@@ -45,17 +45,18 @@ void evaluate_targets(Report& r) {
     return time_at_error(r.runs, problem, method, error);
   };
   const auto ratio = [](double a, double b) { return a > 0 && b > 0 ? a / b : -1.0; };
-  // The best of a set: the least time any of them needs for the error (negative if none reach it).
-  const auto best = [&](const std::string& problem, std::initializer_list<const char*> methods,
-                        double error) {
+  // The best of sets: the least time any of them needs for the error (negative if none reach it).
+  const auto best = [&](const std::string& problem, double error, const auto&... sets) {
     double t = -1.0;
-    for (const char* m : methods) {
-      const double x = at(problem, m, error);
-      if (x > 0 && (t < 0 || x < t)) t = x;
-    }
+    const auto consider = [&](const auto& methods) {
+      for (const char* m : methods) {
+        const double x = at(problem, m, error);
+        if (x > 0 && (t < 0 || x < t)) t = x;
+      }
+    };
+    (consider(sets), ...);
     return t;
   };
-  const auto peers = {"odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45", "cvode_adams"};
   for (const auto& [P, error] : {std::pair<std::string, double>{"P1", 1e-12}, {"P3", 1e-9},
                                  {"P4", 1e-10}}) {
     const std::string e = fmt::format("{:.0e}", error);
@@ -72,16 +73,13 @@ void evaluate_targets(Report& r) {
     // Best against best, over every integrator on either side.
     r.targets.push_back(
         {P + ": best wobble integrator / best peer time at error " + e,
-         ratio(best(P, {"dopri5", "rkf78", "dop853"}, error), best(P, peers, error)), 0.67, "x"});
+         ratio(best(P, error, kWobbleIntegrators), best(P, error, kPeerIntegrators)), 0.67, "x"});
   }
   // The heavy top's closed form against the best integrator at 1e-12, at equal or smaller error.
   for (const auto& run : r.runs) {
     if (run.problem != "P4" || run.method != "exact") continue;
     constexpr double kError = 1e-12;
-    const double integrator = best("P4",
-                                   {"dopri5", "rkf78", "dop853", "odeint_dopri5", "odeint_rkf78",
-                                    "gsl_rk8pd", "gsl_rkf45", "cvode_adams"},
-                                   kError);
+    const double integrator = best("P4", kError, kWobbleIntegrators, kPeerIntegrators);
     // At equal or smaller error only.
     r.targets.push_back({"P4: exact heavy top / best integrator time at error 1e-12",
                          run.error <= kError ? ratio(run.time_s, integrator) : -1.0, 0.05, "x"});

@@ -16,6 +16,7 @@
 /// (bench/mp_reference.hpp), the heavy top's closed form at 50 digits. Exact rows: the free
 /// body's and the heavy top's exact solutions (one state at T, set-up included).
 /// Error: the larger of |m(T) - m_ref(T)| / |m0| and the Frobenius distance of the attitudes.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -45,6 +46,12 @@ struct Run {
   std::int64_t evals = 0;     ///< right-hand-side evaluations (sub-flows for splittings)
   double time_s = 0.0;        ///< median whole-run time
 };
+
+/// The adaptive integrators of the sweeps by their names in Run::method: wobble's, and the
+/// peers' (other libraries' on the same right-hand side and tolerances).
+inline constexpr std::array<const char*, 3> kWobbleIntegrators{"dopri5", "rkf78", "dop853"};
+inline constexpr std::array<const char*, 5> kPeerIntegrators{
+    "odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45", "cvode_adams"};
 
 /// Every method of wobble (and the peers) on problem p; `quick` sweeps fewer points.
 std::vector<Run> work_precision(const BenchProblem& p, bool quick, const TimingPlan& plan);

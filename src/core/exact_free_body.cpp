@@ -104,13 +104,11 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   const double cn0 = std::clamp(std::abs(m1) / amp_[0], 0.0, 1.0);
   const double h = std::hypot(sn0, cn0);
   u0_ = incomplete_F(sn0 / h, cn0 / h, kc2_);
-  K_ = kc2_ > 0.0 ? complete_K(kc2_) : std::numeric_limits<double>::infinity();
-  if (kc2_ > 0.0 && kc2_dd.hi <= 1.0) {
-    K_dd_ = complete_K_dd(kc2_dd);
+  K_ = std::numeric_limits<double>::infinity();  // on the separatrix
+  if (kc2_ > 0.0) {
+    // k'^2 rounded above 1 is a sphere up to rounding: K(k'^2 = 1) = pi / 2.
+    K_dd_ = complete_K_dd(kc2_dd.hi <= 1.0 ? kc2_dd : DD(1.0));
     K_ = K_dd_.value();
-    period_ = (DD(4.0) * K_dd_ / lambda_dd_).value();
-  } else if (kc2_ > 0.0) {  // k'^2 rounded to 1: a sphere up to rounding; K = pi / 2
-    K_dd_ = DD(0.5) * dd_pi();
     period_ = (DD(4.0) * K_dd_ / lambda_dd_).value();
   }
   n_ = -J[2] * d21 / (J[0] * d32);

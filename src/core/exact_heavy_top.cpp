@@ -31,7 +31,7 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   // The spin's rate to double-double: psi grows by w3 t, hundreds of radians, whose rounding
   // would otherwise be the attitude's error (eps per radian).
   const DoubleDouble w3_dd = DoubleDouble(m0_.z()) / DoubleDouble(top.I3_kgm2);
-  psidot_lin_dd_ = w3_dd;
+  psidot_lin_ = w3_dd;
   if (sin0 == 0.0) {
     if (m0_.x() != 0.0 || m0_.y() != 0.0)
       throw std::invalid_argument(
@@ -65,10 +65,8 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   du_ = nutation_.d_max - nutation_.d_min;
   if (du_ == 0.0) {
     kind_ = Kind::steady;
-    phidot_lin_ = start.phidot;
-    psidot_lin_ = start.psidot;
-    phidot_lin_dd_ = DoubleDouble(start.phidot);
-    psidot_lin_dd_ = w3_dd - two_prod(start.phidot, u0_);
+    phidot_lin_ = DoubleDouble(start.phidot);
+    psidot_lin_ = w3_dd - two_prod(start.phidot, u0_);  // start.psidot, to double-double
     return;
   }
   kind_ = Kind::nutating;
@@ -103,10 +101,9 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   // u1 = -1 the numerator b + a is zero with it, and n- would be infinite).
   const double one_minus_u1 = one_minus_u2_ + du_;
   n_plus_ = du_ / one_minus_u1;
-  phidot_lin_ = 0.5 * b_minus_a_ / one_minus_u1;
-  psidot_lin_ = w3_ - a_ - phidot_lin_;
-  phidot_lin_dd_ = DoubleDouble(phidot_lin_);
-  psidot_lin_dd_ = w3_dd - DoubleDouble(m0_.z()) / DoubleDouble(I1) - DoubleDouble(phidot_lin_);
+  const double lin_plus = 0.5 * b_minus_a_ / one_minus_u1;
+  phidot_lin_ = DoubleDouble(lin_plus);
+  psidot_lin_ = w3_dd - DoubleDouble(m0_.z()) / DoubleDouble(I1) - DoubleDouble(lin_plus);  // w3 - a - lin+
   if (b_minus_a_ != 0.0) {
     c_plus_ = 0.5 * b_minus_a_ * n_plus_ / (one_minus_u1 * rate_);
     if (kc2_ > 0.0) complete_plus_ = complete_third_kind_excess(kc2_, n_plus_);
@@ -114,10 +111,8 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   if (b_plus_a_ != 0.0 && one_plus_u1_ > 0.0) {
     n_minus_ = -du_ / one_plus_u1_;
     const double lin = 0.5 * b_plus_a_ / one_plus_u1_;
-    phidot_lin_ += lin;
-    psidot_lin_ += lin;
-    phidot_lin_dd_ = phidot_lin_dd_ + DoubleDouble(lin);
-    psidot_lin_dd_ = psidot_lin_dd_ + DoubleDouble(lin);
+    phidot_lin_ = phidot_lin_ + DoubleDouble(lin);
+    psidot_lin_ = psidot_lin_ + DoubleDouble(lin);
     c_minus_ = 0.5 * b_plus_a_ * n_minus_ / (one_plus_u1_ * rate_);
     if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess(kc2_, n_minus_);
   }
@@ -137,8 +132,8 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
   a.one_plus_u = 1.0 + u0_;
   // The linear parts, which grow with t, in double-double and reduced by 2 pi there.
   const DoubleDouble t_dd(t);
-  const double phi_lin = remainder_two_pi(phidot_lin_dd_ * t_dd);
-  const double psi_lin = remainder_two_pi(psidot_lin_dd_ * t_dd);
+  const double phi_lin = remainder_two_pi(phidot_lin_ * t_dd);
+  const double psi_lin = remainder_two_pi(psidot_lin_ * t_dd);
   if (kind_ != Kind::nutating) {
     a.dphi = phi_lin;
     a.dpsi = psi_lin;

@@ -87,8 +87,8 @@ class ExactHeavyTop {
   double period_ = std::numeric_limits<double>::infinity();
   double n_plus_ = 0.0, n_minus_ = 0.0, c_plus_ = 0.0, c_minus_ = 0.0;  ///< c± = coefficient of G±
   double complete_plus_ = 0.0, complete_minus_ = 0.0, G_plus0_ = 0.0, G_minus0_ = 0.0;
-  double phidot_lin_ = 0.0, psidot_lin_ = 0.0;  ///< the linear parts of phi' and psi'
-  DoubleDouble phidot_lin_dd_, psidot_lin_dd_;   ///< the same to double-double, for phi and psi
+  /// The linear parts of phi' and psi', to double-double: phi and psi grow by them times t.
+  DoubleDouble phidot_lin_, psidot_lin_;
 };
 
 }  // namespace wobble

@@ -26,20 +26,28 @@ using namespace rk_tableau;
 template <class T>
 using Stages = std::array<State7, T::S>;
 
-// Which row of the tableau: A[R], B, E or E3. (A row is named by its index, not passed as a
-// reference template argument: clang 14 refuses a subobject such as T::A[I] there.)
-enum class Coefficients { a, b, e, e3 };
+// Which coefficients: a row of the tableau (A[R], B, E or E3), or of a dense output (column R
+// of Dormand-Prince's P, row R of DOP853's extra stages or of its D). Named by selector and
+// index, not passed as a reference template argument: clang 14 refuses a subobject such as
+// T::A[I] there.
+enum class Coefficients { a, b, e, e3, dense_p, dense_extra, dense_d };
 
-template <class T, Coefficients W, std::size_t R>
-constexpr const Row<T::S>& row() {
+template <class T, Coefficients W, std::size_t R, std::size_t J>
+constexpr double coefficient() {
   if constexpr (W == Coefficients::a) {
-    return T::A[R];
+    return T::A[R][J];
   } else if constexpr (W == Coefficients::b) {
-    return T::B;
+    return T::B[J];
   } else if constexpr (W == Coefficients::e) {
-    return T::E;
+    return T::E[J];
+  } else if constexpr (W == Coefficients::e3) {
+    return T::E3[J];
+  } else if constexpr (W == Coefficients::dense_p) {
+    return T::P[J][R];
+  } else if constexpr (W == Coefficients::dense_extra) {
+    return T::kExtraA[R][J];
   } else {
-    return T::E3;
+    return T::D[R][J];
   }
 }
 
@@ -49,12 +57,11 @@ constexpr const Row<T::S>& row() {
   for (int i = 0; i < 7; ++i) acc.data()[i] += c * v.data()[i];
 }
 
-// sum_j c[j] k[j] over the nonzero c[j], j < N, unrolled (c is a constant expression).
-template <class T, Coefficients W, std::size_t R, std::size_t... J>
-[[gnu::always_inline]] inline State7 combine(const Stages<T>& k, std::index_sequence<J...>) {
-  constexpr const Row<T::S>& C = row<T, W, R>();
+// sum_j c_j k[j] over the nonzero c_j, j in J..., unrolled (each c_j a constant expression).
+template <class T, Coefficients W, std::size_t R, class Vectors, std::size_t... J>
+[[gnu::always_inline]] inline State7 combine(const Vectors& k, std::index_sequence<J...>) {
   State7 acc = State7::Zero();
-  ((C[J] != 0.0 ? axpy(acc, C[J], k[J]) : (void)0), ...);
+  ((coefficient<T, W, R, J>() != 0.0 ? axpy(acc, coefficient<T, W, R, J>(), k[J]) : (void)0), ...);
   return acc;
 }
 
@@ -150,29 +157,6 @@ struct StepInterpolant {
   }
 };
 
-// sum_j M[R][j] k[j] (transposed: sum_j M[j][R] k[j]) over the nonzero entries of a constant
-// matrix, unrolled as combine() above. M is named by a selector, as the tableau's rows are.
-enum class Dense { dopri5_p, dop853_extra, dop853_d };
-
-template <Dense M, std::size_t R, std::size_t J>
-constexpr double dense_coefficient() {
-  if constexpr (M == Dense::dopri5_p) {
-    return Dopri5::P[J][R];
-  } else if constexpr (M == Dense::dop853_extra) {
-    return Dop853::kExtraA[R][J];
-  } else {
-    return Dop853::D[R][J];
-  }
-}
-
-template <Dense M, std::size_t R, class Stages, std::size_t... J>
-[[gnu::always_inline]] inline State7 dense_combine(const Stages& k, std::index_sequence<J...>) {
-  State7 acc = State7::Zero();
-  ((dense_coefficient<M, R, J>() != 0.0 ? axpy(acc, dense_coefficient<M, R, J>(), k[J]) : (void)0),
-   ...);
-  return acc;
-}
-
 template <class T>
 StepInterpolant interpolant(const RigidBodyModel&, const State7& y_old, const State7&, double h,
                             const Stages<T>& k, IntegrationCost&)
@@ -180,10 +164,10 @@ StepInterpolant interpolant(const RigidBodyModel&, const State7& y_old, const St
 {
   constexpr auto all = std::make_index_sequence<T::S>{};
   return {y_old,
-          {h * dense_combine<Dense::dopri5_p, 0>(k, all),
-           h * dense_combine<Dense::dopri5_p, 1>(k, all),
-           h * dense_combine<Dense::dopri5_p, 2>(k, all),
-           h * dense_combine<Dense::dopri5_p, 3>(k, all)},
+          {h * combine<T, Coefficients::dense_p, 0>(k, all),
+           h * combine<T, Coefficients::dense_p, 1>(k, all),
+           h * combine<T, Coefficients::dense_p, 2>(k, all),
+           h * combine<T, Coefficients::dense_p, 3>(k, all)},
           4,
           false};
 }
@@ -196,21 +180,21 @@ StepInterpolant interpolant(const RigidBodyModel& model, const State7& y_old, co
 {
   std::array<State7, T::kExtended> K;
   std::copy(k.begin(), k.end(), K.begin());
-  K[T::S] = model.rhs(y_old + h * dense_combine<Dense::dop853_extra, 0>(
+  K[T::S] = model.rhs(y_old + h * combine<T, Coefficients::dense_extra, 0>(
                                       K, std::make_index_sequence<T::S>{}));
-  K[T::S + 1] = model.rhs(y_old + h * dense_combine<Dense::dop853_extra, 1>(
+  K[T::S + 1] = model.rhs(y_old + h * combine<T, Coefficients::dense_extra, 1>(
                                           K, std::make_index_sequence<T::S + 1>{}));
-  K[T::S + 2] = model.rhs(y_old + h * dense_combine<Dense::dop853_extra, 2>(
+  K[T::S + 2] = model.rhs(y_old + h * combine<T, Coefficients::dense_extra, 2>(
                                           K, std::make_index_sequence<T::S + 2>{}));
   cost.rhs_evals += static_cast<std::int64_t>(T::kExtraA.size());
   const State7 dy = y_new - y_old;
   constexpr auto all = std::make_index_sequence<T::kExtended>{};
   return {y_old,
           {dy, h * k[0] - dy, 2 * dy - h * (k[T::S - 1] + k[0]),
-           h * dense_combine<Dense::dop853_d, 0>(K, all),
-           h * dense_combine<Dense::dop853_d, 1>(K, all),
-           h * dense_combine<Dense::dop853_d, 2>(K, all),
-           h * dense_combine<Dense::dop853_d, 3>(K, all)},
+           h * combine<T, Coefficients::dense_d, 0>(K, all),
+           h * combine<T, Coefficients::dense_d, 1>(K, all),
+           h * combine<T, Coefficients::dense_d, 2>(K, all),
+           h * combine<T, Coefficients::dense_d, 3>(K, all)},
           7,
           true};
 }

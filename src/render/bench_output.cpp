@@ -45,8 +45,8 @@ std::string err(double e) {
 std::string ratios(const BenchReport& r, const bench::BenchProblem& p, bool markdown) {
   std::string out;
   for (const double target : {1e-8, 1e-12}) {
-    for (const char* peer : {"odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45", "cvode_adams"}) {
-      for (const char* mine : {"dopri5", "rkf78", "dop853"}) {
+    for (const char* peer : bench::kPeerIntegrators) {
+      for (const char* mine : bench::kWobbleIntegrators) {
         const double ratio = bench::time_ratio_at(r.runs, p.id, mine, peer, target);
         if (ratio < 0) continue;
         out += fmt::format("{}{} / {} at error {:.0e}: {:.2f}\n", markdown ? "- " : "  ", mine,
