@@ -103,13 +103,20 @@ void evaluate_targets(Report& r) {
                            ? r.long_run.energy_error_1e4 / r.long_run.energy_error_10
                            : -1,
                        2.0, "x"});
-  if (!r.exact_drift.empty()) {
-    double worst = 0.0;
-    for (const auto& d : r.exact_drift) worst = std::max({worst, d.error_eps, d.attitude_eps});
+  // The free body's limit is that of one evaluation of its closed form; the heavy top's, with
+  // four rotations composed, is the one its state at T has above.
+  for (const auto& [problem, limit] : {std::pair{"P2", 8.0}, std::pair{"P4", 16.0}}) {
+    double worst = -1.0, last_t = 0.0;
+    for (const auto& d : r.exact_drift) {
+      if (d.problem != problem) continue;
+      worst = std::max({worst, d.error_eps, d.attitude_eps});
+      last_t = d.t_s;
+    }
+    if (worst < 0.0) continue;
     r.targets.push_back(
-        {fmt::format("P2: exact m(t) and attitude error against 50 digits, t up to {:.0e} s",
-                     r.exact_drift.back().t_s),
-         worst, 8.0, "eps"});
+        {fmt::format("{}: exact m(t) and attitude error against 50 digits, t up to {:.0e} s",
+                     problem, last_t),
+         worst, limit, "eps"});
   }
   for (const auto& d : r.dense) {
     if (d.method == "rkf78") continue;  // no dense output: it lands on every time, for contrast

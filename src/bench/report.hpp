@@ -34,7 +34,7 @@ struct Report {
   std::vector<ComponentRow> components;
   std::vector<DriftRow> drift;  ///< P2: errors against time
   std::vector<DenseRow> dense;  ///< P2: the cost of many output times
-  std::vector<ExactDriftPoint> exact_drift;  ///< P2: the exact solution's error against t
+  std::vector<ExactDriftPoint> exact_drift;  ///< P2, P4: the exact solutions' error against t
   LongRun long_run;
   std::vector<Target> targets;
 };

@@ -272,7 +272,18 @@ std::vector<ExactDriftPoint> exact_error_against_time() {
     const FreeBodyState s = exact.at(t);
     const double e = (s.m_B - mp_free_momentum(p.model.I_P, p.m0, t)).norm();
     const double a = attitude_distance(s.q_BtoS, mp_free_attitude(p.model.I_P, p.m0, p.q0, t));
-    out.push_back({t, t / exact.period_s(), e / (eps * p.m0.norm()), a / eps});
+    out.push_back({p.id, t, t / exact.period_s(), e / (eps * p.m0.norm()), a / eps});
+  }
+  const BenchProblem h = bench_problems().at(3);  // P4
+  const HeavyTop top = heavy_top_of(h);
+  const ExactHeavyTop top_exact(top, h.m0, h.q0);
+  const MpHeavyTop top_50(top, h.m0, h.q0);
+  for (double t = 2.0; t <= 2e6; t *= 10.0) {
+    const double eps = std::numeric_limits<double>::epsilon();
+    const FreeBodyState s = top_exact.at(t), r = top_50.at(t);
+    out.push_back({h.id, t, t / top_exact.nutation_period_s(),
+                   (s.m_B - r.m_B).norm() / (eps * h.m0.norm()),
+                   attitude_distance(s.q_BtoS, r.q_BtoS) / eps});
   }
   return out;
 }

@@ -64,10 +64,12 @@ struct DriftRow {
 };
 std::vector<DriftRow> drift_table(bool quick);
 
-/// The exact solution's error against time on P2's body at t = 10, 100, ..., 1e7 (1e6
-/// periods): |m(t) - m_50(t)| / (eps |m0|) and the attitudes' Frobenius distance / eps, the
-/// reference the same motion at 50 digits from the same double inputs (bench/mp_reference.hpp).
+/// The exact solutions' error against time: P2's free body at t = 10, 100, ..., 1e7 (1e6
+/// periods) and P4's heavy top at t = 2, 20, ..., 2e6 (6e6 nutation periods):
+/// |m(t) - m_50(t)| / (eps |m0|) and the attitudes' Frobenius distance / eps, the reference the
+/// same motion at 50 digits from the same double inputs (bench/mp_reference.hpp).
 struct ExactDriftPoint {
+  std::string problem;
   double t_s = 0.0, periods = 0.0, error_eps = 0.0, attitude_eps = 0.0;
 };
 std::vector<ExactDriftPoint> exact_error_against_time();

@@ -2,16 +2,75 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 #include <stdexcept>
+#include <tuple>
 
 #include "core/elliptic.hpp"
 
 namespace wobble {
 
 namespace {
+using DD = DoubleDouble;
+
 Quat rot_z(double angle) {
   return Quat(Eigen::AngleAxisd(angle, Vec3::UnitZ()));
+}
+
+// The start's constants to double-double, from the state as given (m0 and q0 are exact inputs,
+// R(q) / |q|^2 its rotation): f(u0 + d) = c0 + c1 d + c2 d^2 + beta d^3 (core/heavy_top.cpp's
+// expansion) and b -+ a, each formed as the double chain forms them (sums of vectors whose
+// small components carry no cancellation near the poles), at twice the precision.
+struct StartDD {
+  DD a, beta, b_minus_a, b_plus_a, one_minus_u0, one_plus_u0, c0, c1, c2;
+};
+
+StartDD start_dd(const HeavyTop& top, const Vec3& m, const Quat& q) {
+  const DD qw = q.w(), qx = q.x(), qy = q.y(), qz = q.z(), two = 2.0;
+  const DD n2 = qw * qw + qx * qx + qy * qy + qz * qz;
+  const DD e3x = two * (qx * qz + qw * qy) / n2, e3y = two * (qy * qz - qw * qx) / n2;
+  const DD u0 = (qw * qw - qx * qx - qy * qy + qz * qz) / n2;
+  const DD r11 = (qw * qw + qx * qx - qy * qy - qz * qz) / n2, r12 = two * (qx * qy - qw * qz) / n2;
+  const DD r21 = two * (qx * qy + qw * qz) / n2, r22 = (qw * qw - qx * qx + qy * qy - qz * qz) / n2;
+  const DD r31 = two * (qx * qz - qw * qy) / n2, r32 = two * (qy * qz + qw * qx) / n2;
+  const DD mx = m.x(), my = m.y(), mz = m.z(), I1 = top.I1_kgm2, I3 = top.I3_kgm2;
+  const DD Lx = r11 * mx + r12 * my + e3x * mz, Ly = r21 * mx + r22 * my + e3y * mz;
+  const DD Lz = r31 * mx + r32 * my + u0 * mz;
+  const DD sin0_2 = e3x * e3x + e3y * e3y;
+  StartDD s;
+  s.one_plus_u0 = u0.hi < 0.0 ? sin0_2 / (DD(1.0) - u0) : DD(1.0) + u0;
+  s.one_minus_u0 = u0.hi > 0.0 ? sin0_2 / (DD(1.0) + u0) : DD(1.0) - u0;
+  s.a = mz / I1;
+  s.beta = DD(2.0) * DD(top.M_kg) * DD(top.g_m_s2) * DD(top.l_m) / I1;
+  s.b_minus_a = (Lz * s.one_minus_u0 - Lx * e3x - Ly * e3y) / I1;
+  s.b_plus_a = (Lz * s.one_plus_u0 + Lx * e3x + Ly * e3y) / I1;
+  // thetadot sin0 = w_S . (-e3y, e3x, 0) and phidot sin0^2 = b - a u0 = L . (z - u0 e3) / I1.
+  const DD wx = mx / I1, wy = my / I1, wz = mz / I3;
+  const DD w_nodes =
+      e3x * (r21 * wx + r22 * wy + e3y * wz) - e3y * (r11 * wx + r12 * wy + e3x * wz);
+  const DD phidot_s2 = (Lz * sin0_2 - u0 * (Lx * e3x + Ly * e3y)) / I1;
+  const DD P = (w_nodes * w_nodes + phidot_s2 * phidot_s2) / sin0_2;  // thetadot^2 + phidot^2 sin^2
+  s.c0 = w_nodes * w_nodes;
+  s.c1 = -(s.beta * sin0_2) - two * u0 * P + two * s.a * phidot_s2;
+  s.c2 = two * u0 * s.beta - P - s.a * s.a;
+  return s;
+}
+
+// A root of f(u0 + d) polished from its double value by Newton's method, f in double-double
+// (the slope only in double: each step then gains ~52 bits).
+DD polish_root(double d0, const StartDD& s) {
+  DD d = d0;
+  for (int i = 0; i < 3; ++i) {
+    const DD f = s.c0 + d * (s.c1 + d * (s.c2 + d * s.beta));
+    const double x = d.hi, slope = s.c1.hi + x * (2.0 * s.c2.hi + 3.0 * s.beta.hi * x);
+    if (!(slope != 0.0) || !std::isfinite(f.hi)) break;
+    d = d - DD(f.value() / slope);
+  }
+  return d;
+}
+
+// |x - y| within rel of |y|: the polished value is the same root as the double one.
+bool same_root(const DD& x, double y, double rel) {
+  return std::isfinite(x.hi) && std::abs(x.hi - y) <= rel * std::abs(y);
 }
 }  // namespace
 
@@ -27,7 +86,7 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   const double sin0 = std::hypot(e3.x(), e3.y());
   u0_ = e3.z();
   w3_ = m0_.z() / top.I3_kgm2;
-  a_ = m0_.z() / I1;               // p_psi / I1
+  a_ = m0_.z() / I1;  // p_psi / I1
   // The spin's rate to double-double: psi grows by w3 t, hundreds of radians, whose rounding
   // would otherwise be the attitude's error (eps per radian).
   const DoubleDouble w3_dd = DoubleDouble(m0_.z()) / DoubleDouble(top.I3_kgm2);
@@ -77,17 +136,28 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   u3_ = std::max(1.0, u0_ + (P + a_ * a_) / beta - u1 - u2);
   // u3 - u2 = (u3 - 1) + (1 - u2), u3 - u1 = (u3 - u2) + du: sums.
   const double u3_minus_u2 = (u3_ - 1.0) + one_minus_u2_, u3_minus_u1 = u3_minus_u2 + du_;
-  kc2_ = u3_minus_u2 / u3_minus_u1;
-  K_ = kc2_ > 0.0 ? complete_K(kc2_) : std::numeric_limits<double>::infinity();
-  rate_ = 0.5 * std::sqrt(beta * u3_minus_u1);
-  period_ = 2.0 * K_ / rate_;
+  // The chain in double, lifted; refined below where the polished roots confirm it.
+  Chain chain{.d_min = nutation_.d_min,
+              .d_max = nutation_.d_max,
+              .one_minus_u0 = one_minus_u0,
+              .one_plus_u0 = one_plus_u0,
+              .u3_minus_u1 = u3_minus_u1,
+              .u3_minus_u2 = u3_minus_u2,
+              .b_minus_a = b_minus_a_,
+              .b_plus_a = b_plus_a_,
+              .a = m0_.z() / DD(I1),
+              .beta = beta,
+              .w3 = w3_dd};
+  if (u3_minus_u2 > 0.0) refine(chain);
+  set_up_rates(chain);
   // tau0: sn^2(tau0) = (u0 - u1)/du, on the rising side (u' >= 0) for tau0 in [0, K].
   double sn0 = std::sqrt(std::max(0.0, -nutation_.d_min) / du_);
   double cn0 = std::sqrt(std::max(0.0, nutation_.d_max) / du_);
   // Near a turning point the smaller of sn, cn comes from a difference u0 - u_limit that is a
   // rounding, and so carries only sqrt(eps) (a start at rest could begin moving at 1e-7 of its
   // rates): take it from the start's velocity instead, u' = 2 du sn cn dn tau'.
-  const double dn0 = std::sqrt((u3_minus_u2 + nutation_.d_max) / u3_minus_u1);
+  const double dn0 =
+      std::sqrt((chain.u3_minus_u2.value() + nutation_.d_max) / chain.u3_minus_u1.value());
   const double v = std::abs(sin0 * start.thetadot) / (2.0 * du_ * dn0 * rate_);
   if (sn0 >= cn0) {
     cn0 = v / sn0;
@@ -97,32 +167,83 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   const double h = std::hypot(sn0, cn0);
   const double F0 = incomplete_F(sn0 / h, cn0 / h, kc2_);
   tau0_ = start.thetadot > 0.0 ? -F0 : F0;  // theta rising is u falling
-  // The partial fractions over 1 - u and 1 + u; a term whose numerator is zero is left out (at
-  // u1 = -1 the numerator b + a is zero with it, and n- would be infinite).
-  const double one_minus_u1 = one_minus_u2_ + du_;
-  n_plus_ = du_ / one_minus_u1;
-  const double lin_plus = 0.5 * b_minus_a_ / one_minus_u1;
-  phidot_lin_ = DoubleDouble(lin_plus);
-  psidot_lin_ = w3_dd - DoubleDouble(m0_.z()) / DoubleDouble(I1) - DoubleDouble(lin_plus);  // w3 - a - lin+
-  if (b_minus_a_ != 0.0) {
-    c_plus_ = 0.5 * b_minus_a_ * n_plus_ / (one_minus_u1 * rate_);
-    if (kc2_ > 0.0) complete_plus_ = complete_third_kind_excess(kc2_, n_plus_);
-  }
-  if (b_plus_a_ != 0.0 && one_plus_u1_ > 0.0) {
-    n_minus_ = -du_ / one_plus_u1_;
-    const double lin = 0.5 * b_plus_a_ / one_plus_u1_;
-    phidot_lin_ = phidot_lin_ + DoubleDouble(lin);
-    psidot_lin_ = psidot_lin_ + DoubleDouble(lin);
-    c_minus_ = 0.5 * b_plus_a_ * n_minus_ / (one_plus_u1_ * rate_);
-    if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess(kc2_, n_minus_);
-  }
-  const Phase p0 = phase(tau0_);
-  if (c_plus_ != 0.0) G_plus0_ = excess(p0, n_plus_, complete_plus_);
-  if (c_minus_ != 0.0) G_minus0_ = excess(p0, n_minus_, complete_minus_);
+  const Phase p0 = phase_at(0.0);
+  j0_ = p0.j;  // 0, or +-1 when tau0 rounds to the far side of +-K
+  if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess(p0, n_plus_);
+  if (c_minus_.hi != 0.0) G_minus0_ = incomplete_excess(p0, n_minus_);
   // theta0 as the closed form gives it at t = 0 (not the start's own, which differs by a
   // rounding): then at(0) is the start exactly, and theta(t) - theta0 has no offset.
   theta0_ = 0.0;
   theta0_ = angles(0.0).dtheta;
+}
+
+void ExactHeavyTop::refine(Chain& c) const {
+  const StartDD s = start_dd(top_, m0_, q0_);
+  const DD d_min = polish_root(c.d_min.hi, s), d_max = polish_root(c.d_max.hi, s);
+  // The third root from the sum of the roots, -c2 / beta.
+  const DD d3 = -(s.c2 / s.beta) - d_min - d_max;
+  const DD u3_minus_u1 = d3 - d_min, u3_minus_u2 = d3 - d_max;
+  // Newton's method near a double root (a nutation of ~1e-8 or less) or a root at a pole may
+  // settle elsewhere: keep the double chain unless every refined difference is the double one
+  // to its own accuracy (1e-9 is far above it and far below another root's distance).
+  constexpr double kSameRoot = 1e-9;
+  const double du = c.d_max.hi - c.d_min.hi;
+  if (!same_root(d_max - d_min, du, kSameRoot) ||
+      !same_root(u3_minus_u1, c.u3_minus_u1.hi, kSameRoot) ||
+      !same_root(u3_minus_u2, c.u3_minus_u2.hi, kSameRoot) ||
+      !same_root(s.one_plus_u0 + d_min, c.one_plus_u0.hi + c.d_min.hi, kSameRoot) ||
+      !same_root(s.one_minus_u0 - d_max, c.one_minus_u0.hi - c.d_max.hi, kSameRoot)) {
+    return;
+  }
+  c.d_min = d_min;
+  c.d_max = d_max;
+  c.one_minus_u0 = s.one_minus_u0;
+  c.one_plus_u0 = s.one_plus_u0;
+  c.u3_minus_u1 = u3_minus_u1;
+  c.u3_minus_u2 = u3_minus_u2;
+  c.b_minus_a = s.b_minus_a;
+  c.b_plus_a = s.b_plus_a;
+  c.a = s.a;
+  c.beta = s.beta;
+}
+
+void ExactHeavyTop::set_up_rates(const Chain& c) {
+  const DD du = c.d_max - c.d_min;
+  const DD one_minus_u1 = c.one_minus_u0 - c.d_min, one_plus_u1 = c.one_plus_u0 + c.d_min;
+  du_ = du.value();
+  one_plus_u1_ = std::max(0.0, one_plus_u1.value());
+  one_minus_u2_ = std::max(0.0, (c.one_minus_u0 - c.d_max).value());
+  const DD kc2 = c.u3_minus_u2 / c.u3_minus_u1;
+  kc2_ = std::clamp(kc2.value(), 0.0, 1.0);
+  K_ = std::numeric_limits<double>::infinity();  // on the separatrix
+  const DD rate = DD(0.5) * sqrt(c.beta * c.u3_minus_u1);
+  rate_ = rate.hi;
+  rate_dd_ = rate;
+  if (kc2_ > 0.0) {
+    K_dd_ = complete_K_dd(kc2.hi <= 1.0 ? kc2 : DD(1.0));
+    K_ = K_dd_.value();
+    period_ = (DD(2.0) * K_dd_ / rate).value();
+  }
+  // The partial fractions over 1 - u and 1 + u; a term whose numerator is zero is left out (at
+  // u1 = -1 the numerator b + a is zero with it, and n- would be infinite).
+  n_plus_ = (du / one_minus_u1).value();
+  const DD lin_plus = DD(0.5) * c.b_minus_a / one_minus_u1;
+  phidot_lin_ = lin_plus;
+  psidot_lin_ = c.w3 - c.a - lin_plus;
+  if (b_minus_a_ != 0.0) {
+    const DD n = du / one_minus_u1;
+    c_plus_ = lin_plus * n / rate;
+    if (kc2_ > 0.0) complete_plus_ = complete_third_kind_excess_dd(kc2, n);
+  }
+  if (b_plus_a_ != 0.0 && one_plus_u1_ > 0.0) {
+    const DD n = -(du / one_plus_u1);
+    n_minus_ = n.value();
+    const DD lin_minus = DD(0.5) * c.b_plus_a / one_plus_u1;
+    phidot_lin_ = phidot_lin_ + lin_minus;
+    psidot_lin_ = psidot_lin_ + lin_minus;
+    c_minus_ = lin_minus * n / rate;
+    if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, n);
+  }
 }
 
 ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
@@ -132,14 +253,14 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
   a.one_plus_u = 1.0 + u0_;
   // The linear parts, which grow with t, in double-double and reduced by 2 pi there.
   const DoubleDouble t_dd(t);
-  const double phi_lin = remainder_two_pi(phidot_lin_ * t_dd);
-  const double psi_lin = remainder_two_pi(psidot_lin_ * t_dd);
   if (kind_ != Kind::nutating) {
-    a.dphi = phi_lin;
-    a.dpsi = psi_lin;
+    a.dphi = remainder_two_pi(phidot_lin_ * t_dd);
+    a.dpsi = remainder_two_pi(psidot_lin_ * t_dd);
     return a;
   }
-  const Phase p = phase(tau0_ + rate_ * t);
+  // tau, its reduction by 2K and the integrals' complete parts 2 j (Pi(n) - K) / n, which grow
+  // with t, in double-double; the reduced parts, bounded, in double.
+  const Phase p = phase_at(t);
   const double sn = p.of_r.sn, cn = p.of_r.cn, dn = p.of_r.dn;
   const double u1 = nutation_.u_min;
   a.u = u1 + du_ * sn * sn;
@@ -149,11 +270,20 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
   a.one_minus_u = one_minus_u2_ + du_ * cn * cn;
   a.one_plus_u = one_plus_u1_ + du_ * sn * sn;
   a.dtheta = std::atan2(std::sqrt(a.one_minus_u * a.one_plus_u), a.u) - theta0_;
-  const double dG_plus = c_plus_ != 0.0 ? excess(p, n_plus_, complete_plus_) - G_plus0_ : 0.0;
-  const double dG_minus = c_minus_ != 0.0 ? excess(p, n_minus_, complete_minus_) - G_minus0_ : 0.0;
-  a.dphi = phi_lin + c_plus_ * dG_plus + c_minus_ * dG_minus;
-  a.dpsi = psi_lin - c_plus_ * dG_plus + c_minus_ * dG_minus;
+  const DD two_j = 2.0 * (p.j - j0_);  // exact
+  const auto dG = [&](const DD& c, double n, const DD& complete, double G0) {
+    return c.hi == 0.0 ? DD() : c * (two_j * complete + DD(incomplete_excess(p, n) - G0));
+  };
+  const DD dG_plus = dG(c_plus_, n_plus_, complete_plus_, G_plus0_);
+  const DD dG_minus = dG(c_minus_, n_minus_, complete_minus_, G_minus0_);
+  a.dphi = remainder_two_pi(phidot_lin_ * t_dd + dG_plus + dG_minus);
+  a.dpsi = remainder_two_pi(psidot_lin_ * t_dd - dG_plus + dG_minus);
   return a;
+}
+
+ExactHeavyTop::Phase ExactHeavyTop::phase_at(double t) const {
+  if (!std::isfinite(K_)) return reduce_by_half_period(tau0_ + rate_ * t, K_, kc2_);
+  return reduce_by_half_period(DD(tau0_) + rate_dd_ * DD(t), K_dd_, kc2_);
 }
 
 double ExactHeavyTop::euler_rate_bound() const {
@@ -185,8 +315,8 @@ FreeBodyState ExactHeavyTop::at(double t) const {
     return s;
   }
   const Quat turn_phi = rot_z(a.dphi);
-  s.q_BtoS = (turn_phi * Quat(Eigen::AngleAxisd(a.dtheta, nodes0_S_)) * q0_ * rot_z(a.dpsi))
-                 .normalized();
+  s.q_BtoS =
+      (turn_phi * Quat(Eigen::AngleAxisd(a.dtheta, nodes0_S_)) * q0_ * rot_z(a.dpsi)).normalized();
   // The angular velocity from the Euler rates: w = phi' z + theta' n + psi' e3.
   const double phidot = 0.5 * b_minus_a_ / a.one_minus_u + 0.5 * b_plus_a_ / a.one_plus_u;
   const double psidot = w3_ - a.u * phidot;

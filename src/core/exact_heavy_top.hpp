@@ -20,6 +20,12 @@
 /// The attitude follows from the Euler angles relative to the start, which never needs psi0
 /// or phi0 themselves: q(t) = Rz(dphi) Rot(n0, theta - theta0) q0 Rz(dpsi), n0 the line of
 /// nodes at t = 0.
+///
+/// Exact at any time: what grows with t (tau and its reduction by 2K, the complete parts
+/// 2 j (Pi(n±) - K) / n± of the integrals, the linear parts of phi and psi) is formed in
+/// double-double and reduced there, from constants in double-double (the start state's b -+ a
+/// and cubic, its roots polished by Newton's method, tau', k'^2, K, c±), so the error against
+/// 50 digits does not grow with t (hard case 14, to 1e6 s).
 #include <limits>
 
 #include "core/elliptic.hpp"
@@ -51,19 +57,22 @@ class ExactHeavyTop {
   double u3() const { return u3_; }
   /// Period of theta(t) in s (infinite when theta is constant).
   double nutation_period_s() const { return period_; }
-  /// The largest |phi'| + |psi'| over the motion (rad/s): the Euler angles' phases grow at up
-  /// to this rate and are rounded relative to their size, so after t the attitude carries
-  /// about eps * rate * t of rounding. It grows as 1/sin(theta_limit) when the axle passes
-  /// near the vertical (the Euler angles' singularity), where an integrator does better.
+  /// The largest |phi'| + |psi'| over the motion (rad/s). The reduced phase is rounded to
+  /// eps K, a time error of about eps T / 2 (T the nutation period), which this rate turns into
+  /// the attitude: the error that is left, bounded however long the run. It grows as
+  /// 1/sin(theta_limit) when the axle passes near the vertical (the Euler angles' singularity),
+  /// where an integrator does better.
   double euler_rate_bound() const;
 
  private:
   /// tau reduced by the period 2K of sn^2: u, u' and the integrals' reduced parts need only r.
   using Phase = ReducedArgument;
-  Phase phase(double tau) const { return reduce_by_half_period(tau, K_, kc2_); }
-  /// (Pi(n; am tau) - tau) / n continued past K; 0 for a term that is switched off.
-  double excess(const Phase& p, double n, double complete) const {
-    return n == 0.0 ? 0.0 : third_kind_excess(p, kc2_, n, complete);
+  /// tau = tau0 + tau' t reduced by 2K, both in double-double (in double the rounding of
+  /// tau' t, eps tau, would be the phase's error, growing with t).
+  Phase phase_at(double t_s) const;
+  /// (Pi(n; am r) - r) / n of the reduced argument r alone (|r| <= K: bounded).
+  double incomplete_excess(const Phase& p, double n) const {
+    return third_kind_excess(p.of_r.sn, p.of_r.cn, kc2_, n);
   }
   /// theta(t) - theta0, phi(t) - phi0, psi(t) - psi0.
   struct Angles {
@@ -71,6 +80,21 @@ class ExactHeavyTop {
     double one_minus_u = 0.0, one_plus_u = 0.0;  ///< as sums of terms >= 0 (no cancellation)
   };
   Angles angles(double t) const;
+
+  /// The constants from the start to the rates, in double-double: the double chain's values
+  /// lifted, or all of them refined from the start state (refine).
+  struct Chain {
+    DoubleDouble d_min, d_max;              ///< the nutation limits' offsets from u0
+    DoubleDouble one_minus_u0, one_plus_u0;
+    DoubleDouble u3_minus_u1, u3_minus_u2;
+    DoubleDouble b_minus_a, b_plus_a, a, beta, w3;
+  };
+  /// Replaces the chain by the same quantities from the start state in double-double, the
+  /// cubic's roots polished by Newton's method, where they confirm the double ones.
+  void refine(Chain& c) const;
+  /// From the chain: the nutation's rate and period, the partial fractions' coefficients, their
+  /// complete integrals and the linear rates.
+  void set_up_rates(const Chain& c);
 
   HeavyTop top_;
   Vec3 m0_;
@@ -85,9 +109,13 @@ class ExactHeavyTop {
   double rate_ = 0.0, tau0_ = 0.0;  ///< tau' and tau(0)
   double one_plus_u1_ = 0.0, one_minus_u2_ = 0.0;  ///< from the start and the roots in d
   double period_ = std::numeric_limits<double>::infinity();
-  double n_plus_ = 0.0, n_minus_ = 0.0, c_plus_ = 0.0, c_minus_ = 0.0;  ///< c± = coefficient of G±
-  double complete_plus_ = 0.0, complete_minus_ = 0.0, G_plus0_ = 0.0, G_minus0_ = 0.0;
-  /// The linear parts of phi' and psi', to double-double: phi and psi grow by them times t.
+  double n_plus_ = 0.0, n_minus_ = 0.0;
+  /// The phase's half periods and the integrals' incomplete parts at t = 0: G± grow from them.
+  double j0_ = 0.0, G_plus0_ = 0.0, G_minus0_ = 0.0;
+  /// What grows with t, to double-double: tau' and K (tau and its reduction), c± (the
+  /// coefficients of G±), the complete integrals (Pi(n±) - K) / n± (2 j of them in G± after j
+  /// half periods), and the linear parts of phi' and psi'.
+  DoubleDouble rate_dd_, K_dd_, c_plus_, c_minus_, complete_plus_, complete_minus_;
   DoubleDouble phidot_lin_, psidot_lin_;
 };
 

@@ -133,12 +133,14 @@ std::string components(const BenchReport& r, bool markdown) {
     }
   }
   if (!r.exact_drift.empty()) {
-    out += "\nP2's exact solution against 50 digits, |m(t) - m_50(t)| in eps |m0| (attitude, "
-           "Frobenius distance in eps):\n" +
+    out += "\nThe exact solutions against 50 digits (P2 the free body, P4 the heavy top, its "
+           "nutation periods), |m(t) - m_50(t)| in eps |m0| (attitude, Frobenius distance in "
+           "eps):\n" +
            std::string(markdown ? "\n" : "");
     for (const auto& d : r.exact_drift) {
-      out += fmt::format("{}t = {:.0e} s ({:.3g} periods): {:.2f} eps ({:.2f} eps)\n",
-                         markdown ? "- " : "  ", d.t_s, d.periods, d.error_eps, d.attitude_eps);
+      out += fmt::format("{}{} t = {:.0e} s ({:.3g} periods): {:.2f} eps ({:.2f} eps)\n",
+                         markdown ? "- " : "  ", d.problem, d.t_s, d.periods, d.error_eps,
+                         d.attitude_eps);
     }
   }
   if (!r.dense.empty()) {
@@ -219,7 +221,8 @@ std::string render_bench(const BenchReport& r, const std::string& format) {
     j["dense_output"] = dense;
     nlohmann::ordered_json drift = nlohmann::ordered_json::array();
     for (const auto& d : r.exact_drift) {
-      drift.push_back({{"t_s", d.t_s},
+      drift.push_back({{"problem", d.problem},
+                       {"t_s", d.t_s},
                        {"periods", d.periods},
                        {"error_eps", d.error_eps},
                        {"attitude_eps", d.attitude_eps}});

@@ -61,8 +61,8 @@ TEST_CASE("auto picks the closed form, the exact solution, or an adaptive pair, 
   const MethodChoice exact = choose_method(top, "auto");
   REQUIRE(exact.method == SimMethod::exact);
   REQUIRE_THAT(exact.reason, Catch::Contains("heavy symmetric top"));
-  // Asked for more than the closed form's rounding allows (a tolerance below its 4 eps per
-  // radian turned): Fehlberg 7(8), and why.
+  // Asked for more than the closed form's rounding allows (a tolerance below its 16 eps and
+  // more): Fehlberg 7(8), and why.
   SceneSetup strict = top;
   strict.tolerance = 1e-17;
   const MethodChoice rounding = choose_method(strict, "auto");
