@@ -134,42 +134,45 @@ void advance_fixed(const RigidBodyModel& model, State7& y, double span, double h
 }
 
 // Dense output over one accepted step [t, t + h]: y(t + x h) for 0 <= x <= 1, from the step's
-// stages, so that output times need not end steps. Polynomial in x with vector coefficients c:
-// Dormand-Prince's in powers of x, DOP853's in Hairer's alternating form
-// c0 x + c1 x (1-x) + c2 x^2 (1-x) + ... (nested: x, 1-x, x, ...).
+// stages, so that output times need not end steps. Polynomial in x with vector coefficients c in
+// Hairer's nested form y_old + x (c0 + (1-x) (c1 + x (c2 + (1-x) (c3 + ...)))): c0 = y_new -
+// y_old, c1 and c2 from the end slopes (the cubic Hermite interpolant), the rest from the stages.
 struct StepInterpolant {
   State7 y_old;
   std::array<State7, 7> c;
   std::size_t n = 0;
-  bool alternating = false;
 
   State7 at(double x) const {
-    const double odd = alternating ? 1.0 - x : x;  // the factor of every second term
+    const double x1 = 1.0 - x;  // the factor of every second level
     State7 y;
     for (int j = 0; j < 7; ++j) {  // written out, as in axpy(), for the same reason
-      double acc = c[n - 1].data()[j] * x;
-      for (std::size_t i = n - 1; i-- > 0;) {
-        acc = (acc + c[i].data()[j]) * ((n - 1 - i) % 2 == 0 ? x : odd);
-      }
+      double acc = c[n - 1].data()[j] * ((n - 1) % 2 == 0 ? x : x1);
+      for (std::size_t i = n - 1; i-- > 0;) acc = (acc + c[i].data()[j]) * (i % 2 == 0 ? x : x1);
       y.data()[j] = y_old.data()[j] + acc;
     }
     return y;
   }
 };
 
+// The Hermite part shared by both pairs: y_new - y_old and the end slopes h k_first, h k_last.
+std::array<State7, 3> hermite(const State7& y_old, const State7& y_new, double h,
+                              const State7& k_first, const State7& k_last) {
+  const State7 dy = y_new - y_old, c1 = h * k_first - dy;
+  return {dy, c1, dy - h * k_last - c1};
+}
+
+// Dormand-Prince: Shampine's quartic is the cubic Hermite interpolant plus x^2 (1-x)^2 times
+// its x^4 coefficient, h sum_j P[j][3] k_j (it matches y and y' at both ends: the tableau test
+// checks P for it): one weighted sum per step that holds a sample, not four.
 template <class T>
-StepInterpolant interpolant(const RigidBodyModel&, const State7& y_old, const State7&, double h,
-                            const Stages<T>& k, IntegrationCost&)
+StepInterpolant interpolant(const RigidBodyModel&, const State7& y_old, const State7& y_new,
+                            double h, const Stages<T>& k, IntegrationCost&)
   requires std::is_same_v<T, Dopri5>
 {
-  constexpr auto all = std::make_index_sequence<T::S>{};
+  const auto [dy, c1, c2] = hermite(y_old, y_new, h, k[0], k[T::S - 1]);
   return {y_old,
-          {h * combine<T, Coefficients::dense_p, 0>(k, all),
-           h * combine<T, Coefficients::dense_p, 1>(k, all),
-           h * combine<T, Coefficients::dense_p, 2>(k, all),
-           h * combine<T, Coefficients::dense_p, 3>(k, all)},
-          4,
-          false};
+          {dy, c1, c2, h * combine<T, Coefficients::dense_p, 3>(k, std::make_index_sequence<T::S>{})},
+          4};
 }
 
 // DOP853: three more stages, then y_new - y_old, its two end slopes and four from D.
@@ -187,16 +190,14 @@ StepInterpolant interpolant(const RigidBodyModel& model, const State7& y_old, co
   K[T::S + 2] = model.rhs(y_old + h * combine<T, Coefficients::dense_extra, 2>(
                                           K, std::make_index_sequence<T::S + 2>{}));
   cost.rhs_evals += static_cast<std::int64_t>(T::kExtraA.size());
-  const State7 dy = y_new - y_old;
+  const auto [dy, c1, c2] = hermite(y_old, y_new, h, k[0], k[T::S - 1]);
   constexpr auto all = std::make_index_sequence<T::kExtended>{};
   return {y_old,
-          {dy, h * k[0] - dy, 2 * dy - h * (k[T::S - 1] + k[0]),
-           h * combine<T, Coefficients::dense_d, 0>(K, all),
+          {dy, c1, c2, h * combine<T, Coefficients::dense_d, 0>(K, all),
            h * combine<T, Coefficients::dense_d, 1>(K, all),
            h * combine<T, Coefficients::dense_d, 2>(K, all),
            h * combine<T, Coefficients::dense_d, 3>(K, all)},
-          7,
-          true};
+          7};
 }
 }  // namespace
 

@@ -137,8 +137,15 @@ TEST_CASE("the tableaux: weights sum to one, error weights to zero, interpolants
   REQUIRE_THAT(sum(tab::Dop853::E3), WithinAbs(0.0, bound));
   REQUIRE_THAT(sum(tab::Dopri5::B), WithinAbs(1.0, bound));
   // Shampine's interpolant at x = 1 is the step's own solution: sum_p P[j][p] = B[j].
+  // It also has the end slopes, y'(0) = k_1 and y'(1) = k_7 (sum_p (p + 1) P[j][p] is 1 for the
+  // last stage, 0 for the others): so it is the cubic Hermite interpolant plus x^2 (1-x)^2
+  // times its x^4 coefficient, the nested form dense output evaluates.
   for (std::size_t j = 0; j < tab::Dopri5::S; ++j) {
-    REQUIRE_THAT(sum(tab::Dopri5::P[j]), WithinAbs(tab::Dopri5::B[j], bound));
+    const auto& P = tab::Dopri5::P[j];
+    REQUIRE_THAT(sum(P), WithinAbs(tab::Dopri5::B[j], bound));
+    REQUIRE_THAT(P[0], WithinAbs(j == 0 ? 1.0 : 0.0, bound));
+    REQUIRE_THAT(P[0] + 2 * P[1] + 3 * P[2] + 4 * P[3],
+                 WithinAbs(j == tab::Dopri5::S - 1 ? 1.0 : 0.0, 4 * bound));
   }
   // Every row of A sums to its node c_i; the nodes lie in [0, 1] (DOP853's three extra stages
   // at 0.1, 0.2 and 7/9, Hairer's values).
