@@ -20,9 +20,7 @@ void setup_bench(CLI::App& app, BenchOptions& opt) {
 }
 
 int run_bench(const BenchOptions& opt) {
-  if (!opt.plot.empty() && std::filesystem::exists(opt.plot) && !opt.force) {
-    throw InputError("--plot: " + opt.plot + " exists; use --force to overwrite it");
-  }
+  refuse_to_replace("--plot", opt.plot, opt.force);
   // An unwritable plot is found before a minute of measuring, not after.
   if (!opt.plot.empty()) require_writable(opt.plot);
   const bench::TimingPlan plan = opt.quick ? bench::TimingPlan{3, 1e-4} : bench::TimingPlan{};

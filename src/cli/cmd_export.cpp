@@ -41,10 +41,7 @@ void add_variants(CLI::App& sub, ExportOptions& opt, const std::string& fallback
 // Files written all or nothing, none replaced without --force.
 void write_files(const std::vector<std::pair<fs::path, std::string>>& files, bool force) {
   for (const auto& [path, content] : files) {
-    std::error_code ec;
-    if (fs::exists(path, ec) && !force) {
-      throw InputError("--out: " + path.string() + " exists; use --force to replace it");
-    }
+    refuse_to_replace("--out", path, force);
     require_regular_or_absent(path);
   }
   for (const auto& [path, content] : files) {

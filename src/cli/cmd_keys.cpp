@@ -61,11 +61,7 @@ int write_variants(const KeysOptions& opt, const std::vector<Problem>& problems)
       files.emplace_back(dir / (stem + ".json"), render(key, Format::json));
     }
   }
-  for (const auto& [path, content] : files) {
-    if (std::filesystem::exists(path) && !opt.force) {
-      throw InputError("--out: " + path.string() + " exists; use --force to overwrite it");
-    }
-  }
+  for (const auto& [path, content] : files) refuse_to_replace("--out", path, opt.force);
   std::filesystem::create_directories(dir);
   // All or nothing: every file is staged before any is put in place, and without --force none
   // replaces a file another run put there meanwhile.

@@ -29,10 +29,7 @@ int run_page(const PageOptions& opt) {
   if (out.extension() != ".html" && out.extension() != ".htm") {
     throw InputError("--out: " + opt.out + ": the page is HTML; name it FILE.html");
   }
-  std::error_code ec;
-  if (std::filesystem::exists(out, ec) && !opt.force) {
-    throw InputError("--out: " + opt.out + " exists; use --force to replace it");
-  }
+  refuse_to_replace("--out", out, opt.force);
   // A device or link is never replaced, and an unwritable folder is found before the work.
   require_writable(out);
   const Problem problem = find_problem(opt.problem);

@@ -45,14 +45,6 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
   app.add_flag("--force", opt.force, "Overwrite existing --out and --plot files");
 }
 
-namespace {
-void refuse_overwrite(const std::string& option, const std::string& file, bool force) {
-  if (!file.empty() && std::filesystem::exists(file) && !force) {
-    throw InputError(option + ": " + file + " exists; use --force to overwrite it");
-  }
-}
-}  // namespace
-
 int run_simulate(const SimulateOptions& opt) {
   if (!opt.out.empty()) {
     const std::string ext = std::filesystem::path(opt.out).extension().string();
@@ -66,8 +58,8 @@ int run_simulate(const SimulateOptions& opt) {
       throw InputError("--plot: " + opt.plot + ": the file must end in .svg, .png or .pdf");
     }
   }
-  refuse_overwrite("--out", opt.out, opt.force);
-  refuse_overwrite("--plot", opt.plot, opt.force);
+  refuse_to_replace("--out", opt.out, opt.force);
+  refuse_to_replace("--plot", opt.plot, opt.force);
   if (opt.tolerance && !(*opt.tolerance >= kMinSceneTolerance && *opt.tolerance <= kMaxSceneTolerance)) {
     throw InputError(fmt::format("--tolerance: {} is out of range (expected {})", *opt.tolerance,
                                  scene_tolerance_range()));

@@ -88,9 +88,7 @@ int run_solve(const SolveOptions& opt) {
                        ": pdflatex includes .pdf or .png, not .svg (the LaTeX key includes the "
                        "sketch)");
     }
-    if (std::filesystem::exists(opt.figure) && !opt.force) {
-      throw InputError("--figure: " + opt.figure + " exists; use --force to overwrite it");
-    }
+    refuse_to_replace("--figure", opt.figure, opt.force);
     write_top_sketch(solver.sketch(problem, values), opt.figure);
     key.figure = opt.figure;
   }

@@ -3,6 +3,7 @@
 /// The subcommands of `wobble`. Exit codes (README, "Exit codes"): 0 success, 1 a check found a
 /// difference, 2 bad usage or input (one line on stderr), 3 an internal error (a bug).
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,10 @@ std::pair<long, long> variant_range(const std::string& text, const std::string& 
 /// "NAME=VALUE" assignments as (name, value text) pairs, for a handout.
 std::vector<std::pair<std::string, std::string>> shown_values(
     const std::vector<std::string>& assignments);
+
+/// Files the command line writes are never replaced without --force.
+/// @throws InputError naming `option` and `file` if `file` exists and `force` is false.
+void refuse_to_replace(const std::string& option, const std::filesystem::path& file, bool force);
 
 /// Exit codes: 0 ok, 1 an answer or key differs, 2 bad input (or too much asked), 3 a bug, 130
 /// stopped by Ctrl-C or SIGTERM (128 + SIGINT, as a shell reports it).

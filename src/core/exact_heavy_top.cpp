@@ -213,6 +213,7 @@ void ExactHeavyTop::set_up_rates(const Chain& c) {
   du_ = du.value();
   one_plus_u1_ = std::max(0.0, one_plus_u1.value());
   one_minus_u2_ = std::max(0.0, (c.one_minus_u0 - c.d_max).value());
+  k2_ = (du / c.u3_minus_u1).value();
   const DD kc2 = c.u3_minus_u2 / c.u3_minus_u1;
   kc2_ = std::clamp(kc2.value(), 0.0, 1.0);
   K_ = std::numeric_limits<double>::infinity();  // on the separatrix

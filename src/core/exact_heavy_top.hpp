@@ -55,6 +55,8 @@ class ExactHeavyTop {
   const Nutation& nutation() const { return nutation_; }
   /// The third root of f, >= 1.
   double u3() const { return u3_; }
+  /// The nutation's elliptic parameter k^2 = (u2 - u1) / (u3 - u1) (0 when theta is constant).
+  double k2() const { return k2_; }
   /// Period of theta(t) in s (infinite when theta is constant).
   double nutation_period_s() const { return period_; }
   /// The largest |phi'| + |psi'| over the motion (rad/s). The reduced phase is rounded to
@@ -105,7 +107,7 @@ class ExactHeavyTop {
   double b_minus_a_ = 0.0, b_plus_a_ = 0.0;  ///< without the cancellation near the poles
   Vec3 nodes0_S_ = Vec3::UnitY();  ///< line of nodes at t = 0
   // nutating
-  double u3_ = std::numeric_limits<double>::infinity(), du_ = 0.0, kc2_ = 1.0, K_ = 0.0;
+  double u3_ = std::numeric_limits<double>::infinity(), du_ = 0.0, k2_ = 0.0, kc2_ = 1.0, K_ = 0.0;
   double rate_ = 0.0, tau0_ = 0.0;  ///< tau' and tau(0)
   double one_plus_u1_ = 0.0, one_minus_u2_ = 0.0;  ///< from the start and the roots in d
   double period_ = std::numeric_limits<double>::infinity();

@@ -68,7 +68,7 @@ void describe(const ExactHeavyTop& top, std::vector<std::string>& notes) {
       "theta nods between {:.10g} and {:.10g} deg with period {:.10g} s (elliptic parameter "
       "k^2 = {:.6g})",
       top.nutation().theta_min * kDeg, top.nutation().theta_max * kDeg, top.nutation_period_s(),
-      (top.nutation().u_max - top.nutation().u_min) / (top.u3() - top.nutation().u_min)));
+      top.k2()));
 }
 
 template <class Motion>

@@ -233,7 +233,9 @@ TEST_CASE(
               .exit_code == 0);
   REQUIRE(std::distance(fs::directory_iterator(one), fs::directory_iterator()) == 6);
   REQUIRE(fs::exists(one / "rect-solid-v3.json"));
-  REQUIRE(run_wobble({"keys", "--variants", "1-2", "--out", dir.string()}).exit_code == 2);
+  const RunResult refused = run_wobble({"keys", "--variants", "1-2", "--out", dir.string()});
+  REQUIRE(refused.exit_code == 2);
+  REQUIRE_THAT(refused.err, Catch::Contains("exists; use --force to overwrite it"));
   REQUIRE(run_wobble({"keys", "--variants", "1-2", "--out", dir.string(), "--force"}).exit_code ==
           0);
   // A student checks an answer of variant 1 against variant 1's key.
