@@ -150,31 +150,7 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
               .w3 = w3_dd};
   if (u3_minus_u2 > 0.0) refine(chain);
   set_up_rates(chain);
-  // tau0: sn^2(tau0) = (u0 - u1)/du, on the rising side (u' >= 0) for tau0 in [0, K].
-  double sn0 = std::sqrt(std::max(0.0, -nutation_.d_min) / du_);
-  double cn0 = std::sqrt(std::max(0.0, nutation_.d_max) / du_);
-  // Near a turning point the smaller of sn, cn comes from a difference u0 - u_limit that is a
-  // rounding, and so carries only sqrt(eps) (a start at rest could begin moving at 1e-7 of its
-  // rates): take it from the start's velocity instead, u' = 2 du sn cn dn tau'.
-  const double dn0 =
-      std::sqrt((chain.u3_minus_u2.value() + nutation_.d_max) / chain.u3_minus_u1.value());
-  const double v = std::abs(sin0 * start.thetadot) / (2.0 * du_ * dn0 * rate_);
-  if (sn0 >= cn0) {
-    cn0 = v / sn0;
-  } else {
-    sn0 = v / cn0;
-  }
-  const double h = std::hypot(sn0, cn0);
-  const double F0 = incomplete_F(sn0 / h, cn0 / h, kc2_);
-  tau0_ = start.thetadot > 0.0 ? -F0 : F0;  // theta rising is u falling
-  const Phase p0 = phase_at(0.0);
-  j0_ = p0.j;  // 0, or +-1 when tau0 rounds to the far side of +-K
-  if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess(p0, n_plus_);
-  if (c_minus_.hi != 0.0) G_minus0_ = incomplete_excess(p0, n_minus_);
-  // theta0 as the closed form gives it at t = 0 (not the start's own, which differs by a
-  // rounding): then at(0) is the start exactly, and theta(t) - theta0 has no offset.
-  theta0_ = 0.0;
-  theta0_ = angles(0.0).dtheta;
+  set_up_phase(sin0 * start.thetadot, chain);
 }
 
 void ExactHeavyTop::refine(Chain& c) const {
@@ -245,6 +221,35 @@ void ExactHeavyTop::set_up_rates(const Chain& c) {
     c_minus_ = lin_minus * n / rate;
     if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, n);
   }
+}
+
+// tau0 from the start, and the integrals' values there (G± grow from them).
+void ExactHeavyTop::set_up_phase(double sin_thetadot0, const Chain& chain) {
+  // tau0: sn^2(tau0) = (u0 - u1)/du, on the rising side (u' >= 0) for tau0 in [0, K].
+  double sn0 = std::sqrt(std::max(0.0, -nutation_.d_min) / du_);
+  double cn0 = std::sqrt(std::max(0.0, nutation_.d_max) / du_);
+  // Near a turning point the smaller of sn, cn comes from a difference u0 - u_limit that is a
+  // rounding, and so carries only sqrt(eps) (a start at rest could begin moving at 1e-7 of its
+  // rates): take it from the start's velocity instead, u' = 2 du sn cn dn tau'.
+  const double dn0 =
+      std::sqrt((chain.u3_minus_u2.value() + nutation_.d_max) / chain.u3_minus_u1.value());
+  const double v = std::abs(sin_thetadot0) / (2.0 * du_ * dn0 * rate_);
+  if (sn0 >= cn0) {
+    cn0 = v / sn0;
+  } else {
+    sn0 = v / cn0;
+  }
+  const double h = std::hypot(sn0, cn0);
+  const double F0 = incomplete_F(sn0 / h, cn0 / h, kc2_);
+  tau0_ = sin_thetadot0 > 0.0 ? -F0 : F0;  // theta rising is u falling
+  const Phase p0 = phase_at(0.0);
+  j0_ = p0.j;  // 0, or +-1 when tau0 rounds to the far side of +-K
+  if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess(p0, n_plus_);
+  if (c_minus_.hi != 0.0) G_minus0_ = incomplete_excess(p0, n_minus_);
+  // theta0 as the closed form gives it at t = 0 (not the start's own, which differs by a
+  // rounding): then at(0) is the start exactly, and theta(t) - theta0 has no offset.
+  theta0_ = 0.0;
+  theta0_ = angles(0.0).dtheta;
 }
 
 ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {

@@ -97,6 +97,9 @@ class ExactHeavyTop {
   /// From the chain: the nutation's rate and period, the partial fractions' coefficients, their
   /// complete integrals and the linear rates.
   void set_up_rates(const Chain& c);
+  /// tau0 (sin(theta0) thetadot0 = -u'(0) gives its side and, near a turning point, its
+  /// distance from it) and the integrals' incomplete parts at t = 0.
+  void set_up_phase(double sin_thetadot0, const Chain& c);
 
   HeavyTop top_;
   Vec3 m0_;
