@@ -159,9 +159,10 @@ void ExactHeavyTop::refine(Chain& c) const {
   // The third root from the sum of the roots, -c2 / beta.
   const DD d3 = -(s.c2 / s.beta) - d_min - d_max;
   const DD u3_minus_u1 = d3 - d_min, u3_minus_u2 = d3 - d_max;
-  // Newton's method near a double root (a nutation of ~1e-8 or less) or a root at a pole may
-  // settle elsewhere: keep the double chain unless every refined difference is the double one
-  // to its own accuracy (1e-9 is far above it and far below another root's distance).
+  // Newton's method near a double root (a nutation near rounding, a top all but in steady
+  // precession) or a root at a pole may settle elsewhere: keep the double chain unless every
+  // refined difference is the double one to its own accuracy (1e-9 is far above it and far
+  // below another root's distance). The scene tests' near-steady tops (du ~ 1e-16) take it.
   constexpr double kSameRoot = 1e-9;
   const double du = c.d_max.hi - c.d_min.hi;
   if (!same_root(d_max - d_min, du, kSameRoot) ||
