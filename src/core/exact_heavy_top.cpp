@@ -204,14 +204,14 @@ void ExactHeavyTop::set_up_rates(const Chain& c) {
   }
   // The partial fractions over 1 - u and 1 + u; a term whose numerator is zero is left out (at
   // u1 = -1 the numerator b + a is zero with it, and n- would be infinite).
-  n_plus_ = (du / one_minus_u1).value();
+  const DD n_plus = du / one_minus_u1;
+  n_plus_ = n_plus.value();
   const DD lin_plus = DD(0.5) * c.b_minus_a / one_minus_u1;
   phidot_lin_ = lin_plus;
   psidot_lin_ = c.w3 - c.a - lin_plus;
   if (b_minus_a_ != 0.0) {
-    const DD n = du / one_minus_u1;
-    c_plus_ = lin_plus * n / rate;
-    if (kc2_ > 0.0) complete_plus_ = complete_third_kind_excess_dd(kc2, n);
+    c_plus_ = lin_plus * n_plus / rate;
+    if (kc2_ > 0.0) complete_plus_ = complete_third_kind_excess_dd(kc2, n_plus);
   }
   if (b_plus_a_ != 0.0 && one_plus_u1_ > 0.0) {
     const DD n = -(du / one_plus_u1);
