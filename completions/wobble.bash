@@ -23,7 +23,7 @@ _wobble() {
     --out|--plot|--figure|--answers|--deb) COMPREPLY=($(compgen -f -- "$cur")); return ;;
     --problems) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     --format) COMPREPLY=($(compgen -W "text markdown latex json csv gradescope" -- "$cur")); return ;;
-    --method) COMPREPLY=($(compgen -W "auto closed_form exact rk4 dopri5 rkf78 dop853 split2 split4" -- "$cur")); return ;;
+    --method) COMPREPLY=($(compgen -W "auto closed_form exact rk4 dopri5 rkf78 dop853 vern9 split2 split4" -- "$cur")); return ;;
     --problem) COMPREPLY=($(compgen -W "$(_wobble_ids problems)" -- "$cur")); return ;;
   esac
   local options

@@ -187,6 +187,9 @@ std::vector<Run> work_precision(const BenchProblem& p, bool quick, const TimingP
     runs.push_back(measure(
         p, ref, "dop853", false, tol_text(tol),
         [&] { return run_wobble_rk(p, RkMethod::dop853, tol); }, plan));
+    runs.push_back(measure(
+        p, ref, "vern9", false, tol_text(tol),
+        [&] { return run_wobble_rk(p, RkMethod::vern9, tol); }, plan));
     using ode_dopri5 = boost::numeric::odeint::runge_kutta_dopri5<Array7>;
     using ode_rkf78 = boost::numeric::odeint::runge_kutta_fehlberg78<Array7>;
     runs.push_back(measure(

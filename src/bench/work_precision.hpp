@@ -49,7 +49,8 @@ struct Run {
 
 /// The adaptive integrators of the sweeps by their names in Run::method: wobble's, and the
 /// peers' (other libraries' on the same right-hand side and tolerances).
-inline constexpr std::array<const char*, 3> kWobbleIntegrators{"dopri5", "rkf78", "dop853"};
+inline constexpr std::array<const char*, 4> kWobbleIntegrators{"dopri5", "rkf78", "dop853",
+                                                               "vern9"};
 inline constexpr std::array<const char*, 5> kPeerIntegrators{
     "odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45", "cvode_adams"};
 

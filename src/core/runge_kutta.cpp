@@ -209,9 +209,11 @@ int order_of(RkMethod m) {
       return 5;
     case RkMethod::rkf78:
     case RkMethod::dop853:
+      return 8;
+    case RkMethod::vern9:
       break;
   }
-  return 8;
+  return 9;
 }
 
 std::string name_of(RkMethod m) {
@@ -223,9 +225,11 @@ std::string name_of(RkMethod m) {
     case RkMethod::rkf78:
       return "rkf78";
     case RkMethod::dop853:
+      return "dop853";
+    case RkMethod::vern9:
       break;
   }
-  return "dop853";
+  return "vern9";
 }
 
 RungeKutta::RungeKutta(const RigidBodyModel& model, RkMethod method, double tol_or_step,
@@ -259,6 +263,9 @@ void RungeKutta::advance(State7& y, double t0, double t1) {
       case RkMethod::dop853:
         advance_fixed<Dop853>(model_, y, span, tol_or_step_, cost_, limit_);
         return;
+      case RkMethod::vern9:
+        advance_fixed<Vern9>(model_, y, span, tol_or_step_, cost_, limit_);
+        return;
     }
   }
   const auto no_output = [](double, double, const State7&, const State7&, const auto&) {};
@@ -269,7 +276,11 @@ void RungeKutta::advance(State7& y, double t0, double t1) {
     case RkMethod::dop853:
       advance_adaptive<Dop853>(y, t0, t1, no_output);
       return;
-    default:
+    case RkMethod::vern9:
+      advance_adaptive<Vern9>(y, t0, t1, no_output);
+      return;
+    case RkMethod::rk4:  // fixed, above
+    case RkMethod::rkf78:
       advance_adaptive<Rkf78>(y, t0, t1, no_output);
       return;
   }

@@ -1,8 +1,8 @@
 #pragma once
 /// @file
 /// Runge-Kutta integrators for the rigid body (core/rigid_body.hpp): fixed-step RK4, and the
-/// embedded pairs Dormand-Prince 5(4), Fehlberg 7(8) and Dormand-Prince 8(5,3) (DOP853) with
-/// step-size control. Tableaux: core/runge_kutta_tableaux.hpp.
+/// embedded pairs Dormand-Prince 5(4), Fehlberg 7(8), Dormand-Prince 8(5,3) (DOP853) and
+/// Verner's 9(8) with step-size control. Tableaux: core/runge_kutta_tableaux.hpp.
 ///
 /// Error control is on the whole state (momentum and attitude): a step is accepted when
 /// max_i |err_i| / (tol * scale_i) <= 1, where scale is the size of the momentum for its three
@@ -12,7 +12,7 @@
 /// advance() shortens the last step to land exactly on the requested time. sample() does so
 /// only at the last output time: Dormand-Prince 5(4) and DOP853 give the times between from
 /// each step's dense output (continuous extensions of order 4 and 7), so many output times
-/// cost little more than few; Fehlberg 7(8) and fixed steps land on every one.
+/// cost little more than few; Fehlberg 7(8), Verner 9(8) and fixed steps land on every one.
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -22,7 +22,7 @@
 
 namespace wobble {
 
-enum class RkMethod { rk4, dopri5, rkf78, dop853 };
+enum class RkMethod { rk4, dopri5, rkf78, dop853, vern9 };
 
 struct IntegrationCost {
   std::int64_t rhs_evals = 0;
@@ -33,8 +33,9 @@ struct IntegrationCost {
 /// Advances a state through successive output times, keeping its step size between calls.
 class RungeKutta {
  public:
-  /// Adaptive (dopri5, rkf78, dop853): `tol_or_step` is the relative tolerance. Fixed step (rk4, or
-  /// any method with fixed_step = true, used to measure orders): it is the largest step (s).
+  /// Adaptive (dopri5, rkf78, dop853, vern9): `tol_or_step` is the relative tolerance. Fixed
+  /// step (rk4, or any method with fixed_step = true, used to measure orders): it is the
+  /// largest step (s).
   /// `momentum_scale` (kg m^2/s, > 0) is the size the momentum error is measured against.
   /// @throws std::invalid_argument for a non-positive or non-finite step, tolerance or scale.
   RungeKutta(const RigidBodyModel& model, RkMethod method, double tol_or_step,

@@ -23,9 +23,10 @@ std::string cell(const std::string& text) {
 
 // The same line style for a method in every panel.
 int style_of(const std::string& method) {
-  static const char* order[] = {"exact",     "dopri5",      "rkf78",     "dop853",
-                                "odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45",
-                                "cvode_adams", "rk4",       "split2",    "split4"};
+  static const char* order[] = {"exact",         "dopri5",       "rkf78",     "dop853",
+                                "vern9",         "odeint_dopri5", "odeint_rkf78", "gsl_rk8pd",
+                                "gsl_rkf45",     "cvode_adams",  "rk4",       "split2",
+                                "split4"};
   constexpr int n = sizeof order / sizeof order[0];
   for (int i = 0; i < n; ++i) {
     if (method == order[i]) return i + 1;

@@ -20,6 +20,7 @@ const std::vector<std::pair<std::string, std::string>>& simulation_method_names(
       {"dopri5", "Dormand-Prince 5(4), adaptive"},
       {"rkf78", "Fehlberg 7(8), adaptive"},
       {"dop853", "Dormand-Prince 8(5,3), adaptive, samples from its dense output"},
+      {"vern9", "Verner 9(8), adaptive (order 9: the cheapest at tolerances of 1e-10 and below)"},
       {"split2", "Lie-Poisson splitting, Strang (order 2), torque-free"},
       {"split4", "Lie-Poisson splitting, Yoshida composition (order 4), torque-free"},
   };
@@ -160,7 +161,7 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
                        (c.method == SimMethod::exact && s.model.gravity && !s.model.torque
                             ? " on a body that is no symmetric top pivoted on its axle"
                             : "") +
-                       "; use rk4, dopri5, rkf78, dop853 or auto");
+                       "; use rk4, dopri5, rkf78, dop853, vern9 or auto");
     }
     if (c.method == SimMethod::closed_form && !s.symmetric) {
       throw InputError(fmt::format(
@@ -205,13 +206,15 @@ WorkEstimate estimate_work(const SceneSetup& s, const MethodChoice& c) {
     case SimMethod::dopri5:
     case SimMethod::rkf78:
     case SimMethod::dop853:
+    case SimMethod::vern9:
       break;
   }
   // New evaluations per step: 6 (Dormand-Prince, first same as last), 13 (Fehlberg), 12 and
-  // 3 more for the dense output of a step with samples (DOP853).
-  const bool dp = c.method == SimMethod::dopri5;
-  const int stages = dp ? 6 : c.method == SimMethod::rkf78 ? 13 : 15;
-  return {adaptive_evaluations(s, s.tolerance, dp ? 5 : 8, stages) + reference,
+  // 3 more for the dense output of a step with samples (DOP853), 16 (Verner, order 9).
+  const bool dp = c.method == SimMethod::dopri5, verner = c.method == SimMethod::vern9;
+  const int stages = dp ? 6 : c.method == SimMethod::rkf78 ? 13 : verner ? 16 : 15;
+  const int order = dp ? 5 : verner ? 9 : 8;
+  return {adaptive_evaluations(s, s.tolerance, order, stages) + reference,
           fmt::format("a rate up to {:.3g} rad/s over {:.6g} s at tolerance {:.0e}", rate, s.t_end,
                       s.tolerance)};
 }

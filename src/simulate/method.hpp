@@ -18,7 +18,7 @@
 
 namespace wobble {
 
-enum class SimMethod { closed_form, exact, rk4, dopri5, rkf78, dop853, split2, split4 };
+enum class SimMethod { closed_form, exact, rk4, dopri5, rkf78, dop853, vern9, split2, split4 };
 
 struct MethodChoice {
   SimMethod method = SimMethod::exact;

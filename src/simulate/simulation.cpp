@@ -135,6 +135,7 @@ void propagate_each(const SceneSetup& s, const MethodChoice& choice,
   const RkMethod rk = choice.method == SimMethod::rk4      ? RkMethod::rk4
                       : choice.method == SimMethod::dopri5 ? RkMethod::dopri5
                       : choice.method == SimMethod::dop853 ? RkMethod::dop853
+                      : choice.method == SimMethod::vern9  ? RkMethod::vern9
                                                            : RkMethod::rkf78;
   const double tol_or_step = rk == RkMethod::rk4 ? choice.step_s : s.tolerance;
   RungeKutta integrator(s.model, rk, tol_or_step, momentum_scale(s));
@@ -238,9 +239,10 @@ SimulationResult simulate(const SceneSetup& s, const MethodChoice& choice,
     r.error_reference = "the exact solution";
   } else {
     const double tol = reference_tolerance(s);
-    // Nothing tighter: an order-8 pair already at the smallest tolerance a scene may ask.
-    const bool order8 = choice.method == SimMethod::rkf78 || choice.method == SimMethod::dop853;
-    if (order8 && tol >= s.tolerance) return r;
+    // Nothing tighter: a pair of order 8 or 9 already at the smallest tolerance a scene may ask.
+    const bool high_order = choice.method == SimMethod::rkf78 ||
+                            choice.method == SimMethod::dop853 || choice.method == SimMethod::vern9;
+    if (high_order && tol >= s.tolerance) return r;
     ref.method = SimMethod::rkf78;
     r.error_reference = fmt::format("rkf78 at tolerance {:.0e}", tol);
   }

@@ -42,7 +42,7 @@ struct SimulationResult {
   double run_time_s = 0.0;
   /// Integrators only: the largest difference from a more accurate run (the exact solution when
   /// torque-free, else rkf78 at tolerance/100), relative to each column's largest value; -1 if
-  /// no more accurate run exists (rkf78 or dop853 at 1e-14 already).
+  /// no more accurate run exists (rkf78, dop853 or vern9 at 1e-14 already).
   double error_estimate = -1.0;
   std::string error_reference;     ///< what it was compared with; "exact" for exact methods
   std::int64_t estimate_cost = 0;  ///< the evaluations of that second run

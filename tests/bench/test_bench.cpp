@@ -19,8 +19,8 @@ TEST_CASE("the P1 sweep runs every method and every peer, and tighter is more ac
   const BenchProblem p1 = bench_problems().at(0);
   const std::vector<Run> runs = work_precision(p1, true, kOnce);
   for (const std::string m :
-       {"exact", "dopri5", "rkf78", "odeint_dopri5", "odeint_rkf78", "gsl_rk8pd", "gsl_rkf45",
-        "cvode_adams", "rk4", "split2", "split4"}) {
+       {"exact", "dopri5", "rkf78", "dop853", "vern9", "odeint_dopri5", "odeint_rkf78", "gsl_rk8pd",
+        "gsl_rkf45", "cvode_adams", "rk4", "split2", "split4"}) {
     INFO(m);
     REQUIRE(std::any_of(runs.begin(), runs.end(), [&](const Run& r) { return r.method == m; }));
   }

@@ -145,7 +145,7 @@ TEST_CASE("bench --quick (the CI smoke run) reports every problem, component and
   }
   REQUIRE_THAT(slurp(svg), Catch::Contains("<svg") && Catch::Contains("odeint_rkf78") &&
                                Catch::Contains("gsl_rk8pd") && Catch::Contains("cvode_adams") &&
-                               Catch::Contains("dop853"));
+                               Catch::Contains("dop853") && Catch::Contains("vern9"));
 }
 
 TEST_CASE("simulate --t-end sets the time span (an expression), --samples the count") {

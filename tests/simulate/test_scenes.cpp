@@ -120,11 +120,12 @@ TEST_CASE("the heavy-top scene's exact solution and Fehlberg 7(8) at 1e-13 agree
 TEST_CASE("closed form, exact solver, integrators and splittings agree on a symmetric body") {
   const SceneSetup s = setup_scene(find_scene("flying-plate"), {});
   const SimulationResult ref = run(s, "closed_form");
-  // Bounds: exact ~1e-15; rkf78, dop853 and dopri5 at 1e-10 over ~100-1000 steps (<= 1e-8 of
-  // the unit vectors; dopri5 and dop853 samples from their dense output, whose error is of
-  // the steps' size); splittings at the step from the tolerance rule, whose error is about
+  // Bounds: exact ~1e-15; rkf78, dop853, vern9 and dopri5 at 1e-10 over ~100-1000 steps
+  // (<= 1e-8 of the unit vectors; dopri5 and dop853 samples from their dense output, whose
+  // error is of the steps' size); splittings at the step from the tolerance rule, whose error is about
   // the tolerance times the turns made (~2 here) -> 1e-8 as well; rk4 likewise.
-  for (const std::string m : {"exact", "rkf78", "dopri5", "dop853", "rk4", "split2", "split4"}) {
+  for (const std::string m :
+       {"exact", "rkf78", "dopri5", "dop853", "vern9", "rk4", "split2", "split4"}) {
     const SimulationResult r = run(s, m);
     INFO(m);
     for (const std::string c : {"e3_space_x", "e3_space_y", "omega_body_x", "omega_body_z"}) {

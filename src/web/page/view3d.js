@@ -161,7 +161,7 @@ function legendItem(color, text) {
 
 function methodWords(motion) {
   const words = {closed_form: 'the closed form', exact: 'the exact elliptic solution',
-                 rkf78: 'Fehlberg 7(8)', dop853: 'Dormand-Prince 8(5,3)',
+                 rkf78: 'Fehlberg 7(8)', dop853: 'Dormand-Prince 8(5,3)', vern9: 'Verner 9(8)',
                  dopri5: 'Dormand-Prince 5(4)', rk4: 'RK4',
                  split2: 'a splitting', split4: 'a splitting'};
   return 'Computed by ' + (words[motion.method] || motion.method) + '; shown with slerp between ' +
