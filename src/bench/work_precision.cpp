@@ -324,19 +324,28 @@ std::vector<DenseRow> dense_output_table(bool quick, const TimingPlan& plan) {
 
 double time_at_error(const std::vector<Run>& runs, const std::string& problem,
                      const std::string& method, double target) {
-  // Points of the curve ordered by error; interpolate log t against log e between the two
-  // points that bracket the target.
-  std::vector<std::pair<double, double>> pts;
+  // The curve's frontier: by time, each run that is more accurate than every cheaper one. Where
+  // round-off or the problem's condition stops the error from falling (P3 near the separatrix:
+  // tolerance 1e-14 ends farther off than 1e-12), a costlier run that is no better says nothing
+  // about what the error costs; sorted by error alone it would bracket the target instead.
+  std::vector<std::pair<double, double>> by_time;  // (log t, log e)
   for (const auto& r : runs) {
     if (r.problem == problem && r.method == method && r.error > 0)
-      pts.emplace_back(std::log(r.error), std::log(r.time_s));
+      by_time.emplace_back(std::log(r.time_s), std::log(r.error));
   }
-  std::sort(pts.begin(), pts.end());
-  const double lt = std::log(target);
-  for (std::size_t i = 1; i < pts.size(); ++i) {
-    if (pts[i - 1].first <= lt && lt <= pts[i].first) {
-      const double f = (lt - pts[i - 1].first) / (pts[i].first - pts[i - 1].first);
-      return std::exp(pts[i - 1].second + f * (pts[i].second - pts[i - 1].second));
+  std::sort(by_time.begin(), by_time.end());
+  std::vector<std::pair<double, double>> frontier;
+  for (const auto& p : by_time) {
+    if (frontier.empty() || p.second < frontier.back().second) frontier.push_back(p);
+  }
+  // Interpolate log t against log e between the two frontier runs that bracket the target.
+  const double le = std::log(target);
+  for (std::size_t i = 1; i < frontier.size(); ++i) {
+    const auto& [t0, e0] = frontier[i - 1];
+    const auto& [t1, e1] = frontier[i];
+    if (e1 <= le && le <= e0) {
+      const double f = (le - e0) / (e1 - e0);
+      return std::exp(t0 + f * (t1 - t0));
     }
   }
   return -1.0;

@@ -87,7 +87,8 @@ struct DenseRow {
 std::vector<DenseRow> dense_output_table(bool quick, const TimingPlan& plan);
 
 /// The time `method` needs for error `target` on `problem`, interpolated log-log along its
-/// curve between the two runs that bracket the target; negative if the curve does not reach it.
+/// curve's frontier (each run more accurate than every cheaper one) between the two runs that
+/// bracket the target; negative if the frontier does not reach it.
 double time_at_error(const std::vector<Run>& runs, const std::string& problem,
                      const std::string& method, double target);
 

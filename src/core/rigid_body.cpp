@@ -18,11 +18,28 @@ void RigidBodyModel::validate() const {
     throw std::invalid_argument("rigid body: torque must be finite");
 }
 
-Vec3 RigidBodyModel::torque_P(const Vec3& /*m_P*/, const Quat& q_PtoS) const {
+namespace {
+// v_S in body components, R^T v_S, for the rotation R of q / |q|: q* v q / |q|^2 =
+// ((w^2 - |u|^2) v - 2 w (u x v) + 2 (u . v) u) / |q|^2, q = (w, u). No square root: the
+// integrators' stages carry a q a little off unit length (~tol), and normalising it first
+// (a square root and four divisions) was 20 ns of the heavy top's 62 ns right-hand side.
+[[gnu::always_inline]] inline Vec3 space_to_body(double w, const Vec3& u, const Vec3& v_S) {
+  const double u2 = u.squaredNorm();
+  return ((w * w - u2) * v_S - 2.0 * w * u.cross(v_S) + 2.0 * u.dot(v_S) * u) / (w * w + u2);
+}
+
+// The torque for an attitude (w, u), inlined into rhs(): a call returning the vector through
+// memory was another 17 ns (measured: 62 ns before both changes, 25 ns after).
+[[gnu::always_inline]] inline Vec3 torque_of(const RigidBodyModel& b, double w, const Vec3& u) {
   Vec3 tau = Vec3::Zero();
-  if (gravity) tau += d_P_m.cross(q_PtoS.conjugate() * (mass_kg * g_S));
-  if (torque) tau += torque_in_space ? Vec3(q_PtoS.conjugate() * torque_Nm) : torque_Nm;
+  if (b.gravity) tau += b.d_P_m.cross(space_to_body(w, u, b.mass_kg * b.g_S));
+  if (b.torque) tau += b.torque_in_space ? space_to_body(w, u, b.torque_Nm) : b.torque_Nm;
   return tau;
+}
+}  // namespace
+
+Vec3 RigidBodyModel::torque_P(const Vec3& /*m_P*/, const Quat& q_PtoS) const {
+  return torque_of(*this, q_PtoS.w(), q_PtoS.vec());
 }
 
 double RigidBodyModel::potential(const Quat& q_PtoS) const {
@@ -34,9 +51,9 @@ State7 RigidBodyModel::rhs(const State7& y) const {
   const Vec3 m = y.head<3>();
   const Vec3 w = omega_P(m);
   Vec3 dm = m.cross(w);
-  // The rotation in torque_P must be a rotation: use the normalised attitude there only.
-  if (!torque_free()) dm += torque_P(m, attitude_of(y));
   const double qw = y[3], qx = y[4], qy = y[5], qz = y[6];
+  // The rotation of q / |q|, whatever the stage's |q|.
+  if (!torque_free()) dm += torque_of(*this, qw, Vec3(qx, qy, qz));
   State7 dy;
   dy.head<3>() = dm;
   // q (0, w) / 2, written out (Hamilton product).

@@ -37,8 +37,10 @@ struct RigidBodyModel {
   void validate() const;
 
   Vec3 omega_P(const Vec3& m_P) const { return m_P.cwiseQuotient(I_P); }
+  /// q_PtoS any nonzero quaternion: the torque of the rotation q / |q|.
   Vec3 torque_P(const Vec3& m_P, const Quat& q_PtoS) const;
-  /// dy/dt. q is used as given (not normalised): the integrators renormalise after each step.
+  /// dy/dt for any nonzero q: the torques act for the rotation q / |q|, and dq/dt = q (0, w) / 2
+  /// scales with |q|, so |q| never enters the motion (the integrators renormalise now and then).
   State7 rhs(const State7& y) const;
 
   /// Kinetic energy (J); potential energy of gravity about the pivot, M g-height of the centre

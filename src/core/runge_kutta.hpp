@@ -8,7 +8,9 @@
 /// max_i |err_i| / (tol * scale_i) <= 1, where scale is the size of the momentum for its three
 /// components and 1 for the four quaternion components, so `tol` is a relative error per step.
 /// The pairs propagate the higher-order solution (local extrapolation), like Boost.Odeint.
-/// After every step the quaternion is renormalised (the exact flow keeps it unit; RK does not).
+/// The quaternion is renormalised when |q|^2 strays 1e-6 from 1 and at the end of each call:
+/// |q| never enters the motion (the torques use q / |q|, dq/dt is linear in q), and states
+/// handed out (advance's y, sample's) are unit.
 /// advance() shortens the last step to land exactly on the requested time. sample() does so
 /// only at the last output time: Dormand-Prince 5(4) and DOP853 give the times between from
 /// each step's dense output (continuous extensions of order 4 and 7), so many output times

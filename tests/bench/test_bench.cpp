@@ -3,6 +3,7 @@
 // ratio interpolates correctly, and the targets are judged as stated.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 
 #include "bench/report.hpp"
 #include "render/bench_output.hpp"
@@ -58,6 +59,22 @@ TEST_CASE("time_ratio_at interpolates log-log between the bracketing points") {
   REQUIRE_THAT(time_ratio_at(runs, "P", "a", "b", 1e-8), WithinRel(0.5, 1e-12));
   REQUIRE(time_ratio_at(runs, "P", "a", "b", 1e-12) < 0);  // outside both curves
   REQUIRE(time_ratio_at(runs, "Q", "a", "b", 1e-8) < 0);   // another problem
+}
+
+TEST_CASE("time_at_error reads the frontier: a costlier run that is no more accurate is passed over") {
+  // Errors 1e-6, 1e-8, 1e-10 at 10, 20, 40 s, then round-off: 1e-9 at 80 s. At 1e-9 the
+  // frontier gives sqrt(20 * 40) s (halfway in log e between 1e-8 and 1e-10); the run at 80 s,
+  // bracketing 1e-9 with the one at 40 s when sorted by error, would give 80 s.
+  std::vector<Run> runs;
+  for (const auto& [error, time] : {std::pair{1e-6, 10.0}, std::pair{1e-8, 20.0},
+                                    std::pair{1e-10, 40.0}, std::pair{1e-9, 80.0}}) {
+    runs.push_back({"P", "a", false, "", error, 0, 0, 1, time});
+  }
+  // The interpolation's arithmetic: a few roundings of logs and an exp.
+  const double rounding = 16 * std::numeric_limits<double>::epsilon();
+  REQUIRE_THAT(time_at_error(runs, "P", "a", 1e-9), WithinRel(std::sqrt(20.0 * 40.0), rounding));
+  REQUIRE_THAT(time_at_error(runs, "P", "a", 1e-7), WithinRel(std::sqrt(10.0 * 20.0), rounding));
+  REQUIRE(time_at_error(runs, "P", "a", 1e-11) < 0);  // beyond the frontier's best
 }
 
 TEST_CASE("targets are judged as the bench states them") {

@@ -300,9 +300,10 @@ TEST_CASE("Ctrl-C stops a long command cleanly: exit 130, no file and no tempora
   CHECK(!fs::exists(dir));  // nothing was staged yet: the folder was never made
   // A long simulation with files to write: neither file nor temporary appears.
   fs::create_directories(dir);
-  // 20000 s of the heavy top integrated: about 17 s in a release build, so the signal comes mid-run.
+  // 2e5 s of the heavy top integrated: about 26 s in a release build (9e8 evaluations), so the
+  // signal comes mid-run.
   const RunResult sim = run_shell("timeout --preserve-status -s INT " + kSignalAfter + " " + exe +
-                                  " simulate heavy-top --method rkf78 --t-end 20000 --max-evaluations 1e11 --out '" +
+                                  " simulate heavy-top --method rkf78 --t-end 2e5 --max-evaluations 1e11 --out '" +
                                   (dir / "run.csv").string() + "' --plot '" +
                                   (dir / "run.svg").string() + "'");
   INFO(sim.err);

@@ -341,6 +341,35 @@ TEST_CASE("heavy symmetric top: energy, p_phi and p_psi conserved to the toleran
   REQUIRE((attitude_of(y) * Vec3::UnitZ() - q0 * Vec3::UnitZ()).norm() > 1e-2);
 }
 
+TEST_CASE("the torques rotate by q / |q|: a stage's quaternion off unit length changes nothing") {
+  RigidBodyModel m;
+  m.I_P = Vec3(1, 2, 3);
+  m.gravity = true;
+  m.mass_kg = 0.7;
+  m.d_P_m = Vec3(0.01, -0.02, 0.08);
+  m.g_S = Vec3(0.1, 0.2, -9.81);
+  m.torque = true;
+  m.torque_in_space = true;
+  m.torque_Nm = Vec3(0.3, -0.5, 0.2);
+  const Quat unit(Eigen::AngleAxisd(2.1, Vec3(0.3, -1.0, 0.4).normalized()));
+  // The reference: Eigen's rotation matrix of the unit quaternion, transposed.
+  const Eigen::Matrix3d R = unit.toRotationMatrix();
+  const Vec3 expected = m.d_P_m.cross(R.transpose() * (m.mass_kg * m.g_S)) +
+                        R.transpose() * m.torque_Nm;
+  // Each term is a few roundings of products of size |d| M |g| or |tau|.
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double bound =
+      16 * eps * (m.d_P_m.norm() * m.mass_kg * m.g_S.norm() + m.torque_Nm.norm());
+  for (const double scale : {1.0, 1.0 + 1e-9, 0.999, 3.0}) {
+    const Quat q(scale * unit.w(), scale * unit.x(), scale * unit.y(), scale * unit.z());
+    INFO("|q| = " << scale);
+    REQUIRE((m.torque_P(Vec3::Zero(), q) - expected).norm() <= bound);
+    // rhs() takes the same torque from the state's raw quaternion.
+    const State7 dy = m.rhs(pack(Vec3::Zero(), q));
+    REQUIRE((dy.head<3>() - expected).norm() <= bound);
+  }
+}
+
 TEST_CASE("a constant torque in space adds tau t to L in space, exactly") {
   RigidBodyModel m;
   m.I_P = Vec3(1, 2, 3);
