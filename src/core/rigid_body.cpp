@@ -50,7 +50,11 @@ double RigidBodyModel::potential(const Quat& q_PtoS) const {
 State7 RigidBodyModel::rhs(const State7& y) const {
   const Vec3 m = y.head<3>();
   const Vec3 w = omega_P(m);
-  Vec3 dm = m.cross(w);
+  // m x w in Euler's form, (m x w)_1 = (I2 - I3) w2 w3 and cyclically: exactly zero along the
+  // axis of a symmetric body (I1 == I2), where m1 w2 - m2 w1 rounds to ~eps m w (a braked wheel
+  // released with no spin about its axis drifted 1e-18 rad/s per second), and no cancellation.
+  Vec3 dm((I_P[1] - I_P[2]) * w[1] * w[2], (I_P[2] - I_P[0]) * w[2] * w[0],
+          (I_P[0] - I_P[1]) * w[0] * w[1]);
   const double qw = y[3], qx = y[4], qy = y[5], qz = y[6];
   // The rotation of q / |q|, whatever the stage's |q|.
   if (!torque_free()) dm += torque_of(*this, qw, Vec3(qx, qy, qz));

@@ -62,22 +62,22 @@ TEST_CASE("auto picks the closed form, the exact solution, or an adaptive pair, 
   REQUIRE(exact.method == SimMethod::exact);
   REQUIRE_THAT(exact.reason, Catch::Contains("heavy symmetric top"));
   // Asked for more than the closed form's rounding allows (a tolerance below its 16 eps and
-  // more): Fehlberg 7(8), and why.
+  // more): Verner 9(8), and why.
   SceneSetup strict = top;
   strict.tolerance = 1e-17;
   const MethodChoice rounding = choose_method(strict, "auto");
-  REQUIRE(rounding.method == SimMethod::rkf78);
+  REQUIRE(rounding.method == SimMethod::vern9);
   REQUIRE_THAT(rounding.reason, Catch::Contains("of rounding over the run"));
-  // The same top with its centre of mass off the axle is no symmetric top: Fehlberg 7(8).
+  // The same top with its centre of mass off the axle is no symmetric top: Verner 9(8).
   SceneSetup off_axis = top;
   off_axis.model.d_P_m.x() = 1e-3;
   const MethodChoice c = choose_method(off_axis, "auto");
-  REQUIRE(c.method == SimMethod::rkf78);
-  REQUIRE_THAT(c.reason, Catch::Contains("Fehlberg"));
+  REQUIRE(c.method == SimMethod::vern9);
+  REQUIRE_THAT(c.reason, Catch::Contains("Verner"));
   REQUIRE_THROWS_WITH(choose_method(off_axis, "exact"), Catch::Contains("no symmetric top"));
   SceneSetup loose = off_axis;
-  loose.tolerance = 1e-4;  // Fehlberg is cheaper at every tolerance measured
-  REQUIRE(choose_method(loose, "auto").method == SimMethod::rkf78);
+  loose.tolerance = 1e-4;  // Verner is the cheaper at every error measured (1e-5 and below)
+  REQUIRE(choose_method(loose, "auto").method == SimMethod::vern9);
 }
 
 TEST_CASE("the heavy-top scene's exact solution and Fehlberg 7(8) at 1e-13 agree") {
@@ -394,9 +394,9 @@ TEST_CASE("a brake stops the spin about its axis and never turns the wheel backw
   REQUIRE(s.brake_stops_s.has_value());
   // I3 w3 / tau: the cylinder (2 kg, R 0.2 m) has I3 = 0.04 kg m^2, w3 = 20 rad/s, tau 0.2 N m.
   REQUIRE_THAT(*s.brake_stops_s, WithinRel(0.04 * 20 / 0.2, 4 * kEps));
-  // auto (Fehlberg 7(8), landing on every sample) and DOP853 (samples before and after the
-  // stop from its dense output, the stop itself landed on).
-  for (const std::string method : {"auto", "dop853"}) {
+  // auto (Verner 9(8), landing on every sample), Fehlberg 7(8) likewise, and DOP853 (samples
+  // before and after the stop from its dense output, the stop itself landed on).
+  for (const std::string method : {"auto", "rkf78", "dop853"}) {
     const SimulationResult r = run(s, method);
     const std::size_t wz = column(r, "omega_body_z");
     REQUIRE(r.rows.size() == 201);
