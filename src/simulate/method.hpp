@@ -6,9 +6,10 @@
 /// solution (torque-free, or a heavy symmetric top: gravity alone on a top pivoted on its
 /// axle, core/exact_heavy_top.hpp), else the adaptive pair that costs least for the effects
 /// present: Verner 9(8). Measured by `wobble bench` on the heavy top (P4), at equal error it
-/// takes 0.79-0.93x Fehlberg 7(8)'s time and 0.9-1x DOP853's for errors from 1e-5 to 1e-12
-/// (Dormand-Prince 5(4) 2.5-7x); on the braked wheel (the wheel-brake scene, errors against
-/// Fehlberg at tolerance/100) 0.81-0.95x Fehlberg's evaluations.
+/// takes 0.66-0.85x Fehlberg 7(8)'s time for errors from 1e-8 to 1e-12, and is level with it
+/// and DOP853 at 1e-5 and 1e-6 (Dormand-Prince 5(4) 2.4-7x); on the braked wheel (the
+/// wheel-brake scene, errors against Fehlberg at tolerance/100) 0.81-0.95x Fehlberg's
+/// evaluations.
 #include <optional>
 #include <string>
 #include <vector>

@@ -61,7 +61,7 @@ TEST_CASE("time_ratio_at interpolates log-log between the bracketing points") {
   REQUIRE(time_ratio_at(runs, "Q", "a", "b", 1e-8) < 0);   // another problem
 }
 
-TEST_CASE("time_at_error reads the frontier: a costlier run that is no more accurate is passed over") {
+TEST_CASE("time_at_error reads the frontier: a costlier run no more accurate is passed over") {
   // Errors 1e-6, 1e-8, 1e-10 at 10, 20, 40 s, then round-off: 1e-9 at 80 s. At 1e-9 the
   // frontier gives sqrt(20 * 40) s (halfway in log e between 1e-8 and 1e-10); the run at 80 s,
   // bracketing 1e-9 with the one at 40 s when sorted by error, would give 80 s.
