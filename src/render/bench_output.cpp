@@ -273,10 +273,9 @@ void write_bench_plot(const BenchReport& r, const std::filesystem::path& out) {
         g += "set logscale xy\nset format x \"10^{%L}\"\nset format y \"10^{%L}\"\nset grid\n";
         // gnuplot's linetypes repeat their eight colours from 9 on (split4 took vern9's yellow):
         // the styles past eight get colours of their own, keeping their point types.
-        constexpr const char* kMoreColours[] = {"#8c564b", "#e377c2", "#7f7f7f", "#17becf",
-                                                "#bcbd22"};
-        for (int i = 0; i < 5; ++i) {
-          g += fmt::format("set linetype {0} lc rgb \"{1}\" pt {0}\n", 9 + i, kMoreColours[i]);
+        int linetype = 9;
+        for (const char* colour : {"#8c564b", "#e377c2", "#7f7f7f", "#17becf", "#bcbd22"}) {
+          g += fmt::format("set linetype {0} lc rgb \"{1}\" pt {0}\n", linetype++, colour);
         }
         g += "set xlabel \"run time [s]\"\nset ylabel \"error at T\"\nset key outside right font "
              "\",10\"\n";

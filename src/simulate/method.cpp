@@ -20,7 +20,7 @@ const std::vector<std::pair<std::string, std::string>>& simulation_method_names(
       {"dopri5", "Dormand-Prince 5(4), adaptive"},
       {"rkf78", "Fehlberg 7(8), adaptive"},
       {"dop853", "Dormand-Prince 8(5,3), adaptive, samples from its dense output"},
-      {"vern9", "Verner 9(8), adaptive (order 9: the cheapest at tolerances of 1e-10 and below)"},
+      {"vern9", "Verner 9(8), adaptive (order 9: the cheapest pair at equal error from 1e-8 down)"},
       {"split2", "Lie-Poisson splitting, Strang (order 2), torque-free"},
       {"split4", "Lie-Poisson splitting, Yoshida composition (order 4), torque-free"},
   };
@@ -29,6 +29,27 @@ const std::vector<std::pair<std::string, std::string>>& simulation_method_names(
 
 std::string name_of(SimMethod m) {
   return simulation_method_names()[static_cast<std::size_t>(m)].first;
+}
+
+std::optional<RkMethod> runge_kutta_of(SimMethod m) {
+  switch (m) {
+    case SimMethod::rk4:
+      return RkMethod::rk4;
+    case SimMethod::dopri5:
+      return RkMethod::dopri5;
+    case SimMethod::rkf78:
+      return RkMethod::rkf78;
+    case SimMethod::dop853:
+      return RkMethod::dop853;
+    case SimMethod::vern9:
+      return RkMethod::vern9;
+    case SimMethod::closed_form:
+    case SimMethod::exact:
+    case SimMethod::split2:
+    case SimMethod::split4:
+      break;
+  }
+  return std::nullopt;
 }
 
 std::optional<HeavyTop> exact_heavy_top(const SceneSetup& s) {
@@ -211,10 +232,13 @@ WorkEstimate estimate_work(const SceneSetup& s, const MethodChoice& c) {
   }
   // New evaluations per step: 6 (Dormand-Prince, first same as last), 13 (Fehlberg), 12 and
   // 3 more for the dense output of a step with samples (DOP853), 16 (Verner, order 9).
-  const bool dp = c.method == SimMethod::dopri5, verner = c.method == SimMethod::vern9;
-  const int stages = dp ? 6 : c.method == SimMethod::rkf78 ? 13 : verner ? 16 : 15;
-  const int order = dp ? 5 : verner ? 9 : 8;
-  return {adaptive_evaluations(s, s.tolerance, order, stages) + reference,
+  const int stages = c.method == SimMethod::dopri5  ? 6
+                     : c.method == SimMethod::rkf78 ? 13
+                     : c.method == SimMethod::vern9 ? 16
+                                                    : 15;
+  return {adaptive_evaluations(s, s.tolerance, order_of(runge_kutta_of(c.method).value()),
+                               stages) +
+              reference,
           fmt::format("a rate up to {:.3g} rad/s over {:.6g} s at tolerance {:.0e}", rate, s.t_end,
                       s.tolerance)};
 }

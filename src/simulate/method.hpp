@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/heavy_top.hpp"
+#include "core/runge_kutta.hpp"
 #include "simulate/scene_setup.hpp"
 
 namespace wobble {
@@ -28,6 +29,9 @@ struct MethodChoice {
 };
 
 std::string name_of(SimMethod m);
+/// The Runge-Kutta method behind m (rk4, dopri5, rkf78, dop853, vern9); none for the closed
+/// form, the exact solution and the splittings.
+std::optional<RkMethod> runge_kutta_of(SimMethod m);
 
 /// The scene as the heavy symmetric top the exact solution serves, when it is one: gravity and
 /// no torque, I1 == I2 (within the degeneracy rule of core/principal_axes.hpp; their mean is

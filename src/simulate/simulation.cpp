@@ -132,11 +132,7 @@ void propagate_each(const SceneSetup& s, const MethodChoice& choice,
     default:
       break;
   }
-  const RkMethod rk = choice.method == SimMethod::rk4      ? RkMethod::rk4
-                      : choice.method == SimMethod::dopri5 ? RkMethod::dopri5
-                      : choice.method == SimMethod::dop853 ? RkMethod::dop853
-                      : choice.method == SimMethod::vern9  ? RkMethod::vern9
-                                                           : RkMethod::rkf78;
+  const RkMethod rk = runge_kutta_of(choice.method).value();  // the others returned above
   const double tol_or_step = rk == RkMethod::rk4 ? choice.step_s : s.tolerance;
   RungeKutta integrator(s.model, rk, tol_or_step, momentum_scale(s));
   // A brake acts until its spin stops, then no more: the run is split there, and continues
