@@ -377,16 +377,8 @@ void RungeKutta::advance_adaptive(State7& y, double t0, double t1, const Output&
       k0_valid = true;
     }
     const double e = rk_step<T>(model_, y, h, k, y_new, inverse_scale_, cost_) / tol;
-    // Between half the tolerance and the tolerance the step is kept as it is (the formula's
-    // factor would be 0.9 to 1.03 there): no pow() for most steps, which cost 15% of a
-    // Dormand-Prince step (measured), and no dithering of h. Boost.Odeint's controller does the same.
-    constexpr double kKeepBelow = 0.5;
-    const double factor = e >= kKeepBelow && e <= 1.0
-                              ? 1.0
-                              : std::clamp(0.9 * std::pow(std::max(e, 1e-300), -expo), 0.2, 5.0);
-    if (!std::isfinite(e)) {
-      h_ = 0.2 * h;
-    } else if (e <= 1.0) {
+    const double factor = controller_.next_factor(e, h, expo, last);
+    if (e <= 1.0) {
       const double t_new = last ? t1 : t_now + h;
       output(t_now, t_new, y, y_new, k);  // before y_new is renormalised: the stages saw it so
       y = y_new;

@@ -21,6 +21,7 @@
 #include <string>
 
 #include "core/rigid_body.hpp"
+#include "core/step_controller.hpp"
 
 namespace wobble {
 
@@ -74,6 +75,7 @@ class RungeKutta {
 
   State7 inverse_scale_;
   double h_ = 0.0;  ///< next trial step (adaptive), 0 until the first call
+  StepController controller_;
   IntegrationCost cost_;
   std::int64_t limit_ = INT64_MAX;
   // First same as last (Dormand-Prince): f at the end of the last accepted step.
