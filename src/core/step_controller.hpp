@@ -14,7 +14,8 @@
 //   h_new = 0.9 h (h / h_last) (e_last / e^2)^exponent,
 // shrinking the step while the error grows and growing it faster while it falls. Measured on
 // the bench's free body near the separatrix (P3, Verner 9(8), errors 1e-8 to 1e-10): 21% fewer
-// evaluations at equal error, rejections 7% -> 4% of the steps; within 2% elsewhere.
+// evaluations at equal error, 5 rejected steps instead of 13 at tolerance 1e-9; the other bench
+// problems within 2%.
 namespace wobble {
 
 class StepController {
@@ -25,9 +26,9 @@ class StepController {
   double next_factor(double e, double h, double exponent, bool landing);
 
  private:
-  double h_last_ = 0.0;     ///< the last accepted, unshortened step; 0 before the first
-  double e_last_ = 1.0;     ///< its error
-  bool rejected_ = false;   ///< whether the step before this one was rejected
+  double h_last_ = 0.0;    ///< the last accepted, unshortened step; 0 before the first
+  double e_last_ = 1.0;    ///< its error
+  bool rejected_ = false;  ///< whether the step before this one was rejected
 };
 
 }  // namespace wobble

@@ -64,8 +64,9 @@ TEST_CASE("a step shortened to land on the end of a run is not remembered") {
 }
 
 TEST_CASE("near the separatrix the prediction saves the rejections before each flip") {
-  // The bench's P3: a free body near the separatrix flips every ~70 s; the classical rule took
-  // 13 rejected steps of Verner 9(8)'s 132 at tolerance 1e-9 (4 before each flip, measured).
+  // The bench's P3: a free body near the separatrix flips every ~70 s; the classical rule had
+  // 13 of Verner 9(8)'s 132 tries rejected at tolerance 1e-9, four or so before each of the
+  // three flips (measured).
   RigidBodyModel model;
   model.I_P = Vec3(1.0, 2.0, 3.0);
   const Vec3 m0(1e-4, 1.0, 1e-4);

@@ -13,6 +13,7 @@
 #include "problem/scene.hpp"
 #include "problem/values.hpp"
 #include "simulate/cross_check.hpp"
+#include "simulate/invariants.hpp"
 #include "simulate/simulation.hpp"
 #include "simulate/scene_helpers.hpp"
 #include "solvers/solve.hpp"
@@ -101,15 +102,15 @@ TEST_CASE("the heavy-top scene's exact solution and Fehlberg 7(8) at 1e-13 agree
   const SimulationResult rk = run(tight, "rkf78");
   REQUIRE(exact.rows.size() == rk.rows.size());
   REQUIRE_THAT(exact.notes.front(), Catch::Contains("theta nods between"));
-  // Fehlberg 7(8) at 1e-13 per step: each accepted step's error measure bounds its momentum
-  // error by tol |m0| and each quaternion component's by tol, so omega = I^-1 m moves by up to
-  // sqrt(3) tol |m0| / I_min and a unit vector turned by q by up to 4 tol (|d(q v q*)| <=
-  // 2 |dq|, |dq| <= 2 tol). The errors add along the run (no contraction); the exact solution
-  // is far closer.
+  // Fehlberg 7(8) at 1e-13 per step: each accepted step's error measure bounds each momentum
+  // component's error by tol times the run's momentum scale and each quaternion component's by
+  // tol, so omega = I^-1 m moves by up to sqrt(3) tol scale / I_min and a unit vector turned by
+  // q by up to 4 tol (|d(q v q*)| <= 2 |dq|, |dq| <= 2 tol). The errors add along the run (no
+  // contraction); the exact solution is far closer.
   REQUIRE(rk.steps > 0);
   const double steps = static_cast<double>(rk.steps);
   const double kOmegaBound =
-      steps * std::sqrt(3.0) * tight.tolerance * s.m0_P.norm() / s.moments.minCoeff();
+      steps * std::sqrt(3.0) * tight.tolerance * momentum_scale(s) / s.moments.minCoeff();
   const double kVectorBound = steps * 4 * tight.tolerance;
   for (std::size_t k = 0; k < exact.rows.size(); ++k) {
     for (std::size_t j = 1; j < exact.columns.size(); ++j) {
