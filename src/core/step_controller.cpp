@@ -29,15 +29,14 @@ double StepController::next_factor(double e, double h, double exponent, bool lan
   }
   const bool accepted = e <= 1.0;
   const bool predictive = accepted && h_last_ > 0.0;
-  double factor = 1.0;
-  if (e >= kKeepBelow && accepted && (!predictive || e <= kSteadyGrowth * e_last_)) {
-    factor = 1.0;
-  } else if (predictive) {
-    factor = kSafety * (h / h_last_) * std::pow(e_last_ / (e * e), exponent);
-  } else {
-    factor = kSafety * std::pow(std::max(e, 1e-300), -exponent);
+  const bool steady =
+      accepted && e >= kKeepBelow && (!predictive || e <= kSteadyGrowth * e_last_);
+  double factor = 1.0;  // the steady band keeps the step
+  if (!steady) {
+    factor = predictive ? kSafety * (h / h_last_) * std::pow(e_last_ / (e * e), exponent)
+                        : kSafety * std::pow(std::max(e, 1e-300), -exponent);
+    factor = std::clamp(factor, kMinFactor, kMaxFactor);
   }
-  factor = std::clamp(factor, kMinFactor, kMaxFactor);
   if (!accepted) {
     rejected_ = true;
     return factor;
