@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The other libraries' integrators, on wobble's right-hand side (RigidBodyModel::rhs, the
+/// The other libraries' integrators, on wobble's right-hand side (RigidBodyRhs, prepared once, the
 /// state y = (m_P, q_PtoS)) and the bench's tolerances, for the work-precision tables:
 /// - GSL's gsl_odeiv2 driver with rk8pd (Prince-Dormand 8(7)) and rkf45 (Fehlberg 4(5)),
 ///   error control eps_abs = eps_rel = tol (GSL's "y" scaling);

@@ -48,8 +48,13 @@ double RigidBodyModel::potential(const Quat& q_PtoS) const {
 }
 
 State7 RigidBodyModel::rhs(const State7& y) const {
+  return RigidBodyRhs(*this)(y);
+}
+
+State7 RigidBodyRhs::operator()(const State7& y) const {
+  const Vec3& I_P = model_.I_P;
   const Vec3 m = y.head<3>();
-  const Vec3 w = omega_P(m);
+  const Vec3 w = m.cwiseProduct(inverse_I_P_);
   // m x w in Euler's form, (m x w)_1 = (I2 - I3) w2 w3 and cyclically: exactly zero along the
   // axis of a symmetric body (I1 == I2), where m1 w2 - m2 w1 rounds to ~eps m w (a braked wheel
   // released with no spin about its axis drifted 1e-18 rad/s per second), and no cancellation.
@@ -57,7 +62,7 @@ State7 RigidBodyModel::rhs(const State7& y) const {
           (I_P[0] - I_P[1]) * w[0] * w[1]);
   const double qw = y[3], qx = y[4], qy = y[5], qz = y[6];
   // The rotation of q / |q|, whatever the stage's |q|.
-  if (!torque_free()) dm += torque_of(*this, qw, Vec3(qx, qy, qz));
+  if (!model_.torque_free()) dm += torque_of(model_, qw, Vec3(qx, qy, qz));
   State7 dy;
   dy.head<3>() = dm;
   // q (0, w) / 2, written out (Hamilton product).

@@ -67,23 +67,23 @@ template <class T, Coefficients W, std::size_t R, class Vectors, std::size_t... 
 
 // The stages 1 .. S-1; of a first-same-as-last pair the last is f(y_new), left to rk_step.
 template <class T, std::size_t I>
-void stage(const RigidBodyModel& model, const State7& y, double h, Stages<T>& k) {
+void stage(const RigidBodyRhs& f, const State7& y, double h, Stages<T>& k) {
   if constexpr (I < (T::kFsal ? T::S - 1 : T::S)) {
-    k[I] = model.rhs(y + h * combine<T, Coefficients::a, I>(k, std::make_index_sequence<I>{}));
-    stage<T, I + 1>(model, y, h, k);
+    k[I] = f(y + h * combine<T, Coefficients::a, I>(k, std::make_index_sequence<I>{}));
+    stage<T, I + 1>(f, y, h, k);
   }
 }
 
 // One step of size h. k[0] must hold f(y) already (FSAL, or computed by the caller). Returns
 // the error measure max_i |err_i| * inverse_scale_i (0 for a pair without an estimate).
 template <class T>
-double rk_step(const RigidBodyModel& model, const State7& y, double h, Stages<T>& k, State7& y_new,
+double rk_step(const RigidBodyRhs& f, const State7& y, double h, Stages<T>& k, State7& y_new,
                const State7& inverse_scale, IntegrationCost& cost) {
-  stage<T, 1>(model, y, h, k);
+  stage<T, 1>(f, y, h, k);
   cost.rhs_evals += static_cast<std::int64_t>(T::S - 1);
   y_new = y + h * combine<T, Coefficients::b, 0>(k, std::make_index_sequence<T::S>{});
   // First same as last: the last stage's argument is y_new itself (its A row is B), formed once.
-  if constexpr (T::kFsal) k[T::S - 1] = model.rhs(y_new);
+  if constexpr (T::kFsal) k[T::S - 1] = f(y_new);
   const auto measure = [&](const State7& err) {
     return std::abs(h) * err.cwiseAbs().cwiseProduct(inverse_scale).maxCoeff();
   };
@@ -130,7 +130,7 @@ double keep_near_unit(State7& y) {
 }
 
 template <class T>
-void advance_fixed(const RigidBodyModel& model, State7& y, double span, double h_max,
+void advance_fixed(const RigidBodyRhs& f, State7& y, double span, double h_max,
                    IntegrationCost& cost, std::int64_t limit) {
   const auto n =
       std::max<std::int64_t>(static_cast<std::int64_t>(std::ceil(span / h_max * (1 - kStepCountSlack))), 1);
@@ -139,9 +139,9 @@ void advance_fixed(const RigidBodyModel& model, State7& y, double span, double h
   State7 y_new;
   const State7 no_scale = State7::Zero();
   for (std::int64_t i = 0; i < n; ++i) {
-    k[0] = model.rhs(y);
+    k[0] = f(y);
     ++cost.rhs_evals;
-    rk_step<T>(model, y, h, k, y_new, no_scale, cost);
+    rk_step<T>(f, y, h, k, y_new, no_scale, cost);
     y = y_new;
     keep_near_unit(y);
     ++cost.steps;
@@ -182,7 +182,7 @@ std::array<State7, 3> hermite(const State7& y_old, const State7& y_new, double h
 // its x^4 coefficient, h sum_j P[j][3] k_j (it matches y and y' at both ends: the tableau test
 // checks P for it): one weighted sum per step that holds a sample, not four.
 template <class T>
-StepInterpolant interpolant(const RigidBodyModel&, const State7& y_old, const State7& y_new,
+StepInterpolant interpolant(const RigidBodyRhs&, const State7& y_old, const State7& y_new,
                             double h, const Stages<T>& k, IntegrationCost&)
   requires std::is_same_v<T, Dopri5>
 {
@@ -194,17 +194,17 @@ StepInterpolant interpolant(const RigidBodyModel&, const State7& y_old, const St
 
 // DOP853: three more stages, then y_new - y_old, its two end slopes and four from D.
 template <class T>
-StepInterpolant interpolant(const RigidBodyModel& model, const State7& y_old, const State7& y_new,
+StepInterpolant interpolant(const RigidBodyRhs& f, const State7& y_old, const State7& y_new,
                             double h, const Stages<T>& k, IntegrationCost& cost)
   requires std::is_same_v<T, Dop853>
 {
   std::array<State7, T::kExtended> K;
   std::copy(k.begin(), k.end(), K.begin());
-  K[T::S] = model.rhs(y_old + h * combine<T, Coefficients::dense_extra, 0>(
+  K[T::S] = f(y_old + h * combine<T, Coefficients::dense_extra, 0>(
                                       K, std::make_index_sequence<T::S>{}));
-  K[T::S + 1] = model.rhs(y_old + h * combine<T, Coefficients::dense_extra, 1>(
+  K[T::S + 1] = f(y_old + h * combine<T, Coefficients::dense_extra, 1>(
                                           K, std::make_index_sequence<T::S + 1>{}));
-  K[T::S + 2] = model.rhs(y_old + h * combine<T, Coefficients::dense_extra, 2>(
+  K[T::S + 2] = f(y_old + h * combine<T, Coefficients::dense_extra, 2>(
                                           K, std::make_index_sequence<T::S + 2>{}));
   cost.rhs_evals += static_cast<std::int64_t>(T::kExtraA.size());
   const auto [dy, c1, c2] = hermite(y_old, y_new, h, k[0], k[T::S - 1]);
@@ -251,7 +251,7 @@ std::string name_of(RkMethod m) {
 
 RungeKutta::RungeKutta(const RigidBodyModel& model, RkMethod method, double tol_or_step,
                        double momentum_scale, bool fixed_step)
-    : model_(model),
+    : rhs_(model),
       method_(method),
       tol_or_step_(tol_or_step),
       fixed_(fixed_step || method == RkMethod::rk4) {
@@ -269,19 +269,19 @@ void RungeKutta::advance(State7& y, double t0, double t1) {
   if (fixed_) {
     switch (method_) {
       case RkMethod::rk4:
-        advance_fixed<Rk4>(model_, y, span, tol_or_step_, cost_, limit_);
+        advance_fixed<Rk4>(rhs_, y, span, tol_or_step_, cost_, limit_);
         return;
       case RkMethod::dopri5:
-        advance_fixed<Dopri5>(model_, y, span, tol_or_step_, cost_, limit_);
+        advance_fixed<Dopri5>(rhs_, y, span, tol_or_step_, cost_, limit_);
         return;
       case RkMethod::rkf78:
-        advance_fixed<Rkf78>(model_, y, span, tol_or_step_, cost_, limit_);
+        advance_fixed<Rkf78>(rhs_, y, span, tol_or_step_, cost_, limit_);
         return;
       case RkMethod::dop853:
-        advance_fixed<Dop853>(model_, y, span, tol_or_step_, cost_, limit_);
+        advance_fixed<Dop853>(rhs_, y, span, tol_or_step_, cost_, limit_);
         return;
       case RkMethod::vern9:
-        advance_fixed<Vern9>(model_, y, span, tol_or_step_, cost_, limit_);
+        advance_fixed<Vern9>(rhs_, y, span, tol_or_step_, cost_, limit_);
         return;
     }
   }
@@ -338,7 +338,7 @@ void RungeKutta::sample_dense(State7& y, double t0, std::span<const double> time
       if (times[next] == t_new) {
         s = y_new;
       } else {
-        if (!p) p = interpolant<T>(model_, y_old, y_new, t_new - t_old, k, cost_);
+        if (!p) p = interpolant<T>(rhs_, y_old, y_new, t_new - t_old, k, cost_);
         s = p->at((times[next] - t_old) / (t_new - t_old));
       }
       renormalise(s);
@@ -354,7 +354,7 @@ void RungeKutta::advance_adaptive(State7& y, double t0, double t1, const Output&
   constexpr double expo = 1.0 / (T::kErrorOrder + 1);
   if (h_ == 0.0) {
     // First trial step: a small fraction of the time the body needs to turn by one radian.
-    const double rate = model_.omega_P(y.head<3>()).norm();
+    const double rate = rhs_.model().omega_P(y.head<3>()).norm();
     h_ = std::min(span, 0.05 * std::pow(tol, expo) / std::max(rate, 1e-300) + 1e-300);
   }
   Stages<T> k;
@@ -372,11 +372,11 @@ void RungeKutta::advance_adaptive(State7& y, double t0, double t1, const Output&
     // 3-5e-11 after).
     const double h = last ? t1 - t_now : (t_now + h_) - t_now;
     if (!k0_valid) {  // f(y) once per accepted state, however many tries the step takes
-      k[0] = model_.rhs(y);
+      k[0] = rhs_(y);
       ++cost_.rhs_evals;
       k0_valid = true;
     }
-    const double e = rk_step<T>(model_, y, h, k, y_new, inverse_scale_, cost_) / tol;
+    const double e = rk_step<T>(rhs_, y, h, k, y_new, inverse_scale_, cost_) / tol;
     const double factor = controller_.next_factor(e, h, expo, last);
     if (e <= 1.0) {
       const double t_new = last ? t1 : t_now + h;

@@ -61,7 +61,7 @@ class RungeKutta {
   void set_evaluation_limit(std::int64_t evaluations) { limit_ = cost_.rhs_evals + evaluations; }
 
  private:
-  const RigidBodyModel& model_;
+  RigidBodyRhs rhs_;  ///< the model's right-hand side, prepared
   RkMethod method_;
   double tol_or_step_;
   bool fixed_;

@@ -367,6 +367,38 @@ TEST_CASE("the torques rotate by q / |q|: a stage's quaternion off unit length c
   }
 }
 
+TEST_CASE("the prepared right-hand side is the model's equations, and keeps its own copy") {
+  RigidBodyModel m;
+  m.I_P = Vec3(0.7, 1.9, 3.1);
+  m.gravity = true;
+  m.mass_kg = 1.3;
+  m.d_P_m = Vec3(0.1, -0.05, 0.2);
+  const Vec3 m_P(0.4, -1.2, 2.5);
+  const Quat q = Quat(Eigen::AngleAxisd(0.8, Vec3(1, 2, -1).normalized()));
+  // The equations as the header states them, with w = m / I (divisions) and m x w as a cross
+  // product: an evaluation independent of the prepared one's reciprocals and Euler's form.
+  const Vec3 w = m_P.cwiseQuotient(m.I_P);
+  const Vec3 tau = m.d_P_m.cross(q.conjugate() * (m.mass_kg * m.g_S));
+  const Vec3 dm = m_P.cross(w) + tau;
+  const Quat dq = q * Quat(0, w.x(), w.y(), w.z());
+  const State7 expected = pack(dm, Quat(0.5 * dq.w(), 0.5 * dq.x(), 0.5 * dq.y(), 0.5 * dq.z()));
+  // Each component: a few roundings of terms of size |m| |w| or |d| M |g|.
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double bound =
+      16 * eps * (m_P.norm() * w.norm() + m.d_P_m.norm() * m.mass_kg * m.g_S.norm());
+  const RigidBodyRhs f(m);
+  const State7 y = pack(m_P, q);
+  REQUIRE((f(y) - expected).cwiseAbs().maxCoeff() <= bound);
+  // rhs() evaluates through the prepared form: the same values, bit for bit.
+  REQUIRE(m.rhs(y) == f(y));
+  // A copy: changing the model afterwards leaves the prepared right-hand side as it was.
+  const State7 before = f(y);
+  m.I_P = Vec3(5, 5, 5);
+  m.gravity = false;
+  REQUIRE(f(y) == before);
+  REQUIRE(m.rhs(y) != before);
+}
+
 TEST_CASE("a constant torque in space adds tau t to L in space, exactly") {
   RigidBodyModel m;
   m.I_P = Vec3(1, 2, 3);
