@@ -12,6 +12,7 @@
 
 #include "symbolic/canonical_print.hpp"
 #include "symbolic/expression_guard.hpp"
+#include "symbolic/factored.hpp"
 
 namespace wobble::sym {
 
@@ -503,7 +504,7 @@ GiNaC::ex simplified_sqrt(const GiNaC::ex& e) {
     }
   };
   for (const int sign : {1, -1}) {
-    const GiNaC::ex f = GiNaC::factor(nd.op(sign > 0 ? 0 : 1));
+    const GiNaC::ex f = factored(nd.op(sign > 0 ? 0 : 1));
     if (GiNaC::is_a<GiNaC::mul>(f)) {
       for (std::size_t i = 0; i < f.nops(); ++i) take(f.op(i), sign);
     } else {
@@ -590,7 +591,7 @@ GiNaC::ex expand_factors(const GiNaC::ex& f) {
 GiNaC::ex tidy(const GiNaC::ex& e) {
   GiNaC::ex n = GiNaC::normal(e);
   GiNaC::ex nd = GiNaC::numer_denom(n);
-  return expand_factors(GiNaC::factor(nd.op(0))) / expand_factors(GiNaC::factor(nd.op(1)));
+  return expand_factors(factored(nd.op(0))) / expand_factors(factored(nd.op(1)));
 }
 
 }  // namespace wobble::sym

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "symbolic/expression.hpp"
+#include "symbolic/factored.hpp"
 
 namespace wobble::sym {
 
@@ -105,12 +106,12 @@ SymPrincipal principal_closed_form(const GiNaC::matrix& I, const GiNaC::symbol& 
     const ex quadratic = GiNaC::pow(lambda, 2) - simplify(I(p, p) + I(q, q)) * lambda +
                          simplify(I(p, p) * I(q, q) - I(p, q) * I(p, q));
     // Keep the quadratic's linear factors where it splits over the rationals (four-masses).
-    const ex split = GiNaC::factor(GiNaC::expand(quadratic));
+    const ex split = factored(GiNaC::expand(quadratic));
     const bool splits = GiNaC::is_a<GiNaC::mul>(split) || GiNaC::is_a<GiNaC::power>(split);
     out.characteristic = (lambda - I(k, k)) * (splits ? split : quadratic);
   } else {
     const ex poly = GiNaC::expand(shifted.determinant());
-    out.characteristic = GiNaC::factor(poly);
+    out.characteristic = factored(poly);
     if (!GiNaC::is_a<GiNaC::mul>(out.characteristic) &&
         !GiNaC::is_a<GiNaC::power>(out.characteristic)) {
       // No factors: write it as a polynomial in lambda with simplified coefficients.

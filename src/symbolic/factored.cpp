@@ -1,0 +1,129 @@
+#include "symbolic/factored.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <vector>
+
+namespace wobble::sym {
+
+namespace {
+using GiNaC::ex;
+
+// Two sets of values for the symbols held fixed in an image: distinct primes, so that no
+// coincidence of small values (a - b = 0, a = 1) makes an image degenerate.
+constexpr std::array<std::array<int, 12>, 2> kValues{{
+    {3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41},
+    {43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97},
+}};
+
+// Held as ex: a copy as GiNaC::symbol would slice a possymbol or realsymbol into a symbol of
+// another class, which no longer matches it in degree(), coeff() or subs().
+using Symbols = std::vector<ex>;
+
+Symbols symbols_of(const ex& p) {
+  Symbols out;
+  for (auto it = p.preorder_begin(); it != p.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it) &&
+        std::none_of(out.begin(), out.end(), [&](const ex& o) { return o.is_equal(*it); })) {
+      out.push_back(*it);
+    }
+  }
+  // By name, so that the symbols take the same values in every run (GiNaC's own order follows
+  // hash values that change from run to run).
+  const auto name = [](const ex& s) { return GiNaC::ex_to<GiNaC::symbol>(s).get_name(); };
+  std::sort(out.begin(), out.end(), [&](const ex& a, const ex& b) {
+    return name(a) < name(b) || (name(a) == name(b) && a.compare(b) < 0);
+  });
+  return out;
+}
+
+// q with every symbol but `keep` given the value of set `set`.
+ex image(const ex& q, const Symbols& symbols, const ex& keep,
+         std::size_t set) {
+  GiNaC::exmap values;
+  for (std::size_t i = 0; i < symbols.size(); ++i) {
+    if (!symbols[i].is_equal(keep)) values[symbols[i]] = kValues[set][i];
+  }
+  return GiNaC::expand(q.subs(values));
+}
+
+bool is_monomial(const ex& c) {
+  return !GiNaC::is_a<GiNaC::add>(GiNaC::expand(c));
+}
+
+// gcd(a, b) shown to be a number: in each symbol y of a, the images of a and b (all else fixed)
+// have a constant gcd, and a's image keeps its degree in y (so a common factor involving y,
+// whose leading coefficient divides a's, would keep a degree >= 1 in both images).
+bool coprime(const ex& a, const ex& b, const Symbols& symbols) {
+  for (const auto& y : symbols) {
+    const int d = a.degree(y);
+    if (d == 0) continue;
+    bool shown = false;
+    for (std::size_t set = 0; set < kValues.size() && !shown; ++set) {
+      const ex a_y = image(a, symbols, y, set), b_y = image(b, symbols, y, set);
+      shown = a_y.degree(y) == d && GiNaC::gcd(a_y, b_y).degree(y) == 0;
+    }
+    if (!shown) return false;
+  }
+  return true;
+}
+
+// The gcd of p's coefficients in x shown to be a number (p has no symbol as a factor).
+bool primitive_in(const ex& p, const ex& x, const Symbols& symbols) {
+  std::vector<ex> coefficients;
+  for (int k = 0; k <= p.degree(x); ++k) {
+    const ex c = p.coeff(x, k);
+    if (c.is_zero()) continue;
+    // A number, or a monomial, none of whose symbols divides p: the gcd divides it, so is a
+    // product of its symbols, and each of those divides p.
+    if (is_monomial(c)) return true;
+    coefficients.push_back(c);
+  }
+  if (coefficients.size() < 2) return false;
+  const auto terms = [](const ex& c) { return GiNaC::is_a<GiNaC::add>(c) ? c.nops() : 1; };
+  std::sort(coefficients.begin(), coefficients.end(),
+            [&](const ex& a, const ex& b) { return terms(a) < terms(b); });
+  return coprime(coefficients[0], coefficients[1], symbols);
+}
+
+// A univariate polynomial over Q irreducible (GiNaC moves a numeric content into the sum).
+bool irreducible_univariate(const ex& q) {
+  return GiNaC::is_a<GiNaC::add>(GiNaC::factor(q));
+}
+}  // namespace
+
+bool shown_irreducible(const ex& p) {
+  if (!GiNaC::is_a<GiNaC::add>(p) || !p.info(GiNaC::info_flags::rational_polynomial)) return false;
+  if (!p.is_equal(GiNaC::expand(p))) return false;
+  const Symbols symbols = symbols_of(p);
+  if (symbols.empty() || symbols.size() > kValues[0].size()) return false;
+  for (const auto& v : symbols) {
+    if (p.ldegree(v) > 0) return false;  // v divides p: p = v q, q not constant
+  }
+  for (const auto& x : symbols) {
+    const int d = p.degree(x);
+    if (d == 0 || !primitive_in(p, x, symbols)) continue;
+    if (d == 1) return true;
+    for (std::size_t set = 0; set < kValues.size(); ++set) {
+      const ex p_x = image(p, symbols, x, set);
+      if (p_x.degree(x) == d && irreducible_univariate(p_x)) return true;
+    }
+  }
+  return false;
+}
+
+ex factored(const ex& p) {
+  // Solving one problem factors the same polynomial again and again (the same sums of moments
+  // in several answers): 9 ms of a keys check. One table per thread (GiNaC is not thread-safe;
+  // the server solves one request at a time), emptied when full, so it stays small.
+  thread_local std::map<ex, ex, GiNaC::ex_is_less> known;
+  constexpr std::size_t kMaxKnown = 1024;
+  if (const auto it = known.find(p); it != known.end()) return it->second;
+  ex result = shown_irreducible(p) ? p : GiNaC::factor(p);
+  if (known.size() >= kMaxKnown) known.clear();
+  known.emplace(p, result);
+  return result;
+}
+
+}  // namespace wobble::sym

@@ -1,0 +1,103 @@
+// Factoring with a proof of irreducibility first: never claims a product irreducible, and gives
+// the factors GiNaC's factor() gives.
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <vector>
+
+#include "symbolic/factored.hpp"
+
+using namespace wobble::sym;
+using GiNaC::ex;
+
+namespace {
+// The symbols as wobble declares them (positive and real): a copy as a plain symbol would no
+// longer match them, which once made every proof fail silently.
+const GiNaC::possymbol M("M"), m1("m1"), m2("m2"), d1("d1"), d2("d2");
+const GiNaC::realsymbol c("c"), s("s");
+const GiNaC::lst kSymbols{M, m1, m2, d1, d2, c, s};
+
+// A polynomial in the first `n` symbols with `terms` terms: small integer coefficients (zero
+// excluded) and exponents 0-2, from a seeded generator.
+ex random_polynomial(std::mt19937& rng, std::size_t n, int terms) {
+  std::uniform_int_distribution<int> coefficient(-5, 5), exponent(0, 2);
+  ex p = 0;
+  while (p.is_zero()) {
+    for (int t = 0; t < terms; ++t) {
+      int k = 0;
+      while (k == 0) k = coefficient(rng);
+      ex term = k;
+      for (std::size_t i = 0; i < n; ++i) term *= GiNaC::pow(kSymbols.op(i), exponent(rng));
+      p += term;
+    }
+    p = GiNaC::expand(p);
+  }
+  return p;
+}
+
+bool is_constant(const ex& p) {
+  return GiNaC::is_a<GiNaC::numeric>(p);
+}
+
+bool same_polynomial(const ex& a, const ex& b) {
+  return GiNaC::expand(a - b).is_zero();
+}
+}  // namespace
+
+TEST_CASE("the three-atom molecule's discriminant (seven symbols) is shown irreducible") {
+  // (I_xx - I_yy)^2 / 4 + I_xy^2 about the centre of mass, numerator; c, s stand for cos, sin.
+  const ex p(
+      "6*d1^2*d2^2*m1^2*m2^2-4*c*d1*d2^3*m1^2*m2^2+2*M*d2^4*m1*m2^2+2*d1^4*M*m1^2*m2"
+      "+d1^4*m1^2*m2^2+2*d1^2*M*d2^2*m1^2*m2-4*c*d1*M*d2^3*m1*m2^2+2*d1^2*M^2*d2^2*m1*m2"
+      "-4*c*d1^3*M*d2*m1^2*m2-4*d1^2*M*s^2*d2^2*m1^2*m2+d1^4*M^2*m1^2+M^2*d2^4*m2^2"
+      "-4*d1^2*M^2*s^2*d2^2*m1*m2-4*c*d1^3*d2*m1^2*m2^2+2*d1^2*M*d2^2*m1*m2^2+d2^4*m1^2*m2^2"
+      "-4*d1^2*s^2*d2^2*m1^2*m2^2-4*d1^2*M*s^2*d2^2*m1*m2^2",
+      kSymbols);
+  REQUIRE(shown_irreducible(p));
+  REQUIRE(factored(p).is_equal(p));
+  REQUIRE(GiNaC::is_a<GiNaC::add>(GiNaC::factor(p)));  // factor() finds no factors either
+}
+
+TEST_CASE("a product, a square or a symbol times a sum is never shown irreducible") {
+  std::mt19937 rng(20261124);
+  int products = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::size_t n = 2 + static_cast<std::size_t>(trial % 5);
+    const ex f = random_polynomial(rng, n, 2 + trial % 3);
+    const ex g = random_polynomial(rng, n, 1 + trial % 4);
+    if (is_constant(f) || is_constant(g)) continue;
+    ++products;
+    for (const ex& p : {GiNaC::expand(f * g), GiNaC::expand(f * f), GiNaC::expand(M * f)}) {
+      INFO("p = " << p);
+      REQUIRE_FALSE(shown_irreducible(p));
+      const ex factors = factored(p);
+      REQUIRE_FALSE(GiNaC::is_a<GiNaC::add>(factors));  // factor()'s product
+      REQUIRE(same_polynomial(factors, p));
+    }
+  }
+  REQUIRE(products > 150);
+}
+
+TEST_CASE("irreducible polynomials are shown so, and come back expanded") {
+  std::mt19937 rng(7);
+  int irreducible = 0, shown = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const ex p = random_polynomial(rng, 2 + static_cast<std::size_t>(trial % 6), 3 + trial % 4);
+    const ex f = GiNaC::factor(p);
+    if (!GiNaC::is_a<GiNaC::add>(f)) continue;  // reducible (or a monomial): not this case
+    ++irreducible;
+    INFO("p = " << p);
+    if (shown_irreducible(p)) {
+      ++shown;
+      // p itself, where factor() may return it partly collected (4*M + 4*m1^2*(1+M) - ...).
+      REQUIRE(factored(p).is_equal(p));
+    }
+    REQUIRE(same_polynomial(factored(p), f));
+  }
+  // Measured with these seeds: 143 irreducible, all 143 shown. A proof that never succeeded
+  // would pass every other check here and save nothing; nine in ten leaves room for an image
+  // that happens to factor.
+  INFO("irreducible " << irreducible << ", shown " << shown);
+  REQUIRE(irreducible > 100);
+  REQUIRE(shown >= irreducible * 9 / 10);
+}
