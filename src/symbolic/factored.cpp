@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace wobble::sym {
@@ -39,8 +40,7 @@ Symbols symbols_of(const ex& p) {
 }
 
 // q with every symbol but `keep` given the value of set `set`.
-ex image(const ex& q, const Symbols& symbols, const ex& keep,
-         std::size_t set) {
+ex image(const ex& q, const Symbols& symbols, const ex& keep, std::size_t set) {
   GiNaC::exmap values;
   for (std::size_t i = 0; i < symbols.size(); ++i) {
     if (!symbols[i].is_equal(keep)) values[symbols[i]] = kValues[set][i];
@@ -48,8 +48,8 @@ ex image(const ex& q, const Symbols& symbols, const ex& keep,
   return GiNaC::expand(q.subs(values));
 }
 
-bool is_monomial(const ex& c) {
-  return !GiNaC::is_a<GiNaC::add>(GiNaC::expand(c));
+bool is_monomial(const ex& c) {  // c expanded (a coefficient of an expanded polynomial)
+  return !GiNaC::is_a<GiNaC::add>(c);
 }
 
 // gcd(a, b) shown to be a number: in each symbol y of a, the images of a and b (all else fixed)
@@ -87,6 +87,12 @@ bool primitive_in(const ex& p, const ex& x, const Symbols& symbols) {
   return coprime(coefficients[0], coefficients[1], symbols);
 }
 
+// An expanded polynomial with rational coefficients in symbols, of two or more terms.
+bool is_polynomial_sum(const ex& p) {
+  return GiNaC::is_a<GiNaC::add>(p) && p.info(GiNaC::info_flags::rational_polynomial) &&
+         p.is_equal(GiNaC::expand(p));
+}
+
 // A univariate polynomial over Q irreducible (GiNaC moves a numeric content into the sum).
 bool irreducible_univariate(const ex& q) {
   return GiNaC::is_a<GiNaC::add>(GiNaC::factor(q));
@@ -94,8 +100,7 @@ bool irreducible_univariate(const ex& q) {
 }  // namespace
 
 bool shown_irreducible(const ex& p) {
-  if (!GiNaC::is_a<GiNaC::add>(p) || !p.info(GiNaC::info_flags::rational_polynomial)) return false;
-  if (!p.is_equal(GiNaC::expand(p))) return false;
+  if (!is_polynomial_sum(p)) return false;
   const Symbols symbols = symbols_of(p);
   if (symbols.empty() || symbols.size() > kValues[0].size()) return false;
   for (const auto& v : symbols) {
@@ -113,6 +118,33 @@ bool shown_irreducible(const ex& p) {
   return false;
 }
 
+namespace {
+// p = content * q: the content a number times a monomial (each symbol to its lowest power in p),
+// negative when every term of p is, so that q has a positive term (as factor() writes it).
+std::pair<ex, ex> split_content(const ex& p) {
+  const Symbols symbols = symbols_of(p);
+  GiNaC::exmap ones;
+  ex monomial = 1;
+  for (const auto& v : symbols) {
+    ones[v] = 1;
+    monomial *= GiNaC::pow(v, p.ldegree(v));
+  }
+  bool all_negative = true;
+  for (std::size_t i = 0; i < p.nops() && all_negative; ++i) {
+    all_negative = GiNaC::ex_to<GiNaC::numeric>(p.op(i).subs(ones)).is_negative();
+  }
+  const ex content = (all_negative ? -1 : 1) * p.integer_content() * monomial;
+  return {content, GiNaC::expand(p / content)};
+}
+
+ex factored_once(const ex& p) {
+  if (!is_polynomial_sum(p)) return GiNaC::factor(p);
+  const auto [content, q] = split_content(p);
+  // content * q is what factor() gives when q is irreducible (for content 1, p itself).
+  return shown_irreducible(q) ? content * q : GiNaC::factor(p);
+}
+}  // namespace
+
 ex factored(const ex& p) {
   // Solving one problem factors the same polynomial again and again (the same sums of moments
   // in several answers): 9 ms of a keys check. One table per thread (GiNaC is not thread-safe;
@@ -120,7 +152,7 @@ ex factored(const ex& p) {
   thread_local std::map<ex, ex, GiNaC::ex_is_less> known;
   constexpr std::size_t kMaxKnown = 1024;
   if (const auto it = known.find(p); it != known.end()) return it->second;
-  ex result = shown_irreducible(p) ? p : GiNaC::factor(p);
+  ex result = factored_once(p);
   if (known.size() >= kMaxKnown) known.clear();
   known.emplace(p, result);
   return result;

@@ -39,6 +39,15 @@ bool is_constant(const ex& p) {
   return GiNaC::is_a<GiNaC::numeric>(p);
 }
 
+// A product with each factor expanded: factor() may leave a factor partly collected, grouped by
+// GiNaC's run-dependent order.
+ex factors_expanded(const ex& f) {
+  if (!GiNaC::is_a<GiNaC::mul>(f)) return GiNaC::expand(f);
+  ex out = 1;
+  for (std::size_t i = 0; i < f.nops(); ++i) out *= GiNaC::expand(f.op(i));
+  return out;
+}
+
 bool same_polynomial(const ex& a, const ex& b) {
   return GiNaC::expand(a - b).is_zero();
 }
@@ -56,6 +65,27 @@ TEST_CASE("the three-atom molecule's discriminant (seven symbols) is shown irred
   REQUIRE(shown_irreducible(p));
   REQUIRE(factored(p).is_equal(p));
   REQUIRE(GiNaC::is_a<GiNaC::add>(GiNaC::factor(p)));  // factor() finds no factors either
+}
+
+TEST_CASE("a number and a monomial come out first, as factor() writes them") {
+  // The content's sign: negative when every term is, so the sum inside has positive terms.
+  for (const char* text : {"-2*M*m1^2-2*M*m2^2-2*M*d1^2", "3*d1^2*M+12*d2^2*M", "M*m1^2+M*m2^2",
+                           "-14*m1^4*m2^2*M^3-14*d1^4*m2^2*M^3-37*d1^2*m1^2*m2^2*M^3"}) {
+    const ex p(text, kSymbols);
+    INFO("p = " << p);
+    const ex f = factored(p);
+    REQUIRE(GiNaC::is_a<GiNaC::mul>(f));
+    REQUIRE(f.is_equal(factors_expanded(GiNaC::factor(p))));
+    // ... and without factor(): the sum left is shown irreducible.
+    int sums = 0;
+    for (std::size_t i = 0; i < f.nops(); ++i) {
+      if (GiNaC::is_a<GiNaC::add>(f.op(i))) {
+        ++sums;
+        REQUIRE(shown_irreducible(f.op(i)));
+      }
+    }
+    REQUIRE(sums == 1);
+  }
 }
 
 TEST_CASE("a product, a square or a symbol times a sum is never shown irreducible") {
