@@ -80,11 +80,17 @@ bool primitive_in(const ex& p, const ex& x, const Symbols& symbols) {
     if (is_monomial(c)) return true;
     coefficients.push_back(c);
   }
-  if (coefficients.size() < 2) return false;
+  // Any two coprime coefficients will do, the smallest first: two may share a factor the
+  // others lack (14 (b^2 + c^2) and 14 b^2 c^2 (b^2 + c^2) beside 14 b^4 + 37 b^2 c^2 + 14 c^4).
   const auto terms = [](const ex& c) { return GiNaC::is_a<GiNaC::add>(c) ? c.nops() : 1; };
   std::sort(coefficients.begin(), coefficients.end(),
             [&](const ex& a, const ex& b) { return terms(a) < terms(b); });
-  return coprime(coefficients[0], coefficients[1], symbols);
+  for (std::size_t i = 0; i < coefficients.size(); ++i) {
+    for (std::size_t j = i + 1; j < coefficients.size(); ++j) {
+      if (coprime(coefficients[i], coefficients[j], symbols)) return true;
+    }
+  }
+  return false;
 }
 
 // An expanded polynomial with rational coefficients in symbols, of two or more terms.

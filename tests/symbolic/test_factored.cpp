@@ -80,6 +80,18 @@ TEST_CASE("the three-atom molecule's discriminant (seven symbols) is shown irred
   REQUIRE(GiNaC::is_a<GiNaC::add>(GiNaC::factor(p)));  // factor() finds no factors either
 }
 
+TEST_CASE("primitivity is shown by any two coprime coefficients") {
+  // In each symbol, the two smallest coefficients share a factor (in M: 14 (m1^2 + m2^2) and
+  // 14 m1^2 m2^2 (m1^2 + m2^2)); the middle one, 14 m1^4 + 37 m1^2 m2^2 + 14 m2^4, has none
+  // with either. A rectangular solid's key factors one of this form, in a, b, c and M.
+  const ex p(
+      "14*m1^4*m2^2+14*M^4*m1^2+14*M^2*m2^4+14*M^4*m2^2+37*M^2*m1^2*m2^2+14*M^2*m1^4"
+      "+14*m1^2*m2^4",
+      kSymbols);
+  REQUIRE(shown_irreducible(p));
+  REQUIRE(GiNaC::is_a<GiNaC::add>(GiNaC::factor(p)));  // factor() agrees
+}
+
 TEST_CASE("a number and a monomial come out first, as factor() writes them") {
   // The content's sign: negative when every term is, so the sum inside has positive terms.
   for (const char* text : {"-2*M*m1^2-2*M*m2^2-2*M*d1^2", "3*d1^2*M+12*d2^2*M", "M*m1^2+M*m2^2",
