@@ -154,17 +154,20 @@ void advance_fixed(const RigidBodyRhs& f, State7& y, double span, double h_max,
 // stages, so that output times need not end steps. Polynomial in x with vector coefficients c in
 // Hairer's nested form y_old + x (c0 + (1-x) (c1 + x (c2 + (1-x) (c3 + ...)))): c0 = y_new -
 // y_old, c1 and c2 from the end slopes (the cubic Hermite interpolant), the rest from the stages.
+// N coefficients (4 for Dormand-Prince, 7 for DOP853), fixed at compile time so that nothing
+// else is stored or zeroed: a step that holds a sample builds one (for 1e5 samples over a run
+// of Dormand-Prince, building and evaluating them is most of what the samples cost).
+template <std::size_t N>
 struct StepInterpolant {
   State7 y_old;
-  std::array<State7, 7> c;
-  std::size_t n = 0;
+  std::array<State7, N> c;
 
   State7 at(double x) const {
     const double x1 = 1.0 - x;  // the factor of every second level
     State7 y;
     for (int j = 0; j < 7; ++j) {  // written out, as in axpy(), for the same reason
-      double acc = c[n - 1].data()[j] * ((n - 1) % 2 == 0 ? x : x1);
-      for (std::size_t i = n - 1; i-- > 0;) acc = (acc + c[i].data()[j]) * (i % 2 == 0 ? x : x1);
+      double acc = c[N - 1].data()[j] * ((N - 1) % 2 == 0 ? x : x1);
+      for (std::size_t i = N - 1; i-- > 0;) acc = (acc + c[i].data()[j]) * (i % 2 == 0 ? x : x1);
       y.data()[j] = y_old.data()[j] + acc;
     }
     return y;
@@ -182,20 +185,19 @@ std::array<State7, 3> hermite(const State7& y_old, const State7& y_new, double h
 // its x^4 coefficient, h sum_j P[j][3] k_j (it matches y and y' at both ends: the tableau test
 // checks P for it): one weighted sum per step that holds a sample, not four.
 template <class T>
-StepInterpolant interpolant(const RigidBodyRhs&, const State7& y_old, const State7& y_new,
-                            double h, const Stages<T>& k, IntegrationCost&)
+StepInterpolant<4> interpolant(const RigidBodyRhs&, const State7& y_old, const State7& y_new,
+                               double h, const Stages<T>& k, IntegrationCost&)
   requires std::is_same_v<T, Dopri5>
 {
   const auto [dy, c1, c2] = hermite(y_old, y_new, h, k[0], k[T::S - 1]);
   return {y_old,
-          {dy, c1, c2, h * combine<T, Coefficients::dense_p, 3>(k, std::make_index_sequence<T::S>{})},
-          4};
+          {dy, c1, c2, h * combine<T, Coefficients::dense_p, 3>(k, std::make_index_sequence<T::S>{})}};
 }
 
 // DOP853: three more stages, then y_new - y_old, its two end slopes and four from D.
 template <class T>
-StepInterpolant interpolant(const RigidBodyRhs& f, const State7& y_old, const State7& y_new,
-                            double h, const Stages<T>& k, IntegrationCost& cost)
+StepInterpolant<7> interpolant(const RigidBodyRhs& f, const State7& y_old, const State7& y_new,
+                               double h, const Stages<T>& k, IntegrationCost& cost)
   requires std::is_same_v<T, Dop853>
 {
   std::array<State7, T::kExtended> K;
@@ -213,8 +215,7 @@ StepInterpolant interpolant(const RigidBodyRhs& f, const State7& y_old, const St
           {dy, c1, c2, h * combine<T, Coefficients::dense_d, 0>(K, all),
            h * combine<T, Coefficients::dense_d, 1>(K, all),
            h * combine<T, Coefficients::dense_d, 2>(K, all),
-           h * combine<T, Coefficients::dense_d, 3>(K, all)},
-          7};
+           h * combine<T, Coefficients::dense_d, 3>(K, all)}};
 }
 }  // namespace
 
@@ -332,7 +333,7 @@ void RungeKutta::sample_dense(State7& y, double t0, std::span<const double> time
   // Times inside a step come from its interpolant; one at its end is the new state itself.
   const auto output = [&](double t_old, double t_new, const State7& y_old, const State7& y_new,
                           const Stages<T>& k) {
-    std::optional<StepInterpolant> p;
+    std::optional<decltype(interpolant<T>(rhs_, y_old, y_new, 0.0, k, cost_))> p;
     for (; next < times.size() && times[next] <= t_new; ++next) {
       State7 s;
       if (times[next] == t_new) {
