@@ -190,8 +190,8 @@ StepInterpolant<4> interpolant(const RigidBodyRhs&, const State7& y_old, const S
   requires std::is_same_v<T, Dopri5>
 {
   const auto [dy, c1, c2] = hermite(y_old, y_new, h, k[0], k[T::S - 1]);
-  return {y_old,
-          {dy, c1, c2, h * combine<T, Coefficients::dense_p, 3>(k, std::make_index_sequence<T::S>{})}};
+  constexpr auto all = std::make_index_sequence<T::S>{};
+  return {y_old, {dy, c1, c2, h * combine<T, Coefficients::dense_p, 3>(k, all)}};
 }
 
 // DOP853: three more stages, then y_new - y_old, its two end slopes and four from D.
