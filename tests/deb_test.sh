@@ -26,7 +26,8 @@ cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work/pkg" >"$work/cpack.lo
 deb="$(ls "$work"/pkg/wobble_*.deb)"
 depends="$(dpkg-deb -f "$deb" Depends)"
 echo "package: $(basename "$deb"), $(du -h "$deb" | cut -f1); Depends: $depends"
-for lib in libginac11 libcln6 libfmt9 libedit2 libtomlplusplus3; do
+# The last two from the module loaded on demand (lib/wobble/wobble-on-demand.so).
+for lib in libginac11 libcln6 libfmt9 libedit2 libtomlplusplus3 libzip4 libcpp-httplib0.11; do
   [[ "$depends" == *"$lib"* ]] || { echo "the package does not declare $lib"; exit 1; }
 done
 
@@ -57,6 +58,9 @@ done
 in_root wobble keys --check >"$work/keys.txt" || status=1
 tail -1 "$work/keys.txt"
 in_root wobble check flying-plate a --name I0 --answer "m*R^2/4" || status=1
+# The module, loaded from /usr/lib/wobble by the command that needs it.
+in_root wobble export gradescope flying-plate --deb "/autograder/source/$(basename "$deb")" \
+  --out /tmp/again.zip || { echo "installed wobble cannot write a zip"; status=1; }
 # The autograder grades a submission of the key's answers with the installed program.
 mkdir -p "$root/autograder/submission"
 "$build/wobble" solve four-masses --format json | python3 -c '

@@ -26,4 +26,16 @@ foreach(args "list" "solve;installed-only" "solve;flying-plate" "simulate;tennis
     message(FATAL_ERROR "installed wobble ${args}: exit ${rc}\n${err}")
   endif()
 endforeach()
-message(STATUS "the installed program found its data in ${share}")
+# The module in lib/wobble, loaded by the installed program for a zip (a stand-in package: the
+# export checks only that it is one).
+if(NOT EXISTS "${PREFIX}/lib/wobble/wobble-on-demand.so")
+  message(FATAL_ERROR "${PREFIX}/lib/wobble/wobble-on-demand.so was not installed")
+endif()
+file(WRITE "${PREFIX}/stand-in_1.0_amd64.deb" "!<arch>\ndebian-binary   ")
+execute_process(COMMAND ${clean} "${PREFIX}/bin/wobble" export gradescope flying-plate
+                        --deb "${PREFIX}/stand-in_1.0_amd64.deb" --out "${PREFIX}/autograder.zip"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT EXISTS "${PREFIX}/autograder.zip")
+  message(FATAL_ERROR "installed wobble export gradescope: exit ${rc}\n${err}")
+endif()
+message(STATUS "the installed program found its data in ${share} and its module")

@@ -13,6 +13,7 @@
 #include "export/moodle.hpp"
 #include "export/prairielearn.hpp"
 #include "io/atomic_write.hpp"
+#include "on_demand/on_demand.hpp"
 #include "solvers/catalog.hpp"
 
 namespace wobble::cli {
@@ -134,7 +135,7 @@ int export_gradescope(const ExportOptions& opt) {
   const std::string check_options =
       opt.tolerance ? fmt::format("--tolerance {}", *opt.tolerance) : std::string();
   const auto files = exports::gradescope_autograder(p, opt.deb, check_options);
-  write_files({{opt.out, exports::zip_archive(files)}}, opt.force);
+  write_files({{opt.out, on_demand::load().zip_archive(files)}}, opt.force);
   fmt::print("wrote {} ({} files: setup.sh, run_autograder, {}.toml and {})\n", opt.out,
              files.size(), p.id, fs::path(opt.deb).filename().string());
   return kExitOk;

@@ -8,8 +8,8 @@
 #include "cli/commands.hpp"
 #include "core/input_error.hpp"
 #include "core/work_budget.hpp"
+#include "on_demand/on_demand.hpp"
 #include "problem/scene.hpp"
-#include "serve/server.hpp"
 #include "solvers/catalog.hpp"
 
 namespace wobble::cli {
@@ -57,7 +57,8 @@ int run_serve(const ServeOptions& opt) {
   so.scenes = load_scenes();
   const std::size_t count = so.problems.size();
   so.reveal = opt.reveal;
-  serve::Server server(std::move(so));
+  const std::unique_ptr<on_demand::Service> service = on_demand::load().make_server(std::move(so));
+  on_demand::Service& server = *service;
   const int port = server.bind();
   const std::string url = fmt::format("http://{}:{}/", opt.host, port);
   fmt::print("wobble serve: {} ({} problems; Ctrl-C stops)\n", url, count);

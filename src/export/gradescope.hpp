@@ -25,9 +25,6 @@ std::vector<OutputFile> gradescope_autograder(const Problem& problem,
                                               const std::filesystem::path& deb,
                                               const std::string& check_options);
 
-/// The files as one zip archive (scripts executable).
-std::string zip_archive(const std::vector<OutputFile>& files);
-
 /// Gradescope's results.json for a judged submission.
 std::string gradescope_results(const check::SubmissionResult& result);
 
