@@ -25,7 +25,8 @@ bool shown_irreducible(const GiNaC::ex& p);
 
 /// GiNaC::factor(p); p itself (expanded, as given) when shown irreducible, without factoring.
 /// factor() would return the same polynomial, but sometimes partly collected in one symbol
-/// (4*M + 4*m1^2*(1+M) - 2*M*m1), chosen by GiNaC's run-dependent order.
+/// (4*M + 4*m1^2*(1+M) - 2*M*m1), chosen by GiNaC's run-dependent order. A product or power is
+/// factored one explicit factor at a time, as factor() does, each through factored().
 GiNaC::ex factored(const GiNaC::ex& p);
 
 }  // namespace wobble::sym
