@@ -57,9 +57,8 @@ int run_serve(const ServeOptions& opt) {
   so.scenes = load_scenes();
   const std::size_t count = so.problems.size();
   so.reveal = opt.reveal;
-  const std::unique_ptr<on_demand::Service> service = on_demand::load().make_server(std::move(so));
-  on_demand::Service& server = *service;
-  const int port = server.bind();
+  const std::unique_ptr<on_demand::Service> server = on_demand::load().make_server(std::move(so));
+  const int port = server->bind();
   const std::string url = fmt::format("http://{}:{}/", opt.host, port);
   fmt::print("wobble serve: {} ({} problems; Ctrl-C stops)\n", url, count);
   if (!loopback(opt.host)) {
@@ -70,7 +69,7 @@ int run_serve(const ServeOptions& opt) {
     fmt::print("keys: shown to everyone (--reveal)\n");
   } else {
     fmt::print("instructor: {}?token={} (the page with the keys; the token is {})\n", url,
-               server.token(), server.token());
+               server->token(), server->token());
   }
   std::fflush(stdout);
   std::atomic<bool> done{false};
@@ -78,13 +77,13 @@ int run_serve(const ServeOptions& opt) {
   std::thread watcher([&] {
     while (!done) {
       if (interrupt_requested()) {
-        server.stop();
+        server->stop();
         return;
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
   });
-  server.run();
+  server->run();
   done = true;
   watcher.join();
   if (interrupt_requested()) fmt::print("wobble serve: stopped\n");

@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 std::vector<fs::path> candidates() {
   std::error_code ec;
   const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) return {kModuleFile};  // the loader's own search path
+  if (ec) return {kModuleFile};  // a bare name: dlopen's own search (LD_LIBRARY_PATH, ...)
   const fs::path dir = self.parent_path();
   return {dir / kModuleFile, (dir / WOBBLE_MODULE_FROM_BIN / kModuleFile).lexically_normal()};
 }
@@ -27,7 +27,7 @@ const Entry& load_once() {
   std::string tried;
   for (const auto& path : paths) {
     std::error_code ec;
-    if (!fs::exists(path, ec)) {
+    if (path.is_absolute() && !fs::exists(path, ec)) {
       tried += (tried.empty() ? "" : ", ") + path.string();
       continue;
     }
@@ -40,7 +40,8 @@ const Entry& load_once() {
     using EntryFunction = const Entry* (*)();
     const auto entry = reinterpret_cast<EntryFunction>(dlsym(handle, kEntrySymbol));
     if (entry == nullptr) {
-      throw std::runtime_error(fmt::format("{} is not wobble's module: {}", path.string(), dlerror()));
+      throw std::runtime_error(
+          fmt::format("{} is not wobble's module: {}", path.string(), dlerror()));
     }
     const Entry* e = entry();
     if (std::strcmp(e->version, WOBBLE_VERSION) != 0) {
