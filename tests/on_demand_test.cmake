@@ -1,8 +1,11 @@
 # The program loads cpp-httplib and libzip (and OpenSSL through them) only with its module:
 # the program does not need them, the module does; and a program without its module says so
 # in one line naming the file, with a non-zero exit and no file written, for the commands that
-# need it, while every other command runs.
-#   cmake -DWOBBLE=<program> -DMODULE=<module> -DWORK=<empty folder> -P on_demand_test.cmake
+# need it, while every other command runs. The module needs no GiNaC or CLN of its own: it
+# calls the program's (a second copy would keep registries of its own); and where GiNaC is
+# linked from its static archives (GINAC_STATIC), the program does not need them either.
+#   cmake -DWOBBLE=<program> -DMODULE=<module> -DWORK=<empty folder> -DGINAC_STATIC=<bool>
+#         -P on_demand_test.cmake
 function(needed file out)
   execute_process(COMMAND readelf -d "${file}" OUTPUT_VARIABLE dynamic RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
@@ -22,6 +25,14 @@ endforeach()
 foreach(lib libcpp-httplib libzip)
   if(NOT module_libs MATCHES "${lib}")
     message(FATAL_ERROR "the module does not need ${lib}: ${module_libs}")
+  endif()
+endforeach()
+foreach(lib libginac libcln)
+  if(module_libs MATCHES "${lib}")
+    message(FATAL_ERROR "the module needs ${lib} (a second copy of it): ${module_libs}")
+  endif()
+  if(GINAC_STATIC AND program_libs MATCHES "${lib}")
+    message(FATAL_ERROR "the program needs ${lib}, not linked from its archive: ${program_libs}")
   endif()
 endforeach()
 
