@@ -2,9 +2,10 @@
 # the program does not need them, the module does; and a program without its module says so
 # in one line naming the file, with a non-zero exit and no file written, for the commands that
 # need it, while every other command runs. The module needs no GiNaC or CLN of its own: it
-# calls the program's (a second copy would keep registries of its own); and where GiNaC is
-# linked from its static archives (GINAC_STATIC), the program does not need them either.
-#   cmake -DWOBBLE=<program> -DMODULE=<module> -DWORK=<empty folder> -DGINAC_STATIC=<bool>
+# calls the program's (a second copy would keep registries of its own); and where the
+# libraries every command loads are linked from their static archives (STATIC_DEPS), the
+# program needs none of them: GiNaC, CLN, GMP, GSL, SUNDIALS, libedit.
+#   cmake -DWOBBLE=<program> -DMODULE=<module> -DWORK=<empty folder> -DSTATIC_DEPS=<bool>
 #         -P on_demand_test.cmake
 function(needed file out)
   execute_process(COMMAND readelf -d "${file}" OUTPUT_VARIABLE dynamic RESULT_VARIABLE rc)
@@ -31,7 +32,9 @@ foreach(lib libginac libcln)
   if(module_libs MATCHES "${lib}")
     message(FATAL_ERROR "the module needs ${lib} (a second copy of it): ${module_libs}")
   endif()
-  if(GINAC_STATIC AND program_libs MATCHES "${lib}")
+endforeach()
+foreach(lib libginac libcln libgmp libgsl libsundials libedit)
+  if(STATIC_DEPS AND program_libs MATCHES "${lib}")
     message(FATAL_ERROR "the program needs ${lib}, not linked from its archive: ${program_libs}")
   endif()
 endforeach()
