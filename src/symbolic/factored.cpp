@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <utility>
 #include <vector>
+
+#include "symbolic/memo.hpp"
 
 namespace wobble::sym {
 
@@ -202,16 +203,9 @@ ex factored_once(const ex& p) {
 }  // namespace
 
 ex factored(const ex& p) {
-  // Solving one problem factors the same polynomial again and again (the same sums of moments
-  // in several answers): 9 ms of a keys check. One table per thread (GiNaC is not thread-safe;
-  // the server solves one request at a time), emptied when full, so it stays small.
-  thread_local std::map<ex, ex, GiNaC::ex_is_less> known;
-  constexpr std::size_t kMaxKnown = 1024;
-  if (const auto it = known.find(p); it != known.end()) return it->second;
-  ex result = factored_once(p);
-  if (known.size() >= kMaxKnown) known.clear();
-  known.emplace(p, result);
-  return result;
+  // The same polynomial is factored again and again: 9 ms of a keys check.
+  thread_local Memo<ex> known;
+  return known.get(p, [&] { return factored_once(p); });
 }
 
 }  // namespace wobble::sym

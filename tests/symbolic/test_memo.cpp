@@ -1,0 +1,80 @@
+// The table of results of pure functions (symbolic/memo.hpp), and the functions that keep one:
+// a repeated call returns the first result without computing it again, a call that throws is
+// never kept, and a value depends on the values it was evaluated at, not only the expression.
+#include <catch2/catch.hpp>
+
+#include <stdexcept>
+#include <string>
+
+#include "symbolic/expression.hpp"
+#include "symbolic/memo.hpp"
+
+using wobble::sym::Memo;
+
+TEST_CASE("a result is computed once for each argument") {
+  Memo<int> memo;
+  const GiNaC::symbol x("x"), y("y");
+  int computed = 0;
+  // The square of e's value at x = 3, y = 5.
+  auto square = [&](const GiNaC::ex& e) {
+    return memo.get(e, [&] {
+      ++computed;
+      const int v = GiNaC::ex_to<GiNaC::numeric>(e.subs(GiNaC::lst{x == 3, y == 5})).to_int();
+      return v * v;
+    });
+  };
+  CHECK(square(x + 1) == 16);
+  CHECK(square(y) == 25);
+  CHECK(square(x + 1) == 16);  // an equal expression built again
+  CHECK(square(1 + x) == 16);
+  CHECK(computed == 2);
+}
+
+TEST_CASE("a call that throws is not kept and throws again") {
+  Memo<int> memo;
+  const GiNaC::symbol x("x");
+  int computed = 0;
+  auto failing = [&] {
+    ++computed;
+    throw std::runtime_error("no value");
+    return 0;
+  };
+  CHECK_THROWS_WITH(memo.get(x, failing), "no value");
+  CHECK_THROWS_WITH(memo.get(x, failing), "no value");
+  CHECK(computed == 2);
+  CHECK(memo.get(x, [] { return 7; }) == 7);
+}
+
+TEST_CASE("a full table is emptied and its results are computed again, still right") {
+  Memo<long> memo;
+  int computed = 0;
+  // Three times the table's size: the first arguments are gone by the end.
+  constexpr long kArguments = 3 * 1024;
+  for (long pass = 0; pass < 2; ++pass) {
+    for (long i = 0; i < kArguments; ++i) {
+      const long got = memo.get(GiNaC::numeric(i), [&] {
+        ++computed;
+        return i * i;
+      });
+      REQUIRE(got == i * i);
+    }
+  }
+  CHECK(computed > kArguments);       // some computed again after the table was emptied
+  CHECK(computed <= 2 * kArguments);  // never more than once a call
+}
+
+TEST_CASE("a value is kept for its expression and the values it was evaluated at") {
+  const GiNaC::symbol m("m");
+  const GiNaC::ex e = 2 * m + 1;
+  CHECK(wobble::sym::evaluate(e, GiNaC::lst{m == 1}, "a") == 3.0);
+  CHECK(wobble::sym::evaluate(e, GiNaC::lst{m == 2}, "a") == 5.0);
+  CHECK(wobble::sym::evaluate(e, GiNaC::lst{m == 1}, "a") == 3.0);
+}
+
+TEST_CASE("an evaluation that fails names the field it was asked for, each time") {
+  const GiNaC::symbol m("m");
+  const GiNaC::ex e = GiNaC::log(m - 1);  // no real value at m = 1/2
+  const GiNaC::lst at{m == GiNaC::numeric(1, 2)};
+  CHECK_THROWS_WITH(wobble::sym::evaluate(e, at, "first"), Catch::Contains("first"));
+  CHECK_THROWS_WITH(wobble::sym::evaluate(e, at, "second"), Catch::Contains("second"));
+}
