@@ -35,7 +35,7 @@ int run_bench(const BenchOptions& opt) {
   }
   for (auto rows : {bench::elliptic_bench(plan), bench::principal_axes_bench(plan),
                     bench::process_bench(std::filesystem::read_symlink("/proc/self/exe").string(),
-                                         opt.quick ? 3 : 7)}) {
+                                         opt.quick ? 3 : 15)}) {
     report.components.insert(report.components.end(), rows.begin(), rows.end());
   }
   report.drift = bench::drift_table(opt.quick);

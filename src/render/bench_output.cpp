@@ -108,7 +108,7 @@ std::string components(const BenchReport& r, bool markdown) {
           : group == "principal axes"
               ? "principal axes of R diag(l) R^T (error: eigenvalues, residual and "
                 "orthonormality, in eps l_max)"
-              : "whole process (median of repeated runs)";
+              : "whole process, the program spawned without a shell (median of repeated runs)";
       out +=
           markdown
               ? fmt::format(

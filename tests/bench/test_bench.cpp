@@ -5,8 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#include "bench/components.hpp"
 #include "bench/report.hpp"
 #include "render/bench_output.hpp"
+#include "solvers/catalog.hpp"
 
 using namespace wobble;
 using namespace wobble::bench;
@@ -130,5 +132,26 @@ TEST_CASE("P2 against time: Runge-Kutta energy error drifts, splitting's does no
       REQUIRE(d.energy_error[2] <= 10 * d.energy_error[0]);  // bounded oscillation
       REQUIRE(d.L_error[2] <= 1e-13);                        // |L| to round-off
     }
+  }
+}
+
+TEST_CASE("process timings run the program on every problem and keys --check, each run exiting 0") {
+  const std::vector<ComponentRow> rows = process_bench(WOBBLE_EXE, 1);
+  const std::size_t problems = load_catalog().size();
+  REQUIRE(rows.size() == problems + 1);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    INFO(rows[i].method);
+    CHECK(rows[i].method == (i < problems ? "wobble solve " + load_catalog()[i].id
+                                          : std::string("wobble keys --check")));
+    CHECK(rows[i].ns_per_call > 0);  // a failed run would time as -1 s
+  }
+}
+
+TEST_CASE("a program that cannot run times as failed, not as fast") {
+  const std::vector<ComponentRow> rows = process_bench("/nonexistent/wobble", 1);
+  REQUIRE(rows.size() == load_catalog().size() + 1);
+  for (const ComponentRow& row : rows) {
+    INFO(row.method);
+    CHECK(row.ns_per_call < 0);
   }
 }
