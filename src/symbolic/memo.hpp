@@ -28,13 +28,16 @@ struct ExPairLess {
 template <class Value, class Key = GiNaC::ex, class Less = GiNaC::ex_is_less>
 class Memo {
  public:
-  /// compute() for key, or its result from an earlier call with an equal key.
+  /// compute() for key, or its result from an earlier call with an equal key. A copy: compute()
+  /// may call get() again (factoring a product factors its factors), and a later call may empty
+  /// the table.
   template <class Compute>
-  const Value& get(const Key& key, Compute&& compute) {
+  Value get(const Key& key, Compute&& compute) {
     if (const auto it = known_.find(key); it != known_.end()) return it->second;
     Value value = compute();
     if (known_.size() >= kMaxKnown) known_.clear();
-    return known_.emplace(key, std::move(value)).first->second;
+    known_.emplace(key, value);
+    return value;
   }
 
  private:
