@@ -26,9 +26,10 @@ cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work/pkg" >"$work/cpack.lo
 deb="$(ls "$work"/pkg/wobble_*.deb)"
 depends="$(dpkg-deb -f "$deb" Depends)"
 echo "package: $(basename "$deb"), $(du -h "$deb" | cut -f1); Depends: $depends"
-# The last two from the module loaded on demand (lib/wobble/wobble-on-demand.so). GiNaC, CLN
-# and GMP are in the program (linked from their static archives), so not among them.
-for lib in libfmt9 libedit2 libtomlplusplus3 libzip4 libcpp-httplib0.11; do
+# The last two from the module loaded on demand (lib/wobble/wobble-on-demand.so). GiNaC, CLN,
+# GMP, GSL, SUNDIALS and libedit are in the program (linked from their static archives), so not
+# among them.
+for lib in libfmt9 libtomlplusplus3 libzip4 libcpp-httplib0.11; do
   [[ "$depends" == *"$lib"* ]] || { echo "the package does not declare $lib"; exit 1; }
 done
 
