@@ -137,12 +137,12 @@ TEST_CASE("P2 against time: Runge-Kutta energy error drifts, splitting's does no
 
 TEST_CASE("process timings run the program on every problem and keys --check, each run exiting 0") {
   const std::vector<ComponentRow> rows = process_bench(WOBBLE_EXE, 1);
-  const std::size_t problems = load_catalog().size();
-  REQUIRE(rows.size() == problems + 1);
+  const std::vector<Problem> catalog = load_catalog();
+  REQUIRE(rows.size() == catalog.size() + 1);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     INFO(rows[i].method);
-    CHECK(rows[i].method == (i < problems ? "wobble solve " + load_catalog()[i].id
-                                          : std::string("wobble keys --check")));
+    CHECK(rows[i].method == (i < catalog.size() ? "wobble solve " + catalog[i].id
+                                                : std::string("wobble keys --check")));
     CHECK(rows[i].ns_per_call > 0);  // a failed run would time as -1 s
   }
 }
