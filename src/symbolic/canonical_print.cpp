@@ -1,6 +1,7 @@
 #include "symbolic/canonical_print.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -37,19 +38,48 @@ std::string str(const numeric& n) {
 // Binding strength of the printed form, to decide on parentheses.
 enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
 
+// A printed form and how tightly it binds (Prec).
+using Printed = std::pair<std::string, int>;
+using PrintMemo = std::map<ex, Printed, GiNaC::ex_is_less>;
+
+// Each subexpression is printed once per table and style: sorting and sign rules look at a
+// factor's or a term's text again and again, which without this took time exponential in the
+// nesting depth (fuzzing found a 76-character expression taking seconds). Kept across calls: a
+// key prints each answer as text and as LaTeX (whose sums are sorted by their text), and
+// simplify() measures candidates by their text (the three-atom molecule printed 57 expressions
+// in 180 calls). Emptied when large, and only between calls, never under a printer at work.
+class PrintMemos {
+ public:
+  static PrintMemos& here() {
+    thread_local PrintMemos memos;
+    return memos;
+  }
+  PrintMemo& of(const SymbolTable& table, Style style) {
+    return memos_[{table.version(), style}];
+  }
+  // At the start of a call: bounds the memory kept.
+  void bound() {
+    std::size_t entries = 0;
+    for (const auto& [key, memo] : memos_) entries += memo.size();
+    if (entries > kMaxEntries || memos_.size() > kMaxTables) memos_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kMaxEntries = 4096, kMaxTables = 16;
+  std::map<std::pair<std::uint64_t, Style>, PrintMemo> memos_;
+};
+
 class Printer {
  public:
-  Printer(const SymbolTable& table, Style style) : table_(table), style_(style) {}
+  Printer(const SymbolTable& table, Style style)
+      : table_(table), style_(style), memo_(PrintMemos::here().of(table, style)) {}
 
   std::string print(const ex& e) { return print_prec(e).first; }
 
  private:
   const SymbolTable& table_;
   Style style_;
-  // Each subexpression is printed once per style: sorting and sign rules look at a factor's or
-  // a term's text again and again, which without these took time exponential in the nesting
-  // depth (fuzzing found a 76-character expression taking seconds).
-  std::map<ex, std::pair<std::string, int>, GiNaC::ex_is_less> memo_;
+  PrintMemo& memo_;
   std::unique_ptr<Printer> text_;  // the text-style printer used for sort keys
 
   Printer& text_printer() {
@@ -67,7 +97,7 @@ class Printer {
     return out;
   }
 
-  std::pair<std::string, int> print_prec(const ex& e) {
+  Printed print_prec(const ex& e) {
     if (const auto it = memo_.find(e); it != memo_.end()) return it->second;
     auto printed = print_prec_uncached(e);
     memo_.emplace(e, printed);
@@ -389,10 +419,12 @@ class Printer {
 }  // namespace
 
 std::string to_text(const ex& e, const SymbolTable& table) {
+  PrintMemos::here().bound();
   return Printer(table, Style::text).print(e);
 }
 
 std::string to_latex(const ex& e, const SymbolTable& table) {
+  PrintMemos::here().bound();
   return Printer(table, Style::latex).print(e);
 }
 

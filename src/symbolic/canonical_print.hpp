@@ -10,6 +10,9 @@
 ///   functions and powers of sums (by their text); negative powers go to a denominator;
 /// - the terms of a sum come positive first, then by the text of the term without its sign;
 /// - sqrt(x) for x^(1/2); `Pi` for the constant. The text reads back with GiNaC's parser.
+///
+/// What is printed is kept, per thread, under the table's version and the style (bounded: emptied
+/// beyond 4096 forms), so printing an expression or its parts again is a lookup.
 #include <ginac/ginac.h>
 
 #include <string>

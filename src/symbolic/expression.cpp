@@ -1,6 +1,7 @@
 #include "symbolic/expression.hpp"
 
 #include <array>
+#include <atomic>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -148,6 +149,11 @@ std::optional<GiNaC::ex> pi_multiple(double d) {
 }
 }  // namespace
 
+std::uint64_t SymbolTable::next_version() {
+  static std::atomic<std::uint64_t> last{0};
+  return ++last;
+}
+
 GiNaC::ex SymbolTable::declare(const std::string& name, const std::string& latex, SymbolSign sign) {
   if (!is_identifier(name)) throw std::invalid_argument("'" + name + "' is not an identifier");
   if (name == "pi" || name == "Pi" || contains(name)) {
@@ -159,6 +165,7 @@ GiNaC::ex SymbolTable::declare(const std::string& name, const std::string& latex
   names_.push_back(name);
   symbols_.push_back(s);
   latex_.push_back(latex.empty() ? name : latex);
+  version_ = next_version();
   return s;
 }
 

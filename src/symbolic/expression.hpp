@@ -8,6 +8,7 @@
 /// `pi` and `Pi` both name the constant.
 #include <ginac/ginac.h>
 
+#include <cstdint>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -43,6 +44,9 @@ class SymbolTable {
   /// names.
   std::size_t order_of(const std::string& name) const;
   const std::vector<std::string>& names() const { return names_; }
+  /// Changes whenever the table does (a new table, a symbol declared), never coming back: what
+  /// is printed with the table is kept under it (canonical_print.cpp). A copy keeps it.
+  std::uint64_t version() const { return version_; }
 
   /// Parses `text` with only the declared symbols (and pi) allowed. Texts longer than
   /// kMaxExpressionLength or nested deeper than kMaxExpressionDepth are refused before GiNaC's
@@ -55,6 +59,8 @@ class SymbolTable {
   std::vector<GiNaC::ex> symbols_;
   std::vector<std::string> latex_;
   std::map<std::string, std::size_t> index_;
+  std::uint64_t version_ = next_version();
+  static std::uint64_t next_version();
 };
 
 /// Sets GiNaC's global precision (decimal digits) for a scope and restores it on exit.

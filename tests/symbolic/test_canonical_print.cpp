@@ -104,3 +104,37 @@ TEST_CASE(
   }
   REQUIRE(to_text(t.parse("m*2^a/6", "e"), t) == "m*2^a/6");
 }
+
+TEST_CASE("what is printed with a table is kept for that table as it is, and no other") {
+  // The printed forms are kept across calls, under the table's version: printing the same
+  // expression after the table changed, or with another table, must not return a kept form.
+  const GiNaC::symbol b("b"), c("c"), alpha("alpha");
+  const GiNaC::ex product = b * c * alpha;
+  SymbolTable t;
+  t.declare("a", "a", SymbolSign::positive);
+  // Names the table does not know come after its own, by name.
+  REQUIRE(to_text(product, t) == "alpha*b*c");
+  REQUIRE(to_latex(product, t) == "\\alpha b c");
+  const SymbolTable before = t;
+  t.declare("c", "c", SymbolSign::positive);  // c now ranks by declaration order, first
+  REQUIRE(to_text(product, t) == "c*alpha*b");
+  REQUIRE(to_text(product, before) == "alpha*b*c");  // a copy prints as its original did
+  SymbolTable other;
+  other.declare("alpha", "A", SymbolSign::real);
+  REQUIRE(to_latex(product, other) == "A b c");
+  REQUIRE(to_latex(product, t) == "c \\alpha b");
+}
+
+TEST_CASE("printing many expressions empties what is kept and still prints each right") {
+  const SymbolTable t = table();
+  const GiNaC::ex m = t.at("m"), a = t.at("a");
+  const std::string first = to_latex(m * GiNaC::pow(a, 2) / 6, t);
+  // Well beyond what is kept (4096 forms over every table and style): it is emptied on the way.
+  for (int k = 1; k <= 6000; ++k) {
+    const std::string printed = to_text(m + k * a, t);
+    // Terms sorted by their text: "a" and "2*a" before "m".
+    REQUIRE(printed == (k == 1 ? "a" : std::to_string(k) + "*a") + " + m");
+  }
+  REQUIRE(to_latex(m * GiNaC::pow(a, 2) / 6, t) == first);
+  REQUIRE(first == "\\frac{m a^{2}}{6}");
+}
