@@ -1,6 +1,7 @@
 // The table of results of pure functions (symbolic/memo.hpp), and the functions that keep one:
 // a repeated call returns the first result without computing it again, a call that throws is
-// never kept, and a value depends on the values it was evaluated at, not only the expression.
+// never kept, a value depends on the values it was evaluated at, not only the expression, and a
+// zero test is kept for an expression and its negation.
 #include <catch2/catch.hpp>
 
 #include <stdexcept>
@@ -77,4 +78,20 @@ TEST_CASE("an evaluation that fails names the field it was asked for, each time"
   const GiNaC::lst at{m == GiNaC::numeric(1, 2)};
   CHECK_THROWS_WITH(wobble::sym::evaluate(e, at, "first"), Catch::Contains("first"));
   CHECK_THROWS_WITH(wobble::sym::evaluate(e, at, "second"), Catch::Contains("second"));
+}
+
+TEST_CASE("whether an expression is zero is kept for it and its negation, and no other") {
+  // Kept under whichever of e and -e orders first: both must get e's answer, and expressions
+  // asked in turn, zero and not, each their own.
+  const GiNaC::symbol a("a"), b("b");
+  const GiNaC::ex zero = GiNaC::pow(a + b, 2) - GiNaC::pow(a, 2) - 2 * a * b - GiNaC::pow(b, 2);
+  const GiNaC::ex not_zero = GiNaC::pow(a + b, 2) - GiNaC::pow(a, 2) - GiNaC::pow(b, 2);
+  for (int round = 0; round < 2; ++round) {
+    CHECK(wobble::sym::is_identically_zero(zero));
+    CHECK_FALSE(wobble::sym::is_identically_zero(not_zero));
+    CHECK(wobble::sym::is_identically_zero(-zero));
+    CHECK_FALSE(wobble::sym::is_identically_zero(-not_zero));
+    CHECK_FALSE(wobble::sym::is_identically_zero(a - b));
+    CHECK_FALSE(wobble::sym::is_identically_zero(b - a));
+  }
 }
