@@ -22,6 +22,7 @@ endforeach()
 execute_process(COMMAND "${WOBBLE}" solve flying-plate --part a
                 RESULT_VARIABLE rc OUTPUT_VARIABLE plain)
 if(NOT out STREQUAL plain OR out STREQUAL "")
-  message(FATAL_ERROR "the key differs with jemalloc's statistics asked for:\n${out}\n---\n${plain}")
+  message(FATAL_ERROR
+          "the key differs with jemalloc's statistics asked for:\n${out}\n---\n${plain}")
 endif()
 message(STATUS "jemalloc serves the program with huge pages; the key is unchanged")

@@ -2,9 +2,11 @@
 // the factors GiNaC's factor() gives.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <random>
 #include <vector>
 
+#include "symbolic/canonical_print.hpp"
 #include "symbolic/factored.hpp"
 
 using namespace wobble::sym;
@@ -198,4 +200,40 @@ TEST_CASE("an irreducible factor found in two factors of a product is written on
     INFO("p = " << p << "\nfactored " << factors << "\nfactor() " << GiNaC::factor(p));
     REQUIRE(bases_expanded(factors).is_equal(bases_expanded(GiNaC::factor(p))));
   }
+}
+
+TEST_CASE("a difference of two squares splits into factor()'s factors, printed the same") {
+  // u^2 - v^2 for monomials u and v, times a number and a monomial: split as (u - v)(u + v),
+  // each factored on (a^4 - b^4 splits again), without factor(); the key prints the result, so
+  // its text must be factor()'s.
+  const SymbolTable table;
+  std::mt19937 rng(20261125);
+  std::uniform_int_distribution<int> exponent(0, 2), pick(0, 4);
+  const std::array<ex, 5> roots{1, 2, 3, ex(1) / 2, ex(3) / 2};  // rational squares' roots
+  auto monomial = [&](std::size_t n) {
+    ex m = roots[static_cast<std::size_t>(pick(rng))];
+    for (std::size_t i = 0; i < n; ++i) m *= GiNaC::pow(kSymbols.op(i), exponent(rng));
+    return m;
+  };
+  int split = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    const std::size_t n = 2 + static_cast<std::size_t>(trial % 5);
+    const ex u = monomial(n), v = monomial(n);
+    const ex p = GiNaC::expand((trial % 3 == 0 ? -6 : 1) * monomial(n) *
+                               (GiNaC::pow(u, 2) - GiNaC::pow(v, 2)));
+    if (!GiNaC::is_a<GiNaC::add>(p)) continue;  // u = v up to sign, or a constant difference
+    ++split;
+    const ex f = factored(p);
+    INFO("p = " << p << "\nfactored " << f << "\nfactor() " << GiNaC::factor(p));
+    REQUIRE(same_polynomial(f, p));
+    REQUIRE(to_text(f, table) == to_text(GiNaC::factor(p), table));
+  }
+  REQUIRE(split > 100);
+  for (const char* text : {"M^4-m1^4", "9*M^2-4", "M^2*m1^2-d1^2*d2^2/4", "-m1^2+M^2"}) {
+    const ex p(text, kSymbols);
+    INFO("p = " << p);
+    REQUIRE(to_text(factored(p), table) == to_text(GiNaC::factor(p), table));
+  }
+  REQUIRE(to_text(factored(ex("M^4-m1^4", kSymbols)), table) ==
+          "(M + m1)*(M - m1)*(M^2 + m1^2)");
 }
