@@ -230,12 +230,12 @@ ex factored_once(const ex& p) {
   if (GiNaC::is_a<GiNaC::mul>(p) || GiNaC::is_a<GiNaC::power>(p)) return factored_product(p);
   if (!is_polynomial_sum(p)) return GiNaC::factor(p);
   const auto [content, q] = split_content(p);
-  // content * q is what factor() gives when q is irreducible (for content 1, p itself).
-  if (shown_irreducible(q)) return content * q;
+  // First, as it is cheap and never applies to an irreducible q (u and v are not both numbers).
   if (const auto uv = difference_of_squares(q)) {
     return content * factored(uv->first - uv->second) * factored(uv->first + uv->second);
   }
-  return GiNaC::factor(p);
+  // content * q is what factor() gives when q is irreducible (for content 1, p itself).
+  return shown_irreducible(q) ? content * q : GiNaC::factor(p);
 }
 }  // namespace
 
