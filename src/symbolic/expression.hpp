@@ -111,7 +111,8 @@ GiNaC::ex tidy(const GiNaC::ex& e);
 /// The shortest of: normal(e), and normal(e) with sin^2 = 1 - cos^2 or cos^2 = 1 - sin^2 applied
 /// (GiNaC does not use the Pythagorean identity by itself). Length is that of the canonical
 /// text, which does not depend on GiNaC's run-dependent term order, so the choice is
-/// deterministic.
+/// deterministic. It depends on the rational function e is, not on how e is written: sums over
+/// one denominator are written as one fraction first, which normal() reduces in fewer gcds.
 GiNaC::ex simplify(const GiNaC::ex& e);
 
 }  // namespace wobble::sym

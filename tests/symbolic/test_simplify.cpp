@@ -1,0 +1,59 @@
+// simplify(): its result depends only on the rational function, not on how it is written, so
+// the sums it writes over one denominator before normal() come out as they would have.
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "symbolic/canonical_print.hpp"
+
+using namespace wobble::sym;
+using GiNaC::ex;
+
+namespace {
+const GiNaC::possymbol M("M"), m1("m1"), d1("d1");
+const GiNaC::realsymbol alpha("alpha");
+
+// A polynomial in masses, a length and cos, sin of an angle: seeded, small coefficients.
+ex random_polynomial(std::mt19937& rng, int terms) {
+  std::uniform_int_distribution<int> coefficient(-4, 4), exponent(0, 2);
+  // Built here, not at namespace scope: GiNaC's functions are registered by its own static
+  // initialisation, which need not have run before this file's.
+  const GiNaC::lst atoms{M, m1, d1, GiNaC::cos(alpha), GiNaC::sin(alpha)};
+  ex p = 0;
+  for (int t = 0; t < terms; ++t) {
+    ex term = coefficient(rng);
+    for (const auto& atom : atoms) term *= GiNaC::pow(atom, exponent(rng));
+    p += term;
+  }
+  return p;
+}
+}  // namespace
+
+TEST_CASE("simplify gives one form for a rational function however it is written") {
+  // As a tensor about the centre of mass writes it: P/D - Q/D, ((P/D - Q/D)/2)^2 + (R/D)^2,
+  // against the same written as one fraction by hand, and through a different denominator.
+  const SymbolTable table;
+  std::mt19937 rng(20261125);
+  int compared = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const ex P = random_polynomial(rng, 3), Q = random_polynomial(rng, 3),
+             R = random_polynomial(rng, 2);
+    const ex D = M + m1 + (trial % 2 == 0 ? ex(0) : ex(2) * d1);
+    if (GiNaC::expand(P - Q).is_zero()) continue;
+    ++compared;
+    const ex A = P / D, B = Q / D, C = R / D;
+    const std::vector<std::pair<ex, ex>> same{
+        {A - B, (P - Q) / D},
+        {(A + B) / 2, (P + Q) / (2 * D)},
+        {A * B - C * C, (P * Q - R * R) / GiNaC::pow(D, 2)},
+        {GiNaC::pow((A - B) / 2, 2) + C * C,
+         GiNaC::expand(GiNaC::pow(P - Q, 2) + 4 * R * R) / (4 * GiNaC::pow(D, 2))},
+        {A - B + 1 / M, (P * M - Q * M + D) / (D * M)},  // two denominators
+    };
+    for (const auto& [written, by_hand] : same) {
+      INFO("written " << written << "\nby hand " << by_hand);
+      REQUIRE(to_text(simplify(written), table) == to_text(simplify(by_hand), table));
+    }
+  }
+  REQUIRE(compared > 30);
+}
