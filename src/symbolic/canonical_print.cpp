@@ -40,7 +40,22 @@ enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
 
 // A printed form and how tightly it binds (Prec).
 using Printed = std::pair<std::string, int>;
-using PrintMemo = std::map<ex, Printed, GiNaC::ex_is_less>;
+
+// A term of a sum as sign and magnitude; `key` is the magnitude's text, by which terms sort.
+struct Term {
+  bool negative;
+  std::string key;
+  std::string magnitude;
+};
+
+// What a printer keeps of each subexpression for one table and style: its printed form, and
+// for a sum its sorted terms (asked for again by the sum's sign, its rank as a factor and its
+// printing: a 26-term sum's terms were sorted four times, each negating every negative term).
+struct PrintMemo {
+  std::map<ex, Printed, GiNaC::ex_is_less> printed;
+  std::map<ex, std::vector<Term>, GiNaC::ex_is_less> sums;
+  std::size_t size() const { return printed.size() + sums.size(); }
+};
 
 // Each subexpression is printed once per table and style: sorting and sign rules look at a
 // factor's or a term's text again and again, which without this took time exponential in the
@@ -98,9 +113,9 @@ class Printer {
   }
 
   Printed print_prec(const ex& e) {
-    if (const auto it = memo_.find(e); it != memo_.end()) return it->second;
+    if (const auto it = memo_.printed.find(e); it != memo_.printed.end()) return it->second;
     auto printed = print_prec_uncached(e);
-    memo_.emplace(e, printed);
+    memo_.printed.emplace(e, printed);
     return printed;
   }
 
@@ -177,13 +192,12 @@ class Printer {
   // The terms of a sum, each as sign and magnitude, sorted by the text of the magnitude alone.
   // Sorting ignores signs so that s and -s list their terms in the same order: GiNaC's normal()
   // and factor() return either, depending on hash values that change from run to run (ASLR).
-  struct Term {
-    bool negative;
-    std::string key;
-    std::string magnitude;
-  };
+  const std::vector<Term>& sum_terms(const ex& e) {
+    if (const auto it = memo_.sums.find(e); it != memo_.sums.end()) return it->second;
+    return memo_.sums.emplace(e, sum_terms_uncached(e)).first->second;
+  }
 
-  std::vector<Term> sum_terms(const ex& e) {
+  std::vector<Term> sum_terms_uncached(const ex& e) {
     std::vector<Term> terms;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       const ex t = e.op(i);
@@ -244,7 +258,7 @@ class Printer {
 
   // A sum whose first term is negative prints as -(...), so s and -s differ only by that sign.
   std::string print_sum(const ex& e) {
-    const auto terms = sum_terms(e);
+    const auto& terms = sum_terms(e);
     if (!terms.front().negative) return join_terms(terms, false);
     return "-" + paren(join_terms(terms, true));
   }

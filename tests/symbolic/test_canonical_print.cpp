@@ -138,3 +138,20 @@ TEST_CASE("printing many expressions empties what is kept and still prints each 
   REQUIRE(to_latex(m * GiNaC::pow(a, 2) / 6, t) == first);
   REQUIRE(first == "\\frac{m a^{2}}{6}");
 }
+
+TEST_CASE("a sum's terms are kept sorted for the table they were sorted with, and no other") {
+  // A sum's sorted terms are kept, like its printed form: they decide its sign and its place
+  // among factors, and their order follows the table (c*b once c is declared, b*c before).
+  const GiNaC::symbol b("b"), c("c"), alpha("alpha");
+  const GiNaC::ex sum = GiNaC::pow(b, 2) - b * c;
+  const GiNaC::ex product = alpha * GiNaC::pow(sum, 3);
+  SymbolTable t;
+  t.declare("a", "a", SymbolSign::positive);
+  REQUIRE(to_text(sum, t) == "-(b*c - b^2)");
+  REQUIRE(to_text(product, t) == "-alpha*(b*c - b^2)^3");
+  REQUIRE(to_latex(product, t) == "-\\alpha \\left(b c - b^{2}\\right)^{3}");
+  t.declare("c", "c", SymbolSign::positive);
+  REQUIRE(to_text(sum, t) == "b^2 - c*b");
+  REQUIRE(to_text(product, t) == "alpha*(b^2 - c*b)^3");
+  REQUIRE(to_latex(product, t) == "\\alpha \\left(b^{2} - c b\\right)^{3}");
+}
