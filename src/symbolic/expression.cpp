@@ -569,15 +569,37 @@ struct PythagoreanReduction : GiNaC::map_function {
   }
 };
 
-GiNaC::ex reduced(const GiNaC::ex& polynomial, bool cos_to_sin) {
-  PythagoreanReduction r(cos_to_sin);
-  return GiNaC::expand(r(GiNaC::expand(polynomial)));
-}
-
 bool has_function(const GiNaC::ex& e) {
   if (GiNaC::is_a<GiNaC::function>(e)) return true;
   for (std::size_t i = 0; i < e.nops(); ++i) {
     if (has_function(e.op(i))) return true;
+  }
+  return false;
+}
+
+// Where neither occurs, both reductions leave a polynomial as it is (expanded).
+bool has_sin_or_cos(const GiNaC::ex& e) {
+  using namespace GiNaC;  // is_ex_the_function is a macro that names GiNaC's function ids
+  if (is_ex_the_function(e, sin) || is_ex_the_function(e, cos)) return true;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (has_sin_or_cos(e.op(i))) return true;
+  }
+  return false;
+}
+
+GiNaC::ex reduced(const GiNaC::ex& polynomial, bool cos_to_sin) {
+  // The reduction rebuilds every node of the expression (GiNaC's map() does), to no effect
+  // where there is nothing to reduce: most of the catalog's expressions.
+  if (!has_sin_or_cos(polynomial)) return GiNaC::expand(polynomial);
+  PythagoreanReduction r(cos_to_sin);
+  return GiNaC::expand(r(GiNaC::expand(polynomial)));
+}
+
+// True if e has a power with a negative integer exponent (a written denominator) anywhere.
+bool has_written_denominator(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::negint)) return true;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (has_written_denominator(e.op(i))) return true;
   }
   return false;
 }
@@ -607,8 +629,10 @@ std::pair<GiNaC::ex, GiNaC::ex> written_fraction(const GiNaC::ex& term) {
 // denominator instead of one for each term and one for the sum: the three-atom molecule's
 // ((A - B)/2)^2 + C^2 took 2.8 ms, written so 2.2 ms.
 GiNaC::ex over_one_denominator(const GiNaC::ex& e) {
-  if (!GiNaC::is_a<GiNaC::add>(e) && !GiNaC::is_a<GiNaC::mul>(e) &&
-      !GiNaC::is_a<GiNaC::power>(e)) {
+  // Without a denominator nothing is rewritten: e as it is, not rebuilt node by node by map().
+  if ((!GiNaC::is_a<GiNaC::add>(e) && !GiNaC::is_a<GiNaC::mul>(e) &&
+       !GiNaC::is_a<GiNaC::power>(e)) ||
+      !has_written_denominator(e)) {
     return e;
   }
   const GiNaC::ex inner = e.map([](const GiNaC::ex& x) { return over_one_denominator(x); });
@@ -634,9 +658,13 @@ GiNaC::ex simplify(const GiNaC::ex& e) {
   // form of the same rational function, as over_one_denominator's, gives the same).
   const GiNaC::ex nd = GiNaC::numer_denom(GiNaC::normal(over_one_denominator(e)));
   std::vector<GiNaC::ex> candidates{
-      reduced(nd.op(0), true) / reduced(nd.op(1), true),    // cos^2 -> 1 - sin^2
-      reduced(nd.op(0), false) / reduced(nd.op(1), false),  // sin^2 -> 1 - cos^2
+      reduced(nd.op(0), true) / reduced(nd.op(1), true),  // cos^2 -> 1 - sin^2
   };
+  // sin^2 -> 1 - cos^2, which differs from the first only where sin or cos occurs (a copy of
+  // the first could never be shorter than it).
+  if (has_sin_or_cos(nd)) {
+    candidates.push_back(reduced(nd.op(0), false) / reduced(nd.op(1), false));
+  }
   if (!has_function(e)) candidates.push_back(tidy(e));  // factored numerator and denominator
   static const SymbolTable no_table;
   GiNaC::ex best = candidates[0];

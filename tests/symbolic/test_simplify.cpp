@@ -57,3 +57,22 @@ TEST_CASE("simplify gives one form for a rational function however it is written
   }
   REQUIRE(compared > 30);
 }
+
+TEST_CASE("simplify reduces by sin^2 + cos^2 = 1 wherever sin or cos occurs, in either direction") {
+  // Expressions without sin or cos skip the reductions (they would change nothing); these have
+  // them, nested in sums, powers and denominators, and must still be reduced.
+  const SymbolTable table;
+  const ex s = GiNaC::sin(alpha), c = GiNaC::cos(alpha);
+  const auto text = [&](const ex& e) { return to_text(simplify(e), table); };
+  REQUIRE(text(M * GiNaC::pow(s, 2) + M * GiNaC::pow(c, 2)) == "M");
+  REQUIRE(text(M * GiNaC::pow(c, 2) - M) == "-M*sin(alpha)^2");
+  REQUIRE(text(m1 - m1 * GiNaC::pow(s, 2)) == "m1*cos(alpha)^2");
+  REQUIRE(text((GiNaC::pow(s, 2) + GiNaC::pow(c, 2)) / (M + m1 * GiNaC::pow(c, 4))) ==
+          text(1 / (M + m1 * GiNaC::pow(c, 4))));
+  // Expanded, not factored: an expression with functions has no factored candidate.
+  REQUIRE(text(GiNaC::pow(M * GiNaC::pow(s, 2) + M * GiNaC::pow(c, 2) - m1, 2)) ==
+          "-(2*M*m1 - M^2 - m1^2)");
+  // Without sin or cos: one fraction, cancelled, and factored where that is shorter.
+  REQUIRE(text((GiNaC::pow(M, 2) - GiNaC::pow(m1, 2)) / (M + m1)) == "M - m1");
+  REQUIRE(text(GiNaC::atan(M) * GiNaC::atan(M) / M) == "atan(M)^2/M");
+}
