@@ -36,7 +36,7 @@ SymMassProperties placed(const GiNaC::ex& mass, const GiNaC::matrix& I_cm, const
 /// Sum of parts about the same O.
 SymMassProperties combine(const std::vector<SymMassProperties>& parts);
 
-/// Each entry normal()-ised.
+/// Each entry simplified (see simplify()); an entry equal to its mirror image is simplified once.
 GiNaC::matrix normalized(const GiNaC::matrix& m);
 
 }  // namespace wobble::sym

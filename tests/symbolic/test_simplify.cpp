@@ -5,6 +5,7 @@
 #include <random>
 
 #include "symbolic/canonical_print.hpp"
+#include "symbolic/inertia_sym.hpp"
 
 using namespace wobble::sym;
 using GiNaC::ex;
@@ -75,4 +76,34 @@ TEST_CASE("simplify reduces by sin^2 + cos^2 = 1 wherever sin or cos occurs, in 
   // Without sin or cos: one fraction, cancelled, and factored where that is shorter.
   REQUIRE(text((GiNaC::pow(M, 2) - GiNaC::pow(m1, 2)) / (M + m1)) == "M - m1");
   REQUIRE(text(GiNaC::atan(M) * GiNaC::atan(M) / M) == "atan(M)^2/M");
+}
+
+TEST_CASE("normalized() simplifies every entry, a mirrored one once, an unmirrored one itself") {
+  // A symmetric tensor's lower entry is taken from the upper; a matrix whose lower entry differs
+  // from the upper (or is not square) has each entry simplified on its own.
+  const SymbolTable table;
+  const ex D = M + m1;
+  const ex upper = M * d1 / D - m1 * d1 / D, other = (M - m1) / D;
+  GiNaC::matrix m(3, 3);
+  m(0, 1) = m(1, 0) = upper;
+  m(0, 2) = other;
+  m(2, 0) = other * d1;
+  m(1, 1) = GiNaC::pow(GiNaC::sin(alpha), 2) + GiNaC::pow(GiNaC::cos(alpha), 2);
+  const GiNaC::matrix out = normalized(m);
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = 0; j < 3; ++j) {
+      INFO(i << ", " << j);
+      REQUIRE(to_text(out(i, j), table) == to_text(simplify(m(i, j)), table));
+    }
+  }
+  REQUIRE(to_text(out(1, 0), table) == "d1*(M - m1)/(M + m1)");
+  REQUIRE(to_text(out(2, 0), table) == "d1*(M - m1)/(M + m1)");
+  REQUIRE(to_text(out(0, 2), table) == "(M - m1)/(M + m1)");
+  REQUIRE(to_text(out(1, 1), table) == "1");
+  GiNaC::matrix wide(2, 3);
+  wide(1, 0) = upper;
+  wide(0, 1) = other;
+  const GiNaC::matrix wide_out = normalized(wide);
+  REQUIRE(to_text(wide_out(1, 0), table) == "d1*(M - m1)/(M + m1)");
+  REQUIRE(to_text(wide_out(0, 1), table) == "(M - m1)/(M + m1)");
 }
