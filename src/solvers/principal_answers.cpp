@@ -229,7 +229,7 @@ PrincipalAnswers principal_answers(const GiNaC::matrix& I_exact, const Mat3& I_n
       sign = values.col(0).cross(values.col(1)).dot(v) < 0.0 ? -1 : 1;
     }
     values.col(k) = static_cast<double>(sign) * v;
-    for (unsigned i = 0; i < 3; ++i) columns(i, k) = GiNaC::normal(sign * (*exact_axes[k])[i]);
+    for (unsigned i = 0; i < 3; ++i) columns(i, k) = sym::normal_kept(sign * (*exact_axes[k])[i]);
     // Agreement with the numeric solver; an axis is as good as eps |I| over the nearest gap.
     const double gap = std::min(k > 0 ? pa.moments[k] - pa.moments[k - 1] : INFINITY,
                                 k < 2 ? pa.moments[k + 1] - pa.moments[k] : INFINITY);

@@ -509,6 +509,22 @@ bool is_identically_zero(const GiNaC::ex& e) {
                    [&] { return is_identically_zero_once(e); });
 }
 
+GiNaC::ex normal_kept(const GiNaC::ex& e) {
+  // normal() maps itself over a function's arguments and stands a symbol in for the function;
+  // a number c times it gives c*symbol over 1 (c an integer) or over c's denominator, so the
+  // result is c*f(normal(x)) (a test compares both with GiNaC's).
+  if (GiNaC::is_a<GiNaC::function>(e)) {
+    return e.map([](const GiNaC::ex& x) { return normal_kept(x); });
+  }
+  if (GiNaC::is_a<GiNaC::mul>(e) && e.nops() == 2 && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+      GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_rational() &&
+      GiNaC::is_a<GiNaC::function>(e.op(0))) {
+    return normal_kept(e.op(0)) * e.op(1);
+  }
+  thread_local Memo<GiNaC::ex> known;
+  return known.get(e, [&] { return GiNaC::normal(e); });
+}
+
 GiNaC::ex simplified_sqrt(const GiNaC::ex& e) {
   // factor() works on polynomials: stand symbols in for sin(alpha) etc., and factor numerator
   // and denominator separately. numer_denom() is normal() without the division (see simplify).

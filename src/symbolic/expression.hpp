@@ -105,6 +105,11 @@ bool is_identically_zero(const GiNaC::ex& e);
 /// (sqrt(2*m^2*a^4) -> sqrt(2)*m*a^2), which GiNaC does not do by itself.
 GiNaC::ex simplified_sqrt(const GiNaC::ex& e);
 
+/// GiNaC's normal(e), exactly, with the normal forms of function arguments kept across calls:
+/// normal() of c*f(x) (c a number) is c*f(normal(x)), and a principal axis in a plane is made
+/// of sin(theta) and cos(theta) of one angle, whose arguments normal() normalised for each.
+GiNaC::ex normal_kept(const GiNaC::ex& e);
+
 /// A neat form: normal(), then the numerator and denominator factored.
 GiNaC::ex tidy(const GiNaC::ex& e);
 

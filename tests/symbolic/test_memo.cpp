@@ -95,3 +95,25 @@ TEST_CASE("whether an expression is zero is kept for it and its negation, and no
     CHECK_FALSE(wobble::sym::is_identically_zero(b - a));
   }
 }
+
+TEST_CASE("normal_kept is GiNaC's normal, exactly, however often it is asked") {
+  // A principal axis in a plane: sin and cos of half an atan2 of two rational functions, with a
+  // sign, a number, in sums and powers; normal_kept computes c*f(normal(x)) for c*f(x) itself.
+  const GiNaC::possymbol M("M"), m1("m1"), d1("d1");
+  const GiNaC::realsymbol alpha("alpha");
+  const GiNaC::ex D = M + m1;
+  const GiNaC::ex X = (m1 * d1 * GiNaC::sin(alpha) - M * d1 * d1) / D + m1 / (2 * D);
+  const GiNaC::ex Y = (M * d1 - m1 * d1 * GiNaC::cos(alpha)) / D;
+  const GiNaC::ex theta = GiNaC::atan2(X, Y) / 2;
+  const GiNaC::ex s = GiNaC::sin(theta), c = GiNaC::cos(theta);
+  const std::vector<GiNaC::ex> shapes{
+      s, c, -s, -c, 3 * s, GiNaC::numeric(-1, 2) * c, GiNaC::numeric(5, 3) * s,
+      GiNaC::pow(c, 2), s * c, s + c / D, GiNaC::sqrt(X * X + Y * Y) / D, X, Y,
+      GiNaC::sin(GiNaC::cos(X) / 2), GiNaC::atan2(-2 * X, Y - X)};
+  for (int round = 0; round < 2; ++round) {  // the second from what was kept
+    for (const auto& e : shapes) {
+      INFO("round " << round << ": " << e);
+      REQUIRE(wobble::sym::normal_kept(e).is_equal(GiNaC::normal(e)));
+    }
+  }
+}
