@@ -1,5 +1,7 @@
 #include "symbolic/inertia_sym.hpp"
 
+#include <cstddef>
+
 #include "symbolic/expression.hpp"
 
 namespace wobble::sym {
@@ -46,11 +48,11 @@ SymMassProperties combine(const std::vector<SymMassProperties>& parts) {
   GiNaC::matrix I(3, 3);
   for (const auto& p : parts) {
     total.mass += p.mass;
-    for (int i = 0; i < 3; ++i) first[i] += p.mass * p.r_cm[i];
+    for (std::size_t i = 0; i < 3; ++i) first[i] += p.mass * p.r_cm[i];
     I = I.add(p.I_O);
   }
   total.mass = simplify(total.mass);
-  for (int i = 0; i < 3; ++i) total.r_cm[i] = simplify(first[i] / total.mass);
+  for (std::size_t i = 0; i < 3; ++i) total.r_cm[i] = simplify(first[i] / total.mass);
   total.I_O = normalized(I);
   return total;
 }

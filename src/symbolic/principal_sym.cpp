@@ -13,9 +13,9 @@ using GiNaC::ex;
 // Index pairs of the products of inertia that are not identically zero.
 std::vector<std::pair<int, int>> nonzero_products(const GiNaC::matrix& I) {
   std::vector<std::pair<int, int>> out;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = i + 1; j < 3; ++j) {
-      if (!is_identically_zero(I(i, j))) out.emplace_back(i, j);
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = i + 1; j < 3; ++j) {
+      if (!is_identically_zero(I(i, j))) out.emplace_back(static_cast<int>(i), static_cast<int>(j));
     }
   }
   return out;
