@@ -587,22 +587,26 @@ struct PythagoreanReduction : GiNaC::map_function {
   }
 };
 
-bool has_function(const GiNaC::ex& e) {
-  if (GiNaC::is_a<GiNaC::function>(e)) return true;
+// True if `holds` is true of e or of any subexpression of e.
+template <class Predicate>
+bool any_node(const GiNaC::ex& e, const Predicate& holds) {
+  if (holds(e)) return true;
   for (std::size_t i = 0; i < e.nops(); ++i) {
-    if (has_function(e.op(i))) return true;
+    if (any_node(e.op(i), holds)) return true;
   }
   return false;
 }
 
+bool has_function(const GiNaC::ex& e) {
+  return any_node(e, [](const GiNaC::ex& x) { return GiNaC::is_a<GiNaC::function>(x); });
+}
+
 // Where neither occurs, both reductions leave a polynomial as it is (expanded).
 bool has_sin_or_cos(const GiNaC::ex& e) {
-  using namespace GiNaC;  // is_ex_the_function is a macro that names GiNaC's function ids
-  if (is_ex_the_function(e, sin) || is_ex_the_function(e, cos)) return true;
-  for (std::size_t i = 0; i < e.nops(); ++i) {
-    if (has_sin_or_cos(e.op(i))) return true;
-  }
-  return false;
+  return any_node(e, [](const GiNaC::ex& x) {
+    using namespace GiNaC;  // is_ex_the_function is a macro that names GiNaC's function ids
+    return is_ex_the_function(x, sin) || is_ex_the_function(x, cos);
+  });
 }
 
 GiNaC::ex reduced(const GiNaC::ex& polynomial, bool cos_to_sin) {
@@ -615,11 +619,9 @@ GiNaC::ex reduced(const GiNaC::ex& polynomial, bool cos_to_sin) {
 
 // True if e has a power with a negative integer exponent (a written denominator) anywhere.
 bool has_written_denominator(const GiNaC::ex& e) {
-  if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::negint)) return true;
-  for (std::size_t i = 0; i < e.nops(); ++i) {
-    if (has_written_denominator(e.op(i))) return true;
-  }
-  return false;
+  return any_node(e, [](const GiNaC::ex& x) {
+    return GiNaC::is_a<GiNaC::power>(x) && x.op(1).info(GiNaC::info_flags::negint);
+  });
 }
 
 // A term as numerator and denominator, as written: the factors with a negative integer power
