@@ -63,6 +63,20 @@ TEST_CASE("a step shortened to land on the end of a run is not remembered") {
         without.next_factor(0.9, kH, kExponent, false));
 }
 
+TEST_CASE("a landing step in the steady band keeps the step and is not remembered either") {
+  StepController with, without;
+  (void)with.next_factor(0.6, kH, kExponent, false);
+  (void)without.next_factor(0.6, kH, kExponent, false);
+  // In the band (0.55 does not grow on 0.6), shortened to land: kept, and not remembered, so
+  // 0.64 next is measured against 0.6, a growth within 10%: kept again.
+  CHECK(with.next_factor(0.55, 0.5 * kH, kExponent, true) == 1.0);
+  CHECK(with.next_factor(0.64, kH, kExponent, false) == 1.0);
+  // Remembered, 0.55 would make 0.64 a growth of 16%: the prediction shrinks the step.
+  CHECK(without.next_factor(0.55, kH, kExponent, false) == 1.0);
+  CHECK_THAT(without.next_factor(0.64, kH, kExponent, false),
+             WithinULP(0.9 * std::pow(0.55 / (0.64 * 0.64), kExponent), 4));
+}
+
 TEST_CASE("near the separatrix the prediction saves the rejections before each flip") {
   // The bench's P3: a free body near the separatrix flips every ~70 s; the classical rule had
   // 13 of Verner 9(8)'s 132 tries rejected at tolerance 1e-9, four or so before each of the
