@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -271,6 +273,8 @@ void write_bench_plot(const BenchReport& r, const std::filesystem::path& out) {
             "set multiplot layout {},2 title \"work-precision: error against run time\"\n",
             (r.problems.size() + 1) / 2);
         g += "set logscale xy\nset format x \"10^{%L}\"\nset format y \"10^{%L}\"\nset grid\n";
+        // Room below the lowest point (an error of 0 is drawn at ε/2, on the axis otherwise).
+        g += "set offsets 0, 0, graph 0.04, graph 0.06\n";
         // gnuplot's linetypes repeat their eight colours from 9 on (split4 took vern9's yellow):
         // the styles past eight get colours of their own, keeping their point types.
         int linetype = 9;
@@ -287,25 +291,32 @@ void write_bench_plot(const BenchReport& r, const std::filesystem::path& out) {
               methods.push_back(run.method);
           }
           g += fmt::format("set title \"{}\" noenhanced\nplot ", gnuplot_quote(p.id));
-          for (std::size_t i = 0; i < methods.size(); ++i) {
-            bool peer = false;
-            std::string data;
+          // An error of 0 (the closed form equal to 50 digits in every double it gives) has no
+          // place on a log scale: it is drawn at ε/2 (half an ulp of 1), below every other point, and
+          // its title says so.
+          constexpr double kZeroDrawnAt = std::numeric_limits<double>::epsilon() / 2;
+          const auto runs_of = [&](const std::string& m) {
+            std::vector<const bench::Run*> found;
             for (const auto& run : r.runs) {
-              if (run.problem != p.id || run.method != methods[i] || !(run.error > 0)) continue;
-              data += fmt::format("{:.6e} {:.6e}\n", run.time_s, run.error);
-              peer = run.peer;
+              if (run.problem == p.id && run.method == m && run.error >= 0) found.push_back(&run);
             }
+            return found;
+          };
+          for (std::size_t i = 0; i < methods.size(); ++i) {
+            const auto runs = runs_of(methods[i]);
+            const bool peer = !runs.empty() && runs.front()->peer;
+            const bool zero = std::any_of(runs.begin(), runs.end(),
+                                          [](const bench::Run* run) { return run->error == 0; });
             g += fmt::format(
-                "{}'-' using 1:2 with linespoints lw 2 lt {} {} title \"{}\" noenhanced",
+                "{}'-' using 1:2 with linespoints lw 2 lt {} {} title \"{}{}\" noenhanced",
                 i ? ", " : "", style_of(methods[i]), peer ? "dt 2" : "dt 1",
-                gnuplot_quote(methods[i]));
-            (void)data;
+                gnuplot_quote(methods[i]), zero ? " (0, at ε/2)" : "");
           }
           g += "\n";
           for (const auto& m : methods) {
-            for (const auto& run : r.runs) {
-              if (run.problem == p.id && run.method == m && run.error > 0)
-                g += fmt::format("{:.6e} {:.6e}\n", run.time_s, run.error);
+            for (const bench::Run* run : runs_of(m)) {
+              g += fmt::format("{:.6e} {:.6e}\n", run->time_s,
+                               run->error > 0 ? run->error : kZeroDrawnAt);
             }
             g += "e\n";
           }
