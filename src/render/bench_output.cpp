@@ -292,8 +292,8 @@ void write_bench_plot(const BenchReport& r, const std::filesystem::path& out) {
           }
           g += fmt::format("set title \"{}\" noenhanced\nplot ", gnuplot_quote(p.id));
           // An error of 0 (the closed form equal to 50 digits in every double it gives) has no
-          // place on a log scale: it is drawn at ε/2 (half an ulp of 1), below every other point, and
-          // its title says so.
+          // place on a log scale: it is drawn at ε/2 (half an ulp of 1), below every other
+          // point, and its title says so.
           constexpr double kZeroDrawnAt = std::numeric_limits<double>::epsilon() / 2;
           const auto runs_of = [&](const std::string& m) {
             std::vector<const bench::Run*> found;
