@@ -262,7 +262,6 @@ RungeKutta::RungeKutta(const RigidBodyModel& model, RkMethod method, double tol_
   if (!std::isfinite(momentum_scale) || !(momentum_scale > 0.0))
     throw std::invalid_argument("Runge-Kutta: momentum scale must be finite and > 0");
   inverse_scale_ << 1 / momentum_scale, 1 / momentum_scale, 1 / momentum_scale, 1, 1, 1, 1;
-  inverse_tol_ = 1 / tol_or_step;
 }
 
 void RungeKutta::advance(State7& y, double t0, double t1) {
@@ -353,6 +352,9 @@ void RungeKutta::sample_dense(State7& y, double t0, std::span<const double> time
 template <class T, class Output>
 void RungeKutta::advance_adaptive(State7& y, double t0, double t1, const Output& output) {
   const double span = t1 - t0, tol = tol_or_step_;
+  // The error is multiplied by 1 / tol, not divided by tol: a division's latency, on the path
+  // from a step's last stage to the next step's size, showed in the time of a whole run.
+  const double inverse_tol = 1 / tol;
   constexpr double expo = 1.0 / (T::kErrorOrder + 1);
   if (h_ == 0.0) {
     // First trial step: a small fraction of the time the body needs to turn by one radian.
@@ -378,9 +380,7 @@ void RungeKutta::advance_adaptive(State7& y, double t0, double t1, const Output&
       ++cost_.rhs_evals;
       k0_valid = true;
     }
-    // Multiplied by 1 / tol, not divided by tol: a division's latency, on the path from a
-    // step's last stage to the next step's size, showed in the time of a whole run.
-    const double e = rk_step<T>(rhs_, y, h, k, y_new, inverse_scale_, cost_) * inverse_tol_;
+    const double e = rk_step<T>(rhs_, y, h, k, y_new, inverse_scale_, cost_) * inverse_tol;
     const double factor = controller_.next_factor(e, h, expo, last);
     if (e <= 1.0) {
       const double t_new = last ? t1 : t_now + h;

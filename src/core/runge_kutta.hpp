@@ -74,7 +74,6 @@ class RungeKutta {
                     const SampleSink& at);
 
   State7 inverse_scale_;
-  double inverse_tol_ = 1.0;  ///< 1 / tol (adaptive)
   double h_ = 0.0;  ///< next trial step (adaptive), 0 until the first call
   StepController controller_;
   IntegrationCost cost_;

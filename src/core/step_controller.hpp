@@ -56,7 +56,8 @@ class StepController {
     h_last_ = h;
     e_last_ = std::max(e, kSmallestLastError);
   }
-  /// Every step outside the steady band: a rejection, the first step, a changed error.
+  /// Every step outside the steady band: a rejection, a non-finite error, an error below the
+  /// band or grown past it.
   double changed_factor(double e, double h, double exponent, bool landing);
 
   double h_last_ = 0.0;    ///< the last accepted, unshortened step; 0 before the first

@@ -295,15 +295,14 @@ void write_bench_plot(const BenchReport& r, const std::filesystem::path& out) {
           // place on a log scale: it is drawn at ε/2 (half an ulp of 1), below every other
           // point, and its title says so.
           constexpr double kZeroDrawnAt = std::numeric_limits<double>::epsilon() / 2;
-          const auto runs_of = [&](const std::string& m) {
-            std::vector<const bench::Run*> found;
-            for (const auto& run : r.runs) {
-              if (run.problem == p.id && run.method == m && run.error >= 0) found.push_back(&run);
-            }
-            return found;
-          };
+          std::vector<std::vector<const bench::Run*>> runs_by_method(methods.size());
+          for (const auto& run : r.runs) {
+            const auto m = std::find(methods.begin(), methods.end(), run.method);
+            if (run.problem == p.id && m != methods.end() && run.error >= 0)
+              runs_by_method[static_cast<std::size_t>(m - methods.begin())].push_back(&run);
+          }
           for (std::size_t i = 0; i < methods.size(); ++i) {
-            const auto runs = runs_of(methods[i]);
+            const auto& runs = runs_by_method[i];
             const bool peer = !runs.empty() && runs.front()->peer;
             const bool zero = std::any_of(runs.begin(), runs.end(),
                                           [](const bench::Run* run) { return run->error == 0; });
@@ -313,8 +312,8 @@ void write_bench_plot(const BenchReport& r, const std::filesystem::path& out) {
                 gnuplot_quote(methods[i]), zero ? " (0, at ε/2)" : "");
           }
           g += "\n";
-          for (const auto& m : methods) {
-            for (const bench::Run* run : runs_of(m)) {
+          for (const auto& runs : runs_by_method) {
+            for (const bench::Run* run : runs) {
               g += fmt::format("{:.6e} {:.6e}\n", run->time_s,
                                run->error > 0 ? run->error : kZeroDrawnAt);
             }
