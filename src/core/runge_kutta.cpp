@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
@@ -26,11 +25,10 @@ using namespace rk_tableau;
 template <class T>
 using Stages = std::array<State7, T::S>;
 
-// Which coefficients: a row of the tableau (A[R], B, E or E3), or of a dense output (column R
-// of Dormand-Prince's P, row R of DOP853's extra stages or of its D). Named by selector and
-// index, not passed as a reference template argument: clang 14 refuses a subobject such as
-// T::A[I] there.
-enum class Coefficients { a, b, e, e3, dense_p, dense_extra, dense_d };
+// Which coefficients: a row of the tableau (A[R], B, E or E3), or of DOP853's dense output (row
+// R of its extra stages or of its D). Named by selector and index, not passed as a reference
+// template argument: clang 14 refuses a subobject such as T::A[I] there.
+enum class Coefficients { a, b, e, e3, dense_extra, dense_d };
 
 template <class T, Coefficients W, std::size_t R, std::size_t J>
 constexpr double coefficient() {
@@ -42,8 +40,6 @@ constexpr double coefficient() {
     return T::E[J];
   } else if constexpr (W == Coefficients::e3) {
     return T::E3[J];
-  } else if constexpr (W == Coefficients::dense_p) {
-    return T::P[J][R];
   } else if constexpr (W == Coefficients::dense_extra) {
     return T::kExtraA[R][J];
   } else {
@@ -151,72 +147,104 @@ void advance_fixed(const RigidBodyRhs& f, State7& y, double span, double h_max,
 }
 
 // Dense output over one accepted step [t, t + h]: y(t + x h) for 0 <= x <= 1, from the step's
-// stages, so that output times need not end steps. Polynomial in x with vector coefficients c in
-// Hairer's nested form y_old + x (c0 + (1-x) (c1 + x (c2 + (1-x) (c3 + ...)))): c0 = y_new -
-// y_old, c1 and c2 from the end slopes (the cubic Hermite interpolant), the rest from the stages.
-// N coefficients (4 for Dormand-Prince, 7 for DOP853), fixed at compile time so that nothing
-// else is stored or zeroed: a step that holds a sample builds one (for 1e5 samples over a run
-// of Dormand-Prince, building and evaluating them is most of what the samples cost).
-template <std::size_t N>
-struct StepInterpolant {
-  State7 y_old;
-  std::array<State7, N> c;
+// stages, so that output times need not end steps. DenseStep<T> is made for a step that holds a
+// sample and lives while its samples are taken (it may keep references to the step's state and
+// stages); at(x) is the interpolant at x.
+template <class T>
+class DenseStep;
+
+// Dormand-Prince: Shampine's quartic in the tableau's own form, y(t + x h) = y_old + h sum_j
+// w_j(x) k_j with w_j(x) = sum_p P[j][p] x^(p+1): the seven scalar polynomials side by side, then
+// one weighted sum of six stages (k_2's weight is zero) per sample; nothing is built per step.
+// When samples are dense enough to cost anything, most steps hold at most one (1e5 over P2's
+// 186,000 steps), and then building Hairer's nested coefficients first (a Hermite part and one
+// weighted sum) and evaluating them did more work (counted on P2 with 1e5 samples: 296 -> 226
+// instructions per sample). With many samples in a step the two cost about the same.
+template <>
+class DenseStep<Dopri5> {
+ public:
+  DenseStep(const RigidBodyRhs&, const State7& y_old, const State7&, double h,
+            const Stages<Dopri5>& k, IntegrationCost&)
+      : y_old_(y_old), h_(h), k_(k) {}
+
+  State7 at(double x) const { return sum(x, kStagesUsed); }
+
+ private:
+  // Every stage but k_2, whose row is zero.
+  static constexpr std::index_sequence<0, 2, 3, 4, 5, 6> kStagesUsed{};
+  static_assert(Dopri5::S == 7 && Dopri5::P[1] == std::array<double, 4>{});
+  using Weights = Eigen::Matrix<double, Dopri5::S, 1>;
+
+  // Column p of P: the weights' polynomials are evaluated side by side.
+  template <std::size_t... J>
+  static Weights column(std::size_t p, std::index_sequence<J...>) {
+    return Weights(Dopri5::P[J][p]...);
+  }
+
+  template <std::size_t... J>
+  State7 sum(double x, std::index_sequence<J...>) const {
+    constexpr auto all = std::make_index_sequence<Dopri5::S>{};
+    const Weights w =
+        x * (column(0, all) + x * (column(1, all) + x * (column(2, all) + x * column(3, all))));
+    return y_old_ + h_ * (... + (w[J] * k_[J]));
+  }
+
+  const State7& y_old_;
+  double h_;
+  const Stages<Dopri5>& k_;
+};
+
+// DOP853: three more stages, then seven vector coefficients c in Hairer's nested form y_old +
+// x (c0 + (1-x) (c1 + x (c2 + (1-x) (c3 + ...)))): c0 = y_new - y_old, c1 and c2 from the end
+// slopes (the cubic Hermite interpolant), c3 .. c6 from D; built once per step that holds a
+// sample (three evaluations against the step's twelve, and seven weighted sums of 16 stages).
+template <>
+class DenseStep<Dop853> {
+  using T = Dop853;
+
+ public:
+  DenseStep(const RigidBodyRhs& f, const State7& y_old, const State7& y_new, double h,
+            const Stages<T>& k, IntegrationCost& cost)
+      : y_old_(y_old) {
+    std::array<State7, T::kExtended> K;
+    std::copy(k.begin(), k.end(), K.begin());
+    K[T::S] = f(y_old + h * combine<T, Coefficients::dense_extra, 0>(
+                                        K, std::make_index_sequence<T::S>{}));
+    K[T::S + 1] = f(y_old + h * combine<T, Coefficients::dense_extra, 1>(
+                                            K, std::make_index_sequence<T::S + 1>{}));
+    K[T::S + 2] = f(y_old + h * combine<T, Coefficients::dense_extra, 2>(
+                                            K, std::make_index_sequence<T::S + 2>{}));
+    cost.rhs_evals += static_cast<std::int64_t>(T::kExtraA.size());
+    for (int j = 0; j < 7; ++j) {  // one pass over the components, as in axpy()
+      const double dy = y_new.data()[j] - y_old.data()[j];
+      const double c1 = h * k[0].data()[j] - dy;
+      c_[0].data()[j] = dy;
+      c_[1].data()[j] = c1;
+      c_[2].data()[j] = dy - h * k[T::S - 1].data()[j] - c1;
+    }
+    constexpr auto all = std::make_index_sequence<T::kExtended>{};
+    c_[3] = h * combine<T, Coefficients::dense_d, 0>(K, all);
+    c_[4] = h * combine<T, Coefficients::dense_d, 1>(K, all);
+    c_[5] = h * combine<T, Coefficients::dense_d, 2>(K, all);
+    c_[6] = h * combine<T, Coefficients::dense_d, 3>(K, all);
+  }
 
   State7 at(double x) const {
+    constexpr std::size_t N = 7;
     const double x1 = 1.0 - x;  // the factor of every second level
     State7 y;
     for (int j = 0; j < 7; ++j) {  // written out, as in axpy(), for the same reason
-      double acc = c[N - 1].data()[j] * ((N - 1) % 2 == 0 ? x : x1);
-      for (std::size_t i = N - 1; i-- > 0;) acc = (acc + c[i].data()[j]) * (i % 2 == 0 ? x : x1);
-      y.data()[j] = y_old.data()[j] + acc;
+      double acc = c_[N - 1].data()[j] * ((N - 1) % 2 == 0 ? x : x1);
+      for (std::size_t i = N - 1; i-- > 0;) acc = (acc + c_[i].data()[j]) * (i % 2 == 0 ? x : x1);
+      y.data()[j] = y_old_.data()[j] + acc;
     }
     return y;
   }
+
+ private:
+  const State7& y_old_;
+  std::array<State7, 7> c_;
 };
-
-// The Hermite part shared by both pairs: y_new - y_old and the end slopes h k_first, h k_last.
-std::array<State7, 3> hermite(const State7& y_old, const State7& y_new, double h,
-                              const State7& k_first, const State7& k_last) {
-  const State7 dy = y_new - y_old, c1 = h * k_first - dy;
-  return {dy, c1, dy - h * k_last - c1};
-}
-
-// Dormand-Prince: Shampine's quartic is the cubic Hermite interpolant plus x^2 (1-x)^2 times
-// its x^4 coefficient, h sum_j P[j][3] k_j (it matches y and y' at both ends: the tableau test
-// checks P for it): one weighted sum per step that holds a sample, not four.
-template <class T>
-StepInterpolant<4> interpolant(const RigidBodyRhs&, const State7& y_old, const State7& y_new,
-                               double h, const Stages<T>& k, IntegrationCost&)
-  requires std::is_same_v<T, Dopri5>
-{
-  const auto [dy, c1, c2] = hermite(y_old, y_new, h, k[0], k[T::S - 1]);
-  constexpr auto all = std::make_index_sequence<T::S>{};
-  return {y_old, {dy, c1, c2, h * combine<T, Coefficients::dense_p, 3>(k, all)}};
-}
-
-// DOP853: three more stages, then y_new - y_old, its two end slopes and four from D.
-template <class T>
-StepInterpolant<7> interpolant(const RigidBodyRhs& f, const State7& y_old, const State7& y_new,
-                               double h, const Stages<T>& k, IntegrationCost& cost)
-  requires std::is_same_v<T, Dop853>
-{
-  std::array<State7, T::kExtended> K;
-  std::copy(k.begin(), k.end(), K.begin());
-  K[T::S] = f(y_old + h * combine<T, Coefficients::dense_extra, 0>(
-                                      K, std::make_index_sequence<T::S>{}));
-  K[T::S + 1] = f(y_old + h * combine<T, Coefficients::dense_extra, 1>(
-                                          K, std::make_index_sequence<T::S + 1>{}));
-  K[T::S + 2] = f(y_old + h * combine<T, Coefficients::dense_extra, 2>(
-                                          K, std::make_index_sequence<T::S + 2>{}));
-  cost.rhs_evals += static_cast<std::int64_t>(T::kExtraA.size());
-  const auto [dy, c1, c2] = hermite(y_old, y_new, h, k[0], k[T::S - 1]);
-  constexpr auto all = std::make_index_sequence<T::kExtended>{};
-  return {y_old,
-          {dy, c1, c2, h * combine<T, Coefficients::dense_d, 0>(K, all),
-           h * combine<T, Coefficients::dense_d, 1>(K, all),
-           h * combine<T, Coefficients::dense_d, 2>(K, all),
-           h * combine<T, Coefficients::dense_d, 3>(K, all)}};
-}
 }  // namespace
 
 int order_of(RkMethod m) {
@@ -333,15 +361,16 @@ void RungeKutta::sample_dense(State7& y, double t0, std::span<const double> time
   // Times inside a step come from its interpolant; one at its end is the new state itself.
   const auto output = [&](double t_old, double t_new, const State7& y_old, const State7& y_new,
                           const Stages<T>& k) {
-    std::optional<decltype(interpolant<T>(rhs_, y_old, y_new, 0.0, k, cost_))> p;
-    for (; next < times.size() && times[next] <= t_new; ++next) {
-      State7 s;
-      if (times[next] == t_new) {
-        s = y_new;
-      } else {
-        if (!p) p = interpolant<T>(rhs_, y_old, y_new, t_new - t_old, k, cost_);
-        s = p->at((times[next] - t_old) / (t_new - t_old));
+    if (next < times.size() && times[next] < t_new) {
+      const DenseStep<T> step(rhs_, y_old, y_new, t_new - t_old, k, cost_);
+      for (; next < times.size() && times[next] < t_new; ++next) {
+        State7 s = step.at((times[next] - t_old) / (t_new - t_old));
+        renormalise(s);
+        at(next, s);
       }
+    }
+    for (; next < times.size() && times[next] == t_new; ++next) {
+      State7 s = y_new;
       renormalise(s);
       at(next, s);
     }

@@ -150,7 +150,7 @@ TEST_CASE("the tableaux: weights sum to one, error weights to zero, interpolants
   // Shampine's interpolant at x = 1 is the step's own solution: sum_p P[j][p] = B[j].
   // It also has the end slopes, y'(0) = k_1 and y'(1) = k_7 (sum_p (p + 1) P[j][p] is 1 for the
   // last stage, 0 for the others): so it is the cubic Hermite interpolant plus x^2 (1-x)^2
-  // times its x^4 coefficient, the nested form dense output evaluates.
+  // times its x^4 coefficient.
   for (std::size_t j = 0; j < tab::Dopri5::S; ++j) {
     const auto& P = tab::Dopri5::P[j];
     REQUIRE_THAT(sum(P), WithinAbs(tab::Dopri5::B[j], bound));
