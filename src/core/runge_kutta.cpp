@@ -108,9 +108,20 @@ void check_budget(const IntegrationCost& cost, std::int64_t limit) {
 // Scales q to unit length; returns the factor. f's q part, q (0, w) / 2, scales with it and its
 // m part does not depend on |q| (the torques use q / |q|): a first-same-as-last stage f(y)
 // stays f of the renormalised y when its q part is multiplied by the same factor.
+// Near unit length, |q|^2 = 1 + d with |d| <= 2^-18 (every dense output sample and every
+// renormalisation between steps: q strays by 1e-6 at most, below), the factor 1 / sqrt(1 + d) is
+// its series 1 - d/2 + 3 d^2/8: the first term left out, 5/16 |d|^3, is under 0.08 ulp of 1, and
+// d = |q|^2 - 1 is exact (Sterbenz). Written out over q's four components: Eigen's norm() reads
+// them in pairs just after a sample's interpolant stored them one by one, likely a stall for
+// each pair. Measured per sample of Dormand-Prince's dense output (P2, 1e5 samples): 56 ns with
+// norm() and a division, 49 with the series, 38 written out (28 with no renormalising at all).
+constexpr double kSeriesReach = 0x1p-18;
 double renormalise(State7& y) {
-  const double factor = 1.0 / y.tail<4>().norm();
-  y.tail<4>() *= factor;
+  double* q = y.data() + 3;
+  const double squared = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], d = squared - 1.0;
+  const double factor =
+      std::abs(d) <= kSeriesReach ? 1.0 + d * (-0.5 + 0.375 * d) : 1.0 / std::sqrt(squared);
+  for (int i = 0; i < 4; ++i) q[i] *= factor;
   return factor;
 }
 

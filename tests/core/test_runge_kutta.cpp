@@ -132,6 +132,39 @@ TEST_CASE("dense output: states between the steps as accurate as at them, the st
   }
 }
 
+TEST_CASE("samples and end states are unit quaternions however far |q| starts from 1") {
+  // |q|^2 - 1 = d: near 1 (|d| <= 2^-18) the factor 1 / |q| is a two-term series, beyond it a
+  // square root. The first step's samples are interpolated from the start, so they see d as
+  // given; a wrong series term (3/8 d^2 off by 0.075 d^2 = 7e-13 at d = 3e-6) fails here.
+  const RigidBodyModel model = free_model();
+  const ExactFreeMotion exact(kI, kM0, Quat::Identity());
+  constexpr double kTol = 1e-10, kT = 2.0;
+  const double eps = std::numeric_limits<double>::epsilon();
+  std::vector<double> times;
+  for (double t = 1e-7; t < 1e-3; t *= 1.5) times.push_back(t);  // inside the first step
+  for (int i = 1; i <= 100; ++i) times.push_back(kT * i / 100);
+  for (const double d : {0x1p-18, -0x1p-18, 3e-6, 1e-6, -1e-6, 1e-9, 0.5, -0.3}) {
+    for (const RkMethod method : {RkMethod::dopri5, RkMethod::dop853}) {
+      INFO(name_of(method) << ", |q|^2 - 1 = " << d << " at the start");
+      RungeKutta rk(model, method, kTol, 1.0);
+      State7 y = pack(kM0, Quat::Identity());
+      y.tail<4>() *= std::sqrt(1.0 + d);
+      std::size_t seen = 0;
+      rk.sample(y, 0.0, times, [&](std::size_t k, const State7& s) {
+        ++seen;
+        // |q|^2 of the scaled q: within a few roundings of 1.
+        REQUIRE_THAT(s.tail<4>().squaredNorm(), WithinAbs(1.0, 4 * eps));
+        const FreeBodyState ex = exact.at(times[k]);
+        REQUIRE((momentum_of(s) - ex.m_B).norm() <= 100 * kTol);
+        REQUIRE((attitude_of(s).toRotationMatrix() - ex.q_BtoS.toRotationMatrix()).norm() <=
+                100 * kTol);
+      });
+      REQUIRE(seen == times.size());
+      REQUIRE_THAT(y.tail<4>().squaredNorm(), WithinAbs(1.0, 4 * eps));
+    }
+  }
+}
+
 TEST_CASE("the tableaux: weights sum to one, error weights to zero, interpolants end at y_new") {
   namespace tab = rk_tableau;
   const double eps = std::numeric_limits<double>::epsilon();
