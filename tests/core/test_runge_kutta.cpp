@@ -152,7 +152,7 @@ TEST_CASE("samples and end states are unit quaternions however far |q| starts fr
       std::size_t seen = 0;
       rk.sample(y, 0.0, times, [&](std::size_t k, const State7& s) {
         ++seen;
-        // |q|^2 of the scaled q: within a few roundings of 1.
+        // The sample's |q|^2: within four roundings of 1.
         REQUIRE_THAT(s.tail<4>().squaredNorm(), WithinAbs(1.0, 4 * eps));
         const FreeBodyState ex = exact.at(times[k]);
         REQUIRE((momentum_of(s) - ex.m_B).norm() <= 100 * kTol);
