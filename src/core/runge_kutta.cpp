@@ -241,7 +241,7 @@ class DenseStep<Dop853> {
   }
 
   State7 at(double x) const {
-    constexpr std::size_t N = 7;
+    constexpr std::size_t N = kCoefficients;
     const double x1 = 1.0 - x;  // the factor of every second level
     State7 y;
     for (int j = 0; j < 7; ++j) {  // written out, as in axpy(), for the same reason
@@ -253,8 +253,9 @@ class DenseStep<Dop853> {
   }
 
  private:
+  static constexpr std::size_t kCoefficients = 7;
   const State7& y_old_;
-  std::array<State7, 7> c_;
+  std::array<State7, kCoefficients> c_;
 };
 }  // namespace
 
