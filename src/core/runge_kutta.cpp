@@ -53,12 +53,30 @@ constexpr double coefficient() {
   for (int i = 0; i < 7; ++i) acc.data()[i] += c * v.data()[i];
 }
 
-// sum_j c_j k[j] over the nonzero c_j, j in J..., unrolled (each c_j a constant expression).
+// The first j in J... with c_j nonzero, or sizeof...(J) if there is none.
+template <class T, Coefficients W, std::size_t R, std::size_t... J>
+constexpr std::size_t first_nonzero(std::index_sequence<J...>) {
+  std::size_t first = sizeof...(J);
+  ((first == sizeof...(J) && coefficient<T, W, R, J>() != 0.0 ? (void)(first = J) : (void)0), ...);
+  return first;
+}
+
+// sum_j c_j k[j] over the nonzero c_j, j in J..., unrolled (each c_j a constant expression). The
+// sum starts from its first term, not from zero: 0 + x is not x for x = -0, so the compiler
+// keeps an addition of zero per component that starting from zero would cost.
 template <class T, Coefficients W, std::size_t R, class Vectors, std::size_t... J>
-[[gnu::always_inline]] inline State7 combine(const Vectors& k, std::index_sequence<J...>) {
-  State7 acc = State7::Zero();
-  ((coefficient<T, W, R, J>() != 0.0 ? axpy(acc, coefficient<T, W, R, J>(), k[J]) : (void)0), ...);
-  return acc;
+[[gnu::always_inline]] inline State7 combine(const Vectors& k, std::index_sequence<J...> js) {
+  constexpr std::size_t first = first_nonzero<T, W, R>(js);
+  if constexpr (first == sizeof...(J)) {
+    return State7::Zero();
+  } else {
+    State7 acc;
+    for (int i = 0; i < 7; ++i) acc.data()[i] = coefficient<T, W, R, first>() * k[first].data()[i];
+    ((J != first && coefficient<T, W, R, J>() != 0.0 ? axpy(acc, coefficient<T, W, R, J>(), k[J])
+                                                     : (void)0),
+     ...);
+    return acc;
+  }
 }
 
 // The stages 1 .. S-1; of a first-same-as-last pair the last is f(y_new), left to rk_step.
