@@ -76,14 +76,9 @@ std::vector<ComponentRow> elliptic_bench(const TimingPlan& plan) {
     const SnCnDn e = jacobi_sncndn(p.u, p.kc2);
     worst = std::max(worst, sncndn_error(p, e.sn, e.cn, e.dn));
   }
-  const double t_mine = median_time_s(
-                            [&] {
-                              for (const auto& p : pts)
-                                g_sink = g_sink + jacobi_sncndn(p.u, p.kc2).dn;
-                            },
-                            plan) /
-                        static_cast<double>(pts.size());
-  out.push_back({"elliptic", "wobble jacobi_sncndn(u, k'^2)", cases, worst, "eps", t_mine * 1e9});
+  const auto time_mine = [&] {
+    for (const auto& p : pts) g_sink = g_sink + jacobi_sncndn(p.u, p.kc2).dn;
+  };
   double worst_boost = 0.0;
   for (const auto& p : pts) {
     double cn, dn;
@@ -91,18 +86,12 @@ std::vector<ComponentRow> elliptic_bench(const TimingPlan& plan) {
     const double sn = boost::math::jacobi_elliptic(k, p.u, &cn, &dn);
     worst_boost = std::max(worst_boost, sncndn_error(p, sn, cn, dn));
   }
-  const double t_boost =
-      median_time_s(
-          [&] {
-            for (const auto& p : pts) {
-              double cn, dn;
-              g_sink = g_sink + boost::math::jacobi_elliptic(std::sqrt(1 - p.kc2), p.u, &cn, &dn);
-            }
-          },
-          plan) /
-      static_cast<double>(pts.size());
-  out.push_back({"elliptic", "Boost.Math jacobi_elliptic(k, u), default policy", cases, worst_boost,
-                 "eps", t_boost * 1e9});
+  const auto time_boost = [&] {
+    for (const auto& p : pts) {
+      double cn, dn;
+      g_sink = g_sink + boost::math::jacobi_elliptic(std::sqrt(1 - p.kc2), p.u, &cn, &dn);
+    }
+  };
   // The exact solution's w(t) near the separatrix (I = (1, 2, 3), m0 = (1e-4, 1, 1e-4)).
   const ExactFreeMotion motion(Vec3(1, 2, 3), Vec3(1e-4, 1, 1e-4), Quat::Identity());
   // Its accuracy: |w(t) - w_ref(t)| / |w_ref(t)| from k'^2 ~ 1e-4 to 1e-16 (m0 = (s, 1, 2s)),
@@ -129,25 +118,26 @@ std::vector<ComponentRow> elliptic_bench(const TimingPlan& plan) {
       worst_w = std::max(worst_w, e);
     }
   }
-  const double t_w = median_time_s(
-                         [&] {
-                           for (int i = 0; i < 64; ++i)
-                             g_sink = g_sink + motion.momentum_at(3.1 * i).x();
-                         },
-                         plan) /
-                     64;
+  const auto time_w = [&] {
+    for (int i = 0; i < 64; ++i) g_sink = g_sink + motion.momentum_at(3.1 * i).x();
+  };
+  const auto time_attitude = [&] {
+    for (int i = 0; i < 64; ++i) g_sink = g_sink + motion.at(3.1 * i).q_BtoS.w();
+  };
+  // Side by side (median_times_s): the exact w(t) is read against one Boost call.
+  const std::vector<double> t =
+      median_times_s({time_mine, time_boost, time_w, time_attitude}, plan);
+  const double per_point = 1e9 / static_cast<double>(pts.size());
+  out.push_back(
+      {"elliptic", "wobble jacobi_sncndn(u, k'^2)", cases, worst, "eps", t[0] * per_point});
+  out.push_back({"elliptic", "Boost.Math jacobi_elliptic(k, u), default policy", cases, worst_boost,
+                 "eps", t[1] * per_point});
+  const double t_w = t[2] / 64, t_att = t[3] / 64;
   out.push_back({"elliptic", "wobble exact w(t) (m(t) / I)",
                  "m0 = (s, 1, 2s), s 1e-2 to 1e-8, to u = K", worst_quarter, "eps (|dw| / |w|)",
                  t_w * 1e9});
   out.push_back({"elliptic", "wobble exact w(t), over two periods", "the same, t to 2 periods",
                  worst_w, "eps (|dw| / |w|)", t_w * 1e9});
-  const double t_att = median_time_s(
-                           [&] {
-                             for (int i = 0; i < 64; ++i)
-                               g_sink = g_sink + motion.at(3.1 * i).q_BtoS.w();
-                           },
-                           plan) /
-                       64;
   out.push_back({"elliptic", "wobble exact w(t) and attitude", "P3 body, t from 0 to 195", -1.0, "",
                  t_att * 1e9});
   return out;
@@ -178,32 +168,28 @@ std::vector<ComponentRow> principal_axes_bench(const TimingPlan& plan) {
       return e / c.moments.maxCoeff() / kEps;
     };
     const PrincipalAxes pa = principal_axes(I);
-    out.push_back(
-        {"principal axes", "wobble principal_axes", c.name, error_of(pa.moments, pa.axes),
-         "eps l_max",
-         median_time_s([&] { g_sink = g_sink + principal_axes(I).moments[0]; }, plan) * 1e9});
     Eigen::SelfAdjointEigenSolver<Mat3> es(I);
-    out.push_back({"principal axes", "Eigen compute()", c.name,
-                   error_of(es.eigenvalues(), es.eigenvectors()), "eps l_max",
-                   median_time_s(
-                       [&] {
-                         Eigen::SelfAdjointEigenSolver<Mat3> s(I);
-                         g_sink = g_sink + s.eigenvalues()[0];
-                       },
-                       plan) *
-                       1e9});
     Eigen::SelfAdjointEigenSolver<Mat3> ed;
     ed.computeDirect(I);
+    // Side by side (median_times_s): the three are read against each other.
+    const std::vector<double> t =
+        median_times_s({[&] { g_sink = g_sink + principal_axes(I).moments[0]; },
+                        [&] {
+                          Eigen::SelfAdjointEigenSolver<Mat3> s(I);
+                          g_sink = g_sink + s.eigenvalues()[0];
+                        },
+                        [&] {
+                          Eigen::SelfAdjointEigenSolver<Mat3> s;
+                          s.computeDirect(I);
+                          g_sink = g_sink + s.eigenvalues()[0];
+                        }},
+                       plan);
+    out.push_back({"principal axes", "wobble principal_axes", c.name, error_of(pa.moments, pa.axes),
+                   "eps l_max", t[0] * 1e9});
+    out.push_back({"principal axes", "Eigen compute()", c.name,
+                   error_of(es.eigenvalues(), es.eigenvectors()), "eps l_max", t[1] * 1e9});
     out.push_back({"principal axes", "Eigen computeDirect()", c.name,
-                   error_of(ed.eigenvalues(), ed.eigenvectors()), "eps l_max",
-                   median_time_s(
-                       [&] {
-                         Eigen::SelfAdjointEigenSolver<Mat3> s;
-                         s.computeDirect(I);
-                         g_sink = g_sink + s.eigenvalues()[0];
-                       },
-                       plan) *
-                       1e9});
+                   error_of(ed.eigenvalues(), ed.eigenvectors()), "eps l_max", t[2] * 1e9});
   }
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <vector>
 
 namespace wobble::bench {
@@ -15,14 +16,30 @@ double seconds_of(const std::function<void()>& f, long count) {
 }  // namespace
 
 double median_time_s(const std::function<void()>& f, const TimingPlan& plan) {
-  // How many calls make one measurement: double until the sample is long enough.
-  long count = 1;
-  while (seconds_of(f, count) < plan.min_sample_s && count < (1L << 30)) count *= 2;
-  std::vector<double> t;
-  for (int r = 0; r < plan.repeats; ++r)
-    t.push_back(seconds_of(f, count) / static_cast<double>(count));
-  std::nth_element(t.begin(), t.begin() + static_cast<long>(t.size() / 2), t.end());
-  return t[t.size() / 2];
+  return median_times_s({f}, plan).front();
+}
+
+std::vector<double> median_times_s(const std::vector<std::function<void()>>& fs,
+                                   const TimingPlan& plan) {
+  if (plan.repeats < 1) throw std::invalid_argument("timing: repeats must be >= 1");
+  // How many calls make one measurement of each f: double until the sample is long enough.
+  std::vector<long> counts;
+  for (const auto& f : fs) {
+    long count = 1;
+    while (seconds_of(f, count) < plan.min_sample_s && count < (1L << 30)) count *= 2;
+    counts.push_back(count);
+  }
+  std::vector<std::vector<double>> t(fs.size());
+  for (int r = 0; r < plan.repeats; ++r) {
+    for (std::size_t i = 0; i < fs.size(); ++i)
+      t[i].push_back(seconds_of(fs[i], counts[i]) / static_cast<double>(counts[i]));
+  }
+  std::vector<double> medians;
+  for (auto& ti : t) {
+    std::nth_element(ti.begin(), ti.begin() + static_cast<long>(ti.size() / 2), ti.end());
+    medians.push_back(ti[ti.size() / 2]);
+  }
+  return medians;
 }
 
 }  // namespace wobble::bench

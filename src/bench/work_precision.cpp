@@ -121,9 +121,8 @@ Reference reference(const BenchProblem& p) {
   return {s.m_B, s.q_BtoS};
 }
 
-Run measure(const BenchProblem& p, const Reference& ref, const std::string& method, bool peer,
-            const std::string& setting, const std::function<Outcome()>& f, const TimingPlan& plan) {
-  const Outcome o = f();
+Run evaluate(const BenchProblem& p, const Reference& ref, const std::string& method, bool peer,
+             const std::string& setting, const Outcome& o) {
   Run r;
   r.problem = p.id;
   r.method = method;
@@ -138,14 +137,38 @@ Run measure(const BenchProblem& p, const Reference& ref, const std::string& meth
                   ? std::abs(o.m.norm() - p.m0.norm()) / p.m0.norm()
                   : std::abs(Vec3(o.q * o.m).z() - Vec3(p.q0 * p.m0).z()) / p.m0.norm();
   r.evals = o.evals;
-  r.time_s = median_time_s([&] { (void)f(); }, plan);
   return r;
 }
+
+// One problem's runs, every method at every setting, timed side by side (median_times_s): the
+// targets are ratios of these times, read between settings on two curves, and a change of the
+// machine's speed while the bench runs must fall on both curves alike. The runs' functions are
+// kept until timed: whatever they capture must outlive the loop that adds them.
+class SideBySide {
+ public:
+  SideBySide(const BenchProblem& p, const Reference& ref) : p_(p), ref_(ref) {}
+  void add(const std::string& method, bool peer, const std::string& setting,
+           std::function<Outcome()> f) {
+    runs_.push_back(evaluate(p_, ref_, method, peer, setting, f()));
+    fs_.push_back([f = std::move(f)] { (void)f(); });
+  }
+  std::vector<Run> timed(const TimingPlan& plan) && {
+    const std::vector<double> t = median_times_s(fs_, plan);
+    for (std::size_t i = 0; i < runs_.size(); ++i) runs_[i].time_s = t[i];
+    return std::move(runs_);
+  }
+
+ private:
+  const BenchProblem& p_;
+  const Reference& ref_;
+  std::vector<Run> runs_;
+  std::vector<std::function<void()>> fs_;
+};
 }  // namespace
 
 std::vector<Run> work_precision(const BenchProblem& p, bool quick, const TimingPlan& plan) {
   const Reference ref = reference(p);
-  std::vector<Run> runs;
+  SideBySide runs(p, ref);
   const std::vector<double> tols = quick
                                        ? std::vector<double>{1e-6, 1e-9, 1e-12, 1e-14}
                                        : std::vector<double>{1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14};
@@ -159,73 +182,51 @@ std::vector<Run> work_precision(const BenchProblem& p, bool quick, const TimingP
   const bool free = p.model.torque_free();
   const auto tol_text = [](double t) { return fmt::format("tol {:.0e}", t); };
   const auto h_text = [](double h) { return fmt::format("h {:.2g}", h); };
+  // Captured by the runs' functions, which are called again after the loops (SideBySide):
+  // the loops' own variables are captured by value.
+  const HeavyTop top = free ? HeavyTop{} : heavy_top_of(p);
+  const State7 y0 = pack(p.m0, p.q0);
+  const auto peer = [](const PeerRun& r) {
+    return Outcome{momentum_of(r.y), attitude_of(r.y), r.evals};
+  };
   if (free) {
-    runs.push_back(measure(
-        p, ref, "exact", false, "-",
-        [&] {
-          const FreeBodyState s = ExactFreeMotion(p.model.I_P, p.m0, p.q0).at(p.T);
-          return Outcome{s.m_B, s.q_BtoS, 1};
-        },
-        plan));
+    runs.add("exact", false, "-", [&] {
+      const FreeBodyState s = ExactFreeMotion(p.model.I_P, p.m0, p.q0).at(p.T);
+      return Outcome{s.m_B, s.q_BtoS, 1};
+    });
   } else {
-    const HeavyTop top = heavy_top_of(p);
-    runs.push_back(measure(
-        p, ref, "exact", false, "-",
-        [&] {
-          const FreeBodyState s = ExactHeavyTop(top, p.m0, p.q0).at(p.T);
-          return Outcome{s.m_B, s.q_BtoS, 1};
-        },
-        plan));
+    runs.add("exact", false, "-", [&] {
+      const FreeBodyState s = ExactHeavyTop(top, p.m0, p.q0).at(p.T);
+      return Outcome{s.m_B, s.q_BtoS, 1};
+    });
   }
-  for (double tol : tols) {
+  using ode_dopri5 = boost::numeric::odeint::runge_kutta_dopri5<Array7>;
+  using ode_rkf78 = boost::numeric::odeint::runge_kutta_fehlberg78<Array7>;
+  for (const double tol : tols) {
     if (tol < 1e-13 && p.T > 1000) continue;
-    runs.push_back(measure(
-        p, ref, "dopri5", false, tol_text(tol),
-        [&] { return run_wobble_rk(p, RkMethod::dopri5, tol); }, plan));
-    runs.push_back(measure(
-        p, ref, "rkf78", false, tol_text(tol),
-        [&] { return run_wobble_rk(p, RkMethod::rkf78, tol); }, plan));
-    runs.push_back(measure(
-        p, ref, "dop853", false, tol_text(tol),
-        [&] { return run_wobble_rk(p, RkMethod::dop853, tol); }, plan));
-    runs.push_back(measure(
-        p, ref, "vern9", false, tol_text(tol),
-        [&] { return run_wobble_rk(p, RkMethod::vern9, tol); }, plan));
-    using ode_dopri5 = boost::numeric::odeint::runge_kutta_dopri5<Array7>;
-    using ode_rkf78 = boost::numeric::odeint::runge_kutta_fehlberg78<Array7>;
-    runs.push_back(measure(
-        p, ref, "odeint_dopri5", true, tol_text(tol),
-        [&] { return run_odeint<ode_dopri5>(p, tol); }, plan));
-    runs.push_back(measure(
-        p, ref, "odeint_rkf78", true, tol_text(tol), [&] { return run_odeint<ode_rkf78>(p, tol); },
-        plan));
-    const State7 y0 = pack(p.m0, p.q0);
-    const auto peer = [](const PeerRun& r) {
-      return Outcome{momentum_of(r.y), attitude_of(r.y), r.evals};
-    };
-    for (const auto& [name, method] : {std::pair{"gsl_rk8pd", GslMethod::rk8pd},
-                                       std::pair{"gsl_rkf45", GslMethod::rkf45}}) {
-      runs.push_back(measure(
-          p, ref, name, true, tol_text(tol),
-          [&, method = method] { return peer(run_gsl(p.model, y0, p.T, tol, method)); }, plan));
+    const std::string setting = tol_text(tol);
+    for (const RkMethod m : {RkMethod::dopri5, RkMethod::rkf78, RkMethod::dop853, RkMethod::vern9})
+      runs.add(name_of(m), false, setting, [&p, m, tol] { return run_wobble_rk(p, m, tol); });
+    runs.add("odeint_dopri5", true, setting, [&p, tol] { return run_odeint<ode_dopri5>(p, tol); });
+    runs.add("odeint_rkf78", true, setting, [&p, tol] { return run_odeint<ode_rkf78>(p, tol); });
+    for (const auto& [name, method] :
+         {std::pair{"gsl_rk8pd", GslMethod::rk8pd}, std::pair{"gsl_rkf45", GslMethod::rkf45}}) {
+      runs.add(name, true, setting,
+               [&, tol, method = method] { return peer(run_gsl(p.model, y0, p.T, tol, method)); });
     }
-    runs.push_back(measure(
-        p, ref, "cvode_adams", true, tol_text(tol),
-        [&] { return peer(run_cvode_adams(p.model, y0, p.T, tol)); }, plan));
+    runs.add("cvode_adams", true, setting,
+             [&, tol] { return peer(run_cvode_adams(p.model, y0, p.T, tol)); });
   }
-  for (double h : steps) {
-    runs.push_back(measure(
-        p, ref, "rk4", false, h_text(h), [&] { return run_wobble_rk(p, RkMethod::rk4, h); }, plan));
+  for (const double h : steps) {
+    runs.add("rk4", false, h_text(h), [&p, h] { return run_wobble_rk(p, RkMethod::rk4, h); });
     if (free) {
-      runs.push_back(measure(
-          p, ref, "split2", false, h_text(h),
-          [&] { return run_split(p, SplittingOrder::strang2, h); }, plan));
-      runs.push_back(measure(
-          p, ref, "split4", false, h_text(h),
-          [&] { return run_split(p, SplittingOrder::yoshida4, h); }, plan));
+      runs.add("split2", false, h_text(h),
+               [&p, h] { return run_split(p, SplittingOrder::strang2, h); });
+      runs.add("split4", false, h_text(h),
+               [&p, h] { return run_split(p, SplittingOrder::yoshida4, h); });
     }
   }
-  return runs;
+  return std::move(runs).timed(plan);
 }
 
 std::vector<DriftRow> drift_table(bool quick) {
@@ -316,8 +317,11 @@ std::vector<DenseRow> dense_output_table(bool quick, const TimingPlan& plan) {
     };
     row.evals_few = run(few_times);
     row.evals_many = run(many_times);
-    row.time_few_s = median_time_s([&] { (void)run(few_times); }, plan);
-    row.time_many_s = median_time_s([&] { (void)run(many_times); }, plan);
+    // Side by side: their ratio is the target.
+    const std::vector<double> t =
+        median_times_s({[&] { (void)run(few_times); }, [&] { (void)run(many_times); }}, plan);
+    row.time_few_s = t[0];
+    row.time_many_s = t[1];
     out.push_back(row);
   }
   return out;

@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <vector>
 
 #include "bench/components.hpp"
 #include "bench/report.hpp"
@@ -27,6 +29,11 @@ TEST_CASE("the P1 sweep runs every method and every peer, and tighter is more ac
     INFO(m);
     REQUIRE(std::any_of(runs.begin(), runs.end(), [&](const Run& r) { return r.method == m; }));
   }
+  // Every run timed, after all of them ran (side by side): what they captured outlived its loop.
+  for (const auto& r : runs) {
+    INFO(r.method << " " << r.setting);
+    CHECK(r.time_s > 0.0);
+  }
   double last = 1.0;
   // The reference is m(T) at 50 digits: the exact solution is within 8 eps (1 + condition) of
   // it, as in hard case 6, and not 0 (it is not its own reference).
@@ -49,6 +56,19 @@ TEST_CASE("the P1 sweep runs every method and every peer, and tighter is more ac
       REQUIRE(r.L_error <= 4 * 2.2e-16 * std::sqrt(static_cast<double>(r.evals)));
     }
   }
+}
+
+TEST_CASE("functions timed side by side are called in turns, once each per repeat") {
+  std::vector<int> calls;
+  const std::vector<double> t = median_times_s(
+      {[&] { calls.push_back(0); }, [&] { calls.push_back(1); }, [&] { calls.push_back(2); }},
+      TimingPlan{3, 0.0});
+  // With no least sample length each measurement is one call: first one call of each to find
+  // that count, then three rounds, each going once around the three.
+  CHECK(calls == std::vector<int>{0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2});
+  REQUIRE(t.size() == 3);
+  for (const double ti : t) CHECK(ti >= 0.0);
+  CHECK_THROWS_AS(median_times_s({[] {}}, TimingPlan{0, 0.0}), std::invalid_argument);
 }
 
 TEST_CASE("time_ratio_at interpolates log-log between the bracketing points") {
