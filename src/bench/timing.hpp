@@ -16,10 +16,10 @@ struct TimingPlan {
 double median_time_s(const std::function<void()>& f, const TimingPlan& plan);
 
 /// Median wall time of one call of each f, in seconds, measured side by side: each repeat times
-/// every f in turn, so that a change of the machine's speed during the measurement (a shared
-/// or throttled machine's speed changes by a third from one minute to the next) falls on all of
-/// them alike, not on whichever happened to run then. The times compared in a ratio belong in
-/// one call.
+/// every f in turn, so that a change of the machine's speed during the measurement (the
+/// README's machine, a virtual one, changed by a third from one minute to the next) falls on all
+/// of them alike, not on whichever happened to run then. The times compared in a ratio belong
+/// in one call.
 std::vector<double> median_times_s(const std::vector<std::function<void()>>& fs,
                                    const TimingPlan& plan);
 
