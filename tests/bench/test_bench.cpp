@@ -29,7 +29,8 @@ TEST_CASE("the P1 sweep runs every method and every peer, and tighter is more ac
     INFO(m);
     REQUIRE(std::any_of(runs.begin(), runs.end(), [&](const Run& r) { return r.method == m; }));
   }
-  // Every run timed, after all of them ran (side by side): what they captured outlived its loop.
+  // Every run is timed, all of them after the sweep (side by side); a function whose captures
+  // did not outlive the sweep's loops would show here under the sanitizers.
   for (const auto& r : runs) {
     INFO(r.method << " " << r.setting);
     CHECK(r.time_s > 0.0);
