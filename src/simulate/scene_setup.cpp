@@ -219,6 +219,19 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
     pa.axes = (Mat3() << pa.axes.col(1), pa.axes.col(2), pa.axes.col(0)).finished();
     s.symmetry_axis_last = true;
   }
+  const bool unique_axis_last =
+      pa.degeneracy == Degeneracy::pair12 || pa.degeneracy == Degeneracy::pair23;
+  if (scene.gravity && unique_axis_last &&
+      pa.axes.col(2).dot(mp.r_cm_m - s.turning_point_B) < 0.0) {
+    // A top's axle e3 points from the pivot toward the centre of mass (d = l e3, l > 0), as in
+    // the heavy-top problem and its exact solution: an eigenvector's sign is arbitrary, and a
+    // top written with its body below the pivot along the axle (a cone on its apex, which the
+    // cone shape puts above its centre) would otherwise be no top the exact solution serves.
+    // Turning the frame by pi about e1 keeps it right-handed; I1 = I2 makes e2's sign free.
+    // Subtracted from zero, not negated: a zero component stays +0 (the header prints -0).
+    pa.axes.col(1) = Vec3::Zero() - pa.axes.col(1);
+    pa.axes.col(2) = Vec3::Zero() - pa.axes.col(2);
+  }
   require_rotating_body(scene.model.file.string(), pa.moments, "a scene");
   s.moments = pa.moments;
   s.axes_B = pa.axes;

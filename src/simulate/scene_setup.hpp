@@ -4,7 +4,8 @@
 ///
 /// Frames (see problem/scene.hpp): B the frame the body is written in, P the principal frame
 /// at the turning point (columns of axes_B are P's axes in B, moments ascending, except that a
-/// top under gravity has its axle as e3), S space.
+/// top under gravity has its axle as e3, pointing from the pivot toward the centre of mass),
+/// S space.
 /// The turning point is the pivot under gravity, otherwise the centre of mass (or the origin O
 /// for a tensor given directly, which carries no mass).
 #include <optional>
@@ -26,7 +27,8 @@ struct SceneSetup {
   Mat3 axes_B = Mat3::Identity();       ///< principal axes (columns) in B
   bool symmetric = false;               ///< two moments equal (core/principal_axes.hpp)
   /// Under gravity a symmetric top's unique axis (the axle) is e3, its moment last, as in the
-  /// heavy-top problem; otherwise the moments are ascending.
+  /// heavy-top problem, and points toward the centre of mass (model.d_P_m = l e3, l >= 0);
+  /// otherwise the moments are ascending.
   bool symmetry_axis_last = false;
   RigidBodyModel model;                 ///< in P
   Vec3 m0_P = Vec3::Zero();             ///< initial angular momentum, P, kg m^2/s

@@ -9,13 +9,13 @@
 #include <limits>
 
 #include "core/exact_free_body.hpp"
-#include "solvers/catalog.hpp"
 #include "problem/scene.hpp"
 #include "problem/values.hpp"
 #include "simulate/cross_check.hpp"
 #include "simulate/invariants.hpp"
-#include "simulate/simulation.hpp"
 #include "simulate/scene_helpers.hpp"
+#include "simulate/simulation.hpp"
+#include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
 
 using namespace wobble;
@@ -81,7 +81,9 @@ TEST_CASE("auto picks the closed form, the exact solution, or an adaptive pair, 
   REQUIRE(choose_method(loose, "auto").method == SimMethod::vern9);
 }
 
-TEST_CASE("the heavy-top scene's exact solution and Fehlberg 7(8) at 1e-13 agree") {
+TEST_CASE(
+    "the heavy-top scene's exact solution and Fehlberg 7(8) at 1e-13 agree, the body above or "
+    "below its pivot") {
   // The default (cusps), loops, a hanging start, and starts 1e-5 rad from the vertical and
   // 2e-6 rad from hanging straight down (where p_phi and p_psi nearly cancel).
   const std::vector<std::vector<std::string>> sets{{},
@@ -89,38 +91,49 @@ TEST_CASE("the heavy-top scene's exact solution and Fehlberg 7(8) at 1e-13 agree
                                                    {"theta0=150deg", "psidot0=20"},
                                                    {"theta0=0.001deg"},
                                                    {"theta0=179.9999deg", "psidot0=5"}};
-  for (const auto& set : sets) {
-  SceneSetup s = setup_scene(find_scene("heavy-top"), set);
-  // Vectors, not Euler angles: at 2e-6 rad from the pole phi and psi themselves are
-  // ill-conditioned (1/sin(theta)), whatever computes them.
-  s.outputs = {"omega_body", "e1_space", "e3_space"};
-  INFO((set.empty() ? std::string("defaults") : set.front()));
-  REQUIRE(choose_method(s, "auto").method == SimMethod::exact);
-  const SimulationResult exact = run(s, "exact");
-  SceneSetup tight = s;
-  tight.tolerance = 1e-13;
-  const SimulationResult rk = run(tight, "rkf78");
-  REQUIRE(exact.rows.size() == rk.rows.size());
-  REQUIRE_THAT(exact.notes.front(), Catch::Contains("theta nods between"));
-  // Fehlberg 7(8) at 1e-13 per step: each accepted step's error measure bounds each momentum
-  // component's error by tol times the run's momentum scale and each quaternion component's by
-  // tol, so omega = I^-1 m moves by up to sqrt(3) tol scale / I_min and a unit vector turned by
-  // q by up to 4 tol (|d(q v q*)| <= 2 |dq|, |dq| <= 2 tol). The errors add along the run (no
-  // contraction); the exact solution is far closer.
-  REQUIRE(rk.steps > 0);
-  const double steps = static_cast<double>(rk.steps);
-  const double kOmegaBound =
-      steps * std::sqrt(3.0) * tight.tolerance * momentum_scale(s) / s.moments.minCoeff();
-  const double kVectorBound = steps * 4 * tight.tolerance;
-  for (std::size_t k = 0; k < exact.rows.size(); ++k) {
-    for (std::size_t j = 1; j < exact.columns.size(); ++j) {
-      if (exact.columns[j].rfind("err_", 0) == 0) continue;
-      const double d = exact.rows[k][j] - rk.rows[k][j];
-      const bool omega = exact.columns[j].rfind("omega", 0) == 0;
-      INFO(exact.columns[j] << " at row " << k);
-      REQUIRE_THAT(d, WithinAbs(0.0, omega ? kOmegaBound : kVectorBound));
+  std::vector<std::pair<std::string, SceneSetup>> tops;
+  for (const auto& set : sets)
+    tops.emplace_back(set.empty() ? "defaults" : set.front(),
+                      setup_scene(find_scene("heavy-top"), set));
+  // The same disc written below the pivot along its axle, the body's z (as a cone on its apex
+  // is written: the cone shape puts its apex above its centre), tilted 150 deg: the disc stands
+  // 30 deg from upright above the pivot. The axle e3 is taken from the pivot toward the centre
+  // of mass, so this is a heavy top the exact solution serves, spun at -psidot0 about e3.
+  Scene below = find_scene("heavy-top");
+  below.model.body.shapes.at(0).center = {"0", "0", "-l"};
+  tops.emplace_back("below the pivot",
+                    setup_scene(below, std::vector<std::string>{"theta0=150deg"}));
+  for (auto& [name, s] : tops) {
+    // Vectors, not Euler angles: at 2e-6 rad from the pole phi and psi themselves are
+    // ill-conditioned (1/sin(theta)), whatever computes them.
+    s.outputs = {"omega_body", "e1_space", "e3_space"};
+    INFO(name);
+    REQUIRE(choose_method(s, "auto").method == SimMethod::exact);
+    const SimulationResult exact = run(s, "exact");
+    SceneSetup tight = s;
+    tight.tolerance = 1e-13;
+    const SimulationResult rk = run(tight, "rkf78");
+    REQUIRE(exact.rows.size() == rk.rows.size());
+    REQUIRE_THAT(exact.notes.front(), Catch::Contains("theta nods between"));
+    // Fehlberg 7(8) at 1e-13 per step: each accepted step's error measure bounds each momentum
+    // component's error by tol times the run's momentum scale and each quaternion component's by
+    // tol, so omega = I^-1 m moves by up to sqrt(3) tol scale / I_min and a unit vector turned by
+    // q by up to 4 tol (|d(q v q*)| <= 2 |dq|, |dq| <= 2 tol). The errors add along the run (no
+    // contraction); the exact solution is far closer.
+    REQUIRE(rk.steps > 0);
+    const double steps = static_cast<double>(rk.steps);
+    const double kOmegaBound =
+        steps * std::sqrt(3.0) * tight.tolerance * momentum_scale(s) / s.moments.minCoeff();
+    const double kVectorBound = steps * 4 * tight.tolerance;
+    for (std::size_t k = 0; k < exact.rows.size(); ++k) {
+      for (std::size_t j = 1; j < exact.columns.size(); ++j) {
+        if (exact.columns[j].rfind("err_", 0) == 0) continue;
+        const double d = exact.rows[k][j] - rk.rows[k][j];
+        const bool omega = exact.columns[j].rfind("omega", 0) == 0;
+        INFO(exact.columns[j] << " at row " << k);
+        REQUIRE_THAT(d, WithinAbs(0.0, omega ? kOmegaBound : kVectorBound));
+      }
     }
-  }
   }
 }
 
@@ -437,6 +450,27 @@ TEST_CASE("the heavy-top scene numbers its axes as the problem does: e3 is the a
   REQUIRE_THAT(s.axes_B.determinant(), WithinAbs(1.0, 4 * kEps));  // still right-handed
 }
 
+TEST_CASE("a top's axle e3 points from the pivot toward the centre of mass, either side") {
+  // The disc above and below the pivot, far from it (the axle's moment the smallest: the pair
+  // of equal moments is e1, e2 after a turn) and near it (l < R/2: the axle's moment the
+  // largest, e3 already): e3 is +z or -z of the body, whichever reaches the centre of mass,
+  // d = l e3 with l > 0, and the exact solution serves every one.
+  for (const std::string l : {"0.08", "0.01"}) {
+    for (const std::string side : {"l", "-l"}) {
+      Scene sc = find_scene("heavy-top");
+      sc.model.body.shapes.at(0).center = {"0", "0", side};
+      const SceneSetup s = setup_scene(sc, std::vector<std::string>{"l=" + l});
+      INFO("l = " << l << ", centre at z = " << side);
+      const double z = side == "l" ? 1.0 : -1.0;
+      REQUIRE_THAT((s.axes_B.col(2) - z * Vec3::UnitZ()).norm(), WithinAbs(0.0, 4 * kEps));
+      REQUIRE_THAT(s.model.d_P_m.z(), WithinRel(std::stod(l), 4 * kEps));
+      REQUIRE_THAT(s.axes_B.determinant(), WithinAbs(1.0, 4 * kEps));
+      REQUIRE(s.moments[0] == s.moments[1]);
+      REQUIRE(choose_method(s, "auto").method == SimMethod::exact);
+    }
+  }
+}
+
 TEST_CASE("rows past the in-memory limit go to a temporary file and come back unchanged") {
   // 26 columns: 40 330 rows fit in 2^20 numbers; 100 000 rows spill, and reads interleave with
   // appends (the error estimate reads row k while rows are still arriving elsewhere).
@@ -464,4 +498,3 @@ TEST_CASE("rows past the in-memory limit go to a temporary file and come back un
   CHECK(store.largest(0) == value(rows - 1, 0));  // the values grow with k
   CHECK_THROWS_AS(store.append(std::vector<double>(3)), std::invalid_argument);
 }
-
