@@ -67,6 +67,13 @@ double third_kind_excess(double s, double c, double kc2, double n) {
   return s * s2 * boost::math::ellint_rj(c2, c2 + kc2 * s2, 1.0, 1.0 - n * s2, Fast()) / 3.0;
 }
 
+double third_kind_excess(double s, double c, double kc2, double n, double one_minus_n) {
+  if (s == 0.0) return 0.0;
+  const double c2 = c * c, s2 = s * s;
+  return s * s2 * boost::math::ellint_rj(c2, c2 + kc2 * s2, 1.0, one_minus_n + n * c2, Fast()) /
+         3.0;
+}
+
 double complete_third_kind_excess(double kc2, double n) {
   return boost::math::ellint_rj(0.0, kc2, 1.0, 1.0 - n, Fast()) / 3.0;
 }

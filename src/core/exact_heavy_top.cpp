@@ -91,6 +91,10 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   // would otherwise be the attitude's error (eps per radian).
   const DoubleDouble w3_dd = DoubleDouble(m0_.z()) / DoubleDouble(top.I3_kgm2);
   psidot_lin_ = w3_dd;
+  if (sin0 > 0.0 && sin0 * sin0 == 0.0)
+    throw std::invalid_argument(
+        "exact heavy top: the axis starts within 1.5e-154 rad of the vertical but not on it (its "
+        "tilt's square underflows)");
   if (sin0 == 0.0) {
     if (m0_.x() != 0.0 || m0_.y() != 0.0)
       throw std::invalid_argument(
@@ -133,9 +137,20 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   // The sum of the roots of f (its u^2 coefficient over beta), written with the start's
   // kinetic term P = thetadot^2 + phidot^2 sin^2 >= 0 so that no large terms cancel.
   const double P = start.thetadot * start.thetadot + start.phidot * start.phidot * sin0 * sin0;
-  u3_ = std::max(1.0, u0_ + (P + a_ * a_) / beta - u1 - u2);
+  // u3 - 1 from the sum of the roots carries a rounding of about eps (1 + a^2 / beta): all of
+  // it where u3 - 1 is small. A top released near upright with too little spin to sleep has
+  // u3 - 1 and 1 - u2 both ~ theta0^2, and u3 - u2 is k'^2's numerator (released 1e-8 rad from
+  // upright, w was 3e-2 off a 30-digit integration after 2 s; 1e-4 rad, 8e-9). From
+  // f(1) = -(b - a)^2 = beta (1 - u1)(1 - u2)(1 - u3) it is instead a quotient of distances to
+  // the pole, each without cancellation where the upper limit is no nearer the pole than half
+  // the start's distance (1 - u2 = (1 - u0) - d_max then keeps all but a bit).
+  const double u3_minus_1 =
+      one_minus_u2_ > 0.0 && nutation_.d_max <= 0.5 * one_minus_u0
+          ? b_minus_a_ * b_minus_a_ / (beta * (one_minus_u0 - nutation_.d_min) * one_minus_u2_)
+          : std::max(0.0, u0_ + (P + a_ * a_) / beta - u1 - u2 - 1.0);
+  u3_ = 1.0 + u3_minus_1;
   // u3 - u2 = (u3 - 1) + (1 - u2), u3 - u1 = (u3 - u2) + du: sums.
-  const double u3_minus_u2 = (u3_ - 1.0) + one_minus_u2_, u3_minus_u1 = u3_minus_u2 + du_;
+  const double u3_minus_u2 = u3_minus_1 + one_minus_u2_, u3_minus_u1 = u3_minus_u2 + du_;
   // The chain in double, lifted; refined below where the polished roots confirm it.
   Chain chain{.d_min = nutation_.d_min,
               .d_max = nutation_.d_max,
@@ -206,6 +221,7 @@ void ExactHeavyTop::set_up_rates(const Chain& c) {
   // u1 = -1 the numerator b + a is zero with it, and n- would be infinite).
   const DD n_plus = du / one_minus_u1;
   n_plus_ = n_plus.value();
+  one_minus_n_plus_ = ((c.one_minus_u0 - c.d_max) / one_minus_u1).value();
   const DD lin_plus = DD(0.5) * c.b_minus_a / one_minus_u1;
   phidot_lin_ = lin_plus;
   psidot_lin_ = c.w3 - c.a - lin_plus;
@@ -245,7 +261,7 @@ void ExactHeavyTop::set_up_phase(double sin_thetadot0, const Chain& chain) {
   tau0_ = sin_thetadot0 > 0.0 ? -F0 : F0;  // theta rising is u falling
   const Phase p0 = phase_at(0.0);
   j0_ = p0.j;  // 0, or +-1 when tau0 rounds to the far side of +-K
-  if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess(p0, n_plus_);
+  if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess_plus(p0);
   if (c_minus_.hi != 0.0) G_minus0_ = incomplete_excess(p0, n_minus_);
   // theta0 as the closed form gives it at t = 0 (not the start's own, which differs by a
   // rounding): then at(0) is the start exactly, and theta(t) - theta0 has no offset.
@@ -278,11 +294,13 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
   a.one_plus_u = one_plus_u1_ + du_ * sn * sn;
   a.dtheta = std::atan2(std::sqrt(a.one_minus_u * a.one_plus_u), a.u) - theta0_;
   const DD two_j = 2.0 * (p.j - j0_);  // exact
-  const auto dG = [&](const DD& c, double n, const DD& complete, double G0) {
-    return c.hi == 0.0 ? DD() : c * (two_j * complete + DD(incomplete_excess(p, n) - G0));
+  const auto dG = [&](const DD& c, double excess, const DD& complete, double G0) {
+    return c.hi == 0.0 ? DD() : c * (two_j * complete + DD(excess - G0));
   };
-  const DD dG_plus = dG(c_plus_, n_plus_, complete_plus_, G_plus0_);
-  const DD dG_minus = dG(c_minus_, n_minus_, complete_minus_, G_minus0_);
+  const DD dG_plus =
+      dG(c_plus_, c_plus_.hi != 0.0 ? incomplete_excess_plus(p) : 0.0, complete_plus_, G_plus0_);
+  const DD dG_minus = dG(c_minus_, c_minus_.hi != 0.0 ? incomplete_excess(p, n_minus_) : 0.0,
+                         complete_minus_, G_minus0_);
   a.dphi = remainder_two_pi(phidot_lin_ * t_dd + dG_plus + dG_minus);
   a.dpsi = remainder_two_pi(psidot_lin_ * t_dd - dG_plus + dG_minus);
   return a;

@@ -42,7 +42,8 @@ class ExactHeavyTop {
   enum class Kind { sleeping, steady, nutating };
 
   /// @throws std::invalid_argument for an invalid top, a non-finite state, or an axis that
-  ///   starts vertical while it moves (theta is not a coordinate there; start a moment later).
+  ///   starts vertical while it moves (theta is not a coordinate there; start a moment later),
+  ///   or within 1.5e-154 rad of the vertical but not on it (sin^2(theta0) underflows).
   ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& q0_BtoS);
 
   /// The state at t (s), any t: (m_B, q_BtoS).
@@ -75,6 +76,11 @@ class ExactHeavyTop {
   /// (Pi(n; am r) - r) / n of the reduced argument r alone (|r| <= K: bounded).
   double incomplete_excess(const Phase& p, double n) const {
     return third_kind_excess(p.of_r.sn, p.of_r.cn, kc2_, n);
+  }
+  /// The same for n+ (0 < n+ <= 1), with its complement (1 - u2) / (1 - u1): a start within
+  /// about 1e-8 rad of upright rounds n+ to 1, and 1 - n+ sn^2 to 0 at the upper limit.
+  double incomplete_excess_plus(const Phase& p) const {
+    return third_kind_excess(p.of_r.sn, p.of_r.cn, kc2_, n_plus_, one_minus_n_plus_);
   }
   /// theta(t) - theta0, phi(t) - phi0, psi(t) - psi0.
   struct Angles {
@@ -115,6 +121,7 @@ class ExactHeavyTop {
   double one_plus_u1_ = 0.0, one_minus_u2_ = 0.0;  ///< from the start and the roots in d
   double period_ = std::numeric_limits<double>::infinity();
   double n_plus_ = 0.0, n_minus_ = 0.0;
+  double one_minus_n_plus_ = 1.0;  ///< (1 - u2) / (1 - u1), without cancellation
   /// The phase's half periods and the integrals' incomplete parts at t = 0: G± grow from them.
   double j0_ = 0.0, G_plus0_ = 0.0, G_minus0_ = 0.0;
   /// What grows with t, to double-double: tau' and K (tau and its reduction), c± (the

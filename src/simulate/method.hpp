@@ -37,7 +37,8 @@ std::optional<RkMethod> runge_kutta_of(SimMethod m);
 /// no torque, I1 == I2 (within the degeneracy rule of core/principal_axes.hpp; their mean is
 /// used), the centre of mass on +e3 (off it by no more than that rule's share of |d|; scene
 /// setup turns a top's e3 toward it, simulate/scene_setup.hpp), and not
-/// started with the axle vertical and moving (theta is no coordinate there).
+/// started with the axle vertical and moving (theta is no coordinate there) nor tilted by less
+/// than 1.5e-154 rad but not 0 (the square of that tilt underflows).
 std::optional<HeavyTop> exact_heavy_top(const SceneSetup& s);
 /// The relative rounding error the exact heavy top would carry over the run (its Euler
 /// angles' phases: core/exact_heavy_top.hpp, euler_rate_bound); auto takes it only when this
