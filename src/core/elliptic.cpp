@@ -62,16 +62,16 @@ double incomplete_F(double s, double c, double kc2) {
 }
 
 double third_kind_excess(double s, double c, double kc2, double n) {
-  if (s == 0.0) return 0.0;
-  const double c2 = c * c, s2 = s * s;
-  return s * s2 * boost::math::ellint_rj(c2, c2 + kc2 * s2, 1.0, 1.0 - n * s2, Fast()) / 3.0;
+  return third_kind_excess(s, c, kc2, n, 1.0 - n);
 }
 
 double third_kind_excess(double s, double c, double kc2, double n, double one_minus_n) {
   if (s == 0.0) return 0.0;
   const double c2 = c * c, s2 = s * s;
-  return s * s2 * boost::math::ellint_rj(c2, c2 + kc2 * s2, 1.0, one_minus_n + n * c2, Fast()) /
-         3.0;
+  // 1 - n sin^2: for n > 0 as (1 - n) + n cos^2, which keeps its digits where n sin^2 is near 1;
+  // for n <= 0 as it is, a sum of terms >= 0 (the other form would cancel for large -n).
+  const double p = n > 0.0 ? one_minus_n + n * c2 : 1.0 - n * s2;
+  return s * s2 * boost::math::ellint_rj(c2, c2 + kc2 * s2, 1.0, p, Fast()) / 3.0;
 }
 
 double complete_third_kind_excess(double kc2, double n) {

@@ -27,14 +27,14 @@ double complete_K(double kc2);
 /// F(phi | k) for |phi| <= pi/2, from sin and cos of phi: sin R_F(cos^2, cos^2 + kc2 sin^2, 1).
 double incomplete_F(double sin_phi, double cos_phi, double kc2);
 
-/// (Pi(n; phi | k) - F(phi | k)) / n for |phi| <= pi/2, n < 1, without the cancellation of the
-/// difference: sin^3 R_J(cos^2, cos^2 + kc2 sin^2, 1, 1 - n sin^2) / 3.
-double third_kind_excess(double sin_phi, double cos_phi, double kc2, double n);
-/// The same for 0 < n <= 1 given with its complement one_minus_n = 1 - n, formed without
-/// cancellation by the caller: R_J's last argument is then (1 - n) + n cos^2, which keeps its
-/// digits where n sin^2 is near 1 (n within eps of 1 rounds to 1, and 1 - n sin^2 to 0 at
-/// phi = pi/2, where R_J is infinite; the excess itself is large but finite there).
+/// (Pi(n; phi | k) - F(phi | k)) / n for |phi| <= pi/2, n <= 1, without the cancellation of the
+/// difference: sin^3 R_J(cos^2, cos^2 + kc2 sin^2, 1, 1 - n sin^2) / 3. For n > 0 give the
+/// complement one_minus_n = 1 - n, formed without cancellation by the caller: R_J's last
+/// argument is then (1 - n) + n cos^2, which keeps its digits where n sin^2 is near 1 (n within
+/// eps of 1 rounds to 1, and 1 - n sin^2 to 0 at phi = pi/2, where R_J is infinite; the excess
+/// itself is large but finite there). Without it, 1 - n.
 double third_kind_excess(double sin_phi, double cos_phi, double kc2, double n, double one_minus_n);
+double third_kind_excess(double sin_phi, double cos_phi, double kc2, double n);
 
 /// The complete counterpart: (Pi(n | k) - K(k)) / n = R_J(0, kc2, 1, 1 - n) / 3, kc2 > 0.
 double complete_third_kind_excess(double kc2, double n);

@@ -261,8 +261,8 @@ void ExactHeavyTop::set_up_phase(double sin_thetadot0, const Chain& chain) {
   tau0_ = sin_thetadot0 > 0.0 ? -F0 : F0;  // theta rising is u falling
   const Phase p0 = phase_at(0.0);
   j0_ = p0.j;  // 0, or +-1 when tau0 rounds to the far side of +-K
-  if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess_plus(p0);
-  if (c_minus_.hi != 0.0) G_minus0_ = incomplete_excess(p0, n_minus_);
+  if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess(p0, n_plus_, one_minus_n_plus_);
+  if (c_minus_.hi != 0.0) G_minus0_ = incomplete_excess(p0, n_minus_, 1.0 - n_minus_);
   // theta0 as the closed form gives it at t = 0 (not the start's own, which differs by a
   // rounding): then at(0) is the start exactly, and theta(t) - theta0 has no offset.
   theta0_ = 0.0;
@@ -294,13 +294,12 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
   a.one_plus_u = one_plus_u1_ + du_ * sn * sn;
   a.dtheta = std::atan2(std::sqrt(a.one_minus_u * a.one_plus_u), a.u) - theta0_;
   const DD two_j = 2.0 * (p.j - j0_);  // exact
-  const auto dG = [&](const DD& c, double excess, const DD& complete, double G0) {
-    return c.hi == 0.0 ? DD() : c * (two_j * complete + DD(excess - G0));
+  const auto dG = [&](const DD& c, double n, double one_minus_n, const DD& complete, double G0) {
+    return c.hi == 0.0 ? DD()
+                       : c * (two_j * complete + DD(incomplete_excess(p, n, one_minus_n) - G0));
   };
-  const DD dG_plus =
-      dG(c_plus_, c_plus_.hi != 0.0 ? incomplete_excess_plus(p) : 0.0, complete_plus_, G_plus0_);
-  const DD dG_minus = dG(c_minus_, c_minus_.hi != 0.0 ? incomplete_excess(p, n_minus_) : 0.0,
-                         complete_minus_, G_minus0_);
+  const DD dG_plus = dG(c_plus_, n_plus_, one_minus_n_plus_, complete_plus_, G_plus0_);
+  const DD dG_minus = dG(c_minus_, n_minus_, 1.0 - n_minus_, complete_minus_, G_minus0_);
   a.dphi = remainder_two_pi(phidot_lin_ * t_dd + dG_plus + dG_minus);
   a.dpsi = remainder_two_pi(psidot_lin_ * t_dd - dG_plus + dG_minus);
   return a;

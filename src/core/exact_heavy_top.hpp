@@ -74,13 +74,10 @@ class ExactHeavyTop {
   /// tau' t, eps tau, would be the phase's error, growing with t).
   Phase phase_at(double t_s) const;
   /// (Pi(n; am r) - r) / n of the reduced argument r alone (|r| <= K: bounded).
-  double incomplete_excess(const Phase& p, double n) const {
-    return third_kind_excess(p.of_r.sn, p.of_r.cn, kc2_, n);
-  }
-  /// The same for n+ (0 < n+ <= 1), with its complement (1 - u2) / (1 - u1): a start within
-  /// about 1e-8 rad of upright rounds n+ to 1, and 1 - n+ sn^2 to 0 at the upper limit.
-  double incomplete_excess_plus(const Phase& p) const {
-    return third_kind_excess(p.of_r.sn, p.of_r.cn, kc2_, n_plus_, one_minus_n_plus_);
+  /// one_minus_n: 1 - n without cancellation, for n+ (a start within about 1e-8 rad of upright
+  /// rounds n+ to 1, and 1 - n+ sn^2 to 0 at the upper limit).
+  double incomplete_excess(const Phase& p, double n, double one_minus_n) const {
+    return third_kind_excess(p.of_r.sn, p.of_r.cn, kc2_, n, one_minus_n);
   }
   /// theta(t) - theta0, phi(t) - phi0, psi(t) - psi0.
   struct Angles {

@@ -53,14 +53,15 @@ std::optional<RkMethod> runge_kutta_of(SimMethod m) {
 }
 
 namespace {
-// An axle tilted from the vertical by less than about 1.5e-154 rad, but not 0: the closed form
-// works with sin^2(theta), which underflows to 0 there (a steady precession at theta = 0 came
-// out as NaN). An integrator follows such a start (a top that cannot sleep falls from it).
-bool tilt_underflows(const SceneSetup& s) {
+// The axle's tilt from the vertical at t = 0 (sin theta0).
+double axle_tilt(const SceneSetup& s) {
   const Vec3 e3 = s.q0_PtoS * Vec3::UnitZ();
-  const double tilt = std::hypot(e3.x(), e3.y());
-  return tilt > 0.0 && tilt * tilt == 0.0;
+  return std::hypot(e3.x(), e3.y());
 }
+// A tilt below about 1.5e-154 rad, but not 0: the closed form works with sin^2(theta), which
+// underflows to 0 there (a steady precession at theta = 0 came out as NaN). An integrator
+// follows such a start (a top that cannot sleep falls from it).
+bool tilt_underflows(double tilt) { return tilt > 0.0 && tilt * tilt == 0.0; }
 }  // namespace
 
 std::optional<HeavyTop> exact_heavy_top(const SceneSetup& s) {
@@ -72,10 +73,9 @@ std::optional<HeavyTop> exact_heavy_top(const SceneSetup& s) {
   const Vec3& d = m.d_P_m;
   if (!(d.z() > 0.0) || std::hypot(d.x(), d.y()) > kDegeneracyEps * eps * d.norm())
     return std::nullopt;
-  const Vec3 e3 = s.q0_PtoS * Vec3::UnitZ();
-  if (std::hypot(e3.x(), e3.y()) == 0.0 && (s.m0_P.x() != 0.0 || s.m0_P.y() != 0.0))
-    return std::nullopt;
-  if (tilt_underflows(s)) return std::nullopt;
+  const double tilt = axle_tilt(s);
+  if (tilt == 0.0 && (s.m0_P.x() != 0.0 || s.m0_P.y() != 0.0)) return std::nullopt;
+  if (tilt_underflows(tilt)) return std::nullopt;
   return HeavyTop{m.mass_kg, d.z(), -m.g_S.z(), 0.5 * (I[0] + I[1]), I[2]};
 }
 
@@ -188,16 +188,17 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
                             c.method == SimMethod::split2 || c.method == SimMethod::split4;
     const bool heavy_top_exact = c.method == SimMethod::exact && exact_heavy_top(s);
     if (needs_free && !free && !heavy_top_exact) {
-      throw InputError(
-          field + " " + requested + ": applies to torque-free motion only, and this scene has " +
-          (s.model.gravity ? "gravity about a pivot" : "a torque") +
-          (c.method == SimMethod::exact && s.model.gravity && !s.model.torque
-               ? (tilt_underflows(s) ? " with the axle within 1.5e-154 rad of the vertical but not "
-                                       "on it (the exact solution squares that tilt, which double "
-                                       "precision cannot)"
-                                     : " on a body that is no symmetric top pivoted on its axle")
-               : "") +
-          "; use rk4, dopri5, rkf78, dop853, vern9 or auto");
+      // Why a heavy top is not one the exact solution serves.
+      const char* why_not_top =
+          c.method != SimMethod::exact || !s.model.gravity || s.model.torque ? ""
+          : tilt_underflows(axle_tilt(s))
+              ? " with the axle within 1.5e-154 rad of the vertical but not on it (the exact "
+                "solution squares that tilt, which double precision cannot)"
+              : " on a body that is no symmetric top pivoted on its axle";
+      throw InputError(field + " " + requested +
+                       ": applies to torque-free motion only, and this scene has " +
+                       (s.model.gravity ? "gravity about a pivot" : "a torque") + why_not_top +
+                       "; use rk4, dopri5, rkf78, dop853, vern9 or auto");
     }
     if (c.method == SimMethod::closed_form && !s.symmetric) {
       throw InputError(fmt::format(
@@ -234,9 +235,7 @@ WorkEstimate estimate_work(const SceneSetup& s, const MethodChoice& c) {
     case SimMethod::rk4:
     case SimMethod::split2:
     case SimMethod::split4: {
-      const double per_step = c.method == SimMethod::rk4      ? 4
-                              : c.method == SimMethod::split2 ? 3
-                                                              : 9;
+      const double per_step = c.method == SimMethod::rk4 ? 4 : c.method == SimMethod::split2 ? 3 : 9;
       const double steps = std::ceil(s.t_end / c.step_s);
       return {steps * per_step + reference,
               fmt::format("{:.3g} steps of {:.3g} s over {:.6g} s", steps, c.step_s, s.t_end)};
@@ -253,7 +252,8 @@ WorkEstimate estimate_work(const SceneSetup& s, const MethodChoice& c) {
                      : c.method == SimMethod::rkf78 ? 13
                      : c.method == SimMethod::vern9 ? 16
                                                     : 15;
-  return {adaptive_evaluations(s, s.tolerance, order_of(runge_kutta_of(c.method).value()), stages) +
+  return {adaptive_evaluations(s, s.tolerance, order_of(runge_kutta_of(c.method).value()),
+                               stages) +
               reference,
           fmt::format("a rate up to {:.3g} rad/s over {:.6g} s at tolerance {:.0e}", rate, s.t_end,
                       s.tolerance)};

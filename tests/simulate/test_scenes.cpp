@@ -9,13 +9,13 @@
 #include <limits>
 
 #include "core/exact_free_body.hpp"
+#include "solvers/catalog.hpp"
 #include "problem/scene.hpp"
 #include "problem/values.hpp"
 #include "simulate/cross_check.hpp"
 #include "simulate/invariants.hpp"
-#include "simulate/scene_helpers.hpp"
 #include "simulate/simulation.hpp"
-#include "solvers/catalog.hpp"
+#include "simulate/scene_helpers.hpp"
 #include "solvers/solve.hpp"
 
 using namespace wobble;
