@@ -120,18 +120,22 @@ inline Quat mp_free_attitude(const Vec3& I, const Vec3& m0, const Quat& q0, doub
 
 /// The heavy top (core/exact_heavy_top.hpp's conventions) at 50 digits by a second route:
 /// the roots of f(u) polished by Newton's method on the cubic at 50 digits (started from
-/// double's), sn, cn, dn, F and Pi(n; phi | k) from Boost.Math (ellint_3, not Carlson's R_J),
-/// the Euler angles' increments reduced modulo 2 pi at 50 digits. Only the final rotations are
-/// composed in double: a few eps. For a nutating top (u1 < u2), the axis not vertical at t = 0.
-struct MpHeavyTop {
-  using mp = boost::multiprecision::cpp_bin_float_50;
+/// double's offsets from the start), sn, cn, dn, F and Pi(n; phi | k) from Boost.Math (ellint_3,
+/// not Carlson's R_J), the Euler angles' increments reduced modulo 2 pi at 50 digits. Only the
+/// final rotations are composed in double: a few eps. For a nutating top (u1 < u2), the axis not
+/// vertical at t = 0. Its 1 - u keeps 50 - 2 log10(1/theta) digits near upright: 18 at 1e-16 rad;
+/// MpHeavyTopAt takes more digits for tops nearer.
+template <class Real>
+struct MpHeavyTopAt {
+  using mp = Real;
   HeavyTop top;
   Vec3 m0;
   Quat q0;
   mp I1, I3, a, b, w3, beta, u0, u1, u2, u3, k, rate, tau0, theta0, Kc;
   Vec3 nodes0;
 
-  MpHeavyTop(const HeavyTop& t, const Vec3& m, const Quat& q) : top(t), m0(m), q0(q.normalized()) {
+  MpHeavyTopAt(const HeavyTop& t, const Vec3& m, const Quat& q)
+      : top(t), m0(m), q0(q.normalized()) {
     I1 = top.I1_kgm2;
     I3 = top.I3_kgm2;
     const mp qw = q0.w(), qx = q0.x(), qy = q0.y(), qz = q0.z();
@@ -154,19 +158,29 @@ struct MpHeavyTop {
     const mp wSx = r11 * wx + r12 * wy + e3x * wz, wSy = r21 * wx + r22 * wy + e3y * wz;
     const mp thetadot = (-e3y * wSx + e3x * wSy) / sin0;
     const mp phidot = (b - a * u0) / (sin0 * sin0);
-    const mp alpha = thetadot * thetadot + phidot * phidot * sin0 * sin0 + beta * u0;
-    const auto f = [&](const mp& u) { return (1 - u * u) * (alpha - beta * u) - (b - a * u) * (b - a * u); };
-    const auto df = [&](const mp& u) {
-      return -2 * u * (alpha - beta * u) - beta * (1 - u * u) + 2 * a * (b - a * u);
+    // The roots as offsets d from the start, f(u0 + d) = c0 + c1 d + c2 d^2 + beta d^3 (the
+    // expansion of core/heavy_top.hpp), polished by Newton's method from the double offsets,
+    // the third from the sum of the roots (-c2 / beta): released near upright, u2 and u3 are
+    // within theta0^2 of 1 and of each other, and rounded to the same double; as offsets they
+    // keep their digits, and a start at rest (c0 = 0) keeps its turning point at d = 0 exactly.
+    const mp P = thetadot * thetadot + phidot * phidot * sin0 * sin0;
+    const mp c0 = thetadot * thetadot * sin0 * sin0;
+    const mp c1 = -beta * sin0 * sin0 - 2 * u0 * P + 2 * a * phidot * sin0 * sin0;
+    const mp c2 = 2 * u0 * beta - P - a * a;
+    const auto polish = [&](mp d) {
+      for (int i = 0; i < 12; ++i) {
+        const mp g = c0 + d * (c1 + d * (c2 + d * beta)), dg = c1 + d * (2 * c2 + 3 * beta * d);
+        if (g == 0 || dg == 0) break;
+        d -= g / dg;
+      }
+      return d;
     };
     const ExactHeavyTop start(top, m0, q0);
-    const auto polish = [&](mp u) {
-      for (int i = 0; i < 8; ++i) u -= f(u) / df(u);
-      return u;
-    };
-    u1 = polish(start.nutation().u_min);
-    u2 = polish(start.nutation().u_max);
-    u3 = polish(start.u3());
+    const mp d1 = polish(start.nutation().d_min), d2 = polish(start.nutation().d_max);
+    const mp d3 = polish(-c2 / beta - d1 - d2);
+    u1 = u0 + d1;
+    u2 = u0 + d2;
+    u3 = u0 + d3;
     k = sqrt((u2 - u1) / (u3 - u1));
     Kc = boost::math::ellint_1(k);
     rate = sqrt(beta * (u3 - u1)) / 2;
@@ -218,5 +232,6 @@ struct MpHeavyTop {
     return out;
   }
 };
+using MpHeavyTop = MpHeavyTopAt<boost::multiprecision::cpp_bin_float_50>;
 
 }  // namespace wobble::bench
