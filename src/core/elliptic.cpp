@@ -113,11 +113,12 @@ DoubleDouble complete_K_dd(const DoubleDouble& kc2) {
   return dd_pi() / (DoubleDouble(2.0) * a);
 }
 
-DoubleDouble complete_third_kind_excess_dd(const DoubleDouble& kc2, const DoubleDouble& n) {
+DoubleDouble complete_third_kind_excess_dd(const DoubleDouble& kc2,
+                                           const DoubleDouble& one_minus_n) {
   // cel(kc, p, a, b) = int_0^(pi/2) (a cos^2 + b sin^2) / ((cos^2 + p sin^2)
   // sqrt(cos^2 + kc^2 sin^2)) dphi; with p = 1 - n, a = 0, b = 1 it is (Pi(n) - K) / n.
   using DD = DoubleDouble;
-  DD p = DD(1.0) - n, qc = sqrt(kc2), a(0.0), b(1.0), e = qc, em(1.0);
+  DD p = one_minus_n, qc = sqrt(kc2), a(0.0), b(1.0), e = qc, em(1.0);
   p = sqrt(p);
   b = b / p;
   // Each step squares the relative gap |g - qc| / g; once below 2^-53 the next would be

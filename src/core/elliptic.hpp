@@ -56,11 +56,14 @@ ReducedArgument reduce_by_half_period(const DoubleDouble& u, const DoubleDouble&
 /// the arithmetic-geometric mean iterated in double-double until its two means agree.
 DoubleDouble complete_K_dd(const DoubleDouble& kc2);
 
-/// complete_third_kind_excess to double-double, (Pi(n | k) - K(k)) / n for n < 1 (p = 1 - n
-/// > 0): Bulirsch's cel(k', p, 0, 1) (Numer. Math. 13, 1969), a quadratically convergent
-/// Landen iteration of sums, products, quotients and square roots only, here in
-/// double-double.
-DoubleDouble complete_third_kind_excess_dd(const DoubleDouble& kc2, const DoubleDouble& n);
+/// complete_third_kind_excess to double-double, (Pi(n | k) - K(k)) / n for n < 1, from the
+/// complement one_minus_n = 1 - n > 0 formed by the caller (n within 1e-32 of 1, as a top
+/// released near upright has it, leaves 1 - n no digit when formed from n, even in
+/// double-double): Bulirsch's cel(k', p, 0, 1) (Numer. Math. 13, 1969), p = 1 - n, a
+/// quadratically convergent Landen iteration of sums, products, quotients and square roots
+/// only, here in double-double.
+DoubleDouble complete_third_kind_excess_dd(const DoubleDouble& kc2,
+                                           const DoubleDouble& one_minus_n);
 
 /// (Pi(n; am u | k) - u) / n for any u, continued past |u| = K through the periods: 2 j times
 /// `complete` (complete_third_kind_excess(kc2, n)) plus the incomplete excess of r.

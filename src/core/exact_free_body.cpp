@@ -121,7 +121,8 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
     const DD n_dd = -(DD(J[2]) * d21_dd) / (DD(J[0]) * d32_dd);
     phi_rate_dd_ = M_dd / DD(J[0]);
     const DD phi_coef_dd = M_dd * d21_dd * d31_dd / (DD(J[0]) * DD(J[0]) * d32_dd * lambda_dd_);
-    phi_per_half_period_dd_ = DD(2.0) * phi_coef_dd * complete_third_kind_excess_dd(kc2_dd, n_dd);
+    phi_per_half_period_dd_ =
+        DD(2.0) * phi_coef_dd * complete_third_kind_excess_dd(kc2_dd, DD(1.0) - n_dd);
   }
   G0_ = G(phase_at(0.0));
   const Mat3 R0 = q0_.toRotationMatrix() * C_.transpose();  // W -> S at t = 0

@@ -144,8 +144,9 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   // f(1) = -(b - a)^2 = beta (1 - u1)(1 - u2)(1 - u3) it is instead a quotient of distances to
   // the pole, each without cancellation where the upper limit is no nearer the pole than half
   // the start's distance (1 - u2 = (1 - u0) - d_max then keeps all but a bit).
+  const bool third_root_from_pole = one_minus_u2_ > 0.0 && nutation_.d_max <= 0.5 * one_minus_u0;
   const double u3_minus_1 =
-      one_minus_u2_ > 0.0 && nutation_.d_max <= 0.5 * one_minus_u0
+      third_root_from_pole
           ? b_minus_a_ * b_minus_a_ / (beta * (one_minus_u0 - nutation_.d_min) * one_minus_u2_)
           : std::max(0.0, u0_ + (P + a_ * a_) / beta - u1 - u2 - 1.0);
   u3_ = 1.0 + u3_minus_1;
@@ -162,7 +163,8 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
               .b_plus_a = b_plus_a_,
               .a = m0_.z() / DD(I1),
               .beta = beta,
-              .w3 = w3_dd};
+              .w3 = w3_dd,
+              .third_root_from_pole = third_root_from_pole};
   if (u3_minus_u2 > 0.0) refine(chain);
   set_up_rates(chain);
   set_up_phase(sin0 * start.thetadot, chain);
@@ -171,9 +173,16 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
 void ExactHeavyTop::refine(Chain& c) const {
   const StartDD s = start_dd(top_, m0_, q0_);
   const DD d_min = polish_root(c.d_min.hi, s), d_max = polish_root(c.d_max.hi, s);
-  // The third root from the sum of the roots, -c2 / beta.
-  const DD d3 = -(s.c2 / s.beta) - d_min - d_max;
-  const DD u3_minus_u1 = d3 - d_min, u3_minus_u2 = d3 - d_max;
+  // The third root as the double chain takes it (the constructor): near upright from
+  // f(1) = -(b - a)^2 = beta (1 - u1)(1 - u2)(1 - u3), a quotient of distances to the pole (in
+  // double-double too, the sum leaves u3 - u2 ~ theta0^2 only 1e-32 absolute: 1e-9 relative for
+  // a top released 1e-12 rad from upright), else from the sum of the roots, -c2 / beta.
+  const DD one_minus_u2 = s.one_minus_u0 - d_max, one_minus_u1 = s.one_minus_u0 - d_min;
+  const DD u3_minus_u2 =
+      c.third_root_from_pole
+          ? s.b_minus_a * s.b_minus_a / (s.beta * one_minus_u1 * one_minus_u2) + one_minus_u2
+          : -(s.c2 / s.beta) - d_min - d_max - d_max;
+  const DD u3_minus_u1 = u3_minus_u2 + (d_max - d_min);
   // Newton's method near a double root (a nutation near rounding, a top all but in steady
   // precession) or a root at a pole may settle elsewhere: keep the double chain unless every
   // refined difference is the double one to its own accuracy (1e-9 is far above it and far
@@ -219,15 +228,18 @@ void ExactHeavyTop::set_up_rates(const Chain& c) {
   }
   // The partial fractions over 1 - u and 1 + u; a term whose numerator is zero is left out (at
   // u1 = -1 the numerator b + a is zero with it, and n- would be infinite).
+  // 1 - n+ = (1 - u2) / (1 - u1), not from n+: released near upright, n+ is within theta0^2
+  // of 1, and 1 - n+ formed from it, even in double-double, kept no digit below 1e-16 rad.
   const DD n_plus = du / one_minus_u1;
+  const DD one_minus_n_plus = (c.one_minus_u0 - c.d_max) / one_minus_u1;
   n_plus_ = n_plus.value();
-  one_minus_n_plus_ = ((c.one_minus_u0 - c.d_max) / one_minus_u1).value();
+  one_minus_n_plus_ = one_minus_n_plus.value();
   const DD lin_plus = DD(0.5) * c.b_minus_a / one_minus_u1;
   phidot_lin_ = lin_plus;
   psidot_lin_ = c.w3 - c.a - lin_plus;
   if (b_minus_a_ != 0.0) {
     c_plus_ = lin_plus * n_plus / rate;
-    if (kc2_ > 0.0) complete_plus_ = complete_third_kind_excess_dd(kc2, n_plus);
+    if (kc2_ > 0.0) complete_plus_ = complete_third_kind_excess_dd(kc2, one_minus_n_plus);
   }
   if (b_plus_a_ != 0.0 && one_plus_u1_ > 0.0) {
     const DD n = -(du / one_plus_u1);
@@ -236,7 +248,7 @@ void ExactHeavyTop::set_up_rates(const Chain& c) {
     phidot_lin_ = phidot_lin_ + lin_minus;
     psidot_lin_ = psidot_lin_ + lin_minus;
     c_minus_ = lin_minus * n / rate;
-    if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, n);
+    if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, DD(1.0) - n);
   }
 }
 

@@ -93,6 +93,7 @@ class ExactHeavyTop {
     DoubleDouble one_minus_u0, one_plus_u0;
     DoubleDouble u3_minus_u1, u3_minus_u2;
     DoubleDouble b_minus_a, b_plus_a, a, beta, w3;
+    bool third_root_from_pole;  ///< u3 - 1 from f(1) (near upright), else from the roots' sum
   };
   /// Replaces the chain by the same quantities from the start state in double-double, the
   /// cubic's roots polished by Newton's method, where they confirm the double ones.
