@@ -82,3 +82,19 @@ TEST_CASE("the complete third-kind excess in double-double (Bulirsch's cel) agai
     }
   }
 }
+
+TEST_CASE("the complete third-kind excess in double-double with n within 1e-16 to 1e-32 of 1") {
+  // A top released near upright has n+ and k^2 both within ~theta0^2 of 1: 1 - n then comes
+  // from its caller, as a quotient of distances to the pole, since formed from n it would keep
+  // no digit (the double-double n's own rounding is 1e-32). Given 1 - n exactly, the excess
+  // (~1 / (1 - n) there) keeps double-double's accuracy.
+  for (const double kc2 : {1e-16, 1e-24, 1e-32}) {
+    for (const double one_minus_n : {1e-16, 3e-25, 1e-32}) {
+      const mp want = boost::math::ellint_rj(mp(0), mp(kc2), mp(1), mp(one_minus_n)) / 3;
+      const double e = error_in_u(
+          complete_third_kind_excess_dd(DoubleDouble(kc2), DoubleDouble(one_minus_n)), want);
+      INFO("k'^2 = " << kc2 << ", 1 - n = " << one_minus_n << ": " << e << " u");
+      REQUIRE(e <= 64.0);  // as above
+    }
+  }
+}
