@@ -243,13 +243,51 @@ void ExactHeavyTop::set_up_rates(const Chain& c) {
   }
   if (b_plus_a_ != 0.0 && one_plus_u1_ > 0.0) {
     const DD n = -(du / one_plus_u1);
-    n_minus_ = n.value();
     const DD lin_minus = DD(0.5) * c.b_plus_a / one_plus_u1;
-    phidot_lin_ = phidot_lin_ + lin_minus;
-    psidot_lin_ = psidot_lin_ + lin_minus;
-    c_minus_ = lin_minus * n / rate;
-    if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, DD(1.0) - n);
+    if (n.hi >= -1.0) {
+      n_minus_ = n.value();
+      one_minus_n_minus_ = (DD(1.0) - n).value();
+      phidot_lin_ = phidot_lin_ + lin_minus;
+      psidot_lin_ = psidot_lin_ + lin_minus;
+      c_minus_ = lin_minus * n / rate;
+      if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, DD(1.0) - n);
+    } else {
+      set_up_minus_transformed(n, lin_minus, du / c.u3_minus_u1, kc2, rate);
+    }
   }
+}
+
+// A top that swings near hanging down (1 + u1 small beside du) has n- = -du/(1 + u1) << -1:
+// Pi(n-; am tau) = tau + n- G is then a small difference of large terms (lin- t against c- G,
+// hundreds of radians a half period apart for one that swings to 0.17 rad from the bottom), and
+// G's rounding in double, times c-, was 1e-13 rad in phi and psi. Pi(n-) itself is small:
+// A&S 17.7.15 (Boost.Math's ellint_3 for n < 0) writes it with N = (k^2 - n)/(1 - n) in (k^2, 1),
+//   Pi(n; am tau) = (A + B) tau + A N G_N(tau) + C atan(p sn cn / dn),
+//   A = -n k'^2 / ((1 - n)(k^2 - n)), B = k^2 / (k^2 - n), C = sqrt(-n / ((1 - n)(k^2 - n))),
+//   p = sqrt(-n N), 1 - N = k'^2 / (1 - n),
+// every term as large as Pi(n-) or bounded (the arctangent's period is sn cn's, 2K).
+void ExactHeavyTop::set_up_minus_transformed(const DD& n, const DD& lin_minus, const DD& k2,
+                                             const DD& kc2, const DD& rate) {
+  const DD minus_n = -n, one_minus_n = DD(1.0) - n, k2_minus_n = k2 + minus_n;
+  const DD N = k2_minus_n / one_minus_n, one_minus_N = kc2 / one_minus_n;
+  const DD A = minus_n * kc2 / (one_minus_n * k2_minus_n), B = k2 / k2_minus_n;
+  const DD C = sqrt(minus_n / (one_minus_n * k2_minus_n));
+  n_minus_ = N.value();
+  one_minus_n_minus_ = one_minus_N.value();
+  phidot_lin_ = phidot_lin_ + lin_minus * (A + B);
+  psidot_lin_ = psidot_lin_ + lin_minus * (A + B);
+  const DD scale = lin_minus / rate;
+  c_minus_ = scale * A * N;
+  if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, one_minus_N);
+  minus_atan_p_ = sqrt(minus_n * N).value();
+  minus_atan_coef_ = (scale * C).value();
+}
+
+double ExactHeavyTop::minus_atan(const Phase& p) const {
+  if (minus_atan_coef_ == 0.0) return 0.0;
+  // dn = 0 only where cn = 0 on the separatrix (k' = 0), where dn = cn.
+  const double cn_over_dn = p.of_r.dn > 0.0 ? p.of_r.cn / p.of_r.dn : 1.0;
+  return std::atan(minus_atan_p_ * p.of_r.sn * cn_over_dn);
 }
 
 // tau0 from the start, and the integrals' values there (G± grow from them).
@@ -274,7 +312,8 @@ void ExactHeavyTop::set_up_phase(double sin_thetadot0, const Chain& chain) {
   const Phase p0 = phase_at(0.0);
   j0_ = p0.j;  // 0, or +-1 when tau0 rounds to the far side of +-K
   if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess(p0, n_plus_, one_minus_n_plus_);
-  if (c_minus_.hi != 0.0) G_minus0_ = incomplete_excess(p0, n_minus_, 1.0 - n_minus_);
+  if (c_minus_.hi != 0.0) G_minus0_ = incomplete_excess(p0, n_minus_, one_minus_n_minus_);
+  minus_atan0_ = minus_atan(p0);
   // theta0 as the closed form gives it at t = 0 (not the start's own, which differs by a
   // rounding): then at(0) is the start exactly, and theta(t) - theta0 has no offset.
   theta0_ = 0.0;
@@ -311,7 +350,8 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
                        : c * (two_j * complete + DD(incomplete_excess(p, n, one_minus_n) - G0));
   };
   const DD dG_plus = dG(c_plus_, n_plus_, one_minus_n_plus_, complete_plus_, G_plus0_);
-  const DD dG_minus = dG(c_minus_, n_minus_, 1.0 - n_minus_, complete_minus_, G_minus0_);
+  const DD dG_minus = dG(c_minus_, n_minus_, one_minus_n_minus_, complete_minus_, G_minus0_) +
+                      DD(minus_atan_coef_ * (minus_atan(p) - minus_atan0_));
   a.dphi = remainder_two_pi(phidot_lin_ * t_dd + dG_plus + dG_minus);
   a.dpsi = remainder_two_pi(psidot_lin_ * t_dd - dG_plus + dG_minus);
   return a;

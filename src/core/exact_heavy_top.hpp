@@ -10,13 +10,16 @@
 /// The motion (Goldstein 5.7; Landau-Lifshitz 35): u' ^2 = f(u) = beta (u - u1)(u - u2)(u - u3),
 /// u1 <= u2 the nutation limits (core/heavy_top.hpp), u3 >= 1. Then
 ///   u(t) = u1 + (u2 - u1) sn^2(tau, k),  tau = tau0 + tau' t,  tau'^2 = beta (u3 - u1) / 4,
-///   k^2 = (u2 - u1) / (u3 - u1) (k'^2 = (u3 - u2) / (u3 - u1) from the differences, never 1 - k^2),
+///   k^2 = (u2 - u1) / (u3 - u1) (k'^2 = (u3 - u2) / (u3 - u1) from the differences, never 1 -
+///   k^2),
 /// and the azimuth and spin rates split into partial fractions over 1 - u and 1 + u,
 ///   phi' = (b - a u)/(1 - u^2) = 1/2 [(b - a)/(1 - u) + (b + a)/(1 + u)],
 ///   psi' = w3 - u phi' = w3 - a - 1/2 (b - a)/(1 - u) + 1/2 (b + a)/(1 + u),
 /// with 1 -+ u = (1 -+ u1)(1 - n± sn^2), n+ = (u2 - u1)/(1 - u1), n- = -(u2 - u1)/(1 + u1), so
 /// each is a linear term plus an incomplete elliptic integral of the third kind,
-/// Pi(n; am tau) = tau + n G(tau), G continued past K through the periods (core/elliptic.hpp).
+/// Pi(n; am tau) = tau + n G(tau), G continued past K through the periods (core/elliptic.hpp);
+/// for n- < -1 (a top that swings near hanging down) Pi(n-) is taken by A&S 17.7.15 instead,
+/// whose terms are no larger than Pi(n-) itself (set_up_minus_transformed).
 /// The attitude follows from the Euler angles relative to the start, which never needs psi0
 /// or phi0 themselves: q(t) = Rz(dphi) Rot(n0, theta - theta0) q0 Rz(dpsi), n0 the line of
 /// nodes at t = 0.
@@ -101,6 +104,13 @@ class ExactHeavyTop {
   /// From the chain: the nutation's rate and period, the partial fractions' coefficients, their
   /// complete integrals and the linear rates.
   void set_up_rates(const Chain& c);
+  /// The minus term for n- < -1 by A&S 17.7.15 (see the .cpp): its linear rate, G_N's
+  /// coefficient and parameter, and the arctangent's.
+  void set_up_minus_transformed(const DoubleDouble& n, const DoubleDouble& lin_minus,
+                                const DoubleDouble& k2, const DoubleDouble& kc2,
+                                const DoubleDouble& rate);
+  /// atan(p sn cn / dn) of the transformed minus term at the phase (0 when it is not used).
+  double minus_atan(const Phase& p) const;
   /// tau0 (sin(theta0) thetadot0 = -u'(0) gives its side and, near a turning point, its
   /// distance from it) and the integrals' incomplete parts at t = 0.
   void set_up_phase(double sin_thetadot0, const Chain& c);
@@ -119,6 +129,10 @@ class ExactHeavyTop {
   double one_plus_u1_ = 0.0, one_minus_u2_ = 0.0;  ///< from the start and the roots in d
   double period_ = std::numeric_limits<double>::infinity();
   double n_plus_ = 0.0, n_minus_ = 0.0;
+  /// 1 - n-, or 1 - N of the transformed minus term (set_up_minus_transformed)
+  double one_minus_n_minus_ = 1.0;
+  /// The transformed minus term's arctangent: its coefficient (rad), p, and value at t = 0.
+  double minus_atan_coef_ = 0.0, minus_atan_p_ = 0.0, minus_atan0_ = 0.0;
   double one_minus_n_plus_ = 1.0;  ///< (1 - u2) / (1 - u1), without cancellation
   /// The phase's half periods and the integrals' incomplete parts at t = 0: G± grow from them.
   double j0_ = 0.0, G_plus0_ = 0.0, G_minus0_ = 0.0;

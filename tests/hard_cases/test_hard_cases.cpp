@@ -546,6 +546,16 @@ TEST_CASE("hard 17: a top released near upright is exact at any time, against 50
       const Error e = error_at((k + 0.5) * period / kSamplesPerPeriod);
       first = {std::max(first.attitude, e.attitude), std::max(first.momentum, e.momentum)};
     }
+    // And that error is the reduced phase's rounding: eps K, a time error of eps T / 2, which
+    // the fastest Euler rate r turns into eps r T / 2 (16 eps as below). The top swings to
+    // 0.17 rad from hanging down: n- = -du / (1 + u1) = -140, and Pi(n-) as tau + n- G had put
+    // G's rounding in double, times its coefficient -1670, on phi and psi (1e3 eps beyond this).
+    const double phase_bound = kEps * (16 + 0.5 * exact.euler_rate_bound() * period);
+    INFO("theta0 " << theta0 << ": first period attitude " << first.attitude / kEps
+                   << " eps, momentum " << first.momentum / kEps << " eps, phase rounding "
+                   << phase_bound / kEps << " eps");
+    CHECK(first.attitude <= phase_bound);
+    CHECK(first.momentum <= phase_bound);
     for (const double t : {1e2 + 0.3, 1e4 + 0.1, 1e6 + 0.2, 1e7 + 0.4}) {
       const Error e = error_at(t);
       INFO("theta0 " << theta0 << " t " << t << ": attitude " << e.attitude / kEps
