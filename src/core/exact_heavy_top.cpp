@@ -285,8 +285,10 @@ void ExactHeavyTop::set_up_minus_transformed(const DD& n, const DD& lin_minus, c
 
 double ExactHeavyTop::minus_atan(const Phase& p) const {
   if (minus_atan_coef_ == 0.0) return 0.0;
-  // dn = 0 only where cn = 0 on the separatrix (k' = 0), where dn = cn.
-  const double cn_over_dn = p.of_r.dn > 0.0 ? p.of_r.cn / p.of_r.dn : 1.0;
+  // |cn|: r may pass +-K by a rounding, where cn < 0; G (of cn^2) takes r reflected there, and
+  // so must this term, or their sum Pi(n-) breaks by p C times the rounding (7e-14 rad for a
+  // top started at rest, at r = K). dn = 0 only where cn = 0 on the separatrix (k' = 0).
+  const double cn_over_dn = p.of_r.dn > 0.0 ? std::abs(p.of_r.cn) / p.of_r.dn : 1.0;
   return std::atan(minus_atan_p_ * p.of_r.sn * cn_over_dn);
 }
 
@@ -307,8 +309,17 @@ void ExactHeavyTop::set_up_phase(double sin_thetadot0, const Chain& chain) {
     sn0 = v / cn0;
   }
   const double h = std::hypot(sn0, cn0);
-  const double F0 = incomplete_F(sn0 / h, cn0 / h, kc2_);
-  tau0_ = sin_thetadot0 > 0.0 ? -F0 : F0;  // theta rising is u falling
+  sn0 /= h;
+  cn0 /= h;
+  // Nearer the turning point at K (sn0 > cn0), tau0 = K - tau' with sn(tau') = cd(tau0),
+  // cn(tau') = k' sd(tau0), K in double-double: F(am tau0) in double carried eps K, a time
+  // error at every later time (a top released at rest starts exactly at K, now kept exact).
+  // dn from the normalised sn0, cn0, so that the complement's sine and cosine are unit.
+  const double dn = std::sqrt(cn0 * cn0 + kc2_ * sn0 * sn0), kc = std::sqrt(kc2_);
+  const DD F0 = sn0 > cn0 && kc2_ > 0.0 ? K_dd_ - DD(incomplete_F(cn0 / dn, kc * sn0 / dn, kc2_))
+                                        : DD(incomplete_F(sn0, cn0, kc2_));
+  tau0_dd_ = sin_thetadot0 > 0.0 ? -F0 : F0;  // theta rising is u falling
+  tau0_ = tau0_dd_.value();
   const Phase p0 = phase_at(0.0);
   j0_ = p0.j;  // 0, or +-1 when tau0 rounds to the far side of +-K
   if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess(p0, n_plus_, one_minus_n_plus_);
@@ -359,7 +370,7 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
 
 ExactHeavyTop::Phase ExactHeavyTop::phase_at(double t) const {
   if (!std::isfinite(K_)) return reduce_by_half_period(tau0_ + rate_ * t, K_, kc2_);
-  return reduce_by_half_period(DD(tau0_) + rate_dd_ * DD(t), K_dd_, kc2_);
+  return reduce_by_half_period(tau0_dd_ + rate_dd_ * DD(t), K_dd_, kc2_);
 }
 
 double ExactHeavyTop::euler_rate_bound() const {

@@ -125,7 +125,8 @@ class ExactHeavyTop {
   Vec3 nodes0_S_ = Vec3::UnitY();  ///< line of nodes at t = 0
   // nutating
   double u3_ = std::numeric_limits<double>::infinity(), du_ = 0.0, k2_ = 0.0, kc2_ = 1.0, K_ = 0.0;
-  double rate_ = 0.0, tau0_ = 0.0;  ///< tau' and tau(0)
+  double rate_ = 0.0, tau0_ = 0.0;  ///< tau' and tau(0) (tau0_ alone on the separatrix)
+  DoubleDouble tau0_dd_;  ///< tau(0) to double-double (K - tau' near the turning point at K)
   double one_plus_u1_ = 0.0, one_minus_u2_ = 0.0;  ///< from the start and the roots in d
   double period_ = std::numeric_limits<double>::infinity();
   double n_plus_ = 0.0, n_minus_ = 0.0;
