@@ -242,17 +242,17 @@ void ExactHeavyTop::set_up_rates(const Chain& c) {
     if (kc2_ > 0.0) complete_plus_ = complete_third_kind_excess_dd(kc2, one_minus_n_plus);
   }
   if (b_plus_a_ != 0.0 && one_plus_u1_ > 0.0) {
-    const DD n = -(du / one_plus_u1);
+    const DD n = -(du / one_plus_u1), one_minus_n = DD(1.0) - n;
     const DD lin_minus = DD(0.5) * c.b_plus_a / one_plus_u1;
     if (n.hi >= -1.0) {
       n_minus_ = n.value();
-      one_minus_n_minus_ = (DD(1.0) - n).value();
+      one_minus_n_minus_ = one_minus_n.value();
       phidot_lin_ = phidot_lin_ + lin_minus;
       psidot_lin_ = psidot_lin_ + lin_minus;
       c_minus_ = lin_minus * n / rate;
-      if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, DD(1.0) - n);
+      if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, one_minus_n);
     } else {
-      set_up_minus_transformed(n, lin_minus, du / c.u3_minus_u1, kc2, rate);
+      set_up_minus_transformed(n, one_minus_n, lin_minus, du / c.u3_minus_u1, kc2, rate);
     }
   }
 }
@@ -266,9 +266,10 @@ void ExactHeavyTop::set_up_rates(const Chain& c) {
 //   A = -n k'^2 / ((1 - n)(k^2 - n)), B = k^2 / (k^2 - n), C = sqrt(-n / ((1 - n)(k^2 - n))),
 //   p = sqrt(-n N), 1 - N = k'^2 / (1 - n),
 // every term as large as Pi(n-) or bounded (the arctangent's period is sn cn's, 2K).
-void ExactHeavyTop::set_up_minus_transformed(const DD& n, const DD& lin_minus, const DD& k2,
-                                             const DD& kc2, const DD& rate) {
-  const DD minus_n = -n, one_minus_n = DD(1.0) - n, k2_minus_n = k2 + minus_n;
+void ExactHeavyTop::set_up_minus_transformed(const DD& n, const DD& one_minus_n,
+                                             const DD& lin_minus, const DD& k2, const DD& kc2,
+                                             const DD& rate) {
+  const DD minus_n = -n, k2_minus_n = k2 + minus_n;
   const DD N = k2_minus_n / one_minus_n, one_minus_N = kc2 / one_minus_n;
   const DD A = minus_n * kc2 / (one_minus_n * k2_minus_n), B = k2 / k2_minus_n;
   const DD C = sqrt(minus_n / (one_minus_n * k2_minus_n));

@@ -10,8 +10,7 @@
 /// The motion (Goldstein 5.7; Landau-Lifshitz 35): u' ^2 = f(u) = beta (u - u1)(u - u2)(u - u3),
 /// u1 <= u2 the nutation limits (core/heavy_top.hpp), u3 >= 1. Then
 ///   u(t) = u1 + (u2 - u1) sn^2(tau, k),  tau = tau0 + tau' t,  tau'^2 = beta (u3 - u1) / 4,
-///   k^2 = (u2 - u1) / (u3 - u1) (k'^2 = (u3 - u2) / (u3 - u1) from the differences, never 1 -
-///   k^2),
+///   k^2 = (u2 - u1) / (u3 - u1) (k'^2 = (u3 - u2) / (u3 - u1) from the differences, never 1 - k^2),
 /// and the azimuth and spin rates split into partial fractions over 1 - u and 1 + u,
 ///   phi' = (b - a u)/(1 - u^2) = 1/2 [(b - a)/(1 - u) + (b + a)/(1 + u)],
 ///   psi' = w3 - u phi' = w3 - a - 1/2 (b - a)/(1 - u) + 1/2 (b + a)/(1 + u),
@@ -106,9 +105,9 @@ class ExactHeavyTop {
   void set_up_rates(const Chain& c);
   /// The minus term for n- < -1 by A&S 17.7.15 (see the .cpp): its linear rate, G_N's
   /// coefficient and parameter, and the arctangent's.
-  void set_up_minus_transformed(const DoubleDouble& n, const DoubleDouble& lin_minus,
-                                const DoubleDouble& k2, const DoubleDouble& kc2,
-                                const DoubleDouble& rate);
+  void set_up_minus_transformed(const DoubleDouble& n, const DoubleDouble& one_minus_n,
+                                const DoubleDouble& lin_minus, const DoubleDouble& k2,
+                                const DoubleDouble& kc2, const DoubleDouble& rate);
   /// atan(p sn cn / dn) of the transformed minus term at the phase (0 when it is not used).
   double minus_atan(const Phase& p) const;
   /// tau0 (sin(theta0) thetadot0 = -u'(0) gives its side and, near a turning point, its
