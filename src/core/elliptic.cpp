@@ -141,6 +141,26 @@ DoubleDouble complete_third_kind_excess_dd(const DoubleDouble& kc2,
   return DD(0.5) * dd_pi() * (b + a * em) / (em * (em + p));
 }
 
+NegativeThirdKind negative_third_kind(const DoubleDouble& n, const DoubleDouble& one_minus_n,
+                                      const DoubleDouble& k2, const DoubleDouble& kc2) {
+  using DD = DoubleDouble;
+  const DD minus_n = -n, k2_minus_n = k2 + minus_n;  // sums of positive terms
+  NegativeThirdKind t;
+  t.N = k2_minus_n / one_minus_n;
+  t.one_minus_N = kc2 / one_minus_n;
+  const DD A = minus_n * kc2 / (one_minus_n * k2_minus_n), B = k2 / k2_minus_n;
+  t.linear = A + B;
+  t.excess_coef = A * t.N;
+  t.atan_coef = sqrt(minus_n / (one_minus_n * k2_minus_n));
+  t.atan_p = sqrt(minus_n * t.N).value();
+  return t;
+}
+
+double negative_third_kind_atan(double atan_p, const SnCnDn& of_r) {
+  const double cn_over_dn = of_r.dn > 0.0 ? std::abs(of_r.cn) / of_r.dn : 1.0;
+  return std::atan(atan_p * of_r.sn * cn_over_dn);
+}
+
 double third_kind_excess(const ReducedArgument& a, double kc2, double n, double complete) {
   return 2.0 * a.j * complete + third_kind_excess(a.of_r.sn, a.of_r.cn, kc2, n);
 }

@@ -65,6 +65,34 @@ DoubleDouble complete_K_dd(const DoubleDouble& kc2);
 DoubleDouble complete_third_kind_excess_dd(const DoubleDouble& kc2,
                                            const DoubleDouble& one_minus_n);
 
+/// Pi(n; phi | k) for n < -1 without its cancellation (A&S 17.7.15; Boost.Math's ellint_3
+/// takes n < 0 so). Written Pi(n) = F + n G_n, the two terms are large and nearly cancel when
+/// n << -1 (Pi(n) ~ pi / (2 sqrt(-n)) while F ~ K), and G_n's rounding times n is then an error
+/// of eps K. With N = (k^2 - n) / (1 - n) in (k^2, 1),
+///   Pi(n; phi) = linear F(phi) + excess_coef G_N(phi) + atan_coef atan(atan_p sin cos / delta),
+///   linear = A + B, excess_coef = A N, atan_coef = C, atan_p = sqrt(-n N),
+///   A = -n k'^2 / ((1 - n)(k^2 - n)), B = k^2 / (k^2 - n), C = sqrt(-n / ((1 - n)(k^2 - n))),
+/// G_N = third_kind_excess(..., N, one_minus_N), 1 - N = k'^2 / (1 - n) without cancellation,
+/// delta = sqrt(1 - k^2 sin^2): every term no larger than Pi(n), or bounded (the arctangent).
+/// For |phi| <= pi/2; past it G_N continues through the periods and the arctangent, whose
+/// period is sin cos's, repeats. The caller gives 1 - n, k^2 and k'^2 in double-double (each
+/// formed without cancellation); the coefficients come in double-double for a caller that
+/// multiplies them by a growing phase.
+struct NegativeThirdKind {
+  DoubleDouble N, one_minus_N;  ///< G_N's characteristic and its complement
+  DoubleDouble linear;          ///< A + B, F's coefficient
+  DoubleDouble excess_coef;     ///< A N, G_N's coefficient
+  DoubleDouble atan_coef;       ///< C (dimensionless, as Pi)
+  double atan_p = 0.0;          ///< sqrt(-n N)
+};
+NegativeThirdKind negative_third_kind(const DoubleDouble& n, const DoubleDouble& one_minus_n,
+                                      const DoubleDouble& k2, const DoubleDouble& kc2);
+/// The arctangent of that form at a reduced argument r (|r| <= K): atan(p sn cn / dn). cn is
+/// taken as |cn|: r may pass +-K by a rounding, where cn < 0, and G_N (of cn^2) takes r as
+/// reflected there, so the arctangent must too, or their sum breaks by p C times the rounding.
+/// On the separatrix (k' = 0) cn = dn = sech: where both underflow to 0, cn / dn is its limit 1.
+double negative_third_kind_atan(double atan_p, const SnCnDn& of_r);
+
 /// (Pi(n; am u | k) - u) / n for any u, continued past |u| = K through the periods: 2 j times
 /// `complete` (complete_third_kind_excess(kc2, n)) plus the incomplete excess of r.
 double third_kind_excess(const ReducedArgument& a, double kc2, double n, double complete);

@@ -260,37 +260,26 @@ void ExactHeavyTop::set_up_rates(const Chain& c) {
 // A top that swings near hanging down (1 + u1 small beside du) has n- = -du/(1 + u1) << -1:
 // Pi(n-; am tau) = tau + n- G is then a small difference of large terms (lin- t against c- G,
 // hundreds of radians a half period apart for one that swings to 0.17 rad from the bottom), and
-// G's rounding in double, times c-, was 1e-13 rad in phi and psi. Pi(n-) itself is small:
-// A&S 17.7.15 (Boost.Math's ellint_3 for n < 0) writes it with N = (k^2 - n)/(1 - n) in (k^2, 1),
-//   Pi(n; am tau) = (A + B) tau + A N G_N(tau) + C atan(p sn cn / dn),
-//   A = -n k'^2 / ((1 - n)(k^2 - n)), B = k^2 / (k^2 - n), C = sqrt(-n / ((1 - n)(k^2 - n))),
-//   p = sqrt(-n N), 1 - N = k'^2 / (1 - n),
-// every term as large as Pi(n-) or bounded (the arctangent's period is sn cn's, 2K).
+// G's rounding in double, times c-, was 1e-13 rad in phi and psi. Pi(n-) itself is small, and
+// A&S 17.7.15 writes it with terms no larger (core/elliptic.hpp, negative_third_kind):
+//   Pi(n-; am tau) = linear tau + excess_coef G_N(tau) + atan_coef atan(p sn cn / dn).
 void ExactHeavyTop::set_up_minus_transformed(const DD& n, const DD& one_minus_n,
                                              const DD& lin_minus, const DD& k2, const DD& kc2,
                                              const DD& rate) {
-  const DD minus_n = -n, k2_minus_n = k2 + minus_n;
-  const DD N = k2_minus_n / one_minus_n, one_minus_N = kc2 / one_minus_n;
-  const DD A = minus_n * kc2 / (one_minus_n * k2_minus_n), B = k2 / k2_minus_n;
-  const DD C = sqrt(minus_n / (one_minus_n * k2_minus_n));
-  n_minus_ = N.value();
-  one_minus_n_minus_ = one_minus_N.value();
-  phidot_lin_ = phidot_lin_ + lin_minus * (A + B);
-  psidot_lin_ = psidot_lin_ + lin_minus * (A + B);
+  const NegativeThirdKind form = negative_third_kind(n, one_minus_n, k2, kc2);
+  n_minus_ = form.N.value();
+  one_minus_n_minus_ = form.one_minus_N.value();
+  phidot_lin_ = phidot_lin_ + lin_minus * form.linear;
+  psidot_lin_ = psidot_lin_ + lin_minus * form.linear;
   const DD scale = lin_minus / rate;
-  c_minus_ = scale * A * N;
-  if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, one_minus_N);
-  minus_atan_p_ = sqrt(minus_n * N).value();
-  minus_atan_coef_ = (scale * C).value();
+  c_minus_ = scale * form.excess_coef;
+  if (kc2_ > 0.0) complete_minus_ = complete_third_kind_excess_dd(kc2, form.one_minus_N);
+  minus_atan_p_ = form.atan_p;
+  minus_atan_coef_ = (scale * form.atan_coef).value();
 }
 
 double ExactHeavyTop::minus_atan(const Phase& p) const {
-  if (minus_atan_coef_ == 0.0) return 0.0;
-  // |cn|: r may pass +-K by a rounding, where cn < 0; G (of cn^2) takes r reflected there, and
-  // so must this term, or their sum Pi(n-) breaks by p C times the rounding (7e-14 rad for a
-  // top started at rest, at r = K). dn = 0 only where cn = 0 on the separatrix (k' = 0).
-  const double cn_over_dn = p.of_r.dn > 0.0 ? std::abs(p.of_r.cn) / p.of_r.dn : 1.0;
-  return std::atan(minus_atan_p_ * p.of_r.sn * cn_over_dn);
+  return minus_atan_coef_ == 0.0 ? 0.0 : negative_third_kind_atan(minus_atan_p_, p.of_r);
 }
 
 // tau0 from the start, and the integrals' values there (G± grow from them).

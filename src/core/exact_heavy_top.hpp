@@ -18,7 +18,7 @@
 /// each is a linear term plus an incomplete elliptic integral of the third kind,
 /// Pi(n; am tau) = tau + n G(tau), G continued past K through the periods (core/elliptic.hpp);
 /// for n- < -1 (a top that swings near hanging down) Pi(n-) is taken by A&S 17.7.15 instead,
-/// whose terms are no larger than Pi(n-) itself (set_up_minus_transformed).
+/// whose terms are no larger than Pi(n-) itself (negative_third_kind, core/elliptic.hpp).
 /// The attitude follows from the Euler angles relative to the start, which never needs psi0
 /// or phi0 themselves: q(t) = Rz(dphi) Rot(n0, theta - theta0) q0 Rz(dpsi), n0 the line of
 /// nodes at t = 0.
