@@ -31,8 +31,15 @@ std::vector<double> median_times_s(const std::vector<std::function<void()>>& fs,
   }
   std::vector<std::vector<double>> t(fs.size());
   for (int r = 0; r < plan.repeats; ++r) {
-    for (std::size_t i = 0; i < fs.size(); ++i)
+    for (std::size_t i = 0; i < fs.size(); ++i) {
+      // One untimed call first, so that each measurement starts warm: side by side, every other
+      // f ran since this one's last measurement and evicted its code and data from the caches
+      // and its branches from the predictors, a cost that fell on some f more than on others
+      // (wobble's Dormand-Prince on P1 at 1e-12: 77 us a run measured cold-started in fours,
+      // 67 us warm; Odeint's 60.5 us either way).
+      fs[i]();
       t[i].push_back(seconds_of(fs[i], counts[i]) / static_cast<double>(counts[i]));
+    }
   }
   std::vector<double> medians;
   for (auto& ti : t) {

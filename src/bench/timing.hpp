@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Timing for benchmarks: the median over repeats of a whole run, each repeat long enough for
-/// the clock (a fast call is looped, and the time divided by the count).
+/// the clock (a fast call is looped, and the time divided by the count) and started warm (one
+/// untimed call before it).
 #include <functional>
 #include <vector>
 
