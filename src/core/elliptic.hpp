@@ -66,9 +66,9 @@ DoubleDouble complete_third_kind_excess_dd(const DoubleDouble& kc2,
                                            const DoubleDouble& one_minus_n);
 
 /// Pi(n; phi | k) for n < 0 without its cancellation (A&S 17.7.15; Boost.Math's ellint_3
-/// takes n < 0 so; the heavy top needs it for n < -1). Written Pi(n) = F + n G_n, the two terms are large and nearly cancel when
-/// n << -1 (Pi(n) ~ pi / (2 sqrt(-n)) while F ~ K), and G_n's rounding times n is then an error
-/// of eps K. With N = (k^2 - n) / (1 - n) in (k^2, 1),
+/// takes n < 0 so; the heavy top needs it for n < -1). Written Pi(n) = F + n G_n, the two
+/// terms are large and nearly cancel when n << -1 (Pi(n) ~ pi / (2 sqrt(-n)) while F ~ K), and
+/// G_n's rounding times n is then an error of eps K. With N = (k^2 - n) / (1 - n) in (k^2, 1),
 ///   Pi(n; phi) = linear F(phi) + excess_coef G_N(phi) + atan_coef atan(atan_p sin cos / delta),
 ///   linear = A + B, excess_coef = A N, atan_coef = C, atan_p = sqrt(-n N),
 ///   A = -n k'^2 / ((1 - n)(k^2 - n)), B = k^2 / (k^2 - n), C = sqrt(-n / ((1 - n)(k^2 - n))),

@@ -309,7 +309,6 @@ void ExactHeavyTop::set_up_phase(double sin_thetadot0, const Chain& chain) {
   const DD F0 = sn0 > cn0 && kc2_ > 0.0 ? K_dd_ - DD(incomplete_F(cn0 / dn, kc * sn0 / dn, kc2_))
                                         : DD(incomplete_F(sn0, cn0, kc2_));
   tau0_dd_ = sin_thetadot0 > 0.0 ? -F0 : F0;  // theta rising is u falling
-  tau0_ = tau0_dd_.value();
   const Phase p0 = phase_at(0.0);
   j0_ = p0.j;  // 0, or +-1 when tau0 rounds to the far side of +-K
   if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess(p0, n_plus_, one_minus_n_plus_);
@@ -359,7 +358,8 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
 }
 
 ExactHeavyTop::Phase ExactHeavyTop::phase_at(double t) const {
-  if (!std::isfinite(K_)) return reduce_by_half_period(tau0_ + rate_ * t, K_, kc2_);
+  // The separatrix (K infinite): no reduction, and tau0 is a double (F(am tau0) in double).
+  if (!std::isfinite(K_)) return reduce_by_half_period(tau0_dd_.hi + rate_ * t, K_, kc2_);
   return reduce_by_half_period(tau0_dd_ + rate_dd_ * DD(t), K_dd_, kc2_);
 }
 

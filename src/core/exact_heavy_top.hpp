@@ -10,7 +10,8 @@
 /// The motion (Goldstein 5.7; Landau-Lifshitz 35): u' ^2 = f(u) = beta (u - u1)(u - u2)(u - u3),
 /// u1 <= u2 the nutation limits (core/heavy_top.hpp), u3 >= 1. Then
 ///   u(t) = u1 + (u2 - u1) sn^2(tau, k),  tau = tau0 + tau' t,  tau'^2 = beta (u3 - u1) / 4,
-///   k^2 = (u2 - u1) / (u3 - u1) (k'^2 = (u3 - u2) / (u3 - u1) from the differences, never 1 - k^2),
+///   k^2 = (u2 - u1) / (u3 - u1) (k'^2 = (u3 - u2) / (u3 - u1) from the differences, never
+///   as 1 - k^2),
 /// and the azimuth and spin rates split into partial fractions over 1 - u and 1 + u,
 ///   phi' = (b - a u)/(1 - u^2) = 1/2 [(b - a)/(1 - u) + (b + a)/(1 + u)],
 ///   psi' = w3 - u phi' = w3 - a - 1/2 (b - a)/(1 - u) + 1/2 (b + a)/(1 + u),
@@ -124,7 +125,7 @@ class ExactHeavyTop {
   Vec3 nodes0_S_ = Vec3::UnitY();  ///< line of nodes at t = 0
   // nutating
   double u3_ = std::numeric_limits<double>::infinity(), du_ = 0.0, k2_ = 0.0, kc2_ = 1.0, K_ = 0.0;
-  double rate_ = 0.0, tau0_ = 0.0;  ///< tau' and tau(0) (tau0_ alone on the separatrix)
+  double rate_ = 0.0;     ///< tau'
   DoubleDouble tau0_dd_;  ///< tau(0) to double-double (K - tau' near the turning point at K)
   double one_plus_u1_ = 0.0, one_minus_u2_ = 0.0;  ///< from the start and the roots in d
   double period_ = std::numeric_limits<double>::infinity();

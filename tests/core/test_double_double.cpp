@@ -10,21 +10,13 @@
 
 #include "core/double_double.hpp"
 #include "core/elliptic.hpp"
+#include "double_double_error.hpp"
 
 using namespace wobble;
 using Catch::Matchers::WithinAbs;
-using mp = boost::multiprecision::cpp_bin_float_50;
-
-namespace {
-mp exact(const DoubleDouble& x) {
-  return mp(x.hi) + mp(x.lo);
-}
-// Relative error in units of 2^-104 (a double-double's precision is about 2^-106; its
-// operations' bounds are a few of these, Hida, Li and Bailey's QD library).
-double error_in_u(const DoubleDouble& got, const mp& want) {
-  return static_cast<double>(abs(exact(got) - want) / abs(want)) / 0x1p-104;
-}
-}  // namespace
+using mp = wobble::testing::mp50;
+using wobble::testing::error_in_u;
+using wobble::testing::exact;
 
 TEST_CASE("two_sum and two_prod are exact") {
   for (const auto& [a, b] : {std::pair{0.1, 0.7}, std::pair{1e16, 1.0 + 0x1p-52},

@@ -10,9 +10,11 @@
 
 #include "core/double_double.hpp"
 #include "core/elliptic.hpp"
+#include "double_double_error.hpp"
 
 using namespace wobble;
-using mp = boost::multiprecision::cpp_bin_float_50;
+using mp = wobble::testing::mp50;
+using wobble::testing::error_in_u;
 
 namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -80,8 +82,7 @@ TEST_CASE("the complete Pi(n) for n < -1 by A&S 17.7.15 in double-double against
           form.linear * complete_K_dd(DoubleDouble(kc2)) +
           form.excess_coef * complete_third_kind_excess_dd(DoubleDouble(kc2), form.one_minus_N);
       const mp want = pi_50(kc2, n, boost::math::constants::half_pi<mp>());
-      const double error_u =
-          static_cast<double>(abs(mp(got.hi) + mp(got.lo) - want) / want) / 0x1p-104;
+      const double error_u = error_in_u(got, want);
       INFO("k'^2 = " << kc2 << ", n = " << n << ": " << error_u << " u (2^-104)");
       // K and the excess within 64 u each (test_double_double.cpp); both terms positive, so the
       // sum is within the larger; the coefficients' few products and quotients 4 u each: 80 u.
