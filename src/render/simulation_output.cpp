@@ -20,6 +20,41 @@ bool is_exact(const SimulationResult& r) {
   return r.choice.method == SimMethod::closed_form || r.choice.method == SimMethod::exact;
 }
 
+nlohmann::ordered_json json_vec(const Vec3& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
+// The equations as integrated, in the doubles the run used (written as the shortest text that
+// reads back as the same double): a reference computed independently from these differs from
+// the rows by the method's error alone. From the scene's decimal inputs it would differ by their
+// rounding too, which the motion amplifies with time (README: checking a run yourself).
+nlohmann::ordered_json model_json(const SceneSetup& s) {
+  const RigidBodyModel& m = s.model;
+  nlohmann::ordered_json j;
+  j["I_P"] = json_vec(m.I_P);
+  j["L0_P"] = json_vec(s.m0_P);
+  j["q0_PtoS"] = {s.q0_PtoS.w(), s.q0_PtoS.x(), s.q0_PtoS.y(), s.q0_PtoS.z()};
+  j["axes_in_B"] = {json_vec(s.axes_B.col(0)), json_vec(s.axes_B.col(1)),
+                    json_vec(s.axes_B.col(2))};
+  j["turning_point_B"] = json_vec(s.turning_point_B);
+  if (m.gravity) {
+    j["mass"] = m.mass_kg;
+    j["com_from_pivot_P"] = json_vec(m.d_P_m);
+    j["g_S"] = json_vec(m.g_S);
+  }
+  if (m.torque) {
+    j["torque"] = json_vec(m.torque_Nm);
+    j["torque_frame"] = m.torque_in_space ? "S" : "P";
+    if (s.brake_stops_s) j["brake_stops"] = *s.brake_stops_s;
+  }
+  if (s.free_flight) {
+    j["position0_S"] = json_vec(s.x0_S);
+    j["velocity0_S"] = json_vec(s.v0_S);
+    j["g_S"] = json_vec(s.g_S);
+  }
+  return j;
+}
+
 std::string seconds(double t) {
   if (t < 1e-3) return fmt::format("{:.3g} us", t * 1e6);
   if (t < 1.0) return fmt::format("{:.3g} ms", t * 1e3);
@@ -160,6 +195,7 @@ void emit_simulation_json(const SceneSetup& s, const SimulationResult& r, const 
   head["reason"] = r.choice.reason;
   head["effects"] = s.effects;
   head["principal_moments"] = {s.moments[0], s.moments[1], s.moments[2]};
+  head["model"] = model_json(s);
   head["t_end"] = s.t_end;
   head["tolerance"] = s.tolerance;
   head["columns"] = r.columns;

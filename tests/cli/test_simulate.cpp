@@ -3,10 +3,13 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "cli/run.hpp"
+#include "core/exact_free_body.hpp"
+#include "core/exact_heavy_top.hpp"
 #include "temp_files.hpp"
 
 using namespace wobble::test;
@@ -71,6 +74,62 @@ TEST_CASE("simulate --out writes CSV or JSON atomically and never overwrites wit
   REQUIRE(slurp(csv) != "mine\n");
   for (const auto& entry : fs::directory_iterator(dir)) {
     CHECK(entry.path().filename().string()[0] != '.');  // no temporaries left
+  }
+}
+
+namespace {
+wobble::Vec3 vec3(const nlohmann::json& a) {
+  return wobble::Vec3(a[0].get<double>(), a[1].get<double>(), a[2].get<double>());
+}
+
+// A scene file's text with its outputs replaced.
+std::string with_outputs(const std::string& id, const std::string& outputs) {
+  std::string text = slurp(fs::path(WOBBLE_SOURCE_DIR) / "scenes" / (id + ".toml"));
+  const std::size_t at = text.find("outputs = ");
+  text.replace(at, text.find('\n', at) - at, "outputs = " + outputs);
+  return text;
+}
+}  // namespace
+
+TEST_CASE(
+    "simulate's JSON carries the equations as run: the exact solution from them is its rows") {
+  // The model is written as the shortest text of each double, so a check started from it starts
+  // from the very numbers the run used: here the exact solutions, rebuilt from the JSON alone,
+  // give every row's L_body and e3_space bit for bit (a value rounded to fewer digits, or one
+  // from before the axes were ordered, would not).
+  for (const std::string id : {"heavy-top", "tennis-racket"}) {
+    const fs::path scene =
+        write_file(id + "-L.toml", with_outputs(id, R"(["L_body", "e3_space"])"));
+    const fs::path out = scratch_dir() / (id + "-L.json");
+    const RunResult r = run_wobble({"simulate", scene.string(), "--method", "exact", "--out",
+                                    out.string(), "--t-end", "50", "--samples", "7"});
+    INFO(id << "\n" << r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(slurp(out));
+    const auto& m = j["model"];
+    const wobble::Vec3 I = vec3(m["I_P"]), m0 = vec3(m["L0_P"]);
+    const wobble::Quat q0(m["q0_PtoS"][0], m["q0_PtoS"][1], m["q0_PtoS"][2], m["q0_PtoS"][3]);
+    wobble::Mat3 axes;
+    for (int c = 0; c < 3; ++c) axes.col(c) = vec3(m["axes_in_B"][c]);
+    std::function<wobble::FreeBodyState(double)> at;
+    if (id == "heavy-top") {
+      REQUIRE(m.contains("mass"));
+      const wobble::HeavyTop top{m["mass"], vec3(m["com_from_pivot_P"]).z(), -vec3(m["g_S"]).z(),
+                                 I.x(), I.z()};
+      at = [motion = wobble::ExactHeavyTop(top, m0, q0)](double t) { return motion.at(t); };
+    } else {
+      REQUIRE_FALSE(m.contains("mass"));
+      at = [motion = wobble::ExactFreeMotion(I, m0, q0)](double t) { return motion.at(t); };
+    }
+    REQUIRE(j["rows"].size() == 7);
+    for (const auto& row : j["rows"]) {
+      const wobble::FreeBodyState s = at(row[0]);
+      const wobble::Vec3 L_B = axes * s.m_B, e3_S = s.q_BtoS.toRotationMatrix().col(2);
+      for (int i = 0; i < 3; ++i) {
+        CHECK(row[1 + i].get<double>() == L_B[i]);
+        CHECK(row[4 + i].get<double>() == e3_S[i]);
+      }
+    }
   }
 }
 
