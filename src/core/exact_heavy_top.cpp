@@ -120,6 +120,18 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
   start.phidot = L_S.dot(Vec3(-u0_ * e3.x(), -u0_ * e3.y(), sin0_2)) / (I1 * sin0_2);
   start.psidot = w3_ - start.phidot * u0_;
   nutation_ = nutation_limits(top, start);
+  // Through a pole f vanishes there, b -+ a = 0, and the limit is the pole exactly: the offsets
+  // are this start's distances to it (nutation_limits takes its u0 from theta, an ulp apart).
+  // Decided on b -+ a formed here without cancellation: near a pole nutation_limits' own can
+  // round to zero (cos(theta0) rounds to 1 within 1e-8 rad of upright), and the limit is then
+  // short of the pole. With b = -a the motion always reaches hanging once it moves (f = (1 + u)
+  // H(u) with H > 0 below the start: its terms in d = u - u0 are all >= 0 there); with b = a
+  // it reaches upright only with the energy for it, which nutation_limits decides.
+  const bool moving = nutation_.d_min < 0.0 || nutation_.d_max > 0.0;
+  nutation_.through_hanging = moving && b_plus_a_ == 0.0 && one_plus_u0 > 0.0;
+  nutation_.through_upright = nutation_.through_upright && b_minus_a_ == 0.0;
+  if (nutation_.through_hanging) nutation_.d_min = -one_plus_u0;
+  if (nutation_.through_upright) nutation_.d_max = one_minus_u0;
   theta0_ = start.theta;  // the steady case keeps it
   const double u1 = nutation_.u_min, u2 = nutation_.u_max;
   // The limits' distances to the poles: the start's and the roots' offsets d from u0.
@@ -150,11 +162,33 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
           ? b_minus_a_ * b_minus_a_ / (beta * (one_minus_u0 - nutation_.d_min) * one_minus_u2_)
           : std::max(0.0, u0_ + (P + a_ * a_) / beta - u1 - u2 - 1.0);
   u3_ = 1.0 + u3_minus_1;
+  // Likewise an upper limit near upright that the start is far from (a top thrown over the top
+  // that passes 2.4e-6 rad from upright has 1 - u2 = 3e-12, and (1 - u0) - d_max kept 1e-5 of
+  // it): from f(1), 1 - u2 = (b - a)^2 / (beta (1 - u1)(u3 - 1)), u3 - 1 from the roots' sum,
+  // where u3 is the farther from the pole (else both are near it and the sum is no better).
+  DD d_max_chain = nutation_.d_max;
+  if (!nutation_.through_upright && nutation_.d_max > 0.5 * one_minus_u0 &&
+      u3_minus_1 > one_minus_u2_) {
+    one_minus_u2_ =
+        b_minus_a_ * b_minus_a_ / (beta * (one_minus_u0 - nutation_.d_min) * u3_minus_1);
+    d_max_chain = DD(one_minus_u0) - DD(one_minus_u2_);  // exact: 1 - u2 = (1 - u0) - this
+  }
   // u3 - u2 = (u3 - 1) + (1 - u2), u3 - u1 = (u3 - u2) + du: sums.
   const double u3_minus_u2 = u3_minus_1 + one_minus_u2_, u3_minus_u1 = u3_minus_u2 + du_;
+  // A lower limit near hanging that the start is far from: 1 + u1 = (1 + u0) + d_min cancels,
+  // and d_min's rounding, eps, is all of 1 + u1 (a slow top that swings 1.6e-5 rad past hanging
+  // has 1 + u1 = 1.3e-10, known to 3e-6 so: it sets n- and how far phi turns as the axle passes
+  // the pole, and phi came out 3.1e-6 rad short after the first passage). From
+  // f(-1) = -(b + a)^2 = -beta (1 + u1)(1 + u2)(1 + u3) it is a quotient of sums instead.
+  DD d_min_chain = nutation_.d_min;
+  if (!nutation_.through_hanging && nutation_.d_min < -0.5 * one_plus_u0) {
+    const double one_plus_u1 =
+        b_plus_a_ * b_plus_a_ / (beta * (one_plus_u0 + nutation_.d_max) * (2.0 + u3_minus_1));
+    d_min_chain = DD(one_plus_u1) - DD(one_plus_u0);  // exact: 1 + u1 = (1 + u0) + this
+  }
   // The chain in double, lifted; refined below where the polished roots confirm it.
-  Chain chain{.d_min = nutation_.d_min,
-              .d_max = nutation_.d_max,
+  Chain chain{.d_min = d_min_chain,
+              .d_max = d_max_chain,
               .one_minus_u0 = one_minus_u0,
               .one_plus_u0 = one_plus_u0,
               .u3_minus_u1 = u3_minus_u1,
@@ -167,12 +201,18 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
               .third_root_from_pole = third_root_from_pole};
   if (u3_minus_u2 > 0.0) refine(chain);
   set_up_rates(chain);
+  // Through a pole: sin(theta) changes sign there (angles()), and 1 -+ u is du sn^2 or du cn^2.
+  if (nutation_.through_hanging) one_plus_u1_ = 0.0;
+  if (nutation_.through_upright) one_minus_u2_ = 0.0;
   set_up_phase(sin0 * start.thetadot, chain);
 }
 
 void ExactHeavyTop::refine(Chain& c) const {
   const StartDD s = start_dd(top_, m0_, q0_);
-  const DD d_min = polish_root(c.d_min.hi, s), d_max = polish_root(c.d_max.hi, s);
+  // A limit at a pole is the pole: 1 + u1 = 0 or 1 - u2 = 0 exactly, not Newton's approach to it.
+  const bool hanging = nutation_.through_hanging, upright = nutation_.through_upright;
+  const DD d_min = hanging ? DD(0.0) - s.one_plus_u0 : polish_root(c.d_min.hi, s);
+  const DD d_max = upright ? s.one_minus_u0 : polish_root(c.d_max.hi, s);
   // The third root as the double chain takes it (the constructor): near upright from
   // f(1) = -(b - a)^2 = beta (1 - u1)(1 - u2)(1 - u3), a quotient of distances to the pole (in
   // double-double too, the sum leaves u3 - u2 ~ theta0^2 only 1e-32 absolute: 1e-9 relative for
@@ -192,8 +232,10 @@ void ExactHeavyTop::refine(Chain& c) const {
   if (!same_root(d_max - d_min, du, kSameRoot) ||
       !same_root(u3_minus_u1, c.u3_minus_u1.hi, kSameRoot) ||
       !same_root(u3_minus_u2, c.u3_minus_u2.hi, kSameRoot) ||
-      !same_root(s.one_plus_u0 + d_min, c.one_plus_u0.hi + c.d_min.hi, kSameRoot) ||
-      !same_root(s.one_minus_u0 - d_max, c.one_minus_u0.hi - c.d_max.hi, kSameRoot)) {
+      (!hanging &&
+       !same_root(s.one_plus_u0 + d_min, (c.one_plus_u0 + c.d_min).value(), kSameRoot)) ||
+      (!upright &&
+       !same_root(s.one_minus_u0 - d_max, (c.one_minus_u0 - c.d_max).value(), kSameRoot))) {
     return;
   }
   c.d_min = d_min;
@@ -202,8 +244,8 @@ void ExactHeavyTop::refine(Chain& c) const {
   c.one_plus_u0 = s.one_plus_u0;
   c.u3_minus_u1 = u3_minus_u1;
   c.u3_minus_u2 = u3_minus_u2;
-  c.b_minus_a = s.b_minus_a;
-  c.b_plus_a = s.b_plus_a;
+  c.b_minus_a = upright ? DD(0.0) : s.b_minus_a;
+  c.b_plus_a = hanging ? DD(0.0) : s.b_plus_a;
   c.a = s.a;
   c.beta = s.beta;
 }
@@ -311,6 +353,10 @@ void ExactHeavyTop::set_up_phase(double sin_thetadot0, const Chain& chain) {
   tau0_dd_ = sin_thetadot0 > 0.0 ? -F0 : F0;  // theta rising is u falling
   const Phase p0 = phase_at(0.0);
   j0_ = p0.j;  // 0, or +-1 when tau0 rounds to the far side of +-K
+  // Through a pole: the sign that makes sin(theta0) > 0 (angles()).
+  const double flip0 = std::fmod(std::abs(p0.j), 2.0) == 0.0 ? 1.0 : -1.0;
+  if (nutation_.through_hanging) sign_hanging_ = flip0 * p0.of_r.sn >= 0.0 ? 1.0 : -1.0;
+  if (nutation_.through_upright) sign_upright_ = flip0 * p0.of_r.cn >= 0.0 ? 1.0 : -1.0;
   if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess(p0, n_plus_, one_minus_n_plus_);
   if (c_minus_.hi != 0.0) G_minus0_ = incomplete_excess(p0, n_minus_, one_minus_n_minus_);
   minus_atan0_ = minus_atan(p0);
@@ -343,7 +389,32 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
   // cancellation near the poles.
   a.one_minus_u = one_minus_u2_ + du_ * cn * cn;
   a.one_plus_u = one_plus_u1_ + du_ * sn * sn;
-  a.dtheta = std::atan2(std::sqrt(a.one_minus_u * a.one_plus_u), a.u) - theta0_;
+  if (sign_hanging_ == 0.0 && sign_upright_ == 0.0) {
+    const double sin_theta = std::sqrt(a.one_minus_u * a.one_plus_u);
+    a.dtheta = std::atan2(sin_theta, a.u) - theta0_;
+    a.thetadot = sin_theta > 0.0 ? -a.udot / sin_theta : 0.0;
+  } else {
+    // Through a pole the axle passes the vertical: sqrt(1 + u) = sqrt(du) |sn| (hanging) or
+    // sqrt(1 - u) = sqrt(du) |cn| (upright) takes the sign of sn(tau) or cn(tau) (sn(r) or
+    // cn(r) flipped with each half period), and theta goes on past pi or 0. Rot(n0, theta -
+    // theta0) carries the attitude through; in the Euler angles phi and psi would jump by pi.
+    // theta' = -u'/sin(theta) with u' = 2 du sn cn dn tau': sn (cn) cancels, finite at the pole.
+    const double flip = std::fmod(std::abs(p.j), 2.0) == 0.0 ? 1.0 : -1.0;
+    const double root_du = std::sqrt(du_);
+    double root_plus = std::sqrt(a.one_plus_u), root_minus = std::sqrt(a.one_minus_u);
+    double plus_part = root_plus > 0.0 ? du_ * sn / root_plus : 0.0;  // du sn / sqrt(1 + u)
+    double minus_part = root_minus > 0.0 ? cn / root_minus : 0.0;     // cn / sqrt(1 - u)
+    if (sign_hanging_ != 0.0) {
+      root_plus = sign_hanging_ * flip * root_du * sn;
+      plus_part = sign_hanging_ * flip * root_du;
+    }
+    if (sign_upright_ != 0.0) {
+      root_minus = sign_upright_ * flip * root_du * cn;
+      minus_part = sign_upright_ * flip / root_du;
+    }
+    a.dtheta = std::atan2(root_minus * root_plus, a.u) - theta0_;
+    a.thetadot = -2.0 * dn * rate_ * plus_part * minus_part;
+  }
   const DD two_j = 2.0 * (p.j - j0_);  // exact
   const auto dG = [&](const DD& c, double n, double one_minus_n, const DD& complete, double G0) {
     return c.hi == 0.0 ? DD()
@@ -395,10 +466,11 @@ FreeBodyState ExactHeavyTop::at(double t) const {
   s.q_BtoS =
       (turn_phi * Quat(Eigen::AngleAxisd(a.dtheta, nodes0_S_)) * q0_ * rot_z(a.dpsi)).normalized();
   // The angular velocity from the Euler rates: w = phi' z + theta' n + psi' e3.
-  const double phidot = 0.5 * b_minus_a_ / a.one_minus_u + 0.5 * b_plus_a_ / a.one_plus_u;
+  // A partial fraction whose numerator is zero is zero, also at its pole (through a pole).
+  const double phidot = (b_minus_a_ == 0.0 ? 0.0 : 0.5 * b_minus_a_ / a.one_minus_u) +
+                        (b_plus_a_ == 0.0 ? 0.0 : 0.5 * b_plus_a_ / a.one_plus_u);
   const double psidot = w3_ - a.u * phidot;
-  const double sin_theta = std::sqrt(a.one_minus_u * a.one_plus_u);
-  const double thetadot = sin_theta > 0.0 ? -a.udot / sin_theta : 0.0;
+  const double thetadot = a.thetadot;
   const Vec3 e3 = s.q_BtoS * Vec3::UnitZ();
   const Vec3 w_S = phidot * Vec3::UnitZ() + thetadot * (turn_phi * nodes0_S_) + psidot * e3;
   const Vec3 w_B = s.q_BtoS.conjugate() * w_S;

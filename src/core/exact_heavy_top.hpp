@@ -84,7 +84,7 @@ class ExactHeavyTop {
   }
   /// theta(t) - theta0, phi(t) - phi0, psi(t) - psi0.
   struct Angles {
-    double dtheta = 0.0, dphi = 0.0, dpsi = 0.0, u = 0.0, udot = 0.0;
+    double dtheta = 0.0, dphi = 0.0, dpsi = 0.0, u = 0.0, udot = 0.0, thetadot = 0.0;
     double one_minus_u = 0.0, one_plus_u = 0.0;  ///< as sums of terms >= 0 (no cancellation)
   };
   Angles angles(double t) const;
@@ -128,6 +128,9 @@ class ExactHeavyTop {
   double rate_ = 0.0;     ///< tau'
   DoubleDouble tau0_dd_;  ///< tau(0) to double-double (K - tau' near the turning point at K)
   double one_plus_u1_ = 0.0, one_minus_u2_ = 0.0;  ///< from the start and the roots in d
+  /// +-1 when the axle passes through hanging or upright (Nutation), else 0: the sign of
+  /// sin(theta) against sn(tau) or cn(tau) (angles()).
+  double sign_hanging_ = 0.0, sign_upright_ = 0.0;
   double period_ = std::numeric_limits<double>::infinity();
   double n_plus_ = 0.0, n_minus_ = 0.0;
   /// 1 - n-, or 1 - N of the transformed minus term (set_up_minus_transformed)

@@ -1,5 +1,6 @@
 #include "core/heavy_top.hpp"
 
+#include <algorithm>
 #include <boost/math/tools/roots.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
@@ -75,30 +76,64 @@ Nutation nutation_limits(const HeavyTop& top, const HeavyTopStart& s) {
   const double lo = -1 - u0, hi = 1 - u0;  // u = -1 and u = 1
   double d_min = 0, d_max = 0;
   if (c0 == 0.0) {
-    // The start is a turning point; the other is a root of c1 + c2 d + beta d^2 in [lo, hi].
+    // The start is a turning point; the motion sets off where f > 0, on c1's side (f ~ c1 d),
+    // to the nearest root there of c1 + c2 d + beta d^2. Nearest overall would be wrong where
+    // the other side's root is a pole: a pendulum released at rest (a = b = 0, roots at both
+    // poles) falls, however near upright it starts. c1 = 0: a double root, steady precession.
+    // A pole root may round past its pole: limited to [lo, hi] after the choice.
     const auto [r1, r2] = quadratic_roots(beta, c2, c1);
-    double other = 0.0;  // none in range: a double root, steady precession
+    double other = 0.0;
     for (const double r : {r1, r2}) {
-      if (std::isfinite(r) && r >= lo && r <= hi && (other == 0.0 || std::abs(r) < std::abs(other)))
+      if (std::isfinite(r) && r * c1 > 0.0 && (other == 0.0 || std::abs(r) < std::abs(other)))
         other = r;
     }
+    other = std::clamp(other, lo, hi);
     d_min = std::min(0.0, other);
     d_max = std::max(0.0, other);
   } else {
     // f(-1) = -(b + a)^2 <= 0 <= f(u0) = c0 <= ... f(1) = -(b - a)^2: one root on each side.
     const double f_lo = -(b + a) * (b + a), f_hi = -(b - a) * (b - a);
     const auto solve = [&](double x0, double x1, double f0, double f1) {
-      if (f0 == 0.0) return x0;
-      if (f1 == 0.0) return x1;
       std::uintmax_t iterations = 200;
       const auto r = boost::math::tools::toms748_solve(
           g, x0, x1, f0, f1, boost::math::tools::eps_tolerance<double>(52), iterations);
       return 0.5 * (r.first + r.second);
     };
-    d_min = solve(lo, 0.0, f_lo, c0);
-    d_max = solve(0.0, hi, c0, f_hi);
+    // Where f is zero at a pole (b = a: p_phi = p_psi, the axle can pass through the upright;
+    // b = -a, through hanging; a = b = 0, a pendulum swinging in a plane, both), the limit on
+    // that side is the pole only if f stays positive up to it. f = (1 -+ u) G(u), and G, a
+    // quadratic, has its coefficients from the start without cancellation (alpha - beta u0 =
+    // P): G(u0 + d) = thetadot^2 (1 +- u0) + (+-(P + a^2) - beta (1 +- u0)) d -+ beta d^2. Its
+    // first root on that side, if short of the pole, is the limit, polished on f.
+    const auto limit_before_pole = [&](double pole, double side) {
+      const double one_pm_u0 = side > 0 ? 1 + u0 : 1 - u0;
+      const auto [r1, r2] = quadratic_roots(-side * beta, side * (P + a * a) - beta * one_pm_u0,
+                                            s.thetadot * s.thetadot * one_pm_u0);
+      double limit = pole;
+      for (const double r : {r1, r2}) {
+        if (std::isfinite(r) && r * side > 0.0 && std::abs(r) < std::abs(limit)) limit = r;
+      }
+      if (limit == pole) return pole;
+      const double beyond = 0.5 * (limit + pole);  // f < 0 between the root and the pole
+      const double f_beyond = g(beyond);
+      return f_beyond < 0.0 ? solve(std::min(0.0, beyond), std::max(0.0, beyond),
+                                    side > 0 ? c0 : f_beyond, side > 0 ? f_beyond : c0)
+                            : limit;
+    };
+    d_min = f_lo == 0.0 ? limit_before_pole(lo, -1.0) : solve(lo, 0.0, f_lo, c0);
+    d_max = f_hi == 0.0 ? limit_before_pole(hi, 1.0) : solve(0.0, hi, c0, f_hi);
   }
+  // A pole root found by the quadratic of a start at rest may be a rounding off the pole.
+  constexpr double kPoleSlack = 8 * std::numeric_limits<double>::epsilon();
   Nutation n;
+  if (b + a == 0.0 && lo < 0.0 && d_min <= lo * (1 - kPoleSlack)) {
+    d_min = lo;
+    n.through_hanging = true;
+  }
+  if (b - a == 0.0 && hi > 0.0 && d_max >= hi * (1 - kPoleSlack)) {
+    d_max = hi;
+    n.through_upright = true;
+  }
   n.u_min = std::max(-1.0, u0 + d_min);
   n.u_max = std::min(1.0, u0 + d_max);
   n.d_min = std::max(d_min, lo);

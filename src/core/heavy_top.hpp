@@ -46,14 +46,22 @@ HeavyTopConstants heavy_top_constants(const HeavyTop& top, const HeavyTopStart& 
 /// f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2 (a = p_psi/I1, b = p_phi/I1, alpha = 2E'/I1,
 /// beta = 2 M g l/I1), i.e. thetadot^2 sin^2 = f. Computed as a cubic in d = u - cos(theta0),
 /// whose constant term thetadot0^2 sin^2(theta0) >= 0 is exact: with thetadot0 = 0 the start is
-/// a root, divided out, and the other comes from a quadratic (no cancellation); otherwise each
-/// root is bracketed in [-1, u0] or [u0, 1] and found by TOMS 748 (Boost.Math) to full precision.
+/// a root, divided out, and the other comes from a quadratic (no cancellation): the nearest root
+/// on the side the motion sets off to (f ~ c1 d); otherwise each root is bracketed in [-1, u0]
+/// or [u0, 1] and found by TOMS 748 (Boost.Math) to full precision. Where f vanishes at a pole
+/// (b = -+a) that pole is the limit only if f stays positive up to it: f / (1 -+ u), a
+/// quadratic, decides (Nutation::through_hanging, through_upright).
 /// theta_min = acos(u_max) <= theta0 <= theta_max = acos(u_min).
 struct Nutation {
   double u_min = 0, u_max = 0, theta_min = 0, theta_max = 0;
   /// u_min - cos(theta0) and u_max - cos(theta0) as found (the roots in d), not rounded into u:
   /// a limit near a pole, 1 + u_min, is then (1 + cos(theta0)) + d_min without cancellation.
   double d_min = 0, d_max = 0;
+  /// The limit is the pole itself, where f vanishes (b = -a: hanging; b = a: upright; a = b = 0,
+  /// a pendulum swinging in a vertical plane, both when it swings over the top): the axle passes
+  /// through the vertical there, and in the Euler angles theta turns back (it is >= 0) while
+  /// phi and psi jump by pi. The limit is then exactly -1 - cos(theta0) or 1 - cos(theta0).
+  bool through_hanging = false, through_upright = false;
 };
 /// @throws std::invalid_argument for an invalid top or a start with sin(theta0) = 0 (the axis
 ///   vertical: the sleeping top, where theta is not a coordinate of the nutation).

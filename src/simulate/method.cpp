@@ -188,12 +188,19 @@ MethodChoice choose_method(const SceneSetup& s, const std::string& requested,
                             c.method == SimMethod::split2 || c.method == SimMethod::split4;
     const bool heavy_top_exact = c.method == SimMethod::exact && exact_heavy_top(s);
     if (needs_free && !free && !heavy_top_exact) {
-      // Why a heavy top is not one the exact solution serves.
+      // Why a heavy top is not one the exact solution serves. A top that would be one at rest
+      // but starts vertical and moving is refused for its start alone, and told so.
+      SceneSetup at_rest = s;
+      at_rest.m0_P.x() = 0.0;
+      at_rest.m0_P.y() = 0.0;
       const char* why_not_top =
           c.method != SimMethod::exact || !s.model.gravity || s.model.torque ? ""
           : tilt_underflows(axle_tilt(s))
               ? " with the axle within 1.5e-154 rad of the vertical but not on it (the exact "
                 "solution squares that tilt, which double precision cannot)"
+          : axle_tilt(s) == 0.0 && exact_heavy_top(at_rest)
+              ? " with the axle starting vertical and moving (theta is no coordinate of the "
+                "exact solution there: start it tilted, a moment later)"
               : " on a body that is no symmetric top pivoted on its axle";
       throw InputError(field + " " + requested +
                        ": applies to torque-free motion only, and this scene has " +

@@ -353,14 +353,19 @@ TEST_CASE("hard 13: nearly equal moments of an exact tensor: the axes right to t
 TEST_CASE("hard 14: the heavy top's closed form against 50 digits, up to a million seconds") {
   // The bench's top P4 (released at rest at 30 degrees, spin 150 rad/s: cusps), waves, loops, a
   // wide slow swing, a top near hanging down, one released there, one near upright, and a
-  // slow top thrown over the top that swings to 0.04 rad from hanging down.
+  // slow top thrown over the top that swings to 0.04 rad from hanging down, and two all but
+  // spinless tops released at 30 degrees that swing 1.6e-5 and 1.6e-4 rad past hanging down
+  // (1 + u1 = 1.3e-10 and 1.3e-8, where (1 + u0) + d_min had kept 3e-6 and 3e-8 of it: phi
+  // turned that much short at each passage), and one thrown over the top that passes 2.4e-6 rad
+  // from upright (1 - u2 = 3e-12, of which (1 - u0) - d_max had kept 1e-5).
   const HeavyTop top{0.5, 0.08, 9.81, 0.0035125, 0.000625};
   struct Case {
     double theta, thetadot, phidot, psidot;
   };
   for (const Case c : {Case{M_PI / 6, 0, 0, 150}, Case{0.8, 0, 4, 150}, Case{0.8, 0, -3, 150},
                        Case{0.5, -1.0, 0.5, 30}, Case{2.9, 0.5, 0, 10}, Case{2.6, 0, 0, 20},
-                       Case{0.05, 0.3, 1, 300}, Case{1.2, 2, -2, 5}}) {
+                       Case{0.05, 0.3, 1, 300}, Case{1.2, 2, -2, 5}, Case{M_PI / 6, 0, 0, 1e-3},
+                       Case{M_PI / 6, 0, 0, 1e-2}, Case{M_PI / 6, -11.5, 0, 1e-3}}) {
     const Quat q0(Eigen::AngleAxisd(c.theta, Vec3::UnitY()));
     const double st = std::sin(c.theta);
     const Vec3 m0(-top.I1_kgm2 * c.phidot * st, top.I1_kgm2 * c.thetadot,
