@@ -86,6 +86,17 @@ Top::Top(const Problem& p, const sym::Values& values) : BodyContext(p, values) {
   constants = heavy_top_constants(numeric, start);
   const ex s = GiNaC::sin(theta), c = GiNaC::cos(theta);
   w3 = phidot * c + psidot;
+  // No spin about the axle (w3 = 0: p_psi = 0) is a pendulum, not a top: phidot = p_phi /
+  // (I1 sin^2) vanishes at no u_p = p_phi / p_psi, which part (b) asks for (the exact form
+  // p_phi / p_psi would cancel the zero factor and read cos(theta0): "loops" for a pendulum).
+  if (sym::is_identically_zero(w3.subs(t.exact.at))) {
+    throw InputError(fmt::format(
+        "motion.psidot0: \"{}\" is {:.10g} rad/s with phidot0 = {:.10g} rad/s: the spin about the "
+        "axle, psidot0 + phidot0 cos(theta0), is 0 at these values, so p_psi = 0 and phidot "
+        "vanishes at no u_p = p_phi/p_psi (a pendulum, not a top); give the axle a spin, or "
+        "simulate the scene heavy-top",
+        problem.motion->at("psidot0"), start.psidot, start.phidot));
+  }
   p_psi = I3 * w3;
   p_phi = I1 * phidot * GiNaC::pow(s, 2) + p_psi * c;
   energy_prime = I1 / 2 * (GiNaC::pow(thetadot, 2) + GiNaC::pow(phidot * s, 2)) + M * g * l * c;
