@@ -69,6 +69,16 @@ void describe(const ExactHeavyTop& top, std::vector<std::string>& notes) {
       "k^2 = {:.6g})",
       top.nutation().theta_min * kDeg, top.nutation().theta_max * kDeg, top.nutation_period_s(),
       top.k2()));
+  // A limit at a pole: the Euler angles' singularity, which the body does not feel.
+  const Nutation& n = top.nutation();
+  if (n.through_hanging || n.through_upright) {
+    notes.push_back(fmt::format(
+        "the axle passes through the vertical ({}): there theta turns back and phi and psi jump "
+        "by 180 deg, while the body moves on smoothly",
+        n.through_hanging && n.through_upright ? "over the top, upright and hanging down"
+        : n.through_hanging                    ? "hanging straight down"
+                                               : "upright"));
+  }
 }
 
 template <class Motion>

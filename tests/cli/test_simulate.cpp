@@ -33,6 +33,12 @@ TEST_CASE("simulate prints header, samples and footer for every example scene") 
   CHECK_THAT(racket.out, Catch::Contains("method: exact (torque-free") &&
                              Catch::Contains("changes sign every") &&
                              Catch::Contains("rotational_energy"));
+  // A pendulum swinging in a plane passes through hanging down: the header says what the
+  // Euler angles do there.
+  const RunResult swing = run_wobble(
+      {"simulate", "heavy-top", "--set", "psidot0=0", "--set", "thetadot0=2", "--samples", "3"});
+  CHECK_THAT(swing.out, Catch::Contains("theta nods between 27.88010542 and 180 deg") &&
+                            Catch::Contains("passes through the vertical (hanging straight down)"));
   const RunResult top = run_wobble({"simulate", "heavy-top", "--method", "dopri5"});
   CHECK_THAT(top.out, Catch::Contains("method: dopri5 (requested)") && Catch::Contains("p_phi") &&
                           Catch::Contains("p_psi") &&
