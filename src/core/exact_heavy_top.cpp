@@ -200,10 +200,7 @@ ExactHeavyTop::ExactHeavyTop(const HeavyTop& top, const Vec3& m0_B, const Quat& 
               .w3 = w3_dd,
               .third_root_from_pole = third_root_from_pole};
   if (u3_minus_u2 > 0.0) refine(chain);
-  set_up_rates(chain);
-  // Through a pole: sin(theta) changes sign there (angles()), and 1 -+ u is du sn^2 or du cn^2.
-  if (nutation_.through_hanging) one_plus_u1_ = 0.0;
-  if (nutation_.through_upright) one_minus_u2_ = 0.0;
+  set_up_rates(chain);  // through a pole, 1 + u1 or 1 - u2 is 0 exactly: d is the start's offset
   set_up_phase(sin0 * start.thetadot, chain);
 }
 
@@ -211,7 +208,7 @@ void ExactHeavyTop::refine(Chain& c) const {
   const StartDD s = start_dd(top_, m0_, q0_);
   // A limit at a pole is the pole: 1 + u1 = 0 or 1 - u2 = 0 exactly, not Newton's approach to it.
   const bool hanging = nutation_.through_hanging, upright = nutation_.through_upright;
-  const DD d_min = hanging ? DD(0.0) - s.one_plus_u0 : polish_root(c.d_min.hi, s);
+  const DD d_min = hanging ? -s.one_plus_u0 : polish_root(c.d_min.hi, s);
   const DD d_max = upright ? s.one_minus_u0 : polish_root(c.d_max.hi, s);
   // The third root as the double chain takes it (the constructor): near upright from
   // f(1) = -(b - a)^2 = beta (1 - u1)(1 - u2)(1 - u3), a quotient of distances to the pole (in
@@ -390,6 +387,7 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
   a.one_minus_u = one_minus_u2_ + du_ * cn * cn;
   a.one_plus_u = one_plus_u1_ + du_ * sn * sn;
   if (sign_hanging_ == 0.0 && sign_upright_ == 0.0) {
+    // Away from the poles' passages: one square root and one division, the per-sample cost.
     const double sin_theta = std::sqrt(a.one_minus_u * a.one_plus_u);
     a.dtheta = std::atan2(sin_theta, a.u) - theta0_;
     a.thetadot = sin_theta > 0.0 ? -a.udot / sin_theta : 0.0;
