@@ -8,6 +8,8 @@
 /// u = K (see shared numerics notes). This routine takes k'^2 itself, computed by the caller in
 /// factored form, and stays accurate down to k'^2 = 1e-16 (tests/core/test_elliptic.cpp measures
 /// it against Boost.Math at 50 digits). The elliptic integrals come from Boost.Math (Carlson).
+#include <cmath>
+
 #include "core/double_double.hpp"
 
 namespace wobble {
@@ -45,6 +47,8 @@ double complete_third_kind_excess(double kc2, double n);
 struct ReducedArgument {
   double j = 0.0, r = 0.0;
   SnCnDn of_r{};
+  /// (-1)^j: sn(u) = sign() sn(r), cn(u) = sign() cn(r).
+  double sign() const { return std::fmod(j, 2.0) == 0.0 ? 1.0 : -1.0; }
 };
 ReducedArgument reduce_by_half_period(double u, double K, double kc2);
 /// The same for u and K to double-double (kc2 > 0): r = u - 2 K j formed in double-double, so

@@ -140,7 +140,7 @@ ExactFreeMotion::Phase ExactFreeMotion::phase_at(double t) const {
   } else {
     p.reduced = reduce_by_half_period(u0_ + lambda_ * t, K_, kc2_);
   }
-  const double odd = std::fmod(p.reduced.j, 2.0) == 0.0 ? 1.0 : -1.0;
+  const double odd = p.reduced.sign();
   p.sn = odd * p.reduced.of_r.sn;
   p.cn = odd * p.reduced.of_r.cn;
   p.dn = p.reduced.of_r.dn;

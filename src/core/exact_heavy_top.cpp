@@ -351,9 +351,8 @@ void ExactHeavyTop::set_up_phase(double sin_thetadot0, const Chain& chain) {
   const Phase p0 = phase_at(0.0);
   j0_ = p0.j;  // 0, or +-1 when tau0 rounds to the far side of +-K
   // Through a pole: the sign that makes sin(theta0) > 0 (angles()).
-  const double flip0 = std::fmod(std::abs(p0.j), 2.0) == 0.0 ? 1.0 : -1.0;
-  if (nutation_.through_hanging) sign_hanging_ = flip0 * p0.of_r.sn >= 0.0 ? 1.0 : -1.0;
-  if (nutation_.through_upright) sign_upright_ = flip0 * p0.of_r.cn >= 0.0 ? 1.0 : -1.0;
+  if (nutation_.through_hanging) sign_hanging_ = p0.sign() * p0.of_r.sn >= 0.0 ? 1.0 : -1.0;
+  if (nutation_.through_upright) sign_upright_ = p0.sign() * p0.of_r.cn >= 0.0 ? 1.0 : -1.0;
   if (c_plus_.hi != 0.0) G_plus0_ = incomplete_excess(p0, n_plus_, one_minus_n_plus_);
   if (c_minus_.hi != 0.0) G_minus0_ = incomplete_excess(p0, n_minus_, one_minus_n_minus_);
   minus_atan0_ = minus_atan(p0);
@@ -397,18 +396,22 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
     // cn(r) flipped with each half period), and theta goes on past pi or 0. Rot(n0, theta -
     // theta0) carries the attitude through; in the Euler angles phi and psi would jump by pi.
     // theta' = -u'/sin(theta) with u' = 2 du sn cn dn tau': sn (cn) cancels, finite at the pole.
-    const double flip = std::fmod(std::abs(p.j), 2.0) == 0.0 ? 1.0 : -1.0;
-    const double root_du = std::sqrt(du_);
-    double root_plus = std::sqrt(a.one_plus_u), root_minus = std::sqrt(a.one_minus_u);
-    double plus_part = root_plus > 0.0 ? du_ * sn / root_plus : 0.0;  // du sn / sqrt(1 + u)
-    double minus_part = root_minus > 0.0 ? cn / root_minus : 0.0;     // cn / sqrt(1 - u)
+    const double flip = p.sign(), root_du = std::sqrt(du_);
+    // sqrt(1 + u) and du sn / sqrt(1 + u); sqrt(1 - u) and cn / sqrt(1 - u).
+    double root_plus, plus_part, root_minus, minus_part;
     if (sign_hanging_ != 0.0) {
       root_plus = sign_hanging_ * flip * root_du * sn;
       plus_part = sign_hanging_ * flip * root_du;
+    } else {
+      root_plus = std::sqrt(a.one_plus_u);
+      plus_part = root_plus > 0.0 ? du_ * sn / root_plus : 0.0;
     }
     if (sign_upright_ != 0.0) {
       root_minus = sign_upright_ * flip * root_du * cn;
       minus_part = sign_upright_ * flip / root_du;
+    } else {
+      root_minus = std::sqrt(a.one_minus_u);
+      minus_part = root_minus > 0.0 ? cn / root_minus : 0.0;
     }
     a.dtheta = std::atan2(root_minus * root_plus, a.u) - theta0_;
     a.thetadot = -2.0 * dn * rate_ * plus_part * minus_part;
