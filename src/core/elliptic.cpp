@@ -84,6 +84,14 @@ ReducedArgument reduce_by_half_period(double u, double K, double kc2) {
   if (std::isfinite(K)) {
     a.j = std::nearbyint(u / (2.0 * K));
     a.r = u - 2.0 * K * a.j;
+    // The quotient's rounding can leave r just past +-K: step it back (see the overload below).
+    if (a.r > K) {
+      a.r -= 2.0 * K;
+      a.j += 1.0;
+    } else if (a.r < -K) {
+      a.r += 2.0 * K;
+      a.j -= 1.0;
+    }
   }
   a.of_r = jacobi_sncndn(a.r, kc2);
   return a;
@@ -94,7 +102,18 @@ ReducedArgument reduce_by_half_period(const DoubleDouble& u, const DoubleDouble&
   const DoubleDouble two_K(2.0 * K.hi, 2.0 * K.lo);
   a.j = std::nearbyint(u.hi / two_K.hi);
   // j 2K exactly to double-double: j is an integer below 2^53, so j * 2K.hi by two_prod.
-  const DoubleDouble r = u - (two_prod(a.j, two_K.hi) + DoubleDouble(a.j * two_K.lo));
+  DoubleDouble r = u - (two_prod(a.j, two_K.hi) + DoubleDouble(a.j * two_K.lo));
+  // j is the rounded quotient of the high parts, off by up to an ulp of u / 2K: r can land past
+  // +-K by that much times 2K (6e-10 after a million half periods). The integrals of r
+  // (Pi(n; am r), the heavy top's arctangent) read past K as mirrored back inside, a jump of up
+  // to 130 eps in the precession angle measured there: step r back into [-K, K].
+  if ((r - K).hi > 0.0) {
+    r = r - two_K;
+    a.j += 1.0;
+  } else if ((r + K).hi < 0.0) {
+    r = r + two_K;
+    a.j -= 1.0;
+  }
   a.r = r.value();
   a.of_r = jacobi_sncndn(a.r, kc2);
   return a;

@@ -57,6 +57,29 @@ TEST_CASE("K by the AGM in double-double, from k'^2 = 1 to 1e-16, against 50 dig
   }
 }
 
+TEST_CASE("reduction by 2K keeps r in [-K, K] at the end of a half period, a million periods on") {
+  // u = (2j + 1) K + delta: the quotient of the high parts, u / 2K, rounds to j + 1/2 exactly
+  // for |delta| below 2K ulp(j) / 2 (6e-11 at j = 1e6), and the nearest integer, ties to even,
+  // picked j whichever side delta was on: r = K + delta, past K. The integrals of r read it
+  // mirrored back inside, a jump of 2 delta G'(K) in a precession angle.
+  const double kc2 = 0.5;
+  const DoubleDouble K = complete_K_dd(DoubleDouble(kc2));
+  for (const double j : {0.0, 1e6, 1e6 + 1, -1e6 - 1}) {
+    for (const double delta : {1e-12, -1e-12, 1e-20, -1e-20}) {
+      INFO("j = " << j << ", delta = " << delta);
+      const DoubleDouble u = DoubleDouble(2.0 * j + 1.0) * K + DoubleDouble(delta);
+      const ReducedArgument a = reduce_by_half_period(u, K, kc2);
+      // r within [-K, K] up to its own rounding to double, u = r + 2 K j.
+      REQUIRE(std::abs(a.r) <= K.hi * (1 + std::numeric_limits<double>::epsilon()));
+      const mp rest = exact(u) - 2 * mp(a.j) * exact(K);
+      REQUIRE_THAT(
+          a.r, WithinAbs(static_cast<double>(rest), std::numeric_limits<double>::epsilon() * K.hi));
+      // The side delta puts u on: past the end (delta > 0) is the next half period's start.
+      REQUIRE(a.j == (delta > 0 ? j + 1 : j));
+    }
+  }
+}
+
 TEST_CASE("the complete third-kind excess in double-double (Bulirsch's cel) against 50 digits") {
   for (const double kc2 : {0.9, 0.5, 1e-4, 1e-10, 1e-16}) {
     for (const double n : {-0.5, -3.0, -40.0, 0.3}) {

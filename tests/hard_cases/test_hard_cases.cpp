@@ -418,10 +418,27 @@ TEST_CASE("hard 15: the free body after a million periods, m(t) and attitude aga
   // |w| per unit of t, 1 / lambda per unit of u, so by sqrt(2) |w| eps K / lambda in Frobenius
   // norm; four times that, for r's rounding and sn's. Near the separatrix (K ~ 8) this is
   // ~60 eps at the fast flip, within the first period as after a million (measured alike).
+  // And at the ends of half periods, where u0 + lambda t = (2j + 1) K: there the reduction's
+  // j, the rounded quotient of the high parts, is off by one on one side of the time, and r
+  // lands past K by up to an ulp of u / 2K times 2K (2e-10 after a million half periods): the
+  // precession angle's G(r) read r mirrored back inside, and the attitude was off by up to 1e7
+  // eps at one double time in the seven around each end below (now within the bound).
+  constexpr int kUlpsAround = 3;
   const Quat q0(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
   for (const auto& [I, m0] : bodies) {
     const ExactFreeMotion exact(I, m0, q0);
     std::vector<double> times{10.0, 1e3, 1e5, 1e7, 1e6 * exact.period_s() + 0.37};
+    {
+      const bench::MpWorkingFrame w = bench::mp_working_frame(I, m0);
+      const bench::MpMotion ref(w.J, w.m);
+      const Big K = boost::math::ellint_1(ref.k);
+      for (const double j : {1.0, 2e5 + 1, 2e6, 2e6 + 1}) {
+        double t = static_cast<double>(((2 * j + 1) * K - ref.u0) / ref.lambda);
+        for (int k = 0; k < kUlpsAround; ++k) t = std::nextafter(t, 0.0);
+        for (int k = -kUlpsAround; k <= kUlpsAround; ++k, t = std::nextafter(t, INFINITY))
+          times.push_back(t);
+      }
+    }
     for (const double t : times) {
       const FreeBodyState s = exact.at(t);
       const double error = (s.m_B - bench::mp_free_momentum(I, m0, t)).norm();
