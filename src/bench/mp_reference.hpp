@@ -224,11 +224,48 @@ struct MpHeavyTopAt {
     // Rates at t: phi' = (b - a u)/(1 - u^2), psi' = w3 - u phi', theta' = -u'/sin.
     const mp phidot = (b - a * u) / (1 - u * u), psidot = w3 - u * phidot;
     const mp thetadot = -2 * du * sn * cn * dn * rate / sqrt(1 - u * u);
-    const Vec3 e3 = out.q_BtoS * Vec3::UnitZ();
-    const Vec3 w_S = static_cast<double>(phidot) * Vec3::UnitZ() +
-                     static_cast<double>(thetadot) * (turn_phi * nodes0) + static_cast<double>(psidot) * e3;
-    const Vec3 w_B = out.q_BtoS.conjugate() * w_S;
-    out.m_B = Vec3(top.I1_kgm2 * w_B.x(), top.I1_kgm2 * w_B.y(), m0.z());
+    // w = phi' z + theta' n + psi' e3 and w_B = R^T w, all at 50 digits: near a pole phi' and
+    // psi' grow as 1/(1 -+ u) and cancel, and in double their sum's rounding (eps phi') was
+    // 1e5 eps of m for a top that swings 1.6e-5 rad past hanging down.
+    using M3 = std::array<std::array<mp, 3>, 3>;
+    using V3 = std::array<mp, 3>;
+    const auto mul = [](const M3& x, const M3& y) {
+      M3 z{};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          for (int l = 0; l < 3; ++l) z[i][j] += x[i][l] * y[l][j];
+      return z;
+    };
+    const auto about_z = [](const mp& x) {
+      const mp c = cos(x), s = sin(x);
+      return M3{V3{c, -s, 0}, V3{s, c, 0}, V3{0, 0, 1}};
+    };
+    const mp nn = sqrt(mp(nodes0.x()) * nodes0.x() + mp(nodes0.y()) * nodes0.y() +
+                       mp(nodes0.z()) * nodes0.z());
+    const V3 n0{nodes0.x() / nn, nodes0.y() / nn, nodes0.z() / nn};
+    const mp ct = cos(theta - theta0), st = sin(theta - theta0);
+    M3 about_n0{};  // Rodrigues: c I + s [n]x + (1 - c) n n^T
+    const M3 cross{V3{0, -n0[2], n0[1]}, V3{n0[2], 0, -n0[0]}, V3{-n0[1], n0[0], 0}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        about_n0[i][j] = (i == j ? ct : mp(0)) + st * cross[i][j] + (1 - ct) * n0[i] * n0[j];
+    const mp qw = q0.w(), qx = q0.x(), qy = q0.y(), qz = q0.z();
+    const mp qn = qw * qw + qx * qx + qy * qy + qz * qz;
+    const M3 start{V3{(qw * qw + qx * qx - qy * qy - qz * qz) / qn, 2 * (qx * qy - qw * qz) / qn,
+                      2 * (qx * qz + qw * qy) / qn},
+                   V3{2 * (qx * qy + qw * qz) / qn, (qw * qw - qx * qx + qy * qy - qz * qz) / qn,
+                      2 * (qy * qz - qw * qx) / qn},
+                   V3{2 * (qx * qz - qw * qy) / qn, 2 * (qy * qz + qw * qx) / qn,
+                      (qw * qw - qx * qx - qy * qy + qz * qz) / qn}};
+    const M3 turn = about_z(dphi);
+    const M3 R = mul(mul(mul(turn, about_n0), start), about_z(dpsi));
+    V3 w_S;
+    for (int i = 0; i < 3; ++i) {
+      const mp n_i = turn[i][0] * n0[0] + turn[i][1] * n0[1] + turn[i][2] * n0[2];
+      w_S[i] = thetadot * n_i + psidot * R[i][2] + (i == 2 ? phidot : mp(0));
+    }
+    const auto body = [&](int j) { return R[0][j] * w_S[0] + R[1][j] * w_S[1] + R[2][j] * w_S[2]; };
+    out.m_B = Vec3(static_cast<double>(I1 * body(0)), static_cast<double>(I1 * body(1)), m0.z());
     return out;
   }
 };

@@ -390,6 +390,10 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
     const double sin_theta = std::sqrt(a.one_minus_u * a.one_plus_u);
     a.dtheta = std::atan2(sin_theta, a.u) - theta0_;
     a.thetadot = sin_theta > 0.0 ? -a.udot / sin_theta : 0.0;
+    a.phidot_sin_theta =
+        sin_theta > 0.0
+            ? (0.5 * b_minus_a_ * a.one_plus_u + 0.5 * b_plus_a_ * a.one_minus_u) / sin_theta
+            : 0.0;
   } else {
     // Through a pole the axle passes the vertical: sqrt(1 + u) = sqrt(du) |sn| (hanging) or
     // sqrt(1 - u) = sqrt(du) |cn| (upright) takes the sign of sn(tau) or cn(tau) (sn(r) or
@@ -415,6 +419,8 @@ ExactHeavyTop::Angles ExactHeavyTop::angles(double t) const {
     }
     a.dtheta = std::atan2(root_minus * root_plus, a.u) - theta0_;
     a.thetadot = -2.0 * dn * rate_ * plus_part * minus_part;
+    a.phidot_sin_theta = (b_minus_a_ == 0.0 ? 0.0 : 0.5 * b_minus_a_ * root_plus / root_minus) +
+                         (b_plus_a_ == 0.0 ? 0.0 : 0.5 * b_plus_a_ * root_minus / root_plus);
   }
   const DD two_j = 2.0 * (p.j - j0_);  // exact
   const auto dG = [&](const DD& c, double n, double one_minus_n, const DD& complete, double G0) {
@@ -466,16 +472,14 @@ FreeBodyState ExactHeavyTop::at(double t) const {
   const Quat turn_phi = rot_z(a.dphi);
   s.q_BtoS =
       (turn_phi * Quat(Eigen::AngleAxisd(a.dtheta, nodes0_S_)) * q0_ * rot_z(a.dpsi)).normalized();
-  // The angular velocity from the Euler rates: w = phi' z + theta' n + psi' e3.
-  // A partial fraction whose numerator is zero is zero, also at its pole (through a pole).
-  const double phidot = (b_minus_a_ == 0.0 ? 0.0 : 0.5 * b_minus_a_ / a.one_minus_u) +
-                        (b_plus_a_ == 0.0 ? 0.0 : 0.5 * b_plus_a_ / a.one_plus_u);
-  const double psidot = w3_ - a.u * phidot;
-  const double thetadot = a.thetadot;
-  const Vec3 e3 = s.q_BtoS * Vec3::UnitZ();
-  const Vec3 w_S = phidot * Vec3::UnitZ() + thetadot * (turn_phi * nodes0_S_) + psidot * e3;
-  const Vec3 w_B = s.q_BtoS.conjugate() * w_S;
-  s.m_B = Vec3(top_.I1_kgm2 * w_B.x(), top_.I1_kgm2 * w_B.y(), m0_.z());  // p_psi is conserved
+  // The angular velocity from the Euler rates, w = phi' z + theta' n + psi' e3, written as
+  // theta' n + phi' sin(theta) (e3 x n) + w3 e3 (psi' = w3 - u phi'): near a pole phi' and psi'
+  // grow as 1/(1 -+ u) and cancel, and e3's rounding times psi' was the error. In the body
+  // frame n is n_B and e3 x n is z x n_B; the axial part, p_psi, is conserved.
+  const Vec3 n_B = s.q_BtoS.conjugate() * (turn_phi * nodes0_S_);
+  const double c = a.phidot_sin_theta, thetadot = a.thetadot;
+  s.m_B = Vec3(top_.I1_kgm2 * (thetadot * n_B.x() - c * n_B.y()),
+               top_.I1_kgm2 * (thetadot * n_B.y() + c * n_B.x()), m0_.z());
   return s;
 }
 

@@ -22,7 +22,12 @@
 /// whose terms are no larger than Pi(n-) itself (negative_third_kind, core/elliptic.hpp).
 /// The attitude follows from the Euler angles relative to the start, which never needs psi0
 /// or phi0 themselves: q(t) = Rz(dphi) Rot(n0, theta - theta0) q0 Rz(dpsi), n0 the line of
-/// nodes at t = 0.
+/// nodes at t = 0. The momentum is m_B = I1 (theta' n_B + phi' sin(theta) z x n_B) + p_psi z,
+/// n_B the line of nodes in the body: phi' and psi' grow as 1/(1 -+ u) near a pole, but
+/// phi' sin(theta) does not (w = phi' z + theta' n + psi' e3 summed them: 1e5 eps of m for a
+/// top that swings 1.6e-5 rad past hanging down). n_B turns with psi, so m still carries psi's
+/// error: the phase's rounding, eps |r|, is eps K at the highest point (r = K), and where that
+/// passes near upright psi' is large (euler_rate_bound); at the lowest point r is 0.
 ///
 /// Exact at any time: what grows with t (tau and its reduction by 2K, the complete parts
 /// 2 j (Pi(n±) - K) / n± of the integrals, the linear parts of phi and psi) is formed in
@@ -86,6 +91,7 @@ class ExactHeavyTop {
   struct Angles {
     double dtheta = 0.0, dphi = 0.0, dpsi = 0.0, u = 0.0, udot = 0.0, thetadot = 0.0;
     double one_minus_u = 0.0, one_plus_u = 0.0;  ///< as sums of terms >= 0 (no cancellation)
+    double phidot_sin_theta = 0.0;  ///< phi' sin(theta), bounded where phi' is not (poles)
   };
   Angles angles(double t) const;
 
