@@ -105,8 +105,9 @@ ReducedArgument reduce_by_half_period(const DoubleDouble& u, const DoubleDouble&
   DoubleDouble r = u - (two_prod(a.j, two_K.hi) + DoubleDouble(a.j * two_K.lo));
   // j is the rounded quotient of the high parts, off by up to an ulp of u / 2K: r can land past
   // +-K by that much times 2K (6e-10 after a million half periods). The integrals of r
-  // (Pi(n; am r), the heavy top's arctangent) read past K as mirrored back inside, a jump of up
-  // to 130 eps in the precession angle measured there: step r back into [-K, K].
+  // (Pi(n; am r), the heavy top's arctangent) read past K as mirrored back inside: the free
+  // body's attitude was 1e7 eps off at such a time, a million periods on. Step r back into
+  // [-K, K].
   if ((r - K).hi > 0.0) {
     r = r - two_K;
     a.j += 1.0;
@@ -115,7 +116,17 @@ ReducedArgument reduce_by_half_period(const DoubleDouble& u, const DoubleDouble&
     a.j -= 1.0;
   }
   a.r = r.value();
+  // Near +-K, r = +-(K - s): r in double is off by up to eps K / 2, and cn(r), about k' s, by
+  // that much, a relative error eps K / s, where the integrals of r take 1 - n sn^2 with n
+  // near 1 (a top passing 2.4e-6 rad from upright: 1 - n+ = 1e-12, and psi, with the
+  // momentum, was off by 3e5 eps there). cn from s, formed in double-double: k' sd(s) keeps
+  // its relative digits. sn and dn are flat at K, r's rounding moves them by next to nothing,
+  // and from s (cd(s) = cn(s) / dn(s), two numbers near sech s for k near 1) sn was 2 eps off.
   a.of_r = jacobi_sncndn(a.r, kc2);
+  if (std::abs(a.r) > 0.5 * K.hi) {
+    const SnCnDn of_s = jacobi_sncndn((r.hi < 0.0 ? K + r : K - r).value(), kc2);
+    a.of_r.cn = std::sqrt(kc2) * of_s.sn / of_s.dn;
+  }
   return a;
 }
 

@@ -53,7 +53,8 @@ struct ReducedArgument {
 ReducedArgument reduce_by_half_period(double u, double K, double kc2);
 /// The same for u and K to double-double (kc2 > 0): r = u - 2 K j formed in double-double, so
 /// that r keeps the digits of u and K however many periods u spans (in double, u's rounding,
-/// eps |u|, would be r's error).
+/// eps |u|, would be r's error); near +-K, cn from K - |r| in double-double, so that it keeps
+/// its relative digits where it is small.
 ReducedArgument reduce_by_half_period(const DoubleDouble& u, const DoubleDouble& K, double kc2);
 
 /// K(k) to double-double, from k'^2 to double-double (0 < kc2 <= 1): pi / (2 AGM(1, k')),

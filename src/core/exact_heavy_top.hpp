@@ -25,9 +25,10 @@
 /// nodes at t = 0. The momentum is m_B = I1 (theta' n_B + phi' sin(theta) z x n_B) + p_psi z,
 /// n_B the line of nodes in the body: phi' and psi' grow as 1/(1 -+ u) near a pole, but
 /// phi' sin(theta) does not (w = phi' z + theta' n + psi' e3 summed them: 1e5 eps of m for a
-/// top that swings 1.6e-5 rad past hanging down). n_B turns with psi, so m still carries psi's
-/// error: the phase's rounding, eps |r|, is eps K at the highest point (r = K), and where that
-/// passes near upright psi' is large (euler_rate_bound); at the lowest point r is 0.
+/// top that swings 1.6e-5 rad past hanging down). n_B turns with psi, and near a pole psi' is
+/// large: a time error would show in m. The phase's rounding is one of r, eps |r|, next to
+/// nothing at the lowest point (r = 0), and at the highest (r = +-K) cn comes from K - |r| in
+/// double-double (core/elliptic.hpp), not from r rounded to eps K.
 ///
 /// Exact at any time: what grows with t (tau and its reduction by 2K, the complete parts
 /// 2 j (Pi(n±) - K) / n± of the integrals, the linear parts of phi and psi) is formed in
