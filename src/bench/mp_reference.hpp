@@ -226,7 +226,7 @@ struct MpHeavyTopAt {
     const mp thetadot = -2 * du * sn * cn * dn * rate / sqrt(1 - u * u);
     // w = phi' z + theta' n + psi' e3 and w_B = R^T w, all at 50 digits: near a pole phi' and
     // psi' grow as 1/(1 -+ u) and cancel, and in double their sum's rounding (eps phi') was
-    // 1e5 eps of m for a top that swings 1.6e-5 rad past hanging down.
+    // 7e4 eps of m for a top that swings 1.6e-5 rad past hanging down.
     using M3 = std::array<std::array<mp, 3>, 3>;
     using V3 = std::array<mp, 3>;
     const auto mul = [](const M3& x, const M3& y) {

@@ -474,8 +474,8 @@ FreeBodyState ExactHeavyTop::at(double t) const {
       (turn_phi * Quat(Eigen::AngleAxisd(a.dtheta, nodes0_S_)) * q0_ * rot_z(a.dpsi)).normalized();
   // The angular velocity from the Euler rates, w = phi' z + theta' n + psi' e3, written as
   // theta' n + phi' sin(theta) (e3 x n) + w3 e3 (psi' = w3 - u phi'): near a pole phi' and psi'
-  // grow as 1/(1 -+ u) and cancel, and e3's rounding times psi' was the error. In the body
-  // frame n is n_B and e3 x n is z x n_B; the axial part, p_psi, is conserved.
+  // grow as 1/(1 -+ u), and their terms, summed, cancelled to the error. In the body frame n is
+  // n_B and e3 x n is z x n_B; the axial part, p_psi, is conserved.
   const Vec3 n_B = s.q_BtoS.conjugate() * (turn_phi * nodes0_S_);
   const double c = a.phidot_sin_theta, thetadot = a.thetadot;
   s.m_B = Vec3(top_.I1_kgm2 * (thetadot * n_B.x() - c * n_B.y()),

@@ -24,7 +24,7 @@
 /// or phi0 themselves: q(t) = Rz(dphi) Rot(n0, theta - theta0) q0 Rz(dpsi), n0 the line of
 /// nodes at t = 0. The momentum is m_B = I1 (theta' n_B + phi' sin(theta) z x n_B) + p_psi z,
 /// n_B the line of nodes in the body: phi' and psi' grow as 1/(1 -+ u) near a pole, but
-/// phi' sin(theta) does not (w = phi' z + theta' n + psi' e3 summed them: 1e5 eps of m for a
+/// phi' sin(theta) does not (w = phi' z + theta' n + psi' e3 summed them: 7.7e4 eps of m for a
 /// top that swings 1.6e-5 rad past hanging down). n_B turns with psi, and near a pole psi' is
 /// large: a time error would show in m. The phase's rounding is one of r, eps |r|, next to
 /// nothing at the lowest point (r = 0), and at the highest (r = +-K) cn comes from K - |r| in
