@@ -14,7 +14,6 @@
 
 using namespace wobble;
 using Catch::Matchers::WithinAbs;
-using Catch::Matchers::WithinRel;
 using mp = wobble::testing::mp50;
 using wobble::testing::error_in_u;
 using wobble::testing::exact;
