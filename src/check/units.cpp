@@ -86,13 +86,17 @@ Unit parse_unit(const std::string& text, const std::string& field) {
     if (it == names().end()) return fail("unknown unit '" + name + "'");
     int power = 1;
     if (j < text.size() && text[j] == '^') {
+      // "s^-1", or "s^(-1)" as the answer reader writes a signed exponent (and "s⁻¹").
       std::size_t k = j + 1;
+      const bool bracketed = k < text.size() && text[k] == '(';
+      if (bracketed) ++k;
       const bool neg = k < text.size() && text[k] == '-';
-      if (neg) ++k;
+      if (neg || (k < text.size() && text[k] == '+')) ++k;
       const std::size_t start = k;
       while (k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]))) ++k;
       if (k == start || k - start > 2) return fail("a power must be a small whole number");
       power = std::stoi(text.substr(start, k - start)) * (neg ? -1 : 1);
+      if (bracketed && (k >= text.size() || text[k++] != ')')) return fail("a ')' after the power");
       j = k;
     }
     if (denominator) power = -power;

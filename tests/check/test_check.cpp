@@ -53,10 +53,13 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   REQUIRE(parse_unit("deg", "u").angle);
   REQUIRE(parse_unit("1/s", "u").dim == std::array<int, 3>{0, 0, -1});
   REQUIRE(parse_unit("1/s", "u").same_dimension(parse_unit("s^-1", "u")));
+  // The answer reader writes a signed exponent in parentheses ("s^-1", "s⁻¹" -> "s^(-1)").
+  REQUIRE(parse_unit("kg m^(2) s^(-1)", "u").dim == std::array<int, 3>{1, 2, -1});
+  REQUIRE_THAT(parse_unit("rad min^(-1)", "u").to_si, WithinRel(1.0 / 60, 1e-15));
   REQUIRE_THAT(parse_unit("1/min", "u").to_si, WithinRel(1.0 / 60, 1e-15));
   REQUIRE(parse_unit("J", "u").same_dimension(parse_unit("kg m^2/s^2", "u")));
-  for (const std::string bad :
-       {"furlong", "kg^x", "m/s/s", "/s", "kg^123", "", "kg m^2 !", "1/", "2/s", "1/s/s"}) {
+  for (const std::string bad : {"furlong", "kg^x", "m/s/s", "/s", "kg^123", "", "kg m^2 !", "1/",
+                                "2/s", "1/s/s", "s^(-1", "s^()", "s^(-)", "s^(-1))"}) {
     INFO(bad);
     REQUIRE_THROWS_AS(parse_unit(bad, "--answer"), InputError);
   }

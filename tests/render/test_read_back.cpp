@@ -73,6 +73,52 @@ TEST_CASE("every printed form of every answer of every problem reads back as cor
   REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to four forms
 }
 
+// A unit with a denominator, "kg m^2/s", as a student may write it instead: with negative powers,
+// "kg m^2 s^-1", "kg m^2 s^(-1)" or "kg m² s⁻¹"; {} for a unit without one.
+std::vector<std::string> negative_power_forms(const std::string& unit) {
+  const auto slash = unit.find('/');
+  if (slash == std::string::npos) return {};
+  std::string den = unit.substr(slash + 1), power = "1";
+  if (const auto caret = den.find('^'); caret != std::string::npos) {
+    power = den.substr(caret + 1);
+    den = den.substr(0, caret);
+  }
+  const std::string num = unit.substr(0, slash) == "1" ? "" : unit.substr(0, slash) + " ";
+  const auto superscript = [](const std::string& digit) {
+    return digit == "1" ? std::string("¹") : digit == "2" ? std::string("²") : std::string("³");
+  };
+  std::string num_unicode = num;
+  if (const auto sq = num_unicode.find("^2"); sq != std::string::npos)
+    num_unicode.replace(sq, 2, "²");
+  return {num + den + "^-" + power, num + den + "^(-" + power + ")",
+          num_unicode + den + "⁻" + superscript(power)};
+}
+
+TEST_CASE("a unit's denominator written as negative powers reads back, every answer") {
+  int forms = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        for (const auto& unit : negative_power_forms(a.unit)) {
+          const std::string text = detail::value_text(a.value, "        ") + " " + unit;
+          INFO(p.id << " " << a.name << ": " << text);
+          const Verdict v = f.check(a.name, text);
+          INFO(v.line);
+          REQUIRE(v.correct);
+          ++forms;
+        }
+      }
+    }
+  }
+  REQUIRE(forms >= 3 * 50);  // rad/s, kg m^2/s, 1/s, rad/s^2, m/s^2: 53 answers today
+  // And the power's sign is read: s^-1 is not s^1.
+  const Fixture top("heavy-top");
+  const double w3 = top.answer("omega3_min").value.data[0];
+  REQUIRE_FALSE(top.check("omega3_min", fmt::format("{:.10g} s", w3)).correct);
+  REQUIRE(top.check("omega3_min", fmt::format("{:.10g} s⁻¹", w3)).correct);
+}
+
 TEST_CASE("the terminal's notation and a student's variants of it read as wobble's form") {
   const std::vector<std::pair<std::string, std::string>> cases{
       {"(2.588, 0, 19.32)", "[2.588, 0, 19.32]"},
