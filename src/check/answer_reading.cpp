@@ -113,12 +113,34 @@ std::string layout(const std::string& value) {
   return value;
 }
 
+// "8.1x10^-2" or "8.1 X 10^-2" -> "8.1*10^-2": the letter x for the times sign, as typed where
+// there is no ×. Only between a digit and "10^", where no expression could mean a symbol x.
+std::string times_ten(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if ((s[i] == 'x' || s[i] == 'X') && !out.empty()) {
+      std::size_t before = out.find_last_not_of(' ');
+      std::size_t after = s.find_first_not_of(' ', i + 1);
+      if (before != std::string::npos && std::isdigit(static_cast<unsigned char>(out[before])) &&
+          after != std::string::npos && s.compare(after, 3, "10^") == 0) {
+        out.erase(before + 1);
+        out += '*';
+        i = after - 1;
+        continue;
+      }
+    }
+    out += s[i];
+  }
+  return out;
+}
+
 // ASCII, one line, a numeric exponent's sign in parentheses.
 std::string prepared(const std::string& typed) {
   std::string s = sym::to_ascii(typed);
   for (char& c : s) {
     if (c == '\n' || c == '\r' || c == '\t') c = ' ';
   }
+  s = times_ten(s);
   // "10^-4" -> "10^(-4)": a signed number after '^' (no std::regex: GCC 12 warns inside it).
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {

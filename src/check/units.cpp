@@ -64,6 +64,12 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       ++i;
       continue;
     }
+    // "kg.m^2/s", "kg-m^2/s": a dot or a hyphen between two units multiplies, as "kg m^2/s".
+    if ((c == '.' || c == '-') && any && i + 1 < text.size() &&
+        std::isalpha(static_cast<unsigned char>(text[i + 1]))) {
+      ++i;
+      continue;
+    }
     // "1/s": a reciprocal unit (a growth rate).
     if (c == '1' && !any && !denominator &&
         text.find_first_not_of(' ', i + 1) != std::string::npos &&

@@ -56,10 +56,14 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   // The answer reader writes a signed exponent in parentheses ("s^-1", "s⁻¹" -> "s^(-1)").
   REQUIRE(parse_unit("kg m^(2) s^(-1)", "u").dim == std::array<int, 3>{1, 2, -1});
   REQUIRE_THAT(parse_unit("rad min^(-1)", "u").to_si, WithinRel(1.0 / 60, 1e-15));
+  // A dot or hyphen between units multiplies, as engineers write them.
+  REQUIRE(parse_unit("kg.m^2/s", "u").dim == std::array<int, 3>{1, 2, -1});
+  REQUIRE(parse_unit("N-m-s", "u").dim == std::array<int, 3>{1, 2, -1});
   REQUIRE_THAT(parse_unit("1/min", "u").to_si, WithinRel(1.0 / 60, 1e-15));
   REQUIRE(parse_unit("J", "u").same_dimension(parse_unit("kg m^2/s^2", "u")));
-  for (const std::string bad : {"furlong", "kg^x", "m/s/s", "/s", "kg^123", "", "kg m^2 !", "1/",
-                                "2/s", "1/s/s", "s^(-1", "s^()", "s^(-)", "s^(-1))"}) {
+  for (const std::string bad : {"furlong", "kg^x", "m/s/s", "/s",    "kg^123", "",      "kg m^2 !",
+                                "1/",      "2/s",  "1/s/s", "s^(-1", "s^()",   "s^(-)", "s^(-1))",
+                                "kg-",     "kg.",  ".kg",   "-kg",   "kg-2",   "kg..m"}) {
     INFO(bad);
     REQUIRE_THROWS_AS(parse_unit(bad, "--answer"), InputError);
   }

@@ -117,6 +117,10 @@ TEST_CASE("a unit's denominator written as negative powers reads back, every ans
   const double w3 = top.answer("omega3_min").value.data[0];
   REQUIRE_FALSE(top.check("omega3_min", fmt::format("{:.10g} s", w3)).correct);
   REQUIRE(top.check("omega3_min", fmt::format("{:.10g} s⁻¹", w3)).correct);
+  // Typed without × or ·: the letter x for times, a dot between the units.
+  const double p_phi = top.answer("p_phi").value.data[0];
+  REQUIRE(top.check("p_phi", fmt::format("{:.6g}x10^-2 kg.m^2/s", p_phi * 100)).correct);
+  REQUIRE_FALSE(top.check("p_phi", fmt::format("{:.6g}x10^-3 kg.m^2/s", p_phi * 100)).correct);
 }
 
 TEST_CASE("the terminal's notation and a student's variants of it read as wobble's form") {
@@ -130,6 +134,10 @@ TEST_CASE("the terminal's notation and a student's variants of it read as wobble
       {"m·R²/4", "m*R^2/4"},
       {"7.2*10^-4", "7.2*10^(-4)"},
       {"7.2×10⁻⁴", "7.2*10^(-4)"},
+      {"7.2x10^-4", "7.2*10^(-4)"},
+      {"7.2 X 10^-4 rad", "7.2*10^(-4) rad"},
+      {"[1 x 10^2, 0, 2]", "[1*10^2, 0, 2]"},
+      {"0.08 kg.m^2/s", "0.08 kg.m^2/s"},
       {"5, 7, 10", "[5, 7, 10]"},
       {"ω·√(3·cos(α)² + 1)/2", "omega*sqrt(3*cos(alpha)^2 + 1)/2"},
       {"√2/2", "sqrt(2)/2"},
