@@ -75,9 +75,29 @@ std::string join(const std::vector<std::string>& items) {
   return out;
 }
 
-// "[a b c]" -> "[a, b, c]", "[[a b] [c d]]" -> "[[a, b], [c, d]]".
+std::string bracket_group(const std::string& group);
+
+// MATLAB's rows, "a b c; d e f" -> "[[a, b, c], [d, e, f]]"; a column "a; b; c" -> "[a, b, c]",
+// as a vector is wanted wherever a column is typed.
+std::string semicolon_rows(const std::string& inside) {
+  std::vector<std::string> rows;
+  bool columns = true;
+  for (const auto& row : top_level(inside, ';')) {
+    if (row.empty()) continue;  // "[1 0 0; 0 1 0;]": a closing semicolon
+    rows.push_back(bracket_group("[" + row + "]"));
+    columns =
+        columns && top_level(row, ',').size() == 1 && space_separated_entries(row).size() == 1;
+  }
+  if (columns) {
+    for (auto& r : rows) r = r.substr(1, r.size() - 2);
+  }
+  return "[" + join(rows) + "]";
+}
+
+// "[a b c]" -> "[a, b, c]", "[[a b] [c d]]" -> "[[a, b], [c, d]]", "[a b; c d]" as MATLAB's.
 std::string bracket_group(const std::string& group) {
   const std::string inside = group.substr(1, group.size() - 2);
+  if (top_level(inside, ';').size() > 1) return semicolon_rows(inside);
   std::vector<std::string> items = top_level(inside, ',');
   if (items.size() == 1) items = space_separated_entries(inside);
   for (auto& item : items) {
@@ -89,6 +109,7 @@ std::string bracket_group(const std::string& group) {
 // The value's layout in reading form (see the header).
 std::string layout(const std::string& value) {
   if (value.empty()) return value;
+  if (top_level(value, ';').size() > 1) return semicolon_rows(value);
   if (wrapped(value, '(') && top_level(value.substr(1, value.size() - 2), ',').size() > 1) {
     return bracket_group("[" + value.substr(1, value.size() - 2) + "]");
   }
@@ -139,6 +160,9 @@ std::string prepared(const std::string& typed) {
   std::string s = sym::to_ascii(typed);
   for (char& c : s) {
     if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+    // Mathematica's lists, "{{10, 0, 0}, {0, 6, 1}, ...}": brackets here.
+    if (c == '{') c = '[';
+    if (c == '}') c = ']';
   }
   s = times_ten(s);
   // "10^-4" -> "10^(-4)": a signed number after '^' (no std::regex: GCC 12 warns inside it).

@@ -8,7 +8,10 @@
 ///   "7.2×10⁻⁴", "15°", "kg m²";
 /// - vectors as printed "(2.588, 0, 19.32)", as rows "[2.588 0 19.32]", or bare "5, 7, 10";
 /// - matrices as printed, row by row ("[ 10 0 0 ] [ 0 6 1 ] [ 0 1 6 ]", on one line or several);
-/// - a numeric exponent with its sign, "10^-4" (read as 10^(-4), as a student means it);
+/// - MATLAB's rows "[10 0 0; 0 6 1; 0 1 6]" (a column "[1; 2; 3]" is a vector) and Mathematica's
+///   lists "{{10, 0, 0}, {0, 6, 1}, {0, 1, 6}}";
+/// - a numeric exponent with its sign, "10^-4" (read as 10^(-4), as a student means it), and
+///   the letter x for the times sign before 10^, "7.2x10^-4";
 /// - a unit after the value, "0.00072 kg m²", "(0, 0, 9.66) rad/s" (units.hpp).
 /// A number and its unit need a space ("0.21 kg", not "0.21kg"), since "2m" would be ambiguous.
 #include <optional>

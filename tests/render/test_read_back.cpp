@@ -46,6 +46,31 @@ std::string spaced_rows(const Answer& a) {
   for (std::size_t r = 0; r < v.rows; ++r) s += (r ? " " : "") + row(r);
   return s + " " + a.unit;
 }
+
+// The same in MATLAB's notation, "[a b c; d e f; ...]" (a vector as a column, "[x; y; z]"), and
+// in Mathematica's, "{{a, b, c}, {d, e, f}, ...}".
+std::string matlab_rows(const Answer& a) {
+  const auto& v = a.value;
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.data.size(); ++i) {
+    const bool new_row = v.shape == Value::Shape::vector || i % v.cols == 0;
+    s += (i == 0 ? "" : new_row ? "; " : " ") + format_number(v.data[i]);
+  }
+  return s + "] " + a.unit;
+}
+
+std::string mathematica_lists(const Answer& a) {
+  const auto& v = a.value;
+  const auto list = [&](std::size_t from, std::size_t n) {
+    std::string s = "{";
+    for (std::size_t c = 0; c < n; ++c) s += (c ? ", " : "") + format_number(v.data[from + c]);
+    return s + "}";
+  };
+  if (v.shape == Value::Shape::vector) return list(0, v.data.size()) + " " + a.unit;
+  std::string s = "{";
+  for (std::size_t r = 0; r < v.rows; ++r) s += (r ? ", " : "") + list(r * v.cols, v.cols);
+  return s + "} " + a.unit;
+}
 }  // namespace
 
 TEST_CASE("every printed form of every answer of every problem reads back as correct") {
@@ -59,7 +84,11 @@ TEST_CASE("every printed form of every answer of every problem reads back as cor
           texts.push_back(a.symbolic);                  // the JSON's and Markdown's symbolic text
           texts.push_back(sym::to_unicode(a.symbolic));  // the text key's line
         }
-        if (a.value.shape != Value::Shape::scalar) texts.push_back(spaced_rows(a));
+        if (a.value.shape != Value::Shape::scalar) {
+          texts.push_back(spaced_rows(a));
+          texts.push_back(matlab_rows(a));
+          texts.push_back(mathematica_lists(a));
+        }
         for (const auto& text : texts) {
           INFO(p.id << " " << a.name << ": " << text);
           const Verdict v = f.check(a.name, text);
@@ -70,7 +99,7 @@ TEST_CASE("every printed form of every answer of every problem reads back as cor
       }
     }
   }
-  REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to four forms
+  REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to six forms
 }
 
 // A unit with a denominator, "kg m^2/s", as a student may write it instead: with negative powers,
@@ -138,6 +167,12 @@ TEST_CASE("the terminal's notation and a student's variants of it read as wobble
       {"7.2 X 10^-4 rad", "7.2*10^(-4) rad"},
       {"[1 x 10^2, 0, 2]", "[1*10^2, 0, 2]"},
       {"0.08 kg.m^2/s", "0.08 kg.m^2/s"},
+      {"[10 0 0; 0 6 1; 0 1 6]", "[[10, 0, 0], [0, 6, 1], [0, 1, 6]]"},
+      {"10 0 0; 0 6 1; 0 1 6 kg m^2", "[[10, 0, 0], [0, 6, 1], [0, 1, 6]] kg m^2"},
+      {"[1, 0, 0; 0, 1, 0; 0, 0, 1;]", "[[1, 0, 0], [0, 1, 0], [0, 0, 1]]"},
+      {"[5; 7; 10]", "[5, 7, 10]"},
+      {"{{10, 0, 0}, {0, 6, 1}, {0, 1, 6}}", "[[10, 0, 0], [0, 6, 1], [0, 1, 6]]"},
+      {"{5, 7, 10} kg m^2", "[5, 7, 10] kg m^2"},
       {"5, 7, 10", "[5, 7, 10]"},
       {"ω·√(3·cos(α)² + 1)/2", "omega*sqrt(3*cos(alpha)^2 + 1)/2"},
       {"√2/2", "sqrt(2)/2"},
