@@ -164,6 +164,9 @@ std::string prepared(const std::string& typed) {
     if (c == '{') c = '[';
     if (c == '}') c = ']';
   }
+  // Python's and Fortran's power, "R**2": GiNaC's '^'.
+  for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
+    s.replace(at, 2, "^");
   s = times_ten(s);
   // "10^-4" -> "10^(-4)": a signed number after '^' (no std::regex: GCC 12 warns inside it).
   std::string out;
@@ -192,6 +195,74 @@ std::pair<std::string, std::string> split_unit(const std::string& s) {
     if (is_unit(right)) return {trim(s.substr(0, sp)), right};
   }
   return {s, ""};
+}
+
+// The identifiers in s, in order: "M*R^2 psidot_0" -> {M, R, psidot_0}.
+std::vector<std::pair<std::size_t, std::size_t>> identifiers(const std::string& s) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;  // (start, length)
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (!std::isalpha(c) && c != '_') {
+      // Skip a number whole, "2e5" included: its exponent is no identifier.
+      if (std::isdigit(c) || c == '.') {
+        while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
+      } else {
+        ++i;
+      }
+      continue;
+    }
+    std::size_t j = i;
+    while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
+    out.emplace_back(i, j - i);
+    i = j;
+  }
+  return out;
+}
+
+// "M R^2 psidot0/2" -> "M*R^2*psidot0/2": a '*' for each space between two factors.
+std::string starred(const std::string& s) {
+  const auto factor_end = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == ')';
+  };
+  const auto factor_start = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '(' || c == '.';
+  };
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] != ' ') {
+      out += s[i];
+      continue;
+    }
+    const std::size_t next = s.find_first_not_of(' ', i);
+    if (next != std::string::npos && !out.empty())
+      out += factor_end(out.back()) && factor_start(s[next]) ? '*' : ' ';
+    i = next == std::string::npos ? s.size() : next - 1;
+  }
+  return out;
+}
+
+// Whether s names one of the problem's symbols that is no unit ("R^2 psidot0/2", not "m" or "g").
+bool names_a_symbol(const std::string& s, const sym::SymbolTable& table) {
+  for (const auto& [start, length] : identifiers(s)) {
+    const std::string id = s.substr(start, length);
+    if (table.contains(id) && !is_unit(id)) return true;
+  }
+  return false;
+}
+
+// "psidot_0" for the problem's psidot0, "theta_0" for theta0: a subscript as LaTeX writes it.
+// Only where the name with the underscore is not a symbol itself and the one without it is.
+std::string underscores_dropped(const std::string& s, const sym::SymbolTable& table) {
+  std::string out;
+  std::size_t done = 0;
+  for (const auto& [start, length] : identifiers(s)) {
+    std::string id = s.substr(start, length), bare = id;
+    bare.erase(std::remove(bare.begin(), bare.end(), '_'), bare.end());
+    out += s.substr(done, start - done);
+    out += bare != id && !table.contains(id) && table.contains(bare) ? bare : id;
+    done = start + length;
+  }
+  return out + s.substr(done);
 }
 
 // Whether e has one of the problem's symbols. (Not by evalf: GiNaC evaluates EllipticK(1)
@@ -233,7 +304,7 @@ std::string reading_form(const std::string& typed) {
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field) {
   check_bounds(typed, field);
-  const std::string text = prepared(typed);
+  const std::string text = underscores_dropped(prepared(typed), table);
   if (text.empty()) {
     throw InputError(field +
                      ": empty; type a number (with a unit if you like), a vector [x, y, "
@@ -261,7 +332,12 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
         } catch (const InputError&) {
           left_reads = false;
         }
-        if (left_reads) (void)parse_unit(trim(value.substr(sp + 1)), field);  // throws its error
+        const std::string right = trim(value.substr(sp + 1));
+        if (left_reads && names_a_symbol(right, table)) {  // "M R^2 psidot0/2"
+          throw InputError(field + ": cannot read \"" + value + "\": products need '*' (" +
+                           starred(value) + ", not " + value + ")");
+        }
+        if (left_reads) (void)parse_unit(right, field);  // throws its error
       }
       const bool glued = !value.empty() && std::isdigit(static_cast<unsigned char>(value[0])) &&
                          value.find(' ') == std::string::npos &&

@@ -164,6 +164,7 @@ TEST_CASE("the terminal's notation and a student's variants of it read as wobble
       {"7.2*10^-4", "7.2*10^(-4)"},
       {"7.2×10⁻⁴", "7.2*10^(-4)"},
       {"7.2x10^-4", "7.2*10^(-4)"},
+      {"m*R**2/4", "m*R^2/4"},
       {"7.2 X 10^-4 rad", "7.2*10^(-4) rad"},
       {"[1 x 10^2, 0, 2]", "[1*10^2, 0, 2]"},
       {"0.08 kg.m^2/s", "0.08 kg.m^2/s"},
@@ -208,6 +209,22 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
     REQUIRE_THAT(m, !Catch::Contains("expected") && !Catch::Contains("got:") &&
                         !Catch::Contains("line 0") && Catch::StartsWith("--answer"));
   }
+  // Factors side by side: the answer with its '*' written in, to paste.
+  const Fixture top("heavy-top");
+  const auto top_message = [&](const std::string& text) {
+    try {
+      (void)top.check("p_psi", text);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  REQUIRE_THAT(top_message("M R^2 (psidot0 + 1)/2"),
+               Catch::Contains("products need '*' (M*R^2*(psidot0 + 1)/2, not"));
+  // A subscript written as LaTeX does, psidot_0 for psidot0, is the problem's symbol.
+  REQUIRE(top.check("p_psi", "M*R^2*psidot_0/2").correct);
+  REQUIRE_FALSE(top.check("p_psi", "M*R^2*psidot_0/3").correct);
+  REQUIRE_THAT(top_message("M*R^2*psidot_1/2"), Catch::Contains("undefined symbol 'psidot_1'"));
   // An undefined symbol names the ones that exist, with their letters.
   REQUIRE_THAT(message("w*R"), Catch::Contains("undefined symbol 'w'") &&
                                    Catch::Contains("omega (ω)") && Catch::Contains("alpha (α)"));
