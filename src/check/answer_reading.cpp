@@ -134,6 +134,61 @@ std::string layout(const std::string& value) {
   return value;
 }
 
+// The identifiers in s, in order: "M*R^2 psidot_0" -> {M, R, psidot_0}.
+std::vector<std::pair<std::size_t, std::size_t>> identifiers(const std::string& s) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;  // (start, length)
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (!std::isalpha(c) && c != '_') {
+      // Skip a number whole, "2e5" included: its exponent is no identifier.
+      if (std::isdigit(c) || c == '.') {
+        while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
+      } else {
+        ++i;
+      }
+      continue;
+    }
+    std::size_t j = i;
+    while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
+    out.emplace_back(i, j - i);
+    i = j;
+  }
+  return out;
+}
+
+// "cos^2(alpha)" -> "cos(alpha)^2", as textbooks write a power of a trigonometric or hyperbolic
+// function (and "cos²(α)" arrives here so). Only a positive whole power: cos^-1 is arccos in
+// some books and cos(x)^(-1) in others, so it stays an error.
+std::string function_powers(const std::string& s) {
+  static const std::vector<std::string> kFunctions{"sin",  "cos",  "tan",  "asin", "acos",
+                                                   "atan", "sinh", "cosh", "tanh"};
+  std::string out;
+  std::size_t done = 0;
+  for (const auto& [start, length] : identifiers(s)) {
+    if (start < done) continue;
+    const std::string name = s.substr(start, length);
+    std::size_t k = start + length;
+    if (std::find(kFunctions.begin(), kFunctions.end(), name) == kFunctions.end() ||
+        k >= s.size() || s[k] != '^')
+      continue;
+    ++k;
+    const bool bracketed = k < s.size() && s[k] == '(';
+    if (bracketed) ++k;
+    const std::size_t digits = k;
+    while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+    if (k == digits || (bracketed && (k >= s.size() || s[k++] != ')'))) continue;
+    const std::string power = s.substr(digits, k - digits - (bracketed ? 1 : 0));
+    while (k < s.size() && s[k] == ' ') ++k;
+    if (k >= s.size() || s[k] != '(') continue;
+    const std::size_t close = matching(s, k);
+    if (close == std::string::npos) continue;
+    out += s.substr(done, start - done) + name + "(" +
+           function_powers(s.substr(k + 1, close - k - 1)) + ")^" + power;
+    done = close + 1;
+  }
+  return out + s.substr(done);
+}
+
 // "8.1x10^-2" or "8.1 X 10^-2" -> "8.1*10^-2": the letter x for the times sign, as typed where
 // there is no ×. Only between a digit and "10^", where no expression could mean a symbol x.
 std::string times_ten(const std::string& s) {
@@ -167,7 +222,7 @@ std::string prepared(const std::string& typed) {
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
   for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
     s.replace(at, 2, "^");
-  s = times_ten(s);
+  s = function_powers(times_ten(s));
   // "10^-4" -> "10^(-4)": a signed number after '^' (no std::regex: GCC 12 warns inside it).
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -195,28 +250,6 @@ std::pair<std::string, std::string> split_unit(const std::string& s) {
     if (is_unit(right)) return {trim(s.substr(0, sp)), right};
   }
   return {s, ""};
-}
-
-// The identifiers in s, in order: "M*R^2 psidot_0" -> {M, R, psidot_0}.
-std::vector<std::pair<std::size_t, std::size_t>> identifiers(const std::string& s) {
-  std::vector<std::pair<std::size_t, std::size_t>> out;  // (start, length)
-  for (std::size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (!std::isalpha(c) && c != '_') {
-      // Skip a number whole, "2e5" included: its exponent is no identifier.
-      if (std::isdigit(c) || c == '.') {
-        while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
-      } else {
-        ++i;
-      }
-      continue;
-    }
-    std::size_t j = i;
-    while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
-    out.emplace_back(i, j - i);
-    i = j;
-  }
-  return out;
 }
 
 // "M R^2 psidot0/2" -> "M*R^2*psidot0/2": a '*' for each space between two factors.

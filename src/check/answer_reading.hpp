@@ -12,6 +12,9 @@
 ///   lists "{{10, 0, 0}, {0, 6, 1}, {0, 1, 6}}";
 /// - a numeric exponent with its sign, "10^-4" (read as 10^(-4), as a student means it), and
 ///   the letter x for the times sign before 10^, "7.2x10^-4";
+/// - powers as Python writes them, "R**2", and a trigonometric power as textbooks do,
+///   "cos^2(alpha)" or "cos²(α)" for cos(alpha)^2;
+/// - a subscript as LaTeX writes it, "psidot_0" for the problem's psidot0;
 /// - a unit after the value, "0.00072 kg m²", "(0, 0, 9.66) rad/s" (units.hpp).
 /// A number and its unit need a space ("0.21 kg", not "0.21kg"), since "2m" would be ambiguous.
 #include <optional>

@@ -123,6 +123,49 @@ std::vector<std::string> negative_power_forms(const std::string& unit) {
           num_unicode + den + "⁻" + superscript(power)};
 }
 
+// The key's "cos(alpha)^2" in the textbook's notation "cos^2(alpha)"; "" when it has none.
+std::string textbook_powers(const std::string& text) {
+  std::string out = text;
+  bool any = false;
+  for (const std::string f : {"sin(", "cos(", "tan(", "sinh(", "cosh(", "tanh("}) {
+    for (std::size_t at = out.find(f); at != std::string::npos; at = out.find(f, at + 1)) {
+      if (at > 0 && std::isalpha(static_cast<unsigned char>(out[at - 1]))) continue;  // asin(
+      std::size_t close = at + f.size(), depth = 1;
+      for (; close < out.size() && depth > 0; ++close)
+        depth += out[close] == '(' ? 1 : out[close] == ')' ? -1 : 0;
+      if (close + 1 >= out.size() || out[close] != '^' ||
+          !std::isdigit(static_cast<unsigned char>(out[close + 1])))
+        continue;
+      const std::string power(1, out[close + 1]);
+      out = out.substr(0, at + f.size() - 1) + "^" + power +
+            out.substr(at + f.size() - 1, close - (at + f.size() - 1)) + out.substr(close + 2);
+      any = true;
+    }
+  }
+  return any ? out : "";
+}
+
+TEST_CASE("a trigonometric power as textbooks write it, cos^2(x), reads back, every answer") {
+  int forms = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        const std::string text = textbook_powers(a.symbolic);
+        if (text.empty()) continue;
+        for (const auto& typed : {text, sym::to_unicode(text)}) {
+          INFO(p.id << " " << a.name << ": " << typed);
+          const Verdict v = f.check(a.name, typed);
+          INFO(v.line);
+          REQUIRE(v.correct);
+          ++forms;
+        }
+      }
+    }
+  }
+  REQUIRE(forms >= 2 * 20);  // 23 closed forms with a power of a sine or cosine today
+}
+
 TEST_CASE("a unit's denominator written as negative powers reads back, every answer") {
   int forms = 0;
   for (const auto& p : load_catalog()) {
@@ -165,6 +208,11 @@ TEST_CASE("the terminal's notation and a student's variants of it read as wobble
       {"7.2×10⁻⁴", "7.2*10^(-4)"},
       {"7.2x10^-4", "7.2*10^(-4)"},
       {"m*R**2/4", "m*R^2/4"},
+      {"ω·√(3·cos²(α) + 1)", "omega*sqrt(3*cos(alpha)^2 + 1)"},
+      {"sin^2 (theta)+cos^(3)(2*(a+b))", "sin(theta)^2+cos(2*(a+b))^3"},
+      {"cos^2(cos^2(x))", "cos(cos(x)^2)^2"},
+      {"cos^-1(x)", "cos^(-1)(x)"},
+      {"arccos^2(x)", "arccos^2(x)"},
       {"7.2 X 10^-4 rad", "7.2*10^(-4) rad"},
       {"[1 x 10^2, 0, 2]", "[1*10^2, 0, 2]"},
       {"0.08 kg.m^2/s", "0.08 kg.m^2/s"},
