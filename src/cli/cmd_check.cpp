@@ -1,15 +1,16 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "check/judge.hpp"
 #include "check/submission.hpp"
+#include "cli/commands.hpp"
 #include "core/input_error.hpp"
 #include "export/gradescope.hpp"
-#include "cli/commands.hpp"
-#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
+#include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
 
 namespace wobble::cli {
@@ -17,7 +18,7 @@ namespace wobble::cli {
 void setup_check(CLI::App& app, CheckOptions& opt) {
   app.add_option("problem", opt.problem, "Problem id (see `wobble list`) or a .toml file")
       ->required();
-  auto* part = app.add_option("part", opt.part, "Part id (a, b, ...)");
+  auto* part = app.add_option("part", opt.part, "Part id (a, b, ...); may be left out with --name");
   auto* answer = app.add_option(
       "--answer", opt.answer,
       "Your answer: 0.21 kg m^2, 3.1 rad/s, 12 deg, [1, 0, 2], [[..],[..],[..]], m*a^2/6");
@@ -28,7 +29,8 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
       ->needs(answers)
       ->check(CLI::IsMember({"text", "json", "gradescope"}));
   answers->excludes(answer)->excludes(part);
-  app.add_option("--name", opt.name, "Which answer of the part (needed when it has several)");
+  app.add_option("--name", opt.name,
+                 "Which answer (needed when the part has several; names its part)");
   app.add_option("--set", opt.sets, "Parameter value NAME=VALUE, as for solve")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -101,8 +103,9 @@ int check_submission(const CheckOptions& opt, const check::Options& o) {
 int run_check(const CheckOptions& opt) {
   const check::Options o = judge_options(opt.tolerance, opt.sigfigs);
   if (!opt.answers.empty()) return check_submission(opt, o);
-  if (opt.part.empty()) {
-    throw InputError("check: give PART and --answer, or --answers FILE with every answer");
+  if (opt.part.empty() && opt.name.empty()) {
+    throw InputError(
+        "check: give PART (or --name) and --answer, or --answers FILE with every answer");
   }
   const Problem problem = find_problem(opt.problem);
   const sym::Values values =
@@ -111,8 +114,20 @@ int run_check(const CheckOptions& opt) {
   const PartKey* part = nullptr;
   std::string parts;
   for (const auto& p : key.parts) {
-    if (p.id == opt.part) part = &p;
+    // Without PART, the part that holds the named answer: names are unique in a problem.
+    const bool holds = std::any_of(p.answers.begin(), p.answers.end(),
+                                   [&](const Answer& a) { return a.name == opt.name; }) ||
+                       std::find(p.absent.begin(), p.absent.end(), opt.name) != p.absent.end();
+    if (opt.part.empty() ? holds : p.id == opt.part) part = &p;
     parts += (parts.empty() ? "" : ", ") + p.id;
+  }
+  if (part == nullptr && opt.part.empty()) {
+    std::vector<std::string> names;
+    for (const auto& p : key.parts) {
+      for (const auto& a : p.answers) names.push_back(a.name);
+    }
+    throw InputError(fmt::format("--name: problem {} has no answer '{}' (answers: {})", problem.id,
+                                 opt.name, fmt::join(names, ", ")));
   }
   if (part == nullptr) {
     throw InputError(
@@ -122,7 +137,7 @@ int run_check(const CheckOptions& opt) {
     throw InputError(
         fmt::format("part: part {} of {} has nothing to check at these values ({} "
                     "do not exist; `wobble solve` says why)",
-                    opt.part, problem.id, fmt::join(part->absent, ", ")));
+                    part->id, problem.id, fmt::join(part->absent, ", ")));
   }
   std::string names;
   const Answer* answer = nullptr;
@@ -133,8 +148,8 @@ int run_check(const CheckOptions& opt) {
   if (answer == nullptr) {
     throw InputError(
         opt.name.empty()
-            ? fmt::format("--name: part {} has several answers; name one ({})", opt.part, names)
-            : fmt::format("--name: part {} has no answer '{}' (answers: {})", opt.part, opt.name,
+            ? fmt::format("--name: part {} has several answers; name one ({})", part->id, names)
+            : fmt::format("--name: part {} has no answer '{}' (answers: {})", part->id, opt.name,
                           names));
   }
   const sym::SymbolTable table = problem.symbol_table();

@@ -201,6 +201,32 @@ TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback
               .exit_code == 0);
 }
 
+TEST_CASE("check: --name alone finds its part; neither part nor name says what to give") {
+  const RunResult by_name = run_wobble({"check", "flying-plate", "--name", "Omega_space_rate",
+                                        "--answer", "omega*sqrt(3*cos^2(alpha) + 1)"});
+  REQUIRE(by_name.exit_code == 0);
+  REQUIRE(by_name.out == "correct: Omega_space_rate (your expression simplifies to the key's)\n");
+  const RunResult wrong =
+      run_wobble({"check", "flying-plate", "--name", "Omega_space_rate", "--answer", "omega"});
+  REQUIRE(wrong.exit_code == 1);
+  const RunResult unknown =
+      run_wobble({"check", "flying-plate", "--name", "Omega", "--answer", "1"});
+  REQUIRE(unknown.exit_code == 2);
+  REQUIRE(unknown.out.empty());
+  REQUIRE_THAT(unknown.err,
+               Catch::StartsWith(
+                   "wobble: --name: problem flying-plate has no answer 'Omega' (answers: I0, ") &&
+                   Catch::Contains("Omega_space_rate"));
+  // An answer that does not exist at these values names its part and says so.
+  const RunResult absent = run_wobble(
+      {"check", "heavy-top", "--name", "phidot_slow", "--set", "psidot0=10", "--answer", "1"});
+  REQUIRE(absent.exit_code == 2);
+  REQUIRE_THAT(absent.err, Catch::Contains("part d of heavy-top has nothing to check"));
+  const RunResult neither = run_wobble({"check", "flying-plate", "--answer", "1"});
+  REQUIRE(neither.exit_code == 2);
+  REQUIRE_THAT(neither.err, Catch::Contains("give PART (or --name)"));
+}
+
 TEST_CASE(
     "variants: the handout has the numbers and no answers; keys per variant; check a variant") {
   const RunResult handout =
