@@ -30,6 +30,23 @@ const std::map<std::string, Named>& names() {
   };
   return n;
 }
+
+// The names written out as students write them ("0.78 radians", "3 seconds"): each the unit it
+// spells, plural or not.
+const std::map<std::string, std::string>& spellings() {
+  static const std::map<std::string, std::string> n{
+      {"kilogram", "kg"}, {"kilograms", "kg"},   {"gram", "g"},          {"grams", "g"},
+      {"meter", "m"},     {"meters", "m"},       {"metre", "m"},         {"metres", "m"},
+      {"second", "s"},    {"seconds", "s"},      {"sec", "s"},           {"secs", "s"},
+      {"minute", "min"},  {"minutes", "min"},    {"mins", "min"},        {"hour", "h"},
+      {"hours", "h"},     {"hr", "h"},           {"hrs", "h"},           {"radian", "rad"},
+      {"radians", "rad"}, {"rads", "rad"},       {"degree", "deg"},      {"degrees", "deg"},
+      {"degs", "deg"},    {"revolution", "rev"}, {"revolutions", "rev"}, {"revs", "rev"},
+      {"joule", "J"},     {"joules", "J"},       {"newton", "N"},        {"newtons", "N"},
+      {"RPM", "rpm"},
+  };
+  return n;
+}
 }  // namespace
 
 std::string Unit::dimension_words() const {
@@ -56,7 +73,7 @@ Unit parse_unit(const std::string& text, const std::string& field) {
                      " (units: kg, g, m, cm, mm, s, ms, min, h, day, rad, deg, rev, J, N, Hz, rpm; "
                      "e.g. 'kg m^2', 'rad/s')");
   };
-  bool denominator = false, any = false;
+  bool denominator = false, any = false, after_denominator = false;
   std::size_t i = 0;
   while (i < text.size()) {
     const char c = text[i];
@@ -87,7 +104,15 @@ Unit parse_unit(const std::string& text, const std::string& field) {
     std::size_t j = i;
     while (j < text.size() && std::isalpha(static_cast<unsigned char>(text[j]))) ++j;
     if (j == i) return fail("unexpected '" + std::string(1, c) + "'");
-    const std::string name = text.substr(i, j - i);
+    std::string name = text.substr(i, j - i);
+    if (name == "per") {  // "radians per second"
+      if (denominator || !any) return fail("one 'per' or '/' after a unit");
+      denominator = true;
+      i = j;
+      continue;
+    }
+    if (const auto spelled = spellings().find(name); spelled != spellings().end())
+      name = spelled->second;
     const auto it = names().find(name);
     if (it == names().end()) return fail("unknown unit '" + name + "'");
     int power = 1;
@@ -105,7 +130,10 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       if (bracketed && (k >= text.size() || text[k++] != ')')) return fail("a ')' after the power");
       j = k;
     }
-    if (denominator) power = -power;
+    if (denominator) {
+      power = -power;
+      after_denominator = true;
+    }
     u.to_si *= std::pow(it->second.to_si, power);
     for (int d = 0; d < 3; ++d) u.dim[d] += it->second.dim[d] * power;
     u.angle = u.angle || it->second.angle;
@@ -113,6 +141,7 @@ Unit parse_unit(const std::string& text, const std::string& field) {
     i = j;
   }
   if (!any) return fail("no unit");
+  if (denominator && !after_denominator) return fail("a unit after the '/'");
   return u;
 }
 

@@ -40,8 +40,20 @@ std::string greek_word(const std::string& word) {
 const std::vector<std::pair<std::string, std::string>>& replacements() {
   static const std::vector<std::pair<std::string, std::string>> r = [] {
     std::vector<std::pair<std::string, std::string>> v{
-        {"·", "*"}, {"×", "*"}, {"⋅", "*"}, {"∙", "*"}, {"−", "-"}, {"–", "-"},
-        {"°", " deg"}, {"\u00a0", " "}, {"\u2009", " "}, {"\u202f", " "}, {"µ", "mu"}};
+        {"·", "*"},
+        {"×", "*"},
+        {"⋅", "*"},
+        {"∙", "*"},
+        {"−", "-"},
+        {"–", "-"},
+        // º (the ordinal sign) and ˚ (the ring above) as keyboards without a degree sign type it.
+        {"°", " deg"},
+        {"º", " deg"},
+        {"˚", " deg"},
+        {"\u00a0", " "},
+        {"\u2009", " "},
+        {"\u202f", " "},
+        {"µ", "mu"}};
     for (const auto& [name, letter] : greek_letters()) {
       if (name != "Pi") v.emplace_back(letter, name);  // π reads as pi
     }

@@ -59,11 +59,19 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   // A dot or hyphen between units multiplies, as engineers write them.
   REQUIRE(parse_unit("kg.m^2/s", "u").dim == std::array<int, 3>{1, 2, -1});
   REQUIRE(parse_unit("N-m-s", "u").dim == std::array<int, 3>{1, 2, -1});
+  // Written out, singular or plural, and "per" for the '/'.
+  REQUIRE_THAT(parse_unit("revolutions per minute", "u").to_si, WithinRel(2 * M_PI / 60, 1e-15));
+  REQUIRE_THAT(parse_unit("degrees", "u").to_si, WithinRel(M_PI / 180, 1e-15));
+  REQUIRE(parse_unit("kilogram metres^2 per second", "u").dim == std::array<int, 3>{1, 2, -1});
+  REQUIRE(parse_unit("radians", "u").angle);
   REQUIRE_THAT(parse_unit("1/min", "u").to_si, WithinRel(1.0 / 60, 1e-15));
   REQUIRE(parse_unit("J", "u").same_dimension(parse_unit("kg m^2/s^2", "u")));
-  for (const std::string bad : {"furlong", "kg^x", "m/s/s", "/s",    "kg^123", "",      "kg m^2 !",
-                                "1/",      "2/s",  "1/s/s", "s^(-1", "s^()",   "s^(-)", "s^(-1))",
-                                "kg-",     "kg.",  ".kg",   "-kg",   "kg-2",   "kg..m"}) {
+  for (const std::string bad :
+       {"furlong",       "kg^x",        "m/s/s", "/s",    "kg^123", "",
+        "kg m^2 !",      "1/",          "2/s",   "1/s/s", "s^(-1",  "s^()",
+        "s^(-)",         "s^(-1))",     "kg-",   "kg.",   ".kg",    "-kg",
+        "kg-2",          "kg..m",       "rad/",  "kg /",  "per s",  "rad per",
+        "m per s per s", "m / s per s", "pers"}) {
     INFO(bad);
     REQUIRE_THROWS_AS(parse_unit(bad, "--answer"), InputError);
   }

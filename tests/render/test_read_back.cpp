@@ -166,6 +166,27 @@ TEST_CASE("a trigonometric power as textbooks write it, cos^2(x), reads back, ev
   REQUIRE(forms >= 2 * 20);  // 23 closed forms with a power of a sine or cosine today
 }
 
+TEST_CASE("units written out, and degree signs from keyboards without one") {
+  const Fixture top("heavy-top");
+  const double theta = top.answer("theta_max").value.data[0];
+  const double w3 = top.answer("omega3_min").value.data[0];
+  const std::string degrees = fmt::format("{:.6g}", theta * 180 / M_PI);
+  for (const std::string& typed :
+       {degrees + " degrees", degrees + "º", degrees + "˚", degrees + " degree",
+        fmt::format("{:.6g} radians", theta), fmt::format("{:.6g} rads", theta)}) {
+    INFO(typed);
+    REQUIRE(top.check("theta_max", typed).correct);
+  }
+  REQUIRE_FALSE(top.check("theta_max", fmt::format("{:.6g} degrees", theta)).correct);
+  REQUIRE(top.check("omega3_min", fmt::format("{:.6g} radians per second", w3)).correct);
+  REQUIRE(
+      top.check("omega3_min", fmt::format("{:.6g} revolutions per minute", w3 * 60 / (2 * M_PI)))
+          .correct);
+  REQUIRE_FALSE(
+      top.check("omega3_min", fmt::format("{:.6g} revolutions per second", w3 * 60 / (2 * M_PI)))
+          .correct);
+}
+
 TEST_CASE("a unit's denominator written as negative powers reads back, every answer") {
   int forms = 0;
   for (const auto& p : load_catalog()) {
