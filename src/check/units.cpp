@@ -129,6 +129,17 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       power = std::stoi(text.substr(start, k - start)) * (neg ? -1 : 1);
       if (bracketed && (k >= text.size() || text[k++] != ')')) return fail("a ')' after the power");
       j = k;
+    } else if (j < text.size() && (std::isdigit(static_cast<unsigned char>(text[j])) ||
+                                   (text[j] == '-' && j + 1 < text.size() &&
+                                    std::isdigit(static_cast<unsigned char>(text[j + 1]))))) {
+      // "kg m2 s-1": the SI's powers without a caret, as a PDF's m² pastes.
+      const bool neg = text[j] == '-';
+      std::size_t k = neg ? j + 1 : j;
+      const std::size_t start = k;
+      while (k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]))) ++k;
+      if (k - start > 1) return fail("a power must be a small whole number");
+      power = (text[start] - '0') * (neg ? -1 : 1);
+      j = k;
     }
     if (denominator) {
       power = -power;

@@ -64,14 +64,19 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   REQUIRE_THAT(parse_unit("degrees", "u").to_si, WithinRel(M_PI / 180, 1e-15));
   REQUIRE(parse_unit("kilogram metres^2 per second", "u").dim == std::array<int, 3>{1, 2, -1});
   REQUIRE(parse_unit("radians", "u").angle);
+  // Powers without a caret, as the SI writes them and a PDF's "m²" pastes.
+  REQUIRE(parse_unit("kg m2 s-1", "u").dim == std::array<int, 3>{1, 2, -1});
+  REQUIRE(parse_unit("kg m2/s", "u").dim == std::array<int, 3>{1, 2, -1});
+  REQUIRE(parse_unit("kg-2", "u").dim == std::array<int, 3>{-2, 0, 0});
+  REQUIRE_THAT(parse_unit("cm2", "u").to_si, WithinRel(1e-4, 1e-15));
   REQUIRE_THAT(parse_unit("1/min", "u").to_si, WithinRel(1.0 / 60, 1e-15));
   REQUIRE(parse_unit("J", "u").same_dimension(parse_unit("kg m^2/s^2", "u")));
   for (const std::string bad :
        {"furlong",       "kg^x",        "m/s/s", "/s",    "kg^123", "",
         "kg m^2 !",      "1/",          "2/s",   "1/s/s", "s^(-1",  "s^()",
         "s^(-)",         "s^(-1))",     "kg-",   "kg.",   ".kg",    "-kg",
-        "kg-2",          "kg..m",       "rad/",  "kg /",  "per s",  "rad per",
-        "m per s per s", "m / s per s", "pers"}) {
+        "m22",           "kg..m",       "rad/",  "kg /",  "per s",  "rad per",
+        "m per s per s", "m / s per s", "pers",  "m-",    "m2-",    "s--1"}) {
     INFO(bad);
     REQUIRE_THROWS_AS(parse_unit(bad, "--answer"), InputError);
   }
