@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <tuple>
 #include <vector>
 
 #include "check/text.hpp"
@@ -298,6 +299,32 @@ std::string underscores_dropped(const std::string& s, const sym::SymbolTable& ta
   return out + s.substr(done);
 }
 
+// "45deg", "0.21kg", "3.1rad/s": a plain number with its unit glued on, where the unit has no
+// letters the problem uses as a symbol ("2m" is 2 metres in the heavy top, but 2 m, refused as
+// such, where m is a mass). {s, ""} when s is not such a pair.
+std::pair<std::string, std::string> split_glued_unit(const std::string& s,
+                                                     const sym::SymbolTable& table) {
+  std::size_t k = 0;
+  while (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '.')) ++k;
+  if (k == 0 || k >= s.size()) return {s, ""};
+  // An exponent belongs to the number: "5e7g" is 5e7 grams, "2e" no number with a unit.
+  if ((s[k] == 'e' || s[k] == 'E') && k + 1 < s.size()) {
+    std::size_t e = k + 1;
+    if (s[e] == '+' || s[e] == '-') ++e;
+    if (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) {
+      while (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) ++e;
+      k = e;
+    }
+  }
+  const std::string number = s.substr(0, k), unit = trim(s.substr(k));
+  if (unit.empty() || !std::isalpha(static_cast<unsigned char>(unit[0])) || !is_unit(unit))
+    return {s, ""};
+  for (const auto& [start, length] : identifiers(unit)) {
+    if (table.contains(unit.substr(start, length))) return {s, ""};
+  }
+  return {number, unit};
+}
+
 // Whether e has one of the problem's symbols. (Not by evalf: GiNaC evaluates EllipticK(1)
 // forever, and an answer's range is checked only where it is evaluated, sym::evaluate.)
 bool has_symbols(const GiNaC::ex& e) {
@@ -344,6 +371,7 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                      "z], a matrix [[..], [..], [..]] or an expression");
   }
   auto [value, unit] = split_unit(text);
+  if (unit.empty()) std::tie(value, unit) = split_glued_unit(text, table);
   ReadAnswer p;
   try {
     p.value = sym::parse_value_text(layout(value), table, field);
@@ -379,10 +407,19 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                            return std::isalpha(static_cast<unsigned char>(c));
                          });
       const bool refused = std::string(e.what()).find("is refused") != std::string::npos;
-      throw InputError(std::string(e.what()) +
-                       (glued && !refused
-                            ? " (put a space between a number and its unit: '0.21 kg m^2')"
-                            : ""));
+      std::string hint;
+      if (glued && !refused) {
+        // "0.16m" where m is a mass: a unit's letters the problem also uses as a symbol.
+        const std::size_t letters = value.find_first_not_of("0123456789.");
+        const std::string tail = value.substr(letters);
+        hint = is_unit(tail) && table.contains(tail)
+                   ? " (" + tail +
+                         " is one of the problem's symbols here: " + value.substr(0, letters) +
+                         "*" + tail + " for it, " + value.substr(0, letters) + " " + tail +
+                         " for the unit)"
+                   : " (put a space between a number and its unit: '0.21 kg m^2')";
+      }
+      throw InputError(std::string(e.what()) + hint);
     }
     if (p.value.entries.empty()) throw;
   }

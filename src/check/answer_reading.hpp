@@ -16,7 +16,8 @@
 ///   "cos^2(alpha)" or "cos²(α)" for cos(alpha)^2;
 /// - a subscript as LaTeX writes it, "psidot_0" for the problem's psidot0;
 /// - a unit after the value, "0.00072 kg m²", "(0, 0, 9.66) rad/s" (units.hpp).
-/// A number and its unit need a space ("0.21 kg", not "0.21kg"), since "2m" would be ambiguous.
+/// A unit glued to a plain number ("45deg", "0.21kg") is read as such unless the problem uses one
+/// of its letters as a symbol: where m is a mass, "2m" is ambiguous and refused.
 #include <optional>
 #include <string>
 

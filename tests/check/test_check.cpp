@@ -281,7 +281,7 @@ TEST_CASE("components in another frame are named as such (omega_body for omega_s
 TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
   const Fixture plate("flying-plate");
   for (const std::string bad :
-       {"", "   ", "0.16s", "[1, 2", "[1, 2]", "0.16 furlong", "1/0", "q*2"}) {
+       {"", "   ", "0.16m", "[1, 2", "[1, 2]", "0.16 furlong", "1/0", "q*2"}) {
     INFO("'" << bad << "'");
     REQUIRE_THROWS_AS(plate.check("t_max", bad), InputError);
   }

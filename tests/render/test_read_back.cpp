@@ -179,6 +179,12 @@ TEST_CASE("units written out, and degree signs from keyboards without one") {
   }
   REQUIRE_FALSE(top.check("theta_max", fmt::format("{:.6g} degrees", theta)).correct);
   REQUIRE(top.check("omega3_min", fmt::format("{:.6g} radians per second", w3)).correct);
+  // Glued to the number, as --set takes an angle: where no symbol has the unit's letters.
+  REQUIRE(top.check("theta_max", degrees + "deg").correct);
+  REQUIRE(top.check("omega3_min", fmt::format("{:.6g}rad/s", w3)).correct);
+  REQUIRE_FALSE(top.check("omega3_min", fmt::format("{:.6g}rpm", w3)).correct);
+  const Fixture three("taylor-10-35");  // m is a mass there: 2m is refused, not read as metres
+  REQUIRE_THROWS_AS(three.check("I", "10m"), InputError);
   REQUIRE(
       top.check("omega3_min", fmt::format("{:.6g} revolutions per minute", w3 * 60 / (2 * M_PI)))
           .correct);
