@@ -6,14 +6,15 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "check/answer_reading.hpp"
 #include "check/check_fixture.hpp"
 #include "check/judge.hpp"
-#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "render/common.hpp"
+#include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "temp_files.hpp"
@@ -23,6 +24,16 @@ using namespace wobble::check;
 
 namespace {
 using Fixture = wobble::test::CheckFixture;
+
+// The message `check` refuses the answer with, or "(no error)".
+std::string error_of(const Fixture& f, const std::string& name, const std::string& text) {
+  try {
+    (void)f.check(name, text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
 
 // The numeric line exactly as the text key prints it (matrices on several lines, indented).
 std::string printed_value(const Answer& a) {
@@ -71,25 +82,16 @@ std::string mathematica_lists(const Answer& a) {
   for (std::size_t r = 0; r < v.rows; ++r) s += (r ? ", " : "") + list(r * v.cols, v.cols);
   return s + "} " + a.unit;
 }
-}  // namespace
 
-TEST_CASE("every printed form of every answer of every problem reads back as correct") {
+// Every answer of every problem, typed in each of forms_of(answer): each must be judged right.
+// Returns how many were judged.
+int forms_judged_right(const std::function<std::vector<std::string>(const Answer&)>& forms_of) {
   int forms = 0;
   for (const auto& p : load_catalog()) {
     const Fixture f(p.id);
     for (const auto& part : f.key.parts) {
       for (const auto& a : part.answers) {
-        std::vector<std::string> texts{printed_value(a)};
-        if (!a.symbolic.empty()) {
-          texts.push_back(a.symbolic);                  // the JSON's and Markdown's symbolic text
-          texts.push_back(sym::to_unicode(a.symbolic));  // the text key's line
-        }
-        if (a.value.shape != Value::Shape::scalar) {
-          texts.push_back(spaced_rows(a));
-          texts.push_back(matlab_rows(a));
-          texts.push_back(mathematica_lists(a));
-        }
-        for (const auto& text : texts) {
+        for (const auto& text : forms_of(a)) {
           INFO(p.id << " " << a.name << ": " << text);
           const Verdict v = f.check(a.name, text);
           INFO(v.line);
@@ -99,6 +101,24 @@ TEST_CASE("every printed form of every answer of every problem reads back as cor
       }
     }
   }
+  return forms;
+}
+}  // namespace
+
+TEST_CASE("every printed form of every answer of every problem reads back as correct") {
+  const int forms = forms_judged_right([](const Answer& a) {
+    std::vector<std::string> texts{printed_value(a)};
+    if (!a.symbolic.empty()) {
+      texts.push_back(a.symbolic);                   // the JSON's and Markdown's symbolic text
+      texts.push_back(sym::to_unicode(a.symbolic));  // the text key's line
+    }
+    if (a.value.shape != Value::Shape::scalar) {
+      texts.push_back(spaced_rows(a));
+      texts.push_back(matlab_rows(a));
+      texts.push_back(mathematica_lists(a));
+    }
+    return texts;
+  });
   REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to six forms
 }
 
@@ -146,23 +166,11 @@ std::string textbook_powers(const std::string& text) {
 }
 
 TEST_CASE("a trigonometric power as textbooks write it, cos^2(x), reads back, every answer") {
-  int forms = 0;
-  for (const auto& p : load_catalog()) {
-    const Fixture f(p.id);
-    for (const auto& part : f.key.parts) {
-      for (const auto& a : part.answers) {
-        const std::string text = textbook_powers(a.symbolic);
-        if (text.empty()) continue;
-        for (const auto& typed : {text, sym::to_unicode(text)}) {
-          INFO(p.id << " " << a.name << ": " << typed);
-          const Verdict v = f.check(a.name, typed);
-          INFO(v.line);
-          REQUIRE(v.correct);
-          ++forms;
-        }
-      }
-    }
-  }
+  const int forms = forms_judged_right([](const Answer& a) {
+    const std::string text = textbook_powers(a.symbolic);
+    return text.empty() ? std::vector<std::string>{}
+                        : std::vector<std::string>{text, sym::to_unicode(text)};
+  });
   REQUIRE(forms >= 2 * 20);  // 23 closed forms with a power of a sine or cosine today
 }
 
@@ -194,28 +202,18 @@ TEST_CASE("units written out, and degree signs from keyboards without one") {
 }
 
 TEST_CASE("a unit's powers written negative or without a caret read back, every answer") {
-  int forms = 0;
-  for (const auto& p : load_catalog()) {
-    const Fixture f(p.id);
-    for (const auto& part : f.key.parts) {
-      for (const auto& a : part.answers) {
-        std::vector<std::string> units = negative_power_forms(a.unit);
-        // Powers without a caret, "kg m2/s": a PDF key's "kg m²/s" as it pastes.
-        if (std::string bare = a.unit; bare.find('^') != std::string::npos) {
-          bare.erase(std::remove(bare.begin(), bare.end(), '^'), bare.end());
-          units.push_back(bare);
-        }
-        for (const auto& unit : units) {
-          const std::string text = detail::value_text(a.value, "        ") + " " + unit;
-          INFO(p.id << " " << a.name << ": " << text);
-          const Verdict v = f.check(a.name, text);
-          INFO(v.line);
-          REQUIRE(v.correct);
-          ++forms;
-        }
-      }
+  const int forms = forms_judged_right([](const Answer& a) {
+    std::vector<std::string> texts;
+    std::vector<std::string> units = negative_power_forms(a.unit);
+    // Powers without a caret, "kg m2/s": a PDF key's "kg m²/s" as it pastes.
+    if (std::string bare = a.unit; bare.find('^') != std::string::npos) {
+      bare.erase(std::remove(bare.begin(), bare.end(), '^'), bare.end());
+      units.push_back(bare);
     }
-  }
+    for (const auto& unit : units)
+      texts.push_back(detail::value_text(a.value, "        ") + " " + unit);
+    return texts;
+  });
   // rad/s, kg m^2/s, 1/s, rad/s^2, m/s^2 (53 answers today), and kg m^2 without a caret
   REQUIRE(forms >= 3 * 50 + 30);
   // And the power's sign is read: s^-1 is not s^1.
@@ -277,14 +275,7 @@ TEST_CASE("the terminal's notation and a student's variants of it read as wobble
 
 TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist") {
   const Fixture plate("flying-plate");
-  const auto message = [&](const std::string& text) {
-    try {
-      (void)plate.check("I0", text);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
-  };
+  const auto message = [&](const std::string& text) { return error_of(plate, "I0", text); };
   for (const std::string bad : {"(m+R, 2", "m*R^2)", "2 m R", "m*R^^2", "[1, 2"}) {
     INFO(bad);
     const std::string m = message(bad);
@@ -293,14 +284,7 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
   }
   // Factors side by side: the answer with its '*' written in, to paste.
   const Fixture top("heavy-top");
-  const auto top_message = [&](const std::string& text) {
-    try {
-      (void)top.check("p_psi", text);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
-  };
+  const auto top_message = [&](const std::string& text) { return error_of(top, "p_psi", text); };
   REQUIRE_THAT(top_message("M R^2 (psidot0 + 1)/2"),
                Catch::Contains("products need '*' (M*R^2*(psidot0 + 1)/2, not"));
   // A subscript written as LaTeX does, psidot_0 for psidot0, is the problem's symbol.
