@@ -29,6 +29,50 @@ std::string known_symbols(const GiNaC::symtab& symbols) {
   return "; the symbols here are " + list;
 }
 
+// name from `from` on as a product of known names, "mR" -> "m*R", "omegasqrt" -> "omega*sqrt"
+// (a function only last, before its call); "" when there is none. The longest name first at
+// each place, then backtracking; `dead` marks the places already found to have no split, so the
+// search is linear in the places however the names overlap ("a", "aa", ...).
+std::string as_product(const std::string& name, std::size_t from, const GiNaC::symtab& symbols,
+                       const std::set<std::string>& functions, bool call, std::vector<bool>& dead) {
+  if (dead[from]) return "";
+  for (std::size_t length = name.size() - from; length > 0; --length) {
+    const std::string head = name.substr(from, length);
+    const bool last = from + length == name.size();
+    const bool known = last && call ? functions.count(head) != 0 : symbols.count(head) != 0;
+    if (!known) continue;
+    if (last) return head;
+    const std::string tail = as_product(name, from + length, symbols, functions, call, dead);
+    if (!tail.empty()) return head + "*" + tail;
+  }
+  dead[from] = true;
+  return "";
+}
+
+// What the writer of an unknown name probably meant: factors without their '*' ("mR"), or a
+// symbol in the other case ("r" for R). "" if neither.
+std::string probably_meant(const std::string& name, const GiNaC::symtab& symbols,
+                           const std::set<std::string>& functions, bool call) {
+  // Names longer than any a student types run together are not split (nor searched).
+  constexpr std::size_t kLongestSplit = 64;
+  std::vector<bool> dead(name.size() + 1, false);
+  if (const std::string product = name.size() <= kLongestSplit
+                                      ? as_product(name, 0, symbols, functions, call, dead)
+                                      : std::string();
+      product.find('*') != std::string::npos) {
+    return " (products need '*': " + product + ")";
+  }
+  const auto lower = [](std::string t) {
+    for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return t;
+  };
+  for (const auto& [known, value] : symbols) {
+    if (!call && known != name && lower(known) == lower(name))
+      return " (names are case-sensitive: " + known + "?)";
+  }
+  return "";
+}
+
 struct Scanner {
   const std::string& text;
   const std::string& field;
@@ -155,13 +199,18 @@ void check_expression_cost(const std::string& text, const std::string& field,
     while (k < text.size() && (text[k] == ' ' || text[k] == '\t')) ++k;
     if (k < text.size() && text[k] == '(') {
       if (!functions.count(name)) {
+        if (const std::string meant = probably_meant(name, symbols, functions, true);
+            !meant.empty()) {
+          s.fail("unknown function '" + name + "'" + meant);
+        }
         s.fail("unknown function '" + name +
                "' (known: sqrt, sin, cos, tan, asin, acos, atan, atan2, exp, log, sinh, cosh, "
                "tanh, abs, EllipticK, EllipticE)");
       }
     } else if (!symbols.count(name)) {
-      throw ExpressionError(field + ": cannot read expression \"" + shown +
-                            "\": undefined symbol '" + name + "'" + known_symbols(symbols));
+      throw ExpressionError(
+          field + ": cannot read expression \"" + shown + "\": undefined symbol '" + name + "'" +
+          probably_meant(name, symbols, functions, false) + known_symbols(symbols));
     }
     i = j;
   }

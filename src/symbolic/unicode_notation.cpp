@@ -53,7 +53,13 @@ const std::vector<std::pair<std::string, std::string>>& replacements() {
         {"\u00a0", " "},
         {"\u2009", " "},
         {"\u202f", " "},
-        {"µ", "mu"}};
+        {"µ", "mu"},
+        // A fraction in one character, as a phone's keyboard offers it: ½·m·R².
+        {"½", "(1/2)"},
+        {"¼", "(1/4)"},
+        {"¾", "(3/4)"},
+        {"⅓", "(1/3)"},
+        {"⅔", "(2/3)"}};
     for (const auto& [name, letter] : greek_letters()) {
       if (name != "Pi") v.emplace_back(letter, name);  // π reads as pi
     }

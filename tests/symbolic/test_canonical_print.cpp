@@ -82,6 +82,31 @@ TEST_CASE("the parser rejects undefined symbols and syntax errors, naming the fi
   REQUIRE_THROWS_WITH(t.parse("  ", "field"), Catch::Contains("empty"));
 }
 
+TEST_CASE("an unknown name says what it probably meant: factors without '*', another case") {
+  const SymbolTable t = table();
+  REQUIRE_THROWS_WITH(t.parse("mad1^2", "x"), Catch::Contains("products need '*': m*a*d1"));
+  REQUIRE_THROWS_WITH(t.parse("Malpha", "x"), Catch::Contains("products need '*': M*alpha"));
+  REQUIRE_THROWS_WITH(t.parse("acos(alpha)*mcos(alpha)", "x"),
+                      Catch::Contains("unknown function 'mcos' (products need '*': m*cos)"));
+  REQUIRE_THROWS_WITH(t.parse("A*m", "x"), Catch::Contains("names are case-sensitive: a?"));
+  REQUIRE_THROWS_WITH(t.parse("D1*m", "x"), Catch::Contains("names are case-sensitive: d1?"));
+  // No split, no guess: the list of symbols alone.
+  REQUIRE_THROWS_WITH(t.parse("mq", "x"),
+                      !Catch::Contains("products need") && Catch::Contains("the symbols here are"));
+  // Overlapping names ("a", "aa", "aaa") split in time linear in the name, not exponential: 64
+  // letters with no split at the end, and a name too long to be tried at all.
+  SymbolTable overlapping;
+  for (const std::string name : {"a", "aa", "aaa"}) {
+    overlapping.declare(name, name, SymbolSign::positive);
+  }
+  REQUIRE_THROWS_WITH(overlapping.parse(std::string(63, 'a') + "q", "x"),
+                      !Catch::Contains("products need"));
+  REQUIRE_THROWS_WITH(overlapping.parse(std::string(60, 'a'), "x"),
+                      Catch::Contains("products need '*': aaa*aaa*"));
+  REQUIRE_THROWS_WITH(overlapping.parse(std::string(65, 'a'), "x"),
+                      !Catch::Contains("products need"));
+}
+
 TEST_CASE("evaluation is exact to double rounding") {
   const SymbolTable t = table();
   const GiNaC::lst at =
