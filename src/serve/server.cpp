@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -258,7 +259,14 @@ struct Server::Impl {
     const auto e = entry(p, variant);
     const PartKey* part = nullptr;
     for (const auto& k : e->key.parts) {
-      if (k.id == part_id) part = &k;
+      // Without a part, the one that holds the named answer (names are unique in a problem).
+      const bool holds = std::any_of(k.answers.begin(), k.answers.end(),
+                                     [&](const Answer& x) { return x.name == name; });
+      if (part_id.empty() ? !name.empty() && holds : k.id == part_id) part = &k;
+    }
+    if (part == nullptr && part_id.empty()) {
+      return send_error(res, 404,
+                        fmt::format("problem {} has no answer '{}'", p.id, name.substr(0, 40)));
     }
     if (part == nullptr) {
       return send_error(res, 404, fmt::format("problem {} has no part '{}'", p.id,
@@ -269,8 +277,8 @@ struct Server::Impl {
       if (x.name == name || (name.empty() && part->answers.size() == 1)) a = &x;
     }
     if (a == nullptr) {
-      return send_error(res, 404, fmt::format("part {} has no answer '{}'", part_id,
-                                              name.substr(0, 40)));
+      return send_error(res, 404,
+                        fmt::format("part {} has no answer '{}'", part->id, name.substr(0, 40)));
     }
     check::Verdict v;
     try {

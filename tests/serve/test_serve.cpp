@@ -169,6 +169,12 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
                                                     {"answer", doubled}, {"variant", 5}});
   CHECK(twice["correct"] == false);
   CHECK_THAT(twice["feedback"][0].get<std::string>(), Contains("2 times the answer"));
+  // A name alone finds its part, as `wobble check --name` does; an unknown one is a 404.
+  CHECK(post_check(c, "flying-plate",
+                   {{"name", "I0"}, {"answer", right}, {"variant", 5}})["correct"] == true);
+  CHECK_THAT(post_check(c, "flying-plate", {{"name", "I9"}, {"answer", right}}, 404)["error"]
+                 .get<std::string>(),
+             Contains("problem flying-plate has no answer 'I9'"));
   CHECK_THAT(get_json(c, "/api/problems/flying-plate/hint?part=a")["hint"].get<std::string>(),
              !Contains("xx") && Contains("m"));
 }
