@@ -95,7 +95,10 @@ struct Session {
           if (v.correct) break;
           if (++wrong == 2 && !hint_shown) give_hint();
         } catch (const InputError& e) {
-          out << "  cannot read that: " << e.what() << "\n";
+          // The judge names the command line's option; here the prompt is the field.
+          const std::string what = e.what(), option = "--answer: ";
+          out << "  cannot read that: "
+              << (what.rfind(option, 0) == 0 ? what.substr(option.size()) : what) << "\n";
         }
       }
     }
