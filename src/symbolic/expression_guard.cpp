@@ -207,6 +207,15 @@ void check_expression_cost(const std::string& text, const std::string& field,
                "' (known: sqrt, sin, cos, tan, asin, acos, atan, atan2, exp, log, sinh, cosh, "
                "tanh, abs, EllipticK, EllipticE)");
       }
+    } else if (!symbols.count(name) && functions.count(name)) {
+      // "cos alpha", "cos^-1(x)": a function without its call right after it.
+      throw ExpressionError(field + ": cannot read expression \"" + shown + "\": " + name +
+                            " is a function: its argument comes in parentheses right after it (" +
+                            name + "(x), " + name + "(x)^2" +
+                            (name == "sin" || name == "cos" || name == "tan"
+                                 ? "; a" + name + "(x) for the inverse"
+                                 : "") +
+                            ")");
     } else if (!symbols.count(name)) {
       throw ExpressionError(
           field + ": cannot read expression \"" + shown + "\": undefined symbol '" + name + "'" +

@@ -89,6 +89,16 @@ TEST_CASE("an unknown name says what it probably meant: factors without '*', ano
   REQUIRE_THROWS_WITH(t.parse("acos(alpha)*mcos(alpha)", "x"),
                       Catch::Contains("unknown function 'mcos' (products need '*': m*cos)"));
   REQUIRE_THROWS_WITH(t.parse("A*m", "x"), Catch::Contains("names are case-sensitive: a?"));
+  // A function without its call: the form it takes, and the inverse a "^-1" may have meant.
+  REQUIRE_THROWS_WITH(
+      t.parse("cos^(-1)(alpha)", "x"),
+      Catch::Contains("cos is a function: its argument comes in parentheses "
+                      "right after it (cos(x), cos(x)^2; acos(x) for the inverse)"));
+  for (const std::string no_inverse : {"m*sinh", "exp*m", "log^2(m)"}) {
+    INFO(no_inverse);
+    REQUIRE_THROWS_WITH(t.parse(no_inverse, "x"),
+                        Catch::Contains(" is a function") && !Catch::Contains("inverse"));
+  }
   REQUIRE_THROWS_WITH(t.parse("D1*m", "x"), Catch::Contains("names are case-sensitive: d1?"));
   // No split, no guess: the list of symbols alone.
   REQUIRE_THROWS_WITH(t.parse("mq", "x"),
