@@ -38,13 +38,30 @@ std::string shape_words(std::size_t rows, std::size_t cols, bool vector, bool ma
   return "a number";
 }
 
-void check_shape(const Answer& a, const sym::ValueText& v) {
+// "0,0812": digits, one comma, digits, as a decimal comma is written (where a vector has spaces
+// after its commas, or more than two entries).
+bool decimal_comma(const std::string& typed) {
+  const auto comma = typed.find(',');
+  const auto digits = [&](std::size_t from, std::size_t to) {
+    return to > from && std::all_of(typed.begin() + static_cast<std::ptrdiff_t>(from),
+                                    typed.begin() + static_cast<std::ptrdiff_t>(to), [](char c) {
+                                      return std::isdigit(static_cast<unsigned char>(c)) != 0;
+                                    });
+  };
+  if (comma == std::string::npos || typed.find(',', comma + 1) != std::string::npos) return false;
+  const std::size_t end = std::min(typed.find(' ', comma), typed.size());  // a unit may follow
+  return digits(typed.find_first_not_of("-+ "), comma) && digits(comma + 1, end);
+}
+
+void check_shape(const Answer& a, const sym::ValueText& v, const std::string& typed) {
   const bool key_vec = a.value.shape == Value::Shape::vector;
   const bool key_mat = a.value.shape == Value::Shape::matrix;
   if (key_vec != v.is_vector || key_mat != v.is_matrix || a.value.data.size() != v.entries.size()) {
-    throw InputError(fmt::format("{}: {} wants {}, not {}", kField, a.name,
+    const bool comma = !key_vec && !key_mat && decimal_comma(typed);
+    throw InputError(fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
                                  shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
-                                 shape_words(v.rows, v.cols, v.is_vector, v.is_matrix)));
+                                 shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),
+                                 comma ? " (a decimal comma? write the point: 0.5, not 0,5)" : ""));
   }
 }
 
@@ -227,7 +244,7 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
               const Options& options) {
   const Options opt = options_for(a, options);
   const ReadAnswer p = read_answer(text, ctx.table, kField);
-  check_shape(a, p.value);
+  check_shape(a, p.value, text);
   if (p.symbolic) return judge_symbolic(ctx, a, p, opt);
   const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
   double to_key = 1.0;

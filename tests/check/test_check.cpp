@@ -285,6 +285,11 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
     INFO("'" << bad << "'");
     REQUIRE_THROWS_AS(plate.check("t_max", bad), InputError);
   }
+  // A decimal comma reads as a 2-vector: said so where a number is wanted.
+  REQUIRE_THROWS_WITH(plate.check("t_max", "0,16"), Catch::Contains("a decimal comma?"));
+  REQUIRE_THROWS_WITH(plate.check("t_max", "-0,16 s"), Catch::Contains("a decimal comma?"));
+  REQUIRE_THROWS_WITH(plate.check("t_max", "0, 16"),
+                      Catch::Contains("2-vector") && !Catch::Contains("decimal comma"));
 }
 
 TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
