@@ -220,6 +220,11 @@ std::string prepared(const std::string& typed) {
     if (c == '{') c = '[';
     if (c == '}') c = ']';
   }
+  // "$m*R^2/4$": the math delimiters of a LaTeX or Markdown source around plain text.
+  if (const std::string t = trim(s); t.size() >= 2 && t.front() == '$' && t.back() == '$') {
+    const std::size_t first = t.find_first_not_of('$');
+    s = first == std::string::npos ? "" : t.substr(first, t.find_last_not_of('$') + 1 - first);
+  }
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
   for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
     s.replace(at, 2, "^");
@@ -364,6 +369,11 @@ std::string reading_form(const std::string& typed) {
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field) {
   check_bounds(typed, field);
+  if (typed.find('\\') != std::string::npos) {
+    throw InputError(field +
+                     ": LaTeX is not read; type the answer as the text key prints it (m*R^2/4 "
+                     "or m·R²/4, sqrt(2)/2, cos(theta0)^2; not \\frac{m R^2}{4})");
+  }
   const std::string text = underscores_dropped(prepared(typed), table);
   if (text.empty()) {
     throw InputError(field +

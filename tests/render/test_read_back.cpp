@@ -241,6 +241,10 @@ TEST_CASE("the terminal's notation and a student's variants of it read as wobble
       {"7.2x10^-4", "7.2*10^(-4)"},
       {"m*R**2/4", "m*R^2/4"},
       {"¼·m·R²", "(1/4)*m*R^2"},
+      {"$m*R^2/4$", "m*R^2/4"},
+      {"$$ [1, 2, 3] $$", "[1, 2, 3]"},
+      {"$$", ""},
+      {"$", "$"},
       {"½ m", "(1/2) m"},
       {"ω·√(3·cos²(α) + 1)", "omega*sqrt(3*cos(alpha)^2 + 1)"},
       {"sin^2 (theta)+cos^(3)(2*(a+b))", "sin(theta)^2+cos(2*(a+b))^3"},
@@ -295,6 +299,10 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
   REQUIRE_THAT(error_of(top, "p_psi", "MR^2*psidot0/2"), Catch::Contains("products need '*': M*R"));
   REQUIRE_THAT(error_of(top, "p_psi", "m*R^2*psidot0/2"), Catch::Contains("case-sensitive: M?"));
   REQUIRE(top.check("p_psi", "½·M·R²·ψ̇0").correct);
+  // LaTeX is refused as such, with the plain form to type.
+  REQUIRE_THAT(error_of(top, "p_psi", "\\frac{M R^2 \\dot\\psi_0}{2}"),
+               Catch::StartsWith("--answer: LaTeX is not read; type the answer as the text key "
+                                 "prints it"));
   REQUIRE_FALSE(top.check("p_psi", "M*R^2*psidot_0/3").correct);
   REQUIRE_THAT(top_message("M*R^2*psidot_1/2"), Catch::Contains("undefined symbol 'psidot_1'"));
   // An undefined symbol names the ones that exist, with their letters.
