@@ -240,6 +240,11 @@ Options options_for(const Answer& a, const Options& options) {
   return opt;
 }
 
+std::string without_option(const std::string& message) {
+  const std::string prefix = kField + ": ";
+  return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+}
+
 Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
               const Options& options) {
   const Options opt = options_for(a, options);

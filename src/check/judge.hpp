@@ -66,4 +66,8 @@ Options options_for(const Answer& a, const Options& options);
 Verdict judge(const Context& ctx, const Answer& expected, const std::string& text,
               const Options& opt);
 
+/// A refusal from judge() without the command-line option it names ("--answer: "), for the
+/// surfaces where the student typed no option (a submission file, the worksheet, the browser).
+std::string without_option(const std::string& message);
+
 }  // namespace wobble::check

@@ -50,12 +50,6 @@ std::vector<Line> read_lines(const std::string& text) {
   }
   return out;
 }
-
-// An InputError's message without the option it names: the student typed no option.
-std::string reason(const std::string& message) {
-  const std::string field = "--answer: ";
-  return message.rfind(field, 0) == 0 ? message.substr(field.size()) : message;
-}
 }  // namespace
 
 bool SubmissionResult::all_correct() const {
@@ -104,7 +98,7 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
         try {
           s.verdict = judge(ctx, a, s.typed, opt);
         } catch (const InputError& e) {
-          s.verdict = {false, "incorrect: " + a.name + ": " + reason(e.what()), {}};
+          s.verdict = {false, "incorrect: " + a.name + ": " + without_option(e.what()), {}};
         }
       }
       if (it != given.end()) given.erase(it);

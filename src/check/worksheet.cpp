@@ -95,10 +95,7 @@ struct Session {
           if (v.correct) break;
           if (++wrong == 2 && !hint_shown) give_hint();
         } catch (const InputError& e) {
-          // The judge names the command line's option; here the prompt is the field.
-          const std::string what = e.what(), option = "--answer: ";
-          out << "  cannot read that: "
-              << (what.rfind(option, 0) == 0 ? what.substr(option.size()) : what) << "\n";
+          out << "  cannot read that: " << without_option(e.what()) << "\n";
         }
       }
     }

@@ -1,7 +1,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "check/judge.hpp"
@@ -111,16 +110,7 @@ int run_check(const CheckOptions& opt) {
   const sym::Values values =
       parameter_values(problem, with_variant(problem, opt.variant, opt.sets));
   const Key key = solve(problem, values);
-  const PartKey* part = nullptr;
-  std::string parts;
-  for (const auto& p : key.parts) {
-    // Without PART, the part that holds the named answer: names are unique in a problem.
-    const bool holds = std::any_of(p.answers.begin(), p.answers.end(),
-                                   [&](const Answer& a) { return a.name == opt.name; }) ||
-                       std::find(p.absent.begin(), p.absent.end(), opt.name) != p.absent.end();
-    if (opt.part.empty() ? holds : p.id == opt.part) part = &p;
-    parts += (parts.empty() ? "" : ", ") + p.id;
-  }
+  const PartKey* part = find_part(key.parts, opt.part, opt.name);
   if (part == nullptr && opt.part.empty()) {
     std::vector<std::string> names;
     for (const auto& p : key.parts) {
@@ -130,8 +120,10 @@ int run_check(const CheckOptions& opt) {
                                  opt.name, fmt::join(names, ", ")));
   }
   if (part == nullptr) {
-    throw InputError(
-        fmt::format("part: problem {} has no part '{}' (parts: {})", problem.id, opt.part, parts));
+    std::vector<std::string> parts;
+    for (const auto& p : key.parts) parts.push_back(p.id);
+    throw InputError(fmt::format("part: problem {} has no part '{}' (parts: {})", problem.id,
+                                 opt.part, fmt::join(parts, ", ")));
   }
   if (part->answers.empty()) {
     throw InputError(

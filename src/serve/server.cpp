@@ -1,14 +1,12 @@
 #include "serve/server.hpp"
 
 #include <fmt/format.h>
+#include <sys/socket.h>
 
-#include <algorithm>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <random>
-
-#include <sys/socket.h>
 
 #include "check/judge.hpp"
 #include "core/input_error.hpp"
@@ -257,13 +255,7 @@ struct Server::Impl {
     }
     std::lock_guard lock(work);
     const auto e = entry(p, variant);
-    const PartKey* part = nullptr;
-    for (const auto& k : e->key.parts) {
-      // Without a part, the one that holds the named answer (names are unique in a problem).
-      const bool holds = std::any_of(k.answers.begin(), k.answers.end(),
-                                     [&](const Answer& x) { return x.name == name; });
-      if (part_id.empty() ? !name.empty() && holds : k.id == part_id) part = &k;
-    }
+    const PartKey* part = find_part(e->key.parts, part_id, name);
     if (part == nullptr && part_id.empty()) {
       return send_error(res, 404,
                         fmt::format("problem {} has no answer '{}'", p.id, name.substr(0, 40)));
@@ -285,9 +277,8 @@ struct Server::Impl {
       v = check::judge({e->key, e->table, e->values}, *a, answer, {});
     } catch (const InputError& error) {
       // The judge names the command line's option; on the page the answer box is the field.
-      const std::string field = "--answer: ";
-      const std::string what = error.what();
-      throw InputError(what.rfind(field, 0) == 0 ? "answer: " + what.substr(field.size()) : what);
+      const std::string what = error.what(), bare = check::without_option(what);
+      throw InputError(bare.size() != what.size() ? "answer: " + bare : what);
     }
     send_json(res, json{{"correct", v.correct}, {"verdict", v.line}, {"feedback", v.feedback}}.dump());
   }

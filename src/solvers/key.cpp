@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace wobble {
@@ -10,6 +11,17 @@ double Value::scale() const {
   double s = 0.0;
   for (double x : data) s = std::max(s, std::abs(x));
   return s;
+}
+
+const PartKey* find_part(const std::vector<PartKey>& parts, const std::string& part_id,
+                         const std::string& name) {
+  for (const auto& p : parts) {
+    const bool holds = std::any_of(p.answers.begin(), p.answers.end(),
+                                   [&](const Answer& a) { return a.name == name; }) ||
+                       std::find(p.absent.begin(), p.absent.end(), name) != p.absent.end();
+    if (part_id.empty() ? holds : p.id == part_id) return &p;
+  }
+  return nullptr;
 }
 
 const char* kind_name(AnswerKind k) {

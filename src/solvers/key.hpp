@@ -115,6 +115,12 @@ struct PartKey {
   std::vector<std::string> absent;
 };
 
+/// The part asked for: the one with id `part_id`, or, without one, the part that asks for the
+/// answer `name` (among its answers or those absent at these values; names are unique in a
+/// problem). nullptr if there is none.
+const PartKey* find_part(const std::vector<PartKey>& parts, const std::string& part_id,
+                         const std::string& name);
+
 /// Appends `steps` to the part, skipping any whose text the part already has (two answers of a
 /// part often share a derivation).
 void append_steps(PartKey& part, const std::vector<Step>& steps);
