@@ -5,6 +5,7 @@
 #include <tuple>
 #include <vector>
 
+#include "check/latex_answer.hpp"
 #include "check/text.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -369,12 +370,9 @@ std::string reading_form(const std::string& typed) {
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field) {
   check_bounds(typed, field);
-  if (typed.find('\\') != std::string::npos) {
-    throw InputError(field +
-                     ": LaTeX is not read; type the answer as the text key prints it (m*R^2/4 "
-                     "or m·R²/4, sqrt(2)/2, cos(theta0)^2; not \\frac{m R^2}{4})");
-  }
-  const std::string text = underscores_dropped(prepared(typed), table);
+  // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
+  const std::string source = looks_like_latex(typed) ? latex_as_text(typed, table, field) : typed;
+  const std::string text = underscores_dropped(prepared(source), table);
   if (text.empty()) {
     throw InputError(field +
                      ": empty; type a number (with a unit if you like), a vector [x, y, "

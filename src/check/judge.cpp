@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -11,10 +12,12 @@
 #include "check/answer_reading.hpp"
 #include "check/axes_judge.hpp"
 #include "check/diagnosis.hpp"
+#include "check/latex_answer.hpp"
 #include "check/text.hpp"
 #include "check/units.hpp"
 #include "core/inertia.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/unicode_notation.hpp"
 #include "symbolic/value_text.hpp"
 
 namespace wobble::check {
@@ -245,8 +248,50 @@ std::string without_option(const std::string& message) {
   return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
 }
 
-Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
-              const Options& options) {
+namespace {
+// The letters and digits of a name however it is written: "L_{0,\mathrm{body}}", "L0_body" and
+// "L₀_body" are all "L0body".
+std::string name_spelling(const std::string& written) {
+  const std::string s = sym::to_ascii(written);
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '\\') {  // \mathrm, \text: a wrapper, not part of the name
+      std::size_t j = i + 1;
+      while (j < s.size() && std::isalpha(static_cast<unsigned char>(s[j]))) ++j;
+      const std::string cmd = s.substr(i + 1, j - i - 1);
+      if (cmd == "mathrm" || cmd == "text" || cmd == "rm" || cmd == "textrm") i = j - 1;
+      continue;
+    }
+    if (std::isalnum(static_cast<unsigned char>(s[i]))) out += s[i];
+  }
+  return out;
+}
+
+// The sides of an answer as a key line shows it, "I0 = m·R²/4 = 0.00072 kg m²": split at each
+// '=' outside brackets, the answer's own name (or nothing) on the left dropped.
+std::vector<std::string> sides(const std::string& text, const std::string& name) {
+  std::vector<std::string> out;
+  int depth = 0;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '(' || c == '[' || c == '{') ++depth;
+    if (c == ')' || c == ']' || c == '}') --depth;
+    if (c == '=' && depth == 0) {
+      out.push_back(text.substr(start, i - start));
+      start = i + 1;
+    }
+  }
+  out.push_back(text.substr(start));
+  // "       = 0.00072 kg m²": the second line of a text key's answer alone.
+  const bool dropped =
+      trim(out.front()).empty() || name_spelling(out.front()) == name_spelling(name);
+  if (out.size() > 1 && dropped) out.erase(out.begin());
+  return out;
+}
+
+Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
+                  const Options& options) {
   const Options opt = options_for(a, options);
   const ReadAnswer p = read_answer(text, ctx.table, kField);
   check_shape(a, p.value, text);
@@ -280,6 +325,26 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
     return {true, "correct: " + a.name + note, {}};
   }
   return {false, "incorrect: " + a.name, diagnose(j, key_unit, compare, a.value.data)};
+}
+
+}  // namespace
+
+Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
+              const Options& options) {
+  // "$$ m R^2/4 = 0.00072 $$": the delimiters are around both sides.
+  const auto parts = sides(without_math_delimiters(text), a.name);
+  if (parts.size() == 1) return judge_one(ctx, a, parts[0], options);
+  // "m·R²/4 = 0.00072 kg m²": every side is judged, and must be right.
+  Verdict first;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    Verdict v = judge_one(ctx, a, parts[k], options);
+    if (!v.correct) {
+      v.feedback.insert(v.feedback.begin(), "the side \"" + trim(parts[k]) + "\" of your '='");
+      return v;
+    }
+    if (k == 0) first = std::move(v);
+  }
+  return first;
 }
 
 }  // namespace wobble::check

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -120,6 +121,90 @@ TEST_CASE("every printed form of every answer of every problem reads back as cor
     return texts;
   });
   REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to six forms
+}
+
+// The LaTeX a key prints for an answer: the closed form, the value with its unit as the LaTeX key
+// sets it, the Markdown key's whole display "closed form = value" (what the browser's copy of
+// typeset math gives), and the closed form after the answer's own name.
+std::vector<std::string> latex_forms(const Answer& a) {
+  const std::string value = value_latex(a.value) + detail::unit_latex(a.unit);
+  std::vector<std::string> texts{value, "$" + value + "$", a.latex};
+  if (!a.symbolic.empty()) {
+    texts.push_back("$$\n" + a.latex + " = " + value + "\n$$");
+    if (const auto name = detail::name_latex(a.name)) texts.push_back(*name + " = " + a.latex);
+  }
+  return texts;
+}
+
+// The key's LaTeX as a student may type it instead: \dfrac, plain brackets for \left( \right),
+// braces around each subscript and marked letter ("\dot{\psi}_{0}").
+std::string respelled(const std::string& latex) {
+  std::string out;
+  for (std::size_t i = 0; i < latex.size(); ++i) {
+    if (latex.compare(i, 6, "\\frac") == 0) {
+      out += "\\dfrac";
+      i += 4;
+    } else if (latex.compare(i, 6, "\\left(") == 0 || latex.compare(i, 7, "\\right)") == 0) {
+      out += latex[i + 1] == 'l' ? "(" : ")";
+      i += latex[i + 1] == 'l' ? 5 : 6;
+    } else if (latex.compare(i, 4, "\\dot") == 0 && i + 4 < latex.size() && latex[i + 4] == '\\') {
+      std::size_t end = i + 5;
+      while (end < latex.size() && std::isalpha(static_cast<unsigned char>(latex[end]))) ++end;
+      out += "\\dot{" + latex.substr(i + 4, end - i - 4) + "}";
+      i = end - 1;
+    } else if (latex[i] == '_' && i + 1 < latex.size() && latex[i + 1] != '{') {
+      out += "_{" + latex.substr(i + 1, 1) + "}";
+      ++i;
+    } else {
+      out += latex[i];
+    }
+  }
+  return out;
+}
+
+TEST_CASE("every LaTeX form of every answer of every problem reads back as correct") {
+  const int forms = forms_judged_right(latex_forms);
+  REQUIRE(forms > 3 * 100);  // over 100 answers, each in three to five forms
+  const int respelt = forms_judged_right([](const Answer& a) {
+    return a.symbolic.empty() ? std::vector<std::string>{}
+                              : std::vector<std::string>{respelled(a.latex)};
+  });
+  REQUIRE(respelt > 50);
+}
+
+TEST_CASE("every closed form in LaTeX, doubled, is judged wrong: the LaTeX is read, not waved by") {
+  int judged = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.symbolic.empty() || a.value.shape != Value::Shape::scalar || a.value.data[0] == 0.0)
+          continue;
+        const std::string doubled = "2\\left(" + a.latex + "\\right)";
+        INFO(p.id << " " << a.name << ": " << doubled);
+        REQUIRE_FALSE(f.check(a.name, doubled).correct);
+        ++judged;
+      }
+    }
+  }
+  REQUIRE(judged > 40);
+}
+
+TEST_CASE("a key line with '=' is judged side by side, the answer's own name dropped") {
+  const Fixture plate("flying-plate");
+  const Answer& i0 = plate.answer("I0");
+  // The text key's two lines as copied together.
+  const std::string line =
+      "I0 = " + sym::to_unicode(i0.symbolic) + "\n       = " + printed_value(i0);
+  REQUIRE(plate.check("I0", line).correct);
+  REQUIRE(plate.check("I0", "       = " + printed_value(i0)).correct);  // its second line alone
+  // Another answer's name on the left is no name to drop: it is read, and I is no symbol here.
+  REQUIRE_THROWS_AS(plate.check("I0", "I = " + i0.symbolic), InputError);
+  // Every side must be right; the wrong one is named.
+  const Verdict v = plate.check("I0", i0.symbolic + " = " + format_number(i0.value.data[0] * 1.05));
+  REQUIRE_FALSE(v.correct);
+  REQUIRE_THAT(v.feedback.at(0),
+               Catch::StartsWith("the side \"" + format_number(i0.value.data[0] * 1.05)));
 }
 
 // A unit with a denominator, "kg m^2/s", as a student may write it instead: with negative powers,
@@ -299,10 +384,11 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
   REQUIRE_THAT(error_of(top, "p_psi", "MR^2*psidot0/2"), Catch::Contains("products need '*': M*R"));
   REQUIRE_THAT(error_of(top, "p_psi", "m*R^2*psidot0/2"), Catch::Contains("case-sensitive: M?"));
   REQUIRE(top.check("p_psi", "½·M·R²·ψ̇0").correct);
-  // LaTeX is refused as such, with the plain form to type.
-  REQUIRE_THAT(error_of(top, "p_psi", "\\frac{M R^2 \\dot\\psi_0}{2}"),
-               Catch::StartsWith("--answer: LaTeX is not read; type the answer as the text key "
-                                 "prints it"));
+  // LaTeX is read as LaTeX sets it: factors side by side, the symbol as the file spells it.
+  REQUIRE(top.check("p_psi", "\\frac{M R^2 \\dot\\psi_0}{2}").correct);
+  REQUIRE_THAT(
+      error_of(top, "p_psi", "\\frac{M R^2 \\dot\\phi_1}{2}"),
+      Catch::StartsWith("--answer: \\dot \\phi_{1} is not one of this problem's symbols ("));
   REQUIRE_FALSE(top.check("p_psi", "M*R^2*psidot_0/3").correct);
   REQUIRE_THAT(top_message("M*R^2*psidot_1/2"), Catch::Contains("undefined symbol 'psidot_1'"));
   // An undefined symbol names the ones that exist, with their letters.

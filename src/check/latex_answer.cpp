@@ -1,0 +1,871 @@
+#include "check/latex_answer.hpp"
+
+#include <cctype>
+#include <map>
+#include <optional>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "check/text.hpp"
+#include "check/units.hpp"
+#include "core/input_error.hpp"
+#include "symbolic/unicode_notation.hpp"
+
+namespace wobble::check {
+namespace {
+
+bool is_letter(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) != 0;
+}
+bool is_digit(char c) {
+  return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
+
+// Commands that draw a mark over a letter: the symbol is the letter with the mark (psidot for
+// \dot\psi), whatever the braces.
+const std::set<std::string>& accents() {
+  static const std::set<std::string> s{"dot",      "ddot",  "hat",     "bar",
+                                       "vec",      "tilde", "mathbf",  "boldsymbol",
+                                       "overline", "check", "widehat", "widetilde"};
+  return s;
+}
+
+const std::set<std::string>& greek() {
+  static const std::set<std::string> s{
+      "alpha", "beta",     "gamma",   "delta", "epsilon", "varepsilon", "zeta",   "eta",
+      "theta", "vartheta", "iota",    "kappa", "lambda",  "mu",         "nu",     "xi",
+      "pi",    "rho",      "varrho",  "sigma", "tau",     "upsilon",    "phi",    "varphi",
+      "chi",   "psi",      "omega",   "Gamma", "Delta",   "Theta",      "Lambda", "Xi",
+      "Pi",    "Sigma",    "Upsilon", "Phi",   "Psi",     "Omega"};
+  return s;
+}
+
+// The letter a Greek command names in ASCII: \varphi is phi.
+std::string greek_name(const std::string& command) {
+  return command.rfind("var", 0) == 0 ? command.substr(3) : command;
+}
+
+// LaTeX's function commands and the names the expression reader knows them by.
+const std::map<std::string, std::string>& function_commands() {
+  static const std::map<std::string, std::string> m{
+      {"sin", "sin"},     {"cos", "cos"},     {"tan", "tan"},   {"arcsin", "asin"},
+      {"arccos", "acos"}, {"arctan", "atan"}, {"sinh", "sinh"}, {"cosh", "cosh"},
+      {"tanh", "tanh"},   {"exp", "exp"},     {"ln", "log"},    {"log", "log"}};
+  return m;
+}
+
+// Function names typed as letters (inside \operatorname too).
+const std::set<std::string>& function_names() {
+  static const std::set<std::string> s{"sin",   "cos",  "tan",       "asin",     "acos", "atan",
+                                       "atan2", "sinh", "cosh",      "tanh",     "exp",  "log",
+                                       "sqrt",  "abs",  "EllipticK", "EllipticE"};
+  return s;
+}
+
+const std::set<std::string>& spacing() {
+  static const std::set<std::string> s{
+      ",",         ";",         ":",        "!",       " ",    "quad", "qquad", "displaystyle",
+      "textstyle", "thinspace", "medspace", "enspace", "hline"};
+  return s;
+}
+
+const std::set<std::string>& text_wrappers() {
+  static const std::set<std::string> s{"mathrm", "text", "textrm", "mathit", "mathsf", "rm"};
+  return s;
+}
+
+const std::set<std::string>& sizes() {
+  static const std::set<std::string> s{"big",  "Big",  "bigg",  "Bigg",  "bigl",  "bigr",
+                                       "Bigl", "Bigr", "biggl", "biggr", "Biggl", "Biggr"};
+  return s;
+}
+
+// A symbol as LaTeX draws it: marks over it, the letter (or \alpha), the subscript. Two
+// spellings of one symbol ("\dot\psi_0", "\dot{\psi_{0}}") have the same key.
+struct Atom {
+  std::string accents;  // "dot:" per mark
+  std::string base;     // "R", "\alpha"
+  std::string sub;      // "0", "cm", "1,2"; braces, spaces and \mathrm dropped
+  std::string key() const { return accents + base + "_" + sub; }
+};
+
+// What an expression read so far is: its text and what the answer reader must know of it.
+struct Piece {
+  std::string text;
+  bool symbolic = false;  // has one of the problem's symbols
+  bool matrix = false;    // is one pmatrix, nothing else
+};
+
+class Reader {
+ public:
+  Reader(std::string s, const sym::SymbolTable& table, std::string field)
+      : s_(std::move(s)), table_(table), field_(std::move(field)) {}
+
+  std::string read() {
+    index_symbols();
+    Piece p = expr(0);
+    if (i_ < s_.size()) fail_stop();
+    return unit_.empty() ? p.text : p.text + " " + unit_;
+  }
+
+  // The key of a symbol's LaTeX as the file spells it, if it is one atom.
+  std::optional<std::string> atom_key_of_whole() {
+    try {
+      Atom a = atom();
+      skip_spaces();
+      if (i_ == s_.size()) return a.key();
+    } catch (const InputError&) {
+    }
+    return std::nullopt;
+  }
+
+ private:
+  const std::string s_;
+  const sym::SymbolTable& table_;
+  const std::string field_;
+  std::size_t i_ = 0;
+  int bars_ = 0;  // plain |..| open around here
+  std::map<std::string, std::string> by_key_;
+  std::string unit_;
+
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(field_ + ": " + what); }
+
+  void index_symbols() {
+    for (const auto& name : table_.names()) {
+      Reader r(table_.latex_of(name), table_, field_);
+      if (const auto key = r.atom_key_of_whole()) by_key_.emplace(*key, name);
+    }
+  }
+
+  bool at(char c) const { return i_ < s_.size() && s_[i_] == c; }
+  bool at_end() const { return i_ >= s_.size(); }
+
+  void skip_spaces() {
+    while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '~')) ++i_;
+  }
+
+  // The command at i (a backslash, then letters or one other character), without advancing.
+  std::string command_at(std::size_t i) const {
+    if (i >= s_.size() || s_[i] != '\\') return "";
+    std::size_t j = i + 1;
+    if (j < s_.size() && !is_letter(s_[j])) return s_.substr(j, 1);
+    while (j < s_.size() && is_letter(s_[j])) ++j;
+    return s_.substr(i + 1, j - i - 1);
+  }
+  std::string take_command() {
+    const std::string c = command_at(i_);
+    i_ += 1 + c.size();
+    return c;
+  }
+  bool at_command(const std::string& name) const { return command_at(i_) == name && !name.empty(); }
+
+  // Past a \bigl or \Bigr before a delimiter.
+  void skip_size() {
+    if (sizes().count(command_at(i_))) {
+      take_command();
+      skip_spaces();
+    }
+  }
+
+  bool stops_here() const {
+    if (at_end()) return true;
+    const char c = s_[i_];
+    if (c == '}' || c == ')' || c == ']' || c == '&') return true;
+    if (c == '|') return bars_ > 0;
+    if (c != '\\') return false;
+    const std::string cmd = command_at(i_);
+    if (cmd == "\\" || cmd == "right" || cmd == "end" || cmd == "rvert" || cmd == "}") return true;
+    if (sizes().count(cmd)) {
+      std::size_t j = i_ + 1 + cmd.size();
+      while (j < s_.size() && s_[j] == ' ') ++j;
+      return j < s_.size() && (s_[j] == ')' || s_[j] == ']' || (s_[j] == '|' && bars_ > 0));
+    }
+    return false;
+  }
+
+  [[noreturn]] void fail_stop() const {
+    const char c = s_[i_];
+    if (c == '}') fail("a '}' without its '{'");
+    if (c == ')' || c == ']') fail(std::string("a '") + c + "' without its opening bracket");
+    if (c == '&') fail("'&' outside a matrix (\\begin{pmatrix} .. \\end{pmatrix})");
+    if (command_at(i_) == "\\") fail("'\\\\' (a new row) outside a matrix");
+    fail("\\" + command_at(i_) + " without what opens it");
+  }
+
+  void expect(char c) {
+    skip_spaces();
+    skip_size();
+    if (!at(c)) fail(std::string("'") + c + "' missing");
+    ++i_;
+  }
+
+  // ---- expressions -----------------------------------------------------------------------
+
+  struct Out {
+    Piece p;
+    bool factor_last = false;
+    int factors = 0;
+    void factor(const Piece& f) {
+      if (factor_last) p.text += '*';
+      p.text += f.text;
+      p.symbolic = p.symbolic || f.symbolic;
+      p.matrix = factors == 0 && f.matrix;
+      if (factors > 0) p.matrix = false;
+      factor_last = true;
+      ++factors;
+    }
+    void op(const std::string& o) {
+      p.text += o;
+      p.matrix = false;
+      factor_last = false;
+    }
+  };
+
+  Piece expr(int depth) {
+    if (depth > sym::kMaxExpressionDepth) {
+      fail("nested deeper than " + std::to_string(sym::kMaxExpressionDepth) + " levels");
+    }
+    Out out;
+    while (!at_end() && unit_.empty()) {
+      const char c = s_[i_];
+      if (c == ' ' || c == '~') {
+        if (!unit_here(out, depth)) ++i_;
+        continue;
+      }
+      if (stops_here()) break;
+      if (c == '\\') {
+        command(out, depth);
+      } else if (is_digit(c) || c == '.') {
+        out.factor({number()});
+      } else if (is_letter(c)) {
+        letters(out, depth);
+      } else if (c == '{' || c == '(' || c == '[' || c == '|') {
+        out.factor(delimited(depth));
+      } else if (c == '^') {
+        power(out, depth);
+      } else if (c == '_') {
+        fail("a subscript '_' belongs to a symbol (\\omega_3, I_{1})");
+      } else if (c == '+' || c == '-' || c == '*' || c == '/' || c == '=') {
+        out.op(std::string(1, c));
+        ++i_;
+      } else if (c == ',') {
+        out.op(", ");
+        ++i_;
+      } else {
+        fail(std::string("cannot read '") + c + "' in LaTeX");
+      }
+    }
+    return out.p;
+  }
+
+  // Digits, a decimal point, an exponent "e-05" only where digits follow it.
+  std::string number() {
+    const std::size_t start = i_;
+    while (!at_end() && (is_digit(s_[i_]) || s_[i_] == '.')) ++i_;
+    if (!at_end() && (s_[i_] == 'e' || s_[i_] == 'E')) {
+      std::size_t j = i_ + 1;
+      if (j < s_.size() && (s_[j] == '+' || s_[j] == '-')) ++j;
+      if (j < s_.size() && is_digit(s_[j])) {
+        while (j < s_.size() && is_digit(s_[j])) ++j;
+        i_ = j;
+      }
+    }
+    return s_.substr(start, i_ - start);
+  }
+
+  // The rest of the input as a unit, where the value so far is a plain number: "\,\mathrm{kg}".
+  // Only near the end (a unit is short), so that trying it at every space stays linear.
+  // `written_as_unit` (\mathrm, \text, ^\circ): even after symbols, so that the answer reader
+  // says to drop it; else "M g" is a product.
+  bool unit_here(Out& out, int depth, bool written_as_unit = false) {
+    if (depth > 0 || out.factors == 0 || !out.factor_last) return false;
+    if (out.p.symbolic && !written_as_unit) return false;
+    if (s_.size() - i_ > 160) return false;
+    const std::optional<std::string> unit = unit_text(s_.substr(i_));
+    if (!unit || unit->empty() || !is_unit(*unit)) return false;
+    unit_ = *unit;
+    i_ = s_.size();
+    return true;
+  }
+
+  // "\,\mathrm{kg\,m^{2}/s}" -> "kg m^2/s", "^\circ" -> "deg"; nullopt for what no unit has.
+  static std::optional<std::string> unit_text(const std::string& raw) {
+    std::string out;
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      const char c = raw[i];
+      if (c == '{' || c == '}') continue;
+      if (c == '~') {
+        out += ' ';
+        continue;
+      }
+      if (c == '^') {
+        std::size_t j = i + 1;
+        if (j < raw.size() && raw[j] == '{') ++j;
+        if (raw.compare(j, 5, "\\circ") == 0) {
+          out += " deg";
+          i = j + 4;
+          continue;
+        }
+        out += '^';
+        continue;
+      }
+      if (c != '\\') {
+        out += c;
+        continue;
+      }
+      std::size_t j = i + 1;
+      if (j < raw.size() && !is_letter(raw[j])) {
+        if (!spacing().count(raw.substr(j, 1))) return std::nullopt;
+        out += ' ';
+        i = j;
+        continue;
+      }
+      while (j < raw.size() && is_letter(raw[j])) ++j;
+      const std::string cmd = raw.substr(i + 1, j - i - 1);
+      if (cmd == "cdot") {
+        // Between units ("kg \cdot m^2"), never before the first: "2 \cdot m" is a product.
+        if (trim(out).empty()) return std::nullopt;
+        out += ' ';
+      } else if (cmd == "circ") {
+        out += " deg";
+      } else if (spacing().count(cmd)) {
+        out += ' ';
+      } else if (!text_wrappers().count(cmd)) {
+        return std::nullopt;
+      }
+      i = j - 1;
+    }
+    // Collapse spaces: "kg  m^2" -> "kg m^2".
+    std::string collapsed;
+    for (const char c : trim(out)) {
+      if (c == ' ' && !collapsed.empty() && collapsed.back() == ' ') continue;
+      collapsed += c;
+    }
+    // A unit begins with its name, or is 1/s: "* m" and "/ 2" are no unit.
+    if (collapsed.empty() || !(is_letter(collapsed[0]) || collapsed.rfind("1/", 0) == 0))
+      return std::nullopt;
+    return collapsed;
+  }
+
+  // A group in brackets: {..} (\frac's arguments, a grouping), (..), [..], |..| and \left..\right.
+  Piece delimited(int depth) {
+    skip_size();
+    if (at_command("left")) return left_right(depth);
+    if (at_command("lvert") || at_command("vert")) {
+      take_command();
+      ++bars_;
+      Piece inner = expr(depth + 1);
+      --bars_;
+      skip_size();
+      if (!at_command("rvert") && !at_command("vert") && !at('|')) fail("'\\rvert' missing");
+      if (at('|'))
+        ++i_;
+      else
+        take_command();
+      return {"abs(" + inner.text + ")", inner.symbolic, false};
+    }
+    const char open = s_[i_++];
+    if (open == '|') {
+      ++bars_;
+      Piece inner = expr(depth + 1);
+      --bars_;
+      expect('|');
+      return {"abs(" + inner.text + ")", inner.symbolic, false};
+    }
+    Piece inner = expr(depth + 1);
+    const char close = open == '{' ? '}' : open == '(' ? ')' : ']';
+    expect(close);
+    if (inner.matrix) return inner;
+    if (open == '[') return {"[" + inner.text + "]", inner.symbolic, false};
+    return {"(" + inner.text + ")", inner.symbolic, false};
+  }
+
+  Piece left_right(int depth) {
+    take_command();  // \left
+    skip_spaces();
+    std::string open;
+    if (at('\\')) {
+      open = "\\" + take_command();  // \{ \lvert \langle
+    } else if (!at_end()) {
+      open = std::string(1, s_[i_++]);
+    }
+    const bool bar = open == "|" || open == "\\lvert" || open == "\\vert";
+    if (open != "(" && open != "[" && open != "." && open != "\\{" && !bar) {
+      fail("\\left" + open + " is not read (\\left( \\left[ \\left| \\left. are)");
+    }
+    if (bar) ++bars_;
+    Piece inner = expr(depth + 1);
+    if (bar) --bars_;
+    skip_spaces();
+    if (!at_command("right")) fail("\\left" + open + " without its \\right");
+    take_command();
+    skip_spaces();
+    if (at('\\')) {
+      take_command();
+    } else if (!at_end()) {
+      ++i_;
+    }
+    if (bar) return {"abs(" + inner.text + ")", inner.symbolic, false};
+    if (inner.matrix) return inner;
+    if (open == "[") return {"[" + inner.text + "]", inner.symbolic, false};
+    return {"(" + inner.text + ")", inner.symbolic, false};
+  }
+
+  // An argument of \frac, \sqrt or ^: a braced group, or one character or command.
+  Piece argument(int depth) {
+    skip_spaces();
+    if (at('{')) {
+      ++i_;
+      Piece inner = expr(depth + 1);
+      expect('}');
+      return {"(" + inner.text + ")", inner.symbolic, inner.matrix};
+    }
+    if (at_end()) fail("an argument is missing at the end");
+    if (is_digit(s_[i_])) return {std::string(1, s_[i_++])};
+    Out out;
+    if (is_letter(s_[i_])) {
+      out.factor(symbol_piece(atom_from_letter()));
+    } else if (at('\\')) {
+      command(out, depth + 1);
+    } else {
+      fail(std::string("cannot read '") + s_[i_] + "' as an argument");
+    }
+    return {"(" + out.p.text + ")", out.p.symbolic, false};
+  }
+
+  void power(Out& out, int depth) {
+    // "15^\circ": degrees, a unit.
+    {
+      std::size_t j = i_ + 1;
+      if (j < s_.size() && s_[j] == '{') ++j;
+      if (s_.compare(j, 5, "\\circ") == 0) {
+        if (!unit_here(out, depth, true)) fail("'^\\circ' (degrees) belongs after a number");
+        return;
+      }
+    }
+    ++i_;
+    if (!out.factor_last) fail("a power '^' needs something before it");
+    const Piece p = argument(depth);
+    out.p.text += "^" + p.text;
+    out.p.symbolic = out.p.symbolic || p.symbolic;
+  }
+
+  // ---- commands ----------------------------------------------------------------------------
+
+  void command(Out& out, int depth) {
+    const std::string cmd = command_at(i_);
+    if (spacing().count(cmd)) {
+      if (unit_here(out, depth)) return;
+      take_command();
+      return;
+    }
+    if (text_wrappers().count(cmd) && unit_here(out, depth, true)) return;
+    if (sizes().count(cmd) || cmd == "left" || cmd == "lvert" || cmd == "vert") {
+      std::size_t j = i_ + 1 + cmd.size();
+      while (j < s_.size() && s_[j] == ' ') ++j;
+      if (sizes().count(cmd) && j < s_.size() && s_[j] == '/') {  // \big/
+        i_ = j + 1;
+        out.op("/");
+        return;
+      }
+      out.factor(delimited(depth));
+      return;
+    }
+    if (cmd == "cdot" || cmd == "times" || cmd == "ast") {
+      take_command();
+      out.op("*");
+      return;
+    }
+    if (cmd == "div") {
+      take_command();
+      out.op("/");
+      return;
+    }
+    if (cmd == "frac" || cmd == "dfrac" || cmd == "tfrac" || cmd == "cfrac") {
+      take_command();
+      const Piece num = argument(depth), den = argument(depth);
+      out.factor({"(" + num.text + "/" + den.text + ")", num.symbolic || den.symbolic, false});
+      return;
+    }
+    if (cmd == "sqrt") {
+      take_command();
+      skip_spaces();
+      std::optional<Piece> index;
+      if (at('[')) {
+        ++i_;
+        index = expr(depth + 1);
+        expect(']');
+      }
+      const Piece x = argument(depth);
+      const bool sym = x.symbolic || (index && index->symbolic);
+      out.factor(
+          {index ? "(" + x.text + "^(1/(" + index->text + ")))" : "sqrt" + x.text, sym, false});
+      return;
+    }
+    if (cmd == "begin") {
+      out.factor(matrix(depth));
+      return;
+    }
+    if (const auto f = function_commands().find(cmd); f != function_commands().end()) {
+      take_command();
+      out.factor(function(f->second, "\\" + cmd, depth));
+      return;
+    }
+    if (cmd == "operatorname") {
+      take_command();
+      const std::string name = braced_word();
+      // Any name: the expression reader knows its functions (EllipticK, atan2) and names the
+      // one it does not.
+      if (name.empty()) fail("\\operatorname{} without a name");
+      out.factor(function(name, "\\operatorname{" + name + "}", depth));
+      return;
+    }
+    if (text_wrappers().count(cmd)) {
+      // \mathrm{m}: a symbol set upright; a word that names one.
+      const std::size_t start = i_;
+      take_command();
+      const std::string word = braced_word();
+      if (function_names().count(word)) {
+        out.factor(function(word, word, depth));
+      } else if (table_.contains(word)) {
+        out.factor({word, true, false});
+      } else {
+        i_ = start;
+        out.factor(symbol_piece(atom()));
+      }
+      return;
+    }
+    if (accents().count(cmd) || greek().count(cmd)) {
+      out.factor(symbol_piece(atom()));
+      return;
+    }
+    if (cmd == "pm" || cmd == "mp") fail("'\\" + cmd + "' gives two answers; type one");
+    fail("\\" + cmd +
+         " is not read (fractions, roots, powers, Greek letters, functions, pmatrix and "
+         "\\mathrm units are)");
+  }
+
+  // The letters of {word} after \operatorname or \mathrm (spacing inside dropped).
+  std::string braced_word() {
+    skip_spaces();
+    if (!at('{')) fail("'{' missing after a command");
+    const std::size_t close = s_.find('}', i_);
+    if (close == std::string::npos) fail("'{' without its '}'");
+    std::string word;
+    for (std::size_t k = i_ + 1; k < close; ++k) {
+      if (std::isalnum(static_cast<unsigned char>(s_[k])) || s_[k] == '_') word += s_[k];
+    }
+    i_ = close + 1;
+    return word;
+  }
+
+  // sin, \sin, \sin^{2}: with its argument in brackets, or one symbol (a number before it).
+  Piece function(const std::string& name, const std::string& shown, int depth) {
+    skip_spaces();
+    std::optional<Piece> pow;
+    if (at('^')) {
+      ++i_;
+      pow = argument(depth);
+      if (pow->text == "(-1)" || pow->text == "-1") {
+        fail(shown + "^{-1} may mean 1/" + shown.substr(shown[0] == '\\' ? 1 : 0) +
+             " or the inverse; write " + "\\arc" + name + " or 1/" + shown);
+      }
+      skip_spaces();
+    }
+    Piece arg;
+    skip_size();
+    if (at('(') || at('[') || at('{') || at_command("left")) {
+      arg = delimited(depth);
+      if (arg.text.front() != '(') arg.text = "(" + arg.text + ")";
+    } else {
+      std::string number_part;
+      if (!at_end() && (is_digit(s_[i_]) || s_[i_] == '.')) {
+        number_part = number();
+        skip_spaces();
+      }
+      const bool symbol_next =
+          !at_end() && (is_letter(s_[i_]) || accents().count(command_at(i_)) ||
+                        greek().count(command_at(i_)) || text_wrappers().count(command_at(i_)));
+      if (symbol_next) {
+        Out one;
+        if (!number_part.empty()) one.factor({number_part});
+        one.factor(symbol_piece(is_letter(s_[i_]) ? atom_from_letter() : atom()));
+        if (at('^')) power(one, depth + 1);
+        arg = {"(" + one.p.text + ")", true, false};
+      } else if (!number_part.empty()) {
+        arg = {"(" + number_part + ")"};
+      } else {
+        fail(shown + " needs its argument: " + shown + "\\left(x\\right) or " + shown + "\\theta");
+      }
+    }
+    std::string text = name + arg.text;
+    if (pow) text += "^" + pow->text;
+    return {text, arg.symbolic, false};
+  }
+
+  // ---- symbols ------------------------------------------------------------------------------
+
+  // The subscript after _: one character or command, or a group; spacing, braces and \mathrm
+  // dropped so that spellings agree.
+  std::string subscript() {
+    ++i_;  // _
+    skip_spaces();
+    if (at_end()) fail("a subscript is missing at the end");
+    if (at('\\')) return "\\" + take_command();
+    if (!at('{')) return std::string(1, s_[i_++]);
+    int level = 0;
+    std::string sub;
+    for (; i_ < s_.size(); ++i_) {
+      const char c = s_[i_];
+      if (c == '{') {
+        ++level;
+      } else if (c == '}') {
+        if (--level == 0) break;
+      } else if (c == '\\') {
+        const std::string cmd = command_at(i_);
+        i_ += cmd.size();
+        if (!text_wrappers().count(cmd) && !spacing().count(cmd)) sub += "\\" + cmd;
+      } else if (c != ' ' && c != '~') {
+        sub += c;
+      }
+    }
+    if (at_end()) fail("'{' without its '}'");
+    ++i_;
+    return sub;
+  }
+
+  Atom atom() {
+    Atom a;
+    skip_spaces();
+    for (int marks = 0; at('\\') && accents().count(command_at(i_)); ++marks) {
+      if (marks > 3) fail("more marks over a letter than a symbol has");
+      a.accents += take_command() + ":";
+      skip_spaces();
+      if (at('{')) {
+        ++i_;
+        const Atom inner = atom();
+        skip_spaces();
+        if (!at('}')) fail("a mark over more than one letter (\\dot{\\psi} is read)");
+        ++i_;
+        a.accents += inner.accents;
+        a.base = inner.base;
+        a.sub = inner.sub;
+        if (subscript_next()) {
+          if (!a.sub.empty()) fail("a symbol with two subscripts");
+          a.sub = subscript();
+        }
+        return a;
+      }
+    }
+    skip_spaces();
+    if (at('\\')) {
+      const std::string cmd = take_command();
+      if (greek().count(cmd)) {
+        a.base = "\\" + cmd;
+      } else if (text_wrappers().count(cmd)) {
+        a.base = braced_word();
+      } else {
+        fail("\\" + cmd + " is not a symbol");
+      }
+    } else if (!at_end() && is_letter(s_[i_])) {
+      a.base = std::string(1, s_[i_++]);
+    } else {
+      fail("a mark (\\dot, \\hat) needs a letter under it");
+    }
+    if (subscript_next()) a.sub = subscript();
+    return a;
+  }
+
+  // Whether a subscript follows, spaces before it skipped ("\psi _0").
+  bool subscript_next() {
+    std::size_t j = i_;
+    while (j < s_.size() && s_[j] == ' ') ++j;
+    if (j >= s_.size() || s_[j] != '_') return false;
+    i_ = j;
+    return true;
+  }
+
+  // A letter that is the last of its run may carry a subscript: I_1.
+  Atom atom_from_letter() { return atom(); }
+
+  // The problem's symbol an atom names: by its LaTeX, else by the ASCII name its parts spell
+  // (\dot\psi_0 -> psidot0, \alpha -> alpha, \varphi -> phi).
+  Piece symbol_piece(const Atom& a) {
+    if (const auto it = by_key_.find(a.key()); it != by_key_.end()) return {it->second, true};
+    std::string base = a.base[0] == '\\' ? greek_name(a.base.substr(1)) : a.base;
+    std::string marks;
+    for (std::size_t k = 0; k < a.accents.size();) {
+      const std::size_t colon = a.accents.find(':', k);
+      const std::string mark = a.accents.substr(k, colon - k);
+      if (mark == "dot" || mark == "ddot") marks += mark;
+      k = colon + 1;
+    }
+    std::string sub;
+    for (const char c : a.sub) {
+      if (std::isalnum(static_cast<unsigned char>(c))) sub += c;
+    }
+    for (const std::string& name :
+         {base + marks + sub, base + sub + marks, base + marks + "_" + sub}) {
+      if (table_.contains(name)) return {name, true};
+    }
+    if (base == "pi" && a.accents.empty() && a.sub.empty()) return {"Pi"};
+    const std::string mark =
+        a.accents.empty() ? "" : "\\" + a.accents.substr(0, a.accents.find(':')) + " ";
+    unknown_symbol(mark + a.base + (a.sub.empty() ? "" : "_{" + a.sub + "}"));
+  }
+
+  [[noreturn]] void unknown_symbol(const std::string& shown) const {
+    std::string known;
+    for (const auto& n : table_.names()) known += (known.empty() ? "" : ", ") + table_.latex_of(n);
+    fail(shown + " is not one of this problem's symbols (" + known + ")");
+  }
+
+  // A run of letters: a function's name, a symbol's ASCII name, or letters each a symbol.
+  void letters(Out& out, int depth) {
+    std::size_t end = i_;
+    while (end < s_.size() && std::isalnum(static_cast<unsigned char>(s_[end]))) ++end;
+    const std::string run = s_.substr(i_, end - i_);
+    if (function_names().count(run)) {
+      i_ = end;
+      out.factor(function(run, run, depth));
+      return;
+    }
+    // "0.21kg": a unit glued to a plain number, where its first letter is no symbol.
+    if (!table_.contains(run.substr(0, 1)) && unit_here(out, depth)) return;
+    // psidot_0: the name with the subscript's digits.
+    if (end < s_.size() && s_[end] == '_' && run.size() > 1) {
+      const std::size_t save = i_;
+      i_ = end;
+      const std::string sub = subscript();
+      std::string bare;
+      for (const char c : sub) {
+        if (std::isalnum(static_cast<unsigned char>(c))) bare += c;
+      }
+      if (table_.contains(run + bare)) {
+        out.factor({run + bare, true});
+        return;
+      }
+      if (table_.contains(run)) unknown_symbol(run + "_{" + sub + "}");
+      i_ = save;
+    }
+    // The longest name the run begins with, of two letters or more (omega, psidot0, I1); else
+    // one letter, as LaTeX reads it.
+    for (std::size_t n = run.size(); n >= 2; --n) {
+      if (table_.contains(run.substr(0, n)) &&
+          !(n == run.size() && end < s_.size() && s_[end] == '_')) {
+        i_ += n;
+        out.factor({run.substr(0, n), true});
+        return;
+      }
+    }
+    if (run.size() > 1) {
+      // One letter, without the subscript that belongs to the run's last.
+      out.factor(symbol_piece(Atom{"", std::string(1, s_[i_++]), ""}));
+      return;
+    }
+    out.factor(symbol_piece(atom()));
+  }
+
+  // ---- matrices -----------------------------------------------------------------------------
+
+  std::string environment_name() {
+    skip_spaces();
+    if (!at('{')) fail("'{' missing after \\begin or \\end");
+    const std::size_t close = s_.find('}', i_);
+    if (close == std::string::npos) fail("'{' without its '}'");
+    const std::string name = s_.substr(i_ + 1, close - i_ - 1);
+    i_ = close + 1;
+    return name;
+  }
+
+  Piece matrix(int depth) {
+    take_command();  // \begin
+    const std::string env = environment_name();
+    static const std::set<std::string> known{"pmatrix", "bmatrix",     "Bmatrix",
+                                             "matrix",  "smallmatrix", "array"};
+    if (!known.count(env)) fail("\\begin{" + env + "} is not read (pmatrix, bmatrix, array are)");
+    if (env == "array") (void)environment_name();  // the column spec {ccc}
+    std::vector<std::vector<std::string>> rows(1);
+    bool symbolic = false;
+    for (;;) {
+      Piece cell = expr(depth + 1);
+      skip_spaces();
+      if (trim(cell.text).empty()) {
+        // An empty last row, after a final \\.
+        if (at_command("end") && rows.back().empty() && rows.size() > 1) {
+          rows.pop_back();
+          break;
+        }
+        fail("an empty entry in \\begin{" + env + "}");
+      }
+      symbolic = symbolic || cell.symbolic;
+      rows.back().push_back(trim(cell.text));
+      if (at('&')) {
+        ++i_;
+      } else if (at_command("\\")) {
+        take_command();
+        rows.emplace_back();
+      } else if (at_command("end")) {
+        break;
+      } else if (at_end()) {
+        fail("\\begin{" + env + "} without its \\end{" + env + "}");
+      } else {
+        fail_stop();
+      }
+    }
+    take_command();  // \end
+    if (environment_name() != env) fail("\\begin{" + env + "} closed by another \\end");
+    if (rows.empty()) fail("an empty \\begin{" + env + "}");
+    for (const auto& r : rows) {
+      if (r.size() != rows[0].size()) fail("rows of different lengths in \\begin{" + env + "}");
+    }
+    const auto list = [](const std::vector<std::string>& items) {
+      std::string s = "[";
+      for (std::size_t k = 0; k < items.size(); ++k) s += (k ? ", " : "") + items[k];
+      return s + "]";
+    };
+    if (rows.size() == 1) return {list(rows[0]), symbolic, true};
+    if (rows[0].size() == 1) {
+      std::vector<std::string> column;
+      for (const auto& r : rows) column.push_back(r[0]);
+      return {list(column), symbolic, true};
+    }
+    std::vector<std::string> listed;
+    for (const auto& r : rows) listed.push_back(list(r));
+    return {list(listed), symbolic, true};
+  }
+};
+
+}  // namespace
+
+std::string without_math_delimiters(std::string s) {
+  s = trim(s);
+  for (const auto& [open, close] : std::vector<std::pair<std::string, std::string>>{
+           {"$$", "$$"}, {"$", "$"}, {"\\(", "\\)"}, {"\\[", "\\]"}}) {
+    if (s.size() >= open.size() + close.size() && s.rfind(open, 0) == 0 &&
+        s.compare(s.size() - close.size(), close.size(), close) == 0) {
+      return trim(s.substr(open.size(), s.size() - open.size() - close.size()));
+    }
+  }
+  return s;
+}
+
+bool looks_like_latex(const std::string& typed) {
+  return typed.find('\\') != std::string::npos || typed.find("^{") != std::string::npos ||
+         typed.find("_{") != std::string::npos;
+}
+
+std::string latex_as_text(const std::string& latex, const sym::SymbolTable& table,
+                          const std::string& field) {
+  std::string s = sym::to_ascii(without_math_delimiters(latex));
+  for (char& c : s) {
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+    if (static_cast<unsigned char>(c) >= 0x80) {
+      throw InputError(field + ": cannot read a character of \"" + latex + "\" in LaTeX");
+    }
+  }
+  return Reader(s, table, field).read();
+}
+
+}  // namespace wobble::check

@@ -1,0 +1,41 @@
+#pragma once
+/// @file
+/// Reading an answer written in LaTeX math: what a LaTeX or Markdown key prints, what the browser
+/// copies from its typeset math, and what a student used to LaTeX types.
+///
+/// The LaTeX becomes the plain text the answer reader takes (answer_reading.hpp), products written
+/// out: "\frac{m R^{2}}{4}" -> "(m*R^(2))/(4)". Read, besides digits, + - / ( ) and commas:
+/// - products side by side, as LaTeX sets them ("m R^{2}", "2\alpha", "M g l"); in LaTeX a letter
+///   is a symbol, so "mR" is m times R unless the problem has a symbol named mR;
+/// - \frac \dfrac \tfrac, \sqrt{x} and \sqrt[n]{x}, powers ^{..}, \cdot \times \div, \big/;
+/// - the problem's symbols as its file spells them in LaTeX, by meaning, not by spelling:
+///   "\dot\psi_0", "\dot{\psi}_{0}" and "\dot{\psi_0}" are all psidot0; a Greek letter the
+///   problem names in ASCII (\alpha for alpha), \varphi \vartheta \varepsilon as their letters;
+/// - \sin \cos \tan \arcsin \arccos \arctan \sinh \cosh \tanh \exp \ln \log and \operatorname{f},
+///   with parentheses or without ("\cos\theta_0", "\sin 2\alpha": one symbol, a number before
+///   it), and a power after the name ("\sin^{2}\alpha" is sin(alpha)^2); \pi;
+/// - \left( \right), \left| \right| (an absolute value), \bigl( \Bigr) ... and plain braces as a
+///   group; spacing (\, \; \quad ~) between factors;
+/// - pmatrix, bmatrix, matrix and array: a column or a row is a vector;
+/// - a unit after the value, in \mathrm{..} or \text{..} or bare ("0.00072\,\mathrm{kg\,m^{2}}",
+///   "15^\circ"), and 7.2 \times 10^{-4};
+/// - the delimiters $..$, $$..$$, \(..\), \[..\] around it all.
+/// Anything else (\pm, an unknown command, an & outside a matrix) is refused in one line naming it.
+#include <string>
+
+#include "symbolic/expression.hpp"
+
+namespace wobble::check {
+
+/// The math without its delimiters: $..$, $$..$$, \(..\), \[..\] around it all (else as it is).
+std::string without_math_delimiters(std::string s);
+
+/// Whether the answer is LaTeX: it has a backslash, or a brace after ^ or _ ("R^{2}").
+bool looks_like_latex(const std::string& typed);
+
+/// The answer in plain text (see above), for read_answer to read.
+/// @throws InputError naming `field` for what is not read.
+std::string latex_as_text(const std::string& latex, const sym::SymbolTable& table,
+                          const std::string& field);
+
+}  // namespace wobble::check

@@ -1,0 +1,119 @@
+// An answer in LaTeX math: what each construct becomes in plain text, one symbol in its several
+// spellings, and the one-line refusals. (That every LaTeX form a key prints reads back as
+// correct is tested over the whole catalog in render/test_read_back.cpp.)
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "check/check_fixture.hpp"
+#include "check/latex_answer.hpp"
+#include "core/input_error.hpp"
+
+using namespace wobble;
+using namespace wobble::check;
+
+namespace {
+using Fixture = wobble::test::CheckFixture;
+
+std::string text_of(const Fixture& f, const std::string& latex) {
+  return latex_as_text(latex, f.table, "--answer");
+}
+
+std::string refusal(const Fixture& f, const std::string& latex) {
+  try {
+    return "(read as) " + text_of(f, latex);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+}
+}  // namespace
+
+TEST_CASE("LaTeX is recognised by a backslash or a braced power or subscript") {
+  REQUIRE(looks_like_latex("\\frac{m}{2}"));
+  REQUIRE(looks_like_latex("m R^{2}/4"));
+  REQUIRE(looks_like_latex("I_{1} omega"));
+  REQUIRE_FALSE(looks_like_latex("m*R^2/4"));
+  REQUIRE_FALSE(looks_like_latex("{{1, 0}, {0, 1}}"));  // Mathematica's lists
+  REQUIRE_FALSE(looks_like_latex("psidot_0"));
+}
+
+TEST_CASE("LaTeX constructs become plain text with their products written out") {
+  const Fixture plate("flying-plate");  // m, R, omega (\omega), alpha (\alpha)
+  const auto text = [&](const std::string& latex) { return text_of(plate, latex); };
+  REQUIRE(text("\\frac{m R^{2}}{4}") == "((m*R^(2))/(4))");
+  REQUIRE(text("\\frac12 m R^2") == "(1/2)*m*R^2");
+  REQUIRE(text("mR^2") == "m*R^2");  // in LaTeX a letter is a symbol
+  REQUIRE(text("2\\omega\\cos\\alpha") == "2*omega*cos(alpha)");
+  REQUIRE(text("\\sin 2\\alpha") == "sin(2*alpha)");
+  REQUIRE(text("\\cos^{2}\\left(\\alpha\\right)") == "cos(alpha)^(2)");
+  REQUIRE(text("\\sqrt{m}\\,R") == "sqrt(m)*R");
+  REQUIRE(text("\\sqrt[3]{m}") == "((m)^(1/(3)))");
+  REQUIRE(text("\\left|\\omega\\right| \\cdot R") == "abs(omega)*R");
+  REQUIRE(text("|R| \\times m") == "abs(R)*m");
+  REQUIRE(text("\\bigl(m + R\\bigr)\\big/ 2") == "(m+R)/2");
+  REQUIRE(text("\\operatorname{atan2}\\left(\\sin\\alpha, 2\\right)") == "atan2(sin(alpha), 2)");
+  REQUIRE(text("\\arctan(\\tan\\alpha)") == "atan(tan(alpha))");
+  REQUIRE(text("\\ln m") == "log(m)");
+  REQUIRE(text("\\pi R^2") == "Pi*R^2");
+  REQUIRE(text("$$ \\frac{m}{2} $$") == "((m)/(2))");
+  REQUIRE(text("\\(m\\)") == "m");
+  // Numbers, the times sign before a power of ten, a unit after the value.
+  REQUIRE(text("7.2 \\times 10^{-4}") == "7.2*10^(-4)");
+  REQUIRE(text("0.00072\\,\\mathrm{kg\\,m^{2}}") == "0.00072 kg m^2");
+  REQUIRE(text("118.8~\\text{s}^{-1}") == "118.8 s^-1");
+  REQUIRE(text("0.21kg") == "0.21 kg");
+  REQUIRE(text("15^\\circ") == "15 deg");
+  REQUIRE(text("15^{\\circ}") == "15 deg");
+  // A product sign is no unit's start: "2 \cdot m" is twice the mass, not two metres.
+  REQUIRE(text("2 \\cdot m") == "2*m");
+  REQUIRE(text("0.5\\,\\mathrm{kg \\cdot m^{2}}") == "0.5 kg m^2");
+  // "M g": a product where a symbol came before, never grams.
+  const Fixture top("heavy-top");
+  REQUIRE(text_of(top, "M g l") == "M*g*l");
+  // Matrices; a column or a row is a vector, brackets around a matrix are its own.
+  REQUIRE(text("\\begin{pmatrix} 1 & 0 \\\\ 0 & m \\end{pmatrix}") == "[[1, 0], [0, m]]");
+  REQUIRE(text("\\begin{bmatrix} 1 \\\\ 2 \\\\ 3 \\\\ \\end{bmatrix}") == "[1, 2, 3]");
+  REQUIRE(text("\\left(\\begin{array}{ccc} 1 & 2 & 3 \\end{array}\\right)") == "[1, 2, 3]");
+  REQUIRE(text("\\begin{pmatrix} 0.5 \\\\ 0 \\end{pmatrix}\\,\\mathrm{rad/s}") == "[0.5, 0] rad/s");
+}
+
+TEST_CASE("a symbol in any of its LaTeX spellings is the problem's symbol") {
+  const Fixture top("heavy-top");  // psidot0 is \dot\psi_0, theta0 is \theta_0
+  for (const std::string spelling :
+       {"\\dot\\psi_0", "\\dot{\\psi}_{0}", "\\dot{\\psi_0}", "\\dot {\\psi} _ 0", "psidot0",
+        "psidot_0", "\\dot\\psi_{\\mathrm{0}}"}) {
+    INFO(spelling);
+    REQUIRE(text_of(top, spelling) == "psidot0");
+  }
+  REQUIRE(text_of(top, "\\cos\\theta_0") == "cos(theta0)");
+  REQUIRE(text_of(top, "\\cos\\vartheta_0") == "cos(theta0)");
+  const Fixture plate("flying-plate");
+  REQUIRE(text_of(plate, "omega\\alpha") == "omega*alpha");  // a name spelled out, then \alpha
+}
+
+TEST_CASE("what LaTeX reading refuses, it names in one line") {
+  const Fixture plate("flying-plate");
+  const auto refused = [&](const std::string& latex) { return refusal(plate, latex); };
+  REQUIRE_THAT(refused("\\frac{m}{2"), Catch::Equals("--answer: '}' missing"));
+  REQUIRE_THAT(refused("m}"), Catch::Equals("--answer: a '}' without its '{'"));
+  REQUIRE_THAT(refused("\\pm m"), Catch::Contains("'\\pm' gives two answers"));
+  REQUIRE_THAT(refused("\\int m"), Catch::StartsWith("--answer: \\int is not read"));
+  REQUIRE_THAT(refused("1 & 2"), Catch::Contains("'&' outside a matrix"));
+  REQUIRE_THAT(refused("1 \\\\ 2"), Catch::Contains("(a new row) outside a matrix"));
+  REQUIRE_THAT(refused("\\sin^{-1}(m)"), Catch::Contains("write \\arcsin"));
+  REQUIRE_THAT(refused("\\sin"), Catch::Contains("\\sin needs its argument"));
+  REQUIRE_THAT(refused("\\beta m"), Catch::Equals("--answer: \\beta is not one of this "
+                                                  "problem's symbols (m, R, \\omega, \\alpha)"));
+  REQUIRE_THAT(refused("\\begin{pmatrix} 1 & 2 \\\\ 3 \\end{pmatrix}"),
+               Catch::Contains("rows of different lengths"));
+  REQUIRE_THAT(refused("\\begin{pmatrix} 1 \\end{bmatrix}"), Catch::Contains("closed by another"));
+  REQUIRE_THAT(refused("\\begin{cases} 1 \\end{cases}"), Catch::Contains("is not read"));
+  REQUIRE_THAT(refused("\\left\\langle m \\right\\rangle"), Catch::Contains("is not read"));
+  REQUIRE_THAT(refused("\\left( m"), Catch::Contains("without its \\right"));
+  REQUIRE_THAT(refused("^2"), Catch::Contains("needs something before it"));
+  REQUIRE_THAT(refused("m_1"), Catch::Contains("m_{1} is not one of this problem's symbols"));
+  REQUIRE_THAT(refused("\\dot{m R}"), Catch::Contains("a mark over more than one letter"));
+  REQUIRE_THAT(refused("m ω"), Catch::Equals("(read as) m*omega"));  // Unicode is read too
+  // Deep nesting is refused, not recursed into without end.
+  REQUIRE_THAT(refused(std::string(300, '{') + "m" + std::string(300, '}')),
+               Catch::Contains("nested deeper than"));
+}
