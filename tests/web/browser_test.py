@@ -71,6 +71,20 @@ def browser():
     return webdriver.Chrome(service=service, options=options)
 
 
+# Selects an element and copies it as a reader's Ctrl+C does, returning the text/plain copied.
+COPY_SCRIPT = """
+const range = document.createRange();
+range.selectNode(arguments[0]);
+const selection = window.getSelection();
+selection.removeAllRanges();
+selection.addRange(range);
+const data = new DataTransfer();
+document.dispatchEvent(new ClipboardEvent('copy', {clipboardData: data, bubbles: true,
+                                                   cancelable: true}));
+return data.getData('text/plain');
+"""
+
+
 def wait_for(driver, css, seconds=20):
     return WebDriverWait(driver, seconds).until(
         lambda d: d.find_elements(By.CSS_SELECTOR, css) or False)
@@ -233,6 +247,25 @@ def main():
             v = verdict_of(d3, name)
             expect(v.text.startswith("correct"), "the key's %s pasted back (%r): %r"
                    % (name, value.text, v.text))
+        # Each typeset closed form copied as the browser copies it (LaTeX, by KaTeX's copy-tex)
+        # and pasted back: judged right.
+        copied_forms = 0
+        for answer in d3.find_elements(By.CSS_SELECTOR, ".answer"):
+            formulas = answer.find_elements(By.CSS_SELECTOR, ".key-answer .katex")
+            if not formulas:
+                continue
+            copied = d3.execute_script(COPY_SCRIPT, formulas[0])
+            box = answer.find_element(By.CSS_SELECTOR, "input")
+            name = box.get_attribute("data-answer")
+            expect(copied.startswith("$") and copied.endswith("$"),
+                   "%s: the copy is no LaTeX: %r" % (name, copied))
+            box.clear()
+            box.send_keys(copied, Keys.ENTER)
+            v = verdict_of(d3, name)
+            expect(v.text.startswith("correct"), "the key's %s copied as LaTeX (%r): %r"
+                   % (name, copied, v.text))
+            copied_forms += 1
+        expect(copied_forms > 5, "only %d typeset forms copied" % copied_forms)
         d3.save_screenshot(os.path.join(shots, "instructor-flying-plate-5.png"))
         expect(not d.find_elements(By.CSS_SELECTOR, ".key-value"), "a student sees the key")
         stage("instructor's page done")
