@@ -110,42 +110,9 @@ int run_check(const CheckOptions& opt) {
   const sym::Values values =
       parameter_values(problem, with_variant(problem, opt.variant, opt.sets));
   const Key key = solve(problem, values);
-  const PartKey* part = find_part(key.parts, opt.part, opt.name);
-  if (part == nullptr && opt.part.empty()) {
-    std::vector<std::string> names;
-    for (const auto& p : key.parts) {
-      for (const auto& a : p.answers) names.push_back(a.name);
-    }
-    throw InputError(fmt::format("--name: problem {} has no answer '{}' (answers: {})", problem.id,
-                                 opt.name, fmt::join(names, ", ")));
-  }
-  if (part == nullptr) {
-    std::vector<std::string> parts;
-    for (const auto& p : key.parts) parts.push_back(p.id);
-    throw InputError(fmt::format("part: problem {} has no part '{}' (parts: {})", problem.id,
-                                 opt.part, fmt::join(parts, ", ")));
-  }
-  if (part->answers.empty()) {
-    throw InputError(
-        fmt::format("part: part {} of {} has nothing to check at these values ({} "
-                    "do not exist; `wobble solve` says why)",
-                    part->id, problem.id, fmt::join(part->absent, ", ")));
-  }
-  std::string names;
-  const Answer* answer = nullptr;
-  for (const auto& a : part->answers) {
-    names += (names.empty() ? "" : ", ") + a.name;
-    if (a.name == opt.name || (opt.name.empty() && part->answers.size() == 1)) answer = &a;
-  }
-  if (answer == nullptr) {
-    throw InputError(
-        opt.name.empty()
-            ? fmt::format("--name: part {} has several answers; name one ({})", part->id, names)
-            : fmt::format("--name: part {} has no answer '{}' (answers: {})", part->id, opt.name,
-                          names));
-  }
+  const Answer& answer = find_answer(key, opt.part, opt.name, "part", "--name");
   const sym::SymbolTable table = problem.symbol_table();
-  const check::Verdict v = check::judge({key, table, values}, *answer, opt.answer, o);
+  const check::Verdict v = check::judge({key, table, values}, answer, opt.answer, o);
   fmt::print("{}\n", v.line);
   for (const auto& f : v.feedback) fmt::print("  {}\n", f);
   return v.correct ? kExitOk : kExitDifference;

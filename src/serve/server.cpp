@@ -255,22 +255,11 @@ struct Server::Impl {
     }
     std::lock_guard lock(work);
     const auto e = entry(p, variant);
-    const PartKey* part = find_part(e->key.parts, part_id, name);
-    if (part == nullptr && part_id.empty()) {
-      return send_error(res, 404,
-                        fmt::format("problem {} has no answer '{}'", p.id, name.substr(0, 40)));
-    }
-    if (part == nullptr) {
-      return send_error(res, 404, fmt::format("problem {} has no part '{}'", p.id,
-                                              part_id.substr(0, 20)));
-    }
     const Answer* a = nullptr;
-    for (const auto& x : part->answers) {
-      if (x.name == name || (name.empty() && part->answers.size() == 1)) a = &x;
-    }
-    if (a == nullptr) {
-      return send_error(res, 404,
-                        fmt::format("part {} has no answer '{}'", part->id, name.substr(0, 40)));
+    try {
+      a = &find_answer(e->key, part_id, name, "part", "name");
+    } catch (const AnswerNotFound& missing) {
+      return send_error(res, 404, missing.what());
     }
     check::Verdict v;
     try {

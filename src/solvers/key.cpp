@@ -13,6 +13,9 @@ double Value::scale() const {
   return s;
 }
 
+namespace {
+// The part asked for: by its id, or without one the part that asks for the answer `name`
+// (among its answers or those absent at these values). nullptr if there is none.
 const PartKey* find_part(const std::vector<PartKey>& parts, const std::string& part_id,
                          const std::string& name) {
   for (const auto& p : parts) {
@@ -22,6 +25,66 @@ const PartKey* find_part(const std::vector<PartKey>& parts, const std::string& p
     if (part_id.empty() ? holds : p.id == part_id) return &p;
   }
   return nullptr;
+}
+
+// Names or ids joined for a message: "I0, I".
+template <class Items, class Name>
+std::string listed(const Items& items, Name name) {
+  std::string out;
+  for (const auto& x : items) out += (out.empty() ? "" : ", ") + name(x);
+  return out;
+}
+}  // namespace
+
+const Answer& find_answer(const Key& key, const std::string& part_id, const std::string& name,
+                          const std::string& part_field, const std::string& name_field) {
+  if (part_id.empty() && name.empty()) {
+    throw InputError(part_field + " or " + name_field +
+                     ": neither is given; name the part, the "
+                     "answer, or both");
+  }
+  // What was asked for is echoed at most this long: a message stays one line.
+  const auto shown = [](const std::string& s) {
+    return s.size() > 40 ? s.substr(0, 40) + "..." : s;
+  };
+  const PartKey* part = find_part(key.parts, part_id, name);
+  if (part == nullptr && part_id.empty()) {
+    std::string names;
+    for (const auto& p : key.parts) {
+      if (!p.answers.empty())
+        names +=
+            (names.empty() ? "" : ", ") + listed(p.answers, [](const Answer& a) { return a.name; });
+    }
+    throw AnswerNotFound(fmt::format("{}: problem {} has no answer '{}' (answers: {})", name_field,
+                                     key.problem, shown(name), names));
+  }
+  if (part == nullptr) {
+    throw AnswerNotFound(fmt::format("{}: problem {} has no part '{}' (parts: {})", part_field,
+                                     key.problem, shown(part_id),
+                                     listed(key.parts, [](const PartKey& p) { return p.id; })));
+  }
+  if (part->answers.empty()) {
+    throw AnswerNotFound(fmt::format(
+        "{}: part {} of {} has nothing to check at these values ({} do not exist; the key says "
+        "why)",
+        part_id.empty() ? name_field : part_field, part->id, key.problem,
+        listed(part->absent, [](const std::string& a) { return a; })));
+  }
+  for (const auto& a : part->answers) {
+    if (a.name == name || (name.empty() && part->answers.size() == 1)) return a;
+  }
+  const std::string names = listed(part->answers, [](const Answer& a) { return a.name; });
+  if (name.empty()) {
+    throw AnswerNotFound(
+        fmt::format("{}: part {} has several answers; name one ({})", name_field, part->id, names));
+  }
+  const bool absent =
+      std::find(part->absent.begin(), part->absent.end(), name) != part->absent.end();
+  throw AnswerNotFound(absent ? fmt::format("{}: {} does not exist at these values (part {}; the "
+                                            "key says why)",
+                                            name_field, name, part->id)
+                              : fmt::format("{}: part {} has no answer '{}' (answers: {})",
+                                            name_field, part->id, shown(name), names));
 }
 
 const char* kind_name(AnswerKind k) {

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/input_error.hpp"
+
 namespace wobble {
 
 /// A scalar, a vector or a matrix of doubles (row-major).
@@ -115,12 +117,6 @@ struct PartKey {
   std::vector<std::string> absent;
 };
 
-/// The part asked for: the one with id `part_id`, or, without one, the part that asks for the
-/// answer `name` (among its answers or those absent at these values; names are unique in a
-/// problem). nullptr if there is none.
-const PartKey* find_part(const std::vector<PartKey>& parts, const std::string& part_id,
-                         const std::string& name);
-
 /// Appends `steps` to the part, skipping any whose text the part already has (two answers of a
 /// part often share a derivation).
 void append_steps(PartKey& part, const std::vector<Step>& steps);
@@ -146,5 +142,20 @@ struct Key {
   std::vector<ParameterValue> parameters;
   std::vector<PartKey> parts;
 };
+
+/// A check asks for a part or an answer the key does not have (the server answers it with 404).
+struct AnswerNotFound : InputError {
+  using InputError::InputError;
+};
+
+/// The answer a check asks for: by part id and answer name; the part's only answer when no name
+/// is given; the answer of that name in whichever part has it when no part is (names are unique
+/// in a problem). `part_field` and `name_field` are what the caller calls them ("part",
+/// "--name").
+/// @throws AnswerNotFound naming the field and listing what exists: an unknown part or name, a
+///   part with several answers and no name, a part or answer absent at these values.
+/// @throws InputError when neither a part nor a name is given.
+const Answer& find_answer(const Key& key, const std::string& part_id, const std::string& name,
+                          const std::string& part_field, const std::string& name_field);
 
 }  // namespace wobble

@@ -21,8 +21,10 @@
 #include <httplib.h>
 
 using namespace wobble;
-using nlohmann::json;
 using Catch::Matchers::Contains;
+using Catch::Matchers::Equals;
+using Catch::Matchers::StartsWith;
+using nlohmann::json;
 
 namespace {
 struct Running {
@@ -174,7 +176,13 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
                    {{"name", "I0"}, {"answer", right}, {"variant", 5}})["correct"] == true);
   CHECK_THAT(post_check(c, "flying-plate", {{"name", "I9"}, {"answer", right}}, 404)["error"]
                  .get<std::string>(),
-             Contains("problem flying-plate has no answer 'I9'"));
+             Contains("name: problem flying-plate has no answer 'I9' (answers: I0, I, "));
+  // A part of several answers needs the name; neither part nor name is a bad request.
+  CHECK_THAT(post_check(c, "flying-plate", {{"part", "a"}, {"answer", right}}, 404)["error"]
+                 .get<std::string>(),
+             Equals("name: part a has several answers; name one (I0, I)"));
+  CHECK_THAT(post_check(c, "flying-plate", {{"answer", right}}, 400)["error"].get<std::string>(),
+             StartsWith("part or name: neither is given"));
   CHECK_THAT(get_json(c, "/api/problems/flying-plate/hint?part=a")["hint"].get<std::string>(),
              !Contains("xx") && Contains("m"));
 }
