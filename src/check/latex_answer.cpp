@@ -861,8 +861,11 @@ std::string latex_as_text(const std::string& latex, const sym::SymbolTable& tabl
   std::string s = sym::to_ascii(without_math_delimiters(latex));
   for (char& c : s) {
     if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-    if (static_cast<unsigned char>(c) >= 0x80) {
-      throw InputError(field + ": cannot read a character of \"" + latex + "\" in LaTeX");
+    // Named by its code: a control character printed would garble the terminal's line.
+    const auto code = static_cast<unsigned char>(c);
+    if (code >= 0x80 || code < 0x20 || code == 0x7f) {
+      throw InputError(field + ": cannot read a " + (code >= 0x80 ? "non-ASCII" : "control") +
+                       " character (code " + std::to_string(code) + ") in LaTeX");
     }
   }
   return Reader(s, table, field).read();
