@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "check/latex_vocabulary.hpp"
 #include "check/text.hpp"
 #include "check/units.hpp"
 #include "core/input_error.hpp"
@@ -20,65 +21,6 @@ bool is_letter(char c) {
 }
 bool is_digit(char c) {
   return std::isdigit(static_cast<unsigned char>(c)) != 0;
-}
-
-// Commands that draw a mark over a letter: the symbol is the letter with the mark (psidot for
-// \dot\psi), whatever the braces.
-const std::set<std::string>& accents() {
-  static const std::set<std::string> s{"dot",      "ddot",  "hat",     "bar",
-                                       "vec",      "tilde", "mathbf",  "boldsymbol",
-                                       "overline", "check", "widehat", "widetilde"};
-  return s;
-}
-
-const std::set<std::string>& greek() {
-  static const std::set<std::string> s{
-      "alpha", "beta",     "gamma",   "delta", "epsilon", "varepsilon", "zeta",   "eta",
-      "theta", "vartheta", "iota",    "kappa", "lambda",  "mu",         "nu",     "xi",
-      "pi",    "rho",      "varrho",  "sigma", "tau",     "upsilon",    "phi",    "varphi",
-      "chi",   "psi",      "omega",   "Gamma", "Delta",   "Theta",      "Lambda", "Xi",
-      "Pi",    "Sigma",    "Upsilon", "Phi",   "Psi",     "Omega"};
-  return s;
-}
-
-// The letter a Greek command names in ASCII: \varphi is phi.
-std::string greek_name(const std::string& command) {
-  return command.rfind("var", 0) == 0 ? command.substr(3) : command;
-}
-
-// LaTeX's function commands and the names the expression reader knows them by.
-const std::map<std::string, std::string>& function_commands() {
-  static const std::map<std::string, std::string> m{
-      {"sin", "sin"},     {"cos", "cos"},     {"tan", "tan"},   {"arcsin", "asin"},
-      {"arccos", "acos"}, {"arctan", "atan"}, {"sinh", "sinh"}, {"cosh", "cosh"},
-      {"tanh", "tanh"},   {"exp", "exp"},     {"ln", "log"},    {"log", "log"}};
-  return m;
-}
-
-// Function names typed as letters (inside \operatorname too).
-const std::set<std::string>& function_names() {
-  static const std::set<std::string> s{"sin",   "cos",  "tan",       "asin",     "acos", "atan",
-                                       "atan2", "sinh", "cosh",      "tanh",     "exp",  "log",
-                                       "sqrt",  "abs",  "EllipticK", "EllipticE"};
-  return s;
-}
-
-const std::set<std::string>& spacing() {
-  static const std::set<std::string> s{
-      ",",         ";",         ":",        "!",       " ",    "quad", "qquad", "displaystyle",
-      "textstyle", "thinspace", "medspace", "enspace", "hline"};
-  return s;
-}
-
-const std::set<std::string>& text_wrappers() {
-  static const std::set<std::string> s{"mathrm", "text", "textrm", "mathit", "mathsf", "rm"};
-  return s;
-}
-
-const std::set<std::string>& sizes() {
-  static const std::set<std::string> s{"big",  "Big",  "bigg",  "Bigg",  "bigl",  "bigr",
-                                       "Bigl", "Bigr", "biggl", "biggr", "Biggl", "Biggr"};
-  return s;
 }
 
 // A symbol as LaTeX draws it: marks over it, the letter (or \alpha), the subscript. Two
@@ -282,70 +224,11 @@ class Reader {
     if (depth > 0 || out.factors == 0 || !out.factor_last) return false;
     if (out.p.symbolic && !written_as_unit) return false;
     if (s_.size() - i_ > 160) return false;
-    const std::optional<std::string> unit = unit_text(s_.substr(i_));
+    const std::optional<std::string> unit = latex_unit_text(s_.substr(i_));
     if (!unit || unit->empty() || !is_unit(*unit)) return false;
     unit_ = *unit;
     i_ = s_.size();
     return true;
-  }
-
-  // "\,\mathrm{kg\,m^{2}/s}" -> "kg m^2/s", "^\circ" -> "deg"; nullopt for what no unit has.
-  static std::optional<std::string> unit_text(const std::string& raw) {
-    std::string out;
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      const char c = raw[i];
-      if (c == '{' || c == '}') continue;
-      if (c == '~') {
-        out += ' ';
-        continue;
-      }
-      if (c == '^') {
-        std::size_t j = i + 1;
-        if (j < raw.size() && raw[j] == '{') ++j;
-        if (raw.compare(j, 5, "\\circ") == 0) {
-          out += " deg";
-          i = j + 4;
-          continue;
-        }
-        out += '^';
-        continue;
-      }
-      if (c != '\\') {
-        out += c;
-        continue;
-      }
-      std::size_t j = i + 1;
-      if (j < raw.size() && !is_letter(raw[j])) {
-        if (!spacing().count(raw.substr(j, 1))) return std::nullopt;
-        out += ' ';
-        i = j;
-        continue;
-      }
-      while (j < raw.size() && is_letter(raw[j])) ++j;
-      const std::string cmd = raw.substr(i + 1, j - i - 1);
-      if (cmd == "cdot") {
-        // Between units ("kg \cdot m^2"), never before the first: "2 \cdot m" is a product.
-        if (trim(out).empty()) return std::nullopt;
-        out += ' ';
-      } else if (cmd == "circ") {
-        out += " deg";
-      } else if (spacing().count(cmd)) {
-        out += ' ';
-      } else if (!text_wrappers().count(cmd)) {
-        return std::nullopt;
-      }
-      i = j - 1;
-    }
-    // Collapse spaces: "kg  m^2" -> "kg m^2".
-    std::string collapsed;
-    for (const char c : trim(out)) {
-      if (c == ' ' && !collapsed.empty() && collapsed.back() == ' ') continue;
-      collapsed += c;
-    }
-    // A unit begins with its name, or is 1/s: "* m" and "/ 2" are no unit.
-    if (collapsed.empty() || !(is_letter(collapsed[0]) || collapsed.rfind("1/", 0) == 0))
-      return std::nullopt;
-    return collapsed;
   }
 
   // A group in brackets: {..} (\frac's arguments, a grouping), (..), [..], |..| and \left..\right.
@@ -425,7 +308,7 @@ class Reader {
     if (is_digit(s_[i_])) return {std::string(1, s_[i_++])};
     Out out;
     if (is_letter(s_[i_])) {
-      out.factor(symbol_piece(atom_from_letter()));
+      out.factor(letter_symbol());
     } else if (at('\\')) {
       command(out, depth + 1);
     } else {
@@ -455,62 +338,44 @@ class Reader {
 
   void command(Out& out, int depth) {
     const std::string cmd = command_at(i_);
+    const bool wrapper = text_wrappers().count(cmd) != 0;
+    // "\,\mathrm{kg}" after a number: the unit, and the rest is read as units are.
+    if ((wrapper || spacing().count(cmd)) && unit_here(out, depth, wrapper)) return;
     if (spacing().count(cmd)) {
-      if (unit_here(out, depth)) return;
       take_command();
-      return;
-    }
-    if (text_wrappers().count(cmd) && unit_here(out, depth, true)) return;
-    if (sizes().count(cmd) || cmd == "left" || cmd == "lvert" || cmd == "vert") {
-      std::size_t j = i_ + 1 + cmd.size();
-      while (j < s_.size() && s_[j] == ' ') ++j;
-      if (sizes().count(cmd) && j < s_.size() && s_[j] == '/') {  // \big/
-        i_ = j + 1;
-        out.op("/");
-        return;
-      }
-      out.factor(delimited(depth));
-      return;
-    }
-    if (cmd == "cdot" || cmd == "times" || cmd == "ast") {
+    } else if (cmd == "cdot" || cmd == "times" || cmd == "ast" || cmd == "div") {
       take_command();
-      out.op("*");
-      return;
-    }
-    if (cmd == "div") {
+      out.op(cmd == "div" ? "/" : "*");
+    } else if (sizes().count(cmd) && next_after_command_is('/')) {  // \big/
       take_command();
+      skip_spaces();
+      ++i_;
       out.op("/");
-      return;
+    } else {
+      out.factor(construct(cmd, depth));
     }
+  }
+
+  bool next_after_command_is(char c) const {
+    std::size_t j = i_ + 1 + command_at(i_).size();
+    while (j < s_.size() && s_[j] == ' ') ++j;
+    return j < s_.size() && s_[j] == c;
+  }
+
+  // What a command makes: a group, a fraction, a root, a matrix, a function's value, a symbol.
+  Piece construct(const std::string& cmd, int depth) {
+    if (sizes().count(cmd) || cmd == "left" || cmd == "lvert" || cmd == "vert")
+      return delimited(depth);
     if (cmd == "frac" || cmd == "dfrac" || cmd == "tfrac" || cmd == "cfrac") {
       take_command();
       const Piece num = argument(depth), den = argument(depth);
-      out.factor({"(" + num.text + "/" + den.text + ")", num.symbolic || den.symbolic, false});
-      return;
+      return {"(" + num.text + "/" + den.text + ")", num.symbolic || den.symbolic, false};
     }
-    if (cmd == "sqrt") {
-      take_command();
-      skip_spaces();
-      std::optional<Piece> index;
-      if (at('[')) {
-        ++i_;
-        index = expr(depth + 1);
-        expect(']');
-      }
-      const Piece x = argument(depth);
-      const bool sym = x.symbolic || (index && index->symbolic);
-      out.factor(
-          {index ? "(" + x.text + "^(1/(" + index->text + ")))" : "sqrt" + x.text, sym, false});
-      return;
-    }
-    if (cmd == "begin") {
-      out.factor(matrix(depth));
-      return;
-    }
+    if (cmd == "sqrt") return root(depth);
+    if (cmd == "begin") return matrix(depth);
     if (const auto f = function_commands().find(cmd); f != function_commands().end()) {
       take_command();
-      out.factor(function(f->second, "\\" + cmd, depth));
-      return;
+      return function(f->second, "\\" + cmd, depth);
     }
     if (cmd == "operatorname") {
       take_command();
@@ -518,32 +383,39 @@ class Reader {
       // Any name: the expression reader knows its functions (EllipticK, atan2) and names the
       // one it does not.
       if (name.empty()) fail("\\operatorname{} without a name");
-      out.factor(function(name, "\\operatorname{" + name + "}", depth));
-      return;
+      return function(name, "\\operatorname{" + name + "}", depth);
     }
     if (text_wrappers().count(cmd)) {
-      // \mathrm{m}: a symbol set upright; a word that names one.
+      // \mathrm{m}: a symbol set upright, or a word that names one.
       const std::size_t start = i_;
       take_command();
       const std::string word = braced_word();
-      if (function_names().count(word)) {
-        out.factor(function(word, word, depth));
-      } else if (table_.contains(word)) {
-        out.factor({word, true, false});
-      } else {
-        i_ = start;
-        out.factor(symbol_piece(atom()));
-      }
-      return;
+      if (function_names().count(word)) return function(word, word, depth);
+      if (table_.contains(word)) return {word, true, false};
+      i_ = start;
+      return symbol_piece(atom());
     }
-    if (accents().count(cmd) || greek().count(cmd)) {
-      out.factor(symbol_piece(atom()));
-      return;
-    }
+    if (accents().count(cmd) || greek().count(cmd)) return symbol_piece(atom());
     if (cmd == "pm" || cmd == "mp") fail("'\\" + cmd + "' gives two answers; type one");
     fail("\\" + cmd +
          " is not read (fractions, roots, powers, Greek letters, functions, pmatrix and "
          "\\mathrm units are)");
+  }
+
+  // \sqrt{x}, \sqrt[n]{x}.
+  Piece root(int depth) {
+    take_command();
+    skip_spaces();
+    std::optional<Piece> index;
+    if (at('[')) {
+      ++i_;
+      index = expr(depth + 1);
+      expect(']');
+    }
+    const Piece x = argument(depth);
+    const bool symbolic = x.symbolic || (index && index->symbolic);
+    if (!index) return {"sqrt" + x.text, symbolic, false};
+    return {"(" + x.text + "^(1/(" + index->text + ")))", symbolic, false};
   }
 
   // The letters of {word} after \operatorname or \mathrm (spacing inside dropped).
@@ -590,7 +462,7 @@ class Reader {
       if (symbol_next) {
         Out one;
         if (!number_part.empty()) one.factor({number_part});
-        one.factor(symbol_piece(is_letter(s_[i_]) ? atom_from_letter() : atom()));
+        one.factor(is_letter(s_[i_]) ? letter_symbol() : symbol_piece(atom()));
         if (at('^')) power(one, depth + 1);
         arg = {"(" + one.p.text + ")", true, false};
       } else if (!number_part.empty()) {
@@ -686,9 +558,6 @@ class Reader {
     return true;
   }
 
-  // A letter that is the last of its run may carry a subscript: I_1.
-  Atom atom_from_letter() { return atom(); }
-
   // The problem's symbol an atom names: by its LaTeX, else by the ASCII name its parts spell
   // (\dot\psi_0 -> psidot0, \alpha -> alpha, \varphi -> phi).
   Piece symbol_piece(const Atom& a) {
@@ -733,8 +602,18 @@ class Reader {
     }
     // "0.21kg": a unit glued to a plain number, where its first letter is no symbol.
     if (!table_.contains(run.substr(0, 1)) && unit_here(out, depth)) return;
-    // psidot_0: the name with the subscript's digits.
-    if (end < s_.size() && s_[end] == '_' && run.size() > 1) {
+    out.factor(letter_symbol());
+  }
+
+  // The symbol a run of letters begins with: a name with a subscript's digits (psidot_0), the
+  // longest name of two letters or more (omega, psidot0, I1), else one letter as LaTeX reads it
+  // (with its subscript if it is the run's last).
+  Piece letter_symbol() {
+    std::size_t end = i_;
+    while (end < s_.size() && std::isalnum(static_cast<unsigned char>(s_[end]))) ++end;
+    const std::string run = s_.substr(i_, end - i_);
+    const bool subscripted = end < s_.size() && s_[end] == '_';
+    if (subscripted && run.size() > 1) {
       const std::size_t save = i_;
       i_ = end;
       const std::string sub = subscript();
@@ -742,29 +621,18 @@ class Reader {
       for (const char c : sub) {
         if (std::isalnum(static_cast<unsigned char>(c))) bare += c;
       }
-      if (table_.contains(run + bare)) {
-        out.factor({run + bare, true});
-        return;
-      }
+      if (table_.contains(run + bare)) return {run + bare, true};
       if (table_.contains(run)) unknown_symbol(run + "_{" + sub + "}");
       i_ = save;
     }
-    // The longest name the run begins with, of two letters or more (omega, psidot0, I1); else
-    // one letter, as LaTeX reads it.
     for (std::size_t n = run.size(); n >= 2; --n) {
-      if (table_.contains(run.substr(0, n)) &&
-          !(n == run.size() && end < s_.size() && s_[end] == '_')) {
+      if (table_.contains(run.substr(0, n)) && !(n == run.size() && subscripted)) {
         i_ += n;
-        out.factor({run.substr(0, n), true});
-        return;
+        return {run.substr(0, n), true};
       }
     }
-    if (run.size() > 1) {
-      // One letter, without the subscript that belongs to the run's last.
-      out.factor(symbol_piece(Atom{"", std::string(1, s_[i_++]), ""}));
-      return;
-    }
-    out.factor(symbol_piece(atom()));
+    if (run.size() > 1) return symbol_piece(Atom{"", std::string(1, s_[i_++]), ""});
+    return symbol_piece(atom());
   }
 
   // ---- matrices -----------------------------------------------------------------------------

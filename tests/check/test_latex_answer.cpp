@@ -44,6 +44,7 @@ TEST_CASE("LaTeX constructs become plain text with their products written out") 
   REQUIRE(text("mR^2") == "m*R^2");  // in LaTeX a letter is a symbol
   REQUIRE(text("2\\omega\\cos\\alpha") == "2*omega*cos(alpha)");
   REQUIRE(text("\\sin 2\\alpha") == "sin(2*alpha)");
+  REQUIRE(text("\\sin alpha") == "sin(alpha)");  // a name spelled out, whole
   REQUIRE(text("\\cos^{2}\\left(\\alpha\\right)") == "cos(alpha)^(2)");
   REQUIRE(text("\\sqrt{m}\\,R") == "sqrt(m)*R");
   REQUIRE(text("\\sqrt[3]{m}") == "((m)^(1/(3)))");
