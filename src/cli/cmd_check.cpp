@@ -20,7 +20,8 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
   auto* part = app.add_option("part", opt.part, "Part id (a, b, ...); may be left out with --name");
   auto* answer = app.add_option(
       "--answer", opt.answer,
-      "Your answer: 0.21 kg m^2, 3.1 rad/s, 12 deg, [1, 0, 2], [[..],[..],[..]], m*a^2/6");
+      "Your answer: 0.21 kg m^2, 3.1 rad/s, 12 deg, [1, 0, 2], [[..],[..],[..]], m*a^2/6, "
+      "m·a²/6 or \\frac{m a^2}{6}");
   auto* answers = app.add_option(
       "--answers", opt.answers,
       "A file with every answer, one per line (NAME = ANSWER; `variant = N` for your values)");
