@@ -153,7 +153,6 @@ class Reader {
       p.text += f.text;
       p.symbolic = p.symbolic || f.symbolic;
       p.matrix = factors == 0 && f.matrix;
-      if (factors > 0) p.matrix = false;
       factor_last = true;
       ++factors;
     }
@@ -164,10 +163,16 @@ class Reader {
     }
   };
 
-  Piece expr(int depth) {
+  // Every recursion passes here or through argument(): each bounds the depth, so that no input
+  // overflows the stack (\frac\frac\frac... nests without a brace; 14000 deep crashed).
+  void check_depth(int depth) const {
     if (depth > sym::kMaxExpressionDepth) {
       fail("nested deeper than " + std::to_string(sym::kMaxExpressionDepth) + " levels");
     }
+  }
+
+  Piece expr(int depth) {
+    check_depth(depth);
     Out out;
     while (!at_end() && unit_.empty()) {
       const char c = s_[i_];
@@ -297,6 +302,7 @@ class Reader {
 
   // An argument of \frac, \sqrt or ^: a braced group, or one character or command.
   Piece argument(int depth) {
+    check_depth(depth);
     skip_spaces();
     if (at('{')) {
       ++i_;

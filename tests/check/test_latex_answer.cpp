@@ -117,4 +117,11 @@ TEST_CASE("what LaTeX reading refuses, it names in one line") {
   // Deep nesting is refused, not recursed into without end.
   REQUIRE_THAT(refused(std::string(300, '{') + "m" + std::string(300, '}')),
                Catch::Contains("nested deeper than"));
+  // Nesting without a brace too: each \frac's arguments are single tokens here.
+  std::string fractions;
+  for (int k = 0; k < 14000; ++k) fractions += "\\frac";
+  REQUIRE_THAT(refused(fractions + std::string(14001, '1')), Catch::Contains("nested deeper than"));
+  std::string roots;
+  for (int k = 0; k < 14000; ++k) roots += "\\sqrt";
+  REQUIRE_THAT(refused(roots + "m"), Catch::Contains("nested deeper than"));
 }

@@ -22,6 +22,9 @@ struct Row {
 std::vector<Row> catalog() {
   const std::string tensor_body =
       "[body]\ntensor = [[\"m\", \"0\", \"0\"], [\"0\", \"m\", \"0\"], [\"0\", \"0\", \"3*m\"]]\n";
+  std::string fractions;  // \frac\frac...11..1: nested with no brace to count
+  for (int k = 0; k < 14000; ++k) fractions += "\\frac";
+  fractions += std::string(14001, '1');
   return {
       {"unknown problem", {"solve", "no-such"}, 2, {"unknown problem 'no-such'", "known: "}},
       {"missing file",
@@ -289,6 +292,10 @@ std::vector<Row> catalog() {
        {"check", "flying-plate", "a", "--name", "I0", "--answer", "\\frac{m R^2}{4"},
        2,
        {"--answer: '}' missing"}},
+      {"LaTeX fractions nested 14000 deep without a brace (overflowed the stack)",
+       {"check", "flying-plate", "a", "--name", "I0", "--answer", fractions},
+       2,
+       {"--answer: nested deeper than 100 levels"}},
       {"a LaTeX command that is not read",
        {"check", "flying-plate", "a", "--name", "I0", "--answer", "\\int_0^R m\\,dr"},
        2,
