@@ -1,5 +1,6 @@
 #include "check/latex_answer.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <optional>
@@ -70,11 +71,13 @@ class Reader {
   int bars_ = 0;  // plain |..| open around here
   std::map<std::string, std::string> by_key_;
   std::string unit_;
+  std::size_t longest_name_ = 1;  // of the problem's symbols
 
   [[noreturn]] void fail(const std::string& what) const { throw InputError(field_ + ": " + what); }
 
   void index_symbols() {
     for (const auto& name : table_.names()) {
+      longest_name_ = std::max(longest_name_, name.size());
       Reader r(table_.latex_of(name), table_, field_);
       if (const auto key = r.atom_key_of_whole()) by_key_.emplace(*key, name);
     }
@@ -597,12 +600,21 @@ class Reader {
   }
 
   // A run of letters: a function's name, a symbol's ASCII name, or letters each a symbol.
-  void letters(Out& out, int depth) {
+  // The run of letters and digits at i, at most `limit` long; `whole` if it ends there.
+  std::pair<std::string, bool> run_at(std::size_t limit) const {
     std::size_t end = i_;
-    while (end < s_.size() && std::isalnum(static_cast<unsigned char>(s_[end]))) ++end;
-    const std::string run = s_.substr(i_, end - i_);
-    if (function_names().count(run)) {
-      i_ = end;
+    while (end < s_.size() && end - i_ < limit && std::isalnum(static_cast<unsigned char>(s_[end])))
+      ++end;
+    const bool whole = end >= s_.size() || !std::isalnum(static_cast<unsigned char>(s_[end]));
+    return {s_.substr(i_, end - i_), whole};
+  }
+
+  void letters(Out& out, int depth) {
+    // Function names are short: a run is looked at no further (a long run is read a letter at a
+    // time, and rescanning it whole for each letter took time cubic in its length).
+    const auto [run, whole] = run_at(16);
+    if (whole && function_names().count(run)) {
+      i_ += run.size();
       out.factor(function(run, run, depth));
       return;
     }
@@ -613,12 +625,11 @@ class Reader {
 
   // The symbol a run of letters begins with: a name with a subscript's digits (psidot_0), the
   // longest name of two letters or more (omega, psidot0, I1), else one letter as LaTeX reads it
-  // (with its subscript if it is the run's last).
+  // (with its subscript if it is the run's last). Looks no further than the longest name.
   Piece letter_symbol() {
-    std::size_t end = i_;
-    while (end < s_.size() && std::isalnum(static_cast<unsigned char>(s_[end]))) ++end;
-    const std::string run = s_.substr(i_, end - i_);
-    const bool subscripted = end < s_.size() && s_[end] == '_';
+    const auto [run, whole] = run_at(longest_name_ + 1);
+    const std::size_t end = i_ + run.size();
+    const bool subscripted = whole && end < s_.size() && s_[end] == '_';
     if (subscripted && run.size() > 1) {
       const std::size_t save = i_;
       i_ = end;

@@ -121,6 +121,10 @@ TEST_CASE("what LaTeX reading refuses, it names in one line") {
   std::string fractions;
   for (int k = 0; k < 14000; ++k) fractions += "\\frac";
   REQUIRE_THAT(refused(fractions + std::string(14001, '1')), Catch::Contains("nested deeper than"));
+  // A long run of letters is read in time linear in its length (it took cubic: 20000 letters ran
+  // for minutes); each letter is a symbol, R here, and the product is refused by the expression
+  // reader's length limit, not here.
+  REQUIRE(text_of(plate, "\\alpha " + std::string(20000, 'R')).size() == 6 + 2 * 20000 - 1);
   std::string roots;
   for (int k = 0; k < 14000; ++k) roots += "\\sqrt";
   REQUIRE_THAT(refused(roots + "m"), Catch::Contains("nested deeper than"));
