@@ -24,6 +24,8 @@ namespace wobble::check {
 
 namespace {
 const std::string kField = "--answer";
+// The sides of '=' judged at most: a key's line "closed form = value", its name dropped.
+constexpr std::size_t kMostSides = 2;
 // Two expressions that agree to this relative difference at four parameter points are taken as
 // the same function: 40-digit evaluation leaves ~1e-16, so only a different expression (or one
 // that equals the key's at exactly those points, which the point choice makes unlikely) is
@@ -334,6 +336,14 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // "$$ m R^2/4 = 0.00072 $$": the delimiters are around both sides.
   const auto parts = sides(without_math_delimiters(text), a.name);
   if (parts.size() == 1) return judge_one(ctx, a, parts[0], options);
+  // A key's line has a closed form and a value; judging more sides only costs time (each may be
+  // an expression to simplify).
+  if (parts.size() > kMostSides) {
+    throw InputError(
+        fmt::format("{}: {} sides of '='; give the answer, or a key's line: its "
+                    "closed form = its value",
+                    kField, parts.size()));
+  }
   // "m·R²/4 = 0.00072 kg m²": every side is judged, and must be right.
   Verdict first;
   for (std::size_t k = 0; k < parts.size(); ++k) {

@@ -193,6 +193,10 @@ TEST_CASE("a key line with '=' is judged side by side, the answer's own name dro
       "I0 = " + sym::to_unicode(i0.symbolic) + "\n       = " + printed_value(i0);
   REQUIRE(plate.check("I0", line).correct);
   REQUIRE(plate.check("I0", "       = " + printed_value(i0)).correct);  // its second line alone
+  // More sides than a key's line has are refused, not each simplified in turn.
+  REQUIRE_THAT(error_of(plate, "I0", "m*R^2/4 = m*R^2/4 = " + printed_value(i0)),
+               Catch::Equals("--answer: 3 sides of '='; give the answer, or a key's line: its "
+                             "closed form = its value"));
   // Another answer's name on the left is no name to drop: it is read, and I is no symbol here.
   REQUIRE_THROWS_AS(plate.check("I0", "I = " + i0.symbolic), InputError);
   // Every side must be right; the wrong one is named.
