@@ -250,9 +250,6 @@ std::string without_option(const std::string& message) {
   return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
 }
 
-namespace {
-// The letters and digits of a name however it is written: "L_{0,\mathrm{body}}", "L0_body" and
-// "L₀_body" are all "L0body".
 std::string name_spelling(const std::string& written) {
   const std::string s = sym::to_ascii(written);
   std::string out;
@@ -269,6 +266,7 @@ std::string name_spelling(const std::string& written) {
   return out;
 }
 
+namespace {
 // The sides of an answer as a key line shows it, "I0 = m·R²/4 = 0.00072 kg m²": split at each
 // '=' outside brackets, the answer's own name (or nothing) on the left dropped.
 std::vector<std::string> sides(const std::string& text, const std::string& name) {

@@ -66,6 +66,10 @@ Options options_for(const Answer& a, const Options& options);
 Verdict judge(const Context& ctx, const Answer& expected, const std::string& text,
               const Options& opt);
 
+/// The letters and digits of an answer's name however it is written, to compare names by:
+/// "L_{0,\mathrm{body}}" (LaTeX), "L₀_body" (Unicode) and "L0_body" are all "L0body".
+std::string name_spelling(const std::string& written);
+
 /// A refusal from judge() without the command-line option it names ("--answer: "), for the
 /// surfaces where the student typed no option (a submission file, the worksheet, the browser).
 std::string without_option(const std::string& message);

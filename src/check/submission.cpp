@@ -86,10 +86,25 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
           fmt::format("line {}: {} is answered twice (the first is judged)", line.number, line.name));
     }
   }
+  // A line names an answer by its name, or else by its name's spelling: "I_0 = ..." or
+  // "L_{0,\mathrm{body}} = ..." as a LaTeX handout sets the names.
+  // (Each spelt once: a submission may have thousands of lines.)
+  std::map<std::string, std::string> spelt;
+  for (const auto& [name, line] : given) spelt.emplace(name, name_spelling(name));
+  // The first line naming it.
+  const auto line_for = [&](const std::string& name) {
+    const std::string spelling = name_spelling(name);
+    auto first = given.end();
+    for (auto g = given.begin(); g != given.end(); ++g) {
+      const bool names = g->first == name || spelt.at(g->first) == spelling;
+      if (names && (first == given.end() || g->second.number < first->second.number)) first = g;
+    }
+    return first;
+  };
   for (const auto& part : ctx.key.parts) {
     for (const auto& a : part.answers) {
       SubmittedAnswer s{part.id, a.name, false, "", {}};
-      const auto it = given.find(a.name);
+      const auto it = line_for(a.name);
       if (it == given.end() || it->second.answer.empty()) {
         s.verdict = {false, "incorrect: " + a.name + " is not answered", {}};
       } else {
@@ -105,12 +120,20 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
       result.answers.push_back(std::move(s));
     }
   }
+  std::map<std::string, std::string> answer_spelling;
+  for (const auto& s : result.answers) answer_spelling.emplace(s.name, name_spelling(s.name));
   for (const auto& [name, line] : given) {
     std::string names;
-    for (const auto& s : result.answers) names += (names.empty() ? "" : ", ") + s.name;
+    const SubmittedAnswer* again = nullptr;
+    for (const auto& s : result.answers) {
+      names += (names.empty() ? "" : ", ") + s.name;
+      if (answer_spelling.at(s.name) == spelt.at(name)) again = &s;
+    }
     result.problems.push_back(
-        fmt::format("line {}: '{}' is no answer of this problem (answers: {})", line.number, name,
-                    names));
+        again != nullptr ? fmt::format("line {}: '{}' answers {} again (the first is judged)",
+                                       line.number, name, again->name)
+                         : fmt::format("line {}: '{}' is no answer of this problem (answers: {})",
+                                       line.number, name, names));
   }
   return result;
 }

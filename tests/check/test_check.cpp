@@ -11,9 +11,10 @@
 #include "check/check_fixture.hpp"
 #include "check/diagnosis.hpp"
 #include "check/judge.hpp"
+#include "check/submission.hpp"
 #include "check/units.hpp"
-#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
+#include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/value_text.hpp"
 #include "temp_files.hpp"
@@ -516,4 +517,31 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
   angle.value = Value::scalar(0.5);
   CHECK_THAT(first(angle, {0.5 * 180 / M_PI}, "rad"), Catch::Contains("in degrees"));
   REQUIRE(wobble::check::known_mistakes().size() == 8);
+}
+
+TEST_CASE(
+    "a submission names answers as written, in LaTeX too; a second line and a stray name are "
+    "reported") {
+  const Fixture plate("flying-plate");
+  const std::string text =
+      "# the flying plate\n"
+      "I_0 = \\frac{m R^{2}}{4}\n"  // as a LaTeX handout sets the name
+      "L_{0,\\mathrm{body}}: [m*R^2*omega*sin(alpha)/4, 0, m*R^2*omega*cos(alpha)/2]\n"
+      "I0 = m*R^2/2\n"  // I0 again: the first line is judged
+      "Omega: 3\n";
+  const SubmissionResult r = judge_submission({plate.key, plate.table, plate.values}, text, {});
+  const auto verdict = [&](const std::string& name) {
+    for (const auto& s : r.answers) {
+      if (s.name == name) return s.verdict;
+    }
+    throw std::logic_error("no answer " + name);
+  };
+  REQUIRE(verdict("I0").correct);
+  REQUIRE(verdict("L0_body").correct);
+  REQUIRE_FALSE(verdict("I").correct);  // not answered
+  REQUIRE(r.problems.size() == 2);
+  REQUIRE_THAT(r.problems, Catch::VectorContains(
+                               std::string("line 4: 'I0' answers I0 again (the first is judged)")));
+  REQUIRE_THAT(r.problems[0] + r.problems[1],
+               Catch::Contains("line 5: 'Omega' is no answer of this problem (answers: I0, I, "));
 }
