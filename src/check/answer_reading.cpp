@@ -222,10 +222,7 @@ std::string prepared(const std::string& typed) {
     if (c == '}') c = ']';
   }
   // "$m*R^2/4$": the math delimiters of a LaTeX or Markdown source around plain text.
-  if (const std::string t = trim(s); t.size() >= 2 && t.front() == '$' && t.back() == '$') {
-    const std::size_t first = t.find_first_not_of('$');
-    s = first == std::string::npos ? "" : t.substr(first, t.find_last_not_of('$') + 1 - first);
-  }
+  s = without_math_delimiters(s);
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
   for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
     s.replace(at, 2, "^");

@@ -13,6 +13,7 @@
 #include "check/axes_judge.hpp"
 #include "check/diagnosis.hpp"
 #include "check/latex_answer.hpp"
+#include "check/latex_vocabulary.hpp"
 #include "check/text.hpp"
 #include "check/units.hpp"
 #include "core/inertia.hpp"
@@ -258,7 +259,7 @@ std::string name_spelling(const std::string& written) {
       std::size_t j = i + 1;
       while (j < s.size() && std::isalpha(static_cast<unsigned char>(s[j]))) ++j;
       const std::string cmd = s.substr(i + 1, j - i - 1);
-      if (cmd == "mathrm" || cmd == "text" || cmd == "rm" || cmd == "textrm") i = j - 1;
+      if (text_wrappers().count(cmd)) i = j - 1;
       continue;
     }
     if (std::isalnum(static_cast<unsigned char>(s[i]))) out += s[i];

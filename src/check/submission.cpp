@@ -86,18 +86,26 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
           fmt::format("line {}: {} is answered twice (the first is judged)", line.number, line.name));
     }
   }
-  // A line names an answer by its name, or else by its name's spelling: "I_0 = ..." or
-  // "L_{0,\mathrm{body}} = ..." as a LaTeX handout sets the names.
-  // (Each spelt once: a submission may have thousands of lines.)
-  std::map<std::string, std::string> spelt;
-  for (const auto& [name, line] : given) spelt.emplace(name, name_spelling(name));
-  // The first line naming it.
-  const auto line_for = [&](const std::string& name) {
-    const std::string spelling = name_spelling(name);
+  // A line names an answer by its name, or, if that is no answer's name, by its spelling:
+  // "I_0 = ..." or "L_{0,\mathrm{body}} = ..." as a LaTeX handout sets the names. Each name is
+  // spelt once (a submission may have thousands of lines).
+  std::map<std::string, std::string> spelling;  // of each answer's name and each line's
+  for (const auto& part : ctx.key.parts) {
+    for (const auto& a : part.answers) spelling.emplace(a.name, name_spelling(a.name));
+  }
+  const std::map<std::string, std::string> answer_spelling = spelling;
+  for (const auto& [name, line] : given) spelling.emplace(name, name_spelling(name));
+  const auto names = [&](const std::string& line_name, const std::string& answer) {
+    return line_name == answer || (answer_spelling.count(line_name) == 0 &&
+                                   spelling.at(line_name) == answer_spelling.at(answer));
+  };
+  // The first line naming the answer.
+  const auto line_for = [&](const std::string& answer) {
     auto first = given.end();
     for (auto g = given.begin(); g != given.end(); ++g) {
-      const bool names = g->first == name || spelt.at(g->first) == spelling;
-      if (names && (first == given.end() || g->second.number < first->second.number)) first = g;
+      if (names(g->first, answer) &&
+          (first == given.end() || g->second.number < first->second.number))
+        first = g;
     }
     return first;
   };
@@ -120,20 +128,18 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
       result.answers.push_back(std::move(s));
     }
   }
-  std::map<std::string, std::string> answer_spelling;
-  for (const auto& s : result.answers) answer_spelling.emplace(s.name, name_spelling(s.name));
   for (const auto& [name, line] : given) {
-    std::string names;
+    std::string all;
     const SubmittedAnswer* again = nullptr;
     for (const auto& s : result.answers) {
-      names += (names.empty() ? "" : ", ") + s.name;
-      if (answer_spelling.at(s.name) == spelt.at(name)) again = &s;
+      all += (all.empty() ? "" : ", ") + s.name;
+      if (names(name, s.name)) again = &s;
     }
     result.problems.push_back(
         again != nullptr ? fmt::format("line {}: '{}' answers {} again (the first is judged)",
                                        line.number, name, again->name)
                          : fmt::format("line {}: '{}' is no answer of this problem (answers: {})",
-                                       line.number, name, names));
+                                       line.number, name, all));
   }
   return result;
 }

@@ -1,6 +1,7 @@
 #include "solvers/key.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,11 +28,10 @@ const PartKey* find_part(const std::vector<PartKey>& parts, const std::string& p
   return nullptr;
 }
 
-// Names or ids joined for a message: "I0, I".
-template <class Items, class Name>
-std::string listed(const Items& items, Name name) {
-  std::string out;
-  for (const auto& x : items) out += (out.empty() ? "" : ", ") + name(x);
+// The names of answers, for a message.
+std::vector<std::string> names_of(const std::vector<Answer>& answers) {
+  std::vector<std::string> out;
+  for (const auto& a : answers) out.push_back(a.name);
   return out;
 }
 }  // namespace
@@ -49,31 +49,30 @@ const Answer& find_answer(const Key& key, const std::string& part_id, const std:
   };
   const PartKey* part = find_part(key.parts, part_id, name);
   if (part == nullptr && part_id.empty()) {
-    std::string names;
+    std::vector<std::string> names;
     for (const auto& p : key.parts) {
-      if (!p.answers.empty())
-        names +=
-            (names.empty() ? "" : ", ") + listed(p.answers, [](const Answer& a) { return a.name; });
+      for (const auto& n : names_of(p.answers)) names.push_back(n);
     }
     throw AnswerNotFound(fmt::format("{}: problem {} has no answer '{}' (answers: {})", name_field,
-                                     key.problem, shown(name), names));
+                                     key.problem, shown(name), fmt::join(names, ", ")));
   }
   if (part == nullptr) {
+    std::vector<std::string> ids;
+    for (const auto& p : key.parts) ids.push_back(p.id);
     throw AnswerNotFound(fmt::format("{}: problem {} has no part '{}' (parts: {})", part_field,
-                                     key.problem, shown(part_id),
-                                     listed(key.parts, [](const PartKey& p) { return p.id; })));
+                                     key.problem, shown(part_id), fmt::join(ids, ", ")));
   }
   if (part->answers.empty()) {
     throw AnswerNotFound(fmt::format(
         "{}: part {} of {} has nothing to check at these values ({} do not exist; the key says "
         "why)",
         part_id.empty() ? name_field : part_field, part->id, key.problem,
-        listed(part->absent, [](const std::string& a) { return a; })));
+        fmt::join(part->absent, ", ")));
   }
   for (const auto& a : part->answers) {
     if (a.name == name || (name.empty() && part->answers.size() == 1)) return a;
   }
-  const std::string names = listed(part->answers, [](const Answer& a) { return a.name; });
+  const std::string names = fmt::format("{}", fmt::join(names_of(part->answers), ", "));
   if (name.empty()) {
     throw AnswerNotFound(
         fmt::format("{}: part {} has several answers; name one ({})", name_field, part->id, names));
