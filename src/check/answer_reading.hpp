@@ -15,13 +15,13 @@
 /// - powers as Python writes them, "R**2", and a trigonometric power as textbooks do,
 ///   "cos^2(alpha)" or "cos²(α)" for cos(alpha)^2;
 /// - a subscript as LaTeX writes it, "psidot_0" for the problem's psidot0;
-/// - a unit after the value, "0.00072 kg m²", "(0, 0, 9.66) rad/s" (units.hpp).
+/// - a unit after the value, "0.00072 kg m²", "(0, 0, 9.66) rad/s" (symbolic/symbolic/units.hpp).
 /// A unit glued to a plain number ("45deg", "0.21kg") is read as such unless the problem uses one
 /// of its letters as a symbol: where m is a mass, "2m" is ambiguous and refused.
 #include <optional>
 #include <string>
 
-#include "check/units.hpp"
+#include "symbolic/units.hpp"
 #include "symbolic/value_text.hpp"
 
 namespace wobble::check {

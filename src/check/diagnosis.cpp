@@ -68,7 +68,7 @@ Wrong reversed_sign(const Answer& a, const Key&, const Unit&) {
 }
 
 bool pure_angle(const Unit& u) { return u.angle && u.dim == std::array<int, 3>{0, 0, 0}; }
-// Rates: rad/s and 1/s alike (units.hpp).
+// Rates: rad/s and 1/s alike (symbolic/symbolic/units.hpp).
 bool per_second(const Unit& u) { return u.dim == std::array<int, 3>{0, 0, -1}; }
 
 Wrong degrees_for_radians(const Answer& a, const Key&, const Unit& key_unit) {

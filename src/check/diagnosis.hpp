@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "check/units.hpp"
 #include "solvers/key.hpp"
+#include "symbolic/units.hpp"
 
 namespace wobble::check {
 

@@ -15,10 +15,10 @@
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
 #include "check/text.hpp"
-#include "check/units.hpp"
 #include "core/inertia.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"
+#include "symbolic/units.hpp"
 #include "symbolic/value_text.hpp"
 
 namespace wobble::check {
@@ -300,8 +300,8 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
   const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
   double to_key = 1.0;
   if (p.unit) {
-    // Radians are pure numbers (units.hpp): rad/s is 1/s. An angle unit is wrong only where the
-    // key is a pure number that is no angle.
+    // Radians are pure numbers (symbolic/symbolic/units.hpp): rad/s is 1/s. An angle unit is wrong
+    // only where the key is a pure number that is no angle.
     const bool pure_number_key = key_unit.dim == std::array<int, 3>{0, 0, 0} && !key_unit.angle;
     if (!p.unit->same_dimension(key_unit) || (p.unit->angle && pure_number_key)) {
       Verdict v;

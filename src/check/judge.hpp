@@ -3,7 +3,8 @@
 /// Judging a student's answer against the key (`wobble check`).
 ///
 /// An answer is a number, a vector "[x, y, z]" or a matrix "[[..], [..], [..]]", each optionally
-/// followed by a unit (units.hpp; none means SI), or an expression in the problem's symbols
+/// followed by a unit (symbolic/units.hpp; none means SI), or an expression in the problem's
+/// symbols
 /// ("m*a^2/6"). Numbers are right within a relative tolerance (1% by default, or the answer's
 /// `tolerance` in the problem file, or the user's) of the key's
 /// value, or, with sigfigs N, when the key rounds to them at N significant digits; a zero is

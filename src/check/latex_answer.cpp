@@ -10,9 +10,9 @@
 
 #include "check/latex_vocabulary.hpp"
 #include "check/text.hpp"
-#include "check/units.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"
+#include "symbolic/units.hpp"
 
 namespace wobble::check {
 namespace {

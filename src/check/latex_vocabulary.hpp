@@ -35,7 +35,7 @@ const std::set<std::string>& text_wrappers();
 /// Delimiter sizes: \big, \Bigl, \biggr, ...
 const std::set<std::string>& sizes();
 
-/// A unit as LaTeX sets it, in the unit grammar's words (units.hpp):
+/// A unit as LaTeX sets it, in the unit grammar's words (symbolic/symbolic/units.hpp):
 /// "\,\mathrm{kg\,m^{2}/s}" -> "kg m^2/s", "^\circ" -> "deg". nullopt for what no unit has (a
 /// command other than spacing, \mathrm, \cdot between units; a start other than a unit's name
 /// or 1/).

@@ -18,7 +18,9 @@ namespace wobble::cli {
 
 void setup_simulate(CLI::App& app, SimulateOptions& opt) {
   app.add_option("scene", opt.scene, "Scene id (a file in scenes/) or a .toml file")->required();
-  app.add_option("--set", opt.sets, "Parameter value NAME=VALUE in SI (angles also as 30deg)")
+  app.add_option(
+         "--set", opt.sets,
+         "Parameter value NAME=VALUE, in SI or with a unit (R=5 cm, theta0=30deg), as for solve")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--variant", opt.variant,
@@ -75,8 +77,8 @@ int run_simulate(const SimulateOptions& opt) {
   // An unwritable target is found before the work, not after it.
   if (!opt.out.empty()) require_writable(opt.out);
   if (!opt.plot.empty()) require_writable(opt.plot);
-  require_each_set_once(opt.sets);
   Scene scene = find_scene(opt.scene);
+  require_each_set_once(scene.model, opt.sets);
   if (opt.samples) scene.samples = static_cast<int>(*opt.samples);
   if (!opt.t_end.empty()) scene.t_end = opt.t_end;  // read and checked (> 0) as run.t_end
   std::vector<std::string> assignments;

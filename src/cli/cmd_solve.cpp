@@ -22,7 +22,8 @@ void setup_solve(CLI::App& app, SolveOptions& opt) {
   app.add_option("problem", opt.problem, "Problem id (see `wobble list`) or a .toml file")
       ->required();
   app.add_option("--set", opt.sets,
-                 "Parameter value NAME=VALUE in SI (angles also as 30deg); repeatable")
+                 "Parameter value NAME=VALUE, in SI or with a unit (R=5 cm, theta0=30deg, as a key "
+                 "prints it); repeatable")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--format", opt.format, "Output format")

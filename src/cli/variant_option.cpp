@@ -7,7 +7,7 @@ namespace wobble::cli {
 
 std::vector<std::string> with_variant(const Problem& problem, std::optional<long> variant,
                                       const std::vector<std::string>& sets) {
-  require_each_set_once(sets);
+  require_each_set_once(problem, sets);
   std::vector<std::string> out;
   if (variant) out = variant_for(problem, *variant);
   out.insert(out.end(), sets.begin(), sets.end());

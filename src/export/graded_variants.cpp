@@ -10,11 +10,11 @@
 #include <set>
 
 #include "check/axes_judge.hpp"
-#include "check/units.hpp"
 #include "core/inertia.hpp"
 #include "core/input_error.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
+#include "symbolic/units.hpp"
 
 namespace wobble::exports {
 
@@ -128,8 +128,7 @@ std::pair<std::vector<GradedAnswer>, std::vector<Rejection>> grade_rules(
         g.eigenspaces = check::eigenspace_columns(
             Vec3(a.axis_moments.at(0), a.axis_moments.at(1), a.axis_moments.at(2)));
       }
-      const check::Unit unit =
-          a.unit.empty() ? check::Unit{} : check::parse_unit(a.unit, "key unit of " + a.name);
+      const Unit unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
       for (const auto& wrong : check::wrong_answers(a, key, unit)) {
         if (same_as_key(wrong.values, a, g.zero_scale)) continue;
         const check::Verdict v = check::judge(ctx, a, answer_text(a, wrong.values), options);

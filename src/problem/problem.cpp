@@ -1,6 +1,28 @@
 #include "problem/problem.hpp"
 
+#include <algorithm>
+
+#include "symbolic/unicode_notation.hpp"
+
 namespace wobble {
+
+namespace {
+std::string without(std::string s, const std::string& chars) {
+  s.erase(std::remove_if(s.begin(), s.end(),
+                         [&](char c) { return chars.find(c) != std::string::npos; }),
+          s.end());
+  return s;
+}
+
+// Whether `typed` spells p: a spelling is tried only when no parameter has it as its identifier
+// (Problem::parameter), so "theta_0" cannot take another parameter's place.
+bool spells(const Parameter& p, const std::string& typed) {
+  if (sym::to_ascii(typed) == p.name) return true;
+  if (without(typed, "_") == p.name) return true;
+  const std::string latex = without(typed, "$ ");
+  return !p.latex.empty() && (latex == p.latex || without(latex, "{}") == without(p.latex, "{} "));
+}
+}  // namespace
 
 bool Interval::contains(double x) const {
   const bool above = lo_open ? x > lo : x >= lo;
@@ -13,6 +35,9 @@ const Parameter& Problem::parameter(const std::string& name) const {
   for (const auto& p : parameters) {
     if (p.name == name) return p;
     known += (known.empty() ? "" : ", ") + p.name;
+  }
+  for (const auto& p : parameters) {
+    if (spells(p, name)) return p;
   }
   throw InputError("unknown parameter '" + name + "' for problem " + id + " (known: " + known +
                    ")");

@@ -85,6 +85,9 @@ struct Problem {
   std::vector<PartSpec> parts;
   std::filesystem::path file;
 
+  /// The parameter a name spells: its identifier ("theta0"), or as a key prints it: the
+  /// terminal's Unicode ("θ0", "ψ̇0"), a LaTeX subscript ("theta_0") or the parameter's LaTeX
+  /// (`\theta_0`, `\theta_{0}`, in $..$ or not).
   /// @throws InputError naming the unknown parameter (and the known ones).
   const Parameter& parameter(const std::string& name) const;
   /// A symbol table with one symbol per parameter (positive if its range excludes negatives).

@@ -1,10 +1,15 @@
 #include "problem/values.hpp"
 
-#include <map>
-
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <utility>
+
+#include "symbolic/unicode_notation.hpp"
+#include "symbolic/units.hpp"
 
 namespace wobble {
 
@@ -22,13 +27,16 @@ std::string shortest(double x) {
   return buf;
 }
 
-// A constant expression ("pi/6", "1e-3"), or +-inf.
-double constant_value(const std::string& text, const std::string& field) {
+// A constant expression ("pi/6", "1e-3") times an exact factor (a unit's, "1/100"), rounded
+// once; or +-inf. Messages show the text alone.
+double constant_value(const std::string& text, const std::string& field,
+                      const std::string& factor = "1") {
   const std::string t = trim(text);
   if (t == "inf" || t == "+inf") return std::numeric_limits<double>::infinity();
   if (t == "-inf") return -std::numeric_limits<double>::infinity();
   static const sym::SymbolTable no_symbols;
-  return sym::evaluate(no_symbols.parse(t, field), GiNaC::lst{}, field);
+  return sym::evaluate(no_symbols.parse(t, field) * no_symbols.parse(factor, "unit factor"),
+                       GiNaC::lst{}, field);
 }
 }  // namespace
 
@@ -51,29 +59,56 @@ Interval parse_interval(const std::string& text, const std::string& field) {
   return r;
 }
 
-double parse_parameter_value(const Parameter& p, const std::string& text,
-                             const std::string& field) {
-  std::string t = trim(text);
-  bool degrees = false;
-  for (const std::string suffix : {"deg", "°"}) {
-    if (t.size() > suffix.size() &&
-        t.compare(t.size() - suffix.size(), suffix.size(), suffix) == 0) {
-      if (!p.is_angle()) {
-        throw InputError(field + ": '" + text + "' is in degrees but " + p.name + " is in " +
-                         p.unit);
-      }
-      degrees = true;
-      t = trim(t.substr(0, t.size() - suffix.size()));
-      break;
-    }
+namespace {
+// Two sides of a parameter as a key prints it, "30° = 0.5235987756 rad": the printed side has
+// ten significant digits (format_number), so it is within half a unit of its tenth digit,
+// 5e-10 of the value, of the exact side; twice that allows for the rounding of either.
+constexpr double kPrintedSidesAgree = 1e-9;
+
+// The value and its unit, "" if none: the longest tail that reads as a unit and starts a word
+// ("0.05 m", "5cm", "9.81 m/s^2", "150 1/s"; not the "i" of "2*pi").
+std::pair<std::string, std::string> split_unit(const std::string& t) {
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    const auto c = static_cast<unsigned char>(t[k]), before = static_cast<unsigned char>(t[k - 1]);
+    const bool word = std::isalpha(c) && !std::isalpha(before) && before != '_';
+    const bool reciprocal = c == '1' && before == ' ';
+    if (!word && !reciprocal) continue;
+    const std::string value = trim(t.substr(0, k)), unit = trim(t.substr(k));
+    if (!value.empty() && is_unit(unit)) return {value, unit};
   }
+  return {t, ""};
+}
+
+// The unit of p's values, "" a pure number.
+Unit unit_of(const Parameter& p) {
+  return p.unit.empty() ? Unit{} : parse_unit(p.unit, "the unit of " + p.name);
+}
+
+// One side: a constant expression, in p's unit or with a unit of its own, converted exactly.
+double one_value(const Parameter& p, const std::string& side, const std::string& text,
+                 const std::string& field) {
+  const std::string t = trim(side);
   if (t == "inf" || t == "-inf" || t == "+inf" || t == "nan" || t == "NaN") {
     throw InputError(field + ": value must be finite, got '" + text + "'");
   }
-  double v = 0.0;
+  const auto [value, unit] = split_unit(t);
+  std::string factor = "1";
+  if (!unit.empty()) {
+    const Unit given = parse_unit(unit, field), wanted = unit_of(p);
+    // Radians are pure numbers (symbolic/units.hpp): rad/s is 1/s, and an angle unit is refused
+    // only for a pure number that is no angle.
+    const bool angle_for_number = given.angle && !wanted.angle && wanted.dim == std::array{0, 0, 0};
+    if (!given.same_dimension(wanted) || angle_for_number) {
+      throw InputError(field + ": '" + text + "' is in " + unit + " (" + given.dimension_words() +
+                       "), but " + p.name +
+                       (p.unit.empty()
+                            ? " is a pure number"
+                            : " is in " + p.unit + " (" + wanted.dimension_words() + ")"));
+    }
+    factor = "(" + given.to_si_exact + ")/(" + wanted.to_si_exact + ")";
+  }
   try {
-    // Degrees are converted exactly (x*pi/180, rounded once), so 90deg is the double of pi/2.
-    v = degrees ? constant_value("(" + t + ")*pi/180", field) : constant_value(t, field);
+    return constant_value(value, field, factor);
   } catch (const InputError& e) {
     const std::string why = e.what();
     if (why.find("characters long") != std::string::npos ||
@@ -83,8 +118,44 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
         why.find("is refused") != std::string::npos) {
       throw InputError(why);
     }
+    // "0.16 parsecs": a number and a word that is no unit; say which.
+    if (const auto space = t.rfind(' '); unit.empty() && space != std::string::npos) {
+      const std::string tail = trim(t.substr(space));
+      bool number = false;
+      try {
+        (void)constant_value(t.substr(0, space), field);
+        number = !tail.empty() && std::isalpha(static_cast<unsigned char>(tail[0]));
+      } catch (const InputError&) {
+      }
+      if (number) (void)parse_unit(tail, field);  // throws its error
+    }
     throw InputError(field + ": '" + text + "' is not a number" +
-                     (p.is_angle() ? " (an angle: radians, or degrees as 30deg)" : ""));
+                     (p.is_angle()     ? " (an angle: radians, or degrees as 30deg)"
+                      : p.unit.empty() ? ""
+                                       : " (a value in " + p.unit + ", or with its unit, as '0.5 " +
+                                             p.unit + "')"));
+  }
+}
+}  // namespace
+
+double parse_parameter_value(const Parameter& p, const std::string& text,
+                             const std::string& field) {
+  // As a key prints it: "θ0 = 30° = 0.5235987756 rad", "g = 9.81 m/s²", "π/6".
+  const std::string t = sym::to_ascii(text);
+  double v = 0.0;
+  if (const auto eq = t.find('='); eq != std::string::npos) {
+    if (t.find('=', eq + 1) != std::string::npos) {
+      throw InputError(field + ": '" + text + "' has more than two sides; give one value");
+    }
+    v = one_value(p, t.substr(0, eq), text, field);
+    const double printed = one_value(p, t.substr(eq + 1), text, field);
+    if (!(std::abs(printed - v) <= kPrintedSidesAgree * std::abs(v))) {
+      throw InputError(field + ": the two sides of '" + text + "' differ (" + shortest(v) +
+                       " and " + shortest(printed) + (p.unit.empty() ? "" : " " + p.unit) +
+                       "); give one value");
+    }
+  } else {
+    v = one_value(p, t, text, field);
   }
   if (!std::isfinite(v)) throw InputError(field + ": value must be finite, got '" + text + "'");
   if (!p.range.contains(v)) {
@@ -108,19 +179,18 @@ sym::Values parameter_values(const Problem& problem, const std::vector<std::stri
     if (eq == std::string::npos || trim(a.substr(0, eq)).empty()) {
       throw InputError("--set: expected NAME=VALUE, got '" + a + "'");
     }
-    const std::string name = trim(a.substr(0, eq));
-    const Parameter& p = problem.parameter(name);
-    values[name] = parse_parameter_value(p, a.substr(eq + 1), "--set " + name);
+    const Parameter& p = problem.parameter(trim(a.substr(0, eq)));
+    values[p.name] = parse_parameter_value(p, a.substr(eq + 1), "--set " + p.name);
   }
   return values;
 }
 
-void require_each_set_once(const std::vector<std::string>& assignments) {
+void require_each_set_once(const Problem& problem, const std::vector<std::string>& assignments) {
   std::map<std::string, std::string> seen;
   for (const auto& a : assignments) {
     const auto eq = a.find('=');
     if (eq == std::string::npos) continue;  // parameter_values says what is wrong with it
-    const std::string name = trim(a.substr(0, eq));
+    const std::string name = problem.parameter(trim(a.substr(0, eq))).name;  // "θ0" is theta0
     const auto [it, fresh] = seen.emplace(name, trim(a.substr(eq + 1)));
     if (!fresh) {
       throw InputError("--set " + name + ": given twice ('" + it->second + "' and '" +

@@ -2,9 +2,13 @@
 /// @file
 /// Parameter values: the defaults of a problem, overridden by `--set NAME=VALUE`.
 ///
-/// A value is a number or a constant expression in SI ("0.5", "pi/6", "sqrt(2)/10"); an angle
-/// (a parameter whose unit is rad) may also be given in degrees with a `deg` suffix ("30deg").
-/// Every value must be finite and inside the parameter's range.
+/// A value is a number or a constant expression in the parameter's unit, SI ("0.5", "pi/6",
+/// "sqrt(2)/10"), or with a unit of its own, converted exactly (symbolic/units.hpp): "5 cm",
+/// "500 g", "30deg", "30°", "1432 rpm", "9.81 m/s²". Whatever a key prints as a parameter's
+/// value reads back: the terminal's Unicode ("π/6") and both sides of "30° = 0.5235987756 rad"
+/// (they must agree to the printed digits; the first is taken). A unit of another dimension, or
+/// an angle for a pure number, is refused. Every value must be finite and inside the
+/// parameter's range.
 #include <string>
 #include <vector>
 
@@ -16,7 +20,8 @@ namespace wobble {
 /// @throws InputError naming the field and the text: not a number, not finite, out of range.
 double parse_parameter_value(const Parameter& p, const std::string& text, const std::string& field);
 
-/// The problem's defaults with the assignments "NAME=VALUE" applied in order.
+/// The problem's defaults with the assignments "NAME=VALUE" applied in order (NAME as
+/// Problem::parameter reads it: "theta0", "θ0", "theta_0").
 /// @throws InputError for a malformed assignment, an unknown name or a bad value.
 sym::Values parameter_values(const Problem& problem, const std::vector<std::string>& assignments);
 
@@ -24,9 +29,9 @@ sym::Values parameter_values(const Problem& problem, const std::vector<std::stri
 /// expressions, `inf` or `-inf`. @throws InputError naming the field.
 Interval parse_interval(const std::string& text, const std::string& field);
 
-/// The user's --set assignments name each parameter once (a variant's values may be overridden
-/// by them, but "--set m=1 --set m=2" is a slip, not a choice).
-/// @throws InputError naming the parameter and both values.
-void require_each_set_once(const std::vector<std::string>& assignments);
+/// The user's --set assignments name each parameter once, however spelt (a variant's values may
+/// be overridden by them, but "--set m=1 --set m=2" is a slip, not a choice).
+/// @throws InputError naming the parameter and both values, or an unknown parameter.
+void require_each_set_once(const Problem& problem, const std::vector<std::string>& assignments);
 
 }  // namespace wobble

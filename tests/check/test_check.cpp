@@ -12,10 +12,10 @@
 #include "check/diagnosis.hpp"
 #include "check/judge.hpp"
 #include "check/submission.hpp"
-#include "check/units.hpp"
 #include "problem/values.hpp"
 #include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
+#include "symbolic/units.hpp"
 #include "symbolic/value_text.hpp"
 #include "temp_files.hpp"
 

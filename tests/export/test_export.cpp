@@ -1,15 +1,14 @@
 // The exports' gradable variants: what is listed, what refuses a variant, what no variant lists;
 // and the text of a problem as a learning system's HTML.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
-#include <algorithm>
-
-#include "check/units.hpp"
 #include "export/graded_variants.hpp"
 #include "export/html_text.hpp"
 #include "problem/values.hpp"
 #include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
+#include "symbolic/units.hpp"
 
 using namespace wobble;
 using Catch::Matchers::Contains;

@@ -13,6 +13,19 @@ Parameter angle() {
   p.range = parse_interval("[0, pi/2)", "range");
   return p;
 }
+Parameter pure() {
+  Parameter p;
+  p.name = "k";
+  p.range = parse_interval("(0, 1)", "range");
+  return p;
+}
+Parameter with_unit(const std::string& unit) {
+  Parameter p;
+  p.name = "x";
+  p.unit = unit;
+  p.range = parse_interval("(-inf, inf)", "range");
+  return p;
+}
 Parameter mass() {
   Parameter p;
   p.name = "m";
@@ -40,6 +53,39 @@ TEST_CASE("values: numbers, constant expressions, degrees") {
           parse_parameter_value(angle(), "pi/4", "f"));
 }
 
+TEST_CASE("values with a unit are converted exactly, rounded once") {
+  // 5 cm is 5/100 m exactly, then rounded: the double nearest 0.05, as "0.05" itself.
+  REQUIRE(parse_parameter_value(with_unit("m"), "5 cm", "f") == 0.05);
+  REQUIRE(parse_parameter_value(with_unit("m"), "5cm", "f") == 0.05);
+  REQUIRE(parse_parameter_value(with_unit("m"), "0.05 m", "f") == 0.05);
+  REQUIRE(parse_parameter_value(mass(), "500 g", "f") == 0.5);
+  REQUIRE(parse_parameter_value(mass(), "0.5kg", "f") == 0.5);
+  REQUIRE(parse_parameter_value(mass(), "5e2 g", "f") == 0.5);
+  REQUIRE(parse_parameter_value(with_unit("kg m^2"), "2 kg m²", "f") == 2.0);
+  REQUIRE(parse_parameter_value(with_unit("kg m^2"), "2e4 g cm^2", "f") == 2e-3);
+  REQUIRE(parse_parameter_value(with_unit("m/s^2"), "9.81 m/s²", "f") == 9.81);
+  REQUIRE(parse_parameter_value(with_unit("N m"), "0.05 N m", "f") == 0.05);
+  // Rates: rad/s is 1/s; rpm and Hz count turns, 2 pi rad each, one rounding.
+  REQUIRE(parse_parameter_value(with_unit("rad/s"), "150 rad/s", "f") == 150.0);
+  REQUIRE(parse_parameter_value(with_unit("rad/s"), "150 1/s", "f") == 150.0);
+  REQUIRE(parse_parameter_value(with_unit("rad/s"), "150 s⁻¹", "f") == 150.0);
+  REQUIRE(parse_parameter_value(with_unit("rad/s"), "60 rpm", "f") ==
+          parse_parameter_value(with_unit("rad/s"), "2*pi", "f"));
+  REQUIRE(parse_parameter_value(with_unit("rad/s"), "1 Hz", "f") ==
+          parse_parameter_value(with_unit("rad/s"), "2*pi", "f"));
+  // The terminal's Unicode, as a key prints it.
+  REQUIRE(parse_parameter_value(angle(), "π/6", "f") ==
+          parse_parameter_value(angle(), "pi/6", "f"));
+  REQUIRE(parse_parameter_value(angle(), "π/6 rad", "f") ==
+          parse_parameter_value(angle(), "pi/6", "f"));
+  // Both sides of a key's "30° = 0.5235987756 rad": the exact first is taken.
+  REQUIRE(parse_parameter_value(angle(), "30° = 0.5235987756 rad", "f") ==
+          parse_parameter_value(angle(), "pi/6", "f"));
+  // A constant expression is not cut into a unit: the "i" of pi, the "e" of an exponent.
+  REQUIRE(parse_parameter_value(with_unit("m"), "2*pi", "f") == 2 * M_PI);  // doubling is exact
+  REQUIRE(parse_parameter_value(with_unit("m"), "1e-3", "f") == 1e-3);
+}
+
 TEST_CASE("values: each kind of bad value is named") {
   REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "-1", "--set m"),
                       Catch::Contains("--set m") && Catch::Contains("outside its range (0, inf)"));
@@ -50,7 +96,19 @@ TEST_CASE("values: each kind of bad value is named") {
   REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "two", "--set m"),
                       Catch::Contains("'two' is not a number"));
   REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "3deg", "--set m"),
-                      Catch::Contains("in degrees but m is in kg"));
+                      Catch::Contains("'3deg' is in deg (an angle), but m is in kg (mass)"));
+  REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "3 m", "--set m"),
+                      Catch::Contains("'3 m' is in m (length), but m is in kg (mass)"));
+  REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "3 parsecs", "--set m"),
+                      Catch::Contains("--set m") && Catch::Contains("unknown unit 'parsecs'"));
+  REQUIRE_THROWS_WITH(parse_parameter_value(pure(), "3 deg", "--set k"),
+                      Catch::Contains("'3 deg' is in deg (an angle), but k is a pure number"));
+  REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "30° = 0.6 rad", "--set alpha"),
+                      Catch::Contains("the two sides of '30° = 0.6 rad' differ"));
+  REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "30° = 0.5235987756 rad = 1", "--set alpha"),
+                      Catch::Contains("more than two sides"));
+  REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "2 kg m", "--set m"),
+                      Catch::Contains("mass x length"));
   REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "90deg", "--set alpha"),
                       Catch::Contains("outside its range [0, pi/2)"));
   REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "", "--set alpha"),

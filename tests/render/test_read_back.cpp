@@ -15,6 +15,7 @@
 #include "check/judge.hpp"
 #include "problem/values.hpp"
 #include "render/common.hpp"
+#include "render/render.hpp"
 #include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -105,7 +106,57 @@ int forms_judged(const std::function<std::vector<std::string>(const Answer&)>& f
   }
   return forms;
 }
+
+// The text key's "Parameters:" line as (name, value) pairs, each as printed: "θ0" and
+// "30° = 0.5235987756 rad", "g" and "9.81 m/s²".
+std::vector<std::pair<std::string, std::string>> printed_parameters(const Key& key) {
+  const std::string text = render_text(key), lead = "\nParameters: ";
+  const auto from = text.find(lead) + lead.size();
+  const std::string line = text.substr(from, text.find('\n', from) - from);
+  std::vector<std::pair<std::string, std::string>> out;
+  for (std::size_t at = 0; at <= line.size();) {
+    const auto end = std::min(line.find("; ", at), line.size());
+    const std::string piece = line.substr(at, end - at), eq = " = ";
+    const auto split = piece.find(eq);
+    out.emplace_back(piece.substr(0, split), piece.substr(split + eq.size()));
+    at = end + 2;
+  }
+  return out;
+}
 }  // namespace
+
+TEST_CASE("every parameter value a key prints reads back through --set, every problem") {
+  // Printed with ten significant digits: within half a unit of the tenth, 5e-10 of the value.
+  constexpr double kTenDigits = 5e-10;
+  int read = 0;
+  for (const auto& p : load_catalog()) {
+    for (const long variant : {0L, 1L, 2L}) {  // 0: the defaults
+      const std::vector<std::string> drawn =
+          variant ? variant_for(p, variant) : std::vector<std::string>{};
+      const Key key = solve(p, parameter_values(p, drawn));
+      const auto printed = printed_parameters(key);
+      REQUIRE(printed.size() == key.parameters.size());
+      for (std::size_t i = 0; i < printed.size(); ++i) {
+        const auto& [name, value] = printed[i];
+        const ParameterValue& want = key.parameters[i];
+        std::vector<std::string> values{value};
+        if (const auto eq = value.find(" = "); eq != std::string::npos) {
+          values.push_back(value.substr(0, eq));   // "30°"
+          values.push_back(value.substr(eq + 3));  // "0.5235987756 rad"
+        }
+        for (const std::string& as : {name, want.name, want.latex, "$" + want.latex + "$"}) {
+          for (const auto& v : values) {
+            INFO(p.id << " variant " << variant << ": --set " << as << "=" << v);
+            const sym::Values got = parameter_values(p, {as + "=" + v});
+            REQUIRE_THAT(got.at(want.name), Catch::Matchers::WithinRel(want.value, kTenDigits));
+            ++read;
+          }
+        }
+      }
+    }
+  }
+  REQUIRE(read > 500);  // 15 problems, three sets of values, 3 to 10 parameters, 4 names each
+}
 
 TEST_CASE("every printed form of every answer of every problem reads back as correct") {
   const int forms = forms_judged([](const Answer& a) {

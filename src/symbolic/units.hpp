@@ -1,11 +1,12 @@
 #pragma once
 /// @file
-/// Units of students' answers: a small, strict grammar (Debian has no units library for C++).
+/// Units of students' answers and of parameter values (`--set R=5 cm`): a small, strict grammar
+/// (Debian has no units library for C++).
 ///
 /// A unit is a product of names with integer powers, '/' putting what follows in the
 /// denominator: "kg m^2", "kg*m^2/s", "rad/s", "m/s^2", "deg", "rev/s", "1/s" (or "s^-1").
-/// Names: kg, g; m, cm, mm; s, ms, min, h, day (or days); rad, deg, rev; J, N, Hz, rpm. An unknown name, a
-/// missing or non-integer power is an error.
+/// Names: kg, g; m, cm, mm; s, ms, min, h, day (or days); rad, deg, rev; J, N, Hz, rpm. An unknown
+/// name, a missing or non-integer power is an error.
 ///
 /// Radians, one rule everywhere: an angle is a pure number, so rad/s and 1/s are the same unit
 /// and a radian converts as 1; a degree is pi/180 and a revolution 2 pi. Hz and rpm count
@@ -15,10 +16,13 @@
 #include <array>
 #include <string>
 
-namespace wobble::check {
+namespace wobble {
 
 struct Unit {
-  double to_si = 1.0;               ///< multiply a value in this unit by this to get SI
+  double to_si = 1.0;  ///< multiply a value in this unit by this to get SI
+  /// The same factor exactly, as a constant expression ("(1/100)^(2)", "(pi/180)^(1)"): a value
+  /// converted through it is rounded once (30 deg is the double nearest pi/6).
+  std::string to_si_exact = "1";
   std::array<int, 3> dim{0, 0, 0};  ///< powers of kg, m, s
   bool angle = false;               ///< contains rad, deg, rev, Hz or rpm
   std::string text;
@@ -33,4 +37,4 @@ Unit parse_unit(const std::string& text, const std::string& field);
 /// True if `text` reads as a unit (no throw).
 bool is_unit(const std::string& text);
 
-}  // namespace wobble::check
+}  // namespace wobble

@@ -1,4 +1,4 @@
-#include "check/units.hpp"
+#include "symbolic/units.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -6,27 +6,37 @@
 
 #include "core/input_error.hpp"
 
-namespace wobble::check {
+namespace wobble {
 
 namespace {
 struct Named {
   double to_si;
   std::array<int, 3> dim;
   bool angle;
+  const char* exact;  ///< to_si as a constant expression
 };
 
 const std::map<std::string, Named>& names() {
   static const std::map<std::string, Named> n{
-      {"kg", {1.0, {1, 0, 0}, false}},        {"g", {1e-3, {1, 0, 0}, false}},
-      {"m", {1.0, {0, 1, 0}, false}},         {"cm", {1e-2, {0, 1, 0}, false}},
-      {"mm", {1e-3, {0, 1, 0}, false}},       {"s", {1.0, {0, 0, 1}, false}},
-      {"ms", {1e-3, {0, 0, 1}, false}},       {"min", {60.0, {0, 0, 1}, false}},
-      {"h", {3600.0, {0, 0, 1}, false}},      {"rad", {1.0, {0, 0, 0}, true}},
-      {"deg", {M_PI / 180, {0, 0, 0}, true}}, {"rev", {2 * M_PI, {0, 0, 0}, true}},
-      {"J", {1.0, {1, 2, -2}, false}},        {"N", {1.0, {1, 1, -2}, false}},
-      {"Hz", {2 * M_PI, {0, 0, -1}, true}},       {"rpm", {2 * M_PI / 60, {0, 0, -1}, true}},
+      {"kg", {1.0, {1, 0, 0}, false, "1"}},
+      {"g", {1e-3, {1, 0, 0}, false, "1/1000"}},
+      {"m", {1.0, {0, 1, 0}, false, "1"}},
+      {"cm", {1e-2, {0, 1, 0}, false, "1/100"}},
+      {"mm", {1e-3, {0, 1, 0}, false, "1/1000"}},
+      {"s", {1.0, {0, 0, 1}, false, "1"}},
+      {"ms", {1e-3, {0, 0, 1}, false, "1/1000"}},
+      {"min", {60.0, {0, 0, 1}, false, "60"}},
+      {"h", {3600.0, {0, 0, 1}, false, "3600"}},
+      {"rad", {1.0, {0, 0, 0}, true, "1"}},
+      {"deg", {M_PI / 180, {0, 0, 0}, true, "pi/180"}},
+      {"rev", {2 * M_PI, {0, 0, 0}, true, "2*pi"}},
+      {"J", {1.0, {1, 2, -2}, false, "1"}},
+      {"N", {1.0, {1, 1, -2}, false, "1"}},
+      {"Hz", {2 * M_PI, {0, 0, -1}, true, "2*pi"}},
+      {"rpm", {2 * M_PI / 60, {0, 0, -1}, true, "2*pi/60"}},
       // Days, as a key's notes print long periods (the Earth's wobble): 86400 s, singular too.
-      {"day", {86400.0, {0, 0, 1}, false}},   {"days", {86400.0, {0, 0, 1}, false}},
+      {"day", {86400.0, {0, 0, 1}, false, "86400"}},
+      {"days", {86400.0, {0, 0, 1}, false, "86400"}},
   };
   return n;
 }
@@ -146,6 +156,8 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       after_denominator = true;
     }
     u.to_si *= std::pow(it->second.to_si, power);
+    if (std::string(it->second.exact) != "1")
+      u.to_si_exact += "*(" + std::string(it->second.exact) + ")^(" + std::to_string(power) + ")";
     for (int d = 0; d < 3; ++d) u.dim[d] += it->second.dim[d] * power;
     u.angle = u.angle || it->second.angle;
     any = true;
@@ -165,4 +177,4 @@ bool is_unit(const std::string& text) {
   }
 }
 
-}  // namespace wobble::check
+}  // namespace wobble
