@@ -10,6 +10,7 @@
 
 #include "check/latex_vocabulary.hpp"
 #include "check/text.hpp"
+#include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
@@ -744,14 +745,12 @@ bool looks_like_latex(const std::string& typed) {
 std::string latex_as_text(const std::string& latex, const sym::SymbolTable& table,
                           const std::string& field) {
   std::string s = sym::to_ascii(without_math_delimiters(latex));
-  for (char& c : s) {
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-    // Named by its code: a control character printed would garble the terminal's line.
-    const auto code = static_cast<unsigned char>(c);
-    if (code >= 0x80 || code < 0x20 || code == 0x7f) {
-      throw InputError(field + ": cannot read a " + (code >= 0x80 ? "non-ASCII" : "control") +
-                       " character (code " + std::to_string(code) + ") in LaTeX");
-    }
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '\n' || s[i] == '\r' || s[i] == '\t') s[i] = ' ';
+    // Named by its code point: a control character printed would garble the terminal's line.
+    const auto code = static_cast<unsigned char>(s[i]);
+    if (code >= 0x80 || code < 0x20 || code == 0x7f)
+      throw InputError(field + ": cannot read " + character_name(s, i) + " in LaTeX");
   }
   return Reader(s, table, field).read();
 }

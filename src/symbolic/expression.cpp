@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/characters.hpp"
 #include "symbolic/canonical_print.hpp"
 #include "symbolic/expression_guard.hpp"
 #include "symbolic/factored.hpp"
@@ -269,13 +270,9 @@ GiNaC::ex SymbolTable::parse(const std::string& text, const std::string& field) 
   if (text.find_first_not_of(" \t") == std::string::npos) {
     throw ExpressionError(field + ": empty expression");
   }
-  // Shown in messages: at most the first 40 characters.
-  // Control bytes (ESC would drive the terminal) and any non-ASCII byte show as '?'.
-  std::string shown = text.size() > 40 ? text.substr(0, 40) + "..." : text;
-  for (char& c : shown) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u > 0x7e) c = '?';
-  }
+  // Shown in messages as typed, at most the first 40 characters; a control character (ESC
+  // would drive the terminal) or a byte that is no UTF-8 shows as '?'.
+  const std::string shown = printable(text, 40);
   if (text.size() > kMaxExpressionLength) {
     throw ExpressionError(field + ": expression \"" + shown + "\" is " +
                           std::to_string(text.size()) + " characters long; the limit is " +

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/characters.hpp"
 #include "symbolic/unicode_notation.hpp"
 
 namespace wobble::sym {
@@ -170,11 +171,10 @@ struct Scanner {
 void check_expression_cost(const std::string& text, const std::string& field,
                            const std::string& shown, const GiNaC::symtab& symbols) {
   const Scanner s{text, field, shown, symbols};
-  for (const char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if ((u < 0x20 && c != '\t') || u > 0x7e) {
-      s.fail("it contains a control or non-ASCII character (code " + std::to_string(u) + ")");
-    }
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto u = static_cast<unsigned char>(text[i]);
+    if (u < 0x20 && text[i] != '\t') s.fail("it contains " + character_name(text, i));
+    if (u > 0x7e) s.fail("it contains " + character_name(text, i) + ", which no expression uses");
   }
   // Names: a function only from the list below (GiNaC's parser knows many more, some of which
   // compute exactly, tgamma(100000) digit by digit), anything else a declared symbol (GiNaC

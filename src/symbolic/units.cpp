@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/characters.hpp"
 #include "core/input_error.hpp"
 
 namespace wobble {
@@ -113,7 +114,11 @@ Unit parse_unit(const std::string& text, const std::string& field) {
     }
     std::size_t j = i;
     while (j < text.size() && std::isalpha(static_cast<unsigned char>(text[j]))) ++j;
-    if (j == i) return fail("unexpected '" + std::string(1, c) + "'");
+    if (j == i) {
+      return fail("unexpected " + (static_cast<unsigned char>(c) < 0x80
+                                       ? "'" + std::string(1, c) + "'"
+                                       : character_name(text, i)));
+    }
     std::string name = text.substr(i, j - i);
     if (name == "per") {  // "radians per second"
       if (denominator || !any) return fail("one 'per' or '/' after a unit");

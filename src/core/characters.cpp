@@ -1,0 +1,63 @@
+#include "core/characters.hpp"
+
+#include <boost/locale/utf.hpp>
+#include <cstdio>
+
+namespace wobble {
+
+namespace {
+using Utf8 = boost::locale::utf::utf_traits<char>;
+using boost::locale::utf::code_point;
+
+struct Decoded {
+  code_point code;  ///< boost::locale::utf::illegal or incomplete for a byte that is no UTF-8
+  std::size_t bytes;
+};
+
+Decoded decode(const std::string& text, std::size_t i) {
+  auto it = text.begin() + static_cast<std::ptrdiff_t>(i);
+  const code_point c = Utf8::decode(it, text.end());
+  if (c == boost::locale::utf::illegal || c == boost::locale::utf::incomplete) return {c, 1};
+  return {c, static_cast<std::size_t>(it - text.begin()) - i};
+}
+
+bool is_control(code_point c) {
+  return c < 0x20 || (c >= 0x7F && c <= 0x9F);
+}
+
+std::string code_text(code_point c) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "U+%04X", static_cast<unsigned>(c));
+  return buf;
+}
+
+bool is_valid(code_point c) {
+  return c != boost::locale::utf::illegal && c != boost::locale::utf::incomplete;
+}
+}  // namespace
+
+std::string character_name(const std::string& text, std::size_t i, std::size_t* bytes) {
+  const Decoded d = decode(text, i);
+  if (bytes != nullptr) *bytes = d.bytes;
+  if (!is_valid(d.code)) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "the byte 0x%02X, which is no UTF-8",
+                  static_cast<unsigned char>(text[i]));
+    return buf;
+  }
+  if (is_control(d.code)) return "the control character " + code_text(d.code);
+  return "'" + text.substr(i, d.bytes) + "' (" + code_text(d.code) + ")";
+}
+
+std::string printable(const std::string& text, std::size_t max_characters) {
+  std::string out;
+  std::size_t characters = 0, i = 0;
+  for (; i < text.size() && characters < max_characters; ++characters) {
+    const Decoded d = decode(text, i);
+    out += is_valid(d.code) && !is_control(d.code) ? text.substr(i, d.bytes) : "?";
+    i += d.bytes;
+  }
+  return i < text.size() ? out + "..." : out;
+}
+
+}  // namespace wobble

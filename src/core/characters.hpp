@@ -1,0 +1,20 @@
+#pragma once
+/// @file
+/// Characters of UTF-8 text, named in messages: what a person typed is shown as typed, except
+/// what would drive a terminal (the C0 and C1 controls and DEL: ESC starts a command) and bytes
+/// that are no UTF-8. Decoding is Boost.Locale's (boost/locale/utf.hpp, header-only).
+#include <cstddef>
+#include <string>
+
+namespace wobble {
+
+/// The character that starts at byte i, as a message names it: "'é' (U+00E9)", "the control
+/// character U+001B", "the byte 0xC3, which is no UTF-8". Its length in bytes goes to `bytes`
+/// if given (1 for a byte that is no UTF-8).
+std::string character_name(const std::string& text, std::size_t i, std::size_t* bytes = nullptr);
+
+/// `text` for a one-line message: each control character and each byte that is no UTF-8 as '?',
+/// at most `max_characters` characters, then "...".
+std::string printable(const std::string& text, std::size_t max_characters);
+
+}  // namespace wobble

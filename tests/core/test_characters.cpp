@@ -1,0 +1,38 @@
+// Characters named in messages as typed; what would drive a terminal, or is no UTF-8, as '?'.
+#include <catch2/catch.hpp>
+
+#include "core/characters.hpp"
+
+using namespace wobble;
+
+TEST_CASE("a character is named as typed, with its code point and length") {
+  std::size_t bytes = 0;
+  REQUIRE(character_name("5é", 1, &bytes) == "'é' (U+00E9)");
+  REQUIRE(bytes == 2);
+  REQUIRE(character_name("ok ✓", 3, &bytes) == "'✓' (U+2713)");
+  REQUIRE(bytes == 3);
+  REQUIRE(character_name("𝜔", 0, &bytes) == "'𝜔' (U+1D714)");
+  REQUIRE(bytes == 4);
+  REQUIRE(character_name("x", 0) == "'x' (U+0078)");
+}
+
+TEST_CASE("controls are named by code point, never printed; stray bytes by value") {
+  std::size_t bytes = 0;
+  REQUIRE(character_name("a\x1b[31m", 1, &bytes) == "the control character U+001B");
+  REQUIRE(bytes == 1);
+  REQUIRE(character_name("\x7f", 0) == "the control character U+007F");
+  REQUIRE(character_name("\xc2\x9b", 0, &bytes) == "the control character U+009B");  // C1 CSI
+  REQUIRE(bytes == 2);
+  REQUIRE(character_name("\xff", 0, &bytes) == "the byte 0xFF, which is no UTF-8");
+  REQUIRE(bytes == 1);
+  REQUIRE(character_name("\xc3", 0) == "the byte 0xC3, which is no UTF-8");  // cut short
+  REQUIRE(character_name("\xed\xa0\x80", 0) == "the byte 0xED, which is no UTF-8");  // surrogate
+}
+
+TEST_CASE("printable text keeps what was typed and stops at a length") {
+  REQUIRE(printable("m·R²/4 é", 40) == "m·R²/4 é");
+  REQUIRE(printable("a\x1b[2Jb\xc2\x9b\xff", 40) == "a?[2Jb??");
+  REQUIRE(printable("αβγδε", 3) == "αβγ...");
+  REQUIRE(printable("abc", 3) == "abc");
+  REQUIRE(printable("", 3).empty());
+}
