@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <istream>
 #include <ostream>
 
@@ -36,12 +37,31 @@ std::string shown(const Answer& a) {
 
 enum class Outcome { right, revealed, skipped, quit, nothing };
 
+// What a line asks for besides an answer: the symbol or the word, in any case ("Quit", "HINT").
+enum class Command { none, hint, reveal, skip, quit, help };
+
+Command command_of(const std::string& line) {
+  std::string word;
+  for (const char c : line) word += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (word == "?" || word == "hint") return Command::hint;
+  if (word == "!" || word == "reveal") return Command::reveal;
+  if (word == "s" || word == "skip") return Command::skip;
+  if (word == "q" || word == "quit" || word == "exit") return Command::quit;
+  if (word == "help") return Command::help;
+  return Command::none;
+}
+
+constexpr const char* kCommands =
+    "At any prompt: ? hint, ! reveal, s skip the part, q quit (or the words: hint, reveal, skip, "
+    "quit; help lists them).";
+
 struct Session {
   const ReadLine& read_line;
   std::ostream& out;
   const Context& ctx;
   const Options& opt;
   bool quit_after_reveal = false;
+  int answered_before_quit = 0;  ///< answers of the part quit in that were right or revealed
 
   bool read(const std::string& prompt, std::string& line) {
     if (!read_line(prompt, line)) {
@@ -67,24 +87,32 @@ struct Session {
                            : "  hint: " + hint + "\n");
       hint_shown = true;
     };
+    int answered = 0;
     for (const auto& a : part.answers) {
       int wrong = 0;
       while (true) {
         std::string line;
-        if (!read(fmt::format("  {}{} = ", a.name, a.unit.empty() ? "" : " [" + a.unit + "]"),
-                  line) ||
-            line == "q") {
+        const bool more =
+            read(fmt::format("  {}{} = ", a.name, a.unit.empty() ? "" : " [" + a.unit + "]"), line);
+        const Command command = more ? command_of(line) : Command::quit;
+        if (command == Command::quit) {
           quit_after_reveal = revealed;  // a part quit after a reveal counts as revealed
+          answered_before_quit = answered;
           return Outcome::quit;
         }
-        if (line == "s") return Outcome::skipped;
-        if (line == "?") {
+        if (command == Command::skip) return Outcome::skipped;
+        if (command == Command::help) {
+          out << "  " << kCommands << "\n";
+          continue;
+        }
+        if (command == Command::hint) {
           give_hint();
           continue;
         }
-        if (line == "!") {
+        if (command == Command::reveal) {
           out << "  answer: " << shown(a) << "\n";
           revealed = true;
+          ++answered;
           break;
         }
         if (line.empty()) continue;
@@ -92,7 +120,10 @@ struct Session {
           const Verdict v = judge(ctx, a, line, opt);
           out << "  " << v.line << "\n";
           for (const auto& f : v.feedback) out << "    " << f << "\n";
-          if (v.correct) break;
+          if (v.correct) {
+            ++answered;
+            break;
+          }
           if (++wrong == 2 && !hint_shown) give_hint();
         } catch (const InputError& e) {
           out << "  cannot read that: " << without_option(e.what()) << "\n";
@@ -116,8 +147,7 @@ ReadLine stream_lines(std::istream& in, std::ostream& out, bool echo) {
 WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const std::string& intro,
                                const Problem& problem, const Context& ctx, const Options& opt) {
   out << intro;
-  out << "\nAnswer each part (units optional; SI if none). At any prompt: ? hint, ! reveal, "
-         "s skip the part, q quit.\n";
+  out << "\nAnswer each part (units optional; SI if none). " << kCommands << "\n";
   Session session{read, out, ctx, opt};
   WorksheetSummary sum;
   bool quit = false;
@@ -145,14 +175,23 @@ WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const st
         break;
       case Outcome::quit:
         quit = true;
-        ++(session.quit_after_reveal ? sum.revealed : sum.not_reached);
+        if (session.quit_after_reveal) {
+          ++sum.revealed;
+        } else if (session.answered_before_quit > 0) {
+          // Begun, some answers right, then left: neither right nor untouched.
+          sum.unfinished = fmt::format("({}) left unfinished, {} of its {} answers right", part.id,
+                                       session.answered_before_quit, part.answers.size());
+        } else {
+          ++sum.not_reached;
+        }
         break;
     }
   }
   out << fmt::format(
-      "\nsummary: {} right, {} revealed, {} skipped, {} not reached (of {} parts{})\n", sum.right,
+      "\nsummary: {} right, {} revealed, {} skipped, {} not reached (of {} parts{}{})\n", sum.right,
       sum.revealed, sum.skipped, sum.not_reached, ctx.key.parts.size(),
-      sum.nothing > 0 ? fmt::format("; {} with nothing to answer", sum.nothing) : std::string());
+      sum.nothing > 0 ? fmt::format("; {} with nothing to answer", sum.nothing) : std::string(),
+      sum.unfinished.empty() ? "" : "; " + sum.unfinished);
   return sum;
 }
 

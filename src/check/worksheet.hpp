@@ -2,8 +2,9 @@
 /// @file
 /// The interactive worksheet: a problem part by part, each answer judged as `wobble check`
 /// does. At a prompt: an answer, or `?` for the hint, `!` to reveal the answer, `s` to skip the
-/// part, `q` to quit. After a second wrong try the hint comes by itself. End of input quits, so
-/// piped input never waits.
+/// part, `q` to quit, or the words (hint, reveal, skip, quit or exit, help for the list; any
+/// case): they take precedence over a symbol of the same name. After a second wrong try the hint
+/// comes by itself. End of input quits, so piped input never waits.
 #include <functional>
 #include <iosfwd>
 #include <string>
@@ -16,6 +17,9 @@ namespace wobble::check {
 struct WorksheetSummary {
   int right = 0, revealed = 0, skipped = 0, not_reached = 0;
   int nothing = 0;  ///< parts with no answer at these values
+  /// The part quit in after some of its answers were right (none revealed), said as
+  /// "(a) left unfinished, 1 of its 2 answers right"; empty if none. Counted in no number.
+  std::string unfinished;
 };
 
 /// Where the answers come from: shows `prompt`, reads one line into `line`; false at the end of

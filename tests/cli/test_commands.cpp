@@ -298,6 +298,18 @@ TEST_CASE("worksheet driven end to end by piped input: feedback, hint, reveal, s
                Catch::Contains("(variant 3)") && Catch::Contains("hint: A thin disc") &&
                    Catch::Contains("answer: m*R^2/4 = ") &&
                    Catch::Contains("summary: 0 right, 1 revealed, 0 skipped, 7 not reached"));
+  // The commands as words, in any case; a part left after one of its two answers is said so.
+  const RunResult d = run_shell("printf 'help\\nHint\\n0.00072 kg m²\\nQuit\\n' | " + exe +
+                                " worksheet flying-plate");
+  INFO(d.out << d.err);
+  REQUIRE(d.exit_code == 0);
+  REQUIRE_THAT(d.out,
+               Catch::Contains("  At any prompt: ? hint, ! reveal, s skip the part, q quit") &&
+                   Catch::Contains("hint: A thin disc") && Catch::Contains("correct: I0") &&
+                   !Catch::Contains("cannot read") &&
+                   Catch::Contains("summary: 0 right, 0 revealed, 0 skipped, 7 not reached "
+                                   "(of 8 parts; (a) left unfinished, 1 of its 2 answers "
+                                   "right)"));
   // End of input at once: no wait, a summary.
   const RunResult c = run_shell(exe + " worksheet flying-plate < /dev/null");
   REQUIRE(c.exit_code == 0);
