@@ -94,7 +94,7 @@ int run_solve(const SolveOptions& opt) {
     key.figure = opt.figure;
   }
   if (opt.handout) {
-    const auto shown = shown_values(assignments);
+    const auto shown = shown_values(problem, assignments);
     if (opt.format == "json") throw InputError("--handout: text, markdown or latex; not json");
     fmt::print("{}", opt.format == "latex"      ? render_handout_latex(key, shown, opt.variant)
                      : opt.format == "markdown" ? render_handout(key, shown, opt.variant)

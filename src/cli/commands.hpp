@@ -21,9 +21,10 @@ std::vector<std::string> with_variant(const Problem& problem, std::optional<long
 /// @throws InputError naming `option` and the text.
 std::pair<long, long> variant_range(const std::string& text, const std::string& option);
 
-/// "NAME=VALUE" assignments as (name, value text) pairs, for a handout.
+/// "NAME=VALUE" assignments as (identifier, value text) pairs, for a handout: the last given for
+/// a parameter first (a --set after a variant's value).
 std::vector<std::pair<std::string, std::string>> shown_values(
-    const std::vector<std::string>& assignments);
+    const Problem& problem, const std::vector<std::string>& assignments);
 
 /// Files the command line writes are never replaced without --force.
 /// @throws InputError naming `option` and `file` if `file` exists and `force` is false.

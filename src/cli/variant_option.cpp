@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "cli/commands.hpp"
 #include "core/input_error.hpp"
 #include "problem/values.hpp"
@@ -31,12 +33,15 @@ std::pair<long, long> variant_range(const std::string& text, const std::string& 
 }
 
 std::vector<std::pair<std::string, std::string>> shown_values(
-    const std::vector<std::string>& assignments) {
+    const Problem& problem, const std::vector<std::string>& assignments) {
   std::vector<std::pair<std::string, std::string>> shown;
-  for (const auto& a : assignments) {
-    const auto eq = a.find('=');
-    shown.emplace_back(a.substr(0, eq), a.substr(eq + 1));
+  for (const auto& text : assignments) {
+    // By identifier, however the name was typed ("θ0" is theta0).
+    const Assignment a = assignment_of(problem, text);
+    shown.emplace_back(a.parameter.name, a.value);
   }
+  // The last assignment of a parameter wins, as in parameter_values (a --set after a variant).
+  std::reverse(shown.begin(), shown.end());
   return shown;
 }
 

@@ -138,6 +138,11 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
 }
 }  // namespace
 
+std::pair<std::string, std::string> typed_value_parts(const std::string& text) {
+  const std::string t = sym::to_ascii(text);
+  return split_unit(trim(t.substr(0, t.find('='))));
+}
+
 double parse_parameter_value(const Parameter& p, const std::string& text,
                              const std::string& field) {
   // As a key prints it: "θ0 = 30° = 0.5235987756 rad", "g = 9.81 m/s²", "π/6".
@@ -166,35 +171,38 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
   return v;
 }
 
+Assignment assignment_of(const Problem& problem, const std::string& text) {
+  // A value is a number or a short constant expression; a million digits is refused unread.
+  if (text.size() > 1000) {
+    throw InputError("--set: " + std::to_string(text.size()) +
+                     " characters; NAME=VALUE may have at most 1000");
+  }
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || trim(text.substr(0, eq)).empty()) {
+    throw InputError("--set: expected NAME=VALUE, got '" + text + "'");
+  }
+  return {problem.parameter(trim(text.substr(0, eq))), trim(text.substr(eq + 1))};
+}
+
 sym::Values parameter_values(const Problem& problem, const std::vector<std::string>& assignments) {
   sym::Values values;
   for (const auto& p : problem.parameters) values[p.name] = p.default_value;
-  for (const auto& a : assignments) {
-    // A value is a number or a short constant expression; a million digits is refused unread.
-    if (a.size() > 1000) {
-      throw InputError("--set: " + std::to_string(a.size()) +
-                       " characters; NAME=VALUE may have at most 1000");
-    }
-    const auto eq = a.find('=');
-    if (eq == std::string::npos || trim(a.substr(0, eq)).empty()) {
-      throw InputError("--set: expected NAME=VALUE, got '" + a + "'");
-    }
-    const Parameter& p = problem.parameter(trim(a.substr(0, eq)));
-    values[p.name] = parse_parameter_value(p, a.substr(eq + 1), "--set " + p.name);
+  for (const auto& text : assignments) {
+    const Assignment a = assignment_of(problem, text);
+    values[a.parameter.name] =
+        parse_parameter_value(a.parameter, a.value, "--set " + a.parameter.name);
   }
   return values;
 }
 
 void require_each_set_once(const Problem& problem, const std::vector<std::string>& assignments) {
   std::map<std::string, std::string> seen;
-  for (const auto& a : assignments) {
-    const auto eq = a.find('=');
-    if (eq == std::string::npos) continue;  // parameter_values says what is wrong with it
-    const std::string name = problem.parameter(trim(a.substr(0, eq))).name;  // "θ0" is theta0
-    const auto [it, fresh] = seen.emplace(name, trim(a.substr(eq + 1)));
+  for (const auto& text : assignments) {
+    const Assignment a = assignment_of(problem, text);  // "θ0" is theta0
+    const auto [it, fresh] = seen.emplace(a.parameter.name, a.value);
     if (!fresh) {
-      throw InputError("--set " + name + ": given twice ('" + it->second + "' and '" +
-                       trim(a.substr(eq + 1)) + "'); give each parameter once");
+      throw InputError("--set " + a.parameter.name + ": given twice ('" + it->second + "' and '" +
+                       a.value + "'); give each parameter once");
     }
   }
 }

@@ -10,6 +10,7 @@
 /// an angle for a pure number, is refused. Every value must be finite and inside the
 /// parameter's range.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "problem/problem.hpp"
@@ -19,6 +20,20 @@ namespace wobble {
 /// Reads one value for parameter p. `field` names the source in messages ("--set alpha").
 /// @throws InputError naming the field and the text: not a number, not finite, out of range.
 double parse_parameter_value(const Parameter& p, const std::string& text, const std::string& field);
+
+/// A value as typed, split for a handout to show it as given: its text and the unit it carries,
+/// both in ASCII ("5 cm" -> {"5", "cm"}, "30°" -> {"30", "deg"}, "0.05" -> {"0.05", ""}); of a
+/// key's two sides, the first.
+std::pair<std::string, std::string> typed_value_parts(const std::string& text);
+
+/// One assignment "NAME=VALUE": the parameter it names (as Problem::parameter reads the name) and
+/// the value's text, both trimmed; the value is not read here.
+/// @throws InputError for a malformed or overlong assignment, or an unknown name.
+struct Assignment {
+  const Parameter& parameter;
+  std::string value;
+};
+Assignment assignment_of(const Problem& problem, const std::string& text);
 
 /// The problem's defaults with the assignments "NAME=VALUE" applied in order (NAME as
 /// Problem::parameter reads it: "theta0", "θ0", "theta_0").

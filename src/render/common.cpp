@@ -6,6 +6,7 @@
 #include <map>
 #include <vector>
 
+#include "problem/values.hpp"
 #include "solvers/key.hpp"
 #include "symbolic/unicode_notation.hpp"
 
@@ -57,10 +58,10 @@ std::pair<std::string, std::string> shown_value(
     const ParameterValue& p, const std::vector<std::pair<std::string, std::string>>& shown) {
   for (const auto& [name, text] : shown) {
     if (name != p.name) continue;
-    if (text.size() > 3 && text.compare(text.size() - 3, 3, "deg") == 0) {
-      return {text.substr(0, text.size() - 3), "°"};
-    }
-    return {text, p.unit};
+    // As typed, with the unit it was typed in: "22deg" as 22°, "5 cm" as 5 cm.
+    const auto [value, unit] = typed_value_parts(text);
+    if (unit == "deg") return {value, "°"};
+    return {value, unit.empty() ? p.unit : unit};
   }
   if (const auto deg = whole_degrees(p)) return {*deg, "°"};
   return {format_number(p.value), p.unit};

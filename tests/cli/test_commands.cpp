@@ -227,6 +227,23 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
   REQUIRE_THAT(neither.err, Catch::Contains("give PART (or --name)"));
 }
 
+TEST_CASE("a handout shows each value as it was given, its unit too; a --set over a variant wins") {
+  const RunResult given = run_wobble({"solve", "heavy-top", "--handout", "--set", "R=5 cm", "--set",
+                                      "θ0=45°", "--set", "psidot0 = 1432 rpm"});
+  INFO(given.err);
+  REQUIRE(given.exit_code == 0);
+  REQUIRE_THAT(given.out, Catch::Contains("R  = 5 cm   (") && Catch::Contains("θ0 = 45°   (") &&
+                              Catch::Contains("ψ̇0 = 1432 rpm   (") && !Catch::Contains("cm m"));
+  const RunResult latex = run_wobble({"solve", "heavy-top", "--handout", "--format", "latex",
+                                      "--set", "R=5 cm", "--set", "g=9.81 m/s²"});
+  REQUIRE_THAT(latex.out, Catch::Contains("$R$ & $5\\,\\mathrm{cm}$") &&
+                              Catch::Contains("$9.81\\,\\mathrm{m/s^{2}}$"));
+  // Variant 3's m is 0.25 kg; the --set after it is what the key uses, and what it shows.
+  const RunResult over =
+      run_wobble({"solve", "flying-plate", "--variant", "3", "--set", "m=1", "--handout"});
+  REQUIRE_THAT(over.out, Catch::Contains("m = 1 kg   (mass)"));
+}
+
 TEST_CASE(
     "variants: the handout has the numbers and no answers; keys per variant; check a variant") {
   const RunResult handout =
