@@ -52,8 +52,10 @@ Command command_of(const std::string& line) {
 }
 
 constexpr const char* kCommands =
-    "At any prompt: ? hint, ! reveal, s skip the part, q quit (or the words: hint, reveal, skip, "
-    "quit; help lists them).";
+    "At any prompt: ? hint, ! reveal, s skip the part, q quit (help: the commands as words).";
+constexpr const char* kCommandWords =
+    "commands, as symbols or words in any case: ? or hint (the part's hint), ! or reveal (the "
+    "answer), s or skip (the next part), q, quit or exit (the summary)";
 
 struct Session {
   const ReadLine& read_line;
@@ -102,7 +104,7 @@ struct Session {
         }
         if (command == Command::skip) return Outcome::skipped;
         if (command == Command::help) {
-          out << "  " << kCommands << "\n";
+          out << "  " << kCommandWords << "\n";
           continue;
         }
         if (command == Command::hint) {

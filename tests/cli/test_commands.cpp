@@ -321,7 +321,8 @@ TEST_CASE("worksheet driven end to end by piped input: feedback, hint, reveal, s
   INFO(d.out << d.err);
   REQUIRE(d.exit_code == 0);
   REQUIRE_THAT(d.out,
-               Catch::Contains("  At any prompt: ? hint, ! reveal, s skip the part, q quit") &&
+               Catch::Contains("(help: the commands as words)") &&
+                   Catch::Contains("  commands, as symbols or words in any case: ? or hint") &&
                    Catch::Contains("hint: A thin disc") && Catch::Contains("correct: I0") &&
                    !Catch::Contains("cannot read") &&
                    Catch::Contains("summary: 0 right, 0 revealed, 0 skipped, 7 not reached "
