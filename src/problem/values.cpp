@@ -66,13 +66,13 @@ namespace {
 constexpr double kPrintedSidesAgree = 1e-9;
 
 // The value and its unit, "" if none: the longest tail that reads as a unit and starts a word
-// ("0.05 m", "5cm", "9.81 m/s^2", "150 1/s"; not the "i" of "2*pi").
+// ("0.05 m", "5cm", "9.81 m/s^2", "150 1/s", "5 [cm]"; not the "i" of "2*pi").
 std::pair<std::string, std::string> split_unit(const std::string& t) {
   for (std::size_t k = 1; k < t.size(); ++k) {
     const auto c = static_cast<unsigned char>(t[k]), before = static_cast<unsigned char>(t[k - 1]);
     const bool word = std::isalpha(c) && !std::isalpha(before) && before != '_';
-    const bool reciprocal = c == '1' && before == ' ';
-    if (!word && !reciprocal) continue;
+    const bool reciprocal_or_bracketed = (c == '1' || c == '[' || c == '(') && before == ' ';
+    if (!word && !reciprocal_or_bracketed) continue;
     const std::string value = trim(t.substr(0, k)), unit = trim(t.substr(k));
     if (!value.empty() && is_unit(unit)) return {value, unit};
   }
@@ -140,7 +140,10 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
 
 std::pair<std::string, std::string> typed_value_parts(const std::string& text) {
   const std::string t = sym::to_ascii(text);
-  return split_unit(trim(t.substr(0, t.find('='))));
+  auto [value, unit] = split_unit(trim(t.substr(0, t.find('='))));
+  if (!unit.empty() && (unit.front() == '[' || unit.front() == '('))  // "[cm]": shown as cm
+    unit = trim(unit.substr(1, unit.size() - 2));
+  return {value, unit};
 }
 
 double parse_parameter_value(const Parameter& p, const std::string& text,

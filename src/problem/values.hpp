@@ -22,8 +22,8 @@ namespace wobble {
 double parse_parameter_value(const Parameter& p, const std::string& text, const std::string& field);
 
 /// A value as typed, split for a handout to show it as given: its text and the unit it carries,
-/// both in ASCII ("5 cm" -> {"5", "cm"}, "30°" -> {"30", "deg"}, "0.05" -> {"0.05", ""}); of a
-/// key's two sides, the first.
+/// both in ASCII ("5 cm" and "5 [cm]" -> {"5", "cm"}, "30°" -> {"30", "deg"}, "0.05" ->
+/// {"0.05", ""}); of a key's two sides, the first.
 std::pair<std::string, std::string> typed_value_parts(const std::string& text);
 
 /// One assignment "NAME=VALUE": the parameter it names (as Problem::parameter reads the name) and

@@ -77,6 +77,13 @@ std::string Unit::dimension_words() const {
 }
 
 Unit parse_unit(const std::string& text, const std::string& field) {
+  // "[kg m^2]", "(rad/s)": a unit in brackets, as a table's heading or the worksheet's prompt
+  // writes it; one pair, around the whole unit.
+  if (text.size() > 2 && ((text.front() == '[' && text.back() == ']') ||
+                          (text.front() == '(' && text.back() == ')'))) {
+    const std::string inner = text.substr(1, text.size() - 2);
+    if (inner.find_first_of("[]()") == std::string::npos) return parse_unit(inner, field);
+  }
   Unit u;
   u.text = text;
   const auto fail = [&](const std::string& why) -> Unit {

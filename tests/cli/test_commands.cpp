@@ -228,8 +228,8 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
 }
 
 TEST_CASE("a handout shows each value as it was given, its unit too; a --set over a variant wins") {
-  const RunResult given = run_wobble({"solve", "heavy-top", "--handout", "--set", "R=5 cm", "--set",
-                                      "θ0=45°", "--set", "psidot0 = 1432 rpm"});
+  const RunResult given = run_wobble({"solve", "heavy-top", "--handout", "--set", "R=5 [cm]",
+                                      "--set", "θ0=45°", "--set", "psidot0 = 1432 rpm"});
   INFO(given.err);
   REQUIRE(given.exit_code == 0);
   REQUIRE_THAT(given.out, Catch::Contains("R  = 5 cm   (") && Catch::Contains("θ0 = 45°   (") &&

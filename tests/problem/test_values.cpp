@@ -58,6 +58,7 @@ TEST_CASE("values with a unit are converted exactly, rounded once") {
   REQUIRE(parse_parameter_value(with_unit("m"), "5 cm", "f") == 0.05);
   REQUIRE(parse_parameter_value(with_unit("m"), "5cm", "f") == 0.05);
   REQUIRE(parse_parameter_value(with_unit("m"), "0.05 m", "f") == 0.05);
+  REQUIRE(parse_parameter_value(with_unit("m"), "5 [cm]", "f") == 0.05);  // as a table heads it
   REQUIRE(parse_parameter_value(mass(), "500 g", "f") == 0.5);
   REQUIRE(parse_parameter_value(mass(), "0.5kg", "f") == 0.5);
   REQUIRE(parse_parameter_value(mass(), "5e2 g", "f") == 0.5);
