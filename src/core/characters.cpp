@@ -49,6 +49,11 @@ std::string character_name(const std::string& text, std::size_t i, std::size_t* 
   return "'" + text.substr(i, d.bytes) + "' (" + code_text(d.code) + ")";
 }
 
+bool is_control_at(const std::string& text, std::size_t i) {
+  const Decoded d = decode(text, i);
+  return is_valid(d.code) && is_control(d.code);
+}
+
 std::string printable(const std::string& text, std::size_t max_characters) {
   std::string out;
   std::size_t characters = 0, i = 0;

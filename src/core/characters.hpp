@@ -13,6 +13,9 @@ namespace wobble {
 /// if given (1 for a byte that is no UTF-8).
 std::string character_name(const std::string& text, std::size_t i, std::size_t* bytes = nullptr);
 
+/// Whether a control character (C0, DEL or C1) starts at byte i: what a terminal may obey.
+bool is_control_at(const std::string& text, std::size_t i);
+
 /// `text` for a one-line message: each control character and each byte that is no UTF-8 as '?',
 /// at most `max_characters` characters, then "...".
 std::string printable(const std::string& text, std::size_t max_characters);

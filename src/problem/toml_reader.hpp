@@ -6,11 +6,11 @@
 
 #include <array>
 #include <charconv>
-#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <string>
 
+#include "core/characters.hpp"
 #include "problem/problem.hpp"
 
 namespace wobble::detail {
@@ -46,17 +46,8 @@ class Reader {
   std::string text(const toml::node* n, const std::string& field) const {
     std::string s = *n->value<std::string>();
     for (std::size_t i = 0; i < s.size(); ++i) {
-      const auto c = static_cast<unsigned char>(s[i]);
-      const bool c1 = c == 0xC2 && i + 1 < s.size() &&
-                      static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
-                      static_cast<unsigned char>(s[i + 1]) <= 0x9F;  // U+0080..U+009F
-      if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7F || c1) {
-        char code[16];
-        std::snprintf(code, sizeof code, "U+%04X",
-                      c1 ? static_cast<unsigned char>(s[i + 1]) : static_cast<unsigned>(c));
-        fail(n, field, std::string("contains the control character ") + code +
-                           "; a file holds plain text");
-      }
+      if (s[i] != '\n' && s[i] != '\t' && is_control_at(s, i))
+        fail(n, field, "contains " + character_name(s, i) + "; a file holds plain text");
     }
     return s;
   }

@@ -140,10 +140,9 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
 
 std::pair<std::string, std::string> typed_value_parts(const std::string& text) {
   const std::string t = sym::to_ascii(text);
-  auto [value, unit] = split_unit(trim(t.substr(0, t.find('='))));
-  if (!unit.empty() && (unit.front() == '[' || unit.front() == '('))  // "[cm]": shown as cm
-    unit = trim(unit.substr(1, unit.size() - 2));
-  return {value, unit};
+  const auto [value, unit] = split_unit(trim(t.substr(0, t.find('='))));
+  // The unit as the grammar read it: "[cm]" is cm.
+  return {value, unit.empty() ? unit : parse_unit(unit, "").text};
 }
 
 double parse_parameter_value(const Parameter& p, const std::string& text,

@@ -26,7 +26,7 @@ struct Unit {
   std::string to_si_exact = "1";
   std::array<int, 3> dim{0, 0, 0};  ///< powers of kg, m, s
   bool angle = false;               ///< contains rad, deg, rev, Hz or rpm
-  std::string text;
+  std::string text;                 ///< as read, without a pair of brackets around it
   bool same_dimension(const Unit& o) const { return dim == o.dim; }
   /// "mass x length^2", for messages.
   std::string dimension_words() const;

@@ -27,6 +27,13 @@ TEST_CASE("controls are named by code point, never printed; stray bytes by value
   REQUIRE(bytes == 1);
   REQUIRE(character_name("\xc3", 0) == "the byte 0xC3, which is no UTF-8");  // cut short
   REQUIRE(character_name("\xed\xa0\x80", 0) == "the byte 0xED, which is no UTF-8");  // surrogate
+  // What a terminal may obey, and what it prints.
+  REQUIRE(is_control_at("a\x1b", 1));
+  REQUIRE(is_control_at("\xc2\x9b", 0));
+  REQUIRE(is_control_at("\x7f", 0));
+  REQUIRE_FALSE(is_control_at("é", 0));
+  REQUIRE_FALSE(is_control_at("\xff", 0));  // no UTF-8: named as a byte, not a control
+  REQUIRE_FALSE(is_control_at(" ", 0));
 }
 
 TEST_CASE("printable text keeps what was typed and stops at a length") {
