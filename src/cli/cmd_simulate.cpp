@@ -38,7 +38,7 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
                  "Number of output times, " + scene_samples_range() + " (default: the scene's)");
   app.add_option("--t-end", opt.t_end,
                  "End of the run, s (default: the scene's run.t_end); an expression such as 10 "
-                 "or 2*pi");
+                 "or 2*pi, or with a unit of time: 500 ms, 2 min");
   app.add_option("--out", opt.out, "Write the samples to FILE.csv or FILE.json instead");
   app.add_option("--plot", opt.plot, "Draw the outputs against time as .svg, .png or .pdf (gnuplot)");
   app.add_option("--max-evaluations", opt.max_evaluations,

@@ -65,20 +65,6 @@ namespace {
 // 5e-10 of the value, of the exact side; twice that allows for the rounding of either.
 constexpr double kPrintedSidesAgree = 1e-9;
 
-// The value and its unit, "" if none: the longest tail that reads as a unit and starts a word
-// ("0.05 m", "5cm", "9.81 m/s^2", "150 1/s", "5 [cm]"; not the "i" of "2*pi").
-std::pair<std::string, std::string> split_unit(const std::string& t) {
-  for (std::size_t k = 1; k < t.size(); ++k) {
-    const auto c = static_cast<unsigned char>(t[k]), before = static_cast<unsigned char>(t[k - 1]);
-    const bool word = std::isalpha(c) && !std::isalpha(before) && before != '_';
-    const bool reciprocal_or_bracketed = (c == '1' || c == '[' || c == '(') && before == ' ';
-    if (!word && !reciprocal_or_bracketed) continue;
-    const std::string value = trim(t.substr(0, k)), unit = trim(t.substr(k));
-    if (!value.empty() && is_unit(unit)) return {value, unit};
-  }
-  return {t, ""};
-}
-
 // The unit of p's values, "" a pure number.
 Unit unit_of(const Parameter& p) {
   return p.unit.empty() ? Unit{} : parse_unit(p.unit, "the unit of " + p.name);
@@ -91,14 +77,11 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
   if (t == "inf" || t == "-inf" || t == "+inf" || t == "nan" || t == "NaN") {
     throw InputError(field + ": value must be finite, got '" + text + "'");
   }
-  const auto [value, unit] = split_unit(t);
+  const auto [value, unit] = split_value_unit(t);
   std::string factor = "1";
   if (!unit.empty()) {
     const Unit given = parse_unit(unit, field), wanted = unit_of(p);
-    // Radians are pure numbers (symbolic/units.hpp): rad/s is 1/s, and an angle unit is refused
-    // only for a pure number that is no angle.
-    const bool angle_for_number = given.angle && !wanted.angle && wanted.dim == std::array{0, 0, 0};
-    if (!given.same_dimension(wanted) || angle_for_number) {
+    if (!unit_fits(given, wanted)) {
       throw InputError(field + ": '" + text + "' is in " + unit + " (" + given.dimension_words() +
                        "), but " + p.name +
                        (p.unit.empty()
@@ -140,7 +123,7 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
 
 std::pair<std::string, std::string> typed_value_parts(const std::string& text) {
   const std::string t = sym::to_ascii(text);
-  const auto [value, unit] = split_unit(trim(t.substr(0, t.find('='))));
+  const auto [value, unit] = split_value_unit(trim(t.substr(0, t.find('='))));
   // The unit as the grammar read it: "[cm]" is cm.
   return {value, unit.empty() ? unit : parse_unit(unit, "").text};
 }

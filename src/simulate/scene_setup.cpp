@@ -9,6 +9,8 @@
 #include "core/principal_axes.hpp"
 #include "problem/values.hpp"
 #include "solvers/inertia_body.hpp"
+#include "symbolic/unicode_notation.hpp"
+#include "symbolic/units.hpp"
 
 namespace wobble {
 
@@ -18,29 +20,76 @@ struct Eval {
   double operator()(const std::string& text, const std::string& field) const {
     return sym::evaluate(ctx.table.parse(text, field), ctx.exact.at, field);
   }
-  Vec3 vec(const Expr3& v, const std::string& field) const {
+  // A quantity in `si_unit` ("s", "rad/s", "m/s^2"; "rad" for an angle): an expression in the
+  // scene's parameters, in that unit, or followed by a unit of its own, converted exactly: "2",
+  // "2*pi/omega", "500 ms", "1432 rpm", "30deg", "30°", "(90 - 15) deg", "5 [cm]". The
+  // expression is read first: a parameter named like a unit ("m", "g") stays the parameter in
+  // "2*m"; "0.5 m", which is no expression (a product needs '*'), is half a metre.
+  double quantity(const std::string& text, const std::string& field,
+                  const std::string& si_unit) const {
+    const std::string ascii = sym::to_ascii(text);
+    try {
+      return (*this)(ascii, field);
+    } catch (const InputError& whole) {
+      const auto [value, unit] = split_value_unit(ascii);
+      if (unit.empty()) {
+        refuse_unknown_unit(ascii, field);
+        throw;
+      }
+      const Unit given = parse_unit(unit, field);
+      const Unit wanted = si_unit.empty() ? Unit{} : parse_unit(si_unit, field);
+      if (!unit_fits(given, wanted)) {
+        const std::string must = wanted.angle ? "an angle (rad, deg or rev)"
+                                 : si_unit.empty()
+                                     ? "a pure number"
+                                     : fmt::format("in {} ({})", si_unit, wanted.dimension_words());
+        throw InputError(fmt::format("{}: '{}' is in {} ({}); it must be {}", field, text,
+                                     given.text, given.dimension_words(), must));
+      }
+      // The value alone first: if it is no expression either, the whole text's message stands.
+      try {
+        (void)(*this)(value, field);
+      } catch (const InputError&) {
+        throw whole;
+      }
+      return (*this)("(" + value + ")*(" + given.to_si_exact + ")/(" + wanted.to_si_exact + ")",
+                     field);
+    }
+  }
+  Vec3 vec(const Expr3& v, const std::string& field, const std::string& si_unit) const {
     Vec3 out;
-    for (int i = 0; i < 3; ++i) out[i] = (*this)(v[i], field + "[" + std::to_string(i) + "]");
+    for (int i = 0; i < 3; ++i)
+      out[i] = quantity(v[i], field + "[" + std::to_string(i) + "]", si_unit);
     return out;
   }
-  // An angle: an expression in rad, or in degrees with a deg (or °) suffix: "10deg",
-  // "theta0" or "(90 - 15)deg".
-  double angle(const std::string& text, const std::string& field) const {
-    for (const std::string suffix : {"deg", "\u00b0"}) {
-      if (text.size() > suffix.size() &&
-          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0) {
-        return (*this)("(" + text.substr(0, text.size() - suffix.size()) + ")*pi/180", field);
-      }
-    }
-    return (*this)(text, field);
-  }
-  double positive(const std::string& text, const std::string& field) const {
-    const double v = (*this)(text, field);
+  double positive(const std::string& text, const std::string& field,
+                  const std::string& si_unit) const {
+    const double v = quantity(text, field, si_unit);
     if (!(v > 0.0) || !std::isfinite(v)) {
-      throw InputError(
-          fmt::format("{}: \"{}\" is {:.10g}; it must be finite and > 0", field, text, v));
+      throw InputError(fmt::format("{}: \"{}\" is {:.10g} {}; it must be finite and > 0", field,
+                                   text, v, si_unit));
     }
     return v;
+  }
+
+ private:
+  // "2 parsecs": an expression and a word that is no unit; say so, not "undefined symbol".
+  void refuse_unknown_unit(const std::string& ascii, const std::string& field) const {
+    const auto space = ascii.find_last_of(' ');
+    if (space == std::string::npos) return;
+    const std::string before = ascii.substr(0, space), tail = ascii.substr(space + 1);
+    if (tail.empty() || !std::isalpha(static_cast<unsigned char>(tail[0]))) return;
+    const auto reads = [&](const std::string& part) {
+      try {
+        (void)(*this)(part, field);
+        return true;
+      } catch (const InputError&) {
+        return false;
+      }
+    };
+    // "2 R" with a parameter R is a product without its '*': the whole text's message says so.
+    if (!reads(before) || reads(tail)) return;
+    (void)parse_unit(tail, field);  // throws its error
   }
 };
 
@@ -56,7 +105,7 @@ Quat initial_orientation(const Scene& scene, const Eval& ev) {
     case OrientationSpec::Kind::quaternion: {
       double q[4];
       for (int i = 0; i < 4; ++i)
-        q[i] = ev(o.quaternion[i], "initial.quaternion[" + std::to_string(i) + "]");
+        q[i] = ev.quantity(o.quaternion[i], "initial.quaternion[" + std::to_string(i) + "]", "");
       const Quat out(q[0], q[1], q[2], q[3]);
       if (std::abs(out.norm() - 1.0) > kUnitTolerance) {
         throw InputError(fmt::format(
@@ -68,7 +117,7 @@ Quat initial_orientation(const Scene& scene, const Eval& ev) {
     case OrientationSpec::Kind::matrix: {
       Mat3 R;
       for (int i = 0; i < 3; ++i)
-        R.row(i) = ev.vec(o.matrix[i], "initial.matrix[" + std::to_string(i) + "]").transpose();
+        R.row(i) = ev.vec(o.matrix[i], "initial.matrix[" + std::to_string(i) + "]", "").transpose();
       const double off = (R.transpose() * R - Mat3::Identity()).cwiseAbs().maxCoeff();
       if (off > kUnitTolerance || R.determinant() < 0) {
         throw InputError(fmt::format(
@@ -81,7 +130,7 @@ Quat initial_orientation(const Scene& scene, const Eval& ev) {
     case OrientationSpec::Kind::euler: {
       Vec3 a;
       for (int i = 0; i < 3; ++i)
-        a[i] = ev.angle(o.euler[i], "initial.euler[" + std::to_string(i) + "]");
+        a[i] = ev.quantity(o.euler[i], "initial.euler[" + std::to_string(i) + "]", "rad");
       return Quat(rotation_from_euler(a, euler_convention(o.convention))).normalized();
     }
   }
@@ -196,7 +245,7 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
   Mat3 I_turn = mp.I_O;
   s.turning_point = "origin O";
   if (scene.gravity) {
-    s.turning_point_B = ev.vec(scene.gravity->pivot, "effects.gravity.pivot");
+    s.turning_point_B = ev.vec(scene.gravity->pivot, "effects.gravity.pivot", "m");
     s.turning_point = "pivot";
     I_turn = shift_from_cm(shift_to_cm(mp.I_O, mp.mass_kg, -mp.r_cm_m), mp.mass_kg,
                            s.turning_point_B - mp.r_cm_m);
@@ -243,13 +292,13 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
     m.gravity = true;
     m.mass_kg = mp.mass_kg;
     m.d_P_m = pa.axes.transpose() * (mp.r_cm_m - s.turning_point_B);
-    m.g_S = Vec3(0, 0, -ev.positive(scene.gravity->g, "effects.gravity.g"));
+    m.g_S = Vec3(0, 0, -ev.positive(scene.gravity->g, "effects.gravity.g", "m/s^2"));
     s.effects.push_back(fmt::format("gravity, g = {:.6g} m/s^2, about a fixed pivot", -m.g_S.z()));
   }
   if (scene.torque) {
     m.torque = true;
     m.torque_in_space = scene.torque->frame == Frame::space;
-    const Vec3 tau = ev.vec(scene.torque->value, "effects.torque.value");
+    const Vec3 tau = ev.vec(scene.torque->value, "effects.torque.value", "N m");
     m.torque_Nm = m.torque_in_space ? tau : Vec3(pa.axes.transpose() * tau);
     s.effects.push_back(fmt::format("constant torque ({:.6g}, {:.6g}, {:.6g}) N m, {} frame",
                                     tau.x(), tau.y(), tau.z(),
@@ -257,9 +306,9 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
   }
   if (scene.free_flight) {
     s.free_flight = true;
-    s.g_S = Vec3(0, 0, -ev.positive(scene.free_flight->g, "effects.free_flight.g"));
-    s.x0_S = ev.vec(scene.free_flight->position, "effects.free_flight.position");
-    s.v0_S = ev.vec(scene.free_flight->velocity, "effects.free_flight.velocity");
+    s.g_S = Vec3(0, 0, -ev.positive(scene.free_flight->g, "effects.free_flight.g", "m/s^2"));
+    s.x0_S = ev.vec(scene.free_flight->position, "effects.free_flight.position", "m");
+    s.v0_S = ev.vec(scene.free_flight->velocity, "effects.free_flight.velocity", "m/s");
     s.effects.push_back(fmt::format(
         "free flight, g = {:.6g} m/s^2 (no torque about the centre of mass)", -s.g_S.z()));
   }
@@ -269,7 +318,7 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
   s.q0_BtoS = initial_orientation(scene, ev);
   const Quat q_PtoB(pa.axes);
   s.q0_PtoS = (s.q0_BtoS * q_PtoB).normalized();
-  Vec3 w_B = ev.vec(scene.omega, "initial.omega");
+  Vec3 w_B = ev.vec(scene.omega, "initial.omega", "rad/s");
   if (scene.omega_frame == Frame::space) w_B = s.q0_BtoS.conjugate() * w_B;
   s.m0_P = pa.moments.cwiseProduct(pa.axes.transpose() * w_B);
   if (!(s.m0_P.norm() > 0.0) && !m.gravity && !m.torque) {
@@ -278,10 +327,10 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
         "non-zero angular velocity");
   }
   if (scene.torque && scene.torque->brake) set_brake(s, pa);
-  s.t_end = ev.positive(scene.t_end, "run.t_end");
+  s.t_end = ev.positive(scene.t_end, "run.t_end", "s");
   s.samples = scene.samples;
   s.tolerance = scene.tolerance;
-  if (scene.step) s.step = ev.positive(*scene.step, "run.step");
+  if (scene.step) s.step = ev.positive(*scene.step, "run.step", "s");
   s.method = scene.method;
   check_ranges(s);
   s.outputs = scene.outputs;

@@ -180,6 +180,32 @@ Unit parse_unit(const std::string& text, const std::string& field) {
   return u;
 }
 
+namespace {
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+}  // namespace
+
+std::pair<std::string, std::string> split_value_unit(const std::string& text) {
+  const std::string t = trimmed(text);
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    const auto c = static_cast<unsigned char>(t[k]), before = static_cast<unsigned char>(t[k - 1]);
+    const bool word = std::isalpha(c) && !std::isalpha(before) && before != '_';
+    const bool reciprocal_or_bracketed = (c == '1' || c == '[' || c == '(') && before == ' ';
+    if (!word && !reciprocal_or_bracketed) continue;
+    const std::string value = trimmed(t.substr(0, k)), unit = trimmed(t.substr(k));
+    if (!value.empty() && is_unit(unit)) return {value, unit};
+  }
+  return {t, ""};
+}
+
+bool unit_fits(const Unit& given, const Unit& wanted) {
+  const bool angle_for_number = given.angle && !wanted.angle && wanted.dim == std::array{0, 0, 0};
+  return given.same_dimension(wanted) && !angle_for_number;
+}
+
 bool is_unit(const std::string& text) {
   try {
     (void)parse_unit(text, "");

@@ -16,6 +16,7 @@
 /// pure number that is no angle (k^2, a direction cosine): judge.cpp.
 #include <array>
 #include <string>
+#include <utility>
 
 namespace wobble {
 
@@ -37,5 +38,15 @@ Unit parse_unit(const std::string& text, const std::string& field);
 
 /// True if `text` reads as a unit (no throw).
 bool is_unit(const std::string& text);
+
+/// A value and the unit after it, "" if none: the longest tail that reads as a unit and starts
+/// a word ("0.05 m", "5cm", "9.81 m/s^2", "150 1/s", "5 [cm]", "(90 - 15)deg"; not the "i" of
+/// "2*pi"). Both trimmed; the value is not read here. ASCII text (sym::to_ascii first).
+std::pair<std::string, std::string> split_value_unit(const std::string& text);
+
+/// Whether a value given in `given` may stand for one in `wanted`: the same dimension, and no
+/// angle for a pure number that is no angle (radians are pure numbers, so rad/s is 1/s, but
+/// "30deg" is no moment ratio). A pure number `wanted` is Unit{}; an angle is parse_unit("rad").
+bool unit_fits(const Unit& given, const Unit& wanted);
 
 }  // namespace wobble

@@ -6,6 +6,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 
 #include "cli/run.hpp"
 #include "core/exact_free_body.hpp"
@@ -227,6 +228,18 @@ TEST_CASE("simulate --t-end sets the time span (an expression), --samples the co
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   REQUIRE_THAT(r.out, Catch::Contains("time: 0 to 6.283185307 s, 5 samples"));
+}
+
+TEST_CASE("simulate --t-end takes a unit of time, as a value is typed elsewhere") {
+  for (const auto& [typed, shown] :
+       {std::pair{"500 ms", "time: 0 to 0.5 s"}, std::pair{"2 min", "time: 0 to 120 s"},
+        std::pair{"3 s", "time: 0 to 3 s"}}) {
+    const RunResult r =
+        run_wobble({"simulate", "tennis-racket", "--t-end", typed, "--samples", "3"});
+    INFO(typed << "\n" << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains(shown));
+  }
 }
 
 TEST_CASE("a million samples are written in bounded memory") {
