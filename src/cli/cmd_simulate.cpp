@@ -1,16 +1,17 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 
 #include "cli/commands.hpp"
-#include "problem/values.hpp"
-#include "problem/scene.hpp"
-#include "problem/variants.hpp"
-#include "io/atomic_write.hpp"
 #include "core/work_budget.hpp"
+#include "io/atomic_write.hpp"
+#include "problem/scene.hpp"
+#include "problem/values.hpp"
+#include "problem/variants.hpp"
 #include "render/simulation_output.hpp"
 #include "simulate/scene_setup.hpp"
 
@@ -30,12 +31,18 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
   const auto& names = simulation_method_names();
   for (std::size_t i = 0; i < names.size(); ++i)
     methods += (i + 1 == names.size() ? " or " : ", ") + names[i].first;
-  app.add_option("--method", opt.method,
-                 methods + " (default: the scene's, usually auto)");
+  // In any case, as the tables print some of them (DOP853, RK4).
+  app.add_option("--method", opt.method, methods + " (default: the scene's, usually auto)")
+      ->transform([](std::string text) {
+        for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return text;
+      });
   app.add_option("--tolerance", opt.tolerance,
                  "Relative tolerance for the adaptive methods, " + scene_tolerance_range());
   app.add_option("--samples", opt.samples,
-                 "Number of output times, " + scene_samples_range() + " (default: the scene's)");
+                 "Number of output times, " + scene_samples_range() +
+                     ", as 500 or 1e5 (default: the scene's)")
+      ->transform(whole_number());
   app.add_option("--t-end", opt.t_end,
                  "End of the run, s (default: the scene's run.t_end); an expression such as 10 "
                  "or 2*pi, or with a unit of time: 500 ms, 2 min");

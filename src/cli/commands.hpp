@@ -21,6 +21,11 @@ std::vector<std::string> with_variant(const Problem& problem, std::optional<long
 /// @throws InputError naming `option` and the text.
 std::pair<long, long> variant_range(const std::string& text, const std::string& option);
 
+/// A count option's text as a whole number however written: "100000", "1e5", "2.5e3" (as
+/// --max-evaluations takes 5e7). A fraction, or more than 2^53, is refused naming the text.
+/// For CLI11's transform(): it rewrites an exact whole number in decimal digits.
+CLI::Validator whole_number();
+
 /// "NAME=VALUE" assignments as (identifier, value text) pairs, for a handout: the last given for
 /// a parameter first (a --set after a variant's value).
 std::vector<std::pair<std::string, std::string>> shown_values(

@@ -230,6 +230,16 @@ TEST_CASE("simulate --t-end sets the time span (an expression), --samples the co
   REQUIRE_THAT(r.out, Catch::Contains("time: 0 to 6.283185307 s, 5 samples"));
 }
 
+TEST_CASE("simulate --samples takes a count as 1e3, --method a name in any case") {
+  // Counts are written as --max-evaluations takes them (5e7); the tables print DOP853.
+  const RunResult r = run_wobble(
+      {"simulate", "tennis-racket", "--samples", "1e3", "--method", "DOP853", "--t-end", "1"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Catch::Contains("time: 0 to 1 s, 1000 samples"));
+  CHECK_THAT(r.out, Catch::Contains("method: dop853 (requested)"));
+}
+
 TEST_CASE("simulate --t-end takes a unit of time, as a value is typed elsewhere") {
   for (const auto& [typed, shown] :
        {std::pair{"500 ms", "time: 0 to 0.5 s"}, std::pair{"2 min", "time: 0 to 120 s"},
