@@ -13,8 +13,12 @@
 namespace wobble::check {
 
 namespace {
-bool opens(char c) { return c == '[' || c == '(' || c == '{'; }
-bool closes(char c) { return c == ']' || c == ')' || c == '}'; }
+bool opens(char c) {
+  return c == '[' || c == '(' || c == '{';
+}
+bool closes(char c) {
+  return c == ']' || c == ')' || c == '}';
+}
 
 // Splits at `sep` outside brackets (any whitespace when sep is ' ').
 std::vector<std::string> top_level(const std::string& s, char sep) {
@@ -24,8 +28,8 @@ std::vector<std::string> top_level(const std::string& s, char sep) {
   for (const char c : s) {
     if (opens(c)) ++depth;
     if (closes(c)) --depth;
-    const bool split = depth == 0 && (sep == ' ' ? std::isspace(static_cast<unsigned char>(c)) != 0
-                                                 : c == sep);
+    const bool split =
+        depth == 0 && (sep == ' ' ? std::isspace(static_cast<unsigned char>(c)) != 0 : c == sep);
     if (split) {
       if (sep != ' ' || !trim(cur).empty()) out.push_back(trim(cur));
       cur.clear();
@@ -51,17 +55,19 @@ bool wrapped(const std::string& s, char open) {
   return s.size() >= 2 && s.front() == open && matching(s, 0) == s.size() - 1;
 }
 
-bool is_operator(char c) { return c == '+' || c == '-' || c == '*' || c == '/' || c == '^'; }
+bool is_operator(char c) {
+  return c == '+' || c == '-' || c == '*' || c == '/' || c == '^';
+}
 
 // "0.7 0 -0.7" -> {"0.7", "0", "-0.7"}, but "1 - 2" and "2 * m" stay one entry: an operator
 // standing alone, ending a token or starting one (other than a sign) joins its neighbours.
 std::vector<std::string> space_separated_entries(const std::string& s) {
   std::vector<std::string> entries;
   for (const auto& t : top_level(s, ' ')) {
-    const bool joins = !entries.empty() &&
-                       ((t.size() == 1 && is_operator(t[0])) || t[0] == '*' || t[0] == '/' ||
-                        t[0] == '^' || t[0] == ')' || is_operator(entries.back().back()) ||
-                        entries.back().back() == '(');
+    const bool joins =
+        !entries.empty() &&
+        ((t.size() == 1 && is_operator(t[0])) || t[0] == '*' || t[0] == '/' || t[0] == '^' ||
+         t[0] == ')' || is_operator(entries.back().back()) || entries.back().back() == '(');
     if (joins) {
       entries.back() += " " + t;
     } else {
@@ -256,13 +262,27 @@ std::pair<std::string, std::string> split_unit(const std::string& s) {
   return {s, ""};
 }
 
-// "M R^2 psidot0/2" -> "M*R^2*psidot0/2": a '*' for each space between two factors.
+// The functions an answer may name (GiNaC's names).
+const std::vector<std::string>& function_names() {
+  static const std::vector<std::string> names{"sin",  "cos",  "tan",  "asin", "acos", "atan",
+                                              "sinh", "cosh", "tanh", "exp",  "ln",   "sqrt"};
+  return names;
+}
+
+// "M R^2 psidot0/2" -> "M*R^2*psidot0/2": a '*' for each space between two factors; and a
+// function's one-factor argument without parentheses, as books write it, in them: "M l g cos
+// theta0" -> "M*l*g*cos(theta0)" (a name or a number, not one with a power: cos theta^2 is
+// read by some as cos(theta^2)).
 std::string starred(const std::string& s) {
+  const std::vector<std::string>& kFunctions = function_names();
   const auto factor_end = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == ')';
   };
   const auto factor_start = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '(' || c == '.';
+  };
+  const auto in_word = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
   };
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -271,20 +291,71 @@ std::string starred(const std::string& s) {
       continue;
     }
     const std::size_t next = s.find_first_not_of(' ', i);
-    if (next != std::string::npos && !out.empty())
-      out += factor_end(out.back()) && factor_start(s[next]) ? '*' : ' ';
-    i = next == std::string::npos ? s.size() : next - 1;
+    if (next == std::string::npos) break;
+    std::size_t word = out.size();
+    while (word > 0 && std::isalpha(static_cast<unsigned char>(out[word - 1]))) --word;
+    std::size_t end = next;
+    while (end < s.size() && in_word(s[end])) ++end;
+    const bool function =
+        std::find(kFunctions.begin(), kFunctions.end(), out.substr(word)) != kFunctions.end() &&
+        (word == 0 || !in_word(out[word - 1]));
+    if (function && end > next && (end == s.size() || (s[end] != '^' && s[end] != '('))) {
+      out += "(" + s.substr(next, end - next) + ")";
+      i = end - 1;
+      continue;
+    }
+    if (!out.empty()) out += factor_end(out.back()) && factor_start(s[next]) ? '*' : ' ';
+    i = next - 1;
   }
   return out;
 }
 
-// Whether s names one of the problem's symbols that is no unit ("R^2 psidot0/2", not "m" or "g").
-bool names_a_symbol(const std::string& s, const sym::SymbolTable& table) {
+// Whether s has an identifier that is one of the problem's symbols; whether all of its
+// identifiers are (and it has one).
+bool has_identifier_of(const std::string& s, const sym::SymbolTable& table) {
   for (const auto& [start, length] : identifiers(s)) {
-    const std::string id = s.substr(start, length);
-    if (table.contains(id) && !is_unit(id)) return true;
+    if (table.contains(s.substr(start, length))) return true;
   }
   return false;
+}
+bool all_identifiers_of(const std::string& s, const sym::SymbolTable& table) {
+  const auto ids = identifiers(s);
+  return !ids.empty() && std::all_of(ids.begin(), ids.end(), [&](const auto& id) {
+    return table.contains(s.substr(id.first, id.second));
+  });
+}
+
+// Whether a text that did not read may be factors side by side: it has one of the problem's
+// symbols, and no space between two numbers ("5 7 10" is a list, not 350). A vector's components
+// may be such products when commas separate them ("[m R^2 w/4, 0, 0]"); without commas its
+// spaces separate the components (layout), and it read before it got here.
+bool may_be_side_by_side(const std::string& s, const sym::SymbolTable& table) {
+  const auto numeric = [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) || c == '.';
+  };
+  for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+    if (s[i] != ' ' || i == 0) continue;
+    const std::size_t next = s.find_first_not_of(' ', i);
+    // The number before the space: its last character a digit, not the end of a name (R2).
+    std::size_t start = i;
+    while (start > 0 && (numeric(s[start - 1]))) --start;
+    const bool number_before =
+        start < i && (start == 0 || !std::isalpha(static_cast<unsigned char>(s[start - 1])));
+    if (number_before && next != std::string::npos && numeric(s[next])) return false;
+  }
+  return has_identifier_of(s, table);
+}
+
+// Whether a text with its stars written in has a function with no parentheses ("cos*theta0^2"):
+// no advice to paste.
+bool has_bare_function(const std::string& written) {
+  return std::any_of(function_names().begin(), function_names().end(), [&](const std::string& f) {
+    for (auto at = written.find(f + "*"); at != std::string::npos;
+         at = written.find(f + "*", at + 1)) {
+      if (at == 0 || !std::isalnum(static_cast<unsigned char>(written[at - 1]))) return true;
+    }
+    return false;
+  });
 }
 
 // "psidot_0" for the problem's psidot0, "theta_0" for theta0: a subscript as LaTeX writes it.
@@ -356,6 +427,18 @@ void check_bounds(const std::string& typed, const std::string& field) {
     }
   }
 }
+// The answer read, with its unit (if any) and whether it is an expression in the symbols.
+ReadAnswer finished(ReadAnswer p, const std::string& unit, const std::string& field) {
+  if (!unit.empty()) p.unit = parse_unit(unit, field);
+  for (const auto& e : p.value.entries) p.symbolic = p.symbolic || has_symbols(e);
+  if (p.symbolic && p.unit) {
+    throw InputError(field +
+                     ": an expression in the problem's symbols is in SI already; drop "
+                     "the unit '" +
+                     unit + "'");
+  }
+  return p;
+}
 }  // namespace
 
 std::string reading_form(const std::string& typed) {
@@ -377,6 +460,12 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
   }
   auto [value, unit] = split_unit(text);
   if (unit.empty()) std::tie(value, unit) = split_glued_unit(text, table);
+  // "M g", "2 M l g": an expression in the problem's symbols takes no unit (it is in SI), so a
+  // tail of its symbols that also spell a unit (g, m, s) is a factor, not grams or metres.
+  if (!unit.empty() && has_identifier_of(value, table) && all_identifiers_of(unit, table)) {
+    value = text;
+    unit.clear();
+  }
   ReadAnswer p;
   try {
     p.value = sym::parse_value_text(layout(value), table, field);
@@ -392,6 +481,15 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
     if (unit.empty() && p.value.entries.empty()) {
       // "0.16 parsecs": a value and something that is not a unit; say so, not "cannot read".
       if (const auto sp = value.find(' '); sp != std::string::npos) {
+        // Factors side by side, as LaTeX sets a product and as a student writes one ("M g l",
+        // "M l g cos theta0"): read with a '*' for each space between two factors.
+        if (may_be_side_by_side(value, table)) {
+          try {
+            p.value = sym::parse_value_text(layout(starred(value)), table, field);
+            return finished(p, unit, field);
+          } catch (const InputError&) {
+          }
+        }
         bool left_reads = true;
         try {
           (void)sym::parse_value_text(layout(trim(value.substr(0, sp))), table, field);
@@ -399,11 +497,15 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
           left_reads = false;
         }
         const std::string right = trim(value.substr(sp + 1));
-        if (left_reads && names_a_symbol(right, table)) {  // "M R^2 psidot0/2"
-          throw InputError(field + ": cannot read \"" + value + "\": products need '*' (" +
-                           starred(value) + ", not " + value + ")");
+        if (left_reads && has_identifier_of(right, table)) {  // "M R^2 (psidot0 + 1/2"
+          const std::string written = starred(value);
+          throw InputError(field + ": cannot read \"" + value + "\": " +
+                           (has_bare_function(written)
+                                ? "products need '*' and a function's argument parentheses "
+                                  "(M*g*cos(theta)^2)"
+                                : "products need '*' (" + written + ", not " + value + ")"));
         }
-        if (left_reads) (void)parse_unit(right, field);  // throws its error
+        if (left_reads) (void)parse_unit(right, field);  // "0.16 parsecs": throws its error
       }
       const bool glued = !value.empty() && std::isdigit(static_cast<unsigned char>(value[0])) &&
                          value.find(' ') == std::string::npos &&
@@ -428,13 +530,7 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
     }
     if (p.value.entries.empty()) throw;
   }
-  if (!unit.empty()) p.unit = parse_unit(unit, field);
-  for (const auto& e : p.value.entries) p.symbolic = p.symbolic || has_symbols(e);
-  if (p.symbolic && p.unit) {
-    throw InputError(field + ": an expression in the problem's symbols is in SI already; drop "
-                             "the unit '" + unit + "'");
-  }
-  return p;
+  return finished(p, unit, field);
 }
 
 }  // namespace wobble::check

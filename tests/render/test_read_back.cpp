@@ -420,17 +420,39 @@ TEST_CASE("the terminal's notation and a student's variants of it read as wobble
 TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist") {
   const Fixture plate("flying-plate");
   const auto message = [&](const std::string& text) { return error_of(plate, "I0", text); };
-  for (const std::string bad : {"(m+R, 2", "m*R^2)", "2 m R", "m*R^^2", "[1, 2"}) {
+  for (const std::string bad : {"(m+R, 2", "m*R^2)", "2 m R (", "m*R^^2", "[1, 2"}) {
     INFO(bad);
     const std::string m = message(bad);
     REQUIRE_THAT(m, !Catch::Contains("expected") && !Catch::Contains("got:") &&
                         !Catch::Contains("line 0") && Catch::StartsWith("--answer"));
   }
-  // Factors side by side: the answer with its '*' written in, to paste.
+  // Factors side by side, as LaTeX sets them and a student writes them, read as a product
+  // (a '*' for each space between two factors); where that does not read either, the answer
+  // with its '*' written in, to paste.
   const Fixture top("heavy-top");
   const auto top_message = [&](const std::string& text) { return error_of(top, "p_psi", text); };
-  REQUIRE_THAT(top_message("M R^2 (psidot0 + 1)/2"),
-               Catch::Contains("products need '*' (M*R^2*(psidot0 + 1)/2, not"));
+  REQUIRE(top.check("p_psi", "M R^2 psidot0/2").correct);
+  REQUIRE(top.check("p_psi", "1/2 M R^2 ψ̇0").correct);
+  REQUIRE_FALSE(top.check("p_psi", "M R^2 (psidot0 + 1)/2").correct);
+  REQUIRE_THAT(top_message("M R^2 (psidot0 + 1/2"),
+               Catch::Contains("products need '*' (M*R^2*(psidot0 + 1/2, not"));
+  // A function's one-factor argument without parentheses, as books write it; not with a power,
+  // which books read two ways.
+  REQUIRE(top.check("energy_prime", "M l g cos θ0").correct);
+  REQUIRE(top.check("energy_prime", "M g l cos(theta0)").correct);
+  REQUIRE_THAT(error_of(top, "energy_prime", "M l g cos θ0^2"),
+               Catch::Contains("products need '*' and a function's argument parentheses"));
+  // A symbol that also spells a unit (g, gram) is a factor after an expression in the symbols,
+  // which is in SI and takes no unit; after a plain number it is the unit.
+  REQUIRE_FALSE(top.check("energy_prime", "M g").correct);
+  const Fixture plate_m("flying-plate");
+  REQUIRE(plate_m.check("I0", "m R R/4").correct);
+  REQUIRE(plate_m.check("I0", "0.00072 kg m^2").correct);
+  // A vector's components, commas between them, may be products side by side too.
+  REQUIRE(plate_m.check("L0_body", "[m R^2 ω sin(α)/4, 0, m R^2 ω cos(α)/2]").correct);
+  REQUIRE(plate_m.check("L0_body", "(m R^2 ω sin α/4, 0, m R^2 ω cos α/2)").correct);
+  // Two numbers side by side are never a product: "1 4" is no 4.
+  REQUIRE_THAT(error_of(plate_m, "I0", "m R^2 1 4"), Catch::Contains("products need '*'"));
   // A subscript written as LaTeX does, psidot_0 for psidot0, is the problem's symbol.
   REQUIRE(top.check("p_psi", "M*R^2*psidot_0/2").correct);
   // Factors run together, or a symbol in the other case: what was probably meant.
