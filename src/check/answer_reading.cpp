@@ -310,6 +310,16 @@ std::string starred(const std::string& s) {
   return out;
 }
 
+// Whether s names one of the problem's symbols that is no unit ("R^2 psidot0/2", not "m" or "g":
+// after a number, "kg m^2" is a unit, whatever went wrong in it).
+bool names_a_symbol(const std::string& s, const sym::SymbolTable& table) {
+  for (const auto& [start, length] : identifiers(s)) {
+    const std::string id = s.substr(start, length);
+    if (table.contains(id) && !is_unit(id)) return true;
+  }
+  return false;
+}
+
 // Whether s has an identifier that is one of the problem's symbols; whether all of its
 // identifiers are (and it has one).
 bool has_identifier_of(const std::string& s, const sym::SymbolTable& table) {
@@ -497,7 +507,7 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
           left_reads = false;
         }
         const std::string right = trim(value.substr(sp + 1));
-        if (left_reads && has_identifier_of(right, table)) {  // "M R^2 (psidot0 + 1/2"
+        if (left_reads && names_a_symbol(right, table)) {  // "M R^2 (psidot0 + 1/2"
           const std::string written = starred(value);
           throw InputError(field + ": cannot read \"" + value + "\": " +
                            (has_bare_function(written)
