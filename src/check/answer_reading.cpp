@@ -487,6 +487,14 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
         unit.clear();
       } catch (const InputError&) {
       }
+      // "m R^2/4 kg m^2": factors side by side with a unit, read so as to say what is wrong (an
+      // expression in the symbols takes no unit), not that the factors need their '*'.
+      if (p.value.entries.empty() && may_be_side_by_side(value, table)) {
+        try {
+          p.value = sym::parse_value_text(layout(starred(value)), table, field);
+        } catch (const InputError&) {
+        }
+      }
     }
     if (unit.empty() && p.value.entries.empty()) {
       // "0.16 parsecs": a value and something that is not a unit; say so, not "cannot read".

@@ -451,6 +451,9 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
   // A vector's components, commas between them, may be products side by side too.
   REQUIRE(plate_m.check("L0_body", "[m R^2 ω sin(α)/4, 0, m R^2 ω cos(α)/2]").correct);
   REQUIRE(plate_m.check("L0_body", "(m R^2 ω sin α/4, 0, m R^2 ω cos α/2)").correct);
+  // Side by side with a unit: what is wrong is the unit, not the missing '*'.
+  REQUIRE_THAT(error_of(plate_m, "I0", "m R^2/4 kg m^2"),
+               Catch::Contains("in SI already; drop the unit 'kg m^2'"));
   // Two numbers side by side are never a product: "1 4" is no 4.
   REQUIRE_THAT(error_of(plate_m, "I0", "m R^2 1 4"), Catch::Contains("products need '*'"));
   // A subscript written as LaTeX does, psidot_0 for psidot0, is the problem's symbol.
