@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "check/latex_answer.hpp"
-#include "check/text.hpp"
+#include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"
 
@@ -356,6 +356,19 @@ bool may_be_side_by_side(const std::string& s, const sym::SymbolTable& table) {
   return has_identifier_of(s, table);
 }
 
+// Reads factors side by side into p, a '*' for each space between two factors, where they may
+// be such (may_be_side_by_side) and then read; returns whether they did.
+bool read_side_by_side(const std::string& value, const sym::SymbolTable& table,
+                       const std::string& field, ReadAnswer& p) {
+  if (!may_be_side_by_side(value, table)) return false;
+  try {
+    p.value = sym::parse_value_text(layout(starred(value)), table, field);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
 // Whether a text with its stars written in has a function with no parentheses ("cos*theta0^2"):
 // no advice to paste.
 bool has_bare_function(const std::string& written) {
@@ -489,25 +502,14 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
       }
       // "m R^2/4 kg m^2": factors side by side with a unit, read so as to say what is wrong (an
       // expression in the symbols takes no unit), not that the factors need their '*'.
-      if (p.value.entries.empty() && may_be_side_by_side(value, table)) {
-        try {
-          p.value = sym::parse_value_text(layout(starred(value)), table, field);
-        } catch (const InputError&) {
-        }
-      }
+      if (p.value.entries.empty()) read_side_by_side(value, table, field, p);
     }
     if (unit.empty() && p.value.entries.empty()) {
       // "0.16 parsecs": a value and something that is not a unit; say so, not "cannot read".
       if (const auto sp = value.find(' '); sp != std::string::npos) {
         // Factors side by side, as LaTeX sets a product and as a student writes one ("M g l",
-        // "M l g cos theta0"): read with a '*' for each space between two factors.
-        if (may_be_side_by_side(value, table)) {
-          try {
-            p.value = sym::parse_value_text(layout(starred(value)), table, field);
-            return finished(p, unit, field);
-          } catch (const InputError&) {
-          }
-        }
+        // "M l g cos theta0").
+        if (read_side_by_side(value, table, field, p)) return finished(p, unit, field);
         bool left_reads = true;
         try {
           (void)sym::parse_value_text(layout(trim(value.substr(0, sp))), table, field);

@@ -14,7 +14,7 @@
 #include "check/diagnosis.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
-#include "check/text.hpp"
+#include "core/characters.hpp"
 #include "core/inertia.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"

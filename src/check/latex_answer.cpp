@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "check/latex_vocabulary.hpp"
-#include "check/text.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"

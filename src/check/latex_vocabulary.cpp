@@ -2,7 +2,7 @@
 
 #include <cctype>
 
-#include "check/text.hpp"
+#include "core/characters.hpp"
 
 namespace wobble::check {
 

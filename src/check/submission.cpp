@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/characters.hpp"
 #include "core/input_error.hpp"
 
 namespace wobble::check {
@@ -13,13 +14,6 @@ namespace wobble::check {
 namespace {
 // A submission is a few dozen lines; a larger text is no submission.
 constexpr std::size_t kMaxSubmissionBytes = 1 << 20;
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  const auto b = s.find_last_not_of(" \t\r");
-  return s.substr(a, b - a + 1);
-}
 
 struct Line {
   int number = 0;

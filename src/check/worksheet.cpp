@@ -6,7 +6,7 @@
 #include <istream>
 #include <ostream>
 
-#include "check/text.hpp"
+#include "core/characters.hpp"
 #include "core/input_error.hpp"
 
 namespace wobble::check {
@@ -41,8 +41,7 @@ enum class Outcome { right, revealed, skipped, quit, nothing };
 enum class Command { none, hint, reveal, skip, quit, help };
 
 Command command_of(const std::string& line) {
-  std::string word;
-  for (const char c : line) word += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string word = ascii_lower(line);
   if (word == "?" || word == "hint") return Command::hint;
   if (word == "!" || word == "reveal") return Command::reveal;
   if (word == "s" || word == "skip") return Command::skip;

@@ -1,12 +1,12 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 
 #include "cli/commands.hpp"
+#include "core/characters.hpp"
 #include "core/work_budget.hpp"
 #include "io/atomic_write.hpp"
 #include "problem/scene.hpp"
@@ -33,10 +33,7 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
     methods += (i + 1 == names.size() ? " or " : ", ") + names[i].first;
   // In any case, as the tables print some of them (DOP853, RK4).
   app.add_option("--method", opt.method, methods + " (default: the scene's, usually auto)")
-      ->transform([](std::string text) {
-        for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        return text;
-      });
+      ->transform([](const std::string& text) { return ascii_lower(text); });
   app.add_option("--tolerance", opt.tolerance,
                  "Relative tolerance for the adaptive methods, " + scene_tolerance_range());
   app.add_option("--samples", opt.samples,

@@ -1,6 +1,7 @@
 #include "core/characters.hpp"
 
 #include <boost/locale/utf.hpp>
+#include <cctype>
 #include <cstdio>
 
 namespace wobble {
@@ -47,6 +48,17 @@ std::string character_name(const std::string& text, std::size_t i, std::size_t* 
   }
   if (is_control(d.code)) return "the control character " + code_text(d.code);
   return "'" + text.substr(i, d.bytes) + "' (" + code_text(d.code) + ")";
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+std::string ascii_lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
 }
 
 bool is_control_at(const std::string& text, std::size_t i) {

@@ -13,6 +13,12 @@ namespace wobble {
 /// if given (1 for a byte that is no UTF-8).
 std::string character_name(const std::string& text, std::size_t i, std::size_t* bytes = nullptr);
 
+/// `s` without the spaces, tabs and line ends around it.
+std::string trim(const std::string& s);
+
+/// `s` with its ASCII letters in lower case (a command or a name typed in any case).
+std::string ascii_lower(std::string s);
+
 /// Whether a control character (C0, DEL or C1) starts at byte i: what a terminal may obey.
 bool is_control_at(const std::string& text, std::size_t i);
 

@@ -8,18 +8,13 @@
 #include <map>
 #include <utility>
 
+#include "core/characters.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 
 namespace wobble {
 
 namespace {
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t");
-  return s.substr(b, e - b + 1);
-}
 
 std::string shortest(double x) {
   char buf[40];

@@ -63,10 +63,7 @@ std::string probably_meant(const std::string& name, const GiNaC::symtab& symbols
       product.find('*') != std::string::npos) {
     return " (products need '*': " + product + ")";
   }
-  const auto lower = [](std::string t) {
-    for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return t;
-  };
+  const auto lower = [](const std::string& t) { return ascii_lower(t); };
   for (const auto& [known, value] : symbols) {
     if (!call && known != name && lower(known) == lower(name))
       return " (names are case-sensitive: " + known + "?)";

@@ -180,22 +180,14 @@ Unit parse_unit(const std::string& text, const std::string& field) {
   return u;
 }
 
-namespace {
-std::string trimmed(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
-}  // namespace
-
 std::pair<std::string, std::string> split_value_unit(const std::string& text) {
-  const std::string t = trimmed(text);
+  const std::string t = trim(text);
   for (std::size_t k = 1; k < t.size(); ++k) {
     const auto c = static_cast<unsigned char>(t[k]), before = static_cast<unsigned char>(t[k - 1]);
     const bool word = std::isalpha(c) && !std::isalpha(before) && before != '_';
     const bool reciprocal_or_bracketed = (c == '1' || c == '[' || c == '(') && before == ' ';
     if (!word && !reciprocal_or_bracketed) continue;
-    const std::string value = trimmed(t.substr(0, k)), unit = trimmed(t.substr(k));
+    const std::string value = trim(t.substr(0, k)), unit = trim(t.substr(k));
     if (!value.empty() && is_unit(unit)) return {value, unit};
   }
   return {t, ""};

@@ -2,14 +2,11 @@
 
 #include <algorithm>
 
+#include "core/characters.hpp"
+
 namespace wobble::sym {
 
 namespace {
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\n");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\n") - b + 1);
-}
 
 // Splits "[a, b, (c, d)]" into its top-level items; text must start with '[' and end with ']'.
 std::vector<std::string> items(const std::string& text, const std::string& field) {

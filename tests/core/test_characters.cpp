@@ -43,3 +43,11 @@ TEST_CASE("printable text keeps what was typed and stops at a length") {
   REQUIRE(printable("abc", 3) == "abc");
   REQUIRE(printable("", 3).empty());
 }
+
+TEST_CASE("trim drops the spaces, tabs and line ends around a text; ascii_lower only letters") {
+  REQUIRE(trim(" \t 5 cm \r\n") == "5 cm");
+  REQUIRE(trim(" \t\r\n").empty());
+  REQUIRE(trim("a") == "a");
+  REQUIRE(ascii_lower("DOP853 Quit") == "dop853 quit");
+  REQUIRE(ascii_lower("ÉA") == "Éa");  // bytes of a UTF-8 character are left as they are
+}
