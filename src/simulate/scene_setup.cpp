@@ -9,8 +9,8 @@
 #include "core/principal_axes.hpp"
 #include "problem/values.hpp"
 #include "solvers/inertia_body.hpp"
+#include "symbolic/quantity.hpp"
 #include "symbolic/unicode_notation.hpp"
-#include "symbolic/units.hpp"
 
 namespace wobble {
 
@@ -20,41 +20,11 @@ struct Eval {
   double operator()(const std::string& text, const std::string& field) const {
     return sym::evaluate(ctx.table.parse(text, field), ctx.exact.at, field);
   }
-  // A quantity in `si_unit` ("s", "rad/s", "m/s^2"; "rad" for an angle): an expression in the
-  // scene's parameters, in that unit, or followed by a unit of its own, converted exactly: "2",
-  // "2*pi/omega", "500 ms", "1432 rpm", "30deg", "30°", "(90 - 15) deg", "5 [cm]". The
-  // expression is read first: a parameter named like a unit ("m", "g") stays the parameter in
-  // "2*m"; "0.5 m", which is no expression (a product needs '*'), is half a metre.
+  // A quantity in `si_unit` ("s", "rad/s", "m/s^2"; "rad" for an angle), as
+  // symbolic/quantity.hpp reads it: "2*pi/omega", "500 ms", "1432 rpm", "30°".
   double quantity(const std::string& text, const std::string& field,
                   const std::string& si_unit) const {
-    const std::string ascii = sym::to_ascii(text);
-    try {
-      return (*this)(ascii, field);
-    } catch (const InputError& whole) {
-      const auto [value, unit] = split_value_unit(ascii);
-      if (unit.empty()) {
-        refuse_unknown_unit(ascii, field);
-        throw;
-      }
-      const Unit given = parse_unit(unit, field);
-      const Unit wanted = si_unit.empty() ? Unit{} : parse_unit(si_unit, field);
-      if (!unit_fits(given, wanted)) {
-        const std::string must = wanted.angle ? "an angle (rad, deg or rev)"
-                                 : si_unit.empty()
-                                     ? "a pure number"
-                                     : fmt::format("in {} ({})", si_unit, wanted.dimension_words());
-        throw InputError(fmt::format("{}: '{}' is in {} ({}); it must be {}", field, text,
-                                     given.text, given.dimension_words(), must));
-      }
-      // The value alone first: if it is no expression either, the whole text's message stands.
-      try {
-        (void)(*this)(value, field);
-      } catch (const InputError&) {
-        throw whole;
-      }
-      return (*this)("(" + value + ")*(" + given.to_si_exact + ")/(" + wanted.to_si_exact + ")",
-                     field);
-    }
+    return sym::evaluate(sym::parse_quantity(ctx.table, text, field, si_unit), ctx.exact.at, field);
   }
   Vec3 vec(const Expr3& v, const std::string& field, const std::string& si_unit) const {
     Vec3 out;
@@ -70,26 +40,6 @@ struct Eval {
                                    text, v, si_unit));
     }
     return v;
-  }
-
- private:
-  // "2 parsecs": an expression and a word that is no unit; say so, not "undefined symbol".
-  void refuse_unknown_unit(const std::string& ascii, const std::string& field) const {
-    const auto space = ascii.find_last_of(' ');
-    if (space == std::string::npos) return;
-    const std::string before = ascii.substr(0, space), tail = ascii.substr(space + 1);
-    if (tail.empty() || !std::isalpha(static_cast<unsigned char>(tail[0]))) return;
-    const auto reads = [&](const std::string& part) {
-      try {
-        (void)(*this)(part, field);
-        return true;
-      } catch (const InputError&) {
-        return false;
-      }
-    };
-    // "2 R" with a parameter R is a product without its '*': the whole text's message says so.
-    if (!reads(before) || reads(tail)) return;
-    (void)parse_unit(tail, field);  // throws its error
   }
 };
 

@@ -8,18 +8,22 @@
 #include "core/shapes.hpp"
 #include "core/validity.hpp"
 #include "symbolic/canonical_print.hpp"
+#include "symbolic/quantity.hpp"
 #include "symbolic/shape_integrals.hpp"
 
 namespace wobble {
 
 namespace {
 // Parses and evaluates expressions of the body; failures are ExpressionErrors naming `field`.
+// Each quantity may carry a unit of its own ("200 g", "4 cm", "2.5 g cm^2"), converted exactly
+// (symbolic/quantity.hpp): the key stays exact.
 struct Evaluator {
   const sym::SymbolTable& table;
   GiNaC::lst at;
 
-  GiNaC::ex parse(const std::string& text, const std::string& field) const {
-    return table.parse(text, field);
+  GiNaC::ex parse(const std::string& text, const std::string& field,
+                  const std::string& si_unit) const {
+    return sym::parse_quantity(table, text, field, si_unit);
   }
   double value(const GiNaC::ex& e, const std::string& field) const {
     return sym::evaluate(e, at, field);
@@ -32,12 +36,13 @@ struct Evaluator {
     }
     return v;
   }
+  // A position (m).
   sym::SymVec3 vec(const std::array<std::string, 3>& text, const std::string& field,
                    Vec3& numeric) const {
     sym::SymVec3 out;
     for (std::size_t i = 0; i < 3; ++i) {
       const std::string f = field + "[" + std::to_string(i) + "]";
-      out[i] = parse(text[i], f);
+      out[i] = parse(text[i], f, "m");
       numeric[static_cast<Eigen::Index>(i)] = value(out[i], f);
     }
     return out;
@@ -67,7 +72,7 @@ void add_point_masses(const Problem& problem, const Evaluator& ev, InertiaBody& 
   std::vector<PointMass> numeric;
   for (std::size_t i = 0; i < masses.size(); ++i) {
     const std::string f = "body.masses[" + std::to_string(i) + "]";
-    const GiNaC::ex m = ev.parse(masses[i].mass, f + ".mass");
+    const GiNaC::ex m = ev.parse(masses[i].mass, f + ".mass", "kg");
     const double m_kg = ev.positive(m, masses[i].mass, f + ".mass");
     Vec3 r;
     const sym::SymVec3 r_exact = ev.vec(masses[i].at, f + ".at", r);
@@ -129,13 +134,13 @@ void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
       throw InputError(fmt::format("{}.sizes: a {} takes {} sizes ({}), got {}", f, s.shape,
                                    size_names.size(), fmt::join(size_names, ", "), s.sizes.size()));
     }
-    const GiNaC::ex m = ev.parse(s.mass, f + ".mass");
+    const GiNaC::ex m = ev.parse(s.mass, f + ".mass", "kg");
     const double m_kg = ev.positive(m, s.mass, f + ".mass");
     std::vector<GiNaC::ex> sizes;
     std::vector<double> sizes_m;
     for (std::size_t k = 0; k < s.sizes.size(); ++k) {
       const std::string sf = f + ".sizes[" + std::to_string(k) + "]";
-      sizes.push_back(ev.parse(s.sizes[k], sf));
+      sizes.push_back(ev.parse(s.sizes[k], sf, "m"));
       sizes_m.push_back(ev.positive(sizes.back(), s.sizes[k], sf));
     }
     Vec3 c;
@@ -188,7 +193,7 @@ void set_tensor(const Problem& problem, const Evaluator& ev, InertiaBody& body) 
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned j = 0; j < 3; ++j) {
       const std::string f = fmt::format("body.tensor[{}][{}]", i, j);
-      body.exact.I_O(i, j) = GiNaC::normal(ev.parse(rows[i][j], f));
+      body.exact.I_O(i, j) = GiNaC::normal(ev.parse(rows[i][j], f, "kg m^2"));
       numeric(i, j) = ev.value(body.exact.I_O(i, j), f);
     }
   }

@@ -11,6 +11,7 @@
 #include "problem/values.hpp"
 #include "simulate/problem_scene.hpp"
 #include "simulate/simulation.hpp"
+#include "symbolic/quantity.hpp"
 
 namespace wobble::web {
 
@@ -36,12 +37,14 @@ json body_parts(const Scene& scene, const sym::Values& values, const SceneSetup&
   const Problem& p = scene.model;
   const sym::SymbolTable table = p.symbol_table();
   const GiNaC::lst at = sym::substitution(table, values);
-  const auto number = [&](const std::string& text, const std::string& field) {
-    return sym::evaluate(table.parse(text, field), at, field);
+  // Read as the body was built (solvers/inertia_body.cpp): each may carry a unit ("20 cm").
+  const auto number = [&](const std::string& text, const std::string& field,
+                          const std::string& si_unit) {
+    return sym::evaluate(sym::parse_quantity(table, text, field, si_unit), at, field);
   };
   const auto point = [&](const std::array<std::string, 3>& v, const std::string& field) -> Vec3 {
     Vec3 x = Vec3::Zero();
-    for (int i = 0; i < 3; ++i) x[i] = number(v[i], field);
+    for (int i = 0; i < 3; ++i) x[i] = number(v[i], field, "m");
     return x - s.turning_point_B;
   };
   json parts = json::array();
@@ -49,7 +52,7 @@ json body_parts(const Scene& scene, const sym::Values& values, const SceneSetup&
     const ShapeSpec& shape = p.body.shapes[k];
     const std::string field = fmt::format("body.shapes[{}]", k);
     json sizes = json::array();
-    for (const auto& size : shape.sizes) sizes.push_back(shown(number(size, field)));
+    for (const auto& size : shape.sizes) sizes.push_back(shown(number(size, field, "m")));
     parts.push_back({{"shape", shape.shape},
                      {"sizes", sizes},
                      {"center", vec(point(shape.center, field))},
@@ -59,7 +62,7 @@ json body_parts(const Scene& scene, const sym::Values& values, const SceneSetup&
     const MassSpec& m = p.body.masses[k];
     const std::string field = fmt::format("body.masses[{}]", k);
     parts.push_back({{"shape", "point"},
-                     {"mass", shown(number(m.mass, field))},
+                     {"mass", shown(number(m.mass, field, "kg"))},
                      {"center", vec(point(m.at, field))},
                      {"q", quat(Quat::Identity())}});
   }

@@ -101,3 +101,25 @@ TEST_CASE("a scene's unit of the wrong dimension, or a word that is no unit, is 
       }),
       Contains("initial.quaternion[0]: '1 deg' is in deg (an angle); it must be a pure number"));
 }
+
+TEST_CASE("a scene's body reads units as the problems' bodies do") {
+  // The heavy top's disc: M = 0.5 kg, R = 0.05 m, its centre l = 0.08 m up the axle.
+  const SceneSetup si = heavy_top_with([](Scene& s) {
+    auto& disc = s.model.body.shapes.at(0);
+    disc.mass = "0.5";
+    disc.sizes = {"0.05"};
+    disc.center = {"0", "0", "0.08"};
+  });
+  const SceneSetup units = heavy_top_with([](Scene& s) {
+    auto& disc = s.model.body.shapes.at(0);
+    disc.mass = "500 g";
+    disc.sizes = {"5 cm"};
+    disc.center = {"0", "0", "80 mm"};
+  });
+  CHECK(units.mass_kg == si.mass_kg);
+  CHECK(units.moments == si.moments);
+  CHECK(units.model.d_P_m == si.model.d_P_m);
+  CHECK(units.m0_P == si.m0_P);
+  CHECK_THAT(refusal([](Scene& s) { s.model.body.shapes.at(0).sizes = {"5 kg"}; }),
+             Contains("body.shapes[0].sizes[0]: '5 kg' is in kg (mass); it must be in m"));
+}

@@ -188,6 +188,14 @@ TEST_CASE("every motion turns at most the allowed angle between two samples, for
   }
 }
 
+TEST_CASE("a body written with units is drawn at its size in metres") {
+  // wheel-brake's cylinder is written "20 cm" by "5 cm"; its centre is the turning point.
+  const json m = json::parse(web::scene_motion_json(find_scene("wheel-brake")));
+  REQUIRE(m["parts"].size() == 1);
+  CHECK(m["parts"][0]["shape"] == "cylinder");
+  CHECK(m["parts"][0]["sizes"] == json::array({0.2, 0.05}));
+}
+
 TEST_CASE("a problem without motion has none to show") {
   const Problem p = find_problem("box-corner");
   CHECK_FALSE(web::has_motion(p));
