@@ -14,6 +14,8 @@
 ///     rod       L        thin rod along z                           diag(L²/12, L²/12, 0)
 ///     cone      R, h     solid right cone, axis z, apex up: apex    diag(3R²/20+3h²/80, same,
 ///                        at z = 3h/4, base (radius R) at z = -h/4   3R²/10)
+///     ring      R        thin hoop in the x-y plane, axis z         diag(1/2, 1/2, 1) R²
+///     shell     R        thin spherical shell                       (2/3) R² 1
 ///
 /// A shape is one entry of the table in shapes.cpp (name, sizes, this closed form) and its enum
 /// value; symbolic/shape_integrals derives each tensor again by integration, and the two are
@@ -26,7 +28,7 @@
 
 namespace wobble {
 
-enum class ShapeKind { box, plate, disc, cylinder, sphere, rod, cone };
+enum class ShapeKind { box, plate, disc, cylinder, sphere, rod, cone, ring, shell };
 
 /// Every kind, in the table's order.
 std::vector<ShapeKind> shape_kinds();

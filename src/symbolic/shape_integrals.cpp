@@ -89,11 +89,38 @@ std::array<ex, 3> second_moments(wobble::ShapeKind kind, const ex& M, const std:
       };
       const ex rho = M / over(1);
       steps.push_back(
-          {"Apex at z = 3h/4, base at z = −h/4, radius R (3h/4 − z)/h: S_xx = S_yy = ½ ρ ∫∫ r² 2π r "
+          {"Apex at z = 3h/4, base at z = −h/4, radius R (3h/4 − z)/h: S_xx = S_yy = ½ ρ ∫∫ r² 2π "
+           "r "
            "dr dz, S_zz = ρ ∫∫ z² 2π r dr dz, ρ = M/(π R² h/3)",
            "S_{xx} = S_{yy} = \\frac{\\rho}{2}\\int_{-h/4}^{3h/4}\\int_0^{R(3h/4 - z)/h} "
            "r^2\\,2\\pi r\\,dr\\,dz,\\ S_{zz} = \\rho\\int\\int z^2\\,2\\pi r\\,dr\\,dz"});
       return {rho * over(r * r) / 2, rho * over(r * r) / 2, rho * over(z * z)};
+    }
+    case K::ring: {
+      // All the mass at radius R in the x-y plane, dm = M/(2π R) ds along its length s; by
+      // symmetry S_xx = S_yy = ½ ∫ (x² + y²) dm = ½ ∫ R² dm (GiNaC integrates polynomials only).
+      const GiNaC::symbol arc("s");
+      const ex lambda = M / integrate(arc, 0, 2 * GiNaC::Pi * s[0], 1);
+      const ex radial = lambda * integrate(arc, 0, 2 * GiNaC::Pi * s[0], s[0] * s[0]);
+      steps.push_back(
+          {"S_xx = S_yy = ½ ∫ r² dm = ½ M/(2π R) ∫ R² ds over the length 0..2π R; "
+           "S_zz = 0 (thin)",
+           "S_{xx} = S_{yy} = \\frac{1}{2}\\int r^2\\,dm = \\frac{1}{2}\\,"
+           "\\frac{M}{2\\pi R}\\int_0^{2\\pi R} R^2\\,ds, S_{zz} = 0 \\text{ (thin)}"});
+      return {radial / 2, radial / 2, ex(0)};
+    }
+    case K::shell: {
+      // All the mass at radius R. Between heights z and z + dz (z = R u) lies the area 2π R² du
+      // whatever u (Archimedes), so dm = M/2 du; by symmetry S_xx = S_yy = S_zz.
+      const GiNaC::symbol u("u");
+      const ex band = 2 * GiNaC::Pi * s[0] * s[0];
+      const ex sigma = M / integrate(u, -1, 1, band);
+      const ex each = sigma * integrate(u, -1, 1, s[0] * s[0] * u * u * band);
+      steps.push_back(
+          {"S_zz = M/(4π R²) ∫ (R u)² 2π R² du over u = cos θ in −1..1; S_xx = S_yy = S_zz",
+           "S_{zz} = \\frac{M}{4\\pi R^2}\\int_{-1}^{1} (R u)^2\\,2\\pi R^2\\,du,\\ u = "
+           "\\cos\\theta;\\ S_{xx} = S_{yy} = S_{zz}"});
+      return {each, each, each};
     }
   }
   throw std::logic_error("derive_shape_inertia: unhandled shape kind");

@@ -69,9 +69,11 @@ function motionSection(motion) {
 
 async function showScene(id) {
   const motion = await getJson('api/scenes/' + encodeURIComponent(id) + '/motion');
-  main.replaceChildren(el('h1', {}, motion.title),
-                       el('div', {class: 'statement'}, ...withCode(motion.description.trim())),
-                       motionSection(motion));
+  const description = motion.description.trim();  // optional in a scene file
+  main.replaceChildren(
+      el('h1', {}, motion.title),
+      ...(description ? [el('div', {class: 'statement'}, ...withCode(description))] : []),
+      motionSection(motion));
   typeset(main);
 }
 
