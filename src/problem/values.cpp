@@ -77,8 +77,9 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
   if (!unit.empty()) {
     const Unit given = parse_unit(unit, field), wanted = unit_of(p);
     if (!unit_fits(given, wanted)) {
-      throw InputError(field + ": '" + text + "' is in " + unit + " (" + given.dimension_words() +
-                       "), but " + p.name +
+      // Shown as the expression reader shows a text: 40 characters at most.
+      throw InputError(field + ": '" + printable(text, 40) + "' is in " + printable(unit, 40) +
+                       " (" + given.dimension_words() + "), but " + p.name +
                        (p.unit.empty()
                             ? " is a pure number"
                             : " is in " + p.unit + " (" + wanted.dimension_words() + ")"));

@@ -1,11 +1,15 @@
 #include "simulate/problem_scene.hpp"
 
+#include "symbolic/quantity.hpp"
+
 namespace wobble {
 
 namespace {
-// An expression of the [motion] table, parenthesised to be used inside another.
-std::string term(const Problem& p, const std::string& key) {
-  return "(" + p.motion->at(key) + ")";
+// An expression of the [motion] table in SI `unit`, parenthesised to be used inside another:
+// "(psidot0)", or "(1432)*(...)/(1)" for "1432 rpm" (symbolic/quantity.hpp).
+std::string term(const Problem& p, const std::string& key, const std::string& unit) {
+  return "(" +
+         sym::quantity_expression(p.symbol_table(), p.motion->at(key), "motion." + key, unit) + ")";
 }
 }  // namespace
 
@@ -19,14 +23,16 @@ std::optional<Scene> motion_scene(const Problem& problem) {
   Scene scene;
   scene.model = problem;
   if (problem.solver == "torque_free_symmetric") {
-    const std::string w = term(problem, "omega"), a = term(problem, "alpha");
+    const std::string w = term(problem, "omega", "rad/s"), a = term(problem, "alpha", "rad");
     scene.omega = {w + "*sin" + a, "0", w + "*cos" + a};
   } else if (problem.solver == "asymmetric_top") {
-    scene.omega = {term(problem, "w1"), term(problem, "w2"), term(problem, "w3")};
+    scene.omega = {term(problem, "w1", "rad/s"), term(problem, "w2", "rad/s"),
+                   term(problem, "w3", "rad/s")};
   } else if (problem.solver == "heavy_top") {
-    const std::string theta = term(problem, "theta0"), phidot = term(problem, "phidot0");
-    scene.omega = {"-" + phidot + "*sin" + theta, term(problem, "thetadot0"),
-                   phidot + "*cos" + theta + " + " + term(problem, "psidot0")};
+    const std::string theta = term(problem, "theta0", "rad"),
+                      phidot = term(problem, "phidot0", "rad/s");
+    scene.omega = {"-" + phidot + "*sin" + theta, term(problem, "thetadot0", "rad/s"),
+                   phidot + "*cos" + theta + " + " + term(problem, "psidot0", "rad/s")};
     scene.orientation.kind = OrientationSpec::Kind::euler;
     scene.orientation.euler = {"0", problem.motion->at("theta0"), "0"};
     scene.gravity = GravitySpec{problem.motion->at("g"), {"0", "0", "0"}};

@@ -14,6 +14,7 @@
 #include "solvers/quantity_table.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/canonical_print.hpp"
+#include "symbolic/quantity.hpp"
 
 namespace wobble {
 
@@ -54,7 +55,7 @@ Asym::Asym(const Problem& p, const sym::Values& values) : BodyContext(p, values)
     I[uk] = Ic(uk, uk);
     I_n[k] = value(t, I[uk], fmt::format("I{}", k + 1));
     const std::string key = fmt::format("w{}", k + 1);
-    w[uk] = t.table.parse(problem.motion->at(key), "motion." + key);
+    w[uk] = sym::parse_quantity(t.table, problem.motion->at(key), "motion." + key, "rad/s");
     w_n[k] = value(t, w[uk], "motion." + key);
   }
   require_rotating_body(file(), I_n, kWho);

@@ -9,10 +9,11 @@
 #include "core/euler_angles.hpp"
 #include "solvers/body_requirements.hpp"
 #include "solvers/exact_answer.hpp"
-#include "solvers/quantity_table.hpp"
 #include "solvers/inertia_body.hpp"
+#include "solvers/quantity_table.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/canonical_print.hpp"
+#include "symbolic/quantity.hpp"
 
 namespace wobble {
 
@@ -40,7 +41,8 @@ Angles::Angles(const Problem& p, const sym::Values& values) : BodyContext(p, val
   const std::array<ex*, 6> fields{&phi, &theta, &psi, &phidot, &thetadot, &psidot};
   const std::array<const char*, 6> keys{"phi", "theta", "psi", "phidot", "thetadot", "psidot"};
   for (std::size_t i = 0; i < 6; ++i) {
-    *fields[i] = t.table.parse(problem.motion->at(keys[i]), std::string("motion.") + keys[i]);
+    *fields[i] = sym::parse_quantity(t.table, problem.motion->at(keys[i]),
+                                     std::string("motion.") + keys[i], i < 3 ? "rad" : "rad/s");
     const double v = value(t, *fields[i], std::string("motion.") + keys[i]);
     (i < 3 ? angles_n : rates_n)[static_cast<int>(i % 3)] = v;
   }

@@ -15,6 +15,7 @@
 #include "solvers/quantity_table.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/canonical_print.hpp"
+#include "symbolic/quantity.hpp"
 
 namespace wobble {
 
@@ -36,8 +37,10 @@ double value(const Top& t, const ex& e, const std::string& field) {
   return sym::evaluate(e, t.exact.at, field);
 }
 
+// g in m/s^2, theta0 in rad, the rates in rad/s; each may carry a unit of its own.
 ex motion(Top& t, const std::string& key) {
-  return t.table.parse(t.problem.motion->at(key), "motion." + key);
+  const std::string unit = key == "g" ? "m/s^2" : key == "theta0" ? "rad" : "rad/s";
+  return sym::parse_quantity(t.table, t.problem.motion->at(key), "motion." + key, unit);
 }
 
 Top::Top(const Problem& p, const sym::Values& values) : BodyContext(p, values) {

@@ -12,6 +12,7 @@
 #include "solvers/quantity_table.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/canonical_print.hpp"
+#include "symbolic/quantity.hpp"
 
 namespace wobble {
 
@@ -45,7 +46,7 @@ Top::Top(const Problem& p, const sym::Values& values) : BodyContext(with_motion(
   require_symmetric_about_z(t, I_cm, kWho, "about the centre of mass", "asymmetric_top");
   t.I1 = I_cm(0, 0);
   t.I3 = I_cm(2, 2);
-  t.omega = t.table.parse(problem.motion->at("omega"), "motion.omega");
+  t.omega = sym::parse_quantity(t.table, problem.motion->at("omega"), "motion.omega", "rad/s");
   t.alpha = t.table.parse(problem.motion->at("alpha"), "motion.alpha");
   if (!GiNaC::is_a<GiNaC::symbol>(t.alpha)) {
     throw InputError("motion.alpha: must name a parameter (the series is taken in it), got \"" +

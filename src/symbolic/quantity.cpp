@@ -1,7 +1,9 @@
 #include "symbolic/quantity.hpp"
 
+#include <algorithm>
 #include <cctype>
 
+#include "core/characters.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 
@@ -30,20 +32,24 @@ void refuse_unknown_unit(const SymbolTable& table, const std::string& ascii,
 }
 }  // namespace
 
-GiNaC::ex parse_quantity(const SymbolTable& table, const std::string& text,
-                         const std::string& field, const std::string& si_unit) {
+std::string quantity_expression(const SymbolTable& table, const std::string& text,
+                                const std::string& field, const std::string& si_unit) {
   const std::string ascii = to_ascii(text);
   try {
-    return table.parse(ascii, field);
+    (void)table.parse(ascii, field);
+    return ascii;
   } catch (const InputError&) {
-    const auto [value, unit] = split_value_unit(ascii);
-    if (unit.empty()) {
+    // The longest unit after a value that reads: "100*g cm/s^2" with a parameter g is 100 g
+    // in cm/s^2. If no value reads ("q*m" with no parameter q), the whole text's message stands.
+    const auto splits = value_unit_splits(ascii);
+    if (splits.empty()) {
       refuse_unknown_unit(table, ascii, field);
       throw;
     }
-    // The value alone first: if it is no expression either ("q*m" with no parameter q), the
-    // whole text's message stands.
-    if (!reads(table, value, field)) throw;
+    const auto split = std::find_if(splits.begin(), splits.end(),
+                                    [&](const auto& s) { return reads(table, s.first, field); });
+    if (split == splits.end()) throw;
+    const auto& [value, unit] = *split;
     const Unit given = parse_unit(unit, field);
     const Unit wanted = si_unit.empty() ? Unit{} : parse_unit(si_unit, field);
     if (!unit_fits(given, wanted)) {
@@ -51,12 +57,23 @@ GiNaC::ex parse_quantity(const SymbolTable& table, const std::string& text,
                                : si_unit.empty()
                                    ? "a pure number"
                                    : "in " + si_unit + " (" + wanted.dimension_words() + ")";
-      throw ExpressionError(field + ": '" + text + "' is in " + given.text + " (" +
-                            given.dimension_words() + "); it must be " + must);
+      // As the parser shows a text: 40 characters at most, no control character.
+      throw ExpressionError(field + ": '" + printable(text, 40) + "' is in " +
+                            printable(given.text, 40) + " (" + given.dimension_words() +
+                            "); it must be " + must);
     }
-    return table.parse("(" + value + ")*(" + given.to_si_exact + ")/(" + wanted.to_si_exact + ")",
-                       field);
+    return "(" + value + ")*(" + given.to_si_exact + ")/(" + wanted.to_si_exact + ")";
   }
+}
+
+GiNaC::ex parse_quantity(const SymbolTable& table, const std::string& text,
+                         const std::string& field, const std::string& si_unit) {
+  try {  // most quantities are expressions: parsed once
+    return table.parse(to_ascii(text), field);
+  } catch (const InputError&) {
+    // a value with its unit, or an error that quantity_expression gives again, in its terms
+  }
+  return table.parse(quantity_expression(table, text, field, si_unit), field);
 }
 
 }  // namespace wobble::sym

@@ -26,4 +26,11 @@ namespace wobble::sym {
 GiNaC::ex parse_quantity(const SymbolTable& table, const std::string& text,
                          const std::string& field, const std::string& si_unit);
 
+/// The same quantity as ASCII expression text in SI, for a caller that builds a larger
+/// expression from it (a problem's motion turned into a scene's): the text itself when it is an
+/// expression, else "(value)*(factor)/(factor)" with the units' exact factors.
+/// @throws as parse_quantity.
+std::string quantity_expression(const SymbolTable& table, const std::string& text,
+                                const std::string& field, const std::string& si_unit);
+
 }  // namespace wobble::sym

@@ -180,17 +180,23 @@ Unit parse_unit(const std::string& text, const std::string& field) {
   return u;
 }
 
-std::pair<std::string, std::string> split_value_unit(const std::string& text) {
+std::vector<std::pair<std::string, std::string>> value_unit_splits(const std::string& text) {
   const std::string t = trim(text);
+  std::vector<std::pair<std::string, std::string>> out;
   for (std::size_t k = 1; k < t.size(); ++k) {
     const auto c = static_cast<unsigned char>(t[k]), before = static_cast<unsigned char>(t[k - 1]);
     const bool word = std::isalpha(c) && !std::isalpha(before) && before != '_';
     const bool reciprocal_or_bracketed = (c == '1' || c == '[' || c == '(') && before == ' ';
     if (!word && !reciprocal_or_bracketed) continue;
-    const std::string value = trim(t.substr(0, k)), unit = trim(t.substr(k));
-    if (!value.empty() && is_unit(unit)) return {value, unit};
+    std::string value = trim(t.substr(0, k)), unit = trim(t.substr(k));
+    if (!value.empty() && is_unit(unit)) out.emplace_back(std::move(value), std::move(unit));
   }
-  return {t, ""};
+  return out;
+}
+
+std::pair<std::string, std::string> split_value_unit(const std::string& text) {
+  auto splits = value_unit_splits(text);
+  return splits.empty() ? std::pair{trim(text), std::string()} : std::move(splits.front());
 }
 
 bool unit_fits(const Unit& given, const Unit& wanted) {

@@ -17,6 +17,7 @@
 #include <array>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace wobble {
 
@@ -43,6 +44,10 @@ bool is_unit(const std::string& text);
 /// a word ("0.05 m", "5cm", "9.81 m/s^2", "150 1/s", "5 [cm]", "(90 - 15)deg"; not the "i" of
 /// "2*pi"). Both trimmed; the value is not read here. ASCII text (sym::to_ascii first).
 std::pair<std::string, std::string> split_value_unit(const std::string& text);
+
+/// Every such split, the longest unit first: "100*g cm/s^2" is 100* in g cm/s^2, then 100*g in
+/// cm/s^2 (for a reader that knows which values read: a parameter g, symbolic/quantity.hpp).
+std::vector<std::pair<std::string, std::string>> value_unit_splits(const std::string& text);
 
 /// Whether a value given in `given` may stand for one in `wanted`: the same dimension, and no
 /// angle for a pure number that is no angle (radians are pure numbers, so rad/s is 1/s, but

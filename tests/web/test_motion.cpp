@@ -196,6 +196,17 @@ TEST_CASE("a body written with units is drawn at its size in metres") {
   CHECK(m["parts"][0]["sizes"] == json::array({0.2, 0.05}));
 }
 
+TEST_CASE("a problem's motion written with units is the same motion") {
+  // The [motion] values are built into the scene's expressions (simulate/problem_scene.cpp):
+  // each in SI first, so "(psidot0*60/(2*pi) rpm)" inside a product still reads.
+  Problem top = find_problem("heavy-top");
+  const std::string si = web::problem_motion_json(top, {});
+  top.motion->exprs["psidot0"] = "psidot0*60/(2*pi) rpm";
+  top.motion->exprs["theta0"] = "theta0*180/pi deg";
+  top.motion->exprs["phidot0"] = "phidot0 1/s";
+  CHECK(web::problem_motion_json(top, {}) == si);
+}
+
 TEST_CASE("a problem without motion has none to show") {
   const Problem p = find_problem("box-corner");
   CHECK_FALSE(web::has_motion(p));

@@ -1,6 +1,7 @@
-// A body's masses, sizes, positions and tensor entries read with units of their own ("300 g",
-// "4 cm", "2.5 g cm^2"), converted exactly: the exact tensor is the one the same values give in
-// SI as rationals, and the numeric tensor is the same doubles.
+// A problem's quantities read with units of their own, converted exactly: a body's masses,
+// sizes, positions and tensor entries ("300 g", "4 cm", "2.5 g cm^2") give the exact tensor the
+// same values give in SI as rationals, and the same doubles; motion values ("1432 rpm") give the
+// same key as the same value in SI.
 #include <catch2/catch.hpp>
 #include <map>
 #include <string>
@@ -9,6 +10,7 @@
 #include "problem/values.hpp"
 #include "solvers/catalog.hpp"
 #include "solvers/inertia_body.hpp"
+#include "solvers/solve.hpp"
 #include "symbolic/expression.hpp"
 
 using namespace wobble;
@@ -98,7 +100,78 @@ TEST_CASE("a body's unit of the wrong dimension, or a word that is no unit, is r
              Contains("body.shapes[0].mass: cannot read the unit 'parsecs'"));
   CHECK_THAT(refusal(box_with([](ShapeSpec& s) { s.mass = "-5 g"; })),
              Contains("body.shapes[0].mass: \"-5 g\" is -0.005"));
+  // A long text and unit are shown shortened, as the expression reader shows a text.
+  std::string long_text = "sin(1";
+  for (int i = 0; i < 1000; ++i) long_text += "+1";
+  long_text += ")";
+  for (int i = 0; i < 1000; ++i) long_text += " m";
+  const std::string shown = refusal(box_with([&](ShapeSpec& s) { s.mass = long_text; }));
+  CHECK_THAT(shown, Contains("'sin(1+1+1+") && Contains("...' is in m m m") &&
+                        Contains("(length^1000); it must be in kg (mass)"));
+  CHECK(shown.size() < 200);
   // A parameter named like a unit stays the parameter; side by side it is a product without '*'.
   CHECK_THAT(refusal(box_with([](ShapeSpec& s) { s.mass = "2 M"; })),
              Contains("products need '*'"));
+}
+
+namespace {
+// Every text and number of two keys' answers and steps.
+void require_same_key(const Key& x, const Key& y) {
+  REQUIRE(x.parts.size() == y.parts.size());
+  for (std::size_t i = 0; i < x.parts.size(); ++i) {
+    const PartKey &a = x.parts[i], &b = y.parts[i];
+    INFO("part " << a.id);
+    REQUIRE(a.answers.size() == b.answers.size());
+    for (std::size_t k = 0; k < a.answers.size(); ++k) {
+      INFO(a.answers[k].name);
+      CHECK(a.answers[k].symbolic == b.answers[k].symbolic);
+      CHECK(a.answers[k].latex == b.answers[k].latex);
+      CHECK(a.answers[k].value.data == b.answers[k].value.data);
+    }
+    REQUIRE(a.steps.size() == b.steps.size());
+    for (std::size_t k = 0; k < a.steps.size(); ++k) CHECK(a.steps[k].text == b.steps[k].text);
+  }
+}
+
+Key key_of(const Problem& p) {
+  return solve(p, parameter_values(p, {}));
+}
+}  // namespace
+
+TEST_CASE("a problem's motion values read units: the same value in another unit, the same key") {
+  // Each written as the parameter converted out of SI and back by the unit's exact factor, so
+  // the exact forms cancel to the parameter itself.
+  Problem top = find_problem("heavy-top");
+  const Key si = key_of(top);
+  top.motion->exprs = {{"g", "100*g cm/s^2"},  // g the parameter, before the unit cm/s^2
+                       {"theta0", "theta0*180/pi deg"},
+                       {"thetadot0", "thetadot0 1/s"},
+                       {"phidot0", "phidot0 rad/s"},
+                       {"psidot0", "psidot0*60/(2*pi) rpm"}};
+  require_same_key(key_of(top), si);
+
+  Problem plate = find_problem("flying-plate");
+  const Key plate_si = key_of(plate);
+  plate.motion->exprs["omega"] = "omega/(2*pi) Hz";
+  require_same_key(key_of(plate), plate_si);
+
+  Problem euler = find_problem("euler-angles");
+  const Key euler_si = key_of(euler);
+  euler.motion->exprs["theta"] = "theta/(2*pi) rev";
+  euler.motion->exprs["psidot"] = "psidot*60/(2*pi) rpm";
+  require_same_key(key_of(euler), euler_si);
+
+  Problem asymmetric = find_problem("asymmetric-top");
+  const Key asymmetric_si = key_of(asymmetric);
+  asymmetric.motion->exprs["w2"] = "w2*60/(2*pi) rpm";
+  require_same_key(key_of(asymmetric), asymmetric_si);
+}
+
+TEST_CASE("a motion value in a unit of another dimension is refused, naming the key") {
+  Problem top = find_problem("heavy-top");
+  top.motion->exprs["g"] = "2 s";
+  CHECK_THROWS_WITH(key_of(top), Contains("motion.g: '2 s' is in s (time); it must be in m/s^2"));
+  top = find_problem("heavy-top");
+  top.motion->exprs["theta0"] = "30 rpm";
+  CHECK_THROWS_WITH(key_of(top), Contains("motion.theta0: '30 rpm' is in rpm"));
 }
