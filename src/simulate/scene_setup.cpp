@@ -10,16 +10,12 @@
 #include "problem/values.hpp"
 #include "solvers/inertia_body.hpp"
 #include "symbolic/quantity.hpp"
-#include "symbolic/unicode_notation.hpp"
 
 namespace wobble {
 
 namespace {
 struct Eval {
   const BodyContext& ctx;
-  double operator()(const std::string& text, const std::string& field) const {
-    return sym::evaluate(ctx.table.parse(text, field), ctx.exact.at, field);
-  }
   // A quantity in `si_unit` ("s", "rad/s", "m/s^2"; "rad" for an angle), as
   // symbolic/quantity.hpp reads it: "2*pi/omega", "500 ms", "1432 rpm", "30°".
   double quantity(const std::string& text, const std::string& field,
