@@ -10,9 +10,7 @@ namespace {
 // The principal moments about the centre of mass per unit mass (m^2), from the sizes in order.
 using MomentsPerMass = Vec3 (*)(const std::vector<double>& s);
 
-double sq(double x) {
-  return x * x;
-}
+double sq(double x) { return x * x; }
 
 struct ShapeInfo {
   ShapeKind kind;
@@ -24,57 +22,37 @@ struct ShapeInfo {
 // One entry per shape: its name, its sizes and its tensor about the centre of mass.
 const std::array<ShapeInfo, 9>& shape_table() {
   static const std::array<ShapeInfo, 9> table{{
-      {ShapeKind::box,
-       "box",
-       {"a", "b", "c"},
+      {ShapeKind::box, "box", {"a", "b", "c"},
        [](const std::vector<double>& s) -> Vec3 {
          return Vec3{sq(s[1]) + sq(s[2]), sq(s[0]) + sq(s[2]), sq(s[0]) + sq(s[1])} / 12.0;
        }},
-      {ShapeKind::plate,
-       "plate",
-       {"a", "b"},
+      {ShapeKind::plate, "plate", {"a", "b"},
        [](const std::vector<double>& s) -> Vec3 {
          return Vec3{sq(s[1]), sq(s[0]), sq(s[0]) + sq(s[1])} / 12.0;
        }},
-      {ShapeKind::disc,
-       "disc",
-       {"R"},
+      {ShapeKind::disc, "disc", {"R"},
        [](const std::vector<double>& s) -> Vec3 {
          return {sq(s[0]) / 4.0, sq(s[0]) / 4.0, sq(s[0]) / 2.0};
        }},
-      {ShapeKind::cylinder,
-       "cylinder",
-       {"R", "h"},
+      {ShapeKind::cylinder, "cylinder", {"R", "h"},
        [](const std::vector<double>& s) -> Vec3 {
          const double side = sq(s[0]) / 4.0 + sq(s[1]) / 12.0;
          return {side, side, sq(s[0]) / 2.0};
        }},
-      {ShapeKind::sphere,
-       "sphere",
-       {"R"},
+      {ShapeKind::sphere, "sphere", {"R"},
        [](const std::vector<double>& s) -> Vec3 { return Vec3::Constant(0.4 * sq(s[0])); }},
-      {ShapeKind::rod,
-       "rod",
-       {"L"},
-       [](const std::vector<double>& s) -> Vec3 {
-         return {sq(s[0]) / 12.0, sq(s[0]) / 12.0, 0.0};
-       }},
-      {ShapeKind::cone,
-       "cone",
-       {"R", "h"},
+      {ShapeKind::rod, "rod", {"L"},
+       [](const std::vector<double>& s) -> Vec3 { return {sq(s[0]) / 12.0, sq(s[0]) / 12.0, 0.0}; }},
+      {ShapeKind::cone, "cone", {"R", "h"},
        [](const std::vector<double>& s) -> Vec3 {
          const double side = 3.0 / 20.0 * sq(s[0]) + 3.0 / 80.0 * sq(s[1]);
          return {side, side, 3.0 / 10.0 * sq(s[0])};
        }},
-      {ShapeKind::ring,
-       "ring",
-       {"R"},
+      {ShapeKind::ring, "ring", {"R"},
        [](const std::vector<double>& s) -> Vec3 {
          return {sq(s[0]) / 2.0, sq(s[0]) / 2.0, sq(s[0])};
        }},
-      {ShapeKind::shell,
-       "shell",
-       {"R"},
+      {ShapeKind::shell, "shell", {"R"},
        [](const std::vector<double>& s) -> Vec3 { return Vec3::Constant(2.0 / 3.0 * sq(s[0])); }},
   }};
   return table;

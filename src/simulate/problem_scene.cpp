@@ -5,12 +5,15 @@
 namespace wobble {
 
 namespace {
-// An expression of the [motion] table in SI `unit`, parenthesised to be used inside another:
+// The expressions of a problem's [motion] table in SI, parenthesised to be used inside others:
 // "(psidot0)", or "(1432)*(...)/(1)" for "1432 rpm" (symbolic/quantity.hpp).
-std::string term(const Problem& p, const std::string& key, const std::string& unit) {
-  return "(" +
-         sym::quantity_expression(p.symbol_table(), p.motion->at(key), "motion." + key, unit) + ")";
-}
+struct Terms {
+  const Problem& p;
+  sym::SymbolTable table = p.symbol_table();
+  std::string operator()(const std::string& key, const std::string& unit) const {
+    return "(" + sym::quantity_expression(table, p.motion->at(key), "motion." + key, unit) + ")";
+  }
+};
 }  // namespace
 
 bool has_motion_scene(const Problem& problem) {
@@ -22,17 +25,16 @@ std::optional<Scene> motion_scene(const Problem& problem) {
   if (!has_motion_scene(problem)) return std::nullopt;
   Scene scene;
   scene.model = problem;
+  const Terms term{problem};
   if (problem.solver == "torque_free_symmetric") {
-    const std::string w = term(problem, "omega", "rad/s"), a = term(problem, "alpha", "rad");
+    const std::string w = term("omega", "rad/s"), a = term("alpha", "rad");
     scene.omega = {w + "*sin" + a, "0", w + "*cos" + a};
   } else if (problem.solver == "asymmetric_top") {
-    scene.omega = {term(problem, "w1", "rad/s"), term(problem, "w2", "rad/s"),
-                   term(problem, "w3", "rad/s")};
+    scene.omega = {term("w1", "rad/s"), term("w2", "rad/s"), term("w3", "rad/s")};
   } else if (problem.solver == "heavy_top") {
-    const std::string theta = term(problem, "theta0", "rad"),
-                      phidot = term(problem, "phidot0", "rad/s");
-    scene.omega = {"-" + phidot + "*sin" + theta, term(problem, "thetadot0", "rad/s"),
-                   phidot + "*cos" + theta + " + " + term(problem, "psidot0", "rad/s")};
+    const std::string theta = term("theta0", "rad"), phidot = term("phidot0", "rad/s");
+    scene.omega = {"-" + phidot + "*sin" + theta, term("thetadot0", "rad/s"),
+                   phidot + "*cos" + theta + " + " + term("psidot0", "rad/s")};
     scene.orientation.kind = OrientationSpec::Kind::euler;
     scene.orientation.euler = {"0", problem.motion->at("theta0"), "0"};
     scene.gravity = GravitySpec{problem.motion->at("g"), {"0", "0", "0"}};

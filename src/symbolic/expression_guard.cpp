@@ -63,9 +63,8 @@ std::string probably_meant(const std::string& name, const GiNaC::symtab& symbols
       product.find('*') != std::string::npos) {
     return " (products need '*': " + product + ")";
   }
-  const auto lower = [](const std::string& t) { return ascii_lower(t); };
   for (const auto& [known, value] : symbols) {
-    if (!call && known != name && lower(known) == lower(name))
+    if (!call && known != name && ascii_lower(known) == ascii_lower(name))
       return " (names are case-sensitive: " + known + "?)";
   }
   return "";

@@ -89,8 +89,7 @@ std::array<ex, 3> second_moments(wobble::ShapeKind kind, const ex& M, const std:
       };
       const ex rho = M / over(1);
       steps.push_back(
-          {"Apex at z = 3h/4, base at z = −h/4, radius R (3h/4 − z)/h: S_xx = S_yy = ½ ρ ∫∫ r² 2π "
-           "r "
+          {"Apex at z = 3h/4, base at z = −h/4, radius R (3h/4 − z)/h: S_xx = S_yy = ½ ρ ∫∫ r² 2π r "
            "dr dz, S_zz = ρ ∫∫ z² 2π r dr dz, ρ = M/(π R² h/3)",
            "S_{xx} = S_{yy} = \\frac{\\rho}{2}\\int_{-h/4}^{3h/4}\\int_0^{R(3h/4 - z)/h} "
            "r^2\\,2\\pi r\\,dr\\,dz,\\ S_{zz} = \\rho\\int\\int z^2\\,2\\pi r\\,dr\\,dz"});

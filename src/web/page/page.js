@@ -70,10 +70,9 @@ function motionSection(motion) {
 async function showScene(id) {
   const motion = await getJson('api/scenes/' + encodeURIComponent(id) + '/motion');
   const description = motion.description.trim();  // optional in a scene file
-  main.replaceChildren(
-      el('h1', {}, motion.title),
-      ...(description ? [el('div', {class: 'statement'}, ...withCode(description))] : []),
-      motionSection(motion));
+  main.replaceChildren(el('h1', {}, motion.title),
+                       ...(description ? [el('div', {class: 'statement'}, ...withCode(description))] : []),
+                       motionSection(motion));
   typeset(main);
 }
 

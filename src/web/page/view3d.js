@@ -175,12 +175,8 @@ function partExtent(part) {
   switch (part.shape) {
     case 'box': return c + 0.5 * Math.hypot(...s);
     case 'plate': return c + 0.5 * Math.hypot(s[0], s[1]);
-    case 'disc':
-    case 'sphere':
-    case 'shell':
-      return c + s[0];
-    case 'ring':
-      return c + 1.05 * s[0];
+    case 'disc': case 'sphere': case 'shell': return c + s[0];
+    case 'ring': return c + 1.05 * s[0];
     case 'cylinder': case 'cone': return c + Math.hypot(s[0], s[1]);
     case 'rod': return c + 0.5 * s[0];
     default: return c;  // a point
@@ -206,18 +202,13 @@ function partMesh(part, onPivot) {
     // The centre of mass of a cone is h/4 above its base; three's cone is centred at h/2.
     case 'cone': mesh = alongZ(new THREE.ConeBufferGeometry(s[0], s[1], 48).translate(0, -s[1] / 4, 0)); break;
     // A hoop lies in the x-y plane, as three's torus does; its tube is drawn a twentieth of R.
-    case 'ring':
-      mesh = new THREE.TorusBufferGeometry(s[0], 0.05 * s[0], 12, 64);
-      break;
+    case 'ring': mesh = new THREE.TorusBufferGeometry(s[0], 0.05 * s[0], 12, 64); break;
+    // Hollow: seen through, so that it does not look like a solid ball.
     case 'shell':
       mesh = new THREE.SphereBufferGeometry(s[0], 32, 16);
+      Object.assign(material, {transparent: true, opacity: 0.45});
       break;
     default: mesh = new THREE.SphereBufferGeometry(0.06, 16, 8);
-  }
-  if (part.shape === 'shell') {
-    // Hollow: seen through, so that it does not look like a solid ball.
-    material.transparent = true;
-    material.opacity = 0.45;
   }
   group.add(new THREE.Mesh(mesh, material));
   if (['disc', 'cylinder', 'cone', 'sphere', 'ring', 'shell'].includes(part.shape)) {
