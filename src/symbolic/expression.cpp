@@ -248,6 +248,11 @@ const GiNaC::prototype_table& guarded_reader() {
     t[GiNaC::prototype("exp", 1)] = guarded_exp;
     t[GiNaC::prototype("sinh", 1)] = guarded_sinh;
     t[GiNaC::prototype("cosh", 1)] = guarded_cosh;
+    // The names people write for these (ln, arcsin, ...): the same functions, so a key that
+    // prints atan still reads an answer written arctan.
+    for (const auto& [alias, name] : kFunctionAliases) {
+      t[GiNaC::prototype(std::string(alias), 1)] = t.at(GiNaC::prototype(std::string(name), 1));
+    }
     return t;
   }();
   return table;

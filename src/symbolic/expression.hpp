@@ -8,10 +8,13 @@
 /// `pi` and `Pi` both name the constant.
 #include <ginac/ginac.h>
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/input_error.hpp"
@@ -30,6 +33,11 @@ enum class SymbolSign { positive, real };
 /// memory or the stack.
 inline constexpr std::size_t kMaxExpressionLength = 10000;
 inline constexpr int kMaxExpressionDepth = 100;
+
+/// Names people write for functions GiNaC knows by another: each is read as the function it
+/// stands for (ln(x) is log(x)), so an answer in either notation is the same expression.
+inline constexpr std::array<std::pair<std::string_view, std::string_view>, 4> kFunctionAliases{
+    {{"ln", "log"}, {"arcsin", "asin"}, {"arccos", "acos"}, {"arctan", "atan"}}};
 
 class SymbolTable {
  public:

@@ -175,9 +175,13 @@ void check_expression_cost(const std::string& text, const std::string& field,
   // Names: a function only from the list below (GiNaC's parser knows many more, some of which
   // compute exactly, tgamma(100000) digit by digit), anything else a declared symbol (GiNaC
   // would also accept its constants Catalan, Euler and the imaginary unit I).
-  static const std::set<std::string> functions{
-      "sqrt", "sin", "cos",  "tan",  "asin", "acos", "atan",      "atan2",
-      "exp",  "log", "sinh", "cosh", "tanh", "abs",  "EllipticK", "EllipticE"};
+  static const std::set<std::string> functions = [] {
+    std::set<std::string> f{"sqrt", "sin",   "cos",       "tan",      "asin", "acos",
+                            "atan", "atan2", "exp",       "log",      "sinh", "cosh",
+                            "tanh", "abs",   "EllipticK", "EllipticE"};
+    for (const auto& [alias, name] : kFunctionAliases) f.emplace(alias);
+    return f;
+  }();
   for (std::size_t i = 0; i < text.size();) {
     if (!std::isalpha(static_cast<unsigned char>(text[i])) && text[i] != '_') {
       // skip a number (with its exponent letter) or any other character
@@ -200,8 +204,8 @@ void check_expression_cost(const std::string& text, const std::string& field,
           s.fail("unknown function '" + name + "'" + meant);
         }
         s.fail("unknown function '" + name +
-               "' (known: sqrt, sin, cos, tan, asin, acos, atan, atan2, exp, log, sinh, cosh, "
-               "tanh, abs, EllipticK, EllipticE)");
+               "' (known: sqrt, sin, cos, tan, asin or arcsin, acos or arccos, atan or arctan, "
+               "atan2, exp, log or ln, sinh, cosh, tanh, abs, EllipticK, EllipticE)");
       }
     } else if (!symbols.count(name) && functions.count(name)) {
       // "cos alpha", "cos^-1(x)": a function without its call right after it.

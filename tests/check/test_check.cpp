@@ -304,7 +304,8 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
   }
   // Identities simplification cannot prove are judged by evaluation: atan(tan(alpha)/2) is
   // atan2(sin(alpha), 2 cos(alpha)) for alpha in [0, pi/2).
-  for (const std::string same : {"atan(tan(alpha)/2)", "asin(sin(alpha)/sqrt(1+3*cos(alpha)^2))"}) {
+  for (const std::string same : {"atan(tan(alpha)/2)", "asin(sin(alpha)/sqrt(1+3*cos(alpha)^2))",
+                                 "arctan(tan(α)/2)", "arcsin(sin(α)/√(1 + 3·cos²(α)))"}) {
     INFO(same);
     const Verdict v = plate.check("angle_L_e3", same);
     REQUIRE(v.correct);

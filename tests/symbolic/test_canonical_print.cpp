@@ -73,6 +73,23 @@ TEST_CASE("known spellings") {
   REQUIRE(latex("(a + m)/(2*(m + M))") == "\\frac{a + m}{2 \\left(M + m\\right)}");
 }
 
+TEST_CASE("ln, arcsin, arccos and arctan are read as log, asin, acos and atan") {
+  const SymbolTable t = table();
+  for (const auto& [alias, name] : kFunctionAliases) {
+    const std::string other = std::string(alias) + "(m/(m + a))";
+    INFO(other);
+    const GiNaC::ex read = t.parse(other, "x");
+    REQUIRE(GiNaC::is_a<GiNaC::function>(read));
+    REQUIRE(GiNaC::ex_to<GiNaC::function>(read).get_name() == name);
+    REQUIRE((read - t.parse(std::string(name) + "(m/(m + a))", "x")).is_zero());
+  }
+  // Nested and in a product, as a student writes them; printed back in the key's names.
+  REQUIRE(to_text(t.parse("2*arctan(ln(a)*arcsin(m/M))", "x"), t) == "2*atan(asin(m/M)*log(a))");
+  // Without its call an alias is a function like any other.
+  REQUIRE_THROWS_WITH(t.parse("ln m", "x"),
+                      Catch::Contains("ln is a function: its argument comes in parentheses"));
+}
+
 TEST_CASE("the parser rejects undefined symbols and syntax errors, naming the field") {
   const SymbolTable t = table();
   REQUIRE_THROWS_WITH(
