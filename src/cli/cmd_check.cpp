@@ -1,7 +1,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "check/judge.hpp"
 #include "check/submission.hpp"
@@ -17,18 +19,24 @@ namespace wobble::cli {
 void setup_check(CLI::App& app, CheckOptions& opt) {
   app.add_option("problem", opt.problem, "Problem id (see `wobble list`) or a .toml file")
       ->required();
-  auto* part = app.add_option("part", opt.part, "Part id (a, b, ...); may be left out with --name");
+  auto* part =
+      app.add_option("part", opt.part,
+                     "Part id (a, b, ...), or the answer's name (I0); may be left out with --name");
+  auto* answer_word =
+      app.add_option("answer", opt.answer_after_part,
+                     "Your answer, as with --answer (one that starts with '-' after --)");
   auto* answer = app.add_option(
       "--answer", opt.answer,
       "Your answer: 0.21 kg m^2, 3.1 rad/s, 12 deg, [1, 0, 2], [[..],[..],[..]], m*a^2/6, "
       "m·a²/6 or \\frac{m a^2}{6}");
+  answer->excludes(answer_word);
   auto* answers = app.add_option(
       "--answers", opt.answers,
       "A file with every answer, one per line (NAME = ANSWER; `variant = N` for your values)");
   app.add_option("--format", opt.format, "With --answers: text, json or gradescope")
       ->needs(answers)
       ->check(CLI::IsMember({"text", "json", "gradescope"}));
-  answers->excludes(answer)->excludes(part);
+  answers->excludes(answer)->excludes(part)->excludes(answer_word);
   app.add_option("--name", opt.name,
                  "Which answer (needed when the part has several; names its part)");
   app.add_option("--set", opt.sets, "Parameter value NAME=VALUE, as for solve")
@@ -59,6 +67,23 @@ check::Options judge_options(std::optional<double> tolerance, std::optional<int>
 }
 
 namespace {
+// "wobble check flying-plate I0 ...": where the part goes, an answer's name as the key prints
+// it is taken for --name. A part's id comes first, should an answer bear the same name.
+std::pair<std::string, std::string> part_or_name(const Key& key, const std::string& part,
+                                                 const std::string& name) {
+  if (part.empty() || !name.empty()) return {part, name};
+  for (const auto& p : key.parts) {
+    if (p.id == part) return {part, name};
+  }
+  for (const auto& p : key.parts) {
+    const bool names_it = std::any_of(p.answers.begin(), p.answers.end(),
+                                      [&](const Answer& a) { return a.name == part; }) ||
+                          std::find(p.absent.begin(), p.absent.end(), part) != p.absent.end();
+    if (names_it) return {"", part};
+  }
+  return {part, name};
+}
+
 int check_submission(const CheckOptions& opt, const check::Options& o) {
   const std::string text = read_text_file(opt.answers, "--answers");
   const Problem problem = find_problem(opt.problem);
@@ -111,9 +136,12 @@ int run_check(const CheckOptions& opt) {
   const sym::Values values =
       parameter_values(problem, with_variant(problem, opt.variant, opt.sets));
   const Key key = solve(problem, values);
-  const Answer& answer = find_answer(key, opt.part, opt.name, "part", "--name");
+  const auto [part, name] = part_or_name(key, opt.part, opt.name);
+  const Answer& answer = find_answer(key, part, name, "part", "--name");
   const sym::SymbolTable table = problem.symbol_table();
-  const check::Verdict v = check::judge({key, table, values}, answer, opt.answer, o);
+  const check::Verdict v =
+      check::judge({key, table, values}, answer,
+                   opt.answer_after_part.empty() ? opt.answer : opt.answer_after_part, o);
   fmt::print("{}\n", v.line);
   for (const auto& f : v.feedback) fmt::print("  {}\n", f);
   return v.correct ? kExitOk : kExitDifference;

@@ -227,6 +227,36 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
   REQUIRE_THAT(neither.err, Catch::Contains("give PART (or --name)"));
 }
 
+TEST_CASE("check: the answer's name where the part goes, the answer as the third word") {
+  // As a student types it after reading the key: the name the key prints, then the answer.
+  const RunResult named = run_wobble({"check", "flying-plate", "I0", "m·R²/4"});
+  REQUIRE(named.exit_code == 0);
+  REQUIRE(named.out == "correct: I0 (your expression simplifies to the key's)\n");
+  const RunResult part_and_name =
+      run_wobble({"check", "flying-plate", "a", "--name", "I0", "m*R^2/2"});
+  REQUIRE(part_and_name.exit_code == 1);
+  REQUIRE_THAT(part_and_name.out, Catch::StartsWith("incorrect: I0"));
+  // A negative number is an answer, not an option; -- before it reads the same.
+  for (const std::vector<std::string>& negative :
+       {std::vector<std::string>{"check", "heavy-top", "energy", "-1 J"},
+        std::vector<std::string>{"check", "heavy-top", "energy", "--", "-1 J"}}) {
+    const RunResult r = run_wobble(negative);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 1);
+    REQUIRE_THAT(r.out, Catch::StartsWith("incorrect: energy"));
+  }
+  // A name that is neither a part nor an answer still lists the parts.
+  const RunResult neither = run_wobble({"check", "flying-plate", "I_0", "1"});
+  REQUIRE(neither.exit_code == 2);
+  REQUIRE(neither.out.empty());
+  REQUIRE_THAT(neither.err, Catch::Contains("no part 'I_0' (parts: a, b,"));
+  // The answer given twice is refused before anything is judged.
+  const RunResult twice = run_wobble({"check", "flying-plate", "I0", "1", "--answer", "2"});
+  REQUIRE(twice.exit_code == 2);
+  REQUIRE(twice.out.empty());
+  REQUIRE_THAT(twice.err, Catch::Contains("excludes"));
+}
+
 TEST_CASE("a handout shows each value as it was given, its unit too; a --set over a variant wins") {
   const RunResult given = run_wobble({"solve", "heavy-top", "--handout", "--set", "R=5 [cm]",
                                       "--set", "θ0=45°", "--set", "psidot0 = 1432 rpm"});
