@@ -754,4 +754,24 @@ std::string latex_as_text(const std::string& latex, const sym::SymbolTable& tabl
   return Reader(s, table, field).read();
 }
 
+std::string latex_assignment_as_text(const std::string& text, const sym::SymbolTable& table) {
+  const std::string math = without_math_delimiters(trim(text));
+  if (!looks_like_latex(math) && math == trim(text)) return text;
+  std::string out, name;
+  for (std::size_t start = 0;;) {
+    const std::size_t eq = math.find('=', start);
+    const std::string side = trim(math.substr(start, eq == std::string::npos ? eq : eq - start));
+    const std::string field = name.empty() ? "--set" : "--set " + name;
+    const std::string plain = looks_like_latex(side) ? latex_as_text(side, table, field) : side;
+    if (name.empty()) {
+      name = plain;
+      out = plain;
+    } else {
+      out += " = " + plain;
+    }
+    if (eq == std::string::npos) return out;
+    start = eq + 1;
+  }
+}
+
 }  // namespace wobble::check

@@ -38,4 +38,12 @@ bool looks_like_latex(const std::string& typed);
 std::string latex_as_text(const std::string& latex, const sym::SymbolTable& table,
                           const std::string& field);
 
+/// A parameter as a LaTeX key prints it, NAME = VALUE or NAME = VALUE = VALUE
+/// ("$\dot\psi_0 = 150\,\mathrm{rad/s}$", "\theta_0 = 30^\circ = 0.5235987756\,\mathrm{rad}"),
+/// in the plain text `--set` reads ("psidot0 = 150 rad/s", "theta0 = 30 deg = 0.5235987756 rad"):
+/// the name and each value side read as latex_as_text reads them, the math delimiters dropped
+/// ("$H = 0.0032738$"). Text with neither is returned as it is.
+/// @throws InputError naming "--set" (and the parameter, for a value) for what is not read.
+std::string latex_assignment_as_text(const std::string& text, const sym::SymbolTable& table);
+
 }  // namespace wobble::check

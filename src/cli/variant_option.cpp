@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "check/latex_answer.hpp"
 #include "cli/commands.hpp"
 #include "core/input_error.hpp"
 #include "problem/values.hpp"
@@ -9,10 +10,16 @@ namespace wobble::cli {
 
 std::vector<std::string> with_variant(const Problem& problem, std::optional<long> variant,
                                       const std::vector<std::string>& sets) {
-  require_each_set_once(problem, sets);
+  std::vector<std::string> plain;
+  const sym::SymbolTable table = problem.symbol_table();
+  for (const auto& s : sets) {
+    // Longer than --set reads: refused there, unread.
+    plain.push_back(s.size() > kMaxSetLength ? s : check::latex_assignment_as_text(s, table));
+  }
+  require_each_set_once(problem, plain);
   std::vector<std::string> out;
   if (variant) out = variant_for(problem, *variant);
-  out.insert(out.end(), sets.begin(), sets.end());
+  out.insert(out.end(), plain.begin(), plain.end());
   return out;
 }
 

@@ -153,10 +153,9 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
 }
 
 Assignment assignment_of(const Problem& problem, const std::string& text) {
-  // A value is a number or a short constant expression; a million digits is refused unread.
-  if (text.size() > 1000) {
+  if (text.size() > kMaxSetLength) {
     throw InputError("--set: " + std::to_string(text.size()) +
-                     " characters; NAME=VALUE may have at most 1000");
+                     " characters; NAME=VALUE may have at most " + std::to_string(kMaxSetLength));
   }
   const auto eq = text.find('=');
   if (eq == std::string::npos || trim(text.substr(0, eq)).empty()) {

@@ -26,6 +26,10 @@ double parse_parameter_value(const Parameter& p, const std::string& text, const 
 /// {"0.05", ""}); of a key's two sides, the first.
 std::pair<std::string, std::string> typed_value_parts(const std::string& text);
 
+/// The longest assignment --set reads: a value is a number or a short constant expression, and a
+/// million digits is refused unread.
+inline constexpr std::size_t kMaxSetLength = 1000;
+
 /// One assignment "NAME=VALUE": the parameter it names (as Problem::parameter reads the name) and
 /// the value's text, both trimmed; the value is not read here.
 /// @throws InputError for a malformed or overlong assignment, or an unknown name.

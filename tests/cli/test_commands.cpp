@@ -257,6 +257,38 @@ TEST_CASE("check: the answer's name where the part goes, the answer as the third
   REQUIRE_THAT(twice.err, Catch::Contains("excludes"));
 }
 
+TEST_CASE("solve --set reads a parameter as the LaTeX key prints it, name and value") {
+  // Each pair: LaTeX (as the key's Parameters line sets it, or typed), and the same in text.
+  const std::vector<std::pair<std::string, std::string>> same{
+      {"$\\theta_0 = 45^\\circ = 0.7853981634\\,\\mathrm{rad}$", "θ0 = 45°"},
+      {"\\dot\\psi_0 = 200\\,\\mathrm{rad/s}", "psidot0=200"},
+      {"R=4\\,\\mathrm{cm}", "R=0.04"},
+      {"theta0=\\frac{\\pi}{5}", "theta0=36 deg"}};
+  for (const auto& [latex, text] : same) {
+    INFO(latex);
+    const RunResult from_latex = run_wobble({"solve", "heavy-top", "--set", latex});
+    const RunResult from_text = run_wobble({"solve", "heavy-top", "--set", text});
+    REQUIRE(from_latex.exit_code == 0);
+    REQUIRE(from_text.exit_code == 0);
+    REQUIRE(from_latex.out == from_text.out);
+  }
+  REQUIRE_THAT(run_wobble({"solve", "heavy-top"}).out,
+               !Catch::Contains("ψ̇0 = 200 rad/s"));  // the default differs: the pairs set something
+  // Refused naming the parameter: the key's two sides that disagree, a symbol in a value, a
+  // name the problem does not have.
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"\\theta_0 = 30^\\circ = 0.6\\,\\mathrm{rad}", "--set theta0: the two sides"},
+      {"\\theta_0 = \\frac{M}{2}", "--set theta0: "},
+      {"\\dot\\xi = 3", "--set: \\dot \\xi is not one of this problem's symbols"}};
+  for (const auto& [latex, message] : refused) {
+    INFO(latex);
+    const RunResult r = run_wobble({"solve", "heavy-top", "--set", latex});
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.out.empty());
+    REQUIRE_THAT(r.err, Catch::StartsWith("wobble: " + message));
+  }
+}
+
 TEST_CASE("a handout shows each value as it was given, its unit too; a --set over a variant wins") {
   const RunResult given = run_wobble({"solve", "heavy-top", "--handout", "--set", "R=5 [cm]",
                                       "--set", "θ0=45°", "--set", "psidot0 = 1432 rpm"});

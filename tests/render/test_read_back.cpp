@@ -13,6 +13,7 @@
 #include "check/answer_reading.hpp"
 #include "check/check_fixture.hpp"
 #include "check/judge.hpp"
+#include "check/latex_answer.hpp"
 #include "problem/values.hpp"
 #include "render/common.hpp"
 #include "render/render.hpp"
@@ -156,6 +157,47 @@ TEST_CASE("every parameter value a key prints reads back through --set, every pr
     }
   }
   REQUIRE(read > 500);  // 15 problems, three sets of values, 3 to 10 parameters, 4 names each
+}
+
+namespace {
+// The LaTeX key's "Parameters:" line, each parameter's math as printed:
+// "$\theta_0 = 30^\circ = 0.5235987756\,\mathrm{rad}$".
+std::vector<std::string> printed_latex_parameters(const Key& key) {
+  const std::string latex = render_latex(key), lead = "Parameters: ";
+  const auto from = latex.find(lead) + lead.size();
+  const std::string line = latex.substr(from, latex.find('\n', from) - from);
+  std::vector<std::string> out;
+  for (auto open = line.find('$'); open != std::string::npos; open = line.find('$', open)) {
+    const auto close = line.find('$', open + 1);
+    out.push_back(line.substr(open, close + 1 - open));
+    open = close + 1;
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("every parameter a LaTeX key prints reads back through --set, name and value") {
+  constexpr double kTenDigits = 5e-10;  // as for the text key's line, above
+  int read = 0;
+  for (const auto& p : load_catalog()) {
+    const sym::SymbolTable table = p.symbol_table();
+    for (const long variant : {0L, 1L, 2L}) {
+      const std::vector<std::string> drawn =
+          variant ? variant_for(p, variant) : std::vector<std::string>{};
+      const Key key = solve(p, parameter_values(p, drawn));
+      const auto printed = printed_latex_parameters(key);
+      REQUIRE(printed.size() == key.parameters.size());
+      for (std::size_t i = 0; i < printed.size(); ++i) {
+        // Whole, with its delimiters, as copied from the source; a key's both sides must agree.
+        INFO(p.id << " variant " << variant << ": --set '" << printed[i] << "'");
+        const sym::Values got = parameter_values(p, {latex_assignment_as_text(printed[i], table)});
+        const ParameterValue& want = key.parameters[i];
+        REQUIRE_THAT(got.at(want.name), Catch::Matchers::WithinRel(want.value, kTenDigits));
+        ++read;
+      }
+    }
+  }
+  REQUIRE(read > 120);  // 15 problems, three sets of values, 3 to 10 parameters each
 }
 
 TEST_CASE("every printed form of every answer of every problem reads back as correct") {
