@@ -218,6 +218,20 @@ std::string times_ten(const std::string& s) {
   return out;
 }
 
+// NumPy's "array([[10., 0., 0.], ...])" and SymPy's "Matrix([[10, 0, 0], ...])", as Python
+// shows a result: the list inside. Only around the whole answer, so no expression is touched.
+std::string without_python_wrapper(const std::string& s) {
+  static const std::vector<std::string> kWrappers{"np.array(",  "numpy.array(",  "array(",
+                                                  "sp.Matrix(", "sympy.Matrix(", "Matrix("};
+  const std::string t = trim(s);
+  for (const auto& w : kWrappers) {
+    if (t.compare(0, w.size(), w) == 0 && matching(t, w.size() - 1) == t.size() - 1) {
+      return t.substr(w.size(), t.size() - w.size() - 1);
+    }
+  }
+  return s;
+}
+
 // ASCII, one line, a numeric exponent's sign in parentheses.
 std::string prepared(const std::string& typed) {
   std::string s = sym::to_ascii(typed);
@@ -228,7 +242,7 @@ std::string prepared(const std::string& typed) {
     if (c == '}') c = ']';
   }
   // "$m*R^2/4$": the math delimiters of a LaTeX or Markdown source around plain text.
-  s = without_math_delimiters(s);
+  s = without_python_wrapper(without_math_delimiters(s));
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
   for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
     s.replace(at, 2, "^");

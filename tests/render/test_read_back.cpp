@@ -86,6 +86,22 @@ std::string mathematica_lists(const Answer& a) {
   return s + "} " + a.unit;
 }
 
+// As Python shows a result, no unit (SI): NumPy's "array([[10.0, 0.0, ...],\n       [...]])"
+// with its line breaks, or SymPy's "Matrix([[10, 0, 0], [0, 6, 1], [0, 1, 6]])".
+std::string python_array(const Answer& a, const std::string& wrapper) {
+  const auto& v = a.value;
+  const std::size_t rows = v.shape == Value::Shape::vector ? 1 : v.rows;
+  const std::size_t cols = v.data.size() / rows;
+  std::string s = wrapper + "(" + (rows > 1 ? "[" : "");
+  for (std::size_t r = 0; r < rows; ++r) {
+    s += r ? ",\n       [" : "[";
+    for (std::size_t c = 0; c < cols; ++c)
+      s += (c ? ", " : "") + format_number(v.data[r * cols + c]);
+    s += "]";
+  }
+  return s + (rows > 1 ? "])" : ")");
+}
+
 // Every answer of every problem, typed in each of forms_of(answer): each must be judged right
 // (or, with `right` false, wrong). Returns how many were judged.
 int forms_judged(const std::function<std::vector<std::string>(const Answer&)>& forms_of,
@@ -211,10 +227,12 @@ TEST_CASE("every printed form of every answer of every problem reads back as cor
       texts.push_back(spaced_rows(a));
       texts.push_back(matlab_rows(a));
       texts.push_back(mathematica_lists(a));
+      texts.push_back(python_array(a, "array"));
+      texts.push_back(python_array(a, "Matrix"));
     }
     return texts;
   });
-  REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to six forms
+  REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to eight forms
 }
 
 // The LaTeX a key prints for an answer: the closed form, the value with its unit as the LaTeX key
