@@ -39,8 +39,11 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
   answers->excludes(answer)->excludes(part)->excludes(answer_word);
   app.add_option("--name", opt.name,
                  "Which answer (needed when the part has several; names its part)");
+  // One value per --set: CLI11's vector options take every word that follows, and here the
+  // answer may follow ("--set R=5cm 0.00072").
   app.add_option("--set", opt.sets, "Parameter value NAME=VALUE, as for solve")
       ->expected(1)
+      ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--variant", opt.variant, "Your variant's values (as on your handout)");
   app.add_option("--tolerance", opt.tolerance,

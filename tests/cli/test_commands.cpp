@@ -245,6 +245,12 @@ TEST_CASE("check: the answer's name where the part goes, the answer as the third
     REQUIRE(r.exit_code == 1);
     REQUIRE_THAT(r.out, Catch::StartsWith("incorrect: energy"));
   }
+  // After --set, the answer is still the answer, not a second value to set.
+  const RunResult after_set =
+      run_wobble({"check", "flying-plate", "I0", "--set", "R=0.1", "0.0005 kg m^2"});
+  INFO(after_set.err);
+  REQUIRE(after_set.exit_code == 0);
+  REQUIRE(after_set.out == "correct: I0\n");
   // A name that is neither a part nor an answer still lists the parts.
   const RunResult neither = run_wobble({"check", "flying-plate", "I_0", "1"});
   REQUIRE(neither.exit_code == 2);
