@@ -758,17 +758,14 @@ std::string latex_assignment_as_text(const std::string& text, const sym::SymbolT
   const std::string math = without_math_delimiters(trim(text));
   if (!looks_like_latex(math) && math == trim(text)) return text;
   std::string out, name;
-  for (std::size_t start = 0;;) {
+  for (std::size_t start = 0;; out += " = ") {
+    const bool is_name = start == 0;
     const std::size_t eq = math.find('=', start);
     const std::string side = trim(math.substr(start, eq == std::string::npos ? eq : eq - start));
-    const std::string field = name.empty() ? "--set" : "--set " + name;
+    const std::string field = is_name ? "--set" : "--set " + name;
     const std::string plain = looks_like_latex(side) ? latex_as_text(side, table, field) : side;
-    if (name.empty()) {
-      name = plain;
-      out = plain;
-    } else {
-      out += " = " + plain;
-    }
+    if (is_name) name = plain;
+    out += plain;
     if (eq == std::string::npos) return out;
     start = eq + 1;
   }

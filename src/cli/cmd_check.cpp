@@ -24,7 +24,7 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
                      "Part id (a, b, ...), or the answer's name (I0); may be left out with --name");
   auto* answer_word =
       app.add_option("answer", opt.answer_after_part,
-                     "Your answer, as with --answer (one that starts with '-' after --)");
+                     "Your answer, as with --answer (an expression that starts with '-' after --)");
   auto* answer = app.add_option(
       "--answer", opt.answer,
       "Your answer: 0.21 kg m^2, 3.1 rad/s, 12 deg, [1, 0, 2], [[..],[..],[..]], m*a^2/6, "

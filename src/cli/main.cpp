@@ -92,6 +92,16 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const CLI::ExtrasError& e) {
+    // "wobble check ID I0 -m*R^2/4": CLI11 takes a word that starts with '-' and a letter for
+    // options, so a negative expression needs the "--" that ends them.
+    const std::string what = e.what();
+    const bool negative_answer = check->parsed() && what.find(": -") != std::string::npos;
+    fmt::print(stderr, "wobble: {}{}\n", what,
+               negative_answer ? "; an answer that starts with '-' goes after -- (wobble check "
+                                 "ID NAME -- -m*R^2/4) or as --answer=-m*R^2/4"
+                               : "");
+    return kExitBadInput;
   } catch (const CLI::ParseError& e) {
     fmt::print(stderr, "wobble: {}\n", e.what());
     return kExitBadInput;

@@ -245,6 +245,12 @@ TEST_CASE("check: the answer's name where the part goes, the answer as the third
     REQUIRE(r.exit_code == 1);
     REQUIRE_THAT(r.out, Catch::StartsWith("incorrect: energy"));
   }
+  // A negative expression is taken for options (CLI11): the message says where it goes.
+  const RunResult dash = run_wobble({"check", "flying-plate", "I0", "-m*R^2/4"});
+  REQUIRE(dash.exit_code == 2);
+  REQUIRE(dash.out.empty());
+  REQUIRE_THAT(dash.err, Catch::Contains("-m*R^2/4; an answer that starts with '-' goes after --"));
+  REQUIRE(run_wobble({"check", "flying-plate", "I0", "--", "-m*R^2/4"}).exit_code == 1);
   // After --set, the answer is still the answer, not a second value to set.
   const RunResult after_set =
       run_wobble({"check", "flying-plate", "I0", "--set", "R=0.1", "0.0005 kg m^2"});
