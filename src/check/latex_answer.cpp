@@ -755,8 +755,8 @@ std::string latex_as_text(const std::string& latex, const sym::SymbolTable& tabl
 }
 
 std::string latex_assignment_as_text(const std::string& text, const sym::SymbolTable& table) {
-  const std::string math = without_math_delimiters(trim(text));
-  if (!looks_like_latex(math) && math == trim(text)) return text;
+  const std::string trimmed = trim(text), math = without_math_delimiters(trimmed);
+  if (!looks_like_latex(math) && math == trimmed) return text;
   std::string out, name;
   for (std::size_t start = 0;; out += " = ") {
     const bool is_name = start == 0;

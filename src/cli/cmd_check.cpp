@@ -1,9 +1,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <algorithm>
 #include <nlohmann/json.hpp>
-#include <utility>
 
 #include "check/judge.hpp"
 #include "check/submission.hpp"
@@ -70,23 +68,6 @@ check::Options judge_options(std::optional<double> tolerance, std::optional<int>
 }
 
 namespace {
-// "wobble check flying-plate I0 ...": where the part goes, an answer's name as the key prints
-// it is taken for --name. A part's id comes first, should an answer bear the same name.
-std::pair<std::string, std::string> part_or_name(const Key& key, const std::string& part,
-                                                 const std::string& name) {
-  if (part.empty() || !name.empty()) return {part, name};
-  for (const auto& p : key.parts) {
-    if (p.id == part) return {part, name};
-  }
-  for (const auto& p : key.parts) {
-    const bool names_it = std::any_of(p.answers.begin(), p.answers.end(),
-                                      [&](const Answer& a) { return a.name == part; }) ||
-                          std::find(p.absent.begin(), p.absent.end(), part) != p.absent.end();
-    if (names_it) return {"", part};
-  }
-  return {part, name};
-}
-
 int check_submission(const CheckOptions& opt, const check::Options& o) {
   const std::string text = read_text_file(opt.answers, "--answers");
   const Problem problem = find_problem(opt.problem);
@@ -139,8 +120,7 @@ int run_check(const CheckOptions& opt) {
   const sym::Values values =
       parameter_values(problem, with_variant(problem, opt.variant, opt.sets));
   const Key key = solve(problem, values);
-  const auto [part, name] = part_or_name(key, opt.part, opt.name);
-  const Answer& answer = find_answer(key, part, name, "part", "--name");
+  const Answer& answer = find_answer(key, opt.part, opt.name, "part", "--name");
   const sym::SymbolTable table = problem.symbol_table();
   const check::Verdict v =
       check::judge({key, table, values}, answer,

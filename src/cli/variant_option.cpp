@@ -10,11 +10,13 @@ namespace wobble::cli {
 
 std::vector<std::string> with_variant(const Problem& problem, std::optional<long> variant,
                                       const std::vector<std::string>& sets) {
-  std::vector<std::string> plain;
-  const sym::SymbolTable table = problem.symbol_table();
-  for (const auto& s : sets) {
-    // Longer than --set reads: refused there, unread.
-    plain.push_back(s.size() > kMaxSetLength ? s : check::latex_assignment_as_text(s, table));
+  std::vector<std::string> plain = sets;
+  if (!sets.empty()) {
+    const sym::SymbolTable table = problem.symbol_table();
+    for (auto& s : plain) {
+      // Longer than --set reads: refused there, unread.
+      if (s.size() <= kMaxSetLength) s = check::latex_assignment_as_text(s, table);
+    }
   }
   require_each_set_once(problem, plain);
   std::vector<std::string> out;

@@ -43,6 +43,12 @@ const Answer& find_answer(const Key& key, const std::string& part_id, const std:
                      ": neither is given; name the part, the "
                      "answer, or both");
   }
+  // Where the part goes, an answer's name as the key prints it ("check flying-plate I0 ..."). A
+  // part's id comes first, should an answer bear the same name.
+  if (!part_id.empty() && name.empty() && find_part(key.parts, part_id, name) == nullptr &&
+      find_part(key.parts, "", part_id) != nullptr) {
+    return find_answer(key, "", part_id, part_field, name_field);
+  }
   // What was asked for is echoed at most this long: a message stays one line.
   const auto shown = [](const std::string& s) {
     return s.size() > 40 ? s.substr(0, 40) + "..." : s;

@@ -150,8 +150,8 @@ struct AnswerNotFound : InputError {
 
 /// The answer a check asks for: by part id and answer name; the part's only answer when no name
 /// is given; the answer of that name in whichever part has it when no part is (names are unique
-/// in a problem). `part_field` and `name_field` are what the caller calls them ("part",
-/// "--name").
+/// in a problem). A part id that names no part but an answer is taken for that answer's name.
+/// `part_field` and `name_field` are what the caller calls them ("part", "--name").
 /// @throws AnswerNotFound naming the field and listing what exists: an unknown part or name, a
 ///   part with several answers and no name, a part or answer absent at these values.
 /// @throws InputError when neither a part nor a name is given.

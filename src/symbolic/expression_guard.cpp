@@ -175,12 +175,24 @@ void check_expression_cost(const std::string& text, const std::string& field,
   // Names: a function only from the list below (GiNaC's parser knows many more, some of which
   // compute exactly, tgamma(100000) digit by digit), anything else a declared symbol (GiNaC
   // would also accept its constants Catalan, Euler and the imaginary unit I).
+  static const std::vector<std::string> kFunctions{
+      "sqrt", "sin", "cos",  "tan",  "asin", "acos", "atan",      "atan2",
+      "exp",  "log", "sinh", "cosh", "tanh", "abs",  "EllipticK", "EllipticE"};
   static const std::set<std::string> functions = [] {
-    std::set<std::string> f{"sqrt", "sin",   "cos",       "tan",      "asin", "acos",
-                            "atan", "atan2", "exp",       "log",      "sinh", "cosh",
-                            "tanh", "abs",   "EllipticK", "EllipticE"};
+    std::set<std::string> f(kFunctions.begin(), kFunctions.end());
     for (const auto& [alias, name] : kFunctionAliases) f.emplace(alias);
     return f;
+  }();
+  // "sqrt, ..., atan or arctan, ...": each function with the other name it is read by.
+  static const std::string known = [] {
+    std::string list;
+    for (const auto& f : kFunctions) {
+      list += (list.empty() ? "" : ", ") + f;
+      for (const auto& [alias, name] : kFunctionAliases) {
+        if (name == f) list += " or " + std::string(alias);
+      }
+    }
+    return list;
   }();
   for (std::size_t i = 0; i < text.size();) {
     if (!std::isalpha(static_cast<unsigned char>(text[i])) && text[i] != '_') {
@@ -203,9 +215,7 @@ void check_expression_cost(const std::string& text, const std::string& field,
             !meant.empty()) {
           s.fail("unknown function '" + name + "'" + meant);
         }
-        s.fail("unknown function '" + name +
-               "' (known: sqrt, sin, cos, tan, asin or arcsin, acos or arccos, atan or arctan, "
-               "atan2, exp, log or ln, sinh, cosh, tanh, abs, EllipticK, EllipticE)");
+        s.fail("unknown function '" + name + "' (known: " + known + ")");
       }
     } else if (!symbols.count(name) && functions.count(name)) {
       // "cos alpha", "cos^-1(x)": a function without its call right after it.

@@ -140,38 +140,44 @@ std::vector<std::pair<std::string, std::string>> printed_parameters(const Key& k
   }
   return out;
 }
+
+// Every problem's key at its default values (variant 0) and at variants 1 and 2.
+void for_each_key(const std::function<void(const Problem&, long variant, const Key&)>& f) {
+  for (const auto& p : load_catalog()) {
+    for (const long variant : {0L, 1L, 2L}) {
+      const std::vector<std::string> drawn =
+          variant ? variant_for(p, variant) : std::vector<std::string>{};
+      f(p, variant, solve(p, parameter_values(p, drawn)));
+    }
+  }
+}
 }  // namespace
 
 TEST_CASE("every parameter value a key prints reads back through --set, every problem") {
   // Printed with ten significant digits: within half a unit of the tenth, 5e-10 of the value.
   constexpr double kTenDigits = 5e-10;
   int read = 0;
-  for (const auto& p : load_catalog()) {
-    for (const long variant : {0L, 1L, 2L}) {  // 0: the defaults
-      const std::vector<std::string> drawn =
-          variant ? variant_for(p, variant) : std::vector<std::string>{};
-      const Key key = solve(p, parameter_values(p, drawn));
-      const auto printed = printed_parameters(key);
-      REQUIRE(printed.size() == key.parameters.size());
-      for (std::size_t i = 0; i < printed.size(); ++i) {
-        const auto& [name, value] = printed[i];
-        const ParameterValue& want = key.parameters[i];
-        std::vector<std::string> values{value};
-        if (const auto eq = value.find(" = "); eq != std::string::npos) {
-          values.push_back(value.substr(0, eq));   // "30°"
-          values.push_back(value.substr(eq + 3));  // "0.5235987756 rad"
-        }
-        for (const std::string& as : {name, want.name, want.latex, "$" + want.latex + "$"}) {
-          for (const auto& v : values) {
-            INFO(p.id << " variant " << variant << ": --set " << as << "=" << v);
-            const sym::Values got = parameter_values(p, {as + "=" + v});
-            REQUIRE_THAT(got.at(want.name), Catch::Matchers::WithinRel(want.value, kTenDigits));
-            ++read;
-          }
+  for_each_key([&](const Problem& p, long variant, const Key& key) {
+    const auto printed = printed_parameters(key);
+    REQUIRE(printed.size() == key.parameters.size());
+    for (std::size_t i = 0; i < printed.size(); ++i) {
+      const auto& [name, value] = printed[i];
+      const ParameterValue& want = key.parameters[i];
+      std::vector<std::string> values{value};
+      if (const auto eq = value.find(" = "); eq != std::string::npos) {
+        values.push_back(value.substr(0, eq));   // "30°"
+        values.push_back(value.substr(eq + 3));  // "0.5235987756 rad"
+      }
+      for (const std::string& as : {name, want.name, want.latex, "$" + want.latex + "$"}) {
+        for (const auto& v : values) {
+          INFO(p.id << " variant " << variant << ": --set " << as << "=" << v);
+          const sym::Values got = parameter_values(p, {as + "=" + v});
+          REQUIRE_THAT(got.at(want.name), Catch::Matchers::WithinRel(want.value, kTenDigits));
+          ++read;
         }
       }
     }
-  }
+  });
   REQUIRE(read > 500);  // 15 problems, three sets of values, 3 to 10 parameters, 4 names each
 }
 
@@ -195,24 +201,19 @@ std::vector<std::string> printed_latex_parameters(const Key& key) {
 TEST_CASE("every parameter a LaTeX key prints reads back through --set, name and value") {
   constexpr double kTenDigits = 5e-10;  // as for the text key's line, above
   int read = 0;
-  for (const auto& p : load_catalog()) {
+  for_each_key([&](const Problem& p, long variant, const Key& key) {
     const sym::SymbolTable table = p.symbol_table();
-    for (const long variant : {0L, 1L, 2L}) {
-      const std::vector<std::string> drawn =
-          variant ? variant_for(p, variant) : std::vector<std::string>{};
-      const Key key = solve(p, parameter_values(p, drawn));
-      const auto printed = printed_latex_parameters(key);
-      REQUIRE(printed.size() == key.parameters.size());
-      for (std::size_t i = 0; i < printed.size(); ++i) {
-        // Whole, with its delimiters, as copied from the source; a key's both sides must agree.
-        INFO(p.id << " variant " << variant << ": --set '" << printed[i] << "'");
-        const sym::Values got = parameter_values(p, {latex_assignment_as_text(printed[i], table)});
-        const ParameterValue& want = key.parameters[i];
-        REQUIRE_THAT(got.at(want.name), Catch::Matchers::WithinRel(want.value, kTenDigits));
-        ++read;
-      }
+    const auto printed = printed_latex_parameters(key);
+    REQUIRE(printed.size() == key.parameters.size());
+    for (std::size_t i = 0; i < printed.size(); ++i) {
+      // Whole, with its delimiters, as copied from the source; a key's both sides must agree.
+      INFO(p.id << " variant " << variant << ": --set '" << printed[i] << "'");
+      const sym::Values got = parameter_values(p, {latex_assignment_as_text(printed[i], table)});
+      const ParameterValue& want = key.parameters[i];
+      REQUIRE_THAT(got.at(want.name), Catch::Matchers::WithinRel(want.value, kTenDigits));
+      ++read;
     }
-  }
+  });
   REQUIRE(read > 120);  // 15 problems, three sets of values, 3 to 10 parameters each
 }
 

@@ -85,6 +85,10 @@ TEST_CASE("ln, arcsin, arccos and arctan are read as log, asin, acos and atan") 
   }
   // Nested and in a product, as a student writes them; printed back in the key's names.
   REQUIRE(to_text(t.parse("2*arctan(ln(a)*arcsin(m/M))", "x"), t) == "2*atan(asin(m/M)*log(a))");
+  // An unknown function is told both names of each.
+  REQUIRE_THROWS_WITH(t.parse("arctg(m)", "x"),
+                      Catch::Contains("asin or arcsin, acos or arccos, atan or arctan, atan2, "
+                                      "exp, log or ln,"));
   // Without its call an alias is a function like any other.
   REQUIRE_THROWS_WITH(t.parse("ln m", "x"),
                       Catch::Contains("ln is a function: its argument comes in parentheses"));
