@@ -468,7 +468,10 @@ void check_bounds(const std::string& typed, const std::string& field) {
 ReadAnswer finished(ReadAnswer p, const std::string& unit, const std::string& field) {
   if (!unit.empty()) p.unit = parse_unit(unit, field);
   for (const auto& e : p.value.entries) p.symbolic = p.symbolic || has_symbols(e);
-  if (p.symbolic && p.unit) {
+  // "atan(tan(α)/2) rad", "m R^2/4 kg m^2": an expression in the symbols is in SI, so an SI
+  // unit after it says what it is (the judge checks its dimension); any other unit (g cm^2,
+  // deg) would ask for a conversion the expression does not say how to apply.
+  if (p.symbolic && p.unit && p.unit->to_si_exact != "1") {
     throw InputError(field +
                      ": an expression in the problem's symbols is in SI already; drop "
                      "the unit '" +

@@ -29,7 +29,7 @@ namespace wobble::check {
 struct ReadAnswer {
   sym::ValueText value;
   std::optional<Unit> unit;
-  bool symbolic = false;  ///< has the problem's symbols (then there is no unit)
+  bool symbolic = false;  ///< has the problem's symbols (then a unit, if any, is an SI one)
 };
 
 /// The answer in wobble's reading form, the unit still attached: "(1, 0, 0) rad/s" ->

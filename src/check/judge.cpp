@@ -291,12 +291,22 @@ std::vector<std::string> sides(const std::string& text, const std::string& name)
   return out;
 }
 
+// "theta_L", "θ_L", "\theta_{L}": one name, with no operator or number that would make it an
+// expression.
+bool is_one_name(const std::string& side) {
+  const std::string s = trim(sym::to_ascii(side));
+  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+  return std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '\\' || c == '{' ||
+           c == '}';
+  });
+}
+
 Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
                   const Options& options) {
   const Options opt = options_for(a, options);
   const ReadAnswer p = read_answer(text, ctx.table, kField);
   check_shape(a, p.value, text);
-  if (p.symbolic) return judge_symbolic(ctx, a, p, opt);
   const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
   double to_key = 1.0;
   if (p.unit) {
@@ -313,6 +323,8 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
     }
     to_key = p.unit->to_si / key_unit.to_si;
   }
+  // An expression's unit, if any, is an SI one (read_answer), and so is every key's.
+  if (p.symbolic) return judge_symbolic(ctx, a, p, opt);
   std::vector<double> got;
   for (const auto& e : p.value.entries)
     got.push_back(sym::evaluate(e, GiNaC::lst{}, kField) * to_key);
@@ -346,7 +358,18 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // "m·R²/4 = 0.00072 kg m²": every side is judged, and must be right.
   Verdict first;
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    Verdict v = judge_one(ctx, a, parts[k], options);
+    Verdict v;
+    try {
+      v = judge_one(ctx, a, parts[k], options);
+    } catch (const InputError&) {
+      // "θ_L = 7.63°", "L = (..)": a label of the student's own before the '=' (a name that is
+      // no symbol of the problem), where a pasted key line has the answer's name. The answer is
+      // what follows it.
+      if (k == 0 && parts.size() == 2 && is_one_name(parts[0])) {
+        return judge_one(ctx, a, parts[1], options);
+      }
+      throw;
+    }
     if (!v.correct) {
       v.feedback.insert(v.feedback.begin(), "the side \"" + trim(parts[k]) + "\" of your '='");
       return v;

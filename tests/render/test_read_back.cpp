@@ -297,7 +297,7 @@ TEST_CASE("every closed form in LaTeX, doubled, is judged wrong: the LaTeX is re
   REQUIRE(judged > 40);
 }
 
-TEST_CASE("a key line with '=' is judged side by side, the answer's own name dropped") {
+TEST_CASE("a key line with '=' is judged side by side, the answer's name or a label dropped") {
   const Fixture plate("flying-plate");
   const Answer& i0 = plate.answer("I0");
   // The text key's two lines as copied together.
@@ -309,8 +309,17 @@ TEST_CASE("a key line with '=' is judged side by side, the answer's own name dro
   REQUIRE_THAT(error_of(plate, "I0", "m*R^2/4 = m*R^2/4 = " + printed_value(i0)),
                Catch::Equals("--answer: 3 sides of '='; give the answer, or a key's line: its "
                              "closed form = its value"));
-  // Another answer's name on the left is no name to drop: it is read, and I is no symbol here.
-  REQUIRE_THROWS_AS(plate.check("I0", "I = " + i0.symbolic), InputError);
+  // A label of the student's own on the left, a name that is no symbol of the problem, is
+  // dropped: the answer is the side after it.
+  REQUIRE(plate.check("I0", "I = " + i0.symbolic).correct);
+  REQUIRE(plate.check("angle_L_e3", "θ_L = 7.631°").correct);
+  REQUIRE(plate.check("angle_L_e3", "\\theta_{L} = 7.631^\\circ").correct);
+  REQUIRE_FALSE(plate.check("angle_L_e3", "θ_L = 8.2°").correct);
+  // Not a label: an expression (2x), or one of the problem's symbols, which is judged as a side.
+  REQUIRE_THROWS_AS(plate.check("angle_L_e3", "2x = 7.631°"), InputError);
+  const Verdict symbol_side = plate.check("angle_omega_e3", "m = 0.2618 rad");
+  REQUIRE_FALSE(symbol_side.correct);
+  REQUIRE_THAT(symbol_side.feedback.at(0), Catch::StartsWith("the side \"m\""));
   // Every side must be right; the wrong one is named.
   const Verdict v = plate.check("I0", i0.symbolic + " = " + format_number(i0.value.data[0] * 1.05));
   REQUIRE_FALSE(v.correct);
@@ -512,9 +521,20 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
   // A vector's components, commas between them, may be products side by side too.
   REQUIRE(plate_m.check("L0_body", "[m R^2 ω sin(α)/4, 0, m R^2 ω cos(α)/2]").correct);
   REQUIRE(plate_m.check("L0_body", "(m R^2 ω sin α/4, 0, m R^2 ω cos α/2)").correct);
-  // Side by side with a unit: what is wrong is the unit, not the missing '*'.
-  REQUIRE_THAT(error_of(plate_m, "I0", "m R^2/4 kg m^2"),
-               Catch::Contains("in SI already; drop the unit 'kg m^2'"));
+  // Side by side with a unit: an expression is in SI, so its SI unit may follow, as the key's
+  // value line shows it, and is held to the answer's dimension; any other unit is refused as
+  // such, not for a missing '*'.
+  REQUIRE(plate_m.check("I0", "m R^2/4 kg m^2").correct);
+  REQUIRE(plate_m.check("angle_L_e3", "atan(tan(α)/2) rad").correct);
+  REQUIRE(plate_m.check("Omega_body", "[0, 0, ω·cos(α)] rad/s").correct);
+  const auto wrong_unit = plate_m.check("I0", "m R^2/4 rad/s");
+  REQUIRE_FALSE(wrong_unit.correct);
+  REQUIRE_THAT(wrong_unit.line, Catch::Contains("wrong dimension"));
+  REQUIRE_FALSE(plate_m.check("angle_L_e3", "2*atan(tan(α)/2) rad").correct);
+  REQUIRE_THAT(error_of(plate_m, "I0", "m R^2/4 g cm^2"),
+               Catch::Contains("in SI already; drop the unit 'g cm^2'"));
+  REQUIRE_THAT(error_of(plate_m, "angle_L_e3", "atan(tan(α)/2) deg"),
+               Catch::Contains("in SI already; drop the unit 'deg'"));
   // Two numbers side by side are never a product: "1 4" is no 4.
   REQUIRE_THAT(error_of(plate_m, "I0", "m R^2 1 4"), Catch::Contains("products need '*'"));
   // A subscript written as LaTeX does, psidot_0 for psidot0, is the problem's symbol.
