@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -415,9 +416,10 @@ std::string underscores_dropped(const std::string& s, const sym::SymbolTable& ta
 // such, where m is a mass). {s, ""} when s is not such a pair.
 std::pair<std::string, std::string> split_glued_unit(const std::string& s,
                                                      const sym::SymbolTable& table) {
-  std::size_t k = 0;
+  const std::size_t digits = !s.empty() && (s[0] == '-' || s[0] == '+') ? 1 : 0;  // "-20deg"
+  std::size_t k = digits;
   while (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '.')) ++k;
-  if (k == 0 || k >= s.size()) return {s, ""};
+  if (k == digits || k >= s.size()) return {s, ""};
   // An exponent belongs to the number: "5e7g" is 5e7 grams, "2e" no number with a unit.
   if ((s[k] == 'e' || s[k] == 'E') && k + 1 < s.size()) {
     std::size_t e = k + 1;
@@ -434,6 +436,82 @@ std::pair<std::string, std::string> split_glued_unit(const std::string& s,
     if (table.contains(unit.substr(start, length))) return {s, ""};
   }
   return {number, unit};
+}
+
+// Whether an entry is a zero as typed ("0", "-0.0"): a component that needs no unit.
+bool is_zero_literal(const std::string& s) {
+  const std::string t = trim(s);
+  const std::size_t digits = t.find_first_not_of("+-");
+  return digits != std::string::npos && t.find_first_not_of("0.", digits) == std::string::npos &&
+         t.find('0', digits) != std::string::npos;
+}
+
+// A vector or matrix whose numbers each carry a unit: "(40 deg, 30 deg, 70 deg)" (as "(40°, 30°,
+// 70°)" reads), "[2.6 rad/s, 0, 19.3 rad/s]", as a student writes angles and a table's cells show
+// values. `value` has the units taken out, the other entries converted into the first entry's
+// `unit` exactly where theirs differs; both are empty unless every entry but a zero has a unit.
+// `refusal` says what is wrong where only some have one ("[40 deg, 30, 70 deg]") or their
+// dimensions differ: the message if the text reads no other way ("40, 30, 70 deg" does).
+struct EntryUnits {
+  std::string value, unit, refusal;
+};
+EntryUnits units_per_entry(const std::string& text, const sym::SymbolTable& table,
+                           const std::string& field) {
+  // "[40 deg 30 deg 70 deg]" (as "[40° 30° 70°]" reads): each degree sign glued back to its
+  // number, so that spaces still separate the entries.
+  std::string glued;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const bool degree_sign =
+        i > 0 && text[i] == ' ' && std::isdigit(static_cast<unsigned char>(text[i - 1])) &&
+        text.compare(i + 1, 3, "deg") == 0 &&
+        (i + 4 >= text.size() || !std::isalnum(static_cast<unsigned char>(text[i + 4])));
+    if (!degree_sign) glued += text[i];
+  }
+  const std::string laid = layout(glued);
+  if (!wrapped(laid, '[')) return {};
+  std::optional<Unit> first;
+  std::string first_text, without, other_dimension;  // the first entry of each kind
+  const auto strip = [&](const auto& self, const std::string& group) -> std::string {
+    std::vector<std::string> items = top_level(group.substr(1, group.size() - 2), ',');
+    for (auto& item : items) {
+      if (wrapped(item, '[')) {
+        item = self(self, item);
+        continue;
+      }
+      auto [number, unit] = split_unit(item);
+      if (unit.empty()) std::tie(number, unit) = split_glued_unit(item, table);
+      // Only numbers: an expression in the symbols is in SI, and reads as it is.
+      if (unit.empty() || has_identifier_of(number, table)) {
+        if (without.empty() && !(unit.empty() && is_zero_literal(item))) without = item;
+        continue;
+      }
+      const Unit u = parse_unit(unit, field);
+      if (!first) {
+        first = u;
+        first_text = unit;
+      } else if (!u.same_dimension(*first) && other_dimension.empty()) {
+        other_dimension = field + ": the entries' units " + first_text + " and " + unit +
+                          " measure different things (" + first->dimension_words() + ", " +
+                          u.dimension_words() + ")";
+      }
+      item = unit == first_text
+                 ? number
+                 : "(" + number + ")*(" + u.to_si_exact + ")/(" + first->to_si_exact + ")";
+    }
+    return "[" + join(items) + "]";
+  };
+  const std::string stripped = strip(strip, laid);
+  if (!first) return {};
+  if (!other_dimension.empty()) return {"", "", other_dimension};
+  if (!without.empty()) {
+    return {"", "",
+            field + ": the entry \"" + without + "\" has no unit where another has " + first_text +
+                (has_identifier_of(without, table)
+                     ? ": an expression in the symbols is in SI, so give the numbers in SI too"
+                     : ": give each number its unit (a zero may go without), or one unit after "
+                       "the whole")};
+  }
+  return {stripped, first_text, ""};
 }
 
 // Whether e has one of the problem's symbols. (Not by evalf: GiNaC evaluates EllipticK(1)
@@ -498,7 +576,11 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                      ": empty; type a number (with a unit if you like), a vector [x, y, "
                      "z], a matrix [[..], [..], [..]] or an expression");
   }
-  auto [value, unit] = split_unit(text);
+  // A unit on each number first: "40 deg, 30 deg, 70 deg" is no vector in degrees whose entries
+  // are "40 deg", "30 deg" and 70.
+  const EntryUnits entry_units = units_per_entry(text, table, field);
+  auto [value, unit] = std::pair{entry_units.value, entry_units.unit};
+  if (unit.empty()) std::tie(value, unit) = split_unit(text);
   if (unit.empty()) std::tie(value, unit) = split_glued_unit(text, table);
   // "M g", "2 M l g": an expression in the problem's symbols takes no unit (it is in SI), so a
   // tail of its symbols that also spell a unit (g, m, s) is a factor, not grams or metres.
@@ -521,6 +603,9 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
       // expression in the symbols takes no unit), not that the factors need their '*'.
       if (p.value.entries.empty()) read_side_by_side(value, table, field, p);
     }
+    // "[40 deg, 30, 70 deg]": what is wrong is the units, not that "40 deg" is no expression.
+    if (p.value.entries.empty() && !entry_units.refusal.empty())
+      throw InputError(entry_units.refusal);
     if (unit.empty() && p.value.entries.empty()) {
       // "0.16 parsecs": a value and something that is not a unit; say so, not "cannot read".
       if (const auto sp = value.find(' '); sp != std::string::npos) {

@@ -406,6 +406,57 @@ TEST_CASE("units written out, and degree signs from keyboards without one") {
           .correct);
 }
 
+// A vector or matrix with a unit after each number, "(2.588 rad/s, 0, 19.32 rad/s)", zeros
+// without one; each number divided by `per_unit` (the unit's size in the key's) and followed by
+// `unit` ("" for the key's), with `separator` between the entries of a row.
+std::string unit_on_each(const Answer& a, const std::string& separator, double per_unit = 1.0,
+                         std::string unit = "") {
+  if (unit.empty()) unit = " " + a.unit;
+  const auto& v = a.value;
+  const std::size_t cols = v.shape == Value::Shape::vector ? v.data.size() : v.cols;
+  std::string s = v.shape == Value::Shape::vector ? "(" : "[[";
+  for (std::size_t i = 0; i < v.data.size(); ++i) {
+    if (i > 0) s += i % cols == 0 ? "], [" : separator;
+    s += v.data[i] == 0.0 ? "0" : fmt::format("{:.12g}", v.data[i] / per_unit) + unit;
+  }
+  return s + (v.shape == Value::Shape::vector ? ")" : "]]");
+}
+
+TEST_CASE("a unit after each number of a vector or matrix reads back, every answer") {
+  const auto with_units = [](const Answer& a) {
+    return a.value.shape != Value::Shape::scalar && !a.unit.empty() &&
+           std::any_of(a.value.data.begin(), a.value.data.end(), [](double x) { return x != 0; });
+  };
+  const int forms = forms_judged([&](const Answer& a) {
+    std::vector<std::string> texts;
+    if (!with_units(a)) return texts;
+    texts.push_back(unit_on_each(a, ", "));
+    if (a.unit == "rad") {  // angles in degrees, the sign glued on, rows spaced: "[40° 30° 70°]"
+      texts.push_back(unit_on_each(a, ", ", M_PI / 180, "°"));
+      texts.push_back("[" + unit_on_each(a, " ", M_PI / 180, "°").substr(1));
+    }
+    return texts;
+  });
+  REQUIRE(forms > 40);  // every vector and matrix with a unit (about 35 today), angles twice more
+  // Each number is read with its own unit: one of them off is wrong.
+  const Fixture euler("euler-angles");
+  REQUIRE(euler.check("angles_phy711", "(40°, 30°, 70°)").correct);
+  REQUIRE(euler.check("angles_phy711", "(40°, 0.5235987756 rad, 70°)").correct);
+  REQUIRE_FALSE(euler.check("angles_phy711", "(40°, 30°, 71°)").correct);
+  REQUIRE_FALSE(euler.check("angles_phy711", "(40°, 30 rad, 70°)").correct);
+  // One unit after the whole is still the whole's.
+  REQUIRE(euler.check("angles_phy711", "40, 30, 70 deg").correct);
+  // Some numbers with a unit, some without; units of different kinds: said so.
+  REQUIRE_THAT(error_of(euler, "angles_phy711", "(40°, 30, 70°)"),
+               Catch::Equals("--answer: the entry \"30\" has no unit where another has deg: give "
+                             "each number its unit (a zero may go without), or one unit after "
+                             "the whole"));
+  REQUIRE_THAT(error_of(euler, "angles_phy711", "(φ, 30°, ψ)"),
+               Catch::Contains("an expression in the symbols is in SI"));
+  REQUIRE_THAT(error_of(euler, "angles_phy711", "(40°, 30 kg, 70°)"),
+               Catch::Contains("units deg and kg measure different things"));
+}
+
 TEST_CASE("a unit's powers written negative or without a caret read back, every answer") {
   const int forms = forms_judged([](const Answer& a) {
     std::vector<std::string> texts;
