@@ -8,6 +8,7 @@
 
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/unicode_notation.hpp"
 
 namespace wobble::check {
 
@@ -31,8 +32,10 @@ std::string shown(const Answer& a) {
     }
     v += "]";
   }
-  if (!a.unit.empty()) v += " " + a.unit;
-  return a.symbolic.empty() ? v : a.symbolic + " = " + v;
+  // In the terminal's notation, as the statement above it and the text key print it
+  // ("m·R²/4 = 0.00072 kg m²"): what a student copies reads back in check.
+  if (!a.unit.empty()) v += " " + sym::to_unicode(a.unit);
+  return a.symbolic.empty() ? v : sym::to_unicode(a.symbolic) + " = " + v;
 }
 
 enum class Outcome { right, revealed, skipped, quit, nothing };

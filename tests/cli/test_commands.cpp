@@ -387,7 +387,7 @@ TEST_CASE("worksheet driven end to end by piped input: feedback, hint, reveal, s
   REQUIRE(b.exit_code == 0);
   REQUIRE_THAT(b.out,
                Catch::Contains("(variant 3)") && Catch::Contains("hint: A thin disc") &&
-                   Catch::Contains("answer: m*R^2/4 = ") &&
+                   Catch::Contains("answer: m·R²/4 = 0.0009 kg m²") &&
                    Catch::Contains("summary: 0 right, 1 revealed, 0 skipped, 7 not reached"));
   // The commands as words, in any case; a part left after one of its two answers is said so.
   const RunResult d = run_shell("printf 'help\\nHint\\n0.00072 kg m²\\nQuit\\n' | " + exe +

@@ -9,11 +9,13 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <sstream>
 
 #include "check/answer_reading.hpp"
 #include "check/check_fixture.hpp"
 #include "check/judge.hpp"
 #include "check/latex_answer.hpp"
+#include "check/worksheet.hpp"
 #include "problem/values.hpp"
 #include "render/common.hpp"
 #include "render/render.hpp"
@@ -234,6 +236,43 @@ TEST_CASE("every printed form of every answer of every problem reads back as cor
     return texts;
   });
   REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to eight forms
+}
+
+TEST_CASE("every answer the worksheet reveals reads back as correct, every problem") {
+  int revealed = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    // '!' at every prompt: each answer revealed in turn, in the key's order.
+    std::vector<std::string> names;
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) names.push_back(a.name);
+    }
+    std::size_t asked = 0;
+    const ReadLine reveal_all = [&](const std::string&, std::string& line) {
+      line = "!";
+      return asked++ < names.size();
+    };
+    std::ostringstream out;
+    (void)run_worksheet(reveal_all, out, "", f.problem, {f.key, f.table, f.values}, {});
+    std::istringstream lines(out.str());
+    std::size_t k = 0;
+    const std::string lead = "  answer: ";
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind(lead, 0) != 0) continue;
+      REQUIRE(k < names.size());
+      const std::string text = line.substr(lead.size());
+      INFO(p.id << " " << names[k] << ": " << text);
+      // In the terminal's notation, as the statement is printed.
+      if (!f.answer(names[k]).symbolic.empty())
+        REQUIRE(text.rfind(sym::to_unicode(f.answer(names[k]).symbolic) + " = ", 0) == 0);
+      const Verdict v = f.check(names[k], text);
+      INFO(v.line);
+      REQUIRE(v.correct);
+      ++k;
+      ++revealed;
+    }
+  }
+  REQUIRE(revealed > 100);  // every answer the catalog asks for in a worksheet
 }
 
 // The LaTeX a key prints for an answer: the closed form, the value with its unit as the LaTeX key
