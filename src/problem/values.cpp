@@ -145,8 +145,13 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
   }
   if (!std::isfinite(v)) throw InputError(field + ": value must be finite, got '" + text + "'");
   if (!p.range.contains(v)) {
-    throw InputError(field + ": " + p.name + " = " + shortest(v) +
-                     (p.unit.empty() ? "" : " " + p.unit) + " is outside its range " +
+    // "alpha = 90deg = 1.570796327 rad": as typed too, where that is not the value in SI (and
+    // as typed alone where it already has both sides).
+    const std::string typed = trim(text), si = shortest(v) + (p.unit.empty() ? "" : " " + p.unit);
+    const std::string shown = typed.find('=') != std::string::npos  ? typed
+                              : typed == si || typed == shortest(v) ? si
+                                                                    : typed + " = " + si;
+    throw InputError(field + ": " + p.name + " = " + shown + " is outside its range " +
                      p.range.text);
   }
   return v;

@@ -231,7 +231,7 @@ std::vector<Row> catalog() {
       {"top alpha at the limit",
        {"solve", "flying-plate", "--set", "alpha=90deg"},
        2,
-       {"--set alpha", "outside its range [0, pi/2)"}},
+       {"--set alpha: alpha = 90deg = 1.570796327 rad is outside its range [0, pi/2)"}},
       {"top without motion",
        {"solve", file("nomotion", top_with("[motion]\nomega = \"3\"\nalpha = \"alpha\"\n", ""))},
        2,
