@@ -326,13 +326,39 @@ class Reader {
     return {"(" + out.p.text + ")", out.p.symbolic, false};
   }
 
+  // "(40^\circ, 30^\circ, 70^\circ)", a pmatrix of angles: degrees after each number of a vector
+  // or matrix, written " deg" for the answer reader, which reads a unit on each entry. Only
+  // where the entry is a plain number and ends at the degree sign (`circ_end` is just past
+  // "\circ"); then the input is taken past it.
+  bool degrees_of_entry(Out& out, std::size_t circ_end) {
+    if (!out.factor_last) return false;
+    const std::size_t comma = out.p.text.rfind(", ");
+    std::string entry = out.p.text.substr(comma == std::string::npos ? 0 : comma + 2);
+    if (!entry.empty() && (entry[0] == '-' || entry[0] == '+')) entry.erase(0, 1);
+    const bool number = !entry.empty() && (is_digit(entry[0]) || entry[0] == '.') &&
+                        entry.find_first_not_of("0123456789.eE+-") == std::string::npos;
+    if (!number) return false;
+    const std::size_t resume = i_;
+    i_ = circ_end;
+    if (s_[circ_end - 6] == '{') expect('}');  // ^{\circ}
+    skip_spaces();
+    if (!(at(',') || stops_here())) {
+      i_ = resume;
+      return false;
+    }
+    out.p.text += " deg";
+    return true;
+  }
+
   void power(Out& out, int depth) {
     // "15^\circ": degrees, a unit.
     {
       std::size_t j = i_ + 1;
       if (j < s_.size() && s_[j] == '{') ++j;
       if (s_.compare(j, 5, "\\circ") == 0) {
-        if (!unit_here(out, depth, true)) fail("'^\\circ' (degrees) belongs after a number");
+        if (!unit_here(out, depth, true) && !degrees_of_entry(out, j + 5)) {
+          fail("'^\\circ' (degrees) belongs after a number");
+        }
         return;
       }
     }

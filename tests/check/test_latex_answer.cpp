@@ -64,6 +64,14 @@ TEST_CASE("LaTeX constructs become plain text with their products written out") 
   REQUIRE(text("0.21kg") == "0.21 kg");
   REQUIRE(text("15^\\circ") == "15 deg");
   REQUIRE(text("15^{\\circ}") == "15 deg");
+  // A degree sign after each number of a vector or matrix: a unit on each entry.
+  REQUIRE(text("(40^\\circ, -30^{\\circ}, 70^\\circ)") == "(40 deg, -30 deg, 70 deg)");
+  REQUIRE(text("\\begin{pmatrix} 40^\\circ \\\\ 30^\\circ \\end{pmatrix}") == "[40 deg, 30 deg]");
+  // Not after a product or before another factor: there it is no entry's unit.
+  REQUIRE_THROWS_WITH(text("(2 \\cdot 20^\\circ, 30^\\circ)"),
+                      Catch::Contains("'^\\circ' (degrees) belongs after a number"));
+  REQUIRE_THROWS_WITH(text("(40^\\circ m, 30^\\circ)"),
+                      Catch::Contains("'^\\circ' (degrees) belongs after a number"));
   // A product sign is no unit's start: "2 \cdot m" is twice the mass, not two metres.
   REQUIRE(text("2 \\cdot m") == "2*m");
   REQUIRE(text("0.5\\,\\mathrm{kg \\cdot m^{2}}") == "0.5 kg m^2");

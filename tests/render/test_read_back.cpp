@@ -470,13 +470,19 @@ TEST_CASE("a unit after each number of a vector or matrix reads back, every answ
     std::vector<std::string> texts;
     if (!with_units(a)) return texts;
     texts.push_back(unit_on_each(a, ", "));
-    if (a.unit == "rad") {  // angles in degrees, the sign glued on, rows spaced: "[40° 30° 70°]"
+    if (a.unit == "rad" &&
+        a.value.shape == Value::Shape::vector) {  // angles in degrees, the sign glued on, rows
+                                                  // spaced: "[40° 30° 70°]"
       texts.push_back(unit_on_each(a, ", ", M_PI / 180, "°"));
       texts.push_back("[" + unit_on_each(a, " ", M_PI / 180, "°").substr(1));
+      // And in LaTeX: "(40^\circ, 30^\circ, 70^\circ)", a pmatrix's cells (rows as "\\").
+      texts.push_back(unit_on_each(a, ", ", M_PI / 180, "^\\circ"));
+      std::string cells = unit_on_each(a, " \\\\ ", M_PI / 180, "^\\circ");
+      texts.push_back("\\begin{pmatrix} " + cells.substr(1, cells.size() - 2) + " \\end{pmatrix}");
     }
     return texts;
   });
-  REQUIRE(forms > 40);  // every vector and matrix with a unit (about 35 today), angles twice more
+  REQUIRE(forms > 50);  // every vector and matrix with a unit (about 35 today), angles 4 more
   // Each number is read with its own unit: one of them off is wrong.
   const Fixture euler("euler-angles");
   REQUIRE(euler.check("angles_phy711", "(40°, 30°, 70°)").correct);
