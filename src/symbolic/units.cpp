@@ -38,6 +38,11 @@ const std::map<std::string, Named>& names() {
       // Days, as a key's notes print long periods (the Earth's wobble): 86400 s, singular too.
       {"day", {86400.0, {0, 0, 1}, false, "86400"}},
       {"days", {86400.0, {0, 0, 1}, false, "86400"}},
+      // The Julian year, 365.25 days, as astronomy's periods are given (the Chandler wobble).
+      {"yr", {31557600.0, {0, 0, 1}, false, "31557600"}},
+      // Minutes and seconds of arc, as the Earth's wobble is measured (about 0.2 arcsec).
+      {"arcmin", {M_PI / 10800, {0, 0, 0}, true, "pi/10800"}},
+      {"arcsec", {M_PI / 648000, {0, 0, 0}, true, "pi/648000"}},
   };
   return n;
 }
@@ -46,15 +51,46 @@ const std::map<std::string, Named>& names() {
 // spells, plural or not.
 const std::map<std::string, std::string>& spellings() {
   static const std::map<std::string, std::string> n{
-      {"kilogram", "kg"}, {"kilograms", "kg"},   {"gram", "g"},          {"grams", "g"},
-      {"meter", "m"},     {"meters", "m"},       {"metre", "m"},         {"metres", "m"},
-      {"second", "s"},    {"seconds", "s"},      {"sec", "s"},           {"secs", "s"},
-      {"minute", "min"},  {"minutes", "min"},    {"mins", "min"},        {"hour", "h"},
-      {"hours", "h"},     {"hr", "h"},           {"hrs", "h"},           {"radian", "rad"},
-      {"radians", "rad"}, {"rads", "rad"},       {"degree", "deg"},      {"degrees", "deg"},
-      {"degs", "deg"},    {"revolution", "rev"}, {"revolutions", "rev"}, {"revs", "rev"},
-      {"joule", "J"},     {"joules", "J"},       {"newton", "N"},        {"newtons", "N"},
+      {"kilogram", "kg"},
+      {"kilograms", "kg"},
+      {"gram", "g"},
+      {"grams", "g"},
+      {"meter", "m"},
+      {"meters", "m"},
+      {"metre", "m"},
+      {"metres", "m"},
+      {"second", "s"},
+      {"seconds", "s"},
+      {"sec", "s"},
+      {"secs", "s"},
+      {"minute", "min"},
+      {"minutes", "min"},
+      {"mins", "min"},
+      {"hour", "h"},
+      {"hours", "h"},
+      {"hr", "h"},
+      {"hrs", "h"},
+      {"radian", "rad"},
+      {"radians", "rad"},
+      {"rads", "rad"},
+      {"degree", "deg"},
+      {"degrees", "deg"},
+      {"degs", "deg"},
+      {"revolution", "rev"},
+      {"revolutions", "rev"},
+      {"revs", "rev"},
+      {"joule", "J"},
+      {"joules", "J"},
+      {"newton", "N"},
+      {"newtons", "N"},
       {"RPM", "rpm"},
+      {"year", "yr"},
+      {"years", "yr"},
+      {"yrs", "yr"},
+      {"arcminute", "arcmin"},
+      {"arcminutes", "arcmin"},
+      {"arcsecond", "arcsec"},
+      {"arcseconds", "arcsec"},
   };
   return n;
 }
@@ -87,9 +123,11 @@ Unit parse_unit(const std::string& text, const std::string& field) {
   Unit u;
   u.text = text;
   const auto fail = [&](const std::string& why) -> Unit {
-    throw InputError(field + ": cannot read the unit '" + text + "': " + why +
-                     " (units: kg, g, m, cm, mm, s, ms, min, h, day, rad, deg, rev, J, N, Hz, rpm; "
-                     "e.g. 'kg m^2', 'rad/s')");
+    throw InputError(
+        field + ": cannot read the unit '" + text + "': " + why +
+        " (units: kg, g, m, cm, mm, s, ms, min, h, day, yr, rad, deg, arcmin, arcsec, rev, J, N, "
+        "Hz, rpm; "
+        "e.g. 'kg m^2', 'rad/s')");
   };
   bool denominator = false, any = false, after_denominator = false;
   std::size_t i = 0;

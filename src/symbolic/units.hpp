@@ -6,7 +6,8 @@
 /// A unit is a product of names with integer powers, '/' putting what follows in the
 /// denominator: "kg m^2", "kg*m^2/s", "rad/s", "m/s^2", "deg", "rev/s", "1/s" (or "s^-1"), in one
 /// pair of brackets or not ("[kg m^2]", "(rad/s)", as a table's heading writes a unit).
-/// Names: kg, g; m, cm, mm; s, ms, min, h, day (or days); rad, deg, rev; J, N, Hz, rpm. An unknown
+/// Names: kg, g; m, cm, mm; s, ms, min, h, day (days), yr (the Julian year); rad, deg, arcmin,
+/// arcsec, rev; J, N, Hz, rpm. An unknown
 /// name, a missing or non-integer power is an error.
 ///
 /// Radians, one rule everywhere: an angle is a pure number, so rad/s and 1/s are the same unit

@@ -72,6 +72,12 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   REQUIRE_THAT(parse_unit("cm2", "u").to_si, WithinRel(1e-4, 1e-15));
   REQUIRE_THAT(parse_unit("1/min", "u").to_si, WithinRel(1.0 / 60, 1e-15));
   REQUIRE(parse_unit("J", "u").same_dimension(parse_unit("kg m^2/s^2", "u")));
+  // Astronomy's units, as the Earth's wobble is given: the Julian year, seconds of arc.
+  REQUIRE_THAT(parse_unit("yr", "u").to_si, WithinRel(365.25 * 86400, 1e-15));
+  REQUIRE(parse_unit("years", "u").dim == std::array<int, 3>{0, 0, 1});
+  REQUIRE_THAT(parse_unit("arcsec", "u").to_si, WithinRel(M_PI / 180 / 3600, 1e-15));
+  REQUIRE_THAT(parse_unit("arcminutes", "u").to_si, WithinRel(M_PI / 180 / 60, 1e-15));
+  REQUIRE(parse_unit("arcsec", "u").angle);
   for (const std::string bad :
        {"furlong",       "kg^x",        "m/s/s", "/s",    "kg^123", "",
         "kg m^2 !",      "1/",          "2/s",   "1/s/s", "s^(-1",  "s^()",

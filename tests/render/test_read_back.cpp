@@ -812,7 +812,7 @@ TEST_CASE("degenerate or not is the key's own decision, whatever the tolerance")
   }
 }
 
-TEST_CASE("a period the key's note gives in days reads back in days") {
+TEST_CASE("a period the key's note gives in days reads back in days, and in years; arcseconds") {
   const Fixture earth("earth-free-precession");
   const Answer& T = earth.answer("precession_period_body");
   // The note, as printed: "303.6241743 days; ...": its number with the unit as written.
@@ -824,4 +824,14 @@ TEST_CASE("a period the key's note gives in days reads back in days") {
   REQUIRE(earth.check("precession_period_body", "1 day").correct == false);
   // The Chandler period (433 days, in the problem's notes) is not Euler's: it is judged wrong.
   REQUIRE_FALSE(earth.check("precession_period_body", "433 days").correct);
+  // In years, and the angle of L from the figure axis in seconds of arc, as astronomers give
+  // them: converted from the key's values, the same number in the wrong unit judged wrong.
+  const double years = T.value.data[0] / (365.25 * 86400);
+  REQUIRE(earth.check("precession_period_body", fmt::format("{:.6g} yr", years)).correct);
+  REQUIRE(earth.check("precession_period_body", fmt::format("{:.6g} years", years)).correct);
+  const double angle = earth.answer("angle_L_e3").value.data[0];
+  const std::string arcsec = fmt::format("{:.6g}", angle * 180 / M_PI * 3600);
+  REQUIRE(earth.check("angle_L_e3", arcsec + " arcsec").correct);
+  REQUIRE(earth.check("angle_L_e3", arcsec + "arcsec").correct);
+  REQUIRE_FALSE(earth.check("angle_L_e3", arcsec + " arcmin").correct);
 }
