@@ -582,8 +582,8 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
   auto [value, unit] = std::pair{entry_units.value, entry_units.unit};
   if (unit.empty()) std::tie(value, unit) = split_unit(text);
   if (unit.empty()) std::tie(value, unit) = split_glued_unit(text, table);
-  // "M g", "2 M l g": an expression in the problem's symbols takes no unit (it is in SI), so a
-  // tail of its symbols that also spell a unit (g, m, s) is a factor, not grams or metres.
+  // "M g", "2 M l g": an expression in the problem's symbols is in SI already, so a tail of its
+  // symbols that also spell a unit (g, m, s) is a factor, not grams or metres.
   if (!unit.empty() && has_identifier_of(value, table) && all_identifiers_of(unit, table)) {
     value = text;
     unit.clear();
@@ -599,8 +599,8 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
         unit.clear();
       } catch (const InputError&) {
       }
-      // "m R^2/4 kg m^2": factors side by side with a unit, read so as to say what is wrong (an
-      // expression in the symbols takes no unit), not that the factors need their '*'.
+      // "m R^2/4 kg m^2", "m R^2/4 g cm^2": factors side by side with a unit, read with it (an SI
+      // unit) or so as to say what is wrong with it, not that the factors need their '*'.
       if (p.value.entries.empty()) read_side_by_side(value, table, field, p);
     }
     // "[40 deg, 30, 70 deg]": what is wrong is the units, not that "40 deg" is no expression.

@@ -609,7 +609,7 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
   REQUIRE_THAT(error_of(top, "energy_prime", "M l g cos θ0^2"),
                Catch::Contains("products need '*' and a function's argument parentheses"));
   // A symbol that also spells a unit (g, gram) is a factor after an expression in the symbols,
-  // which is in SI and takes no unit; after a plain number it is the unit.
+  // which is in SI already; after a plain number it is the unit.
   REQUIRE_FALSE(top.check("energy_prime", "M g").correct);
   const Fixture plate_m("flying-plate");
   REQUIRE(plate_m.check("I0", "m R R/4").correct);
