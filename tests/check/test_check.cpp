@@ -295,6 +295,8 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
   // A decimal comma reads as a 2-vector: said so where a number is wanted.
   REQUIRE_THROWS_WITH(plate.check("t_max", "0,16"), Catch::Contains("a decimal comma?"));
   REQUIRE_THROWS_WITH(plate.check("t_max", "-0,16 s"), Catch::Contains("a decimal comma?"));
+  REQUIRE_THROWS_WITH(plate.check("t_max", "1,6e-1 s"), Catch::Contains("a decimal comma?"));
+  REQUIRE_THROWS_WITH(plate.check("t_max", "1,6e s"), !Catch::Contains("decimal comma"));
   REQUIRE_THROWS_WITH(plate.check("t_max", "0, 16"),
                       Catch::Contains("2-vector") && !Catch::Contains("decimal comma"));
 }
