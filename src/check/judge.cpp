@@ -298,10 +298,15 @@ std::vector<std::string> sides(const std::string& text, const std::string& name)
   return out;
 }
 
-// "theta_L", "θ_L", "\theta_{L}": one name, with no operator or number that would make it an
-// expression.
+// "theta_L", "θ_L", "\theta_{L}", "E′": one name, with no operator or number that would make it
+// an expression.
 bool is_one_name(const std::string& side) {
-  const std::string s = trim(sym::to_ascii(side));
+  std::string s = trim(sym::to_ascii(side));
+  // E', E′: a prime marks a name (the heavy top's E′), it makes no expression.
+  for (const std::string prime : {"′", "'"}) {
+    for (auto at = s.find(prime); at != std::string::npos; at = s.find(prime))
+      s.erase(at, prime.size());
+  }
   if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
   return std::all_of(s.begin(), s.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '\\' || c == '{' ||

@@ -159,6 +159,13 @@ std::string to_ascii(const std::string& text) {
       i += std::string(kSubscripts[d]).size();
       continue;
     }
+    // 0.2″, 12′: seconds and minutes of arc after a number (after a name a prime is no unit).
+    if (!out.empty() && is_digit(out.back()) &&
+        (text.compare(i, 3, "″") == 0 || text.compare(i, 3, "′") == 0)) {
+      out += text.compare(i, 3, "″") == 0 ? " arcsec" : " arcmin";
+      i += 3;
+      continue;
+    }
     bool replaced = false;
     for (const auto& [from, to] : replacements()) {
       if (text.compare(i, from.size(), from) == 0) {

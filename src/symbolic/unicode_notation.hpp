@@ -8,8 +8,9 @@
 /// and digits -> the letter with a combining dot above (`phidot0` -> `φ̇0`).
 /// Reading (to_ascii) undoes every one of these and accepts the common variants a student types
 /// (`×` and `⋅` for `*`, `−` for `-`, `√2` for `sqrt(2)`, superscripts with a sign `⁻⁴`, `°` for
-/// degrees, `µ`/`μ`), so that whatever wobble prints reads back as what it meant. Characters it
-/// does not know are left in place, for the expression guard to refuse by name.
+/// degrees, `″` and `′` after a number for seconds and minutes of arc, `µ`/`μ`), so that
+/// whatever wobble prints reads back as what it meant. Characters it does not know are left in
+/// place, for the expression guard to refuse by name.
 #include <map>
 #include <string>
 

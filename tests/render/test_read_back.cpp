@@ -354,6 +354,10 @@ TEST_CASE("a key line with '=' is judged side by side, the answer's name or a la
   REQUIRE(plate.check("angle_L_e3", "θ_L = 7.631°").correct);
   REQUIRE(plate.check("angle_L_e3", "\\theta_{L} = 7.631^\\circ").correct);
   REQUIRE_FALSE(plate.check("angle_L_e3", "θ_L = 8.2°").correct);
+  const Fixture top("heavy-top");  // a primed name, as the heavy top's E′ is written
+  const std::string e_prime = printed_value(top.answer("energy_prime"));
+  REQUIRE(top.check("energy_prime", "E′ = " + e_prime).correct);
+  REQUIRE(top.check("energy_prime", "E' = " + e_prime).correct);
   // Not a label: an expression (2x), or one of the problem's symbols, which is judged as a side.
   REQUIRE_THROWS_AS(plate.check("angle_L_e3", "2x = 7.631°"), InputError);
   const Verdict symbol_side = plate.check("angle_omega_e3", "m = 0.2618 rad");
@@ -833,5 +837,7 @@ TEST_CASE("a period the key's note gives in days reads back in days, and in year
   const std::string arcsec = fmt::format("{:.6g}", angle * 180 / M_PI * 3600);
   REQUIRE(earth.check("angle_L_e3", arcsec + " arcsec").correct);
   REQUIRE(earth.check("angle_L_e3", arcsec + "arcsec").correct);
+  REQUIRE(earth.check("angle_L_e3", arcsec + "″").correct);  // the double prime
+  REQUIRE_FALSE(earth.check("angle_L_e3", arcsec + "′").correct);
   REQUIRE_FALSE(earth.check("angle_L_e3", arcsec + " arcmin").correct);
 }
