@@ -112,14 +112,25 @@ int check_submission(const CheckOptions& opt, const check::Options& o) {
 int run_check(const CheckOptions& opt) {
   const check::Options o = judge_options(opt.tolerance, opt.sigfigs);
   if (!opt.answers.empty()) return check_submission(opt, o);
-  if (opt.part.empty() && opt.name.empty()) {
-    throw InputError(
-        "check: give PART (or --name) and --answer, or --answers FILE with every answer");
-  }
   const Problem problem = find_problem(opt.problem);
   const sym::Values values =
       parameter_values(problem, with_variant(problem, opt.variant, opt.sets));
   const Key key = solve(problem, values);
+  if (opt.part.empty() && opt.name.empty()) {
+    // What there is to check, so that the next command can be typed from this line.
+    std::string names, first;
+    for (const auto& part : key.parts) {
+      std::string these;
+      for (const auto& a : part.answers) these += (these.empty() ? "" : ", ") + a.name;
+      if (these.empty()) continue;
+      if (first.empty()) first = part.answers.front().name;
+      names += (names.empty() ? "" : "; ") + ("(" + part.id + ") " + these);
+    }
+    throw InputError(fmt::format(
+        "check: give an answer's name (or its part) and the answer, as wobble check {} {} "
+        "ANSWER, or --answers FILE with every answer; {}'s answers: {}",
+        opt.problem, first.empty() ? "NAME" : first, opt.problem, names.empty() ? "none" : names));
+  }
   const Answer& answer = find_answer(key, opt.part, opt.name, "part", "--name");
   const sym::SymbolTable table = problem.symbol_table();
   const check::Verdict v =

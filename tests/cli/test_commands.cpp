@@ -224,7 +224,14 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
   REQUIRE_THAT(absent.err, Catch::Contains("part d of heavy-top has nothing to check"));
   const RunResult neither = run_wobble({"check", "flying-plate", "--answer", "1"});
   REQUIRE(neither.exit_code == 2);
-  REQUIRE_THAT(neither.err, Catch::Contains("give PART (or --name)"));
+  // Neither a part nor a name: the line says how, with this problem's answers by part.
+  REQUIRE_THAT(neither.err, Catch::StartsWith("wobble: check: give an answer's name (or its "
+                                              "part) and the answer, as wobble check "
+                                              "flying-plate I0 ANSWER") &&
+                                Catch::Contains("flying-plate's answers: (a) I0, I; (b) L0_body, "
+                                                "L0_space; (c) angle_omega_e3"));
+  REQUIRE(neither.out.empty());
+  REQUIRE(run_wobble({"check", "flying-plate"}).exit_code == 2);
 }
 
 TEST_CASE("check: the answer's name where the part goes, the answer as the third word") {
