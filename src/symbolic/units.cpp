@@ -94,6 +94,19 @@ const std::map<std::string, std::string>& spellings() {
   };
   return n;
 }
+// "kgm" -> "kg m", "Nm" -> "N m": unit names run together, written apart; "" if the word is no
+// such run. Tried only on a short word: the splits of "mmmm..." grow as Fibonacci's numbers.
+constexpr std::size_t kLongestRun = 16;
+std::string run_together(const std::string& word) {
+  if (word.size() > kLongestRun) return "";
+  if (names().count(word)) return word;
+  for (std::size_t i = 1; i < word.size(); ++i) {
+    if (!names().count(word.substr(0, i))) continue;
+    if (const std::string rest = run_together(word.substr(i)); !rest.empty())
+      return word.substr(0, i) + " " + rest;
+  }
+  return "";
+}
 }  // namespace
 
 std::string Unit::dimension_words() const {
@@ -174,7 +187,11 @@ Unit parse_unit(const std::string& text, const std::string& field) {
     if (const auto spelled = spellings().find(name); spelled != spellings().end())
       name = spelled->second;
     const auto it = names().find(name);
-    if (it == names().end()) return fail("unknown unit '" + name + "'");
+    if (it == names().end()) {
+      const std::string apart = run_together(name);
+      return fail("unknown unit '" + name + "'" +
+                  (apart.empty() ? "" : " ('" + apart + "', with spaces?)"));
+    }
     int power = 1;
     if (j < text.size() && text[j] == '^') {
       // "s^-1", or "s^(-1)" as the answer reader writes a signed exponent (and "s⁻¹").

@@ -78,6 +78,11 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   REQUIRE_THAT(parse_unit("arcsec", "u").to_si, WithinRel(M_PI / 180 / 3600, 1e-15));
   REQUIRE_THAT(parse_unit("arcminutes", "u").to_si, WithinRel(M_PI / 180 / 60, 1e-15));
   REQUIRE(parse_unit("arcsec", "u").angle);
+  // Units run together are refused, with the same written apart to copy.
+  REQUIRE_THROWS_WITH(parse_unit("kgm^2", "u"),
+                      Catch::Contains("unknown unit 'kgm' ('kg m', with spaces?)"));
+  REQUIRE_THROWS_WITH(parse_unit("Nm", "u"), Catch::Contains("('N m', with spaces?)"));
+  REQUIRE_THROWS_WITH(parse_unit("furlong", "u"), !Catch::Contains("with spaces?"));
   for (const std::string bad :
        {"furlong",       "kg^x",        "m/s/s", "/s",    "kg^123", "",
         "kg m^2 !",      "1/",          "2/s",   "1/s/s", "s^(-1",  "s^()",
