@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "check/judge.hpp"
@@ -118,18 +119,13 @@ int run_check(const CheckOptions& opt) {
   const Key key = solve(problem, values);
   if (opt.part.empty() && opt.name.empty()) {
     // What there is to check, so that the next command can be typed from this line.
-    std::string names, first;
-    for (const auto& part : key.parts) {
-      std::string these;
-      for (const auto& a : part.answers) these += (these.empty() ? "" : ", ") + a.name;
-      if (these.empty()) continue;
-      if (first.empty()) first = part.answers.front().name;
-      names += (names.empty() ? "" : "; ") + ("(" + part.id + ") " + these);
-    }
+    const auto part = std::find_if(key.parts.begin(), key.parts.end(),
+                                   [](const PartKey& p) { return !p.answers.empty(); });
     throw InputError(fmt::format(
         "check: give an answer's name (or its part) and the answer, as wobble check {} {} "
         "ANSWER, or --answers FILE with every answer; {}'s answers: {}",
-        opt.problem, first.empty() ? "NAME" : first, opt.problem, names.empty() ? "none" : names));
+        opt.problem, part == key.parts.end() ? "NAME" : part->answers.front().name, opt.problem,
+        answers_by_part(key)));
   }
   const Answer& answer = find_answer(key, opt.part, opt.name, "part", "--name");
   const sym::SymbolTable table = problem.symbol_table();

@@ -36,12 +36,21 @@ std::vector<std::string> names_of(const std::vector<Answer>& answers) {
 }
 }  // namespace
 
+std::string answers_by_part(const Key& key) {
+  std::vector<std::string> parts;
+  for (const auto& p : key.parts) {
+    if (!p.answers.empty())
+      parts.push_back(fmt::format("({}) {}", p.id, fmt::join(names_of(p.answers), ", ")));
+  }
+  return parts.empty() ? "none" : fmt::format("{}", fmt::join(parts, "; "));
+}
+
 const Answer& find_answer(const Key& key, const std::string& part_id, const std::string& name,
                           const std::string& part_field, const std::string& name_field) {
   if (part_id.empty() && name.empty()) {
     throw InputError(part_field + " or " + name_field +
-                     ": neither is given; name the part, the "
-                     "answer, or both");
+                     ": neither is given; name the part, the answer, or both (answers: " +
+                     answers_by_part(key) + ")");
   }
   // Where the part goes, an answer's name as the key prints it ("check flying-plate I0 ..."). A
   // part's id comes first, should an answer bear the same name.

@@ -155,6 +155,10 @@ struct AnswerNotFound : InputError {
 /// @throws AnswerNotFound naming the field and listing what exists: an unknown part or name, a
 ///   part with several answers and no name, a part or answer absent at these values.
 /// @throws InputError when neither a part nor a name is given.
+/// The key's answers by part, for a message: "(a) I0, I; (b) L0_body, L0_space", "none" if
+/// there are none (parts with nothing to check at these values are left out).
+std::string answers_by_part(const Key& key);
+
 const Answer& find_answer(const Key& key, const std::string& part_id, const std::string& name,
                           const std::string& part_field, const std::string& name_field);
 

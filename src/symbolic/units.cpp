@@ -3,6 +3,9 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
@@ -17,8 +20,9 @@ struct Named {
   const char* exact;  ///< to_si as a constant expression
 };
 
-const std::map<std::string, Named>& names() {
-  static const std::map<std::string, Named> n{
+// The units by name, in the order a message lists them.
+const std::vector<std::pair<std::string, Named>>& units_in_order() {
+  static const std::vector<std::pair<std::string, Named>> n{
       {"kg", {1.0, {1, 0, 0}, false, "1"}},
       {"g", {1e-3, {1, 0, 0}, false, "1/1000"}},
       {"m", {1.0, {0, 1, 0}, false, "1"}},
@@ -28,23 +32,37 @@ const std::map<std::string, Named>& names() {
       {"ms", {1e-3, {0, 0, 1}, false, "1/1000"}},
       {"min", {60.0, {0, 0, 1}, false, "60"}},
       {"h", {3600.0, {0, 0, 1}, false, "3600"}},
+      // Days, as a key's notes print long periods (the Earth's wobble): 86400 s.
+      {"day", {86400.0, {0, 0, 1}, false, "86400"}},
+      // The Julian year, 365.25 days, as astronomy's periods are given (the Chandler wobble).
+      {"yr", {31557600.0, {0, 0, 1}, false, "31557600"}},
       {"rad", {1.0, {0, 0, 0}, true, "1"}},
       {"deg", {M_PI / 180, {0, 0, 0}, true, "pi/180"}},
+      // Minutes and seconds of arc, as the Earth's wobble is measured (about 0.2 arcsec).
+      {"arcmin", {M_PI / 10800, {0, 0, 0}, true, "pi/10800"}},
+      {"arcsec", {M_PI / 648000, {0, 0, 0}, true, "pi/648000"}},
       {"rev", {2 * M_PI, {0, 0, 0}, true, "2*pi"}},
       {"J", {1.0, {1, 2, -2}, false, "1"}},
       {"N", {1.0, {1, 1, -2}, false, "1"}},
       {"Hz", {2 * M_PI, {0, 0, -1}, true, "2*pi"}},
       {"rpm", {2 * M_PI / 60, {0, 0, -1}, true, "2*pi/60"}},
-      // Days, as a key's notes print long periods (the Earth's wobble): 86400 s, singular too.
-      {"day", {86400.0, {0, 0, 1}, false, "86400"}},
-      {"days", {86400.0, {0, 0, 1}, false, "86400"}},
-      // The Julian year, 365.25 days, as astronomy's periods are given (the Chandler wobble).
-      {"yr", {31557600.0, {0, 0, 1}, false, "31557600"}},
-      // Minutes and seconds of arc, as the Earth's wobble is measured (about 0.2 arcsec).
-      {"arcmin", {M_PI / 10800, {0, 0, 0}, true, "pi/10800"}},
-      {"arcsec", {M_PI / 648000, {0, 0, 0}, true, "pi/648000"}},
   };
   return n;
+}
+
+const std::map<std::string, Named>& names() {
+  static const std::map<std::string, Named> n(units_in_order().begin(), units_in_order().end());
+  return n;
+}
+
+// "kg, g, m, ...": every unit's name, for a message.
+const std::string& unit_list() {
+  static const std::string list = [] {
+    std::string l;
+    for (const auto& [name, unit] : units_in_order()) l += (l.empty() ? "" : ", ") + name;
+    return l;
+  }();
+  return list;
 }
 
 // The names written out as students write them ("0.78 radians", "3 seconds"): each the unit it
@@ -84,6 +102,7 @@ const std::map<std::string, std::string>& spellings() {
       {"newton", "N"},
       {"newtons", "N"},
       {"RPM", "rpm"},
+      {"days", "day"},
       {"year", "yr"},
       {"years", "yr"},
       {"yrs", "yr"},
@@ -136,11 +155,8 @@ Unit parse_unit(const std::string& text, const std::string& field) {
   Unit u;
   u.text = text;
   const auto fail = [&](const std::string& why) -> Unit {
-    throw InputError(
-        field + ": cannot read the unit '" + text + "': " + why +
-        " (units: kg, g, m, cm, mm, s, ms, min, h, day, yr, rad, deg, arcmin, arcsec, rev, J, N, "
-        "Hz, rpm; "
-        "e.g. 'kg m^2', 'rad/s')");
+    throw InputError(field + ": cannot read the unit '" + text + "': " + why +
+                     " (units: " + unit_list() + "; e.g. 'kg m^2', 'rad/s')");
   };
   bool denominator = false, any = false, after_denominator = false;
   std::size_t i = 0;

@@ -182,7 +182,8 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
                  .get<std::string>(),
              Equals("name: part a has several answers; name one (I0, I)"));
   CHECK_THAT(post_check(c, "flying-plate", {{"answer", right}}, 400)["error"].get<std::string>(),
-             StartsWith("part or name: neither is given"));
+             StartsWith("part or name: neither is given") &&
+                 Contains("(answers: (a) I0, I; (b) L0_body, L0_space; "));
   CHECK_THAT(get_json(c, "/api/problems/flying-plate/hint?part=a")["hint"].get<std::string>(),
              !Contains("xx") && Contains("m"));
 }
