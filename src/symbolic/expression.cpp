@@ -73,8 +73,17 @@ std::string exact_literals(const std::string& text) {
     std::string mantissa;
     long exponent = 0;
     bool inexact = false;
+    const std::size_t first = i;
     for (; i < text.size() && (digit(text[i]) || text[i] == '.'); ++i) {
       if (text[i] == '.') {
+        // "1.5.3", "0.333...": a typo or an ellipsis, never a number (GiNaC's reader would drop
+        // the second point and read 1.53).
+        if (inexact) {
+          std::size_t end = i;
+          while (end < text.size() && (digit(text[end]) || text[end] == '.')) ++end;
+          throw ExpressionError("the number \"" + text.substr(first, end - first) +
+                                "\" has more than one decimal point");
+        }
         inexact = true;
       } else {
         mantissa += text[i];

@@ -304,6 +304,13 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
   REQUIRE_THROWS_WITH(plate.check("t_max", "1,6e s"), !Catch::Contains("decimal comma"));
   REQUIRE_THROWS_WITH(plate.check("t_max", "0, 16"),
                       Catch::Contains("2-vector") && !Catch::Contains("decimal comma"));
+  // A second decimal point (a typo, an ellipsis) is said so, never dropped: 1.5.3 is not 1.53.
+  REQUIRE_THROWS_WITH(plate.check("t_max", "0.1.6 s"),
+                      Catch::Contains("the number \"0.1.6\" has more than one decimal point"));
+  REQUIRE_THROWS_WITH(plate.check("t_max", "0.333..."),
+                      Catch::Contains("the number \"0.333...\" has more than one decimal point"));
+  REQUIRE_THROWS_WITH(plate.check("I", "[[m*R^2/4, 0, 0], [0, m*R^2/4, 0], [0, 0, 1.2.3]]"),
+                      Catch::Contains("more than one decimal point"));
 }
 
 TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {

@@ -96,6 +96,9 @@ TEST_CASE("values: each kind of bad value is named") {
   REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "1e999", "--set m"), Catch::Contains("finite"));
   REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "two", "--set m"),
                       Catch::Contains("'two' is not a number"));
+  // A second decimal point is a typo, not a digit to drop: 0.2.5 is not 0.25.
+  REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "0.2.5", "--set m"),
+                      Catch::Contains("'0.2.5' is not a number"));
   REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "3deg", "--set m"),
                       Catch::Contains("'3deg' is in deg (an angle), but m is in kg (mass)"));
   REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "3 m", "--set m"),
