@@ -450,8 +450,10 @@ bool is_zero_literal(const std::string& s) {
 // 70°)" reads), "[2.6 rad/s, 0, 19.3 rad/s]", as a student writes angles and a table's cells show
 // values. `value` has the units taken out, the other entries converted into the first entry's
 // `unit` exactly where theirs differs; both are empty unless every entry but a zero has a unit.
-// `refusal` says what is wrong where only some have one ("[40 deg, 30, 70 deg]") or their
-// dimensions differ: the message if the text reads no other way ("40, 30, 70 deg" does).
+// An expression in the symbols may carry an SI unit ("[phidot rad/s, 0, 11.7 rad/s]").
+// `refusal` says what is wrong where only some have one ("[40 deg, 30, 70 deg]"), their
+// dimensions differ or an expression has a unit not SI: the message if the text reads no other
+// way ("40, 30, 70 deg" does).
 struct EntryUnits {
   std::string value, unit, refusal;
 };
@@ -470,7 +472,7 @@ EntryUnits units_per_entry(const std::string& text, const sym::SymbolTable& tabl
   const std::string laid = layout(glued);
   if (!wrapped(laid, '[')) return {};
   std::optional<Unit> first;
-  std::string first_text, without, other_dimension;  // the first entry of each kind
+  std::string first_text, without, other_dimension, not_si;  // the first entry of each kind
   const auto strip = [&](const auto& self, const std::string& group) -> std::string {
     std::vector<std::string> items = top_level(group.substr(1, group.size() - 2), ',');
     for (auto& item : items) {
@@ -480,12 +482,19 @@ EntryUnits units_per_entry(const std::string& text, const sym::SymbolTable& tabl
       }
       auto [number, unit] = split_unit(item);
       if (unit.empty()) std::tie(number, unit) = split_glued_unit(item, table);
-      // Only numbers: an expression in the symbols is in SI, and reads as it is.
-      if (unit.empty() || has_identifier_of(number, table)) {
-        if (without.empty() && !(unit.empty() && is_zero_literal(item))) without = item;
+      if (unit.empty()) {
+        if (without.empty() && !is_zero_literal(item)) without = item;
         continue;
       }
       const Unit u = parse_unit(unit, field);
+      // An expression in the symbols is in SI: an SI unit after it says what it is
+      // ("(phidot rad/s, ..)", as after a whole expression); another would ask for a conversion
+      // the expression does not say how to apply.
+      if (has_identifier_of(number, table) && u.to_si_exact != "1" && not_si.empty()) {
+        not_si = field + ": the entry \"" + item +
+                 "\" is an expression in the problem's symbols, in SI already; drop its unit '" +
+                 unit + "'";
+      }
       if (!first) {
         first = u;
         first_text = unit;
@@ -503,11 +512,13 @@ EntryUnits units_per_entry(const std::string& text, const sym::SymbolTable& tabl
   const std::string stripped = strip(strip, laid);
   if (!first) return {};
   if (!other_dimension.empty()) return {"", "", other_dimension};
+  if (!not_si.empty()) return {"", "", not_si};
   if (!without.empty()) {
     return {"", "",
             field + ": the entry \"" + without + "\" has no unit where another has " + first_text +
                 (has_identifier_of(without, table)
-                     ? ": an expression in the symbols is in SI, so give the numbers in SI too"
+                     ? ": an expression in the symbols is in SI; write its SI unit after it "
+                       "too, or give the numbers in SI without units"
                      : ": give each number its unit (a zero may go without), or one unit after "
                        "the whole")};
   }
@@ -557,19 +568,32 @@ ReadAnswer finished(ReadAnswer p, const std::string& unit, const std::string& fi
   }
   return p;
 }
+
+// What ends a line without being part of the answer: MATLAB's ';' that keeps a value from
+// echoing ("0.00072;", "[1 0 0; 0 1 0];"), a sentence's full stop ("0.00072 kg m^2.",
+// "\frac{m R^2}{4}."). One full stop only: "0.333..." stays as typed (and is refused).
+std::string without_closing_punctuation(const std::string& typed) {
+  std::string s = trim(typed);
+  while (!s.empty() && s.back() == ';') s = trim(s.substr(0, s.size() - 1));
+  if (s.size() >= 2 && s.back() == '.' && s[s.size() - 2] != '.')
+    s = trim(s.substr(0, s.size() - 1));
+  return s;
+}
 }  // namespace
 
 std::string reading_form(const std::string& typed) {
   check_bounds(typed, "answer");
-  const auto [value, unit] = split_unit(prepared(typed));
+  const auto [value, unit] = split_unit(prepared(without_closing_punctuation(typed)));
   return layout(value) + (unit.empty() ? "" : " " + unit);
 }
 
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field) {
   check_bounds(typed, field);
+  const std::string answer = without_closing_punctuation(typed);
   // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
-  const std::string source = looks_like_latex(typed) ? latex_as_text(typed, table, field) : typed;
+  const std::string source =
+      looks_like_latex(answer) ? latex_as_text(answer, table, field) : answer;
   const std::string text = underscores_dropped(prepared(source), table);
   if (text.empty()) {
     throw InputError(field +

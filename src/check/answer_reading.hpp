@@ -17,7 +17,10 @@
 /// - a subscript as LaTeX writes it, "psidot_0" for the problem's psidot0;
 /// - a unit after the value, "0.00072 kg m²", "(0, 0, 9.66) rad/s" (symbolic/symbolic/units.hpp),
 ///   or after each number of a vector or matrix, "(40°, 30°, 70°)", a zero without one;
-/// - an SI unit after an expression in the symbols (which is in SI): "m·R²/4 kg m²".
+/// - an SI unit after an expression in the symbols (which is in SI): "m·R²/4 kg m²", and after
+///   each expression of a vector, "(φ̇ rad/s, 0, ψ̇ rad/s)";
+/// - what ends a line but is no part of the answer: MATLAB's closing ';' ("0.00072;") and a
+///   sentence's full stop ("0.00072 kg m².").
 /// A unit glued to a plain number ("45deg", "0.21kg") is read as such unless the problem uses one
 /// of its letters as a symbol: where m is a mass, "2m" is ambiguous and refused.
 #include <optional>

@@ -326,18 +326,23 @@ class Reader {
     return {"(" + out.p.text + ")", out.p.symbolic, false};
   }
 
+  // Whether the entry of a vector or matrix read so far in `out` (after its last comma) is a
+  // plain number, as "-9.66" or "2.5e-3": then a unit after it is the entry's unit.
+  static bool entry_is_number(const Out& out) {
+    if (!out.factor_last) return false;
+    const std::size_t comma = out.p.text.rfind(", ");
+    std::string entry = out.p.text.substr(comma == std::string::npos ? 0 : comma + 2);
+    if (!entry.empty() && (entry[0] == '-' || entry[0] == '+')) entry.erase(0, 1);
+    return !entry.empty() && (is_digit(entry[0]) || entry[0] == '.') &&
+           entry.find_first_not_of("0123456789.eE+-") == std::string::npos;
+  }
+
   // "(40^\circ, 30^\circ, 70^\circ)", a pmatrix of angles: degrees after each number of a vector
   // or matrix, written " deg" for the answer reader, which reads a unit on each entry. Only
   // where the entry is a plain number and ends at the degree sign (`circ_end` is just past
   // "\circ"); then the input is taken past it.
   bool degrees_of_entry(Out& out, std::size_t circ_end) {
-    if (!out.factor_last) return false;
-    const std::size_t comma = out.p.text.rfind(", ");
-    std::string entry = out.p.text.substr(comma == std::string::npos ? 0 : comma + 2);
-    if (!entry.empty() && (entry[0] == '-' || entry[0] == '+')) entry.erase(0, 1);
-    const bool number = !entry.empty() && (is_digit(entry[0]) || entry[0] == '.') &&
-                        entry.find_first_not_of("0123456789.eE+-") == std::string::npos;
-    if (!number) return false;
+    if (!entry_is_number(out)) return false;
     const std::size_t resume = i_;
     i_ = circ_end;
     if (s_[circ_end - 6] == '{') expect('}');  // ^{\circ}
@@ -348,6 +353,57 @@ class Reader {
     }
     out.p.text += " deg";
     return true;
+  }
+
+  // "(0.128\,\mathrm{rad/s}, 1.11\,\mathrm{rad/s}, ..)", a pmatrix cell "9.66\,\mathrm{rad/s}":
+  // a unit after an entry of a vector or matrix, inside the brackets, written after the entry
+  // for the answer reader, which reads a unit on each entry (and says what is wrong with a mix,
+  // or with a unit not SI after an expression). Only a unit set as one, in \mathrm or \text:
+  // inside a vector "2\,m" stays 2 times the symbol m; after an expression, only a unit that
+  // names none of the problem's symbols ("\dot\phi\,\mathrm{rad/s}", not "R\,\mathrm{m}").
+  bool unit_of_entry(Out& out, int depth) {
+    if (depth == 0 || !out.factor_last) return false;
+    const std::size_t end = entry_end(i_);
+    if (end == std::string::npos) return false;
+    const std::string raw = s_.substr(i_, end - i_);
+    const bool set_as_unit =
+        std::any_of(text_wrappers().begin(), text_wrappers().end(),
+                    [&](const std::string& w) { return raw.find("\\" + w) != std::string::npos; });
+    if (!set_as_unit) return false;
+    const std::optional<std::string> unit = latex_unit_text(raw);
+    if (!unit || !is_unit(*unit)) return false;
+    if (!entry_is_number(out) && table_.contains(*unit)) return false;
+    out.p.text += " " + *unit;
+    i_ = end;
+    return true;
+  }
+
+  // Where the entry that goes on at i ends: at a comma, '&', '\\', \end, \right or a closing
+  // bracket outside braces, or at the end of the input; npos past kLongestUnit characters (a
+  // unit is short), so that trying it after every number stays linear.
+  std::size_t entry_end(std::size_t i) const {
+    constexpr std::size_t kLongestUnit = 160;
+    const std::size_t limit = std::min(s_.size(), i + kLongestUnit);
+    int braces = 0;
+    while (i < limit) {
+      const char c = s_[i];
+      if (c == '{') {
+        ++braces;
+      } else if (c == '}') {
+        if (braces == 0) return i;
+        --braces;
+      } else if (braces == 0 && (c == ',' || c == '&' || c == ')' || c == ']' || c == '|')) {
+        return i;
+      } else if (c == '\\') {
+        const std::string cmd = command_at(i);
+        if (braces == 0 &&
+            (cmd == "\\" || cmd == "end" || cmd == "right" || cmd == "rvert" || sizes().count(cmd)))
+          return i;
+        i += cmd.size();
+      }
+      ++i;
+    }
+    return i < s_.size() ? std::string::npos : i;
   }
 
   void power(Out& out, int depth) {
@@ -375,7 +431,9 @@ class Reader {
     const std::string cmd = command_at(i_);
     const bool wrapper = text_wrappers().count(cmd) != 0;
     // "\,\mathrm{kg}" after a number: the unit, and the rest is read as units are.
-    if ((wrapper || spacing().count(cmd)) && unit_here(out, depth, wrapper)) return;
+    if ((wrapper || spacing().count(cmd)) &&
+        (unit_here(out, depth, wrapper) || unit_of_entry(out, depth)))
+      return;
     if (spacing().count(cmd)) {
       take_command();
     } else if (cmd == "cdot" || cmd == "times" || cmd == "ast" || cmd == "div") {

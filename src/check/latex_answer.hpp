@@ -18,7 +18,9 @@
 ///   group; spacing (\, \; \quad ~) between factors;
 /// - pmatrix, bmatrix, matrix and array: a column or a row is a vector;
 /// - a unit after the value, in \mathrm{..} or \text{..} or bare ("0.00072\,\mathrm{kg\,m^{2}}",
-///   "15^\circ"), and 7.2 \times 10^{-4};
+///   "15^\circ"); after each entry of a vector or matrix, ^\circ after a number or a unit in
+///   \mathrm{..} or \text{..} ("(0.5\,\mathrm{rad/s}, 0)", "\dot\psi\,\mathrm{rad/s}" in a
+///   pmatrix cell); and 7.2 \times 10^{-4};
 /// - the delimiters $..$, $$..$$, \(..\), \[..\] around it all.
 /// Anything else (\pm, an unknown command, an & outside a matrix) is refused in one line naming it.
 #include <string>

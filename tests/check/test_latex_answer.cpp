@@ -67,6 +67,17 @@ TEST_CASE("LaTeX constructs become plain text with their products written out") 
   // A degree sign after each number of a vector or matrix: a unit on each entry.
   REQUIRE(text("(40^\\circ, -30^{\\circ}, 70^\\circ)") == "(40 deg, -30 deg, 70 deg)");
   REQUIRE(text("\\begin{pmatrix} 40^\\circ \\\\ 30^\\circ \\end{pmatrix}") == "[40 deg, 30 deg]");
+  // A unit set in \mathrm or \text after each number of a vector or matrix, a zero without.
+  REQUIRE(text("(0.5\\,\\mathrm{rad/s}, 0, -2 \\text{rad/s})") == "(0.5 rad/s, 0, -2 rad/s)");
+  REQUIRE(text("\\begin{pmatrix} 9.66\\,\\mathrm{kg\\,m^{2}} & 0 \\\\ 0 & 1\\,\\mathrm{kg\\,m^{2}} "
+               "\\end{pmatrix}") == "[[9.66 kg m^2, 0], [0, 1 kg m^2]]");
+  REQUIRE(text("\\left(1\\ \\mathrm{rad}/\\mathrm{s},\\,2\\ \\mathrm{rad}/\\mathrm{s}\\right)") ==
+          "(1 rad/s, 2 rad/s)");
+  // Without \mathrm, in an entry, a letter is a symbol: "2\,m" is twice the mass.
+  REQUIRE(text("(2\\,m, 3\\,m)") == "(2*m, 3*m)");
+  // After an expression too (the answer reader holds it to SI), unless it names a symbol.
+  REQUIRE(text("(m\\,\\mathrm{kg}, 0)") == "(m kg, 0)");
+  REQUIRE(text("(R\\,\\mathrm{m}, 0)") == "(R*m, 0)");
   // Not after a product or before another factor: there it is no entry's unit.
   REQUIRE_THROWS_WITH(text("(2 \\cdot 20^\\circ, 30^\\circ)"),
                       Catch::Contains("'^\\circ' (degrees) belongs after a number"));

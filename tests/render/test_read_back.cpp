@@ -314,6 +314,26 @@ std::string respelled(const std::string& latex) {
   return out;
 }
 
+TEST_CASE("a line's closing ';' (MATLAB's) or full stop is no part of the answer, every answer") {
+  const int forms = forms_judged([](const Answer& a) {
+    std::vector<std::string> texts{printed_value(a) + ".", printed_value(a) + ";"};
+    if (!a.symbolic.empty()) {
+      texts.push_back(sym::to_unicode(a.symbolic) + ".");
+      texts.push_back(a.latex + ".");  // a displayed equation ends its sentence
+    }
+    if (a.value.shape != Value::Shape::scalar) texts.push_back(matlab_rows(a) + ";");
+    return texts;
+  });
+  REQUIRE(forms > 300);  // over 100 answers, each in two to five forms
+  // The punctuation is dropped, not the judging: a wrong value with it is still wrong.
+  const Fixture plate("flying-plate");
+  REQUIRE(plate.check("I0", "0.00072 kg m^2.").correct);
+  REQUIRE_FALSE(plate.check("I0", "0.00073 kg m^2.").correct);
+  REQUIRE_FALSE(plate.check("I0", "0.00073;").correct);
+  // One full stop only: "0.333..." is no number wobble reads.
+  REQUIRE_THROWS_AS(plate.check("I0", "0.00072..."), InputError);
+}
+
 TEST_CASE("every LaTeX form of every answer of every problem reads back as correct") {
   const int forms = forms_judged(latex_forms);
   REQUIRE(forms > 3 * 100);  // over 100 answers, each in three to five forms
@@ -465,6 +485,19 @@ std::string unit_on_each(const Answer& a, const std::string& separator, double p
   return s + (v.shape == Value::Shape::vector ? ")" : "]]");
 }
 
+// The same in a LaTeX pmatrix, each number followed by `unit`: a vector as a column, a matrix's
+// rows ended by "\\".
+std::string pmatrix_on_each(const Answer& a, const std::string& unit) {
+  const auto& v = a.value;
+  const std::size_t cols = v.shape == Value::Shape::vector ? 1 : v.cols;
+  std::string s = "\\begin{pmatrix} ";
+  for (std::size_t i = 0; i < v.data.size(); ++i) {
+    if (i > 0) s += i % cols == 0 ? " \\\\ " : " & ";
+    s += v.data[i] == 0.0 ? "0" : fmt::format("{:.12g}", v.data[i]) + unit;
+  }
+  return s + " \\end{pmatrix}";
+}
+
 TEST_CASE("a unit after each number of a vector or matrix reads back, every answer") {
   const auto with_units = [](const Answer& a) {
     return a.value.shape != Value::Shape::scalar && !a.unit.empty() &&
@@ -474,6 +507,11 @@ TEST_CASE("a unit after each number of a vector or matrix reads back, every answ
     std::vector<std::string> texts;
     if (!with_units(a)) return texts;
     texts.push_back(unit_on_each(a, ", "));
+    // In LaTeX, each unit as a LaTeX key sets it ("\,\mathrm{kg\,m^{2}}"): in parentheses
+    // and in a pmatrix's cells.
+    if (a.value.shape == Value::Shape::vector)
+      texts.push_back(unit_on_each(a, ", ", 1.0, detail::unit_latex(a.unit)));
+    texts.push_back(pmatrix_on_each(a, detail::unit_latex(a.unit)));
     if (a.unit == "rad" &&
         a.value.shape == Value::Shape::vector) {  // angles in degrees, the sign glued on, rows
                                                   // spaced: "[40° 30° 70°]"
@@ -504,6 +542,32 @@ TEST_CASE("a unit after each number of a vector or matrix reads back, every answ
                Catch::Contains("an expression in the symbols is in SI"));
   REQUIRE_THAT(error_of(euler, "angles_phy711", "(40°, 30 kg, 70°)"),
                Catch::Contains("units deg and kg measure different things"));
+  // An expression may carry its SI unit too, as a whole expression may; in LaTeX likewise. The
+  // unit is held to the answer's dimension, and one not SI is refused: the expression is in SI.
+  const std::string body_rate =
+      "(-(φ̇ cos(ψ) sin(θ) - θ̇ sin(ψ)) rad/s, φ̇ sin(ψ) sin(θ) + "
+      "θ̇ cos(ψ) rad/s, φ̇ cos(θ) + ψ̇ rad/s)";
+  REQUIRE(euler.check("omega_body", body_rate).correct);
+  REQUIRE_FALSE(euler
+                    .check("omega_body",
+                           "(-(φ̇ cos(ψ) sin(θ) - θ̇ sin(ψ)) rad/s, φ̇ sin(ψ) "
+                           "sin(θ) - θ̇ cos(ψ) rad/s, φ̇ cos(θ) + ψ̇ rad/s)")
+                    .correct);
+  REQUIRE(euler
+              .check("omega_body",
+                     "\\begin{pmatrix} \\dot\\theta \\sin\\psi - \\dot\\phi \\cos\\psi "
+                     "\\sin\\theta\\,\\mathrm{rad/s} \\\\ \\dot\\phi \\sin\\psi \\sin\\theta + "
+                     "\\dot\\theta\\cos\\psi\\,\\mathrm{rad/s} \\\\ \\dot\\phi\\cos\\theta + "
+                     "\\dot\\psi\\,\\mathrm{rad/s} \\end{pmatrix}")
+              .correct);
+  REQUIRE_FALSE(
+      euler.check("omega_body", "(0.1278261671 J, 1.110702692 J, 11.73205081 J)").correct);
+  REQUIRE_THAT(error_of(euler, "omega_body", "(φ̇ rpm, 1.110702692 rad/s, 11.73205081 rad/s)"),
+               Catch::Equals("--answer: the entry \"phidot rpm\" is an expression in the problem's "
+                             "symbols, in SI already; drop its unit 'rpm'"));
+  REQUIRE_THAT(error_of(euler, "omega_body", "(φ̇, 1.110702692 rad/s, 11.73205081 rad/s)"),
+               Catch::Contains("an expression in the symbols is in SI; write its SI unit after "
+                               "it too, or give the numbers in SI without units"));
 }
 
 TEST_CASE("a unit's powers written negative or without a caret read back, every answer") {
