@@ -44,33 +44,11 @@ std::string shape_words(std::size_t rows, std::size_t cols, bool vector, bool ma
   return "a number";
 }
 
-// "0,0812", "9,375e-2": digits, one comma, digits (and an exponent), as a decimal comma is
-// written (where a vector has spaces after its commas, or more than two entries).
-bool decimal_comma(const std::string& typed) {
-  const auto comma = typed.find(',');
-  const auto digits = [&](std::size_t from, std::size_t to) {
-    return to > from && std::all_of(typed.begin() + static_cast<std::ptrdiff_t>(from),
-                                    typed.begin() + static_cast<std::ptrdiff_t>(to), [](char c) {
-                                      return std::isdigit(static_cast<unsigned char>(c)) != 0;
-                                    });
-  };
-  if (comma == std::string::npos || typed.find(',', comma + 1) != std::string::npos) return false;
-  const std::size_t end = std::min(typed.find(' ', comma), typed.size());  // a unit may follow
-  std::size_t fraction_end = end;  // before an exponent "e-2", if there is one
-  if (const auto e = typed.find_first_of("eE", comma); e < end) {
-    const std::size_t power =
-        e + 1 < end && (typed[e + 1] == '-' || typed[e + 1] == '+') ? e + 2 : e + 1;
-    if (!digits(power, end)) return false;
-    fraction_end = e;
-  }
-  return digits(typed.find_first_not_of("-+ "), comma) && digits(comma + 1, fraction_end);
-}
-
 void check_shape(const Answer& a, const sym::ValueText& v, const std::string& typed) {
   const bool key_vec = a.value.shape == Value::Shape::vector;
   const bool key_mat = a.value.shape == Value::Shape::matrix;
   if (key_vec != v.is_vector || key_mat != v.is_matrix || a.value.data.size() != v.entries.size()) {
-    const bool comma = !key_vec && !key_mat && decimal_comma(typed);
+    const bool comma = !key_vec && !key_mat && looks_like_decimal_comma(typed);
     throw InputError(fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
                                  shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
                                  shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),

@@ -1,5 +1,6 @@
 #include "core/characters.hpp"
 
+#include <algorithm>
 #include <boost/locale/utf.hpp>
 #include <cctype>
 #include <cstdio>
@@ -75,6 +76,26 @@ std::string printable(const std::string& text, std::size_t max_characters) {
     i += d.bytes;
   }
   return i < text.size() ? out + "..." : out;
+}
+
+bool looks_like_decimal_comma(const std::string& typed) {
+  const auto comma = typed.find(',');
+  const auto digits = [&](std::size_t from, std::size_t to) {
+    return to > from && std::all_of(typed.begin() + static_cast<std::ptrdiff_t>(from),
+                                    typed.begin() + static_cast<std::ptrdiff_t>(to), [](char c) {
+                                      return std::isdigit(static_cast<unsigned char>(c)) != 0;
+                                    });
+  };
+  if (comma == std::string::npos || typed.find(',', comma + 1) != std::string::npos) return false;
+  const std::size_t end = std::min(typed.find(' ', comma), typed.size());  // a unit may follow
+  std::size_t fraction_end = end;  // before an exponent "e-2", if there is one
+  if (const auto e = typed.find_first_of("eE", comma); e < end) {
+    const std::size_t power =
+        e + 1 < end && (typed[e + 1] == '-' || typed[e + 1] == '+') ? e + 2 : e + 1;
+    if (!digits(power, end)) return false;
+    fraction_end = e;
+  }
+  return digits(typed.find_first_not_of("-+ "), comma) && digits(comma + 1, fraction_end);
 }
 
 }  // namespace wobble

@@ -26,4 +26,9 @@ bool is_control_at(const std::string& text, std::size_t i);
 /// at most `max_characters` characters, then "...".
 std::string printable(const std::string& text, std::size_t max_characters);
 
+/// Whether `typed` is a number written with a decimal comma: digits, one comma, digits (and an
+/// exponent), a unit after a space if any ("0,0812", "-0,16 s", "9,375e-2"). Where a number is
+/// wanted, a message can then say so (as a vector, "0,16" would be two entries).
+bool looks_like_decimal_comma(const std::string& typed);
+
 }  // namespace wobble

@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <utility>
+#include <vector>
 
 #include "core/characters.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -108,6 +109,10 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
       }
       if (number) (void)parse_unit(tail, field);  // throws its error
     }
+    if (looks_like_decimal_comma(t)) {
+      throw InputError(field + ": '" + text +
+                       "' is not a number (a decimal comma? write the point: 0.5, not 0,5)");
+    }
     throw InputError(field + ": '" + text + "' is not a number" +
                      (p.is_angle()     ? " (an angle: radians, or degrees as 30deg)"
                       : p.unit.empty() ? ""
@@ -157,6 +162,47 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
   return v;
 }
 
+namespace {
+// Whether `rest` begins "NAME=" for one of the problem's parameters ("R=0.1", " R = 0.1" after a
+// comma). After a space, only "NAME=" with nothing between: "500 g = 0.5 kg" is one value's two
+// sides, not the parameter g.
+bool starts_assignment(const Problem& problem, const std::string& rest, bool after_space) {
+  const auto eq = rest.find('=');
+  if (eq == std::string::npos || eq == 0 || (after_space && rest[eq - 1] == ' ')) return false;
+  const std::string name = trim(rest.substr(0, eq));
+  if (name.empty() || (after_space && name.find(' ') != std::string::npos)) return false;
+  try {
+    (void)problem.parameter(name);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+// "--set m=0.5,R=0.1" (or with ';' or a space): several parameters in one, as some tools take
+// them. Read as one value it would be refused as "not a number"; say what to type instead.
+void refuse_several_at_once(const Problem& problem, const std::string& text, std::size_t eq) {
+  for (const char separator : {',', ';', ' '}) {
+    std::vector<std::size_t> cuts;  // where another NAME=VALUE begins, just past a separator
+    for (std::size_t at = text.find(separator, eq); at != std::string::npos;
+         at = text.find(separator, at + 1)) {
+      if (starts_assignment(problem, text.substr(at + 1), separator == ' ')) cuts.push_back(at);
+    }
+    if (cuts.empty()) continue;
+    cuts.push_back(text.size());
+    // Each as a shell takes it: quoted where it has a space ("R=5 cm").
+    const auto option = [](const std::string& one) {
+      return one.find(' ') == std::string::npos ? "--set " + one : "--set '" + one + "'";
+    };
+    std::string each = option(trim(text.substr(0, cuts[0])));
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
+      each += " " + option(trim(text.substr(cuts[k] + 1, cuts[k + 1] - cuts[k] - 1)));
+    throw InputError("--set: '" + text +
+                     "' sets several parameters; give each its own --set: " + each);
+  }
+}
+}  // namespace
+
 Assignment assignment_of(const Problem& problem, const std::string& text) {
   if (text.size() > kMaxSetLength) {
     throw InputError("--set: " + std::to_string(text.size()) +
@@ -166,7 +212,10 @@ Assignment assignment_of(const Problem& problem, const std::string& text) {
   if (eq == std::string::npos || trim(text.substr(0, eq)).empty()) {
     throw InputError("--set: expected NAME=VALUE, got '" + text + "'");
   }
-  return {problem.parameter(trim(text.substr(0, eq))), trim(text.substr(eq + 1))};
+  const Parameter& parameter = problem.parameter(trim(text.substr(0, eq)));
+  const std::string value = trim(text.substr(eq + 1));
+  refuse_several_at_once(problem, text, eq);
+  return {parameter, value};
 }
 
 sym::Values parameter_values(const Problem& problem, const std::vector<std::string>& assignments) {

@@ -377,6 +377,27 @@ TEST_CASE("problem lookup: by id, by file, and unknown ids list the known ones")
   REQUIRE_THROWS_WITH(find_problem("/nonexistent/x.toml"), Catch::Contains("no such problem file"));
 }
 
+TEST_CASE("one parameter per --set: several in one are refused with the options to type") {
+  const Problem& plate = find_problem("flying-plate");
+  for (const std::string several : {"m=0.5,R=0.1", "m=0.5; R=0.1", "m=0.5 R=0.1"}) {
+    INFO(several);
+    REQUIRE_THROWS_WITH(parameter_values(plate, {several}),
+                        Catch::Equals("--set: '" + several +
+                                      "' sets several parameters; give each its own --set: "
+                                      "--set m=0.5 --set R=0.1"));
+  }
+  REQUIRE_THROWS_WITH(parameter_values(plate, {"R=5 cm,m=500 g"}),
+                      Catch::EndsWith("--set 'R=5 cm' --set 'm=500 g'"));
+  // A value's two sides, as a key prints them, set one parameter, even where a unit after the
+  // first side spells another parameter (g, the heavy top's gravity).
+  const Problem& top = find_problem("heavy-top");
+  REQUIRE(parameter_values(top, {"M=500 g = 0.5 kg"}).at("M") == 0.5);
+  REQUIRE(parameter_values(top, {"θ0 = 30° = 0.5235987756 rad"}).at("theta0") ==
+          parameter_values(top, {"theta0=pi/6"}).at("theta0"));
+  // A decimal comma is named as such.
+  REQUIRE_THROWS_WITH(parameter_values(plate, {"m=0,5"}), Catch::Contains("a decimal comma?"));
+}
+
 TEST_CASE("every part of every problem has a hint for the worksheet") {
   for (const auto& p : wobble::load_catalog()) {
     for (const auto& part : p.parts) {
