@@ -288,8 +288,25 @@ const std::vector<std::string>& function_names() {
 // function's one-factor argument without parentheses, as books write it, in them: "M l g cos
 // theta0" -> "M*l*g*cos(theta0)" (a name or a number, not one with a power: cos theta^2 is
 // read by some as cos(theta^2)).
-std::string starred(const std::string& s) {
+// Also a '*' where a bracket meets a factor without a space, as books write a product:
+// "2(m + R)", "(1/4)m", "(m)(R^2)", and "m(R^2)" where m is one of the problem's symbols (a
+// function's call stays one: "cos(a)", "atan2(y, x)").
+std::string starred(const std::string& s, const sym::SymbolTable& table) {
   const std::vector<std::string>& kFunctions = function_names();
+  const auto glued_product = [&](const std::string& before, char next) {
+    const char last = before.back();
+    if (last == ')')
+      return next == '(' || next == '.' || std::isalnum(static_cast<unsigned char>(next));
+    if (next != '(') return false;
+    std::size_t k = before.size();
+    while (k > 0 && (std::isalnum(static_cast<unsigned char>(before[k - 1])) ||
+                     before[k - 1] == '_' || before[k - 1] == '.'))
+      --k;
+    const std::string factor = before.substr(k);
+    if (factor.empty()) return false;
+    if (factor.find_first_not_of("0123456789.") == std::string::npos) return true;  // "2("
+    return table.contains(factor);  // a symbol, never a function's name
+  };
   const auto factor_end = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == ')';
   };
@@ -302,6 +319,7 @@ std::string starred(const std::string& s) {
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s[i] != ' ') {
+      if (!out.empty() && glued_product(out, s[i])) out += '*';
       out += s[i];
       continue;
     }
@@ -353,7 +371,8 @@ bool all_identifiers_of(const std::string& s, const sym::SymbolTable& table) {
 // Whether a text that did not read may be factors side by side: it has one of the problem's
 // symbols, and no space between two numbers ("5 7 10" is a list, not 350). A vector's components
 // may be such products when commas separate them ("[m R^2 w/4, 0, 0]"); without commas its
-// spaces separate the components (layout), and it read before it got here.
+// spaces separate the components (layout), and it read before it got here. Without a space
+// there is no list to mistake: "(1/4)(0.2)(0.12)^2" may be factors against brackets.
 bool may_be_side_by_side(const std::string& s, const sym::SymbolTable& table) {
   const auto numeric = [](char c) {
     return std::isdigit(static_cast<unsigned char>(c)) || c == '.';
@@ -368,7 +387,7 @@ bool may_be_side_by_side(const std::string& s, const sym::SymbolTable& table) {
         start < i && (start == 0 || !std::isalpha(static_cast<unsigned char>(s[start - 1])));
     if (number_before && next != std::string::npos && numeric(s[next])) return false;
   }
-  return has_identifier_of(s, table);
+  return has_identifier_of(s, table) || s.find(' ') == std::string::npos;
 }
 
 // Reads factors side by side into p, a '*' for each space between two factors, where they may
@@ -377,7 +396,7 @@ bool read_side_by_side(const std::string& value, const sym::SymbolTable& table,
                        const std::string& field, ReadAnswer& p) {
   if (!may_be_side_by_side(value, table)) return false;
   try {
-    p.value = sym::parse_value_text(layout(starred(value)), table, field);
+    p.value = sym::parse_value_text(layout(starred(value, table)), table, field);
     return true;
   } catch (const InputError&) {
     return false;
@@ -631,6 +650,9 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
     if (p.value.entries.empty() && !entry_units.refusal.empty())
       throw InputError(entry_units.refusal);
     if (unit.empty() && p.value.entries.empty()) {
+      // "2(m + R)", "(1/4)(m)(R^2)": a bracket against a factor, a product.
+      if (value.find(' ') == std::string::npos && read_side_by_side(value, table, field, p))
+        return finished(p, unit, field);
       // "0.16 parsecs": a value and something that is not a unit; say so, not "cannot read".
       if (const auto sp = value.find(' '); sp != std::string::npos) {
         // Factors side by side, as LaTeX sets a product and as a student writes one ("M g l",
@@ -644,7 +666,7 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
         }
         const std::string right = trim(value.substr(sp + 1));
         if (left_reads && names_a_symbol(right, table)) {  // "M R^2 (psidot0 + 1/2"
-          const std::string written = starred(value);
+          const std::string written = starred(value, table);
           throw InputError(field + ": cannot read \"" + value + "\": " +
                            (has_bare_function(written)
                                 ? "products need '*' and a function's argument parentheses "

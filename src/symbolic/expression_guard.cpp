@@ -211,6 +211,11 @@ void check_expression_cost(const std::string& text, const std::string& field,
     while (k < text.size() && (text[k] == ' ' || text[k] == '\t')) ++k;
     if (k < text.size() && text[k] == '(') {
       if (!functions.count(name)) {
+        // "m(R^2": a symbol against a bracket, where the product did not read either.
+        if (symbols.count(name)) {
+          s.fail("'" + name + "' is one of the problem's symbols, not a function: a product " +
+                 "needs '*' (" + name + "*(..))");
+        }
         if (const std::string meant = probably_meant(name, symbols, functions, true);
             !meant.empty()) {
           s.fail("unknown function '" + name + "'" + meant);

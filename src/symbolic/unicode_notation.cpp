@@ -44,6 +44,11 @@ const std::vector<std::pair<std::string, std::string>>& replacements() {
         {"×", "*"},
         {"⋅", "*"},
         {"∙", "*"},
+        // The division sign and the slashes of typeset fractions, as a calculator or a PDF has
+        // them: m·R²÷4, 1⁄4.
+        {"÷", "/"},
+        {"∕", "/"},
+        {"⁄", "/"},
         {"−", "-"},
         {"–", "-"},
         // º (the ordinal sign) and ˚ (the ring above) as keyboards without a degree sign type it.

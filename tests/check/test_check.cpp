@@ -316,7 +316,9 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
 TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
   const Fixture plate("flying-plate");
   for (const std::string same :
-       {"m*R^2/4", "(m/4)*R*R", "R^2*m*0.25", "m*R^2/2 - m*R^2/4", "(m*R^3 + m*R^2)/(4*(R + 1))"}) {
+       {"m*R^2/4", "(m/4)*R*R", "R^2*m*0.25", "m*R^2/2 - m*R^2/4", "(m*R^3 + m*R^2)/(4*(R + 1))",
+        // A bracket against a factor, without a space, as books write a product.
+        "2(m R^2)/8", "(1/4)m R^2", "(m)(R^2)/4", "m(R^2)/4", "(1/4)(m)(R^2)", "m(R+R)(R/8)"}) {
     INFO(same);
     const Verdict v = plate.check("I0", same);
     REQUIRE(v.correct);
@@ -333,10 +335,17 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
   }
   REQUIRE(plate.check("Omega_space_rate", "omega*sqrt(4 - 3*sin(alpha)^2)").correct);
   REQUIRE_FALSE(plate.check("angle_L_e3", "atan(2*tan(alpha))").correct);
-  for (const std::string other : {"m*R^2/4 + 1e-3*m", "m*R/4", "m^2*R^2/4"}) {
+  for (const std::string other : {"m*R^2/4 + 1e-3*m", "m*R/4", "m^2*R^2/4", "R(m)/4", "2(m R)/8"}) {
     INFO(other);
     REQUIRE_FALSE(plate.check("I0", other).correct);
   }
+  // Numbers against brackets too; a function's call stays a call.
+  REQUIRE(plate.check("I0", "(1/4)(0.2)(0.12)^2").correct);
+  REQUIRE(plate.check("angle_omega_e3", "(1)(alpha)").correct);
+  REQUIRE_FALSE(plate.check("Omega_space_rate", "omega sqrt(4 - 3 sin(alpha)^2)(2)").correct);
+  // A symbol against a bracket that still does not read is named as no function.
+  REQUIRE_THROWS_WITH(plate.check("I0", "m(R^2"),
+                      Catch::Contains("'m' is one of the problem's symbols, not a function"));
 }
 
 namespace {

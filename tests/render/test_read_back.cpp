@@ -644,6 +644,13 @@ TEST_CASE("the terminal's notation and a student's variants of it read as wobble
       {"[1 - 2 0 m * a]", "[1 - 2, 0, m * a]"},
       {"[0.7 0 -0.7]", "[0.7, 0, -0.7]"},
       {"π/6", "pi/6"},
+      {"m·R²÷4", "m*R^2/4"},
+      {"1⁄4 m", "1/4 m"},
+      // A line's closing ';' (MATLAB's) and a sentence's full stop are no part of it.
+      {"0.00072;", "0.00072"},
+      {"[1 0; 0 1];", "[[1, 0], [0, 1]]"},
+      {"0.00072 kg m².", "0.00072 kg m^2"},
+      {"0.333...", "0.333..."},
   };
   for (const auto& [typed, form] : cases) {
     INFO(typed);
