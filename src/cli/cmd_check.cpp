@@ -44,7 +44,8 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
       ->expected(1)
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app.add_option("--variant", opt.variant, "Your variant's values (as on your handout)");
+  app.add_option("--variant", opt.variant, "Your variant's values (as on your handout)")
+      ->transform(whole_number());
   app.add_option("--tolerance", opt.tolerance,
                  fmt::format("Relative tolerance for numbers (default: the problem's, else {:g})",
                              check::kDefaultRelativeTolerance));

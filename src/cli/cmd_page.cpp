@@ -18,7 +18,8 @@ namespace wobble::cli {
 void setup_page(CLI::App& app, PageOptions& opt) {
   app.add_option("problem", opt.problem, "Problem id (see `wobble list`) or a .toml file")
       ->required();
-  app.add_option("--variant", opt.variant, "Per-student values: variant N (1, 2, ...)");
+  app.add_option("--variant", opt.variant, "Per-student values: variant N (1, 2, ...)")
+      ->transform(whole_number());
   app.add_flag("--key", opt.key, "Show the answers too (an instructor's page)");
   app.add_option("--out", opt.out, "The HTML file to write")->required();
   app.add_flag("--force", opt.force, "Replace the file if it exists");

@@ -25,7 +25,8 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--variant", opt.variant,
-                 "Per-student values: variant N of the scene's parameters");
+                 "Per-student values: variant N of the scene's parameters")
+      ->transform(whole_number());
   // The names from the method table, so that a new method is offered where it is listed.
   std::string methods = "auto";
   const auto& names = simulation_method_names();

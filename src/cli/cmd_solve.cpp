@@ -33,7 +33,8 @@ void setup_solve(CLI::App& app, SolveOptions& opt) {
                  "Write the sketch of e3, w, L and the cones as .svg, .png or .pdf (solvers that "
                  "draw one: `wobble list --solvers`); a LaTeX key includes it");
   app.add_flag("--force", opt.force, "Overwrite an existing --figure file");
-  app.add_option("--variant", opt.variant, "Per-student values: variant N (1, 2, ...)");
+  app.add_option("--variant", opt.variant, "Per-student values: variant N (1, 2, ...)")
+      ->transform(whole_number());
   app.add_flag("--handout", opt.handout,
                "Print the handout (statement and values, no answers) instead of the key");
   app.add_flag("--cross-check", opt.cross_check,

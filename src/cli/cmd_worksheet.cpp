@@ -16,7 +16,8 @@ namespace wobble::cli {
 void setup_worksheet(CLI::App& app, WorksheetOptions& opt) {
   app.add_option("problem", opt.problem, "Problem id (see `wobble list`) or a .toml file")
       ->required();
-  app.add_option("--variant", opt.variant, "Your variant's values (as on your handout)");
+  app.add_option("--variant", opt.variant, "Your variant's values (as on your handout)")
+      ->transform(whole_number());
   app.add_option("--set", opt.sets, "Parameter value NAME=VALUE, as for solve")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);

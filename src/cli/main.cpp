@@ -8,12 +8,28 @@
 #include <exception>
 #include <filesystem>
 #include <new>
+#include <string>
 #include <string_view>
 
 #include "cli/commands.hpp"
 #include "core/work_budget.hpp"
 #include "io/data_dir.hpp"
 #include "problem/problem.hpp"
+
+namespace {
+constexpr const char* kCommandList =
+    "list, solve, check, worksheet, simulate, bench, keys, export, serve, page";
+
+// CLI11's "Could not convert: --variant = abc" in the words of wobble's other messages:
+// "--variant: 'abc' is not a number". Another text is passed on as it is.
+std::string conversion_message(const std::string& what) {
+  const std::string lead = "Could not convert: ";
+  const auto eq = what.find(" = ");
+  if (what.rfind(lead, 0) != 0 || eq == std::string::npos) return what;
+  return what.substr(lead.size(), eq - lead.size()) + ": '" + what.substr(eq + 3) +
+         "' is not a number";
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   // Past a file-size limit (or on a full disk) a write should fail and be reported, with the
@@ -69,11 +85,8 @@ int main(int argc, char** argv) {
   const auto known =
       app.get_subcommands([&](CLI::App* sub) { return argc > 1 && sub->get_name() == argv[1]; });
   if (argc > 1 && argv[1][0] != '-' && known.empty()) {
-    fmt::print(stderr,
-               "wobble: unknown command '{}' (commands: list, solve, check, worksheet, simulate, "
-               "bench, keys, export, serve, page; "
-               "see --help)\n",
-               argv[1]);
+    fmt::print(stderr, "wobble: unknown command '{}' (commands: {}; see --help)\n", argv[1],
+               kCommandList);
     return kExitBadInput;
   }
   if (argc > 1 && std::string_view(argv[1]) == "export" &&
@@ -101,6 +114,17 @@ int main(int argc, char** argv) {
                negative_answer ? "; an answer that starts with '-' goes after -- (wobble check "
                                  "ID NAME -- -m*R^2/4) or as --answer=-m*R^2/4"
                                : "");
+    return kExitBadInput;
+  } catch (const CLI::ConversionError& e) {
+    fmt::print(stderr, "wobble: {}\n", conversion_message(e.what()));
+    return kExitBadInput;
+  } catch (const CLI::RequiredError& e) {
+    // "wobble" alone: CLI11 would say "A subcommand is required".
+    if (argc == 1) {
+      fmt::print(stderr, "wobble: name a command ({}; see --help)\n", kCommandList);
+    } else {
+      fmt::print(stderr, "wobble: {}\n", e.what());
+    }
     return kExitBadInput;
   } catch (const CLI::ParseError& e) {
     fmt::print(stderr, "wobble: {}\n", e.what());

@@ -37,6 +37,15 @@ TEST_CASE("version and help exit 0") {
   REQUIRE(run_wobble({"solve", "--help"}).exit_code == 0);
 }
 
+TEST_CASE("a variant number may be written as counts are elsewhere: 1e3 is variant 1000") {
+  const RunResult plain = run_wobble({"solve", "flying-plate", "--variant", "1000"});
+  REQUIRE(plain.exit_code == 0);
+  const RunResult power = run_wobble({"solve", "flying-plate", "--variant", "1e3"});
+  REQUIRE(power.exit_code == 0);
+  REQUIRE(power.out == plain.out);
+  REQUIRE(plain.out != run_wobble({"solve", "flying-plate", "--variant", "999"}).out);
+}
+
 TEST_CASE("solve --format json has the documented shape, at values not in the repository") {
   const RunResult r = run_wobble(
       {"solve", "taylor-10-35", "--set", "m=0.35", "--set", "a=2.2", "--format", "json"});
