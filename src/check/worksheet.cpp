@@ -8,6 +8,7 @@
 
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/plain_text.hpp"
 #include "symbolic/unicode_notation.hpp"
 
 namespace wobble::check {
@@ -77,7 +78,7 @@ struct Session {
   }
 
   Outcome part(const PartKey& part, const std::string& hint) {
-    out << fmt::format("\n({}) {}\n", part.id, part.question);
+    out << fmt::format("\n({}) {}\n", part.id, plain_text(part.question));
     if (part.answers.empty()) {
       // Nothing exists to answer at these values (no steady precession): say why, move on.
       out << "  nothing to answer at these values: " +

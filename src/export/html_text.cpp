@@ -52,6 +52,12 @@ std::string statement_html(const std::string& statement, const std::string& open
   return out + "</p>\n";
 }
 
+std::string inline_html(const std::string& text, const std::string& open,
+                        const std::string& close) {
+  const std::string p = statement_html(text, open, close);  // "<p>...</p>\n"
+  return p.substr(3, p.size() - 3 - 5);
+}
+
 std::string unit_html(const std::string& unit) { return html_escape(sym::to_unicode(unit)); }
 
 }  // namespace wobble::exports

@@ -15,6 +15,9 @@ std::string html_escape(const std::string& text);
 std::string statement_html(const std::string& statement, const std::string& open,
                            const std::string& close);
 
+/// One line (a part's question) as statement_html makes it, without the paragraph around it.
+std::string inline_html(const std::string& text, const std::string& open, const std::string& close);
+
 /// A unit as the page shows it: "kg m^2/s" as "kg m²/s", escaped.
 std::string unit_html(const std::string& unit);
 

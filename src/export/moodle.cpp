@@ -126,7 +126,8 @@ std::string question_text(const Question& q) {
   html += "</table>\n";
   for (const auto& part : first.key.parts) {
     if (part.id == g.part) {
-      html += fmt::format("<p><strong>({})</strong> {}</p>\n", part.id, html_escape(part.question));
+      html += fmt::format("<p><strong>({})</strong> {}</p>\n", part.id,
+                          inline_html(part.question, "\\(", "\\)"));
     }
   }
   html += fmt::format("<p>Give <code>{}</code>{}{}.</p>\n", html_escape(g.answer.name),

@@ -69,7 +69,8 @@ std::string question_html(const Problem& problem, const VariantSet& set) {
                      "{{/params.values}}\n</table>\n</pl-question-panel>\n";
   const GradedVariant& first = set.variants.front();
   for (const auto& part : first.key.parts) {
-    html += fmt::format("<p><strong>({})</strong> {}</p>\n", part.id, html_escape(part.question));
+    html += fmt::format("<p><strong>({})</strong> {}</p>\n", part.id,
+                        inline_html(part.question, "$", "$"));
     for (const auto& g : first.answers) {
       if (g.part == part.id) html += answer_input(g);
     }

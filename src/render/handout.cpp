@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "render/common.hpp"
-#include "render/plain_text.hpp"
+#include "symbolic/plain_text.hpp"
 
 namespace wobble {
 
@@ -68,7 +68,7 @@ std::string render_handout_text(const Key& key,
   }
   if (with_questions) {
     for (const auto& part : key.parts) {
-      out += fmt::format("\n({}) {}\n", part.id, part.question);
+      out += fmt::format("\n({}) {}\n", part.id, plain_text(part.question));
       if (!part.answers.empty()) out += "    answers to give: " + answer_names(part, false) + "\n";
     }
   }

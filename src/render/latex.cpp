@@ -138,7 +138,7 @@ std::string render_handout_latex(const Key& key,
   out += "\\hline\n\\end{tabular}\\end{center}\n";
   for (const auto& part : key.parts) {
     out += fmt::format("\\subsection*{{({}) {}}}\n\\vspace{{4cm minus 3cm}}\n", part.id,
-                       latex_text(part.question));
+                       statement_latex(part.question));
   }
   return out + "\\end{document}\n";
 }
@@ -183,7 +183,7 @@ std::string render_latex(const Key& key) {
            "}\\end{center}\n";
   }
   for (const auto& part : key.parts) {
-    out += fmt::format("\n\\subsection*{{({}) {}}}\n", part.id, latex_text(part.question));
+    out += fmt::format("\n\\subsection*{{({}) {}}}\n", part.id, statement_latex(part.question));
     for (const auto& a : part.answers) {
       // The name as a symbol where it reads as one, with the name `check --name` takes.
       const auto symbol = detail::name_latex(a.name);

@@ -1,8 +1,8 @@
 #include <fmt/format.h>
 
 #include "render/common.hpp"
-#include "render/plain_text.hpp"
 #include "render/render.hpp"
+#include "symbolic/plain_text.hpp"
 
 namespace wobble {
 
@@ -21,7 +21,7 @@ std::string render_text(const Key& key) {
   }
   out.back() = '\n';
   for (const auto& part : key.parts) {
-    out += fmt::format("\n({}) {}\n", part.id, part.question);
+    out += fmt::format("\n({}) {}\n", part.id, plain_text(part.question));
     for (const auto& a : part.answers) {
       const std::string lead = "    " + a.name + " = ";
       if (!a.symbolic.empty()) out += lead + pretty(a.symbolic) + "\n";

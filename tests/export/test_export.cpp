@@ -99,4 +99,8 @@ TEST_CASE("a statement as HTML: math for the system's MathJax, code, escapes, pa
                                 "\\)") ==
         "<p>A \\(\\theta_0 &lt; 1\\) tilt, <code>heavy-top</code> &amp; more.</p>\n<p>Next</p>\n");
   CHECK(exports::unit_html("kg m^2/s") == "kg m²/s");
+  // A part's question, one line: the same, without the paragraph.
+  CHECK(exports::inline_html("the limits $\\theta_\\mathrm{min}$ & $\\theta_\\mathrm{max}$", "$",
+                             "$") ==
+        "the limits $\\theta_\\mathrm{min}$ &amp; $\\theta_\\mathrm{max}$");
 }

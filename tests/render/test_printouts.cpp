@@ -3,13 +3,13 @@
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "render/common.hpp"
 #include "render/handout.hpp"
-#include "render/plain_text.hpp"
 #include "render/render.hpp"
+#include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
+#include "symbolic/plain_text.hpp"
 
 using namespace wobble;
 
@@ -55,9 +55,29 @@ TEST_CASE("every text key and worksheet introduction is plain text") {
     const std::string text = render_text(key);
     require_plain(text.substr(0, text.find("\n(a)")));
     require_plain(render_handout_text(key, {}, 7, true));
+    // Each question line of the key: its math in Unicode, as the statement's.
+    for (std::size_t at = text.find("\n("); at != std::string::npos;
+         at = text.find("\n(", at + 1)) {
+      const std::string line = text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+      INFO(line);
+      require_plain(line);
+    }
     ++keys;
   }
   REQUIRE(keys >= 13);
+}
+
+TEST_CASE("a question's math is set as the statement's: Unicode in text, LaTeX math on a page") {
+  const Problem& top = find_problem("heavy-top");
+  const Key key = solve(top, parameter_values(top, {}));
+  const std::string b = "the nutation limits ";
+  REQUIRE_THAT(render_text(key), Catch::Contains(b + "θ_min and θ_max") &&
+                                     Catch::Contains("(where φ̇ = 0)") &&
+                                     Catch::Contains("find the spin ω₃"));
+  REQUIRE_THAT(render_handout_latex(key, {}, std::nullopt),
+               Catch::Contains(b + "$\\theta_\\mathrm{min}$ and $\\theta_\\mathrm{max}$") &&
+                   Catch::Contains("(where $\\dot\\phi = 0$)"));
+  REQUIRE_THAT(render_markdown(key), Catch::Contains(b + "$\\theta_\\mathrm{min}$"));
 }
 
 TEST_CASE("Markdown tables keep their columns; angles are shown in degrees as given") {

@@ -258,6 +258,11 @@ TEST_CASE("every answer the worksheet reveals reads back as correct, every probl
     std::size_t k = 0;
     const std::string lead = "  answer: ";
     for (std::string line; std::getline(lines, line);) {
+      // A part's question: its math in Unicode, as the statement's ("θ_min", not "$\theta..$").
+      if (line.rfind("(", 0) == 0) {
+        INFO(line);
+        REQUIRE(line.find_first_of("$\\{}") == std::string::npos);
+      }
       if (line.rfind(lead, 0) != 0) continue;
       REQUIRE(k < names.size());
       const std::string text = line.substr(lead.size());

@@ -1,4 +1,4 @@
-#include "render/plain_text.hpp"
+#include "symbolic/plain_text.hpp"
 
 #include <cctype>
 #include <map>
