@@ -139,8 +139,11 @@ struct Scanner {
     if (j < text.size() && text[j] == '(') {
       const std::size_t close = group_end(j);
       if (close == std::string::npos) {
+        // Unbalanced: GiNaC's parser says so, but only after computing the powers it read
+        // before it got there ("0^((6666^666666666 -" ran out of memory): the group is the rest.
+        if (text.find('^', j + 1) != std::string::npos) fail("a power inside an exponent");
         *end = text.size();
-        return 1;  // unbalanced: GiNaC's parser says so
+        return 1;
       }
       const std::string inside = text.substr(j + 1, close - j - 1);
       if (inside.find('^') != std::string::npos) fail("a power inside an exponent");
