@@ -650,14 +650,11 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
     if (p.value.entries.empty() && !entry_units.refusal.empty())
       throw InputError(entry_units.refusal);
     if (unit.empty() && p.value.entries.empty()) {
-      // "2(m + R)", "(1/4)(m)(R^2)": a bracket against a factor, a product.
-      if (value.find(' ') == std::string::npos && read_side_by_side(value, table, field, p))
-        return finished(p, unit, field);
+      // Factors side by side, as LaTeX sets a product and as a student writes one ("M g l",
+      // "M l g cos theta0"), and a bracket against a factor ("2(m + R)", "(1/4)(m)(R^2)").
+      if (read_side_by_side(value, table, field, p)) return finished(p, unit, field);
       // "0.16 parsecs": a value and something that is not a unit; say so, not "cannot read".
       if (const auto sp = value.find(' '); sp != std::string::npos) {
-        // Factors side by side, as LaTeX sets a product and as a student writes one ("M g l",
-        // "M l g cos theta0").
-        if (read_side_by_side(value, table, field, p)) return finished(p, unit, field);
         bool left_reads = true;
         try {
           (void)sym::parse_value_text(layout(trim(value.substr(0, sp))), table, field);
