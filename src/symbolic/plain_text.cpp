@@ -84,7 +84,7 @@ struct MathReader {
   // Text up to the matching '}' (consumed), converted.
   std::string until_close() {
     std::string out;
-    while (i < s.size() && s[i] != '}') out += next();
+    while (i < s.size() && s[i] != '}') next(out);
     if (i < s.size()) ++i;
     return out;
   }
@@ -153,17 +153,29 @@ struct MathReader {
     return "_" + arg;
   }
 
-  std::string next() {
+  // The next piece of the math appended to `out`.
+  void next(std::string& out) {
     const char c = s[i];
-    if (c == '\\') return command();
-    if (c == '^') return script(true);
-    if (c == '_') return script(false);
+    if (c == '\\') {
+      // A word LaTeX sets apart by its font ("\frac{A}{C}\tan\alpha") keeps a space after a
+      // letter or digit: "A/C tan α", not "A/Ctan α".
+      const std::string word = command();
+      if (!out.empty() && is_alnum(out.back()) && !word.empty() && is_alpha(word.front()))
+        out += ' ';
+      out += word;
+      return;
+    }
+    if (c == '^' || c == '_') {
+      out += script(c == '^');
+      return;
+    }
     if (c == '{') {
       ++i;
-      return until_close();
+      out += until_close();
+      return;
     }
     ++i;
-    return std::string(1, c);
+    out += c;
   }
 };
 
@@ -181,7 +193,7 @@ std::string single_spaces(const std::string& s) {
 std::string math_to_unicode(const std::string& latex) {
   MathReader r{latex};
   std::string out;
-  while (r.i < latex.size()) out += r.next();
+  while (r.i < latex.size()) r.next(out);
   return single_spaces(out);
 }
 

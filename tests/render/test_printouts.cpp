@@ -26,6 +26,9 @@ TEST_CASE("LaTeX math as terminal text") {
       {"e_2'", "e₂'"},
       {"\\mathbf{1} - r r^T", "1 - r rᵀ"},
       {"\\unknowncommand{x}", "unknowncommandx"},
+      // A function or a text word after a letter or digit stays a word of its own.
+      {"\\frac{A}{C}\\tan\\alpha", "A/C tan α"},
+      {"2\\sin\\theta + x\\mathrm{d}t", "2 sin θ + x dt"},
   };
   for (const auto& [latex, text] : cases) {
     INFO(latex);
