@@ -89,7 +89,7 @@ struct Session {
     bool revealed = false, hint_shown = false;
     const auto give_hint = [&] {
       out << (hint.empty() ? "  no hint for this part; '!' reveals the answer\n"
-                           : "  hint: " + hint + "\n");
+                           : "  hint: " + plain_text(hint) + "\n");
       hint_shown = true;
     };
     int answered = 0;
@@ -161,11 +161,7 @@ WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const st
       ++sum.not_reached;
       continue;
     }
-    std::string hint;
-    for (const auto& spec : problem.parts) {
-      if (spec.id == part.id) hint = spec.hint;
-    }
-    switch (session.part(part, hint)) {
+    switch (session.part(part, problem.hint(part.id))) {
       case Outcome::right:
         ++sum.right;
         break;

@@ -136,6 +136,13 @@ std::string question_text(const Question& q) {
   return html;
 }
 
+// The part's hint: in Moodle's interactive behaviour, shown after a wrong try, with one more try
+// (Moodle allows one try, and one more per hint).
+std::string hint_xml(const Question& q) {
+  const std::string& hint = q.problem.hint(q.set.variants.front().answers[q.answer].part);
+  return hint.empty() ? "" : text_element("hint", inline_html(hint, "\\(", "\\)"), true) + "\n";
+}
+
 std::string question_xml(const Question& q) {
   const auto& variants = q.set.variants;
   const GradedAnswer& g0 = variants.front().answers[q.answer];
@@ -198,13 +205,13 @@ std::string question_xml(const Question& q) {
       "<single>0</single>\n<answernumbering>abc</answernumbering>\n"
       "<shuffleanswers>0</shuffleanswers>\n{}\n{}\n{}\n{}<unitgradingtype>0</unitgradingtype>\n"
       "<unitpenalty>0.1000000</unitpenalty>\n<showunits>3</showunits>\n<unitsleft>0</unitsleft>\n"
-      "<dataset_definitions>\n{}</dataset_definitions>\n</question>\n",
+      "<dataset_definitions>\n{}</dataset_definitions>\n{}</question>\n",
       text_element("name", fmt::format("{} ({}) {}{}", q.problem.id, g0.part, g0.answer.name,
-                                        entry_words(g0.answer, q.entry))),
+                                       entry_words(g0.answer, q.entry))),
       text_element("questiontext", question_text(q), true),
       text_element("generalfeedback", "", true), text_element("correctfeedback", "", true),
       text_element("partiallycorrectfeedback", "", true),
-      text_element("incorrectfeedback", "", true), answers, defs);
+      text_element("incorrectfeedback", "", true), answers, defs, hint_xml(q));
 }
 }  // namespace
 

@@ -61,6 +61,16 @@ std::string answer_input(const GradedAnswer& g) {
   return html;
 }
 
+// A part's hint, shown as wobble's worksheet and page show it: after the second submission of
+// the variant (PrairieLearn counts submissions of the whole question, not of a part).
+std::string hint_html(const std::string& part_id, const std::string& hint) {
+  if (hint.empty()) return "";
+  return fmt::format(
+      "<pl-hidden-hints>\n<pl-hint show-after-submission=\"2\" hint-name=\"Hint for ({})\">{}"
+      "</pl-hint>\n</pl-hidden-hints>\n",
+      part_id, inline_html(hint, "$", "$"));
+}
+
 std::string question_html(const Problem& problem, const VariantSet& set) {
   std::string html = "<pl-question-panel>\n" + statement_html(problem.statement, "$", "$") +
                      "<p>Your values (variant {{params.variant}}):</p>\n"
@@ -74,6 +84,7 @@ std::string question_html(const Problem& problem, const VariantSet& set) {
     for (const auto& g : first.answers) {
       if (g.part == part.id) html += answer_input(g);
     }
+    html += hint_html(part.id, problem.hint(part.id));
   }
   return html;
 }

@@ -30,6 +30,14 @@ bool Interval::contains(double x) const {
   return above && below;
 }
 
+const std::string& Problem::hint(const std::string& part_id) const {
+  static const std::string none;
+  for (const auto& spec : parts) {
+    if (spec.id == part_id) return spec.hint;
+  }
+  return none;
+}
+
 const Parameter& Problem::parameter(const std::string& name) const {
   std::string known;
   for (const auto& p : parameters) {

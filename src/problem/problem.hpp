@@ -72,7 +72,9 @@ struct AnswerSpec {
 struct PartSpec {
   std::string id;
   std::string question;
-  std::string hint;  ///< for the worksheet; may be empty
+  /// Markdown with $...$ math, as the question: shown after wrong tries in the worksheet and the
+  /// browser, and carried by the exports. May be empty.
+  std::string hint;
   std::vector<AnswerSpec> answers;
 };
 
@@ -90,6 +92,8 @@ struct Problem {
   /// (`\theta_0`, `\theta_{0}`, in $..$ or not).
   /// @throws InputError naming the unknown parameter (and the known ones).
   const Parameter& parameter(const std::string& name) const;
+  /// The hint of the part with this id; empty if it has none (or there is no such part).
+  const std::string& hint(const std::string& part_id) const;
   /// A symbol table with one symbol per parameter (positive if its range excludes negatives).
   sym::SymbolTable symbol_table() const;
 };

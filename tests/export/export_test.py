@@ -17,6 +17,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import tomllib
 import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -79,6 +80,8 @@ def check_prairielearn(wobble, problem, folder):
             if a["value"] != key.get(a["name"]):
                 fail("PrairieLearn variant %d %s: %s, solve gives %s" % (
                     v["number"], a["name"], a["value"], key.get(a["name"])))
+    with open(os.path.join(question, "question.html"), encoding="utf-8") as f:
+        check_prairielearn_hints(problem, f.read())
     sys.argv = ["prairielearn_grade.py", question]
     try:
         prairielearn_grade.main()
@@ -86,6 +89,42 @@ def check_prairielearn(wobble, problem, folder):
         if e.code:
             fail("PrairieLearn grading failed")
     return len(table["variants"])
+
+
+def problem_hints(problem):
+    """part id -> hint of the problem file (problems/ID.toml beside the tests)."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "problems",
+                        problem + ".toml")
+    with open(path, "rb") as f:
+        return {p["id"]: p.get("hint", "") for p in tomllib.load(f)["parts"]}
+
+
+def math_count(text):
+    return len(re.findall(r"\$[^$]+\$", text))
+
+
+def check_prairielearn_hints(problem, html):
+    """Each part's hint once, after the part's inputs and before the next part, its math for
+    MathJax as $...$ as the question's; none for a part without one."""
+    hints = problem_hints(problem)
+    parts = re.split(r"<p><strong>\((\w+)\)</strong>", html)[1:]
+    for part_id, body in zip(parts[0::2], parts[1::2]):
+        shown = re.findall(r'<pl-hidden-hints>\n<pl-hint show-after-submission="2" '
+                           r'hint-name="Hint for \((\w+)\)">(.*?)</pl-hint>\n</pl-hidden-hints>',
+                           body, re.S)
+        want = hints.get(part_id, "")
+        if not want:
+            if shown or "pl-hint" in body:
+                fail("PrairieLearn (%s): a hint, but the problem file has none" % part_id)
+            continue
+        if len(shown) != 1 or shown[0][0] != part_id:
+            fail("PrairieLearn (%s): hints %r" % (part_id, shown))
+            continue
+        if math_count(shown[0][1]) != math_count(want) or "\\(" in shown[0][1]:
+            fail("PrairieLearn (%s): hint %r, from %r" % (part_id, shown[0][1], want))
+    if sum(1 for h in hints.values() if h) != html.count("<pl-hint "):
+        fail("PrairieLearn: %d hints for %d parts with one" % (
+            html.count("<pl-hint "), sum(1 for h in hints.values() if h)))
 
 
 def text(element, path):
@@ -96,6 +135,23 @@ def text(element, path):
     return found.text or ""
 
 
+def check_moodle_hint(name, question, hints):
+    """The part's hint, once, as HTML with its math in \\( \\) as the question text's; none for
+    a part without one."""
+    want = hints.get(re.match(r"^\S+ \((\w+)\)", name).group(1), "")
+    found = question.findall("hint")
+    if not want:
+        if found:
+            fail("moodle: %s: a hint, but the problem file has none" % name)
+        return
+    if len(found) != 1 or found[0].get("format") != "html":
+        fail("moodle: %s: %d hints" % (name, len(found)))
+        return
+    shown = text(found[0], "text")
+    if "$" in shown or shown.count("\\(") != math_count(want) or not shown.strip():
+        fail("moodle: %s: hint %r, from %r" % (name, shown, want))
+
+
 def check_moodle(wobble, problem, quiz_file):
     root = ET.parse(quiz_file).getroot()
     if root.tag != "quiz":
@@ -104,6 +160,7 @@ def check_moodle(wobble, problem, quiz_file):
     if not questions or questions[0].get("type") != "category":
         fail("moodle: the first question is not the category")
     checked = 0
+    hints = problem_hints(problem)
     for q in questions[1:]:
         if q.get("type") != "calculated":
             fail("moodle: question type %s" % q.get("type"))
@@ -112,6 +169,7 @@ def check_moodle(wobble, problem, quiz_file):
         if q.find("questiontext").get("format") != "html":
             fail("moodle: %s: question text format" % name)
         text(q, "questiontext/text")
+        check_moodle_hint(name, q, hints)
         for tag in ("generalfeedback/text", "defaultgrade", "penalty", "hidden", "synchronize",
                     "single", "answernumbering", "shuffleanswers", "unitgradingtype",
                     "unitpenalty", "showunits", "unitsleft"):

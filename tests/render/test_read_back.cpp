@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "check/answer_reading.hpp"
@@ -278,6 +279,42 @@ TEST_CASE("every answer the worksheet reveals reads back as correct, every probl
     }
   }
   REQUIRE(revealed > 100);  // every answer the catalog asks for in a worksheet
+}
+
+TEST_CASE("every part's hint prints in the worksheet as plain text, every problem") {
+  int hints = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    std::size_t prompts = 0;
+    for (const auto& part : f.key.parts) prompts += part.answers.size();
+    // At every prompt '?' (the hint), then '!' (the answer), so each part's hint is asked for.
+    std::size_t asked = 0;
+    const ReadLine hint_then_reveal = [&](const std::string&, std::string& line) {
+      line = asked % 2 == 0 ? "?" : "!";
+      return asked++ < 2 * prompts;
+    };
+    std::ostringstream out;
+    (void)run_worksheet(hint_then_reveal, out, "", f.problem, {f.key, f.table, f.values}, {});
+    std::set<std::string> shown;
+    std::istringstream lines(out.str());
+    std::string part_id;
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("(", 0) == 0) part_id = line.substr(1, line.find(')') - 1);
+      const std::string lead = "  hint: ";
+      if (line.rfind(lead, 0) != 0) continue;
+      // Its math in Unicode, as the question's: "I₁ ω̇₁", not "$I_1 \dot\omega_1$".
+      INFO(p.id << " (" << part_id << "): " << line);
+      CHECK(line.find_first_of("$\\{}") == std::string::npos);
+      CHECK(line.size() > lead.size() + 10);
+      shown.insert(part_id);
+    }
+    for (const auto& spec : f.problem.parts) {
+      INFO(p.id << " (" << spec.id << ")");
+      CHECK(shown.count(spec.id) == (spec.hint.empty() ? 0U : 1U));
+      hints += spec.hint.empty() ? 0 : 1;
+    }
+  }
+  CHECK(hints > 50);  // the catalog's hints, each seen
 }
 
 // The LaTeX a key prints for an answer: the closed form, the value with its unit as the LaTeX key

@@ -145,6 +145,34 @@ def check_view(driver, name, shots):
     return fps
 
 
+MATH = re.compile(r"\$\$(.+?)\$\$|\$(.+?)\$", re.S)
+
+
+def check_catalog_math(driver, base):
+    """Every statement's, question's and hint's math, every problem, through the page's KaTeX
+    with errors thrown: what a student sees is typeset, never KaTeX's red source."""
+    texts = []
+    for p in fetch(base + "api/problems"):
+        view = fetch(base + "api/problems/" + p["id"])
+        texts.append((p["id"] + " statement", view["statement"]))
+        for part in view["parts"]:
+            texts.append(("%s (%s)" % (p["id"], part["id"]), part["question"]))
+            if part["has_hint"]:
+                hint = fetch(base + "api/problems/%s/hint?part=%s" % (p["id"], part["id"]))
+                texts.append(("%s (%s) hint" % (p["id"], part["id"]), hint["hint"]))
+    formulas = [(where, a or b) for where, text in texts for a, b in MATH.findall(text)]
+    errors = driver.execute_script("""
+      const bad = [];
+      for (const [where, tex] of arguments[0]) {
+        try { katex.renderToString(tex, {throwOnError: true}); }
+        catch (e) { bad.push(where + ': ' + tex + ': ' + e.message); }
+      }
+      return bad;""", formulas)
+    expect(len(formulas) > 200, "only %d formulas in the catalog's texts" % len(formulas))
+    expect(not errors, "KaTeX cannot typeset: %s" % "; ".join(errors[:5]))
+    stage("the catalog's math: %d formulas typeset" % len(formulas))
+
+
 def severe_errors(driver):
     # The unreadable answer typed on purpose is refused with a 400, which the browser logs;
     # anything else is an error.
@@ -199,6 +227,10 @@ def main():
         hint = WebDriverWait(d, 20).until(
             lambda dr: [h for h in dr.find_elements(By.CSS_SELECTOR, ".hint") if h.is_displayed()])
         expect(hint and hint[0].text.startswith("Hint:"), "no hint after two wrong tries")
+        expect(hint and hint[0].find_elements(By.CSS_SELECTOR, ".katex") and
+               not hint[0].find_elements(By.CSS_SELECTOR, ".katex-error"),
+               "the hint's math is not typeset")
+        check_catalog_math(d, base)
         d.save_screenshot(os.path.join(shots, "flying-plate-5.png"))
         # A reload comes back to the same problem and variant.
         d.refresh()

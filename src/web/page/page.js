@@ -143,8 +143,10 @@ function partView(id, variant, part, state, partKey, update) {
     if (++wrong < 2 || !part.has_hint || !hint.hidden) return;
     const h = await getJson('api/problems/' + encodeURIComponent(id) + '/hint?part=' +
                             encodeURIComponent(part.id));
-    hint.textContent = 'Hint: ' + h.hint;
+    // Its math typeset as the question's is.
+    hint.replaceChildren('Hint: ', ...withCode(h.hint));
     hint.hidden = false;
+    typeset(hint);
   }
   for (const a of part.answers) {
     const keyed = partKey && partKey.answers.find(k => k.name === a.name);
