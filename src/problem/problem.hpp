@@ -29,7 +29,7 @@ struct Parameter {
   std::string name;         ///< identifier used in expressions and in --set
   std::string latex;        ///< LaTeX spelling, e.g. "\\alpha", "d_1"
   std::string unit;         ///< SI unit: "kg", "m", "rad", ...
-  std::string description;  ///< one line
+  std::string description;  ///< one line, Markdown with $...$ math as a statement
   double default_value = 0.0;
   Interval range;
   bool fixed = false;  ///< a physical constant (g): the same in every variant

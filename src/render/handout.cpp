@@ -64,7 +64,7 @@ std::string render_handout_text(const Key& key,
     out += fmt::format("  {}{} = {}{}{}\n", name,
                        std::string(width - detail::display_width(name), ' '), value,
                        unit == "°" ? "°" : detail::unit_text(unit),
-                       p.description.empty() ? "" : "   (" + p.description + ")");
+                       p.description.empty() ? "" : "   (" + plain_text(p.description) + ")");
   }
   if (with_questions) {
     for (const auto& part : key.parts) {

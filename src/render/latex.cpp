@@ -133,7 +133,8 @@ std::string render_handout_latex(const Key& key,
   for (const auto& p : key.parameters) {
     const auto [value, shown_unit] = detail::shown_value(p, shown);
     const std::string unit = shown_unit == "°" ? "^\\circ" : detail::unit_latex(shown_unit);
-    out += fmt::format("${}$ & ${}{}$ & {} \\\\\n", p.latex, value, unit, latex_text(p.description));
+    out += fmt::format("${}$ & ${}{}$ & {} \\\\\n", p.latex, value, unit,
+                       statement_latex(p.description));
   }
   out += "\\hline\n\\end{tabular}\\end{center}\n";
   for (const auto& part : key.parts) {

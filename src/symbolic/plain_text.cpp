@@ -13,12 +13,14 @@ bool is_alnum(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0;
 
 const std::map<std::string, std::string>& symbols() {
   static const std::map<std::string, std::string> s{
-      {"pm", "±"},      {"mp", "∓"},     {"times", "×"},  {"cdot", "·"},   {"le", "≤"},
-      {"leq", "≤"},     {"ge", "≥"},     {"geq", "≥"},    {"ne", "≠"},     {"neq", "≠"},
-      {"approx", "≈"},  {"to", "→"},     {"rightarrow", "→"}, {"infty", "∞"}, {"partial", "∂"},
-      {"sum", "Σ"},     {"int", "∫"},    {"ldots", "…"},  {"dots", "…"},   {"cdots", "…"},
-      {"prime", "′"},   {"circ", "°"},   {"perp", "⊥"},   {"parallel", "∥"}, {"lt", "<"},
-      {"gt", ">"},      {"quad", " "},   {"qquad", " "},  {"ell", "ℓ"},    {"hbar", "ħ"}};
+      {"pm", "±"},     {"mp", "∓"},    {"times", "×"},      {"cdot", "·"},     {"le", "≤"},
+      {"leq", "≤"},    {"ge", "≥"},    {"geq", "≥"},        {"ne", "≠"},       {"neq", "≠"},
+      {"approx", "≈"}, {"to", "→"},    {"rightarrow", "→"}, {"infty", "∞"},    {"partial", "∂"},
+      {"sum", "Σ"},    {"int", "∫"},   {"ldots", "…"},      {"dots", "…"},     {"cdots", "…"},
+      {"prime", "′"},  {"circ", "°"},  {"perp", "⊥"},       {"parallel", "∥"}, {"lt", "<"},
+      {"gt", ">"},     {"quad", " "},  {"qquad", " "},      {"ell", "ℓ"},      {"hbar", "ħ"},
+      {"lvert", "|"},  {"rvert", "|"}, {"vert", "|"},       {"lVert", "‖"},    {"rVert", "‖"},
+      {"Vert", "‖"}};
   return s;
 }
 

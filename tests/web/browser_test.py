@@ -149,12 +149,14 @@ MATH = re.compile(r"\$\$(.+?)\$\$|\$(.+?)\$", re.S)
 
 
 def check_catalog_math(driver, base):
-    """Every statement's, question's and hint's math, every problem, through the page's KaTeX
-    with errors thrown: what a student sees is typeset, never KaTeX's red source."""
+    """Every statement's, parameter's, question's and hint's math, every problem, through KaTeX
+    with errors thrown (as the page loads it): what a student sees is typeset, never KaTeX's red
+    source."""
     texts = []
     for p in fetch(base + "api/problems"):
         view = fetch(base + "api/problems/" + p["id"])
         texts.append((p["id"] + " statement", view["statement"]))
+        texts += [("%s %s" % (p["id"], q["name"]), q["description"]) for q in view["parameters"]]
         for part in view["parts"]:
             texts.append(("%s (%s)" % (p["id"], part["id"]), part["question"]))
             if part["has_hint"]:
