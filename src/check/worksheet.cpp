@@ -98,7 +98,9 @@ struct Session {
       while (true) {
         std::string line;
         const bool more =
-            read(fmt::format("  {}{} = ", a.name, a.unit.empty() ? "" : " [" + a.unit + "]"), line);
+            read(fmt::format("  {}{} = ", a.name,
+                             a.unit.empty() ? "" : " [" + sym::to_unicode(a.unit) + "]"),
+                 line);
         const Command command = more ? command_of(line) : Command::quit;
         if (command == Command::quit) {
           quit_after_reveal = revealed;  // a part quit after a reveal counts as revealed

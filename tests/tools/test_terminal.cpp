@@ -28,13 +28,13 @@ TEST_CASE("worksheet at a UTF-8 terminal (tmux): non-ASCII input is kept and rea
     for (int i = 0; i < 100 && screen().find(text) == std::string::npos; ++i) ::usleep(50000);
     return screen();
   };
-  wait_for("I0 [kg m^2] =");
+  wait_for("I0 [kg m²] =");  // the unit as the key prints it
   const auto type = [&](const std::string& keys) {
     REQUIRE(run_shell(tmux + " send-keys -l '" + keys + "'").exit_code == 0);
     REQUIRE(run_shell(tmux + " send-keys Enter").exit_code == 0);
   };
   type("m·R²/4");
-  wait_for("I [kg m^2] =");
+  wait_for("I [kg m²] =");
   type("[ 0.00072 0 0 ] [ 0 0.00072 0 ] [ 0 0 0.00144 ] kg m²");
   wait_for("(b)");
   type("s");
