@@ -52,7 +52,7 @@ void check_shape(const Answer& a, const sym::ValueText& v, const std::string& ty
     throw InputError(fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
                                  shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
                                  shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),
-                                 comma ? " (a decimal comma? write the point: 0.5, not 0,5)" : ""));
+                                 comma ? fmt::format(" ({})", kDecimalCommaHint) : ""));
   }
 }
 
@@ -295,7 +295,16 @@ bool is_one_name(const std::string& side) {
 Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
                   const Options& options) {
   const Options opt = options_for(a, options);
-  const ReadAnswer p = read_answer(text, ctx.table, kField);
+  const ReadAnswer p = [&] {
+    try {
+      return read_answer(text, ctx.table, kField);
+    } catch (const InputError& e) {
+      // "15,5deg" reads as two entries, one without a unit: where one number is wanted, say
+      // what was more likely meant.
+      if (a.value.shape != Value::Shape::scalar || !looks_like_decimal_comma(text)) throw;
+      throw InputError(fmt::format("{} ({})", e.what(), kDecimalCommaHint));
+    }
+  }();
   check_shape(a, p.value, text);
   const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
   double to_key = 1.0;

@@ -79,23 +79,30 @@ std::string printable(const std::string& text, std::size_t max_characters) {
 }
 
 bool looks_like_decimal_comma(const std::string& typed) {
-  const auto comma = typed.find(',');
-  const auto digits = [&](std::size_t from, std::size_t to) {
-    return to > from && std::all_of(typed.begin() + static_cast<std::ptrdiff_t>(from),
-                                    typed.begin() + static_cast<std::ptrdiff_t>(to), [](char c) {
-                                      return std::isdigit(static_cast<unsigned char>(c)) != 0;
-                                    });
-  };
+  const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+  const std::size_t comma = typed.find(',');
   if (comma == std::string::npos || typed.find(',', comma + 1) != std::string::npos) return false;
-  const std::size_t end = std::min(typed.find(' ', comma), typed.size());  // a unit may follow
-  std::size_t fraction_end = end;  // before an exponent "e-2", if there is one
-  if (const auto e = typed.find_first_of("eE", comma); e < end) {
+  const std::size_t start = std::min(typed.find_first_not_of("-+ "), comma);
+  if (start == comma || !std::all_of(typed.begin() + static_cast<std::ptrdiff_t>(start),
+                                     typed.begin() + static_cast<std::ptrdiff_t>(comma), is_digit))
+    return false;
+  const auto digits_from = [&](std::size_t i) {
+    while (i < typed.size() && is_digit(typed[i])) ++i;
+    return i;
+  };
+  std::size_t end = digits_from(comma + 1);
+  if (end == comma + 1) return false;
+  if (end < typed.size() && (typed[end] == 'e' || typed[end] == 'E')) {  // an exponent "e-2"
     const std::size_t power =
-        e + 1 < end && (typed[e + 1] == '-' || typed[e + 1] == '+') ? e + 2 : e + 1;
-    if (!digits(power, end)) return false;
-    fraction_end = e;
+        end + 1 < typed.size() && (typed[end + 1] == '-' || typed[end + 1] == '+') ? end + 2
+                                                                                   : end + 1;
+    end = digits_from(power);
+    if (end == power) return false;
   }
-  return digits(typed.find_first_not_of("-+ "), comma) && digits(comma + 1, fraction_end);
+  // Then nothing, or a unit: after a space, or glued on ("15,5deg", "15,5°").
+  if (end == typed.size() || typed[end] == ' ') return true;
+  const auto c = static_cast<unsigned char>(typed[end]);
+  return std::isalpha(c) != 0 || c >= 0x80;
 }
 
 }  // namespace wobble

@@ -27,8 +27,11 @@ bool is_control_at(const std::string& text, std::size_t i);
 std::string printable(const std::string& text, std::size_t max_characters);
 
 /// Whether `typed` is a number written with a decimal comma: digits, one comma, digits (and an
-/// exponent), a unit after a space if any ("0,0812", "-0,16 s", "9,375e-2"). Where a number is
+/// exponent), then a unit if any, after a space or glued on ("0,0812", "-0,16 s", "9,375e-2",
+/// "15,5deg", "15,5°"). Where a number is
 /// wanted, a message can then say so (as a vector, "0,16" would be two entries).
 bool looks_like_decimal_comma(const std::string& typed);
+/// What a message adds in parentheses where looks_like_decimal_comma holds.
+inline constexpr const char* kDecimalCommaHint = "a decimal comma? write the point: 0.5, not 0,5";
 
 }  // namespace wobble

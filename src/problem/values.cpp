@@ -110,8 +110,7 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
       if (number) (void)parse_unit(tail, field);  // throws its error
     }
     if (looks_like_decimal_comma(t)) {
-      throw InputError(field + ": '" + text +
-                       "' is not a number (a decimal comma? write the point: 0.5, not 0,5)");
+      throw InputError(field + ": '" + text + "' is not a number (" + kDecimalCommaHint + ")");
     }
     throw InputError(field + ": '" + text + "' is not a number" +
                      (p.is_angle()     ? " (an angle: radians, or degrees as 30deg)"

@@ -302,6 +302,12 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
   REQUIRE_THROWS_WITH(plate.check("t_max", "-0,16 s"), Catch::Contains("a decimal comma?"));
   REQUIRE_THROWS_WITH(plate.check("t_max", "1,6e-1 s"), Catch::Contains("a decimal comma?"));
   REQUIRE_THROWS_WITH(plate.check("t_max", "1,6e s"), !Catch::Contains("decimal comma"));
+  // A unit glued on, as a number with a point may have it.
+  REQUIRE_THROWS_WITH(plate.check("t_max", "0,16s"), Catch::Contains("a decimal comma?"));
+  REQUIRE_THROWS_WITH(plate.check("angle_omega_e3", "15,5°"), Catch::Contains("a decimal comma?"));
+  REQUIRE_THROWS_WITH(plate.check("angle_omega_e3", "15,5deg"),
+                      Catch::Contains("a decimal comma?"));
+  REQUIRE_THROWS_WITH(plate.check("t_max", "0,16.5"), !Catch::Contains("decimal comma"));
   REQUIRE_THROWS_WITH(plate.check("t_max", "0, 16"),
                       Catch::Contains("2-vector") && !Catch::Contains("decimal comma"));
   // A second decimal point (a typo, an ellipsis) is said so, never dropped: 1.5.3 is not 1.53.

@@ -396,6 +396,8 @@ TEST_CASE("one parameter per --set: several in one are refused with the options 
           parameter_values(top, {"theta0=pi/6"}).at("theta0"));
   // A decimal comma is named as such.
   REQUIRE_THROWS_WITH(parameter_values(plate, {"m=0,5"}), Catch::Contains("a decimal comma?"));
+  REQUIRE_THROWS_WITH(parameter_values(plate, {"alpha=15,5deg"}),
+                      Catch::Contains("a decimal comma?"));
 }
 
 TEST_CASE("every part of every problem has a hint for the worksheet") {
