@@ -68,11 +68,12 @@ std::string hint_html(const std::string& part_id, const std::string& hint) {
   return fmt::format(
       "<pl-hidden-hints>\n<pl-hint show-after-submission=\"2\" hint-name=\"Hint for ({})\">{}"
       "</pl-hint>\n</pl-hidden-hints>\n",
-      part_id, inline_html(hint, "$", "$"));
+      part_id, mustache_safe(inline_html(hint, "$", "$")));
 }
 
 std::string question_html(const Problem& problem, const VariantSet& set) {
-  std::string html = "<pl-question-panel>\n" + statement_html(problem.statement, "$", "$") +
+  std::string html = "<pl-question-panel>\n" +
+                     mustache_safe(statement_html(problem.statement, "$", "$")) +
                      "<p>Your values (variant {{params.variant}}):</p>\n"
                      "<table class=\"table table-sm w-auto\">\n"
                      "{{#params.values}}<tr><td>${{latex}}$</td><td>{{text}}</td></tr>"
@@ -80,7 +81,7 @@ std::string question_html(const Problem& problem, const VariantSet& set) {
   const GradedVariant& first = set.variants.front();
   for (const auto& part : first.key.parts) {
     html += fmt::format("<p><strong>({})</strong> {}</p>\n", part.id,
-                        inline_html(part.question, "$", "$"));
+                        mustache_safe(inline_html(part.question, "$", "$")));
     for (const auto& g : first.answers) {
       if (g.part == part.id) html += answer_input(g);
     }
@@ -89,6 +90,16 @@ std::string question_html(const Problem& problem, const VariantSet& set) {
   return html;
 }
 }  // namespace
+
+std::string mustache_safe(const std::string& html) {
+  std::string out;
+  for (std::size_t i = 0; i < html.size(); ++i) {
+    out += i > 0 && html[i] == '{' && html[i - 1] == '{' && out.back() == '{'
+               ? "&#123;"
+               : std::string(1, html[i]);
+  }
+  return out;
+}
 
 std::string input_name(const GradedAnswer& a) { return a.part + "_" + a.answer.name; }
 

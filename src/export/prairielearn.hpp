@@ -26,6 +26,11 @@ std::string question_uuid(const std::string& problem_id);
 /// The name of an answer's input: "PART_NAME" (an answer name may recur in another part).
 std::string input_name(const GradedAnswer& a);
 
+/// HTML from a problem's text made safe for question.html, a Mustache template: the second brace
+/// of each "{{" (LaTeX's `\frac{1}{{2}}`) as the entity &#123;, which the browser, and so
+/// MathJax, reads as a brace, and Mustache does not read as a tag.
+std::string mustache_safe(const std::string& html);
+
 /// The grading rules and variants as the server reads them (variants.json).
 std::string variants_json(const VariantSet& variants, const check::Options& options);
 

@@ -5,6 +5,7 @@
 
 #include "export/graded_variants.hpp"
 #include "export/html_text.hpp"
+#include "export/prairielearn.hpp"
 #include "problem/values.hpp"
 #include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
@@ -103,4 +104,29 @@ TEST_CASE("a statement as HTML: math for the system's MathJax, code, escapes, pa
   CHECK(exports::inline_html("the limits $\\theta_\\mathrm{min}$ & $\\theta_\\mathrm{max}$", "$",
                              "$") ==
         "the limits $\\theta_\\mathrm{min}$ &amp; $\\theta_\\mathrm{max}$");
+}
+
+TEST_CASE("a problem's double braces never reach PrairieLearn's Mustache as a tag") {
+  CHECK(exports::mustache_safe("$\\frac{1}{{2}}$ {{{x}}} {a}") ==
+        "$\\frac{1}{&#123;2}}$ {&#123;{x}}} {a}");
+  // The template's own tags are all the "{{" a question.html has, whatever the problem says.
+  const auto tags = [](Problem p) {
+    const auto set = exports::graded_variants(p, 1, 2, check::Options{});
+    for (const auto& f : exports::prairielearn_question(p, set, check::Options{})) {
+      if (f.path != "question.html") continue;
+      std::size_t n = 0;
+      for (auto at = f.content.find("{{"); at != std::string::npos;
+           at = f.content.find("{{", at + 2))
+        ++n;
+      return n;
+    }
+    return std::size_t{0};
+  };
+  Problem plate = find_problem("flying-plate");
+  const std::size_t template_tags = tags(plate);
+  REQUIRE(template_tags > 0);
+  plate.statement += " $\\frac{1}{{2}}$";
+  plate.parts.at(0).question += " $x^{{2}}$";
+  plate.parts.at(0).hint += " $y_{{1}}$";
+  CHECK(tags(plate) == template_tags);
 }
