@@ -37,6 +37,15 @@ std::string text_element(const std::string& tag, const std::string& text, bool h
                      html ? cdata(text) : html_escape(text));
 }
 
+// A problem's text with each brace as the entity &#123;: the same brace to the browser and
+// MathJax, but no wildcard to Moodle, which substitutes {name} (\theta_{ans} would show the
+// answer) and offers each {word} (\mathrm{min}) as a wildcard when the question is edited.
+std::string no_wildcards(const std::string& html) {
+  std::string out;
+  for (const char c : html) out += c == '{' ? std::string("&#123;") : std::string(1, c);
+  return out;
+}
+
 // A wildcard Moodle substitutes in the question text: letters, digits, underscores.
 std::string wildcard(const std::string& name) {
   std::string out = "p_";
@@ -112,7 +121,7 @@ struct Question {
 std::string question_text(const Question& q) {
   const GradedVariant& first = q.set.variants.front();
   const GradedAnswer& g = first.answers[q.answer];
-  std::string html = statement_html(q.problem.statement, "\\(", "\\)");
+  std::string html = no_wildcards(statement_html(q.problem.statement, "\\(", "\\)"));
   html += "<p>Your values (variant {variant}):</p>\n<table>\n";
   for (const auto& [name, shown] : first.values) {
     std::string latex = name;
@@ -120,14 +129,15 @@ std::string question_text(const Question& q) {
       if (p.name == name) latex = p.latex;
     }
     const std::string unit = split_value(shown).second;
-    html += fmt::format("<tr><td>\\({}\\)</td><td>{{{}}}{}{}</td></tr>\n", html_escape(latex),
-                        wildcard(name), unit == "°" || unit.empty() ? "" : " ", html_escape(unit));
+    html += fmt::format("<tr><td>\\({}\\)</td><td>{{{}}}{}{}</td></tr>\n",
+                        no_wildcards(html_escape(latex)), wildcard(name),
+                        unit == "°" || unit.empty() ? "" : " ", html_escape(unit));
   }
   html += "</table>\n";
   for (const auto& part : first.key.parts) {
     if (part.id == g.part) {
       html += fmt::format("<p><strong>({})</strong> {}</p>\n", part.id,
-                          inline_html(part.question, "\\(", "\\)"));
+                          no_wildcards(inline_html(part.question, "\\(", "\\)")));
     }
   }
   html += fmt::format("<p>Give <code>{}</code>{}{}.</p>\n", html_escape(g.answer.name),
@@ -140,7 +150,9 @@ std::string question_text(const Question& q) {
 // (Moodle allows one try, and one more per hint).
 std::string hint_xml(const Question& q) {
   const std::string& hint = q.problem.hint(q.set.variants.front().answers[q.answer].part);
-  return hint.empty() ? "" : text_element("hint", inline_html(hint, "\\(", "\\)"), true) + "\n";
+  return hint.empty()
+             ? ""
+             : text_element("hint", no_wildcards(inline_html(hint, "\\(", "\\)")), true) + "\n";
 }
 
 std::string question_xml(const Question& q) {

@@ -184,6 +184,12 @@ def check_moodle(wobble, problem, quiz_file):
             if numbers != list(range(1, len(items) + 1)) or int(text(d, "itemcount")) != len(items):
                 fail("moodle: %s: dataset %s items %s" % (name, text(d, "name/text"), numbers))
             datasets[text(d, "name/text")] = [float(text(i, "value")) for i in items]
+        # Moodle substitutes every {name} it has a dataset for: the text's only braces are
+        # wobble's wildcards, the problem's own (LaTeX's) are entities.
+        for word in re.findall(r"\{([^{}]*)\}", text(q, "questiontext/text") + "".join(
+                text(h, "text") for h in q.findall("hint"))):
+            if word not in datasets:
+                fail("moodle: %s: {%s} in the text is no wildcard" % (name, word))
         answers = q.findall("answer")
         if not answers or answers[0].get("fraction") != "100":
             fail("moodle: %s: the right answer is not first" % name)
