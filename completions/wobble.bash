@@ -32,7 +32,7 @@ _wobble() {
     check) options="--answer --answers --format --name --set --variant --tolerance --sigfigs --help" ;;
     list) options="--solvers --help" ;;
     serve) options="--host --port --problems --reveal --help" ;;
-    page) options="--variant --key --out --force --help" ;;
+    page) options="--variant --key --no-hints --out --force --help" ;;
     worksheet) options="--variant --set --help" ;;
     simulate) options="--set --variant --method --tolerance --samples --t-end --max-evaluations --out --plot --force --help" ;;
     bench) options="--quick --format --plot --force --help" ;;

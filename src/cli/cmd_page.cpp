@@ -21,6 +21,7 @@ void setup_page(CLI::App& app, PageOptions& opt) {
   app.add_option("--variant", opt.variant, "Per-student values: variant N (1, 2, ...)")
       ->transform(whole_number());
   app.add_flag("--key", opt.key, "Show the answers too (an instructor's page)");
+  app.add_flag("--no-hints", opt.no_hints, "Leave out the parts' hints (folded under each part)");
   app.add_option("--out", opt.out, "The HTML file to write")->required();
   app.add_flag("--force", opt.force, "Replace the file if it exists");
 }
@@ -37,7 +38,8 @@ int run_page(const PageOptions& opt) {
   const std::vector<std::string> assignments = with_variant(problem, opt.variant, {});
   Key key = solve(problem, parameter_values(problem, assignments));
   key.variant = opt.variant;
-  const std::string view = web::student_view_json(problem, key, opt.variant, assignments);
+  const std::string view =
+      web::student_view_json(problem, key, opt.variant, assignments, !opt.no_hints);
   const std::string motion =
       web::has_motion(problem) ? web::problem_motion_json(problem, assignments) : "";
   const std::string html =

@@ -133,6 +133,7 @@ struct PageOptions {
   std::string problem;  ///< an id or a .toml file
   std::optional<long> variant;
   bool key = false;  ///< the answers too (an instructor's page)
+  bool no_hints = false;  ///< leave out the parts' hints (shown folded by default)
   std::string out;
   bool force = false;
 };

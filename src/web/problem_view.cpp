@@ -17,9 +17,8 @@ const PartSpec* spec_of(const Problem& problem, const std::string& id) {
 }
 }  // namespace
 
-std::string student_view_json(const Problem& problem, const Key& key,
-                              std::optional<long> variant,
-                              const std::vector<std::string>& assignments) {
+std::string student_view_json(const Problem& problem, const Key& key, std::optional<long> variant,
+                              const std::vector<std::string>& assignments, bool with_hints) {
   json parameters = json::array();
   for (const auto& p : key.parameters) {
     json row = {{"name", p.name},
@@ -57,6 +56,7 @@ std::string student_view_json(const Problem& problem, const Key& key,
                      {"answers", answers},
                      {"absent", part.absent},
                      {"has_hint", spec != nullptr && !spec->hint.empty()}});
+    if (with_hints && spec != nullptr && !spec->hint.empty()) parts.back()["hint"] = spec->hint;
   }
   json view = {{"id", problem.id},     {"title", problem.title},
                {"statement", problem.statement}, {"notes", key.notes},

@@ -15,10 +15,10 @@ namespace wobble::web {
 
 /// `key` is the problem's key at the variant's values (its answers are not read beyond their
 /// names, units, kinds and shapes); `assignments` the variant's "NAME=VALUE" as drawn, so that
-/// a value shows as the handout shows it ("16°" with its radians).
-std::string student_view_json(const Problem& problem, const Key& key,
-                              std::optional<long> variant,
-                              const std::vector<std::string>& assignments);
+/// a value shows as the handout shows it ("16°" with its radians). Each part says whether it has
+/// a hint; with `with_hints` (the page file, which has no server to ask) it carries the hint.
+std::string student_view_json(const Problem& problem, const Key& key, std::optional<long> variant,
+                              const std::vector<std::string>& assignments, bool with_hints = false);
 
 /// The problem list: [{"id", "title"}], in the catalog's order.
 std::string problem_list_json(const std::vector<Problem>& problems);

@@ -305,7 +305,7 @@ def main():
         stage("instructor's page done")
         # The page as one file, opened from disk: no server, no network.
         for problem, extra, keyed in (("heavy-top", ["--variant", "3"], False),
-                                      ("flying-plate", ["--key"], True)):
+                                      ("flying-plate", ["--key", "--no-hints"], True)):
             out = os.path.join(shots, problem + "-page.html")
             if os.path.exists(out):
                 os.remove(out)
@@ -317,6 +317,18 @@ def main():
             expect(len(d4.find_elements(By.CSS_SELECTOR, ".katex")) > 0 and
                    not d4.find_elements(By.CSS_SELECTOR, ".katex-error"),
                    "%s page from disk: math not typeset" % problem)
+            # Each part's hint folded under it, its math typeset when opened; none with --no-hints.
+            folded = d4.find_elements(By.CSS_SELECTOR, "details.hint")
+            expect(len(folded) == (0 if "--no-hints" in extra else 4),
+                   "%s page from disk: %d folded hints" % (problem, len(folded)))
+            if folded:
+                d4.execute_script("arguments[0].scrollIntoView({block: 'center'})", folded[0])
+                folded[0].find_element(By.TAG_NAME, "summary").click()
+                expect(folded[0].get_attribute("open") is not None and
+                       folded[0].find_elements(By.CSS_SELECTOR, ".katex") and
+                       not folded[0].find_elements(By.CSS_SELECTOR, ".katex-error"),
+                       "%s page from disk: the opened hint's math is not typeset" % problem)
+                d4.save_screenshot(os.path.join(shots, "file-" + problem + "-hint.png"))
             check_view(d4, "file-" + problem, shots)
             shown = len(d4.find_elements(By.CSS_SELECTOR, ".key-value"))
             expect((shown > 0) == keyed, "%s page from disk: %d key values (key asked: %s)"

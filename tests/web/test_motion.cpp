@@ -17,10 +17,11 @@
 #include "web/problem_view.hpp"
 
 using namespace wobble;
-using nlohmann::json;
 using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
+using nlohmann::json;
 
 namespace {
 // Lengths and times carry 6 significant digits: a number read back is off by up to half a unit
@@ -242,4 +243,19 @@ TEST_CASE("the self-contained page links nothing and carries its data") {
   // The data, KaTeX with auto-render and copy-tex, three.js with its controls, the page's two.
   CHECK(scripts == 8u);
   CHECK(ends == scripts);
+}
+
+TEST_CASE("the view carries a part's hint only when asked (the page file), never for the server") {
+  const Problem p = find_problem("heavy-top");
+  const Key key = key_of(p);
+  const auto served = json::parse(web::student_view_json(p, key, std::nullopt, {}));
+  const auto filed = json::parse(web::student_view_json(p, key, std::nullopt, {}, true));
+  REQUIRE(served["parts"].size() == p.parts.size());
+  for (std::size_t i = 0; i < p.parts.size(); ++i) {
+    INFO(p.parts[i].id);
+    CHECK(served["parts"][i]["has_hint"] == !p.parts[i].hint.empty());
+    CHECK_FALSE(served["parts"][i].contains("hint"));
+    CHECK(filed["parts"][i].value("hint", "") == p.parts[i].hint);
+  }
+  CHECK_THAT(filed["parts"][0]["hint"].get<std::string>(), StartsWith("Use $\\omega$"));
 }

@@ -191,6 +191,10 @@ function partView(id, variant, part, state, partKey, update) {
   }
   for (const absent of part.absent) div.append(el('p', {class: 'unit'}, absent + ' does not exist at these values'));
   if (!offline) div.append(hint);
+  // No judge to count tries from a file: the hint folded, for the student to open.
+  if (offline && part.hint) {
+    div.append(el('details', {class: 'hint'}, el('summary', {}, 'Hint'), ...withCode(part.hint)));
+  }
   return div;
 }
 
