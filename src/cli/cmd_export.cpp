@@ -39,12 +39,20 @@ void add_variants(CLI::App& sub, ExportOptions& opt, const std::string& fallback
       ->default_str(fallback);
 }
 
-// Files written all or nothing, none replaced without --force.
-void write_files(const std::vector<std::pair<fs::path, std::string>>& files, bool force) {
-  for (const auto& [path, content] : files) {
+// A file the export would replace without --force, or that is no regular file, refused: before
+// the work (drawing a hundred variants takes seconds) and again when writing.
+void refuse_to_replace_any(const std::vector<fs::path>& paths, bool force) {
+  for (const auto& path : paths) {
     refuse_to_replace("--out", path, force);
     require_regular_or_absent(path);
   }
+}
+
+// Files written all or nothing, none replaced without --force.
+void write_files(const std::vector<std::pair<fs::path, std::string>>& files, bool force) {
+  std::vector<fs::path> paths;
+  for (const auto& file : files) paths.push_back(file.first);
+  refuse_to_replace_any(paths, force);
   for (const auto& [path, content] : files) {
     if (!path.parent_path().empty()) fs::create_directories(path.parent_path());
   }
@@ -101,10 +109,17 @@ int export_prairielearn(const ExportOptions& opt, const check::Options& judge_op
   if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
     throw InputError("--out: " + out.string() + " is a file, not a folder");
   }
+  std::vector<Problem> problems;
+  std::vector<fs::path> targets;
+  for (const auto& id : opt.problems) {
+    problems.push_back(find_problem(id));
+    for (const char* name : exports::kPrairieLearnFiles)
+      targets.push_back(out / problems.back().id / name);
+  }
+  refuse_to_replace_any(targets, opt.force);
   std::vector<std::pair<fs::path, std::string>> files;
   std::vector<std::pair<Problem, exports::VariantSet>> done;
-  for (const auto& id : opt.problems) {
-    const Problem p = find_problem(id);
+  for (const auto& p : problems) {
     auto set = draw(p, opt, kPrairieLearnVariants, judge_opt);
     for (auto& f : exports::prairielearn_question(p, set, judge_opt)) {
       files.emplace_back(out / p.id / f.path, std::move(f.content));
@@ -121,6 +136,7 @@ int export_prairielearn(const ExportOptions& opt, const check::Options& judge_op
 
 int export_moodle(const ExportOptions& opt, const check::Options& judge_opt) {
   const Problem p = single_problem(opt);
+  refuse_to_replace_any({opt.out}, opt.force);
   const auto set = draw(p, opt, kMoodleVariants, judge_opt);
   const auto quiz = exports::moodle_quiz(p, set, judge_opt);
   write_files({{opt.out, quiz.xml}}, opt.force);
@@ -132,6 +148,7 @@ int export_moodle(const ExportOptions& opt, const check::Options& judge_opt) {
 
 int export_gradescope(const ExportOptions& opt) {
   const Problem p = single_problem(opt);
+  refuse_to_replace_any({opt.out}, opt.force);
   const std::string check_options =
       opt.tolerance ? fmt::format("--tolerance {}", *opt.tolerance) : std::string();
   const auto files = exports::gradescope_autograder(p, opt.deb, check_options);

@@ -136,10 +136,10 @@ std::vector<OutputFile> prairielearn_question(const Problem& problem, const Vari
                      {"tags", {"wobble", problem.id}},
                      {"type", "v3"},
                      {"singleVariant", set.variants.size() == 1}};
-  return {{"info.json", info.dump(2) + "\n"},
-          {"question.html", question_html(problem, set)},
-          {"server.py", std::string(kPrairieLearnServerPy)},
-          {"variants.json", variants_json(set, options)}};
+  return {{kPrairieLearnFiles[0], info.dump(2) + "\n"},
+          {kPrairieLearnFiles[1], question_html(problem, set)},
+          {kPrairieLearnFiles[2], std::string(kPrairieLearnServerPy)},
+          {kPrairieLearnFiles[3], variants_json(set, options)}};
 }
 
 }  // namespace wobble::exports

@@ -7,6 +7,7 @@
 /// every problem: generate() picks a variant from variants.json, grade() applies wobble's rules
 /// and messages) and variants.json (per variant its values, answers, rules and mistakes; read by
 /// the server only, never sent to the browser).
+#include <array>
 #include <vector>
 
 #include "check/judge.hpp"
@@ -19,6 +20,11 @@ namespace wobble::exports {
 /// The question's files, paths relative to the question folder.
 std::vector<OutputFile> prairielearn_question(const Problem& problem, const VariantSet& variants,
                                               const check::Options& options);
+
+/// The names of the files prairielearn_question writes, in its order: a command can refuse to
+/// replace them before any variant is drawn.
+inline constexpr std::array<const char*, 4> kPrairieLearnFiles{"info.json", "question.html",
+                                                               "server.py", "variants.json"};
 
 /// The uuid of the problem's question: a name-based (SHA-1) uuid of "wobble/problem/ID".
 std::string question_uuid(const std::string& problem_id);
