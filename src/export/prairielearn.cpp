@@ -93,11 +93,9 @@ std::string question_html(const Problem& problem, const VariantSet& set) {
 
 std::string mustache_safe(const std::string& html) {
   std::string out;
-  for (std::size_t i = 0; i < html.size(); ++i) {
-    out += i > 0 && html[i] == '{' && html[i - 1] == '{' && out.back() == '{'
-               ? "&#123;"
-               : std::string(1, html[i]);
-  }
+  // A brace written as a brace after one written as a brace: the second of a "{{".
+  for (const char c : html)
+    out += c == '{' && !out.empty() && out.back() == '{' ? "&#123;" : std::string(1, c);
   return out;
 }
 

@@ -8,13 +8,6 @@ namespace wobble::web {
 
 namespace {
 using nlohmann::json;
-
-const PartSpec* spec_of(const Problem& problem, const std::string& id) {
-  for (const auto& p : problem.parts) {
-    if (p.id == id) return &p;
-  }
-  return nullptr;
-}
 }  // namespace
 
 std::string student_view_json(const Problem& problem, const Key& key, std::optional<long> variant,
@@ -50,13 +43,13 @@ std::string student_view_json(const Problem& problem, const Key& key, std::optio
                          {"rows", a.value.rows},
                          {"cols", a.value.cols}});
     }
-    const PartSpec* spec = spec_of(problem, part.id);
+    const std::string& hint = problem.hint(part.id);
     parts.push_back({{"id", part.id},
                      {"question", part.question},
                      {"answers", answers},
                      {"absent", part.absent},
-                     {"has_hint", spec != nullptr && !spec->hint.empty()}});
-    if (with_hints && spec != nullptr && !spec->hint.empty()) parts.back()["hint"] = spec->hint;
+                     {"has_hint", !hint.empty()}});
+    if (with_hints && !hint.empty()) parts.back()["hint"] = hint;
   }
   json view = {{"id", problem.id},     {"title", problem.title},
                {"statement", problem.statement}, {"notes", key.notes},
