@@ -48,7 +48,12 @@ void check_shape(const Answer& a, const sym::ValueText& v, const std::string& ty
   const bool key_vec = a.value.shape == Value::Shape::vector;
   const bool key_mat = a.value.shape == Value::Shape::matrix;
   if (key_vec != v.is_vector || key_mat != v.is_matrix || a.value.data.size() != v.entries.size()) {
-    const bool comma = !key_vec && !key_mat && looks_like_decimal_comma(typed);
+    // A number with a decimal comma reads as two entries; a vector or matrix with decimal
+    // commas as one entry more per such comma: "(0,57, 4,21, 4,56)" as a 6-vector.
+    const std::size_t split = commas_between_digits(typed);
+    const bool comma = key_vec || key_mat
+                           ? split > 0 && v.entries.size() == a.value.data.size() + split
+                           : looks_like_decimal_comma(typed);
     throw InputError(fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
                                  shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
                                  shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),

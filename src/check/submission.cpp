@@ -115,7 +115,12 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
         try {
           s.verdict = judge(ctx, a, s.typed, opt);
         } catch (const InputError& e) {
-          s.verdict = {false, "incorrect: " + a.name + ": " + without_option(e.what()), {}};
+          // Wrong all the same, but named apart from a wrong value: what the student must mend
+          // is how the line is written, and the line number says where.
+          s.verdict = {false,
+                       fmt::format("unreadable: {} (line {}): {}", a.name, it->second.number,
+                                   without_option(e.what())),
+                       {}};
         }
       }
       if (it != given.end()) given.erase(it);

@@ -9,9 +9,9 @@
 ///     theta_min: 0.61
 ///
 /// A line is NAME = ANSWER or NAME: ANSWER, NAME an answer of the key (`wobble solve` lists
-/// them). Each answer is judged alone (judge.hpp): an unreadable answer is wrong with the reason,
-/// a missing one is wrong as "not answered", a line naming no answer is reported, and none of
-/// these stops the others from being judged.
+/// them). Each answer is judged alone (judge.hpp): an unreadable answer is wrong, said to be
+/// "unreadable" with its line and the reason, a missing one is wrong as "not answered", a line
+/// naming no answer is reported, and none of these stops the others from being judged.
 #include <optional>
 #include <string>
 #include <vector>

@@ -78,6 +78,15 @@ std::string printable(const std::string& text, std::size_t max_characters) {
   return i < text.size() ? out + "..." : out;
 }
 
+std::size_t commas_between_digits(const std::string& typed) {
+  const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+  std::size_t n = 0;
+  for (std::size_t i = 1; i + 1 < typed.size(); ++i) {
+    if (typed[i] == ',' && is_digit(typed[i - 1]) && is_digit(typed[i + 1])) ++n;
+  }
+  return n;
+}
+
 bool looks_like_decimal_comma(const std::string& typed) {
   const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
   const std::size_t comma = typed.find(',');

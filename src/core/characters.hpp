@@ -31,6 +31,9 @@ std::string printable(const std::string& text, std::size_t max_characters);
 /// "15,5deg", "15,5°"). Where a number is
 /// wanted, a message can then say so (as a vector, "0,16" would be two entries).
 bool looks_like_decimal_comma(const std::string& typed);
+/// The commas in `typed` with a digit right before and right after ("0,57" but not "1, 2"):
+/// in a vector or matrix written with decimal commas, each such comma splits one entry in two.
+std::size_t commas_between_digits(const std::string& typed);
 /// What a message adds in parentheses where looks_like_decimal_comma holds.
 inline constexpr const char* kDecimalCommaHint = "a decimal comma? write the point: 0.5, not 0,5";
 

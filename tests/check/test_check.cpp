@@ -310,6 +310,14 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
   REQUIRE_THROWS_WITH(plate.check("t_max", "0,16.5"), !Catch::Contains("decimal comma"));
   REQUIRE_THROWS_WITH(plate.check("t_max", "0, 16"),
                       Catch::Contains("2-vector") && !Catch::Contains("decimal comma"));
+  // A vector or matrix written with decimal commas has one entry more per such comma.
+  REQUIRE_THROWS_WITH(plate.check("L0_body", "(0,5, 1,5, 2,5) kg m^2/s"),
+                      Catch::Contains("not a 6-vector") && Catch::Contains("a decimal comma?"));
+  REQUIRE_THROWS_WITH(plate.check("I", "[[0,5, 0, 0], [0, 0,5, 0], [0, 0, 1,5]]"),
+                      Catch::Contains("not a 3x4 matrix") && Catch::Contains("a decimal comma?"));
+  REQUIRE_THROWS_WITH(plate.check("L0_body", "(1,2)"),
+                      Catch::Contains("not a 2-vector") && !Catch::Contains("decimal comma"));
+  REQUIRE_THROWS_WITH(plate.check("L0_body", "(1, 2, 3, 4)"), !Catch::Contains("decimal comma"));
   // A second decimal point (a typo, an ellipsis) is said so, never dropped: 1.5.3 is not 1.53.
   REQUIRE_THROWS_WITH(plate.check("t_max", "0.1.6 s"),
                       Catch::Contains("the number \"0.1.6\" has more than one decimal point"));
@@ -564,7 +572,8 @@ TEST_CASE(
       "I_0 = \\frac{m R^{2}}{4}\n"  // as a LaTeX handout sets the name
       "L_{0,\\mathrm{body}}: [m*R^2*omega*sin(alpha)/4, 0, m*R^2*omega*cos(alpha)/2]\n"
       "I0 = m*R^2/2\n"  // I0 again: the first line is judged
-      "Omega: 3\n";
+      "Omega: 3\n"
+      "t_max = [1, 2\n";
   const SubmissionResult r = judge_submission({plate.key, plate.table, plate.values}, text, {});
   const auto verdict = [&](const std::string& name) {
     for (const auto& s : r.answers) {
@@ -575,6 +584,10 @@ TEST_CASE(
   REQUIRE(verdict("I0").correct);
   REQUIRE(verdict("L0_body").correct);
   REQUIRE_FALSE(verdict("I").correct);  // not answered
+  REQUIRE_THAT(verdict("I").line, Catch::Equals("incorrect: I is not answered"));
+  // Unreadable: wrong, but named apart from a wrong value, with its line.
+  REQUIRE_FALSE(verdict("t_max").correct);
+  REQUIRE_THAT(verdict("t_max").line, Catch::StartsWith("unreadable: t_max (line 6): "));
   REQUIRE(r.problems.size() == 2);
   REQUIRE_THAT(r.problems, Catch::VectorContains(
                                std::string("line 4: 'I0' answers I0 again (the first is judged)")));
