@@ -501,6 +501,10 @@ EntryUnits units_per_entry(const std::string& text, const sym::SymbolTable& tabl
       }
       auto [number, unit] = split_unit(item);
       if (unit.empty()) std::tie(number, unit) = split_glued_unit(item, table);
+      // "2 d^2 m" where m is a mass: a tail of the problem's symbols after an expression in
+      // them is a factor, as after a whole answer (read_answer), not metres.
+      if (!unit.empty() && has_identifier_of(number, table) && all_identifiers_of(unit, table))
+        unit.clear();
       if (unit.empty()) {
         if (without.empty() && !is_zero_literal(item)) without = item;
         continue;

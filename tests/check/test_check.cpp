@@ -348,6 +348,10 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
     REQUIRE_THAT(v.line, Catch::Contains("three more points"));
   }
   REQUIRE(plate.check("Omega_space_rate", "omega*sqrt(4 - 3*sin(alpha)^2)").correct);
+  // A symbol that spells a unit (m) ending an entry of symbols is a factor, as after a whole
+  // answer, not the entry's metres.
+  REQUIRE(
+      plate.check("L0_body", "[R^2 omega sin(alpha) m/4, 0, R^2 omega cos(alpha)/2 m]").correct);
   REQUIRE_FALSE(plate.check("angle_L_e3", "atan(2*tan(alpha))").correct);
   for (const std::string other : {"m*R^2/4 + 1e-3*m", "m*R/4", "m^2*R^2/4", "R(m)/4", "2(m R)/8"}) {
     INFO(other);
