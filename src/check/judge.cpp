@@ -44,6 +44,15 @@ std::string shape_words(std::size_t rows, std::size_t cols, bool vector, bool ma
   return "a number";
 }
 
+// " (digits grouped? write 26233128.66)" where one number is wanted and `typed` starts with
+// one whose digits are grouped by threes: "26,233,128.66 s" reads as a 3-vector, "26 233 128.66
+// s" as numbers side by side. "" otherwise.
+std::string number_hint(const Answer& a, const std::string& typed) {
+  if (a.value.shape != Value::Shape::scalar) return "";
+  const std::string ungrouped = digits_ungrouped(typed);
+  return ungrouped.empty() ? "" : fmt::format(" (digits grouped? write {})", ungrouped);
+}
+
 void check_shape(const Answer& a, const sym::ValueText& v, const std::string& typed) {
   const bool key_vec = a.value.shape == Value::Shape::vector;
   const bool key_mat = a.value.shape == Value::Shape::matrix;
@@ -54,10 +63,11 @@ void check_shape(const Answer& a, const sym::ValueText& v, const std::string& ty
     const bool comma = key_vec || key_mat
                            ? split > 0 && v.entries.size() == a.value.data.size() + split
                            : looks_like_decimal_comma(typed);
-    throw InputError(fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
-                                 shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
-                                 shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),
-                                 comma ? fmt::format(" ({})", kDecimalCommaHint) : ""));
+    throw InputError(
+        fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
+                    shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
+                    shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),
+                    comma ? fmt::format(" ({})", kDecimalCommaHint) : number_hint(a, typed)));
   }
 }
 
@@ -304,10 +314,14 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
     try {
       return read_answer(text, ctx.table, kField);
     } catch (const InputError& e) {
-      // "15,5deg" reads as two entries, one without a unit: where one number is wanted, say
-      // what was more likely meant.
-      if (a.value.shape != Value::Shape::scalar || !looks_like_decimal_comma(text)) throw;
-      throw InputError(fmt::format("{} ({})", e.what(), kDecimalCommaHint));
+      // "15,5deg" reads as two entries, one without a unit, "26 233 128.66" as numbers side by
+      // side: where one number is wanted, say what was more likely meant.
+      if (a.value.shape != Value::Shape::scalar) throw;
+      if (looks_like_decimal_comma(text))
+        throw InputError(fmt::format("{} ({})", e.what(), kDecimalCommaHint));
+      const std::string grouped = number_hint(a, text);
+      if (grouped.empty()) throw;
+      throw InputError(e.what() + grouped);
     }
   }();
   check_shape(a, p.value, text);

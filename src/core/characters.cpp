@@ -87,6 +87,54 @@ std::size_t commas_between_digits(const std::string& typed) {
   return n;
 }
 
+std::string digits_ungrouped(const std::string& typed) {
+  const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+  // The separator at i and its length: a comma, a space, or a thin, narrow no-break or no-break
+  // space (as SI writes and word processors set long numbers).
+  const auto separator_at = [&](std::size_t i) -> std::pair<std::string, std::size_t> {
+    for (const std::string sep : {",", " ", "\u2009", "\u202F", "\u00A0"}) {
+      if (typed.compare(i, sep.size(), sep) == 0) return {sep, sep.size()};
+    }
+    return {"", 0};
+  };
+  std::size_t i = typed.find_first_not_of(" ");
+  if (i == std::string::npos) return "";
+  std::string out;
+  if (typed[i] == '-' || typed[i] == '+') out += typed[i++];
+  const std::size_t lead = i;
+  while (i < typed.size() && is_digit(typed[i])) out += typed[i++];
+  if (i == lead || i - lead > 3) return "";
+  std::string used;  // the separator, the same throughout
+  int groups = 0;
+  for (;;) {
+    const auto [sep, length] = separator_at(i);
+    if (length == 0 || (!used.empty() && sep != used)) break;
+    const std::size_t digits = i + length;
+    std::size_t end = digits;
+    while (end < typed.size() && is_digit(typed[end])) ++end;
+    if (end - digits != 3) break;
+    used = sep;
+    out += typed.substr(digits, 3);
+    i = end;
+    ++groups;
+  }
+  if (groups == 0) return "";
+  bool fraction = false;
+  // A decimal point, or after groups of spaces a decimal comma ("26 233 128,66", as French
+  // and SI write it).
+  if (i < typed.size() && (typed[i] == '.' || (typed[i] == ',' && used != ","))) {
+    const std::size_t start = ++i;
+    while (i < typed.size() && is_digit(typed[i])) ++i;
+    fraction = i > start;
+    if (fraction) out += "." + typed.substr(start, i - start);
+  }
+  if (used == "," && groups == 1 && !fraction) return "";
+  // Then nothing, a unit after a space, or one glued on; no more digits or separators.
+  if (i == typed.size() || typed[i] == ' ') return out;
+  const auto c = static_cast<unsigned char>(typed[i]);
+  return std::isalpha(c) != 0 || (c >= 0x80 && separator_at(i).second == 0) ? out : "";
+}
+
 bool looks_like_decimal_comma(const std::string& typed) {
   const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
   const std::size_t comma = typed.find(',');

@@ -310,6 +310,14 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
   REQUIRE_THROWS_WITH(plate.check("t_max", "0,16.5"), !Catch::Contains("decimal comma"));
   REQUIRE_THROWS_WITH(plate.check("t_max", "0, 16"),
                       Catch::Contains("2-vector") && !Catch::Contains("decimal comma"));
+  // Digits grouped by threes, with spaces or commas, where one number is wanted.
+  REQUIRE_THROWS_WITH(plate.check("t_max", "1 600.5 s"),
+                      Catch::Contains("(digits grouped? write 1600.5)"));
+  REQUIRE_THROWS_WITH(plate.check("t_max", "1 600,5 s"),
+                      Catch::Contains("(digits grouped? write 1600.5)"));
+  REQUIRE_THROWS_WITH(plate.check("t_max", "1,600,000 s"),
+                      Catch::Contains("(digits grouped? write 1600000)"));
+  REQUIRE_THROWS_WITH(plate.check("t_max", "1 4"), !Catch::Contains("digits grouped"));
   // A vector or matrix written with decimal commas has one entry more per such comma.
   REQUIRE_THROWS_WITH(plate.check("L0_body", "(0,5, 1,5, 2,5) kg m^2/s"),
                       Catch::Contains("not a 6-vector") && Catch::Contains("a decimal comma?"));

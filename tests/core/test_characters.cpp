@@ -51,3 +51,19 @@ TEST_CASE("trim drops the spaces, tabs and line ends around a text; ascii_lower 
   REQUIRE(ascii_lower("DOP853 Quit") == "dop853 quit");
   REQUIRE(ascii_lower("ÉA") == "Éa");  // bytes of a UTF-8 character are left as they are
 }
+
+TEST_CASE("digits grouped by threes are found and written without their separators") {
+  REQUIRE(digits_ungrouped("26 233 128.66 s") == "26233128.66");
+  REQUIRE(digits_ungrouped("26\u2009233\u2009128.66 s") == "26233128.66");  // thin spaces
+  REQUIRE(digits_ungrouped("26\u202F233 kg") == "26233");                   // narrow no-break space
+  REQUIRE(digits_ungrouped("26,233,128.66s") == "26233128.66");
+  REQUIRE(digits_ungrouped("-1,234.5") == "-1234.5");  // one comma, then a point: a group
+  REQUIRE(digits_ungrouped("26 233 128,66 s") == "26233128.66");  // and a decimal comma
+  // Not so grouped: an entry of two digits, four leading digits, mixed separators, a comma
+  // alone (it may be a decimal comma), what follows being no unit, numbers side by side.
+  for (const char* other : {"1 4", "26 23", "2623 128", "26,233 128", "1,234", "1,234 s", "26 2331",
+                            "", " ", "abc", "0.16 s", "(1, 234, 567)"}) {
+    INFO(other);
+    REQUIRE(digits_ungrouped(other).empty());
+  }
+}
