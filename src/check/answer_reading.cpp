@@ -610,6 +610,97 @@ std::string reading_form(const std::string& typed) {
   return layout(value) + (unit.empty() ? "" : " " + unit);
 }
 
+namespace {
+// The one bracket at the top level of `s` that holds a vector or matrix: '[' or '{', or '(' with
+// a comma inside that is no function's call ("atan2(y, x)" is one). npos if none or several.
+std::pair<std::size_t, std::size_t> vector_group(const std::string& s) {
+  std::pair<std::size_t, std::size_t> found{std::string::npos, std::string::npos};
+  int depth = 0;
+  std::size_t open = 0;
+  bool comma = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c == '(' || c == '[' || c == '{') {
+      if (depth++ == 0) {
+        open = i;
+        comma = false;
+      }
+    } else if (c == ')' || c == ']' || c == '}') {
+      if (--depth < 0) return {std::string::npos, std::string::npos};
+      if (depth > 0) continue;
+      const bool call =
+          s[open] == '(' && open > 0 &&
+          (std::isalnum(static_cast<unsigned char>(s[open - 1])) || s[open - 1] == '_');
+      if (s[open] != '(' || (comma && !call)) {
+        if (found.first != std::string::npos) return {std::string::npos, std::string::npos};
+        found = {open, i};
+      }
+    } else if ((c == ',' || c == ';') && depth == 1) {
+      comma = true;
+    }
+  }
+  return depth == 0 ? found : std::pair{std::string::npos, std::string::npos};
+}
+
+// Whether the bracket s[open..close] is a factor of the whole: no sum at the top level ("[a, b]/2
+// + 1"), no power of the bracket ("[a, b]^2", "2^[a, b]") and no division by it ("1/[a, b]"). A
+// sign may lead, or follow '*', '/', '^' or an exponent's e ("10^-4 [..]", "1e-4 [..]"). Read
+// from the text: judging it by algebra on the rest (is it k X?) could take GiNaC's normal() on a
+// hostile expression.
+bool only_factors_around(const std::string& s, std::size_t open, std::size_t close) {
+  const std::size_t after = s.find_first_not_of(' ', close + 1);
+  if (after != std::string::npos && (s[after] == '^' || s.compare(after, 2, "**") == 0))
+    return false;
+  const std::size_t power = open == 0 ? std::string::npos : s.find_last_not_of(' ', open - 1);
+  if (power != std::string::npos && (s[power] == '^' || s[power] == '/')) return false;
+  int depth = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c == '(' || c == '[' || c == '{') ++depth;
+    if (c == ')' || c == ']' || c == '}') --depth;
+    if (depth != 0 || (c != '+' && c != '-')) continue;
+    const std::size_t before = s.find_last_not_of(' ', i == 0 ? std::string::npos : i - 1);
+    if (i == 0 || before == std::string::npos) continue;  // a leading sign
+    const char b = s[before];
+    const bool exponent = (b == 'e' || b == 'E') && before > 0 &&
+                          std::isdigit(static_cast<unsigned char>(s[before - 1]));
+    if (b != '*' && b != '/' && b != '^' && !exponent) return false;
+  }
+  return true;
+}
+
+// "M/12 [[b^2 + c^2, 0, 0], ..]", "1/2 (a, b, c)", "[a, b, c]/2": a vector or matrix with a
+// factor outside, as books write a common factor. The bracket is read as an answer of its own,
+// the rest, with 1 in the bracket's place, as a number or expression; false if `value` is no
+// such product or either part does not read.
+bool read_with_factor(const std::string& value, const sym::SymbolTable& table,
+                      const std::string& field, ReadAnswer& p) {
+  const auto [open, close] = vector_group(value);
+  if (open == std::string::npos || (open == 0 && close + 1 == value.size()) ||
+      !only_factors_around(value, open, close))
+    return false;
+  // The rest with 1 in the bracket's place, joined by '*' where no '*' or '/' joins it: "2 [a,
+  // b]" is a product where "2 1" would be refused, and "(1 - x)(1)" would read as rows.
+  const std::string before = trim(value.substr(0, open)), after = trim(value.substr(close + 1));
+  const auto joins = [](char c) { return c == '*' || c == '/'; };
+  const std::string rest = before + (before.empty() || joins(before.back()) ? "" : "*") + "1" +
+                           (after.empty() || joins(after[0]) ? "" : "*") + after;
+  try {
+    ReadAnswer bracket = read_answer(value.substr(open, close - open + 1), table, field);
+    if (!bracket.value.is_vector && !bracket.value.is_matrix) return false;
+    const ReadAnswer one = read_answer(rest, table, field);
+    if (one.value.is_vector || one.value.is_matrix || one.unit) return false;
+    const GiNaC::ex factor = one.value.entries.at(0);
+    for (auto& e : bracket.value.entries) e = factor * e;
+    bracket.symbolic = bracket.symbolic || one.symbolic;
+    p = std::move(bracket);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+}  // namespace
+
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field) {
   check_bounds(typed, field);
@@ -639,6 +730,11 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
   try {
     p.value = sym::parse_value_text(layout(value), table, field);
   } catch (const InputError& e) {
+    if (read_with_factor(value, table, field, p)) {
+      if (p.unit && !unit.empty())
+        throw InputError(field + ": units inside the bracket and after it; give them in one place");
+      return finished(p, unit, field);
+    }
     // "omega * m" is an expression, not omega in metres.
     if (!unit.empty()) {
       try {
@@ -666,15 +762,17 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
           left_reads = false;
         }
         const std::string right = trim(value.substr(sp + 1));
-        if (left_reads && names_a_symbol(right, table)) {  // "M R^2 (psidot0 + 1/2"
-          const std::string written = starred(value, table);
+        const std::string written = starred(value, table);
+        // "M R^2 (psidot0 + 1/2"; not where no '*' could be written in ("1/2 [a, b").
+        if (left_reads && names_a_symbol(right, table) && written != value) {
           throw InputError(field + ": cannot read \"" + value + "\": " +
                            (has_bare_function(written)
                                 ? "products need '*' and a function's argument parentheses "
                                   "(M*g*cos(theta)^2)"
                                 : "products need '*' (" + written + ", not " + value + ")"));
         }
-        if (left_reads) (void)parse_unit(right, field);  // "0.16 parsecs": throws its error
+        // "0.16 parsecs": throws its error; not for a bracket ("1/2 [a, b": the reader says).
+        if (left_reads && right.find_first_of("([{") != 0) (void)parse_unit(right, field);
       }
       const bool glued = !value.empty() && std::isdigit(static_cast<unsigned char>(value[0])) &&
                          value.find(' ') == std::string::npos &&

@@ -10,6 +10,8 @@
 /// - matrices as printed, row by row ("[ 10 0 0 ] [ 0 6 1 ] [ 0 1 6 ]", on one line or several);
 /// - MATLAB's rows "[10 0 0; 0 6 1; 0 1 6]" (a column "[1; 2; 3]" is a vector) and Mathematica's
 ///   lists "{{10, 0, 0}, {0, 6, 1}, {0, 1, 6}}";
+/// - a vector or matrix with a factor outside, "M/12 [[b^2 + c^2, 0, 0], ..]", "[a, b, c]/2",
+///   "1/2 (a, b, c) m" (a product only: the rest is a factor times the bracket);
 /// - a numeric exponent with its sign, "10^-4" (read as 10^(-4), as a student means it), and
 ///   the letter x for the times sign before 10^, "7.2x10^-4";
 /// - powers as Python writes them, "R**2", and a trigonometric power as textbooks do,

@@ -356,6 +356,29 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
     REQUIRE_THAT(v.line, Catch::Contains("three more points"));
   }
   REQUIRE(plate.check("Omega_space_rate", "omega*sqrt(4 - 3*sin(alpha)^2)").correct);
+  // A factor outside a vector or matrix, as books write a common factor: before or after the
+  // bracket, glued or spaced, in LaTeX, with a unit after.
+  for (const auto& [name, same] : std::vector<std::pair<std::string, std::string>>{
+           {"L0_body", "m R^2 omega/4 [sin(alpha), 0, 2 cos(alpha)]"},
+           {"L0_body", "[sin(alpha), 0, 2*cos(alpha)]*m*R^2*omega/4"},
+           {"L0_body", "(m R^2 omega/4)(sin(alpha), 0, 2 cos(alpha))"},
+           {"L0_body", "2 (0.0009317485625, 0, 0.00695466595) kg m^2/s"},
+           {"I", "m R^2/4 [[1, 0, 0], [0, 1, 0], [0, 0, 2]]"},
+           {"I",
+            "\\frac{m R^{2}}{4} \\begin{pmatrix} 1 & 0 & 0 \\\\ 0 & 1 & 0 \\\\ 0 & 0 & 2 "
+            "\\end{pmatrix}"},
+           {"I", "0.00072 [1 0 0; 0 1 0; 0 0 2] kg m²"}}) {
+    INFO(name << " = " << same);
+    REQUIRE(plate.check(name, same).correct);
+  }
+  // Only a product: the rest must be a factor times the bracket.
+  REQUIRE_FALSE(plate.check("I", "m R^2/2 [[1, 0, 0], [0, 1, 0], [0, 0, 2]]").correct);
+  for (const std::string none :
+       {"[sin(alpha), 0, 2 cos(alpha)]/4 + 1", "sqrt([1, 0, 2])", "2 [1, 0, 2] [1, 0, 2]",
+        "1/[1, 0, 2]", "[1, 0, 2]^2", "2^[1, 0, 2]"}) {
+    INFO(none);
+    REQUIRE_THROWS_AS(plate.check("L0_body", none), InputError);
+  }
   // A symbol that spells a unit (m) ending an entry of symbols is a factor, as after a whole
   // answer, not the entry's metres.
   REQUIRE(
