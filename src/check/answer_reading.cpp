@@ -1,8 +1,10 @@
 #include "check/answer_reading.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <optional>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
@@ -235,12 +237,20 @@ std::string without_python_wrapper(const std::string& s) {
 
 // ASCII, one line, a numeric exponent's sign in parentheses.
 std::string prepared(const std::string& typed) {
-  std::string s = sym::to_ascii(typed);
+  // Angle brackets, as calculus writes a vector ("⟨1, 2, 3⟩", "<1, 2, 3>"): no expression
+  // compares, so they can be nothing else.
+  std::string bracketed = typed;
+  for (const auto& [angle, square] :
+       {std::pair{"⟨", "["}, std::pair{"⟩", "]"}, std::pair{"〈", "["}, std::pair{"〉", "]"}}) {
+    for (auto at = bracketed.find(angle); at != std::string::npos; at = bracketed.find(angle, at))
+      bracketed.replace(at, std::string(angle).size(), square);
+  }
+  std::string s = sym::to_ascii(bracketed);
   for (char& c : s) {
     if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-    // Mathematica's lists, "{{10, 0, 0}, {0, 6, 1}, ...}": brackets here.
-    if (c == '{') c = '[';
-    if (c == '}') c = ']';
+    // Mathematica's lists, "{{10, 0, 0}, {0, 6, 1}, ...}", and angle brackets: brackets here.
+    if (c == '{' || c == '<') c = '[';
+    if (c == '}' || c == '>') c = ']';
   }
   // "$m*R^2/4$": the math delimiters of a LaTeX or Markdown source around plain text.
   s = without_python_wrapper(without_math_delimiters(s));
@@ -701,9 +711,65 @@ bool read_with_factor(const std::string& value, const sym::SymbolTable& table,
 }
 }  // namespace
 
+namespace {
+ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& table,
+                           const std::string& field);
+
+// The transpose marks after a closing bracket: "[1 2 3]ᵀ", "[1 2 3]^T", LaTeX's "^{T}" and
+// "^\top" (braced or not), MATLAB's "'".
+constexpr std::array<std::string_view, 6> kTransposeMarks{"ᵀ",      "^{T}", "^{\\top}",
+                                                          "^\\top", "^T",   "'"};
+
+// `typed` without a transpose mark after its one bracket at the top level, and whether it had
+// one: "[0.5 1 1.5]ᵀ m" -> "[0.5 1 1.5] m", true. As typed otherwise.
+std::pair<std::string, bool> without_transpose(const std::string& typed) {
+  int depth = 0;
+  std::size_t found = std::string::npos, length = 0;
+  for (std::size_t i = 0; i < typed.size(); ++i) {
+    const char c = typed[i];
+    if (c == '(' || c == '[' || c == '{') ++depth;
+    if (c != ')' && c != ']' && c != '}') continue;
+    if (--depth != 0) continue;
+    for (const std::string_view mark : kTransposeMarks) {
+      if (typed.compare(i + 1, mark.size(), mark) != 0) continue;
+      // Not the start of a longer word ("^Theta") or of a name's prime.
+      const std::size_t end = i + 1 + mark.size();
+      if (end < typed.size() && std::isalnum(static_cast<unsigned char>(typed[end]))) continue;
+      if (found != std::string::npos) return {typed, false};
+      found = i + 1;
+      length = mark.size();
+      break;
+    }
+  }
+  if (found == std::string::npos) return {typed, false};
+  return {typed.substr(0, found) + typed.substr(found + length), true};
+}
+}  // namespace
+
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field) {
   check_bounds(typed, field);
+  const auto [untransposed, transposed] = without_transpose(typed);
+  if (!transposed) return read_as_written(typed, table, field);
+  ReadAnswer p = read_as_written(untransposed, table, field);
+  // "(1 + x)^T" with T a symbol is a power: only a vector or matrix is transposed.
+  if (!p.value.is_vector && !p.value.is_matrix) return read_as_written(typed, table, field);
+  // A column or a row is the same vector; a matrix is read as the transpose it asks for.
+  if (p.value.is_matrix) {
+    std::vector<GiNaC::ex> entries(p.value.entries.size());
+    for (std::size_t r = 0; r < p.value.rows; ++r) {
+      for (std::size_t c = 0; c < p.value.cols; ++c)
+        entries[c * p.value.rows + r] = p.value.entries[r * p.value.cols + c];
+    }
+    p.value.entries = std::move(entries);
+    std::swap(p.value.rows, p.value.cols);
+  }
+  return p;
+}
+
+namespace {
+ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& table,
+                           const std::string& field) {
   const std::string answer = without_closing_punctuation(typed);
   // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
   const std::string source =
@@ -799,5 +865,6 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
   }
   return finished(p, unit, field);
 }
+}  // namespace
 
 }  // namespace wobble::check

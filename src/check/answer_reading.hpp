@@ -6,7 +6,10 @@
 /// Accepted, besides wobble's reading form ("[x, y, z]", "[[..], [..], [..]]", GiNaC syntax):
 /// - the terminal's Unicode (symbolic/unicode_notation.hpp): "m·R²/4", "ω·cos(α)", "√2/2",
 ///   "7.2×10⁻⁴", "15°", "kg m²";
-/// - vectors as printed "(2.588, 0, 19.32)", as rows "[2.588 0 19.32]", or bare "5, 7, 10";
+/// - vectors as printed "(2.588, 0, 19.32)", as rows "[2.588 0 19.32]", or bare "5, 7, 10", in
+///   angle brackets "⟨5, 7, 10⟩" or "<5, 7, 10>";
+/// - a transpose mark after a vector or matrix, "[5 7 10]ᵀ", "^T", "^{T}", "^\top", "'": a
+///   vector is the same either way, a matrix is transposed;
 /// - matrices as printed, row by row ("[ 10 0 0 ] [ 0 6 1 ] [ 0 1 6 ]", on one line or several);
 /// - MATLAB's rows "[10 0 0; 0 6 1; 0 1 6]" (a column "[1; 2; 3]" is a vector) and Mathematica's
 ///   lists "{{10, 0, 0}, {0, 6, 1}, {0, 1, 6}}";

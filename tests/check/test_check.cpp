@@ -397,6 +397,33 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
                       Catch::Contains("'m' is one of the problem's symbols, not a function"));
 }
 
+TEST_CASE("angle brackets write a vector; a transpose mark transposes a matrix") {
+  const Fixture euler("euler-angles");
+  const Answer& zyz = euler.answer("R_zyz");
+  const Answer& phy711 = euler.answer("R_phy711");  // R_zyz transposed
+  const std::string transposed = typed(phy711.value);
+  REQUIRE_FALSE(euler.check("R_zyz", transposed).correct);
+  for (const std::string mark : {"ᵀ", "^T", "^{T}", "'"}) {
+    INFO(mark);
+    REQUIRE(euler.check("R_zyz", transposed + mark).correct);
+    REQUIRE_FALSE(euler.check("R_zyz", typed(zyz.value) + mark).correct);
+  }
+  const Fixture box("box-corner");
+  const std::string com = typed(box.answer("center_of_mass").value);  // "[x, y, z]"
+  const std::string inside = com.substr(1, com.size() - 2);
+  std::string with_ampersands = inside;
+  for (auto at = with_ampersands.find(','); at != std::string::npos; at = with_ampersands.find(','))
+    with_ampersands.replace(at, 1, " &");
+  for (const std::string& same :
+       {"<" + inside + ">", "⟨" + inside + "⟩", "〈" + inside + "〉 m", "[" + inside + "]ᵀ",
+        "(" + inside + ")^T m",
+        // LaTeX's row vector, transposed
+        "\\begin{pmatrix}" + with_ampersands + "\\end{pmatrix}^{\\top}"}) {
+    INFO(same);
+    REQUIRE(box.check("center_of_mass", same).correct);
+  }
+}
+
 namespace {
 // The entries of a value text, each rewritten by `f`, back in brackets.
 std::string rewritten(const sym::ValueText& v,
