@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <map>
 #include <optional>
 #include <string_view>
 #include <tuple>
@@ -714,6 +715,8 @@ bool read_with_factor(const std::string& value, const sym::SymbolTable& table,
 namespace {
 ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& table,
                            const std::string& field);
+ReadAnswer read_transposed(const std::string& typed, const sym::SymbolTable& table,
+                           const std::string& field);
 
 // The transpose marks after a closing bracket: "[1 2 3]ᵀ", "[1 2 3]^T", LaTeX's "^{T}" and
 // "^\top" (braced or not), MATLAB's "'".
@@ -746,9 +749,55 @@ std::pair<std::string, bool> without_transpose(const std::string& typed) {
 }
 }  // namespace
 
+namespace {
+// The unit vectors `typed` writes components along, for a message ("0.5 i + j + 1.5 k", "x̂ +
+// 2ŷ"): a letter i, j, k, x, y or z with a hat (precomposed or combining), and i, j, k alone
+// where the problem has no such symbol. "" if none.
+std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable& table) {
+  std::map<std::string, std::size_t> first;  // each name and where it first stands
+  const auto add = [&](std::size_t at, const std::string& name) {
+    if (!first.count(name) || at < first[name]) first[name] = at;
+  };
+  constexpr std::string_view kCombiningHat = "\u0302";
+  for (std::size_t at = typed.find(kCombiningHat); at != std::string::npos;
+       at = typed.find(kCombiningHat, at + 1)) {
+    if (at > 0 && std::string_view("ijkxyz").find(typed[at - 1]) != std::string_view::npos)
+      add(at - 1, typed.substr(at - 1, 1 + kCombiningHat.size()));
+  }
+  for (const char* hatted : {"î", "ĵ", "ŷ", "ẑ"}) {
+    if (const auto at = typed.find(hatted); at != std::string::npos) add(at, hatted);
+  }
+  for (const auto& [start, length] : identifiers(typed)) {
+    const std::string name = typed.substr(start, length);
+    if ((name == "i" || name == "j" || name == "k") && !table.contains(name)) add(start, name);
+  }
+  std::vector<std::pair<std::size_t, std::string>> in_order;
+  for (const auto& [name, at] : first) in_order.emplace_back(at, name);
+  std::sort(in_order.begin(), in_order.end());
+  std::string found;
+  for (const auto& [at, name] : in_order) found += (found.empty() ? "" : ", ") + name;
+  return found;
+}
+}  // namespace
+
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field) {
   check_bounds(typed, field);
+  try {
+    return read_transposed(typed, table, field);
+  } catch (const InputError&) {
+    // "0.5 i + j + 1.5 k": say what to write, not that "i + j" is no unit.
+    const std::string vectors = unit_vectors_named(typed, table);
+    if (vectors.empty()) throw;
+    throw InputError(field + ": components along unit vectors (" + vectors +
+                     ") are not read; write the vector as its components, [x, y, z]");
+  }
+}
+
+namespace {
+// read_answer, with a transpose mark read.
+ReadAnswer read_transposed(const std::string& typed, const sym::SymbolTable& table,
+                           const std::string& field) {
   const auto [untransposed, transposed] = without_transpose(typed);
   if (!transposed) return read_as_written(typed, table, field);
   ReadAnswer p = read_as_written(untransposed, table, field);
@@ -767,7 +816,6 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
   return p;
 }
 
-namespace {
 ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& table,
                            const std::string& field) {
   const std::string answer = without_closing_punctuation(typed);

@@ -324,6 +324,13 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
     INFO(name << " = " << bad);
     REQUIRE_THROWS_WITH(plate.check(name, bad), Catch::Contains(says));
   }
+  // Components along unit vectors are named as such, with what to write instead.
+  REQUIRE_THROWS_WITH(plate.check("L0_body", "0.0019 i + 0.0139 k"),
+                      Catch::Contains("components along unit vectors (i, k) are not read"));
+  REQUIRE_THROWS_WITH(plate.check("L0_body", "0.0019î + 0.0139k̂ kg m²/s"),
+                      Catch::Contains("unit vectors (î, k̂)") && Catch::Contains("[x, y, z]"));
+  REQUIRE_THROWS_WITH(plate.check("L0_body", "0.0019 x̂ + 0.0139 ẑ"),
+                      Catch::Contains("unit vectors (x̂, ẑ)"));
   // Neither where the text is no such number or the count does not fit.
   REQUIRE_THROWS_WITH(plate.check("t_max", "1 4"), !Catch::Contains("digits grouped"));
   REQUIRE_THROWS_WITH(plate.check("L0_body", "(1,2)"),
