@@ -750,6 +750,23 @@ std::pair<std::string, bool> without_transpose(const std::string& typed) {
 }  // namespace
 
 namespace {
+// "0.5i + 1.5k" -> "0.5 i + 1.5 k": i, j or k glued to the number before it, where the problem
+// has no such symbol, set apart (a number swallows the letters after it when names are found).
+std::string unit_vectors_unglued(const std::string& s, const sym::SymbolTable& table) {
+  std::string out;
+  for (std::size_t p = 0; p < s.size(); ++p) {
+    const char c = s[p];
+    const bool glued = (c == 'i' || c == 'j' || c == 'k') && p > 0 &&
+                       (std::isdigit(static_cast<unsigned char>(s[p - 1])) || s[p - 1] == '.') &&
+                       (p + 1 == s.size() ||
+                        (!std::isalnum(static_cast<unsigned char>(s[p + 1])) && s[p + 1] != '_')) &&
+                       !table.contains(std::string(1, c));
+    if (glued) out += ' ';
+    out += c;
+  }
+  return out;
+}
+
 // The unit vectors `typed` writes components along, for a message ("0.5 i + j + 1.5 k", "x̂ +
 // 2ŷ"): a letter i, j, k, x, y or z with a hat (precomposed or combining), and i, j, k alone
 // where the problem has no such symbol. "" if none.
@@ -767,8 +784,9 @@ std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable&
   for (const char* hatted : {"î", "ĵ", "ŷ", "ẑ"}) {
     if (const auto at = typed.find(hatted); at != std::string::npos) add(at, hatted);
   }
-  for (const auto& [start, length] : identifiers(typed)) {
-    const std::string name = typed.substr(start, length);
+  const std::string unglued = unit_vectors_unglued(typed, table);
+  for (const auto& [start, length] : identifiers(unglued)) {
+    const std::string name = unglued.substr(start, length);
     if ((name == "i" || name == "j" || name == "k") && !table.contains(name)) add(start, name);
   }
   std::vector<std::pair<std::size_t, std::string>> in_order;
@@ -780,17 +798,123 @@ std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable&
 }
 }  // namespace
 
+namespace {
+// `typed` with each unit vector as a marker "@0", "@1" or "@2" (x, y, z), spaced apart.
+std::string unit_vectors_marked(const std::string& typed, const sym::SymbolTable& table) {
+  std::string s = typed;
+  const std::array<std::pair<std::string_view, const char*>, 10> hatted{{{"i\u0302", " @0 "},
+                                                                         {"x\u0302", " @0 "},
+                                                                         {"î", " @0 "},
+                                                                         {"j\u0302", " @1 "},
+                                                                         {"y\u0302", " @1 "},
+                                                                         {"ĵ", " @1 "},
+                                                                         {"ŷ", " @1 "},
+                                                                         {"k\u0302", " @2 "},
+                                                                         {"z\u0302", " @2 "},
+                                                                         {"ẑ", " @2 "}}};
+  for (const auto& [hat, marker] : hatted) {
+    for (auto at = s.find(hat); at != std::string::npos; at = s.find(hat, at))
+      s.replace(at, hat.size(), marker);
+  }
+  s = unit_vectors_unglued(s, table);
+  std::string out;
+  std::size_t done = 0;
+  for (const auto& [start, length] : identifiers(s)) {
+    const std::string name = s.substr(start, length);
+    if ((name != "i" && name != "j" && name != "k") || table.contains(name)) continue;
+    out += s.substr(done, start - done) + " @" + std::to_string(name[0] - 'i') + " ";
+    done = start + length;
+  }
+  return out + s.substr(done);
+}
+
+// "0.5 i + j - 1.5 k", "(0.5 x̂ + 1.5 ẑ) m", "î/2 + (a/2) ĵ": a sum of terms, each a coefficient
+// times one unit vector, written as "[0.5, 1, -1.5]" (with the unit after). "" if `typed` is
+// no such sum (a unit vector inside a bracket or function, two in one term, one divided by).
+std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& table) {
+  if (typed.find('@') != std::string::npos) return "";  // the markers' own character
+  std::string sum = trim(unit_vectors_marked(typed, table)), unit;
+  if (!sum.empty() && sum[0] == '(') {  // "(..) m": the sum in brackets, a unit after
+    std::size_t close = 0;
+    for (int depth = 0; close < sum.size(); ++close) {
+      if (sum[close] == '(') ++depth;
+      if (sum[close] == ')' && --depth == 0) break;
+    }
+    if (close >= sum.size()) return "";
+    unit = trim(sum.substr(close + 1));  // what it is, the reading of the vector says
+    sum = sum.substr(1, close - 1);
+  }
+  std::array<std::string, 3> components;
+  std::size_t term_start = 0;
+  int depth = 0;
+  const auto add_term = [&](std::size_t end) {
+    std::string term = trim(sum.substr(term_start, end - term_start));
+    std::string sign = "+";
+    if (!term.empty() && (term[0] == '+' || term[0] == '-')) {
+      sign = term.substr(0, 1);
+      term = trim(term.substr(1));
+    }
+    const std::size_t at = term.find('@');
+    if (at == std::string::npos || term.find('@', at + 1) != std::string::npos) return false;
+    if (at + 1 >= term.size() || term[at + 1] < '0' || term[at + 1] > '2') return false;
+    int inner = 0;  // the marker at the term's top level
+    for (std::size_t i = 0; i < at; ++i) {
+      if (term[i] == '(' || term[i] == '[') ++inner;
+      if (term[i] == ')' || term[i] == ']') --inner;
+    }
+    const std::string before = trim(term.substr(0, at)), after = trim(term.substr(at + 2));
+    if (inner != 0 || (!before.empty() && (before.back() == '/' || before.back() == '^')) ||
+        (!after.empty() && after[0] == '^'))
+      return false;
+    const auto joins = [](char c) { return c == '*' || c == '/'; };
+    const std::string coefficient = before + (before.empty() || joins(before.back()) ? "" : "*") +
+                                    "1" + (after.empty() || joins(after[0]) ? "" : "*") + after;
+    std::string& component = components.at(static_cast<std::size_t>(term[at + 1] - '0'));
+    component +=
+        (component.empty() && sign == "+" ? "" : " " + sign + " ") + "(" + coefficient + ")";
+    return true;
+  };
+  for (std::size_t i = 0; i < sum.size(); ++i) {
+    const char c = sum[i];
+    if (c == '(' || c == '[' || c == '{') ++depth;
+    if (c == ')' || c == ']' || c == '}') --depth;
+    if (depth != 0 || (c != '+' && c != '-') || i == 0) continue;
+    const std::size_t before = sum.find_last_not_of(' ', i - 1);
+    if (before == std::string::npos) continue;
+    const char b = sum[before];
+    const bool exponent = (b == 'e' || b == 'E') && before > 0 &&
+                          std::isdigit(static_cast<unsigned char>(sum[before - 1]));
+    if (b == '*' || b == '/' || b == '^' || exponent) continue;  // a factor's sign
+    if (!add_term(i)) return "";
+    term_start = i;
+  }
+  if (!add_term(sum.size())) return "";
+  std::string vector = "[";
+  for (std::size_t n = 0; n < 3; ++n)
+    vector += (n ? ", " : "") + (components[n].empty() ? std::string("0") : components[n]);
+  return vector + "]" + (unit.empty() ? "" : " " + unit);
+}
+}  // namespace
+
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field) {
   check_bounds(typed, field);
   try {
     return read_transposed(typed, table, field);
   } catch (const InputError&) {
-    // "0.5 i + j + 1.5 k": say what to write, not that "i + j" is no unit.
     const std::string vectors = unit_vectors_named(typed, table);
     if (vectors.empty()) throw;
-    throw InputError(field + ": components along unit vectors (" + vectors +
-                     ") are not read; write the vector as its components, [x, y, z]");
+    // "0.5 i + j + 1.5 k": the components read as a vector, or, if they do not, say what to
+    // write, not that "i + j" is no unit.
+    if (const std::string components = unit_vector_sum(typed, table); !components.empty()) {
+      try {
+        return read_transposed(components, table, field);
+      } catch (const InputError&) {
+      }
+    }
+    throw InputError(field + ": cannot read the components along unit vectors (" + vectors +
+                     ") as a sum of a number or expression times each; write the vector as "
+                     "[x, y, z]");
   }
 }
 

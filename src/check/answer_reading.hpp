@@ -8,8 +8,8 @@
 ///   "7.2×10⁻⁴", "15°", "kg m²";
 /// - vectors as printed "(2.588, 0, 19.32)", as rows "[2.588 0 19.32]", or bare "5, 7, 10", in
 ///   angle brackets "⟨5, 7, 10⟩" or "<5, 7, 10>";
-/// - components along unit vectors ("0.5 i + 1.5 k", "x̂ + ŷ") are not read: the message asks
-///   for [x, y, z];
+/// - a vector as components along unit vectors, "0.5 i + j - 1.5 k", "0.5î + 1.5k̂", "(x̂ +
+///   2ŷ) m" (i, j, k where the problem has no such symbol): each term a coefficient times one;
 /// - a transpose mark after a vector or matrix, "[5 7 10]ᵀ", "^T", "^{T}", "^\top", "'": a
 ///   vector is the same either way, a matrix is transposed;
 /// - matrices as printed, row by row ("[ 10 0 0 ] [ 0 6 1 ] [ 0 1 6 ]", on one line or several);
