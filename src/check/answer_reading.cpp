@@ -653,31 +653,43 @@ std::pair<std::size_t, std::size_t> vector_group(const std::string& s) {
   return depth == 0 ? found : std::pair{std::string::npos, std::string::npos};
 }
 
-// Whether the bracket s[open..close] is a factor of the whole: no sum at the top level ("[a, b]/2
-// + 1"), no power of the bracket ("[a, b]^2", "2^[a, b]") and no division by it ("1/[a, b]"). A
-// sign may lead, or follow '*', '/', '^' or an exponent's e ("10^-4 [..]", "1e-4 [..]"). Read
-// from the text: judging it by algebra on the rest (is it k X?) could take GiNaC's normal() on a
-// hostile expression.
-bool only_factors_around(const std::string& s, std::size_t open, std::size_t close) {
-  const std::size_t after = s.find_first_not_of(' ', close + 1);
-  if (after != std::string::npos && (s[after] == '^' || s.compare(after, 2, "**") == 0))
-    return false;
-  const std::size_t power = open == 0 ? std::string::npos : s.find_last_not_of(' ', open - 1);
-  if (power != std::string::npos && (s[power] == '^' || s[power] == '/')) return false;
+// Whether the '+' or '-' at s[i] starts a term: not a leading sign, nor a factor's sign after
+// '*', '/', '^' or an exponent's e ("10^-4", "1e-4", "2*-1").
+bool starts_term(const std::string& s, std::size_t i) {
+  const std::size_t before = i == 0 ? std::string::npos : s.find_last_not_of(' ', i - 1);
+  if (before == std::string::npos) return false;
+  const char b = s[before];
+  const bool exponent = (b == 'e' || b == 'E') && before > 0 &&
+                        std::isdigit(static_cast<unsigned char>(s[before - 1]));
+  return b != '*' && b != '/' && b != '^' && !exponent;
+}
+
+// Whether s is one term: no '+' or '-' at its top level starts another ("[a, b]/2 + 1").
+bool is_one_term(const std::string& s) {
   int depth = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const char c = s[i];
     if (c == '(' || c == '[' || c == '{') ++depth;
     if (c == ')' || c == ']' || c == '}') --depth;
-    if (depth != 0 || (c != '+' && c != '-')) continue;
-    const std::size_t before = s.find_last_not_of(' ', i == 0 ? std::string::npos : i - 1);
-    if (i == 0 || before == std::string::npos) continue;  // a leading sign
-    const char b = s[before];
-    const bool exponent = (b == 'e' || b == 'E') && before > 0 &&
-                          std::isdigit(static_cast<unsigned char>(s[before - 1]));
-    if (b != '*' && b != '/' && b != '^' && !exponent) return false;
+    if (depth == 0 && (c == '+' || c == '-') && starts_term(s, i)) return false;
   }
   return true;
+}
+
+// Whether X in `before` X `after` (each trimmed) is a factor of the term: not raised to a power
+// ("X^2", "2^X") and not divided by ("1/X").
+bool is_factor_between(const std::string& before, const std::string& after) {
+  const bool power_or_divisor = !before.empty() && (before.back() == '^' || before.back() == '/');
+  return !power_or_divisor &&
+         (after.empty() || (after[0] != '^' && after.compare(0, 2, "**") != 0));
+}
+
+// `before` X `after` with 1 in X's place, joined by '*' where no '*' or '/' joins it: "2 [a, b]"
+// is a product where "2 1" would be refused, and "(1 - x)(1)" would read as rows.
+std::string with_one_in_place(const std::string& before, const std::string& after) {
+  const auto joins = [](char c) { return c == '*' || c == '/'; };
+  return before + (before.empty() || joins(before.back()) ? "" : "*") + "1" +
+         (after.empty() || joins(after[0]) ? "" : "*") + after;
 }
 
 // "M/12 [[b^2 + c^2, 0, 0], ..]", "1/2 (a, b, c)", "[a, b, c]/2": a vector or matrix with a
@@ -687,15 +699,12 @@ bool only_factors_around(const std::string& s, std::size_t open, std::size_t clo
 bool read_with_factor(const std::string& value, const sym::SymbolTable& table,
                       const std::string& field, ReadAnswer& p) {
   const auto [open, close] = vector_group(value);
-  if (open == std::string::npos || (open == 0 && close + 1 == value.size()) ||
-      !only_factors_around(value, open, close))
-    return false;
-  // The rest with 1 in the bracket's place, joined by '*' where no '*' or '/' joins it: "2 [a,
-  // b]" is a product where "2 1" would be refused, and "(1 - x)(1)" would read as rows.
+  if (open == std::string::npos || (open == 0 && close + 1 == value.size())) return false;
+  // A product only, decided from the text: judging it by algebra on the rest (is it k X?) could
+  // take GiNaC's normal() on a hostile expression.
   const std::string before = trim(value.substr(0, open)), after = trim(value.substr(close + 1));
-  const auto joins = [](char c) { return c == '*' || c == '/'; };
-  const std::string rest = before + (before.empty() || joins(before.back()) ? "" : "*") + "1" +
-                           (after.empty() || joins(after[0]) ? "" : "*") + after;
+  if (!is_one_term(value) || !is_factor_between(before, after)) return false;
+  const std::string rest = with_one_in_place(before, after);
   try {
     ReadAnswer bracket = read_answer(value.substr(open, close - open + 1), table, field);
     if (!bracket.value.is_vector && !bracket.value.is_matrix) return false;
@@ -750,6 +759,19 @@ std::pair<std::string, bool> without_transpose(const std::string& typed) {
 }  // namespace
 
 namespace {
+// The unit vectors written with a hat, precomposed or with a combining one, and the axis of each
+// (0, 1, 2: x, y, z).
+constexpr std::array<std::pair<std::string_view, int>, 10> kHattedUnitVectors{{{"i\u0302", 0},
+                                                                               {"x\u0302", 0},
+                                                                               {"î", 0},
+                                                                               {"j\u0302", 1},
+                                                                               {"y\u0302", 1},
+                                                                               {"ĵ", 1},
+                                                                               {"ŷ", 1},
+                                                                               {"k\u0302", 2},
+                                                                               {"z\u0302", 2},
+                                                                               {"ẑ", 2}}};
+
 // "0.5i + 1.5k" -> "0.5 i + 1.5 k": i, j or k glued to the number before it, where the problem
 // has no such symbol, set apart (a number swallows the letters after it when names are found).
 std::string unit_vectors_unglued(const std::string& s, const sym::SymbolTable& table) {
@@ -775,14 +797,8 @@ std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable&
   const auto add = [&](std::size_t at, const std::string& name) {
     if (!first.count(name) || at < first[name]) first[name] = at;
   };
-  constexpr std::string_view kCombiningHat = "\u0302";
-  for (std::size_t at = typed.find(kCombiningHat); at != std::string::npos;
-       at = typed.find(kCombiningHat, at + 1)) {
-    if (at > 0 && std::string_view("ijkxyz").find(typed[at - 1]) != std::string_view::npos)
-      add(at - 1, typed.substr(at - 1, 1 + kCombiningHat.size()));
-  }
-  for (const char* hatted : {"î", "ĵ", "ŷ", "ẑ"}) {
-    if (const auto at = typed.find(hatted); at != std::string::npos) add(at, hatted);
+  for (const auto& [hatted, axis] : kHattedUnitVectors) {
+    if (const auto at = typed.find(hatted); at != std::string::npos) add(at, std::string(hatted));
   }
   const std::string unglued = unit_vectors_unglued(typed, table);
   for (const auto& [start, length] : identifiers(unglued)) {
@@ -802,19 +818,10 @@ namespace {
 // `typed` with each unit vector as a marker "@0", "@1" or "@2" (x, y, z), spaced apart.
 std::string unit_vectors_marked(const std::string& typed, const sym::SymbolTable& table) {
   std::string s = typed;
-  const std::array<std::pair<std::string_view, const char*>, 10> hatted{{{"i\u0302", " @0 "},
-                                                                         {"x\u0302", " @0 "},
-                                                                         {"î", " @0 "},
-                                                                         {"j\u0302", " @1 "},
-                                                                         {"y\u0302", " @1 "},
-                                                                         {"ĵ", " @1 "},
-                                                                         {"ŷ", " @1 "},
-                                                                         {"k\u0302", " @2 "},
-                                                                         {"z\u0302", " @2 "},
-                                                                         {"ẑ", " @2 "}}};
-  for (const auto& [hat, marker] : hatted) {
-    for (auto at = s.find(hat); at != std::string::npos; at = s.find(hat, at))
-      s.replace(at, hat.size(), marker);
+  for (const auto& [hatted, axis] : kHattedUnitVectors) {
+    const std::string marker = " @" + std::to_string(axis) + " ";
+    for (auto at = s.find(hatted); at != std::string::npos; at = s.find(hatted, at))
+      s.replace(at, hatted.size(), marker);
   }
   s = unit_vectors_unglued(s, table);
   std::string out;
@@ -863,12 +870,8 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
       if (term[i] == ')' || term[i] == ']') --inner;
     }
     const std::string before = trim(term.substr(0, at)), after = trim(term.substr(at + 2));
-    if (inner != 0 || (!before.empty() && (before.back() == '/' || before.back() == '^')) ||
-        (!after.empty() && after[0] == '^'))
-      return false;
-    const auto joins = [](char c) { return c == '*' || c == '/'; };
-    const std::string coefficient = before + (before.empty() || joins(before.back()) ? "" : "*") +
-                                    "1" + (after.empty() || joins(after[0]) ? "" : "*") + after;
+    if (inner != 0 || !is_factor_between(before, after)) return false;
+    const std::string coefficient = with_one_in_place(before, after);
     std::string& component = components.at(static_cast<std::size_t>(term[at + 1] - '0'));
     component +=
         (component.empty() && sign == "+" ? "" : " " + sign + " ") + "(" + coefficient + ")";
@@ -878,13 +881,7 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     const char c = sum[i];
     if (c == '(' || c == '[' || c == '{') ++depth;
     if (c == ')' || c == ']' || c == '}') --depth;
-    if (depth != 0 || (c != '+' && c != '-') || i == 0) continue;
-    const std::size_t before = sum.find_last_not_of(' ', i - 1);
-    if (before == std::string::npos) continue;
-    const char b = sum[before];
-    const bool exponent = (b == 'e' || b == 'E') && before > 0 &&
-                          std::isdigit(static_cast<unsigned char>(sum[before - 1]));
-    if (b == '*' || b == '/' || b == '^' || exponent) continue;  // a factor's sign
+    if (depth != 0 || (c != '+' && c != '-') || !starts_term(sum, i)) continue;
     if (!add_term(i)) return "";
     term_start = i;
   }

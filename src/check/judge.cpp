@@ -44,11 +44,19 @@ std::string shape_words(std::size_t rows, std::size_t cols, bool vector, bool ma
   return "a number";
 }
 
-// " (digits grouped? write 26233128.66)" where one number is wanted and `typed` starts with
-// one whose digits are grouped by threes: "26,233,128.66 s" reads as a 3-vector, "26 233 128.66
-// s" as numbers side by side. "" otherwise.
-std::string number_hint(const Answer& a, const std::string& typed) {
-  if (a.value.shape != Value::Shape::scalar) return "";
+// What `typed` more likely meant, in parentheses, or "". Where one number is wanted: a decimal
+// comma ("15,5deg" reads as two entries) or digits grouped by threes ("26,233,128.66 s" reads as
+// a 3-vector, "26 233 128.66 s" as numbers side by side). Where a vector or matrix is, and
+// `entries_read` were read: decimal commas, each splitting an entry in two ("(0,57, 4,21,
+// 4,56)" as a 6-vector).
+std::string misreading_hint(const Answer& a, const std::string& typed,
+                            std::optional<std::size_t> entries_read) {
+  if (a.value.shape != Value::Shape::scalar) {
+    const std::size_t split = commas_between_digits(typed);
+    const bool commas = entries_read && split > 0 && *entries_read == a.value.data.size() + split;
+    return commas ? fmt::format(" ({})", kDecimalCommaHint) : "";
+  }
+  if (looks_like_decimal_comma(typed)) return fmt::format(" ({})", kDecimalCommaHint);
   const std::string ungrouped = digits_ungrouped(typed);
   return ungrouped.empty() ? "" : fmt::format(" (digits grouped? write {})", ungrouped);
 }
@@ -57,17 +65,10 @@ void check_shape(const Answer& a, const sym::ValueText& v, const std::string& ty
   const bool key_vec = a.value.shape == Value::Shape::vector;
   const bool key_mat = a.value.shape == Value::Shape::matrix;
   if (key_vec != v.is_vector || key_mat != v.is_matrix || a.value.data.size() != v.entries.size()) {
-    // A number with a decimal comma reads as two entries; a vector or matrix with decimal
-    // commas as one entry more per such comma: "(0,57, 4,21, 4,56)" as a 6-vector.
-    const std::size_t split = commas_between_digits(typed);
-    const bool comma = key_vec || key_mat
-                           ? split > 0 && v.entries.size() == a.value.data.size() + split
-                           : looks_like_decimal_comma(typed);
-    throw InputError(
-        fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
-                    shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
-                    shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),
-                    comma ? fmt::format(" ({})", kDecimalCommaHint) : number_hint(a, typed)));
+    throw InputError(fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
+                                 shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
+                                 shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),
+                                 misreading_hint(a, typed, v.entries.size())));
   }
 }
 
@@ -314,14 +315,10 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
     try {
       return read_answer(text, ctx.table, kField);
     } catch (const InputError& e) {
-      // "15,5deg" reads as two entries, one without a unit, "26 233 128.66" as numbers side by
-      // side: where one number is wanted, say what was more likely meant.
-      if (a.value.shape != Value::Shape::scalar) throw;
-      if (looks_like_decimal_comma(text))
-        throw InputError(fmt::format("{} ({})", e.what(), kDecimalCommaHint));
-      const std::string grouped = number_hint(a, text);
-      if (grouped.empty()) throw;
-      throw InputError(e.what() + grouped);
+      // "15,5deg" reads as two entries, one without a unit: say what was more likely meant.
+      const std::string hint = misreading_hint(a, text, std::nullopt);
+      if (hint.empty()) throw;
+      throw InputError(e.what() + hint);
     }
   }();
   check_shape(a, p.value, text);

@@ -16,6 +16,10 @@ struct Decoded {
   std::size_t bytes;
 };
 
+bool is_digit(char c) {
+  return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
+
 Decoded decode(const std::string& text, std::size_t i) {
   auto it = text.begin() + static_cast<std::ptrdiff_t>(i);
   const code_point c = Utf8::decode(it, text.end());
@@ -79,7 +83,6 @@ std::string printable(const std::string& text, std::size_t max_characters) {
 }
 
 std::size_t commas_between_digits(const std::string& typed) {
-  const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
   std::size_t n = 0;
   for (std::size_t i = 1; i + 1 < typed.size(); ++i) {
     if (typed[i] == ',' && is_digit(typed[i - 1]) && is_digit(typed[i + 1])) ++n;
@@ -88,7 +91,6 @@ std::size_t commas_between_digits(const std::string& typed) {
 }
 
 std::string digits_ungrouped(const std::string& typed) {
-  const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
   // The separator at i and its length: a comma, a space, or a thin, narrow no-break or no-break
   // space (as SI writes and word processors set long numbers).
   const auto separator_at = [&](std::size_t i) -> std::pair<std::string, std::size_t> {
@@ -136,7 +138,6 @@ std::string digits_ungrouped(const std::string& typed) {
 }
 
 bool looks_like_decimal_comma(const std::string& typed) {
-  const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
   const std::size_t comma = typed.find(',');
   if (comma == std::string::npos || typed.find(',', comma + 1) != std::string::npos) return false;
   const std::size_t start = std::min(typed.find_first_not_of("-+ "), comma);

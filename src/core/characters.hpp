@@ -35,10 +35,9 @@ bool looks_like_decimal_comma(const std::string& typed);
 /// in a vector or matrix written with decimal commas, each such comma splits one entry in two.
 std::size_t commas_between_digits(const std::string& typed);
 /// The number `typed` starts with, its digits written without the separators that group them by
-/// threes ("26 233 128.66 s", thin or no-break spaces alike, "26 233 128,66" and
-/// "26,233,128.66"), if they are
-/// so grouped: "26233128.66"; "" otherwise. One comma alone ("1,234") is left to
-/// looks_like_decimal_comma: it may be either. What follows the number may be a unit.
+/// threes, if they are so grouped ("26 233 128.66 s", thin or no-break spaces alike, "26 233
+/// 128,66" and "26,233,128.66" all give "26233128.66"); "" otherwise. One comma alone ("1,234")
+/// is left to looks_like_decimal_comma: it may be either. What follows the number may be a unit.
 std::string digits_ungrouped(const std::string& typed);
 /// What a message adds in parentheses where looks_like_decimal_comma holds.
 inline constexpr const char* kDecimalCommaHint = "a decimal comma? write the point: 0.5, not 0,5";
