@@ -1,8 +1,11 @@
 #include "symbolic/units.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,7 +20,7 @@ struct Named {
   double to_si;
   std::array<int, 3> dim;
   bool angle;
-  const char* exact;  ///< to_si as a constant expression
+  std::string exact;  ///< to_si as a constant expression
 };
 
 // The units by name, in the order a message lists them.
@@ -53,6 +56,33 @@ const std::vector<std::pair<std::string, Named>>& units_in_order() {
 const std::map<std::string, Named>& names() {
   static const std::map<std::string, Named> n(units_in_order().begin(), units_in_order().end());
   return n;
+}
+
+// "kJ", "mN", "km", "µs" (read as "mus"), "mrad", "kHz": an SI prefix on a unit that takes one,
+// where the whole name is no unit of its own ("mm", "ms", "min" are). nullopt if it is none.
+std::optional<Named> prefixed(const std::string& name) {
+  struct Prefix {
+    std::string letters;
+    double factor;
+    std::string exact;
+  };
+  static const std::array<Prefix, 7> kPrefixes{{{"G", 1e9, "10^9"},
+                                                {"M", 1e6, "10^6"},
+                                                {"k", 1e3, "10^3"},
+                                                {"m", 1e-3, "10^(-3)"},
+                                                {"mu", 1e-6, "10^(-6)"},
+                                                {"u", 1e-6, "10^(-6)"},
+                                                {"n", 1e-9, "10^(-9)"}}};
+  static const std::array<std::string, 7> kTakesPrefix{"g", "m", "s", "J", "N", "Hz", "rad"};
+  for (const auto& p : kPrefixes) {
+    const std::string& letters = p.letters;
+    if (name.size() <= letters.size() || name.compare(0, letters.size(), letters) != 0) continue;
+    const std::string base = name.substr(letters.size());
+    if (std::find(kTakesPrefix.begin(), kTakesPrefix.end(), base) == kTakesPrefix.end()) continue;
+    const Named& b = names().at(base);
+    return Named{p.factor * b.to_si, b.dim, b.angle, "(" + p.exact + ")*(" + b.exact + ")"};
+  }
+  return std::nullopt;
 }
 
 // "kg, g, m, ...": every unit's name, for a message.
@@ -156,7 +186,9 @@ Unit parse_unit(const std::string& text, const std::string& field) {
   u.text = text;
   const auto fail = [&](const std::string& why) -> Unit {
     throw InputError(field + ": cannot read the unit '" + text + "': " + why +
-                     " (units: " + unit_list() + "; e.g. 'kg m^2', 'rad/s')");
+                     " (units: " + unit_list() +
+                     "; SI prefixes G M k m µ n on g, m, s, J, N, Hz, rad; e.g. 'kg m^2', "
+                     "'rad/s')");
   };
   bool denominator = false, any = false, after_denominator = false;
   std::size_t i = 0;
@@ -203,11 +235,14 @@ Unit parse_unit(const std::string& text, const std::string& field) {
     if (const auto spelled = spellings().find(name); spelled != spellings().end())
       name = spelled->second;
     const auto it = names().find(name);
-    if (it == names().end()) {
+    const std::optional<Named> with_prefix =
+        it == names().end() ? prefixed(name) : std::optional<Named>{};
+    if (it == names().end() && !with_prefix) {
       const std::string apart = run_together(name);
       return fail("unknown unit '" + name + "'" +
                   (apart.empty() ? "" : " ('" + apart + "', with spaces?)"));
     }
+    const Named& unit = with_prefix ? *with_prefix : it->second;
     int power = 1;
     if (j < text.size() && text[j] == '^') {
       // "s^-1", or "s^(-1)" as the answer reader writes a signed exponent (and "s⁻¹").
@@ -238,11 +273,10 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       power = -power;
       after_denominator = true;
     }
-    u.to_si *= std::pow(it->second.to_si, power);
-    if (std::string(it->second.exact) != "1")
-      u.to_si_exact += "*(" + std::string(it->second.exact) + ")^(" + std::to_string(power) + ")";
-    for (int d = 0; d < 3; ++d) u.dim[d] += it->second.dim[d] * power;
-    u.angle = u.angle || it->second.angle;
+    u.to_si *= std::pow(unit.to_si, power);
+    if (unit.exact != "1") u.to_si_exact += "*(" + unit.exact + ")^(" + std::to_string(power) + ")";
+    for (int d = 0; d < 3; ++d) u.dim[d] += unit.dim[d] * power;
+    u.angle = u.angle || unit.angle;
     any = true;
     i = j;
   }

@@ -7,8 +7,9 @@
 /// denominator: "kg m^2", "kg*m^2/s", "rad/s", "m/s^2", "deg", "rev/s", "1/s" (or "s^-1"), in one
 /// pair of brackets or not ("[kg m^2]", "(rad/s)", as a table's heading writes a unit).
 /// Names: kg, g; m, cm, mm; s, ms, min, h, day (days), yr (the Julian year); rad, deg, arcmin,
-/// arcsec, rev; J, N, Hz, rpm. An unknown
-/// name, a missing or non-integer power is an error.
+/// arcsec, rev; J, N, Hz, rpm; and an SI prefix (G, M, k, m, mu or u, n) on g, m, s, J, N, Hz
+/// and rad ("kJ", "mN", "mus" for µs), where the whole name is no unit of its own (min is
+/// minutes). An unknown name, a missing or non-integer power is an error.
 ///
 /// Radians, one rule everywhere: an angle is a pure number, so rad/s and 1/s are the same unit
 /// and a radian converts as 1; a degree is pi/180 and a revolution 2 pi. Hz and rpm count
