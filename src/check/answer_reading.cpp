@@ -9,7 +9,9 @@
 #include <tuple>
 #include <vector>
 
+#include "check/brackets.hpp"
 #include "check/latex_answer.hpp"
+#include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -17,70 +19,6 @@
 namespace wobble::check {
 
 namespace {
-bool opens(char c) {
-  return c == '[' || c == '(' || c == '{';
-}
-bool closes(char c) {
-  return c == ']' || c == ')' || c == '}';
-}
-
-// Splits at `sep` outside brackets (any whitespace when sep is ' ').
-std::vector<std::string> top_level(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::string cur;
-  int depth = 0;
-  for (const char c : s) {
-    if (opens(c)) ++depth;
-    if (closes(c)) --depth;
-    const bool split =
-        depth == 0 && (sep == ' ' ? std::isspace(static_cast<unsigned char>(c)) != 0 : c == sep);
-    if (split) {
-      if (sep != ' ' || !trim(cur).empty()) out.push_back(trim(cur));
-      cur.clear();
-    } else {
-      cur += c;
-    }
-  }
-  if (sep != ' ' || !trim(cur).empty()) out.push_back(trim(cur));
-  return out;
-}
-
-// The index of the bracket that closes the one at `open`, or npos.
-std::size_t matching(const std::string& s, std::size_t open) {
-  int depth = 0;
-  for (std::size_t i = open; i < s.size(); ++i) {
-    if (opens(s[i])) ++depth;
-    if (closes(s[i]) && --depth == 0) return i;
-  }
-  return std::string::npos;
-}
-
-bool wrapped(const std::string& s, char open) {
-  return s.size() >= 2 && s.front() == open && matching(s, 0) == s.size() - 1;
-}
-
-bool is_operator(char c) {
-  return c == '+' || c == '-' || c == '*' || c == '/' || c == '^';
-}
-
-// "0.7 0 -0.7" -> {"0.7", "0", "-0.7"}, but "1 - 2" and "2 * m" stay one entry: an operator
-// standing alone, ending a token or starting one (other than a sign) joins its neighbours.
-std::vector<std::string> space_separated_entries(const std::string& s) {
-  std::vector<std::string> entries;
-  for (const auto& t : top_level(s, ' ')) {
-    const bool joins =
-        !entries.empty() &&
-        ((t.size() == 1 && is_operator(t[0])) || t[0] == '*' || t[0] == '/' || t[0] == '^' ||
-         t[0] == ')' || is_operator(entries.back().back()) || entries.back().back() == '(');
-    if (joins) {
-      entries.back() += " " + t;
-    } else {
-      entries.push_back(t);
-    }
-  }
-  return entries;
-}
-
 std::string join(const std::vector<std::string>& items) {
   std::string out;
   for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + items[i];
@@ -255,6 +193,8 @@ std::string prepared(const std::string& typed) {
   }
   // "$m*R^2/4$": the math delimiters of a LaTeX or Markdown source around plain text.
   s = without_python_wrapper(without_math_delimiters(s));
+  // "diag(a, b, c)", "M/12 diag(..)": the matrix as rows (check/written_forms.hpp).
+  s = diagonals_written_out(s);
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
   for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
     s.replace(at, 2, "^");
@@ -304,6 +244,38 @@ const std::vector<std::string>& function_names() {
 // function's call stays one: "cos(a)", "atan2(y, x)").
 std::string starred(const std::string& s, const sym::SymbolTable& table) {
   const std::vector<std::string>& kFunctions = function_names();
+  // "2pi/3", "4l^2", "2sqrt(3)": a number glued to pi, a function or one of the problem's symbols
+  // that spells no unit; or one that does, in a product with one that does not ("0.25m R^2").
+  // Alone, where m is a mass, "2m" is two masses or two metres, and refused.
+  const auto ids = identifiers(s);
+  const bool symbol_spelling_no_unit = std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
+    const std::string name = s.substr(id.first, id.second);
+    return table.contains(name) && !is_unit(name);
+  });
+  const auto number_against_name = [&](const std::string& before, std::size_t at) {
+    if (!std::isalpha(static_cast<unsigned char>(s[at]))) return false;
+    std::size_t k = before.size();
+    while (k > 0 &&
+           (std::isdigit(static_cast<unsigned char>(before[k - 1])) || before[k - 1] == '.'))
+      --k;
+    if (k == before.size() || (k > 0 && (std::isalpha(static_cast<unsigned char>(before[k - 1])) ||
+                                         before[k - 1] == '_')))
+      return false;  // no number, or the digits end a name ("theta0")
+    const auto digit_at = [&](std::size_t j) {
+      return j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]));
+    };
+    const bool exponent =
+        (s[at] == 'e' || s[at] == 'E') &&
+        (digit_at(at + 1) || ((s[at + 1] == '+' || s[at + 1] == '-') && digit_at(at + 2)));
+    if (exponent) return false;  // "1e-3"
+    std::size_t end = at;
+    while (end < s.size() && (std::isalnum(static_cast<unsigned char>(s[end])) || s[end] == '_'))
+      ++end;
+    const std::string name = s.substr(at, end - at);
+    return name == "pi" || name == "Pi" ||
+           std::find(kFunctions.begin(), kFunctions.end(), name) != kFunctions.end() ||
+           (table.contains(name) && (symbol_spelling_no_unit || !is_unit(name)));
+  };
   const auto glued_product = [&](const std::string& before, char next) {
     const char last = before.back();
     if (last == ')')
@@ -330,7 +302,7 @@ std::string starred(const std::string& s, const sym::SymbolTable& table) {
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s[i] != ' ') {
-      if (!out.empty() && glued_product(out, s[i])) out += '*';
+      if (!out.empty() && (glued_product(out, s[i]) || number_against_name(out, i))) out += '*';
       out += s[i];
       continue;
     }
@@ -398,7 +370,11 @@ bool may_be_side_by_side(const std::string& s, const sym::SymbolTable& table) {
         start < i && (start == 0 || !std::isalpha(static_cast<unsigned char>(s[start - 1])));
     if (number_before && next != std::string::npos && numeric(s[next])) return false;
   }
-  return has_identifier_of(s, table) || s.find(' ') == std::string::npos;
+  const auto ids = identifiers(s);
+  const bool names_pi = std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
+    return s.compare(id.first, id.second, "pi") == 0 || s.compare(id.first, id.second, "Pi") == 0;
+  });  // "1/6 pi", "0.25 pi"
+  return names_pi || has_identifier_of(s, table) || s.find(' ') == std::string::npos;
 }
 
 // Reads factors side by side into p, a '*' for each space between two factors, where they may
@@ -441,6 +417,24 @@ std::string underscores_dropped(const std::string& s, const sym::SymbolTable& ta
   return out + s.substr(done);
 }
 
+// "[0.5, 1, 1.5]m", "(0.5, 1, 1.5)m/s": a unit glued to a vector's bracket, where the unit has
+// no letters the problem uses as a symbol. {s, ""} when s is not such a pair.
+std::pair<std::string, std::string> split_bracket_unit(const std::string& s,
+                                                       const sym::SymbolTable& table) {
+  if (s.empty() || (s[0] != '[' && s[0] != '(')) return {s, ""};
+  const std::size_t close = matching(s, 0);
+  if (close == std::string::npos || close + 1 >= s.size()) return {s, ""};
+  const std::string inside = s.substr(1, close - 1), unit = trim(s.substr(close + 1));
+  const bool vector = top_level(inside, ',').size() > 1 || top_level(inside, ';').size() > 1 ||
+                      space_separated_entries(inside).size() > 1;
+  if (!vector || !std::isalpha(static_cast<unsigned char>(unit[0])) || !is_unit(unit))
+    return {s, ""};
+  for (const auto& [start, length] : identifiers(unit)) {
+    if (table.contains(unit.substr(start, length))) return {s, ""};
+  }
+  return {s.substr(0, close + 1), unit};
+}
+
 // "45deg", "0.21kg", "3.1rad/s": a plain number with its unit glued on, where the unit has no
 // letters the problem uses as a symbol ("2m" is 2 metres in the heavy top, but 2 m, refused as
 // such, where m is a mass). {s, ""} when s is not such a pair.
@@ -459,8 +453,11 @@ std::pair<std::string, std::string> split_glued_unit(const std::string& s,
       k = e;
     }
   }
-  const std::string number = s.substr(0, k), unit = trim(s.substr(k));
-  if (unit.empty() || !std::isalpha(static_cast<unsigned char>(unit[0])) || !is_unit(unit))
+  const std::string number = s.substr(0, k), glued = trim(s.substr(k));
+  // "4.995/s", "4.995 /s": a reciprocal unit without its 1.
+  const std::string unit = !glued.empty() && glued[0] == '/' ? "1" + glued : glued;
+  if (unit.empty() || glued[0] == '1' ||
+      !(std::isalpha(static_cast<unsigned char>(unit[0])) || unit[0] == '1') || !is_unit(unit))
     return {s, ""};
   for (const auto& [start, length] : identifiers(unit)) {
     if (table.contains(unit.substr(start, length))) return {s, ""};
@@ -939,11 +936,12 @@ ReadAnswer read_transposed(const std::string& typed, const sym::SymbolTable& tab
 
 ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& table,
                            const std::string& field) {
-  const std::string answer = without_closing_punctuation(typed);
+  // "0.5 1 1.5", or lines of numbers as MATLAB shows a matrix: a vector or a matrix.
+  const std::string answer = number_rows(typed).value_or(without_closing_punctuation(typed));
   // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
   const std::string source =
       looks_like_latex(answer) ? latex_as_text(answer, table, field) : answer;
-  const std::string text = underscores_dropped(prepared(source), table);
+  const std::string text = sexagesimal_degrees(underscores_dropped(prepared(source), table));
   if (text.empty()) {
     throw InputError(field +
                      ": empty; type a number (with a unit if you like), a vector [x, y, "
@@ -953,6 +951,7 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
   // are "40 deg", "30 deg" and 70.
   const EntryUnits entry_units = units_per_entry(text, table, field);
   auto [value, unit] = std::pair{entry_units.value, entry_units.unit};
+  if (unit.empty()) std::tie(value, unit) = split_bracket_unit(text, table);
   if (unit.empty()) std::tie(value, unit) = split_unit(text);
   if (unit.empty()) std::tie(value, unit) = split_glued_unit(text, table);
   // "M g", "2 M l g": an expression in the problem's symbols is in SI already, so a tail of its

@@ -15,6 +15,13 @@
 /// - matrices as printed, row by row ("[ 10 0 0 ] [ 0 6 1 ] [ 0 1 6 ]", on one line or several);
 /// - MATLAB's rows "[10 0 0; 0 6 1; 0 1 6]" (a column "[1; 2; 3]" is a vector) and Mathematica's
 ///   lists "{{10, 0, 0}, {0, 6, 1}, {0, 1, 6}}";
+/// - a diagonal matrix as a call, lines of numbers as MATLAB shows them, labelled components
+///   ("x = 0.5, y = 1, z = 1.5") and degrees with minutes and seconds of arc: written_forms.hpp;
+/// - a number glued to pi, a function or a symbol that spells no unit, as a product ("2pi/3",
+///   "4l^2", "2sqrt(3)"; "0.25m R^2" where m is a mass, beside another symbol), and pi beside a
+///   number ("1/6 pi");
+/// - a unit glued to a vector's bracket, "(0.5, 1, 1.5)m", and per second without its 1,
+///   "4.995/s";
 /// - a vector or matrix with a factor outside, "M/12 [[b^2 + c^2, 0, 0], ..]", "[a, b, c]/2",
 ///   "1/2 (a, b, c) m" (a product only: the rest is a factor times the bracket);
 /// - a numeric exponent with its sign, "10^-4" (read as 10^(-4), as a student means it), and

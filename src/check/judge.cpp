@@ -14,6 +14,7 @@
 #include "check/diagnosis.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
+#include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/inertia.hpp"
 #include "core/input_error.hpp"
@@ -292,6 +293,18 @@ std::vector<std::string> sides(const std::string& text, const std::string& name)
   return out;
 }
 
+// "≈ 4.995 rad/s", "φ̇ ≈ 4.995 rad/s", "~4.995": a value given as approximate is judged as
+// given with '=' (every number is judged to a tolerance). A '~' only first: in LaTeX it is a space.
+std::string approximations_as_equal(const std::string& text) {
+  std::string s = trim(text);
+  if (!s.empty() && s[0] == '~') s[0] = '=';
+  for (const std::string sign : {"≈", "≃", "∼"}) {
+    for (auto at = s.find(sign); at != std::string::npos; at = s.find(sign, at))
+      s.replace(at, sign.size(), "=");
+  }
+  return s;
+}
+
 // "theta_L", "θ_L", "\theta_{L}", "E′": one name, with no operator or number that would make it
 // an expression.
 bool is_one_name(const std::string& side) {
@@ -360,7 +373,11 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
 Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
               const Options& options) {
   // "$$ m R^2/4 = 0.00072 $$": the delimiters are around both sides.
-  const auto parts = sides(without_math_delimiters(text), a.name);
+  const std::string written = without_math_delimiters(text);
+  // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
+  if (const auto components = labelled_components(written, kField))
+    return judge_one(ctx, a, *components, options);
+  const auto parts = sides(approximations_as_equal(written), a.name);
   if (parts.size() == 1) return judge_one(ctx, a, parts[0], options);
   // A key's line has a closed form and a value; judging more sides only costs time (each may be
   // an expression to simplify).

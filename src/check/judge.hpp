@@ -19,6 +19,10 @@
 /// inertia with the wrong sign, degrees for radians, rev/s for rad/s, a factor 2, 4 or 12,
 /// another answer of the key such as the body-frame vector for the space-frame one), else
 /// the size of its error.
+///
+/// A line of a key may be pasted with its '=' ("I0 = m·R²/4 = 0.00072 kg m²"): every side is
+/// judged. '≈' (and '≃', '∼', a leading '~') reads as '='; components one by one with their
+/// labels ("x = 0.5, y = 1, z = 1.5") are one vector (written_forms.hpp).
 #include <optional>
 #include <string>
 #include <vector>

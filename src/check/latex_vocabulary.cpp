@@ -43,11 +43,12 @@ const std::map<std::string, std::string>& function_commands() {
   return m;
 }
 
-// Function names typed as letters (inside \operatorname too).
+// Function names typed as letters (inside \operatorname too); diag makes a diagonal matrix
+// (check/written_forms.hpp).
 const std::set<std::string>& function_names() {
-  static const std::set<std::string> s{"sin",   "cos",  "tan",       "asin",     "acos", "atan",
-                                       "atan2", "sinh", "cosh",      "tanh",     "exp",  "log",
-                                       "sqrt",  "abs",  "EllipticK", "EllipticE"};
+  static const std::set<std::string> s{"sin",   "cos",  "tan",       "asin",      "acos", "atan",
+                                       "atan2", "sinh", "cosh",      "tanh",      "exp",  "log",
+                                       "sqrt",  "abs",  "EllipticK", "EllipticE", "diag"};
   return s;
 }
 

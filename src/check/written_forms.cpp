@@ -1,0 +1,256 @@
+#include "check/written_forms.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <vector>
+
+#include "check/brackets.hpp"
+#include "check/judge.hpp"
+#include "core/characters.hpp"
+#include "core/input_error.hpp"
+
+namespace wobble::check {
+
+namespace {
+// The calls that make a diagonal matrix, the longest first so that "np.diag" is not read as
+// "np." and "diag".
+const std::array<std::string, 8>& diagonal_calls() {
+  static const std::array<std::string, 8> calls{
+      "DiagonalMatrix", "numpy.diag", "sympy.diag", "Matrix.diag", "np.diag", "sp.diag",
+      "diagm",          "diag"};
+  return calls;
+}
+
+// The call's name starting at `at` (and a bracket after it), or "".
+std::string diagonal_call_at(const std::string& s, std::size_t at) {
+  if (at > 0) {
+    const char before = s[at - 1];
+    if (std::isalnum(static_cast<unsigned char>(before)) || before == '_' || before == '.')
+      return "";
+  }
+  for (const auto& name : diagonal_calls()) {
+    if (s.compare(at, name.size(), name) != 0) continue;
+    const std::size_t open = s.find_first_not_of(' ', at + name.size());
+    if (open != std::string::npos && (s[open] == '(' || s[open] == '[')) return name;
+  }
+  return "";
+}
+
+// The diagonal's entries: "a, b, c", "[a, b, c]", "[a b c]" (MATLAB), "[a; b; c]".
+std::vector<std::string> diagonal_entries(std::string inside) {
+  inside = trim(inside);
+  if (wrapped(inside, '[') || wrapped(inside, '(')) inside = trim(inside.substr(1, inside.size() - 2));
+  for (const char sep : {',', ';'}) {
+    if (auto items = top_level(inside, sep); items.size() > 1) return items;
+  }
+  return space_separated_entries(inside);
+}
+
+// "0.5", "-1.25e-3", "+2.": a number as a program prints one, and nothing else.
+bool is_plain_number(const std::string& token) {
+  std::size_t i = token.size() > 1 && (token[0] == '-' || token[0] == '+') ? 1 : 0;
+  std::size_t digits = 0;
+  while (i < token.size() && (std::isdigit(static_cast<unsigned char>(token[i])) || token[i] == '.')) {
+    digits += token[i] != '.';
+    ++i;
+  }
+  if (digits == 0 || std::count(token.begin(), token.end(), '.') > 1) return false;
+  if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+    ++i;
+    if (i < token.size() && (token[i] == '-' || token[i] == '+')) ++i;
+    const std::size_t exponent = i;
+    while (i < token.size() && std::isdigit(static_cast<unsigned char>(token[i]))) ++i;
+    if (i == exponent) return false;
+  }
+  return i == token.size();
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t k = 0; k < items.size(); ++k) out += (k ? ", " : "") + items[k];
+  return out;
+}
+
+// The slots, if each is taken once.
+std::optional<std::vector<std::size_t>> checked(const std::vector<std::size_t>& slots) {
+  std::vector<std::size_t> sorted = slots;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t k = 0; k < sorted.size(); ++k) {
+    if (sorted[k] != k) return std::nullopt;
+  }
+  return slots;
+}
+
+// Where each label's component goes: Euler's angles by name ("phi, theta, psi", "alpha, beta,
+// gamma", as a key orders them), or names alike but for one character, at one place, that says
+// the component ("x", "omega_x", "x_cm", "I1"). nullopt where the labels say no order.
+std::optional<std::vector<std::size_t>> component_slots(const std::vector<std::string>& labels) {
+  for (const auto& names : {std::array<std::string, 3>{"phi", "theta", "psi"},
+                            std::array<std::string, 3>{"alpha", "beta", "gamma"}}) {
+    std::vector<std::size_t> slots;
+    for (const auto& l : labels) {
+      const auto at = std::find(names.begin(), names.end(), l);
+      if (at != names.end()) slots.push_back(static_cast<std::size_t>(at - names.begin()));
+    }
+    if (slots.size() == labels.size() && labels.size() == names.size()) return checked(slots);
+  }
+  const std::string& first = labels[0];
+  std::vector<std::size_t> places;  // where some label differs from the first
+  for (const auto& l : labels) {
+    if (l.size() != first.size()) return std::nullopt;
+    for (std::size_t k = 0; k < l.size(); ++k) {
+      if (l[k] != first[k] && std::find(places.begin(), places.end(), k) == places.end())
+        places.push_back(k);
+    }
+  }
+  if (places.size() != 1 || labels.size() != 3) return std::nullopt;
+  std::string axes;
+  for (const auto& l : labels)
+    axes += static_cast<char>(std::tolower(static_cast<unsigned char>(l[places[0]])));
+  const std::string order = axes.find_first_of("xyz") != std::string::npos ? "xyz" : "123";
+  std::vector<std::size_t> slots;
+  for (const char a : axes) {
+    if (order.find(a) == std::string::npos) return std::nullopt;
+    slots.push_back(order.find(a));
+  }
+  return checked(slots);
+}
+}  // namespace
+
+std::string diagonals_written_out(const std::string& ascii) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < ascii.size()) {
+    const std::string name = diagonal_call_at(ascii, i);
+    if (name.empty()) {
+      out += ascii[i++];
+      continue;
+    }
+    const std::size_t open = ascii.find_first_not_of(' ', i + name.size());
+    const std::size_t close = matching(ascii, open);
+    if (close == std::string::npos) {  // the reader names the unbalanced bracket
+      out += ascii.substr(i);
+      break;
+    }
+    const std::vector<std::string> entries =
+        diagonal_entries(ascii.substr(open + 1, close - open - 1));
+    if (entries.size() < 2 || std::any_of(entries.begin(), entries.end(),
+                                          [](const std::string& e) { return e.empty(); })) {
+      out += ascii.substr(i, close + 1 - i);  // no diagonal: the reader says what it is
+    } else {
+      out += '[';
+      for (std::size_t r = 0; r < entries.size(); ++r) {
+        out += r ? ", [" : "[";
+        for (std::size_t c = 0; c < entries.size(); ++c)
+          out += (c ? ", " : "") + (r == c ? entries[r] : std::string("0"));
+        out += ']';
+      }
+      out += ']';
+    }
+    i = close + 1;
+  }
+  return out;
+}
+
+std::optional<std::string> number_rows(const std::string& typed) {
+  std::vector<std::vector<std::string>> rows;
+  std::size_t start = 0;
+  while (start <= typed.size()) {
+    const std::size_t end = std::min(typed.find('\n', start), typed.size());
+    std::vector<std::string> row;
+    for (const auto& token : top_level(typed.substr(start, end - start), ' ')) {
+      if (!is_plain_number(token)) return std::nullopt;
+      row.push_back(token);
+    }
+    if (!row.empty()) rows.push_back(std::move(row));
+    start = end + 1;
+  }
+  if (rows.empty()) return std::nullopt;
+  const std::size_t columns = rows[0].size();
+  for (const auto& r : rows) {
+    if (r.size() != columns) return std::nullopt;
+  }
+  if (rows.size() == 1 && columns == 1) return std::nullopt;  // one number
+  std::vector<std::string> entries;  // a row or a column: a vector
+  if (rows.size() == 1 || columns == 1) {
+    for (const auto& r : rows) entries.insert(entries.end(), r.begin(), r.end());
+    return "[" + joined(entries) + "]";
+  }
+  for (const auto& r : rows) entries.push_back("[" + joined(r) + "]");
+  return "[" + joined(entries) + "]";
+}
+
+std::string sexagesimal_degrees(const std::string& ascii) {
+  std::size_t i = 0;
+  const auto spaces = [&] {
+    while (i < ascii.size() && ascii[i] == ' ') ++i;
+  };
+  const auto number = [&]() -> std::string {
+    spaces();
+    const std::size_t start = i;
+    while (i < ascii.size() && (std::isdigit(static_cast<unsigned char>(ascii[i])) || ascii[i] == '.'))
+      ++i;
+    return ascii.substr(start, i - start);
+  };
+  const auto mark = [&](std::initializer_list<const char*> marks) {
+    spaces();
+    for (const std::string m : marks) {
+      if (ascii.compare(i, m.size(), m) == 0) {
+        i += m.size();
+        return true;
+      }
+    }
+    return false;
+  };
+  spaces();
+  const std::string sign = i < ascii.size() && (ascii[i] == '-' || ascii[i] == '+')
+                               ? std::string(1, ascii[i++])
+                               : std::string();
+  const std::string degrees = number();
+  if (degrees.empty() || !mark({"deg"})) return ascii;
+  const std::string minutes = number();
+  if (minutes.empty() || !mark({"arcmin", "'"})) return ascii;
+  std::string seconds = number();
+  if (!seconds.empty() && !mark({"arcsec", "''", "\""})) return ascii;
+  spaces();
+  if (i != ascii.size()) return ascii;
+  return sign + "(" + degrees + " + " + minutes + "/60" +
+         (seconds.empty() ? "" : " + " + seconds + "/3600") + ") deg";
+}
+
+std::optional<std::string> labelled_components(const std::string& text,
+                                               const std::string& field) {
+  const std::vector<std::string> items = top_level(text, ',');
+  if (items.size() < 2) return std::nullopt;
+  std::vector<std::string> labels, values;
+  for (const auto& item : items) {
+    const std::vector<std::string> sides = top_level(item, '=');
+    if (sides.size() != 2 || sides[0].empty() || sides[1].empty()) return std::nullopt;
+    labels.push_back(name_spelling(sides[0]));
+    values.push_back(sides[1]);
+  }
+  const auto refuse = [&]() -> std::optional<std::string> {
+    throw InputError(field +
+                     ": components given one by one need one label for each, the same name "
+                     "with x, y, z or 1, 2, 3 in it (x = 0.5, y = 1, z = 1.5), or Euler's "
+                     "angles by name; or write the vector [x, y, z]");
+  };
+  const std::optional<std::vector<std::size_t>> slots = component_slots(labels);
+  if (!slots) return refuse();
+  std::vector<std::string> in_order(labels.size());
+  for (std::size_t k = 0; k < labels.size(); ++k) in_order[(*slots)[k]] = values[k];
+  // "e1 = (..), e2 = (..), e3 = (..)": vectors labelled so are a matrix's columns, as the key's
+  // principal axes are; written as its rows, transposed.
+  const bool columns = std::all_of(in_order.begin(), in_order.end(), [](const std::string& v) {
+    return wrapped(v, '(') || wrapped(v, '[');
+  });
+  std::string vector = "[";
+  for (std::size_t k = 0; k < in_order.size(); ++k) {
+    const std::string& v = in_order[k];
+    vector += (k ? ", " : "") + (columns ? "[" + v.substr(1, v.size() - 2) + "]" : v);
+  }
+  return vector + (columns ? "]^T" : "]");
+}
+
+}  // namespace wobble::check

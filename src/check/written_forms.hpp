@@ -1,0 +1,40 @@
+#pragma once
+/// @file
+/// Forms of a whole answer that name its parts instead of laying them out, rewritten to the
+/// reading form (answer_reading.hpp) before the answer is read:
+/// - a diagonal matrix as a call, as the key's steps print one ("diag(M·(b² + c²)/12, ..)") and
+///   as MATLAB, NumPy, SymPy, Julia and Mathematica write it: "diag(a, b, c)",
+///   "np.diag([a, b, c])", "diag([a b c])", "diagm([a, b, c])", "DiagonalMatrix[{a, b, c}]";
+/// - numbers laid out in lines without brackets, as MATLAB displays a result: "0.5 1 1.5" (a
+///   vector), one number on each line (a column: a vector), or rows of numbers (a matrix);
+/// - an angle in degrees, minutes and seconds of arc, "44°41′", "44° 41′ 37″", "44°41'37\"";
+/// - a vector's components given one by one with their labels, as a student lists them:
+///   "x = 0.5, y = 1, z = 1.5", "ω₁ = 2 rad/s, ω₂ = 0, ω₃ = 9.7 rad/s", "I1 = .., I2 = .., I3 = ..".
+///   The labels differ in their last letter or digit only, x y z or 1 2 3 (in any order: the
+///   components are put in theirs).
+#include <optional>
+#include <string>
+
+namespace wobble::check {
+
+/// "[0.5, 1, 1.5]" for "0.5 1 1.5", "[[1, 0], [0, 2]]" for the lines "1 0" and "0 2": text
+/// that is only plain numbers (two or more), separated by spaces and line breaks, each line as
+/// many; nullopt for any other text.
+std::optional<std::string> number_rows(const std::string& typed);
+
+/// "(44 + 41/60 + 37/3600) deg" for "44 deg 41 arcmin 37 arcsec" (the ASCII of "44° 41′ 37″";
+/// "'" and '"' as well as arcmin and arcsec), a sign before it outside the bracket; `ascii` itself
+/// when the whole of it is no such angle.
+std::string sexagesimal_degrees(const std::string& ascii);
+
+/// `ascii` with each diagonal matrix written as its rows: "M/12 diag(a, b, c)" ->
+/// "M/12 [[a, 0, 0], [0, b, 0], [0, 0, c]]". Text that is no such call is left as it is.
+std::string diagonals_written_out(const std::string& ascii);
+
+/// "[0.5, 1, 1.5]" for "x = 0.5, y = 1, z = 1.5" (the text as typed, Unicode or not); nullopt for
+/// a text that is no list of labelled components.
+/// @throws InputError naming `field` for such a list whose labels are not one name for each of
+///   x, y, z or 1, 2, 3 (its components could be put in no order).
+std::optional<std::string> labelled_components(const std::string& text, const std::string& field);
+
+}  // namespace wobble::check

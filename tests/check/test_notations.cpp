@@ -1,0 +1,218 @@
+// Notations students write that name the parts of an answer instead of laying them out, or
+// that write a number as a calculator or a textbook does: each read as the key's answer when it
+// is the key's value, and as wrong when it is not. Every value is the key's own, formatted here.
+#include <fmt/format.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "check/check_fixture.hpp"
+#include "check/judge.hpp"
+#include "core/input_error.hpp"
+#include "symbolic/units.hpp"
+
+using namespace wobble;
+using Catch::Matchers::WithinRel;
+using Fixture = wobble::test::CheckFixture;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// The first "diag(...)" in the steps of the key's parts: as `wobble solve` prints it.
+std::string printed_diagonal(const Fixture& f) {
+  for (const auto& part : f.key.parts) {
+    for (const auto& step : part.steps) {
+      const auto at = step.text.find("diag(");
+      if (at == std::string::npos) continue;
+      int depth = 0;
+      for (std::size_t i = at + 4; i < step.text.size(); ++i) {
+        depth += step.text[i] == '(' ? 1 : step.text[i] == ')' ? -1 : 0;
+        if (depth == 0) return step.text.substr(at, i + 1 - at);
+      }
+    }
+  }
+  throw std::logic_error("no diag(..) in the key's steps");
+}
+
+// The diagonal of a 3x3 key, each entry times `factor`, formatted by `f`.
+std::vector<std::string> diagonal_of(const Fixture& fx, const std::string& name,
+                                     double factor = 1.0) {
+  const auto& d = fx.answer(name).value.data;
+  return {fmt::format("{:.10g}", d[0] * factor), fmt::format("{:.10g}", d[4] * factor),
+          fmt::format("{:.10g}", d[8] * factor)};
+}
+}  // namespace
+
+TEST_CASE("units with SI prefixes") {
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (const auto& [unit, to_si] :
+       std::vector<std::pair<std::string, double>>{{"kJ", 1e3},
+                                                   {"mJ", 1e-3},
+                                                   {"mN m", 1e-3},
+                                                   {"km", 1e3},
+                                                   {"mus", 1e-6},  // µs, as read into ASCII
+                                                   {"us", 1e-6},
+                                                   {"mrad/s", 1e-3},
+                                                   {"kHz", 2e3 * kPi},
+                                                   {"mg cm^2", 1e-10}}) {
+    INFO(unit);
+    REQUIRE_THAT(parse_unit(unit, "u").to_si, WithinRel(to_si, 4 * eps));
+  }
+  REQUIRE(parse_unit("MJ", "u").same_dimension(parse_unit("J", "u")));
+  // A name that is a unit of its own keeps its meaning: minutes, not milli-inches.
+  REQUIRE_THAT(parse_unit("min", "u").to_si, WithinRel(60.0, eps));
+  for (const std::string& bad : std::vector<std::string> {"xJ", "kdeg", "kkg", "mday", "k", "Mrpm"}) {
+    INFO(bad);
+    REQUIRE_THROWS_AS(parse_unit(bad, "u"), InputError);
+  }
+}
+
+TEST_CASE("numbers as calculators and textbooks write them") {
+  const Fixture top("heavy-top");
+  const double theta0 = top.answer("theta_min").value.data[0];  // pi/6 at the defaults
+  REQUIRE_THAT(theta0, WithinRel(kPi / 6, 1e-15));
+  // A number glued to pi, or beside it; a symbol that spells no unit glued to its number.
+  for (const std::string& same : std::vector<std::string> {"2π/12", "2pi/12", "2 π/12", "1/6 π", "0.16667 π", "0.16667π",
+                                 "0.16667π rad", "(1/6)π", "π/6 rad"}) {
+    INFO(same);
+    REQUIRE(top.check("theta_min", same).correct);
+  }
+  REQUIRE_FALSE(top.check("theta_min", "2π/13").correct);
+  REQUIRE(top.check("omega3_min", "2√(l g (4l²+R²))/R²").correct);
+  REQUIRE(top.check("p_psi", "0.5M R^2 psidot0").correct);
+  REQUIRE(top.check("omega3_min", "2sqrt(l g (4l^2+R^2))/R^2").correct);
+  // An exponent stays one: 1e-3 is no 1 times a symbol e.
+  REQUIRE_FALSE(top.check("p_psi", "1e-3 M").correct);
+
+  const double rate = top.answer("phidot_slow").value.data[0];
+  const std::string r = fmt::format("{:.6g}", rate);
+  // Per second without its 1; approximately equal; an SI prefix.
+  for (const std::string& same : std::vector<std::string> {r + "/s", r + " /s", "≈ " + r + " rad/s", "~" + r + " rad/s",
+                                 "φ̇ ≈ " + r + " rad/s", "phidot_slow ≃ " + r,
+                                 fmt::format("{:.6g} mrad/s", rate * 1e3)}) {
+    INFO(same);
+    REQUIRE(top.check("phidot_slow", same).correct);
+  }
+  REQUIRE_FALSE(top.check("phidot_slow", r + "/min").correct);
+  REQUIRE_FALSE(top.check("phidot_slow", "≈ " + fmt::format("{:.6g}", rate * 1.05)).correct);
+  const double energy = top.answer("energy").value.data[0];
+  REQUIRE(top.check("energy", fmt::format("{:.6g} mJ", energy * 1e3)).correct);
+  REQUIRE(top.check("energy", fmt::format("{:.6g} kJ", energy * 1e-3)).correct);
+  REQUIRE_FALSE(top.check("energy", fmt::format("{:.6g} kJ", energy)).correct);
+
+  // Degrees, minutes and seconds of arc.
+  const double deg = top.answer("theta_max").value.data[0] * 180 / kPi;
+  const int d = static_cast<int>(deg), m = static_cast<int>((deg - d) * 60);
+  const double s = ((deg - d) * 60 - m) * 60;
+  for (const std::string& same : std::vector<std::string>
+       {fmt::format("{}°{}′{:.1f}″", d, m, s), fmt::format("{}° {}′ {:.1f}″", d, m, s),
+        fmt::format("{}°{}'{:.1f}\"", d, m, s), fmt::format("{}°{:.2f}′", d, m + s / 60),
+        fmt::format("{} deg {} arcmin {:.1f} arcsec", d, m, s)}) {
+    INFO(same);
+    REQUIRE(top.check("theta_max", same).correct);
+  }
+  REQUIRE_FALSE(top.check("theta_max", fmt::format("{}°{}′", d + 2, m)).correct);
+  REQUIRE_FALSE(top.check("theta_max", fmt::format("-{}°{}′", d, m)).correct);
+
+  // Where m is a mass, a glued "2m" is still two masses or two metres, and refused; in a
+  // product with another symbol it is the mass.
+  const Fixture plate("flying-plate");
+  REQUIRE(plate.check("I0", "0.25m R^2").correct);
+  REQUIRE_THROWS_WITH(plate.check("I0", "2m"), Catch::Contains("one of the problem's symbols"));
+}
+
+TEST_CASE("a diagonal matrix written as a call reads as the matrix") {
+  const Fixture box("box-corner");
+  // The key's own step, pasted: "diag(M·(b² + c²)/12, ...)".
+  const std::string step = printed_diagonal(box);
+  REQUIRE(box.check("I_cm", step).correct);
+  const auto v = diagonal_of(box, "I_cm");
+  const std::string list = v[0] + ", " + v[1] + ", " + v[2];
+  for (const std::string& same : std::vector<std::string>
+       {"diag(" + list + ") kg m^2", "np.diag([" + list + "])", "numpy.diag([" + list + "])",
+        "diag([" + v[0] + " " + v[1] + " " + v[2] + "])", "diagm([" + list + "])",
+        "DiagonalMatrix[{" + list + "}]", "sp.diag(" + list + ")",
+        "M/12 diag(b²+c², a²+c², a²+b²)", "\\operatorname{diag}(" + list + ")"}) {
+    INFO(same);
+    REQUIRE(box.check("I_cm", same).correct);
+  }
+  REQUIRE_FALSE(box.check("I_cm", "diag(" + v[0] + ", " + v[2] + ", " + v[1] + ")").correct);
+  REQUIRE_THROWS_WITH(box.check("I_cm", "diag(" + v[0] + ", " + v[1] + ")"),
+                      Catch::Contains("3x3 matrix") && Catch::Contains("2x2"));
+}
+
+TEST_CASE("components given one by one with their labels") {
+  const Fixture box("box-corner");
+  const auto& c = box.answer("center_of_mass").value.data;
+  const auto f = [&](std::size_t k) { return fmt::format("{:.10g}", c[k]); };
+  for (const std::string& same : std::vector<std::string>
+       {"x = " + f(0) + ", y = " + f(1) + ", z = " + f(2),
+        "z = " + f(2) + " m, x = " + f(0) + " m, y = " + f(1) + " m",  // any order
+        "x_cm = a/2, y_cm = b/2, z_cm = c/2", "r₁ = " + f(0) + ", r₂ = " + f(1) + ", r₃ = " + f(2)}) {
+    INFO(same);
+    REQUIRE(box.check("center_of_mass", same).correct);
+  }
+  REQUIRE_FALSE(box.check("center_of_mass", "x = " + f(1) + ", y = " + f(0) + ", z = " + f(2)).correct);
+  for (const std::string& none : std::vector<std::string> {"x = 1, y = 2, w = 3", "x = 1, x = 2, z = 3", "x = 1, y = 2",
+                                 "a = 1, b = 2, c = 3"}) {
+    INFO(none);
+    REQUIRE_THROWS_WITH(box.check("center_of_mass", none),
+                        Catch::Contains("components given one by one"));
+  }
+  const auto& moments = box.answer("principal_moments_corner").value.data;
+  REQUIRE(box.check("principal_moments_corner",
+                    fmt::format("I₁ = {:.6g} kg m², I₂ = {:.6g} kg m², I₃ = {:.6g} kg m²",
+                                moments[0], moments[1], moments[2]))
+              .correct);
+  // Principal axes by name are the key's columns.
+  const auto& axes = box.answer("principal_axes_corner").value.data;  // row-major, axes columns
+  const auto column = [&](std::size_t k) {
+    return fmt::format("({:.8f}, {:.8f}, {:.8f})", axes[k], axes[3 + k], axes[6 + k]);
+  };
+  const check::Verdict by_name = box.check("principal_axes_corner", "e1 = " + column(0) + ", e2 = " +
+                                                                 column(1) + ", e3 = " + column(2));
+  REQUIRE(by_name.correct);
+  REQUIRE_THAT(by_name.line, Catch::Contains("as columns"));
+
+  // Euler's angles by name, in the order of the key's vector.
+  const Fixture euler("euler-angles");
+  const auto& angles = euler.answer("angles_phy711").value.data;
+  const auto degrees = [&](std::size_t k) { return fmt::format("{:.8g}°", angles[k] * 180 / kPi); };
+  REQUIRE(euler.check("angles_phy711",
+                      "γ = " + degrees(2) + ", α = " + degrees(0) + ", β = " + degrees(1))
+              .correct);
+  REQUIRE(euler.check("angles_phy711",
+                      "phi = " + degrees(0) + ", theta = " + degrees(1) + ", psi = " + degrees(2))
+              .correct);
+  REQUIRE_FALSE(euler
+                    .check("angles_phy711",
+                           "α = " + degrees(1) + ", β = " + degrees(0) + ", γ = " + degrees(2))
+                    .correct);
+}
+
+TEST_CASE("a unit glued to a bracket, and numbers in lines as MATLAB shows them") {
+  const Fixture box("box-corner");
+  const auto& c = box.answer("center_of_mass").value.data;  // metres
+  const std::string list = fmt::format("{:.10g}, {:.10g}, {:.10g}", c[0], c[1], c[2]);
+  for (const std::string& same : std::vector<std::string>
+       {"[" + list + "]m", "(" + list + ")m",
+        fmt::format("({:.10g},{:.10g},{:.10g})cm", c[0] * 100, c[1] * 100, c[2] * 100),
+        fmt::format("{:.4f} {:.4f} {:.4f}", c[0], c[1], c[2]),
+        fmt::format("ans =\n\n   {:10.4f}{:10.4f}{:10.4f}\n", c[0], c[1], c[2]),
+        fmt::format("{:.4f}\n{:.4f}\n{:.4f}", c[0], c[1], c[2])}) {
+    INFO(same);
+    REQUIRE(box.check("center_of_mass", same).correct);
+  }
+  REQUIRE_FALSE(box.check("center_of_mass", "[" + list + "]cm").correct);
+  const auto& tensor = box.answer("I_cm").value.data;
+  std::string shown;
+  for (std::size_t r = 0; r < 3; ++r) {
+    for (std::size_t k = 0; k < 3; ++k) shown += fmt::format("{:10.4f}", tensor[3 * r + k]);
+    shown += "\n";
+  }
+  REQUIRE(box.check("I_cm", shown).correct);
+  // Lines of unequal length are no matrix.
+  REQUIRE_THROWS_AS(box.check("I_cm", "1 0 0\n0 1\n0 0 1"), InputError);
+}
