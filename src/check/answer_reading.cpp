@@ -174,6 +174,55 @@ std::string without_python_wrapper(const std::string& s) {
   return s;
 }
 
+// "Hω", "πR", "cosα": a Greek letter is one symbol, so one beside a Latin letter is a product
+// (or a function's argument), never a longer name ("Homega"). μ stays glued: "μs" is a
+// microsecond as often as μ times s.
+std::string greek_letters_apart(const std::string& typed) {
+  const auto letter_at = [&](std::size_t i) -> std::size_t {
+    for (const auto& [name, letter] : sym::greek_letters()) {
+      if (name != "mu" && typed.compare(i, letter.size(), letter) == 0) return letter.size();
+    }
+    return 0;
+  };
+  const auto latin = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+  std::string out;
+  for (std::size_t i = 0; i < typed.size();) {
+    const std::size_t length = static_cast<unsigned char>(typed[i]) >= 0x80 ? letter_at(i) : 0;
+    if (length == 0) {
+      out += typed[i++];
+      continue;
+    }
+    if (!out.empty() && latin(out.back())) out += ' ';
+    out += typed.substr(i, length);
+    i += length;
+    if (i < typed.size() && latin(typed[i])) out += ' ';
+  }
+  return out;
+}
+
+// 0.2056" and 12': seconds and minutes of arc after a number, typed without ″ and ′ (which
+// sym::to_ascii reads so); after a name a prime is no unit ("E'", "psidot0'").
+std::string arc_marks_read(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const bool mark = s[i] == '"' || s[i] == '\'';
+    std::size_t k = out.size();
+    while (k > 0 && (std::isdigit(static_cast<unsigned char>(out[k - 1])) || out[k - 1] == '.'))
+      --k;
+    const bool after_number =
+        k < out.size() &&
+        (k == 0 || !(std::isalpha(static_cast<unsigned char>(out[k - 1])) || out[k - 1] == '_'));
+    if (!mark || !after_number) {
+      out += s[i];
+      continue;
+    }
+    const bool seconds = s[i] == '"' || (i + 1 < s.size() && s[i + 1] == '\'');
+    if (s[i] == '\'' && seconds) ++i;  // '' for a second of arc
+    out += seconds ? " arcsec" : " arcmin";
+  }
+  return out;
+}
+
 // ASCII, one line, a numeric exponent's sign in parentheses.
 std::string prepared(const std::string& typed) {
   // Angle brackets, as calculus writes a vector ("⟨1, 2, 3⟩", "<1, 2, 3>"): no expression
@@ -184,7 +233,7 @@ std::string prepared(const std::string& typed) {
     for (auto at = bracketed.find(angle); at != std::string::npos; at = bracketed.find(angle, at))
       bracketed.replace(at, std::string(angle).size(), square);
   }
-  std::string s = sym::to_ascii(bracketed);
+  std::string s = arc_marks_read(sym::to_ascii(greek_letters_apart(bracketed)));
   for (char& c : s) {
     if (c == '\n' || c == '\r' || c == '\t') c = ' ';
     // Mathematica's lists, "{{10, 0, 0}, {0, 6, 1}, ...}", and angle brackets: brackets here.
@@ -288,7 +337,8 @@ std::string starred(const std::string& s, const sym::SymbolTable& table) {
     const std::string factor = before.substr(k);
     if (factor.empty()) return false;
     if (factor.find_first_not_of("0123456789.") == std::string::npos) return true;  // "2("
-    return table.contains(factor);  // a symbol, never a function's name
+    // A symbol or pi, never a function's name.
+    return table.contains(factor) || factor == "pi" || factor == "Pi";
   };
   const auto factor_end = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == ')';

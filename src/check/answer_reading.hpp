@@ -19,7 +19,9 @@
 ///   ("x = 0.5, y = 1, z = 1.5") and degrees with minutes and seconds of arc: written_forms.hpp;
 /// - a number glued to pi, a function or a symbol that spells no unit, as a product ("2pi/3",
 ///   "4l^2", "2sqrt(3)"; "0.25m R^2" where m is a mass, beside another symbol), and pi beside a
-///   number ("1/6 pi");
+///   number ("1/6 pi") or against a bracket ("2pi(1 - H)"); a Greek letter beside a Latin one
+///   as a product ("Hω" is H times ω; μ excepted: "μs");
+/// - seconds and minutes of arc after a number typed with the keyboard's '"' and "'";
 /// - a unit glued to a vector's bracket, "(0.5, 1, 1.5)m", and per second without its 1,
 ///   "4.995/s";
 /// - a vector or matrix with a factor outside, "M/12 [[b^2 + c^2, 0, 0], ..]", "[a, b, c]/2",

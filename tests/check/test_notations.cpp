@@ -116,6 +116,27 @@ TEST_CASE("numbers as calculators and textbooks write them") {
   REQUIRE_FALSE(top.check("theta_max", fmt::format("{}°{}′", d + 2, m)).correct);
   REQUIRE_FALSE(top.check("theta_max", fmt::format("-{}°{}′", d, m)).correct);
 
+  // A Greek letter is one symbol: beside a Latin letter it is a product or a function's
+  // argument, never part of a longer name ("Homega"); π may stand against a bracket.
+  const Fixture earth("earth-free-precession");
+  for (const auto& [name, same] : std::vector<std::pair<std::string, std::string>>{
+           {"Omega_body_rate", "Hωcos(α)/(1-H)"},
+           {"precession_period_body", "2π(1-H)/(Hω cos α)"},
+           {"precession_period_body", "2π(1 - H)/(H ω cosα)"}}) {
+    INFO(same);
+    REQUIRE(earth.check(name, same).correct);
+  }
+  REQUIRE_FALSE(earth.check("precession_period_body", "2π(1-H)/(Hω sin α)").correct);
+  // Seconds and minutes of arc typed with the keyboard's quotes.
+  const double arcsec = earth.answer("angle_L_e3").value.data[0] * 180 / kPi * 3600;
+  for (const std::string& same :
+       std::vector<std::string>{fmt::format("{:.4f}\"", arcsec), fmt::format("{:.4f}''", arcsec),
+                                fmt::format("{:.6f}'", arcsec / 60)}) {
+    INFO(same);
+    REQUIRE(earth.check("angle_L_e3", same).correct);
+  }
+  REQUIRE_FALSE(earth.check("angle_L_e3", fmt::format("{:.4f}'", arcsec)).correct);
+
   // Where m is a mass, a glued "2m" is still two masses or two metres, and refused; in a
   // product with another symbol it is the mass.
   const Fixture plate("flying-plate");
