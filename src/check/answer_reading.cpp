@@ -106,6 +106,39 @@ std::vector<std::pair<std::size_t, std::size_t>> identifiers(const std::string& 
   return out;
 }
 
+// The functions an answer may name (GiNaC's names).
+const std::vector<std::string>& function_names() {
+  static const std::vector<std::string> names{"sin",  "cos",  "tan",  "asin", "acos", "atan",
+                                              "sinh", "cosh", "tanh", "exp",  "ln",   "sqrt"};
+  return names;
+}
+
+// Where `out` ends in a number of its own: not the digits that end a name ("theta0").
+bool ends_in_number(const std::string& out) {
+  std::size_t k = out.size();
+  while (k > 0 && (std::isdigit(static_cast<unsigned char>(out[k - 1])) || out[k - 1] == '.')) --k;
+  return k < out.size() &&
+         (k == 0 || !(std::isalpha(static_cast<unsigned char>(out[k - 1])) || out[k - 1] == '_'));
+}
+
+// The name (letters, digits, '_') that starts s at `at`.
+std::string name_at(const std::string& s, std::size_t at) {
+  std::size_t end = at;
+  while (end < s.size() && (std::isalnum(static_cast<unsigned char>(s[end])) || s[end] == '_'))
+    ++end;
+  return s.substr(at, end - at);
+}
+
+// Whether the letter at `at`, after a number, starts its exponent ("1e-3", "2E5").
+bool starts_exponent(const std::string& s, std::size_t at) {
+  const auto digit_at = [&](std::size_t j) {
+    return j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]));
+  };
+  return (s[at] == 'e' || s[at] == 'E') &&
+         (digit_at(at + 1) ||
+          (at + 1 < s.size() && (s[at + 1] == '+' || s[at + 1] == '-') && digit_at(at + 2)));
+}
+
 // "cos^2(alpha)" -> "cos(alpha)^2", as textbooks write a power of a trigonometric or hyperbolic
 // function (and "cos²(α)" arrives here so). Only a positive whole power: cos^-1 is arccos in
 // some books and cos(x)^(-1) in others, so it stays an error.
@@ -129,6 +162,14 @@ std::string function_powers(const std::string& s) {
     if (k == digits || (bracketed && (k >= s.size() || s[k++] != ')'))) continue;
     const std::string power = s.substr(digits, k - digits - (bracketed ? 1 : 0));
     while (k < s.size() && s[k] == ' ') ++k;
+    // "sin^2 alpha", "sin²α": an argument of one name or number, no power or call after it.
+    if (const std::string arg = k < s.size() ? name_at(s, k) : "";
+        !arg.empty() &&
+        (k + arg.size() >= s.size() || (s[k + arg.size()] != '^' && s[k + arg.size()] != '('))) {
+      out += s.substr(done, start - done) + name + "(" + arg + ")^" + power;
+      done = k + arg.size();
+      continue;
+    }
     if (k >= s.size() || s[k] != '(') continue;
     const std::size_t close = matching(s, k);
     if (close == std::string::npos) continue;
@@ -174,28 +215,48 @@ std::string without_python_wrapper(const std::string& s) {
   return s;
 }
 
-// "Hω", "πR", "cosα": a Greek letter is one symbol, so one beside a Latin letter is a product
-// (or a function's argument), never a longer name ("Homega"). μ stays glued: "μs" is a
+// "Hω", "πR", "cosα", "I₁ω₁²": a Greek letter is one symbol, so one after a name or a number,
+// or before a Latin letter, is a product (or a function's argument), never a longer name
+// ("Homega", "I1omega1"); likewise a root after a factor ("ω√(..)"). μ stays glued: "μs" is a
 // microsecond as often as μ times s.
 std::string greek_letters_apart(const std::string& typed) {
-  const auto letter_at = [&](std::size_t i) -> std::size_t {
+  const auto greek_at = [&](std::size_t i) -> std::size_t {
     for (const auto& [name, letter] : sym::greek_letters()) {
       if (name != "mu" && typed.compare(i, letter.size(), letter) == 0) return letter.size();
     }
     return 0;
   };
-  const auto latin = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+  // What ends a name or a number: a letter, a digit, a subscript or superscript digit, a dot
+  // above (θ̇), a Greek letter.
+  const auto ends_factor = [&](const std::string& out) {
+    if (out.empty()) return false;
+    const char last = out.back();
+    if (std::isalnum(static_cast<unsigned char>(last)) || last == '_') return true;
+    for (const std::string mark : {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉",     "⁰",
+                                   "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹", "\u0307"}) {
+      if (out.size() >= mark.size() &&
+          out.compare(out.size() - mark.size(), mark.size(), mark) == 0)
+        return true;
+    }
+    return std::any_of(
+        sym::greek_letters().begin(), sym::greek_letters().end(), [&](const auto& g) {
+          const std::string& l = g.second;
+          return out.size() >= l.size() && out.compare(out.size() - l.size(), l.size(), l) == 0;
+        });
+  };
   std::string out;
   for (std::size_t i = 0; i < typed.size();) {
-    const std::size_t length = static_cast<unsigned char>(typed[i]) >= 0x80 ? letter_at(i) : 0;
+    const std::size_t length = static_cast<unsigned char>(typed[i]) >= 0x80 ? greek_at(i) : 0;
     if (length == 0) {
+      // "ω√(..)", "R√2": a root after a factor is a product too ("omegasqrt" is no function).
+      if (typed.compare(i, 3, "√") == 0 && ends_factor(out)) out += ' ';
       out += typed[i++];
       continue;
     }
-    if (!out.empty() && latin(out.back())) out += ' ';
+    if (ends_factor(out)) out += ' ';
     out += typed.substr(i, length);
     i += length;
-    if (i < typed.size() && latin(typed[i])) out += ' ';
+    if (i < typed.size() && std::isalpha(static_cast<unsigned char>(typed[i]))) out += ' ';
   }
   return out;
 }
@@ -219,6 +280,23 @@ std::string arc_marks_read(const std::string& s) {
     const bool seconds = s[i] == '"' || (i + 1 < s.size() && s[i + 1] == '\'');
     if (s[i] == '\'' && seconds) ++i;  // '' for a second of arc
     out += seconds ? " arcsec" : " arcmin";
+  }
+  return out;
+}
+
+// "2pi/3", "3sin^2(a)", "2sqrt(3)": a number glued to pi or a function's name is a product,
+// whatever the problem's symbols (starred: a number glued to a symbol).
+std::string numbers_times_constants(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (std::isalpha(static_cast<unsigned char>(s[i])) && ends_in_number(out) &&
+        !starts_exponent(s, i)) {
+      const std::string name = name_at(s, i);
+      const auto& f = function_names();
+      if (name == "pi" || name == "Pi" || std::find(f.begin(), f.end(), name) != f.end())
+        out += '*';
+    }
+    out += s[i];
   }
   return out;
 }
@@ -247,7 +325,7 @@ std::string prepared(const std::string& typed) {
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
   for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
     s.replace(at, 2, "^");
-  s = function_powers(times_ten(s));
+  s = function_powers(numbers_times_constants(times_ten(s)));
   // "10^-4" -> "10^(-4)": a signed number after '^' (no std::regex: GCC 12 warns inside it).
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -277,13 +355,6 @@ std::pair<std::string, std::string> split_unit(const std::string& s) {
   return {s, ""};
 }
 
-// The functions an answer may name (GiNaC's names).
-const std::vector<std::string>& function_names() {
-  static const std::vector<std::string> names{"sin",  "cos",  "tan",  "asin", "acos", "atan",
-                                              "sinh", "cosh", "tanh", "exp",  "ln",   "sqrt"};
-  return names;
-}
-
 // "M R^2 psidot0/2" -> "M*R^2*psidot0/2": a '*' for each space between two factors; and a
 // function's one-factor argument without parentheses, as books write it, in them: "M l g cos
 // theta0" -> "M*l*g*cos(theta0)" (a name or a number, not one with a power: cos theta^2 is
@@ -293,37 +364,20 @@ const std::vector<std::string>& function_names() {
 // function's call stays one: "cos(a)", "atan2(y, x)").
 std::string starred(const std::string& s, const sym::SymbolTable& table) {
   const std::vector<std::string>& kFunctions = function_names();
-  // "2pi/3", "4l^2", "2sqrt(3)": a number glued to pi, a function or one of the problem's symbols
-  // that spells no unit; or one that does, in a product with one that does not ("0.25m R^2").
-  // Alone, where m is a mass, "2m" is two masses or two metres, and refused.
+  // "4l^2", "0.5M": a number glued to one of the problem's symbols that spells no unit; or to
+  // one that does, in a product with one that does not ("0.25m R^2"). Alone, where m is a mass,
+  // "2m" is two masses or two metres, and refused. (pi and functions: numbers_times_constants.)
   const auto ids = identifiers(s);
   const bool symbol_spelling_no_unit = std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
     const std::string name = s.substr(id.first, id.second);
     return table.contains(name) && !is_unit(name);
   });
   const auto number_against_name = [&](const std::string& before, std::size_t at) {
-    if (!std::isalpha(static_cast<unsigned char>(s[at]))) return false;
-    std::size_t k = before.size();
-    while (k > 0 &&
-           (std::isdigit(static_cast<unsigned char>(before[k - 1])) || before[k - 1] == '.'))
-      --k;
-    if (k == before.size() || (k > 0 && (std::isalpha(static_cast<unsigned char>(before[k - 1])) ||
-                                         before[k - 1] == '_')))
-      return false;  // no number, or the digits end a name ("theta0")
-    const auto digit_at = [&](std::size_t j) {
-      return j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]));
-    };
-    const bool exponent =
-        (s[at] == 'e' || s[at] == 'E') &&
-        (digit_at(at + 1) || ((s[at + 1] == '+' || s[at + 1] == '-') && digit_at(at + 2)));
-    if (exponent) return false;  // "1e-3"
-    std::size_t end = at;
-    while (end < s.size() && (std::isalnum(static_cast<unsigned char>(s[end])) || s[end] == '_'))
-      ++end;
-    const std::string name = s.substr(at, end - at);
-    return name == "pi" || name == "Pi" ||
-           std::find(kFunctions.begin(), kFunctions.end(), name) != kFunctions.end() ||
-           (table.contains(name) && (symbol_spelling_no_unit || !is_unit(name)));
+    if (!std::isalpha(static_cast<unsigned char>(s[at])) || !ends_in_number(before) ||
+        starts_exponent(s, at))
+      return false;
+    const std::string name = name_at(s, at);
+    return table.contains(name) && (symbol_spelling_no_unit || !is_unit(name));
   };
   const auto glued_product = [&](const std::string& before, char next) {
     const char last = before.back();
@@ -444,9 +498,14 @@ bool read_side_by_side(const std::string& value, const sym::SymbolTable& table,
 // no advice to paste.
 bool has_bare_function(const std::string& written) {
   return std::any_of(function_names().begin(), function_names().end(), [&](const std::string& f) {
-    for (auto at = written.find(f + "*"); at != std::string::npos;
-         at = written.find(f + "*", at + 1)) {
-      if (at == 0 || !std::isalnum(static_cast<unsigned char>(written[at - 1]))) return true;
+    for (auto at = written.find(f); at != std::string::npos; at = written.find(f, at + 1)) {
+      if (at > 0 && std::isalnum(static_cast<unsigned char>(written[at - 1]))) continue;
+      std::size_t k = at + f.size();  // "cos*", or "sin^2*" with a power on the name
+      if (k < written.size() && written[k] == '^') {
+        ++k;
+        while (k < written.size() && std::isdigit(static_cast<unsigned char>(written[k]))) ++k;
+      }
+      if (k < written.size() && written[k] == '*') return true;
     }
     return false;
   });

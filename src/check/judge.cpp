@@ -308,7 +308,14 @@ std::string approximations_as_equal(const std::string& text) {
 // "theta_L", "θ_L", "\theta_{L}", "E′": one name, with no operator or number that would make it
 // an expression.
 bool is_one_name(const std::string& side) {
-  std::string s = trim(sym::to_ascii(side));
+  // "|L|", "‖L‖": the size of a vector, named.
+  std::string bare = trim(side);
+  for (const std::string bar : {"‖", "|"}) {
+    if (bare.size() > 2 * bar.size() && bare.compare(0, bar.size(), bar) == 0 &&
+        bare.compare(bare.size() - bar.size(), bar.size(), bar) == 0)
+      bare = bare.substr(bar.size(), bare.size() - 2 * bar.size());
+  }
+  std::string s = trim(sym::to_ascii(bare));
   // E', E′: a prime marks a name (the heavy top's E′), it makes no expression.
   for (const std::string prime : {"′", "'"}) {
     for (auto at = s.find(prime); at != std::string::npos; at = s.find(prime))

@@ -127,6 +127,23 @@ TEST_CASE("numbers as calculators and textbooks write them") {
     REQUIRE(earth.check(name, same).correct);
   }
   REQUIRE_FALSE(earth.check("precession_period_body", "2π(1-H)/(Hω sin α)").correct);
+  // A root after a factor, a number glued to a function, a power on a function's name before a
+  // bare argument: "ω√(4 - 3sin²α)" is ω*sqrt(4 - 3*sin(α)^2).
+  const Fixture plate("flying-plate");
+  for (const std::string& same : std::vector<std::string>{
+           "ω√(4 - 3sin²α)", "omega sqrt(4 - 3 sin^2 alpha)", "ω√(1 + 3cos²α)"}) {
+    INFO(same);
+    REQUIRE(plate.check("Omega_space_rate", same).correct);
+  }
+  REQUIRE_FALSE(plate.check("Omega_space_rate", "ω√(4 - 3cos²α)").correct);
+  // A power on the argument too is no bare argument: the message asks for the parentheses.
+  REQUIRE_THROWS_WITH(plate.check("Omega_space_rate", "omega sqrt(4 - 3 sin^2 alpha^2)"),
+                      Catch::Contains("a function's argument parentheses"));
+  // A size named as such before its value.
+  const Fixture asym("asymmetric-top");
+  const std::string size = fmt::format("{:.6g} kg m²/s", asym.answer("L_magnitude").value.data[0]);
+  REQUIRE(asym.check("L_magnitude", "|L| = " + size).correct);
+  REQUIRE(asym.check("L_magnitude", "‖L‖ = " + size).correct);
   // Seconds and minutes of arc typed with the keyboard's quotes.
   const double arcsec = earth.answer("angle_L_e3").value.data[0] * 180 / kPi * 3600;
   for (const std::string& same :
@@ -139,7 +156,6 @@ TEST_CASE("numbers as calculators and textbooks write them") {
 
   // Where m is a mass, a glued "2m" is still two masses or two metres, and refused; in a
   // product with another symbol it is the mass.
-  const Fixture plate("flying-plate");
   REQUIRE(plate.check("I0", "0.25m R^2").correct);
   REQUIRE_THROWS_WITH(plate.check("I0", "2m"), Catch::Contains("one of the problem's symbols"));
 }
