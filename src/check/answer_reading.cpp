@@ -14,6 +14,7 @@
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/glued_numbers.hpp"
 #include "symbolic/unicode_notation.hpp"
 
 namespace wobble::check {
@@ -113,32 +114,6 @@ const std::vector<std::string>& function_names() {
   return names;
 }
 
-// Where `out` ends in a number of its own: not the digits that end a name ("theta0").
-bool ends_in_number(const std::string& out) {
-  std::size_t k = out.size();
-  while (k > 0 && (std::isdigit(static_cast<unsigned char>(out[k - 1])) || out[k - 1] == '.')) --k;
-  return k < out.size() &&
-         (k == 0 || !(std::isalpha(static_cast<unsigned char>(out[k - 1])) || out[k - 1] == '_'));
-}
-
-// The name (letters, digits, '_') that starts s at `at`.
-std::string name_at(const std::string& s, std::size_t at) {
-  std::size_t end = at;
-  while (end < s.size() && (std::isalnum(static_cast<unsigned char>(s[end])) || s[end] == '_'))
-    ++end;
-  return s.substr(at, end - at);
-}
-
-// Whether the letter at `at`, after a number, starts its exponent ("1e-3", "2E5").
-bool starts_exponent(const std::string& s, std::size_t at) {
-  const auto digit_at = [&](std::size_t j) {
-    return j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]));
-  };
-  return (s[at] == 'e' || s[at] == 'E') &&
-         (digit_at(at + 1) ||
-          (at + 1 < s.size() && (s[at + 1] == '+' || s[at + 1] == '-') && digit_at(at + 2)));
-}
-
 // "cos^2(alpha)" -> "cos(alpha)^2", as textbooks write a power of a trigonometric or hyperbolic
 // function (and "cos²(α)" arrives here so). Only a positive whole power: cos^-1 is arccos in
 // some books and cos(x)^(-1) in others, so it stays an error.
@@ -163,7 +138,7 @@ std::string function_powers(const std::string& s) {
     const std::string power = s.substr(digits, k - digits - (bracketed ? 1 : 0));
     while (k < s.size() && s[k] == ' ') ++k;
     // "sin^2 alpha", "sin²α": an argument of one name or number, no power or call after it.
-    if (const std::string arg = k < s.size() ? name_at(s, k) : "";
+    if (const std::string arg = k < s.size() ? sym::name_at(s, k) : "";
         !arg.empty() &&
         (k + arg.size() >= s.size() || (s[k + arg.size()] != '^' && s[k + arg.size()] != '('))) {
       out += s.substr(done, start - done) + name + "(" + arg + ")^" + power;
@@ -284,23 +259,6 @@ std::string arc_marks_read(const std::string& s) {
   return out;
 }
 
-// "2pi/3", "3sin^2(a)", "2sqrt(3)": a number glued to pi or a function's name is a product,
-// whatever the problem's symbols (starred: a number glued to a symbol).
-std::string numbers_times_constants(const std::string& s) {
-  std::string out;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (std::isalpha(static_cast<unsigned char>(s[i])) && ends_in_number(out) &&
-        !starts_exponent(s, i)) {
-      const std::string name = name_at(s, i);
-      const auto& f = function_names();
-      if (name == "pi" || name == "Pi" || std::find(f.begin(), f.end(), name) != f.end())
-        out += '*';
-    }
-    out += s[i];
-  }
-  return out;
-}
-
 // ASCII, one line, a numeric exponent's sign in parentheses.
 std::string prepared(const std::string& typed) {
   // Angle brackets, as calculus writes a vector ("⟨1, 2, 3⟩", "<1, 2, 3>"): no expression
@@ -325,7 +283,7 @@ std::string prepared(const std::string& typed) {
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
   for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
     s.replace(at, 2, "^");
-  s = function_powers(numbers_times_constants(times_ten(s)));
+  s = function_powers(sym::numbers_times_constants(times_ten(s)));
   // "10^-4" -> "10^(-4)": a signed number after '^' (no std::regex: GCC 12 warns inside it).
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -366,17 +324,17 @@ std::string starred(const std::string& s, const sym::SymbolTable& table) {
   const std::vector<std::string>& kFunctions = function_names();
   // "4l^2", "0.5M": a number glued to one of the problem's symbols that spells no unit; or to
   // one that does, in a product with one that does not ("0.25m R^2"). Alone, where m is a mass,
-  // "2m" is two masses or two metres, and refused. (pi and functions: numbers_times_constants.)
+  // "2m" is two masses or two metres, and refused. (pi and functions: symbolic/glued_numbers.hpp.)
   const auto ids = identifiers(s);
   const bool symbol_spelling_no_unit = std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
     const std::string name = s.substr(id.first, id.second);
     return table.contains(name) && !is_unit(name);
   });
   const auto number_against_name = [&](const std::string& before, std::size_t at) {
-    if (!std::isalpha(static_cast<unsigned char>(s[at])) || !ends_in_number(before) ||
-        starts_exponent(s, at))
+    if (!std::isalpha(static_cast<unsigned char>(s[at])) || !sym::ends_in_number(before) ||
+        sym::starts_exponent(s, at))
       return false;
-    const std::string name = name_at(s, at);
+    const std::string name = sym::name_at(s, at);
     return table.contains(name) && (symbol_spelling_no_unit || !is_unit(name));
   };
   const auto glued_product = [&](const std::string& before, char next) {

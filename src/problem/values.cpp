@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/characters.hpp"
+#include "symbolic/glued_numbers.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 
@@ -122,7 +123,7 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
 }  // namespace
 
 std::pair<std::string, std::string> typed_value_parts(const std::string& text) {
-  const std::string t = sym::to_ascii(text);
+  const std::string t = sym::numbers_times_constants(sym::to_ascii(text));
   const auto [value, unit] = split_value_unit(trim(t.substr(0, t.find('='))));
   // The unit as the grammar read it: "[cm]" is cm.
   return {value, unit.empty() ? unit : parse_unit(unit, "").text};
@@ -131,7 +132,7 @@ std::pair<std::string, std::string> typed_value_parts(const std::string& text) {
 double parse_parameter_value(const Parameter& p, const std::string& text,
                              const std::string& field) {
   // As a key prints it: "θ0 = 30° = 0.5235987756 rad", "g = 9.81 m/s²", "π/6".
-  const std::string t = sym::to_ascii(text);
+  const std::string t = sym::numbers_times_constants(sym::to_ascii(text));
   double v = 0.0;
   if (const auto eq = t.find('='); eq != std::string::npos) {
     if (t.find('=', eq + 1) != std::string::npos) {

@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/characters.hpp"
+#include "symbolic/glued_numbers.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 
@@ -34,7 +35,7 @@ void refuse_unknown_unit(const SymbolTable& table, const std::string& ascii,
 
 std::string quantity_expression(const SymbolTable& table, const std::string& text,
                                 const std::string& field, const std::string& si_unit) {
-  const std::string ascii = to_ascii(text);
+  const std::string ascii = numbers_times_constants(to_ascii(text));
   try {
     (void)table.parse(ascii, field);
     return ascii;
@@ -69,7 +70,7 @@ std::string quantity_expression(const SymbolTable& table, const std::string& tex
 GiNaC::ex parse_quantity(const SymbolTable& table, const std::string& text,
                          const std::string& field, const std::string& si_unit) {
   try {  // most quantities are expressions: parsed once
-    return table.parse(to_ascii(text), field);
+    return table.parse(numbers_times_constants(to_ascii(text)), field);
   } catch (const InputError&) {
     // a value with its unit, or an error that quantity_expression gives again, in its terms
   }

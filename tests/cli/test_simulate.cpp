@@ -228,6 +228,12 @@ TEST_CASE("simulate --t-end sets the time span (an expression), --samples the co
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   REQUIRE_THAT(r.out, Catch::Contains("time: 0 to 6.283185307 s, 5 samples"));
+  // As typed with π: a number glued to it is a product.
+  const RunResult glued =
+      run_wobble({"simulate", "tennis-racket", "--t-end", "2π", "--samples", "5"});
+  INFO(glued.err);
+  REQUIRE(glued.exit_code == 0);
+  REQUIRE_THAT(glued.out, Catch::Contains("time: 0 to 6.283185307 s, 5 samples"));
 }
 
 TEST_CASE("simulate --samples takes a count as 1e3, --method a name in any case") {

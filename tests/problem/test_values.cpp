@@ -82,6 +82,13 @@ TEST_CASE("values with a unit are converted exactly, rounded once") {
   // Both sides of a key's "30° = 0.5235987756 rad": the exact first is taken.
   REQUIRE(parse_parameter_value(angle(), "30° = 0.5235987756 rad", "f") ==
           parse_parameter_value(angle(), "pi/6", "f"));
+  // A number glued to pi is a product, as typed and as calculators write it.
+  for (const std::string& glued :
+       {std::string("2π/12"), std::string("2pi/12"), std::string("(1/3)π/2")}) {
+    INFO(glued);
+    REQUIRE(parse_parameter_value(angle(), glued, "f") ==
+            parse_parameter_value(angle(), "pi/6", "f"));
+  }
   // A constant expression is not cut into a unit: the "i" of pi, the "e" of an exponent.
   REQUIRE(parse_parameter_value(with_unit("m"), "2*pi", "f") == 2 * M_PI);  // doubling is exact
   REQUIRE(parse_parameter_value(with_unit("m"), "1e-3", "f") == 1e-3);
