@@ -20,12 +20,6 @@
 namespace wobble::check {
 
 namespace {
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + items[i];
-  return out;
-}
-
 std::string bracket_group(const std::string& group);
 
 // MATLAB's rows, "a b c; d e f" -> "[[a, b, c], [d, e, f]]"; a column "a; b; c" -> "[a, b, c]",
@@ -42,7 +36,7 @@ std::string semicolon_rows(const std::string& inside) {
   if (columns) {
     for (auto& r : rows) r = r.substr(1, r.size() - 2);
   }
-  return "[" + join(rows) + "]";
+  return "[" + joined(rows) + "]";
 }
 
 // "[a b c]" -> "[a, b, c]", "[[a b] [c d]]" -> "[[a, b], [c, d]]", "[a b; c d]" as MATLAB's.
@@ -54,7 +48,7 @@ std::string bracket_group(const std::string& group) {
   for (auto& item : items) {
     if (wrapped(item, '[')) item = bracket_group(item);
   }
-  return "[" + join(items) + "]";
+  return "[" + joined(items) + "]";
 }
 
 // The value's layout in reading form (see the header).
@@ -74,13 +68,13 @@ std::string layout(const std::string& value) {
       if (g.front() == '(') g = "[" + g.substr(1, g.size() - 2) + "]";
       rows.push_back(bracket_group(g));
     }
-    return "[" + join(rows) + "]";
+    return "[" + joined(rows) + "]";
   }
   if (wrapped(value, '[')) return bracket_group(value);
   if (const auto items = top_level(value, ','); items.size() > 1) {  // "5, 7, 10"
     std::vector<std::string> rows;
     for (const auto& i : items) rows.push_back(wrapped(i, '[') ? bracket_group(i) : i);
-    return "[" + join(rows) + "]";
+    return "[" + joined(rows) + "]";
   }
   return value;
 }
@@ -605,7 +599,7 @@ EntryUnits units_per_entry(const std::string& text, const sym::SymbolTable& tabl
                  ? number
                  : "(" + number + ")*(" + u.to_si_exact + ")/(" + first->to_si_exact + ")";
     }
-    return "[" + join(items) + "]";
+    return "[" + joined(items) + "]";
   };
   const std::string stripped = strip(strip, laid);
   if (!first) return {};

@@ -62,6 +62,12 @@ std::vector<std::string> space_separated_entries(const std::string& s) {
   return entries;
 }
 
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t k = 0; k < items.size(); ++k) out += (k ? ", " : "") + items[k];
+  return out;
+}
+
 bool wrapped(const std::string& s, char open) {
   return s.size() >= 2 && s.front() == open && matching(s, 0) == s.size() - 1;
 }

@@ -1,8 +1,8 @@
 #pragma once
 /// @file
-/// Brackets and entries in an answer's text: (), [] and {} all nest alike, since an answer may write a vector
-/// in any of them and the reader rewrites them to one kind. ASCII text; no bracket is checked
-/// for its kind against its partner (the expression reader does that).
+/// Brackets and entries in an answer's text: (), [] and {} all nest alike, since an answer may
+/// write a vector in any of them and the reader rewrites them to one kind. ASCII text; no bracket
+/// is checked for its kind against its partner (the expression reader does that).
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -23,6 +23,9 @@ std::size_t matching(const std::string& s, std::size_t open);
 /// "0.7 0 -0.7" -> {"0.7", "0", "-0.7"}, but "1 - 2" and "2 * m" stay one entry: an operator
 /// standing alone, ending a token or starting one (other than a sign) joins its neighbours.
 std::vector<std::string> space_separated_entries(const std::string& s);
+
+/// "a, b, c": entries joined as the reading form lists them.
+std::string joined(const std::vector<std::string>& items);
 
 /// Whether s is one bracket group, opened by `open`: "[a, b]" but not "[a] [b]".
 bool wrapped(const std::string& s, char open);

@@ -16,9 +16,9 @@ namespace {
 // The calls that make a diagonal matrix, the longest first so that "np.diag" is not read as
 // "np." and "diag".
 const std::array<std::string, 8>& diagonal_calls() {
-  static const std::array<std::string, 8> calls{
-      "DiagonalMatrix", "numpy.diag", "sympy.diag", "Matrix.diag", "np.diag", "sp.diag",
-      "diagm",          "diag"};
+  static const std::array<std::string, 8> calls{"DiagonalMatrix", "numpy.diag", "sympy.diag",
+                                                "Matrix.diag",    "np.diag",    "sp.diag",
+                                                "diagm",          "diag"};
   return calls;
 }
 
@@ -40,7 +40,8 @@ std::string diagonal_call_at(const std::string& s, std::size_t at) {
 // The diagonal's entries: "a, b, c", "[a, b, c]", "[a b c]" (MATLAB), "[a; b; c]".
 std::vector<std::string> diagonal_entries(std::string inside) {
   inside = trim(inside);
-  if (wrapped(inside, '[') || wrapped(inside, '(')) inside = trim(inside.substr(1, inside.size() - 2));
+  if (wrapped(inside, '[') || wrapped(inside, '('))
+    inside = trim(inside.substr(1, inside.size() - 2));
   for (const char sep : {',', ';'}) {
     if (auto items = top_level(inside, sep); items.size() > 1) return items;
   }
@@ -51,7 +52,8 @@ std::vector<std::string> diagonal_entries(std::string inside) {
 bool is_plain_number(const std::string& token) {
   std::size_t i = token.size() > 1 && (token[0] == '-' || token[0] == '+') ? 1 : 0;
   std::size_t digits = 0;
-  while (i < token.size() && (std::isdigit(static_cast<unsigned char>(token[i])) || token[i] == '.')) {
+  while (i < token.size() &&
+         (std::isdigit(static_cast<unsigned char>(token[i])) || token[i] == '.')) {
     digits += token[i] != '.';
     ++i;
   }
@@ -64,12 +66,6 @@ bool is_plain_number(const std::string& token) {
     if (i == exponent) return false;
   }
   return i == token.size();
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string out;
-  for (std::size_t k = 0; k < items.size(); ++k) out += (k ? ", " : "") + items[k];
-  return out;
 }
 
 // The slots, if each is taken once.
@@ -172,7 +168,7 @@ std::optional<std::string> number_rows(const std::string& typed) {
     if (r.size() != columns) return std::nullopt;
   }
   if (rows.size() == 1 && columns == 1) return std::nullopt;  // one number
-  std::vector<std::string> entries;  // a row or a column: a vector
+  std::vector<std::string> entries;                           // a row or a column: a vector
   if (rows.size() == 1 || columns == 1) {
     for (const auto& r : rows) entries.insert(entries.end(), r.begin(), r.end());
     return "[" + joined(entries) + "]";
@@ -189,7 +185,8 @@ std::string sexagesimal_degrees(const std::string& ascii) {
   const auto number = [&]() -> std::string {
     spaces();
     const std::size_t start = i;
-    while (i < ascii.size() && (std::isdigit(static_cast<unsigned char>(ascii[i])) || ascii[i] == '.'))
+    while (i < ascii.size() &&
+           (std::isdigit(static_cast<unsigned char>(ascii[i])) || ascii[i] == '.'))
       ++i;
     return ascii.substr(start, i - start);
   };
@@ -219,8 +216,7 @@ std::string sexagesimal_degrees(const std::string& ascii) {
          (seconds.empty() ? "" : " + " + seconds + "/3600") + ") deg";
 }
 
-std::optional<std::string> labelled_components(const std::string& text,
-                                               const std::string& field) {
+std::optional<std::string> labelled_components(const std::string& text, const std::string& field) {
   const std::vector<std::string> items = top_level(text, ',');
   if (items.size() < 2) return std::nullopt;
   std::vector<std::string> labels, values;

@@ -9,8 +9,8 @@
 ///   vector), one number on each line (a column: a vector), or rows of numbers (a matrix);
 /// - an angle in degrees, minutes and seconds of arc, "44°41′", "44° 41′ 37″", "44°41'37\"";
 /// - a vector's components given one by one with their labels, as a student lists them:
-///   "x = 0.5, y = 1, z = 1.5", "ω₁ = 2 rad/s, ω₂ = 0, ω₃ = 9.7 rad/s", "I1 = .., I2 = .., I3 = ..".
-///   The labels differ in their last letter or digit only, x y z or 1 2 3 (in any order: the
+///   "x = 0.5, y = 1, z = 1.5", "ω₁ = 2 rad/s, ω₂ = 0, ω₃ = 9.7 rad/s", "I1 = .., I2 = .., I3 =
+///   ..". The labels differ in their last letter or digit only, x y z or 1 2 3 (in any order: the
 ///   components are put in theirs).
 #include <optional>
 #include <string>

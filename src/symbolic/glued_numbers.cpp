@@ -7,15 +7,18 @@
 namespace wobble::sym {
 
 namespace {
-bool is_letter(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
-bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool is_letter(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) != 0;
+}
+bool is_digit(char c) {
+  return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
 
 // The functions an expression may call, by every name it reads (expression_guard.cpp).
 bool is_function(const std::string& name) {
   static const std::array<std::string, 20> kNames{
-      "sqrt",   "sin",    "cos",    "tan",  "asin", "acos",   "atan",      "atan2",
-      "arcsin", "arccos", "arctan", "exp",  "log",  "ln",     "sinh",      "cosh",
-      "tanh",   "abs",    "EllipticK", "EllipticE"};
+      "sqrt",   "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "arcsin",    "arccos",
+      "arctan", "exp", "log", "ln",  "sinh", "cosh", "tanh", "abs",   "EllipticK", "EllipticE"};
   return std::find(kNames.begin(), kNames.end(), name) != kNames.end();
 }
 }  // namespace

@@ -63,7 +63,8 @@ TEST_CASE("units with SI prefixes") {
   REQUIRE(parse_unit("MJ", "u").same_dimension(parse_unit("J", "u")));
   // A name that is a unit of its own keeps its meaning: minutes, not milli-inches.
   REQUIRE_THAT(parse_unit("min", "u").to_si, WithinRel(60.0, eps));
-  for (const std::string& bad : std::vector<std::string> {"xJ", "kdeg", "kkg", "mday", "k", "Mrpm"}) {
+  for (const std::string& bad :
+       std::vector<std::string>{"xJ", "kdeg", "kkg", "mday", "k", "Mrpm"}) {
     INFO(bad);
     REQUIRE_THROWS_AS(parse_unit(bad, "u"), InputError);
   }
@@ -74,8 +75,9 @@ TEST_CASE("numbers as calculators and textbooks write them") {
   const double theta0 = top.answer("theta_min").value.data[0];  // pi/6 at the defaults
   REQUIRE_THAT(theta0, WithinRel(kPi / 6, 1e-15));
   // A number glued to pi, or beside it; a symbol that spells no unit glued to its number.
-  for (const std::string& same : std::vector<std::string> {"2π/12", "2pi/12", "2 π/12", "1/6 π", "0.16667 π", "0.16667π",
-                                 "0.16667π rad", "(1/6)π", "π/6 rad"}) {
+  for (const std::string& same :
+       std::vector<std::string>{"2π/12", "2pi/12", "2 π/12", "1/6 π", "0.16667 π", "0.16667π",
+                                "0.16667π rad", "(1/6)π", "π/6 rad"}) {
     INFO(same);
     REQUIRE(top.check("theta_min", same).correct);
   }
@@ -89,9 +91,9 @@ TEST_CASE("numbers as calculators and textbooks write them") {
   const double rate = top.answer("phidot_slow").value.data[0];
   const std::string r = fmt::format("{:.6g}", rate);
   // Per second without its 1; approximately equal; an SI prefix.
-  for (const std::string& same : std::vector<std::string> {r + "/s", r + " /s", "≈ " + r + " rad/s", "~" + r + " rad/s",
-                                 "φ̇ ≈ " + r + " rad/s", "phidot_slow ≃ " + r,
-                                 fmt::format("{:.6g} mrad/s", rate * 1e3)}) {
+  for (const std::string& same : std::vector<std::string>{
+           r + "/s", r + " /s", "≈ " + r + " rad/s", "~" + r + " rad/s", "φ̇ ≈ " + r + " rad/s",
+           "phidot_slow ≃ " + r, fmt::format("{:.6g} mrad/s", rate * 1e3)}) {
     INFO(same);
     REQUIRE(top.check("phidot_slow", same).correct);
   }
@@ -106,10 +108,10 @@ TEST_CASE("numbers as calculators and textbooks write them") {
   const double deg = top.answer("theta_max").value.data[0] * 180 / kPi;
   const int d = static_cast<int>(deg), m = static_cast<int>((deg - d) * 60);
   const double s = ((deg - d) * 60 - m) * 60;
-  for (const std::string& same : std::vector<std::string>
-       {fmt::format("{}°{}′{:.1f}″", d, m, s), fmt::format("{}° {}′ {:.1f}″", d, m, s),
-        fmt::format("{}°{}'{:.1f}\"", d, m, s), fmt::format("{}°{:.2f}′", d, m + s / 60),
-        fmt::format("{} deg {} arcmin {:.1f} arcsec", d, m, s)}) {
+  for (const std::string& same : std::vector<std::string>{
+           fmt::format("{}°{}′{:.1f}″", d, m, s), fmt::format("{}° {}′ {:.1f}″", d, m, s),
+           fmt::format("{}°{}'{:.1f}\"", d, m, s), fmt::format("{}°{:.2f}′", d, m + s / 60),
+           fmt::format("{} deg {} arcmin {:.1f} arcsec", d, m, s)}) {
     INFO(same);
     REQUIRE(top.check("theta_max", same).correct);
   }
@@ -167,11 +169,11 @@ TEST_CASE("a diagonal matrix written as a call reads as the matrix") {
   REQUIRE(box.check("I_cm", step).correct);
   const auto v = diagonal_of(box, "I_cm");
   const std::string list = v[0] + ", " + v[1] + ", " + v[2];
-  for (const std::string& same : std::vector<std::string>
-       {"diag(" + list + ") kg m^2", "np.diag([" + list + "])", "numpy.diag([" + list + "])",
-        "diag([" + v[0] + " " + v[1] + " " + v[2] + "])", "diagm([" + list + "])",
-        "DiagonalMatrix[{" + list + "}]", "sp.diag(" + list + ")",
-        "M/12 diag(b²+c², a²+c², a²+b²)", "\\operatorname{diag}(" + list + ")"}) {
+  for (const std::string& same : std::vector<std::string>{
+           "diag(" + list + ") kg m^2", "np.diag([" + list + "])", "numpy.diag([" + list + "])",
+           "diag([" + v[0] + " " + v[1] + " " + v[2] + "])", "diagm([" + list + "])",
+           "DiagonalMatrix[{" + list + "}]", "sp.diag(" + list + ")",
+           "M/12 diag(b²+c², a²+c², a²+b²)", "\\operatorname{diag}(" + list + ")"}) {
     INFO(same);
     REQUIRE(box.check("I_cm", same).correct);
   }
@@ -184,16 +186,18 @@ TEST_CASE("components given one by one with their labels") {
   const Fixture box("box-corner");
   const auto& c = box.answer("center_of_mass").value.data;
   const auto f = [&](std::size_t k) { return fmt::format("{:.10g}", c[k]); };
-  for (const std::string& same : std::vector<std::string>
-       {"x = " + f(0) + ", y = " + f(1) + ", z = " + f(2),
-        "z = " + f(2) + " m, x = " + f(0) + " m, y = " + f(1) + " m",  // any order
-        "x_cm = a/2, y_cm = b/2, z_cm = c/2", "r₁ = " + f(0) + ", r₂ = " + f(1) + ", r₃ = " + f(2)}) {
+  for (const std::string& same : std::vector<std::string>{
+           "x = " + f(0) + ", y = " + f(1) + ", z = " + f(2),
+           "z = " + f(2) + " m, x = " + f(0) + " m, y = " + f(1) + " m",  // any order
+           "x_cm = a/2, y_cm = b/2, z_cm = c/2",
+           "r₁ = " + f(0) + ", r₂ = " + f(1) + ", r₃ = " + f(2)}) {
     INFO(same);
     REQUIRE(box.check("center_of_mass", same).correct);
   }
-  REQUIRE_FALSE(box.check("center_of_mass", "x = " + f(1) + ", y = " + f(0) + ", z = " + f(2)).correct);
-  for (const std::string& none : std::vector<std::string> {"x = 1, y = 2, w = 3", "x = 1, x = 2, z = 3", "x = 1, y = 2",
-                                 "a = 1, b = 2, c = 3"}) {
+  REQUIRE_FALSE(
+      box.check("center_of_mass", "x = " + f(1) + ", y = " + f(0) + ", z = " + f(2)).correct);
+  for (const std::string& none : std::vector<std::string>{
+           "x = 1, y = 2, w = 3", "x = 1, x = 2, z = 3", "x = 1, y = 2", "a = 1, b = 2, c = 3"}) {
     INFO(none);
     REQUIRE_THROWS_WITH(box.check("center_of_mass", none),
                         Catch::Contains("components given one by one"));
@@ -208,8 +212,8 @@ TEST_CASE("components given one by one with their labels") {
   const auto column = [&](std::size_t k) {
     return fmt::format("({:.8f}, {:.8f}, {:.8f})", axes[k], axes[3 + k], axes[6 + k]);
   };
-  const check::Verdict by_name = box.check("principal_axes_corner", "e1 = " + column(0) + ", e2 = " +
-                                                                 column(1) + ", e3 = " + column(2));
+  const check::Verdict by_name = box.check(
+      "principal_axes_corner", "e1 = " + column(0) + ", e2 = " + column(1) + ", e3 = " + column(2));
   REQUIRE(by_name.correct);
   REQUIRE_THAT(by_name.line, Catch::Contains("as columns"));
 
@@ -217,11 +221,13 @@ TEST_CASE("components given one by one with their labels") {
   const Fixture euler("euler-angles");
   const auto& angles = euler.answer("angles_phy711").value.data;
   const auto degrees = [&](std::size_t k) { return fmt::format("{:.8g}°", angles[k] * 180 / kPi); };
-  REQUIRE(euler.check("angles_phy711",
-                      "γ = " + degrees(2) + ", α = " + degrees(0) + ", β = " + degrees(1))
+  REQUIRE(euler
+              .check("angles_phy711",
+                     "γ = " + degrees(2) + ", α = " + degrees(0) + ", β = " + degrees(1))
               .correct);
-  REQUIRE(euler.check("angles_phy711",
-                      "phi = " + degrees(0) + ", theta = " + degrees(1) + ", psi = " + degrees(2))
+  REQUIRE(euler
+              .check("angles_phy711",
+                     "phi = " + degrees(0) + ", theta = " + degrees(1) + ", psi = " + degrees(2))
               .correct);
   REQUIRE_FALSE(euler
                     .check("angles_phy711",
@@ -233,12 +239,12 @@ TEST_CASE("a unit glued to a bracket, and numbers in lines as MATLAB shows them"
   const Fixture box("box-corner");
   const auto& c = box.answer("center_of_mass").value.data;  // metres
   const std::string list = fmt::format("{:.10g}, {:.10g}, {:.10g}", c[0], c[1], c[2]);
-  for (const std::string& same : std::vector<std::string>
-       {"[" + list + "]m", "(" + list + ")m",
-        fmt::format("({:.10g},{:.10g},{:.10g})cm", c[0] * 100, c[1] * 100, c[2] * 100),
-        fmt::format("{:.4f} {:.4f} {:.4f}", c[0], c[1], c[2]),
-        fmt::format("ans =\n\n   {:10.4f}{:10.4f}{:10.4f}\n", c[0], c[1], c[2]),
-        fmt::format("{:.4f}\n{:.4f}\n{:.4f}", c[0], c[1], c[2])}) {
+  for (const std::string& same : std::vector<std::string>{
+           "[" + list + "]m", "(" + list + ")m",
+           fmt::format("({:.10g},{:.10g},{:.10g})cm", c[0] * 100, c[1] * 100, c[2] * 100),
+           fmt::format("{:.4f} {:.4f} {:.4f}", c[0], c[1], c[2]),
+           fmt::format("ans =\n\n   {:10.4f}{:10.4f}{:10.4f}\n", c[0], c[1], c[2]),
+           fmt::format("{:.4f}\n{:.4f}\n{:.4f}", c[0], c[1], c[2])}) {
     INFO(same);
     REQUIRE(box.check("center_of_mass", same).correct);
   }
