@@ -17,13 +17,6 @@
 namespace wobble::check {
 namespace {
 
-bool is_letter(char c) {
-  return std::isalpha(static_cast<unsigned char>(c)) != 0;
-}
-bool is_digit(char c) {
-  return std::isdigit(static_cast<unsigned char>(c)) != 0;
-}
-
 // A symbol as LaTeX draws it: marks over it, the letter (or \alpha), the subscript. Two
 // spellings of one symbol ("\dot\psi_0", "\dot{\psi_{0}}") have the same key.
 struct Atom {

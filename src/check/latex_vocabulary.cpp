@@ -6,12 +6,6 @@
 
 namespace wobble::check {
 
-namespace {
-bool is_letter(char c) {
-  return std::isalpha(static_cast<unsigned char>(c)) != 0;
-}
-}  // namespace
-
 const std::set<std::string>& accents() {
   static const std::set<std::string> s{"dot",      "ddot",  "hat",     "bar",
                                        "vec",      "tilde", "mathbf",  "boldsymbol",

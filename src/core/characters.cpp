@@ -16,10 +16,6 @@ struct Decoded {
   std::size_t bytes;
 };
 
-bool is_digit(char c) {
-  return std::isdigit(static_cast<unsigned char>(c)) != 0;
-}
-
 Decoded decode(const std::string& text, std::size_t i) {
   auto it = text.begin() + static_cast<std::ptrdiff_t>(i);
   const code_point c = Utf8::decode(it, text.end());
@@ -41,6 +37,13 @@ bool is_valid(code_point c) {
   return c != boost::locale::utf::illegal && c != boost::locale::utf::incomplete;
 }
 }  // namespace
+
+bool is_letter(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) != 0;
+}
+bool is_digit(char c) {
+  return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
 
 std::string character_name(const std::string& text, std::size_t i, std::size_t* bytes) {
   const Decoded d = decode(text, i);

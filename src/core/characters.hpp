@@ -16,6 +16,10 @@ std::string character_name(const std::string& text, std::size_t i, std::size_t* 
 /// `s` without the spaces, tabs and line ends around it.
 std::string trim(const std::string& s);
 
+/// ASCII letters and digits only, whatever the locale (a byte of UTF-8 is neither).
+bool is_letter(char c);
+bool is_digit(char c);
+
 /// `s` with its ASCII letters in lower case (a command or a name typed in any case).
 std::string ascii_lower(std::string s);
 

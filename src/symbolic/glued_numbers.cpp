@@ -4,15 +4,11 @@
 #include <array>
 #include <cctype>
 
+#include "core/characters.hpp"
+
 namespace wobble::sym {
 
 namespace {
-bool is_letter(char c) {
-  return std::isalpha(static_cast<unsigned char>(c)) != 0;
-}
-bool is_digit(char c) {
-  return std::isdigit(static_cast<unsigned char>(c)) != 0;
-}
 
 // The functions an expression may call, by every name it reads (expression_guard.cpp).
 bool is_function(const std::string& name) {

@@ -4,10 +4,11 @@
 #include <utility>
 #include <vector>
 
+#include "core/characters.hpp"
+
 namespace wobble::sym {
 
 namespace {
-bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
 
 const char* const kSuperscripts[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
