@@ -254,7 +254,7 @@ std::string arc_marks_read(const std::string& s) {
 }
 
 // ASCII, one line, a numeric exponent's sign in parentheses.
-std::string prepared(const std::string& typed) {
+std::string prepared(const std::string& typed, const std::string& field) {
   // Angle brackets, as calculus writes a vector ("⟨1, 2, 3⟩", "<1, 2, 3>"): no expression
   // compares, so they can be nothing else.
   std::string bracketed = typed;
@@ -273,7 +273,7 @@ std::string prepared(const std::string& typed) {
   // "$m*R^2/4$": the math delimiters of a LaTeX or Markdown source around plain text.
   s = without_python_wrapper(without_math_delimiters(s));
   // "diag(a, b, c)", "M/12 diag(..)": the matrix as rows (check/written_forms.hpp).
-  s = diagonals_written_out(s);
+  s = diagonals_written_out(s, field);
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
   for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
     s.replace(at, 2, "^");
@@ -675,7 +675,7 @@ std::string without_closing_punctuation(const std::string& typed) {
 
 std::string reading_form(const std::string& typed) {
   check_bounds(typed, "answer");
-  const auto [value, unit] = split_unit(prepared(without_closing_punctuation(typed)));
+  const auto [value, unit] = split_unit(prepared(without_closing_punctuation(typed), "answer"));
   return layout(value) + (unit.empty() ? "" : " " + unit);
 }
 
@@ -1002,7 +1002,7 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
   // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
   const std::string source =
       looks_like_latex(answer) ? latex_as_text(answer, table, field) : answer;
-  const std::string text = sexagesimal_degrees(underscores_dropped(prepared(source), table));
+  const std::string text = sexagesimal_degrees(underscores_dropped(prepared(source, field), table));
   if (text.empty()) {
     throw InputError(field +
                      ": empty; type a number (with a unit if you like), a vector [x, y, "

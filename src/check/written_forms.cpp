@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <string>
 #include <vector>
 
 #include "check/brackets.hpp"
@@ -13,6 +14,9 @@
 namespace wobble::check {
 
 namespace {
+// The most entries a diagonal is written out with: a 3x3 matrix's.
+constexpr std::size_t kMostDiagonalEntries = 3;
+
 // The calls that make a diagonal matrix, the longest first so that "np.diag" is not read as
 // "np." and "diag".
 const std::array<std::string, 8>& diagonal_calls() {
@@ -114,7 +118,7 @@ std::optional<std::vector<std::size_t>> component_slots(const std::vector<std::s
 }
 }  // namespace
 
-std::string diagonals_written_out(const std::string& ascii) {
+std::string diagonals_written_out(const std::string& ascii, const std::string& field) {
   std::string out;
   std::size_t i = 0;
   while (i < ascii.size()) {
@@ -131,6 +135,10 @@ std::string diagonals_written_out(const std::string& ascii) {
     }
     const std::vector<std::string> entries =
         diagonal_entries(ascii.substr(open + 1, close - open - 1));
+    if (entries.size() > kMostDiagonalEntries) {
+      throw InputError(field + ": " + name + "(..) with " + std::to_string(entries.size()) +
+                       " entries; wobble's matrices are 3x3");
+    }
     if (entries.size() < 2 || std::any_of(entries.begin(), entries.end(),
                                           [](const std::string& e) { return e.empty(); })) {
       out += ascii.substr(i, close + 1 - i);  // no diagonal: the reader says what it is

@@ -29,7 +29,9 @@ std::string sexagesimal_degrees(const std::string& ascii);
 
 /// `ascii` with each diagonal matrix written as its rows: "M/12 diag(a, b, c)" ->
 /// "M/12 [[a, 0, 0], [0, b, 0], [0, 0, c]]". Text that is no such call is left as it is.
-std::string diagonals_written_out(const std::string& ascii);
+/// @throws InputError naming `field` for a diagonal of more than three entries: wobble's
+///   matrices are 3x3, and n entries would be written out as n² (a hostile answer's thousands).
+std::string diagonals_written_out(const std::string& ascii, const std::string& field);
 
 /// "[0.5, 1, 1.5]" for "x = 0.5, y = 1, z = 1.5" (the text as typed, Unicode or not); nullopt for
 /// a text that is no list of labelled components.

@@ -180,6 +180,9 @@ TEST_CASE("a diagonal matrix written as a call reads as the matrix") {
   REQUIRE_FALSE(box.check("I_cm", "diag(" + v[0] + ", " + v[2] + ", " + v[1] + ")").correct);
   REQUIRE_THROWS_WITH(box.check("I_cm", "diag(" + v[0] + ", " + v[1] + ")"),
                       Catch::Contains("3x3 matrix") && Catch::Contains("2x2"));
+  // More entries than a 3x3 matrix's are refused before they are written out (n² of them).
+  REQUIRE_THROWS_WITH(box.check("I_cm", "diag(1, 2, 3, 4)"),
+                      Catch::Contains("diag(..) with 4 entries"));
 }
 
 TEST_CASE("components given one by one with their labels") {

@@ -878,6 +878,13 @@ TEST_CASE("hostile answers are answered within seconds and bounded memory (check
                                    // LaTeX, where each letter is a symbol: a run of 89000 (the
                                    // reader rescanned it for each letter, taking minutes).
                                    "\\alpha " + std::string(89000, 'R')};
+  // A diagonal written out: n entries would be n² (thousands of entries, millions of zeros);
+  // many diagonals at once; a Greek letter set apart from each Latin one, thousands of times.
+  std::string diagonal = "diag(1", diagonals, greek;
+  for (int k = 0; k < 3000; ++k) diagonal += ", 1";
+  for (int k = 0; k < 2000; ++k) diagonals += "diag(m, R, m) + ";
+  for (int k = 0; k < 5000; ++k) greek += "mω";
+  answers.insert(answers.end(), {diagonal + ")", diagonals + "0", greek});
   for (const std::string& answer : answers) {
     for (const std::string how : {"check", "worksheet"}) {
       const std::string command =
