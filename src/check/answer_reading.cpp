@@ -235,14 +235,10 @@ std::string greek_letters_apart(const std::string& typed) {
 std::string arc_marks_read(const std::string& s) {
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
+    // The number before is looked for at a mark only: a run of digits is not walked back over
+    // at each of its own.
     const bool mark = s[i] == '"' || s[i] == '\'';
-    std::size_t k = out.size();
-    while (k > 0 && (std::isdigit(static_cast<unsigned char>(out[k - 1])) || out[k - 1] == '.'))
-      --k;
-    const bool after_number =
-        k < out.size() &&
-        (k == 0 || !(std::isalpha(static_cast<unsigned char>(out[k - 1])) || out[k - 1] == '_'));
-    if (!mark || !after_number) {
+    if (!mark || !sym::ends_in_number(out)) {
       out += s[i];
       continue;
     }
@@ -516,9 +512,10 @@ std::pair<std::string, std::string> split_glued_unit(const std::string& s,
   }
   const std::string number = s.substr(0, k), glued = trim(s.substr(k));
   // "4.995/s", "4.995 /s": a reciprocal unit without its 1.
-  const std::string unit = !glued.empty() && glued[0] == '/' ? "1" + glued : glued;
-  if (unit.empty() || glued[0] == '1' ||
-      !(std::isalpha(static_cast<unsigned char>(unit[0])) || unit[0] == '1') || !is_unit(unit))
+  const bool per = !glued.empty() && glued[0] == '/';
+  const std::string unit = per ? "1" + glued : glued;
+  if (unit.empty() || !(per || std::isalpha(static_cast<unsigned char>(glued[0]))) ||
+      !is_unit(unit))
     return {s, ""};
   for (const auto& [start, length] : identifiers(unit)) {
     if (table.contains(unit.substr(start, length))) return {s, ""};

@@ -56,8 +56,7 @@ std::vector<std::string> diagonal_entries(std::string inside) {
 bool is_plain_number(const std::string& token) {
   std::size_t i = token.size() > 1 && (token[0] == '-' || token[0] == '+') ? 1 : 0;
   std::size_t digits = 0;
-  while (i < token.size() &&
-         (std::isdigit(static_cast<unsigned char>(token[i])) || token[i] == '.')) {
+  while (i < token.size() && (is_digit(token[i]) || token[i] == '.')) {
     digits += token[i] != '.';
     ++i;
   }
@@ -66,7 +65,7 @@ bool is_plain_number(const std::string& token) {
     ++i;
     if (i < token.size() && (token[i] == '-' || token[i] == '+')) ++i;
     const std::size_t exponent = i;
-    while (i < token.size() && std::isdigit(static_cast<unsigned char>(token[i]))) ++i;
+    while (i < token.size() && is_digit(token[i])) ++i;
     if (i == exponent) return false;
   }
   return i == token.size();
@@ -193,9 +192,7 @@ std::string sexagesimal_degrees(const std::string& ascii) {
   const auto number = [&]() -> std::string {
     spaces();
     const std::size_t start = i;
-    while (i < ascii.size() &&
-           (std::isdigit(static_cast<unsigned char>(ascii[i])) || ascii[i] == '.'))
-      ++i;
+    while (i < ascii.size() && (is_digit(ascii[i]) || ascii[i] == '.')) ++i;
     return ascii.substr(start, i - start);
   };
   const auto mark = [&](std::initializer_list<const char*> marks) {
@@ -216,7 +213,7 @@ std::string sexagesimal_degrees(const std::string& ascii) {
   if (degrees.empty() || !mark({"deg"})) return ascii;
   const std::string minutes = number();
   if (minutes.empty() || !mark({"arcmin", "'"})) return ascii;
-  std::string seconds = number();
+  const std::string seconds = number();
   if (!seconds.empty() && !mark({"arcsec", "''", "\""})) return ascii;
   spaces();
   if (i != ascii.size()) return ascii;
@@ -234,14 +231,13 @@ std::optional<std::string> labelled_components(const std::string& text, const st
     labels.push_back(name_spelling(sides[0]));
     values.push_back(sides[1]);
   }
-  const auto refuse = [&]() -> std::optional<std::string> {
+  const std::optional<std::vector<std::size_t>> slots = component_slots(labels);
+  if (!slots) {
     throw InputError(field +
                      ": components given one by one need one label for each, the same name "
                      "with x, y, z or 1, 2, 3 in it (x = 0.5, y = 1, z = 1.5), or Euler's "
                      "angles by name; or write the vector [x, y, z]");
-  };
-  const std::optional<std::vector<std::size_t>> slots = component_slots(labels);
-  if (!slots) return refuse();
+  }
   std::vector<std::string> in_order(labels.size());
   for (std::size_t k = 0; k < labels.size(); ++k) in_order[(*slots)[k]] = values[k];
   // "e1 = (..), e2 = (..), e3 = (..)": vectors labelled so are a matrix's columns, as the key's

@@ -42,9 +42,11 @@ std::string name_at(const std::string& s, std::size_t at) {
 std::string numbers_times_constants(const std::string& ascii) {
   std::string out;
   for (std::size_t i = 0; i < ascii.size(); ++i) {
+    // Letters only: the number before is looked for where a name starts, not at each digit.
     const bool after_factor =
-        ends_in_number(out) ? !starts_exponent(ascii, i) : !out.empty() && out.back() == ')';
-    if (is_letter(ascii[i]) && after_factor) {
+        is_letter(ascii[i]) &&
+        (ends_in_number(out) ? !starts_exponent(ascii, i) : !out.empty() && out.back() == ')');
+    if (after_factor) {
       const std::string name = name_at(ascii, i);
       if (name == "pi" || name == "Pi" || is_function(name)) out += '*';
     }
