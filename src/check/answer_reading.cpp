@@ -5,6 +5,7 @@
 #include <cctype>
 #include <map>
 #include <optional>
+#include <set>
 #include <string_view>
 #include <tuple>
 #include <vector>
@@ -14,8 +15,10 @@
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/expression_guard.hpp"
 #include "symbolic/glued_numbers.hpp"
 #include "symbolic/unicode_notation.hpp"
+#include "symbolic/units.hpp"
 
 namespace wobble::check {
 
@@ -459,16 +462,44 @@ bool has_bare_function(const std::string& written) {
   });
 }
 
+// The problem's symbols by the names their LaTeX spells, where that is not the name: w1 by
+// "omega1" when its LaTeX is \omega_1, so "ω₁" as the question prints it reads. Not a spelling
+// two symbols share, nor one that is a symbol, a unit, pi or a function itself.
+std::map<std::string, std::string> names_by_spelling(const sym::SymbolTable& table) {
+  std::map<std::string, std::string> by_spelling;
+  std::set<std::string> shared;
+  for (const auto& name : table.names()) {
+    const std::string spelling = sym::typed_spelling(table.latex_of(name));
+    if (spelling == name || spelling.empty() || table.contains(spelling) || is_unit(spelling) ||
+        spelling == "pi" || spelling == "Pi" || sym::is_function_name(spelling)) {
+      continue;
+    }
+    if (!by_spelling.emplace(spelling, name).second) shared.insert(spelling);
+  }
+  for (const auto& spelling : shared) by_spelling.erase(spelling);
+  return by_spelling;
+}
+
 // "psidot_0" for the problem's psidot0, "theta_0" for theta0: a subscript as LaTeX writes it.
 // Only where the name with the underscore is not a symbol itself and the one without it is.
-std::string underscores_dropped(const std::string& s, const sym::SymbolTable& table) {
+// Then "omega1" and "omega_1" for w1 whose LaTeX is \omega_1 (names_by_spelling).
+std::string symbols_as_spelled(const std::string& s, const sym::SymbolTable& table) {
+  const auto by_spelling = names_by_spelling(table);
   std::string out;
   std::size_t done = 0;
   for (const auto& [start, length] : identifiers(s)) {
     std::string id = s.substr(start, length), bare = id;
     bare.erase(std::remove(bare.begin(), bare.end(), '_'), bare.end());
     out += s.substr(done, start - done);
-    out += bare != id && !table.contains(id) && table.contains(bare) ? bare : id;
+    if (table.contains(id)) {
+      out += id;
+    } else if (table.contains(bare)) {
+      out += bare;
+    } else if (const auto named = by_spelling.find(bare); named != by_spelling.end()) {
+      out += named->second;
+    } else {
+      out += id;
+    }
     done = start + length;
   }
   return out + s.substr(done);
@@ -999,7 +1030,7 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
   // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
   const std::string source =
       looks_like_latex(answer) ? latex_as_text(answer, table, field) : answer;
-  const std::string text = sexagesimal_degrees(underscores_dropped(prepared(source, field), table));
+  const std::string text = sexagesimal_degrees(symbols_as_spelled(prepared(source, field), table));
   if (text.empty()) {
     throw InputError(field +
                      ": empty; type a number (with a unit if you like), a vector [x, y, "

@@ -19,6 +19,10 @@ std::string without(std::string s, const std::string& chars) {
 bool spells(const Parameter& p, const std::string& typed) {
   if (sym::to_ascii(typed) == p.name) return true;
   if (without(typed, "_") == p.name) return true;
+  // "ω₁", "omega_1" for w1 whose LaTeX is \omega_1.
+  if (!p.latex.empty() && without(sym::to_ascii(typed), "_ ") == sym::typed_spelling(p.latex)) {
+    return true;
+  }
   const std::string latex = without(typed, "$ ");
   return !p.latex.empty() && (latex == p.latex || without(latex, "{}") == without(p.latex, "{} "));
 }

@@ -88,8 +88,9 @@ struct Problem {
   std::filesystem::path file;
 
   /// The parameter a name spells: its identifier ("theta0"), or as a key prints it: the
-  /// terminal's Unicode ("θ0", "ψ̇0"), a LaTeX subscript ("theta_0") or the parameter's LaTeX
-  /// (`\theta_0`, `\theta_{0}`, in $..$ or not).
+  /// terminal's Unicode ("θ0", "ψ̇0"), a LaTeX subscript ("theta_0"), the parameter's LaTeX
+  /// (`\theta_0`, `\theta_{0}`, in $..$ or not) or what that LaTeX prints as ("ω₁", "omega1"
+  /// for w1 whose LaTeX is `\omega_1`).
   /// @throws InputError naming the unknown parameter (and the known ones).
   const Parameter& parameter(const std::string& name) const;
   /// The hint of the part with this id; empty if it has none (or there is no such part).

@@ -1,11 +1,13 @@
 #include "symbolic/expression_guard.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/characters.hpp"
@@ -165,7 +167,28 @@ struct Scanner {
     return 1;
   }
 };
+// The functions an expression may call. GiNaC's parser knows many more, some of which compute
+// exactly (tgamma(100000) digit by digit).
+constexpr std::array<std::string_view, 16> kFunctions{
+    "sqrt", "sin", "cos",  "tan",  "asin", "acos", "atan",      "atan2",
+    "exp",  "log", "sinh", "cosh", "tanh", "abs",  "EllipticK", "EllipticE"};
+
+// kFunctions and the other names they are read by (ln for log).
+const std::set<std::string>& function_names() {
+  static const std::set<std::string> names = [] {
+    std::set<std::string> f;
+    for (const auto function : kFunctions) f.emplace(function);
+    for (const auto& [alias, name] : kFunctionAliases) f.emplace(alias);
+    return f;
+  }();
+  return names;
+}
+
 }  // namespace
+
+bool is_function_name(const std::string& name) {
+  return function_names().count(name) != 0;
+}
 
 void check_expression_cost(const std::string& text, const std::string& field,
                            const std::string& shown, const GiNaC::symtab& symbols) {
@@ -175,22 +198,15 @@ void check_expression_cost(const std::string& text, const std::string& field,
     if (u < 0x20 && text[i] != '\t') s.fail("it contains " + character_name(text, i));
     if (u > 0x7e) s.fail("it contains " + character_name(text, i) + ", which no expression uses");
   }
-  // Names: a function only from the list below (GiNaC's parser knows many more, some of which
-  // compute exactly, tgamma(100000) digit by digit), anything else a declared symbol (GiNaC
-  // would also accept its constants Catalan, Euler and the imaginary unit I).
-  static const std::vector<std::string> kFunctions{
-      "sqrt", "sin", "cos",  "tan",  "asin", "acos", "atan",      "atan2",
-      "exp",  "log", "sinh", "cosh", "tanh", "abs",  "EllipticK", "EllipticE"};
-  static const std::set<std::string> functions = [] {
-    std::set<std::string> f(kFunctions.begin(), kFunctions.end());
-    for (const auto& [alias, name] : kFunctionAliases) f.emplace(alias);
-    return f;
-  }();
+  // Names: a function only from kFunctions, anything else a declared symbol (GiNaC would also
+  // accept its constants Catalan, Euler and the imaginary unit I).
+  const std::set<std::string>& functions = function_names();
   // "sqrt, ..., atan or arctan, ...": each function with the other name it is read by.
   static const std::string known = [] {
     std::string list;
     for (const auto& f : kFunctions) {
-      list += (list.empty() ? "" : ", ") + f;
+      list += list.empty() ? "" : ", ";
+      list += f;
       for (const auto& [alias, name] : kFunctionAliases) {
         if (name == f) list += " or " + std::string(alias);
       }

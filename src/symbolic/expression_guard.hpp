@@ -15,6 +15,9 @@
 
 namespace wobble::sym {
 
+/// Whether an expression may call `name`: sqrt, sin, .., log or ln, .., EllipticK.
+bool is_function_name(const std::string& name);
+
 /// @throws ExpressionError "FIELD: expression "SHOWN" is refused: WHY".
 void check_expression_cost(const std::string& text, const std::string& field,
                            const std::string& shown, const GiNaC::symtab& symbols);

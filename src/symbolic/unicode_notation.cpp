@@ -1,10 +1,12 @@
 #include "symbolic/unicode_notation.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <utility>
 #include <vector>
 
 #include "core/characters.hpp"
+#include "symbolic/plain_text.hpp"
 
 namespace wobble::sym {
 
@@ -200,6 +202,14 @@ std::string to_ascii(const std::string& text) {
     i = j - 1;
   }
   return result;
+}
+
+std::string typed_spelling(const std::string& latex) {
+  std::string typed = to_ascii(math_to_unicode(latex));
+  typed.erase(
+      std::remove_if(typed.begin(), typed.end(), [](char c) { return c == '_' || c == ' '; }),
+      typed.end());
+  return typed;
 }
 
 }  // namespace wobble::sym

@@ -26,4 +26,9 @@ std::string to_unicode(const std::string& ginac_text);
 /// "omega*sqrt(3*cos(alpha)^2 + 1)/2", "7.2×10⁻⁴" -> "7.2*10^(-4)", "15°" -> "15 deg".
 std::string to_ascii(const std::string& unicode_text);
 
+/// How a student types a symbol whose LaTeX is `latex`, as this notation reads it back: the
+/// Unicode a key prints for it (math_to_unicode) through to_ascii, without underscores or
+/// spaces. `\omega_1` -> "omega1" (from "ω₁"), `\dot\theta_0` -> "thetadot0", `I_1` -> "I1".
+std::string typed_spelling(const std::string& latex);
+
 }  // namespace wobble::sym

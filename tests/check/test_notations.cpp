@@ -12,6 +12,7 @@
 #include "check/judge.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/units.hpp"
+#include "temp_files.hpp"
 
 using namespace wobble;
 using Catch::Matchers::WithinRel;
@@ -261,4 +262,69 @@ TEST_CASE("a unit glued to a bracket, and numbers in lines as MATLAB shows them"
   REQUIRE(box.check("I_cm", shown).correct);
   // Lines of unequal length are no matrix.
   REQUIRE_THROWS_AS(box.check("I_cm", "1 0 0\n0 1\n0 0 1"), InputError);
+}
+
+TEST_CASE("a symbol by the name its LaTeX spells, where that spelling is no other thing") {
+  // The asymmetric top's w1 is set as \omega_1: its statement prints "ω₁".
+  const Fixture top("asymmetric-top");
+  REQUIRE(top.check("energy", "(I₁ω₁² + I₂ω₂² + I₃ω₃²)/2").correct);
+  REQUIRE(top.check("energy", "(I_1 omega_1^2 + I2 omega2^2 + I3 omega3^2)/2").correct);
+  REQUIRE_FALSE(top.check("energy", "(I₁ω₂² + I₂ω₁² + I₃ω₃²)/2").correct);  // ω₁, ω₂ swapped
+
+  // A spelling two symbols share names neither; one that is a symbol or a unit keeps its meaning.
+  const std::string file = wobble::test::write_file("check/spellings.toml", R"TOML(id = "spellings"
+title = "t"
+solver = "inertia"
+statement = "s"
+
+[[parameters]]
+name = "a"
+latex = "\\alpha"
+unit = "kg m^2"
+default = 4
+range = "(0, inf)"
+
+[[parameters]]
+name = "b"
+latex = "\\omega_1"
+unit = "kg m^2"
+default = 2
+range = "(0, inf)"
+
+[[parameters]]
+name = "c"
+latex = "\\omega_1"
+unit = "kg m^2"
+default = 3
+range = "(0, inf)"
+
+[[parameters]]
+name = "d"
+latex = "m"
+unit = "kg m^2"
+default = 1
+range = "(0, inf)"
+
+[[parameters]]
+name = "e"
+latex = "d"
+unit = "kg m^2"
+default = 2
+range = "(0, inf)"
+
+[body]
+tensor = [["a", "0", "0"], ["0", "b + c", "0"], ["0", "0", "d + e"]]
+
+[[parts]]
+id = "a"
+question = "q"
+answers = ["I"]
+)TOML")
+                               .string();
+  const Fixture f(file);
+  REQUIRE(f.check("I", "[[α, 0, 0], [0, b + c, 0], [0, 0, d + e]]").correct);
+  REQUIRE_THROWS_AS(f.check("I", "[[a, 0, 0], [0, ω₁ + c, 0], [0, 0, d + e]]"), InputError);
+  // "d" is the symbol d, not e, whose LaTeX is d; "m" is no symbol, though d's LaTeX is m.
+  REQUIRE_FALSE(f.check("I", "[[a, 0, 0], [0, b + c, 0], [0, 0, d + d]]").correct);
+  REQUIRE_THROWS_AS(f.check("I", "[[a, 0, 0], [0, b + c, 0], [0, 0, m + e]]"), InputError);
 }

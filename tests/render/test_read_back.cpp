@@ -22,6 +22,7 @@
 #include "render/render.hpp"
 #include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
+#include "symbolic/plain_text.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "temp_files.hpp"
 
@@ -171,7 +172,9 @@ TEST_CASE("every parameter value a key prints reads back through --set, every pr
         values.push_back(value.substr(0, eq));   // "30°"
         values.push_back(value.substr(eq + 3));  // "0.5235987756 rad"
       }
-      for (const std::string& as : {name, want.name, want.latex, "$" + want.latex + "$"}) {
+      // Also as the statement prints the symbol ("ω₁"), and as it sounds ("omega1").
+      for (const std::string& as : {name, want.name, want.latex, "$" + want.latex + "$",
+                                    math_to_unicode(want.latex), sym::typed_spelling(want.latex)}) {
         for (const auto& v : values) {
           INFO(p.id << " variant " << variant << ": --set " << as << "=" << v);
           const sym::Values got = parameter_values(p, {as + "=" + v});
@@ -181,7 +184,7 @@ TEST_CASE("every parameter value a key prints reads back through --set, every pr
       }
     }
   });
-  REQUIRE(read > 500);  // 15 problems, three sets of values, 3 to 10 parameters, 4 names each
+  REQUIRE(read > 750);  // 15 problems, three sets of values, 3 to 10 parameters, 6 names each
 }
 
 namespace {
@@ -237,6 +240,64 @@ TEST_CASE("every printed form of every answer of every problem reads back as cor
     return texts;
   });
   REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to eight forms
+}
+
+namespace {
+// GiNaC text with each of the problem's symbols spelled by `spelling` (its name in, the
+// replacement out); functions and numbers as they were.
+std::string symbols_respelled(const std::string& ginac_text, const sym::SymbolTable& table,
+                              const std::function<std::string(const std::string&)>& spelling) {
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::string out;
+  for (std::size_t i = 0; i < ginac_text.size();) {
+    if (!std::isalpha(static_cast<unsigned char>(ginac_text[i]))) {
+      // A number runs on through its digits, so "2e" is never read as a symbol e.
+      const bool number = std::isdigit(static_cast<unsigned char>(ginac_text[i])) != 0;
+      do {
+        out += ginac_text[i++];
+      } while (number && i < ginac_text.size() && word(ginac_text[i]));
+      continue;
+    }
+    std::size_t end = i;
+    while (end < ginac_text.size() && word(ginac_text[end])) ++end;
+    const std::string id = ginac_text.substr(i, end - i);
+    out += table.contains(id) ? spelling(id) : id;
+    i = end;
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("every closed form with its symbols as the question prints them reads back") {
+  // The statement and questions print each symbol from its LaTeX: w1 as "ω₁", I1 as "I₁",
+  // theta0 as "θ₀". A student copies those, or types them as they sound ("omega1").
+  int forms = 0, respelled = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    const auto as_printed = [&](const std::string& name) {
+      return math_to_unicode(f.table.latex_of(name));
+    };
+    const auto as_typed = [&](const std::string& name) {
+      return sym::typed_spelling(f.table.latex_of(name));
+    };
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.symbolic.empty()) continue;
+        for (const std::string& text :
+             {sym::to_unicode(symbols_respelled(a.symbolic, f.table, as_printed)),
+              symbols_respelled(a.symbolic, f.table, as_typed)}) {
+          INFO(p.id << " " << a.name << ": " << text);
+          const Verdict v = f.check(a.name, text);
+          INFO(v.line);
+          REQUIRE(v.correct);
+          ++forms;
+          respelled += text != sym::to_unicode(a.symbolic) && text != a.symbolic;
+        }
+      }
+    }
+  }
+  REQUIRE(forms > 150);     // the catalog's closed forms, two spellings each
+  REQUIRE(respelled > 50);  // I₁, θ₀, ω₁ and the rest: most forms are not the key's own
 }
 
 TEST_CASE("every answer the worksheet reveals reads back as correct, every problem") {
@@ -847,9 +908,10 @@ std::vector<double> turned(const std::vector<double>& m, const std::array<int, 3
   return out;
 }
 std::string matrix_text(const std::vector<double>& m) {
-  return fmt::format("[[{:.12g}, {:.12g}, {:.12g}], [{:.12g}, {:.12g}, {:.12g}], [{:.12g}, "
-                     "{:.12g}, {:.12g}]]",
-                     m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]);
+  return fmt::format(
+      "[[{:.12g}, {:.12g}, {:.12g}], [{:.12g}, {:.12g}, {:.12g}], [{:.12g}, "
+      "{:.12g}, {:.12g}]]",
+      m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]);
 }
 }  // namespace
 
@@ -880,8 +942,8 @@ TEST_CASE("principal axes by meaning: rows or columns, any order, any length, ea
   REQUIRE_THAT(columns.line, Catch::Contains("as columns"));
   const Verdict not_axis = four.check("principal_axes", "[[1, 0, 1], [0, 0, -1], [0, 1, 0]]");
   REQUIRE_FALSE(not_axis.correct);
-  REQUIRE_THAT(not_axis.feedback.at(0), Catch::Contains("is not a principal axis") &&
-                                            Catch::Contains("45°"));
+  REQUIRE_THAT(not_axis.feedback.at(0),
+               Catch::Contains("is not a principal axis") && Catch::Contains("45°"));
   const Verdict twice = four.check("principal_axes", "[0, 0, 1], [1, 1, 0], [2, 2, 0]");
   REQUIRE_FALSE(twice.correct);
   REQUIRE_THAT(twice.feedback.at(0), Catch::Contains("same axis") && Catch::Contains("missing"));
@@ -915,11 +977,13 @@ answers = ["principal_moments", "principal_axes"]
 TEST_CASE("degenerate or not is the key's own decision, whatever the tolerance") {
   // A turn by 45 degrees in the x-y plane: principal only when the x-y moments are equal.
   const std::string turned45 = "[[1, 1, 0], [1, -1, 0], [0, 0, 1]]";
-  const Fixture exact(tensor_problem("pair-exact", R"([["2*k", "0", "0"], ["0", "2*k", "0"], ["0", "0", "3*k"]])"));
+  const Fixture exact(
+      tensor_problem("pair-exact", R"([["2*k", "0", "0"], ["0", "2*k", "0"], ["0", "0", "3*k"]])"));
   REQUIRE(exact.check("principal_axes", turned45).correct);
   for (const std::string gap : {"1e-12", "1e-9"}) {
     const Fixture near(tensor_problem("pair-" + gap, "[[\"2*k\", \"0\", \"0\"], [\"0\", \"2*k*(1+" +
-                                                         gap + ")\", \"0\"], [\"0\", \"0\", \"3*k\"]]"));
+                                                         gap +
+                                                         ")\", \"0\"], [\"0\", \"0\", \"3*k\"]]"));
     for (const double tolerance : {1e-9, 1e-2}) {
       INFO("gap " << gap << ", tolerance " << tolerance);
       Options o;
