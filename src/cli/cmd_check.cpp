@@ -20,7 +20,8 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
       ->required();
   auto* part =
       app.add_option("part", opt.part,
-                     "Part id (a, b, ...), or the answer's name (I0); may be left out with --name");
+                     "Part id (a, b, ...), or the answer's name (I0); may be left out with --name "
+                     "(the answer in its place)");
   auto* answer_word =
       app.add_option("answer", opt.answer_after_part,
                      "Your answer, as with --answer (an expression that starts with '-' after --)");
@@ -109,6 +110,20 @@ int check_submission(const CheckOptions& opt, const check::Options& o) {
   }
   return result.all_correct() ? kExitOk : kExitDifference;
 }
+// The part and the answer typed. "wobble check P --name N ANSWER": --name lets the part go,
+// so the one word after the problem is the answer unless it names a part or an answer.
+std::pair<std::string, std::string> part_and_answer(const CheckOptions& opt,
+                                                    const Problem& problem) {
+  const std::string& typed = opt.answer_after_part.empty() ? opt.answer : opt.answer_after_part;
+  if (opt.name.empty() || opt.part.empty() || !typed.empty()) return {opt.part, typed};
+  for (const auto& part : problem.parts) {
+    if (part.id == opt.part) return {opt.part, typed};
+    for (const auto& answer : part.answers) {
+      if (answer.name == opt.part) return {opt.part, typed};
+    }
+  }
+  return {"", opt.part};
+}
 }  // namespace
 
 int run_check(const CheckOptions& opt) {
@@ -128,11 +143,10 @@ int run_check(const CheckOptions& opt) {
         opt.problem, part == key.parts.end() ? "NAME" : part->answers.front().name, opt.problem,
         answers_by_part(key)));
   }
-  const Answer& answer = find_answer(key, opt.part, opt.name, "part", "--name");
+  const auto [part, typed] = part_and_answer(opt, problem);
+  const Answer& answer = find_answer(key, part, opt.name, "part", "--name");
   const sym::SymbolTable table = problem.symbol_table();
-  const check::Verdict v =
-      check::judge({key, table, values}, answer,
-                   opt.answer_after_part.empty() ? opt.answer : opt.answer_after_part, o);
+  const check::Verdict v = check::judge({key, table, values}, answer, typed, o);
   fmt::print("{}\n", v.line);
   for (const auto& f : v.feedback) fmt::print("  {}\n", f);
   return v.correct ? kExitOk : kExitDifference;

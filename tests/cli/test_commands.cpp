@@ -252,6 +252,15 @@ TEST_CASE("check: the answer's name where the part goes, the answer as the third
       run_wobble({"check", "flying-plate", "a", "--name", "I0", "m*R^2/2"});
   REQUIRE(part_and_name.exit_code == 1);
   REQUIRE_THAT(part_and_name.out, Catch::StartsWith("incorrect: I0"));
+  // With --name, the part's place may hold the answer: it names no part and no answer.
+  const RunResult name_then_answer =
+      run_wobble({"check", "flying-plate", "--name", "I0", "m·R²/4"});
+  INFO(name_then_answer.err);
+  REQUIRE(name_then_answer.exit_code == 0);
+  REQUIRE(name_then_answer.out == "correct: I0 (your expression simplifies to the key's)\n");
+  const RunResult part_not_answer = run_wobble({"check", "flying-plate", "--name", "I0", "b"});
+  REQUIRE(part_not_answer.exit_code == 2);
+  REQUIRE_THAT(part_not_answer.err, Catch::Contains("part b has no answer 'I0'"));
   // A negative number is an answer, not an option; -- before it reads the same.
   for (const std::vector<std::string>& negative :
        {std::vector<std::string>{"check", "heavy-top", "energy", "-1 J"},
