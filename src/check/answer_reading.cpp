@@ -262,7 +262,8 @@ std::string prepared(const std::string& typed, const std::string& field) {
     for (auto at = bracketed.find(angle); at != std::string::npos; at = bracketed.find(angle, at))
       bracketed.replace(at, std::string(angle).size(), square);
   }
-  std::string s = arc_marks_read(sym::to_ascii(greek_letters_apart(bracketed)));
+  std::string s =
+      arc_marks_read(sym::to_ascii(greek_letters_apart(sym::letters_folded(bracketed))));
   for (char& c : s) {
     if (c == '\n' || c == '\r' || c == '\t') c = ' ';
     // Mathematica's lists, "{{10, 0, 0}, {0, 6, 1}, ...}", and angle brackets: brackets here.
@@ -1088,6 +1089,10 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
         const std::string written = starred(value, table);
         // "M R^2 (psidot0 + 1/2"; not where no '*' could be written in ("1/2 [a, b").
         if (left_reads && names_a_symbol(right, table) && written != value) {
+          // Where the stars would not make it read either ("H ω cos α/(1-h)", h no symbol),
+          // what is wrong is that, not the stars.
+          if (!has_bare_function(written))
+            (void)sym::parse_value_text(layout(written), table, field);
           throw InputError(field + ": cannot read \"" + value + "\": " +
                            (has_bare_function(written)
                                 ? "products need '*' and a function's argument parentheses "

@@ -1,7 +1,10 @@
 #include "symbolic/unicode_notation.hpp"
 
 #include <algorithm>
+#include <array>
+#include <boost/locale/utf.hpp>
 #include <cctype>
+#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -11,7 +14,9 @@
 namespace wobble::sym {
 
 namespace {
-bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+bool is_name_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
 
 const char* const kSuperscripts[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
 const char* const kSubscripts[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
@@ -76,6 +81,52 @@ const std::vector<std::pair<std::string, std::string>>& replacements() {
   return r;
 }
 
+using boost::locale::utf::code_point;
+using Utf8 = boost::locale::utf::utf_traits<char>;
+
+// The Greek of the Mathematical Alphanumeric Symbols: each of its five styles (bold, italic,
+// bold italic, sans-serif bold, sans-serif bold italic) runs through these 58 characters.
+constexpr std::array<code_point, 58> kStyledGreek{
+    0x391, 0x392,  0x393, 0x394,  0x395, 0x396, 0x397, 0x398, 0x399, 0x39A, 0x39B, 0x39C,
+    0x39D, 0x39E,  0x39F, 0x3A0,  0x3A1, 0x3F4, 0x3A3, 0x3A4, 0x3A5, 0x3A6, 0x3A7, 0x3A8,
+    0x3A9, 0x2207, 0x3B1, 0x3B2,  0x3B3, 0x3B4, 0x3B5, 0x3B6, 0x3B7, 0x3B8, 0x3B9, 0x3BA,
+    0x3BB, 0x3BC,  0x3BD, 0x3BE,  0x3BF, 0x3C0, 0x3C1, 0x3C2, 0x3C3, 0x3C4, 0x3C5, 0x3C6,
+    0x3C7, 0x3C8,  0x3C9, 0x2202, 0x3F5, 0x3D1, 0x3F0, 0x3D5, 0x3F1, 0x3D6};
+
+// The plain letter or digit a styled one stands for; 0 for any other character.
+code_point plain_letter(code_point c) {
+  if (c >= 0x1D400 && c <= 0x1D6A3) {  // thirteen styles of A-Z a-z
+    const code_point k = (c - 0x1D400) % 52;
+    return k < 26 ? 'A' + k : 'a' + (k - 26);
+  }
+  if (c >= 0x1D6A8 && c <= 0x1D7C9) return kStyledGreek[(c - 0x1D6A8) % 58];
+  if (c >= 0x1D7CE && c <= 0x1D7FF) return '0' + (c - 0x1D7CE) % 10;  // five styles of 0-9
+  if (c == 0x210E) return 'h';  // italic h, which the block leaves to Letterlike Symbols
+  return 0;
+}
+
+// A Greek letter's variant form, as the letter every reader knows; 0 for any other character.
+code_point usual_greek(code_point c) {
+  switch (c) {
+    case 0x3F5:
+      return 0x3B5;  // ϵ ε
+    case 0x3D1:
+      return 0x3B8;  // ϑ θ
+    case 0x3F4:
+      return 0x398;  // ϴ Θ
+    case 0x3D5:
+      return 0x3C6;  // ϕ φ
+    case 0x3F1:
+      return 0x3C1;  // ϱ ρ
+    case 0x3F0:
+      return 0x3BA;  // ϰ κ
+    case 0x3C2:
+      return 0x3C3;  // ς σ
+    default:
+      return 0;
+  }
+}
+
 // Which of `table` starts text at i; its index, or -1.
 int match_at(const std::string& text, std::size_t i, const char* const* table, int n) {
   for (int k = 0; k < n; ++k) {
@@ -123,7 +174,8 @@ std::string to_unicode(const std::string& s) {
   return out;
 }
 
-std::string to_ascii(const std::string& text) {
+std::string to_ascii(const std::string& typed) {
+  const std::string text = letters_folded(typed);
   // First pass: everything but √, which becomes a marker (its operand is only known after the
   // letters around it are read).
   constexpr char kRoot = '\x01';
@@ -202,6 +254,39 @@ std::string to_ascii(const std::string& text) {
     i = j - 1;
   }
   return result;
+}
+
+std::string letters_folded(const std::string& text) {
+  std::string out;
+  bool after_styled = false;  // the last character was a styled letter
+  for (auto it = text.begin(); it != text.end();) {
+    const auto start = it;
+    const code_point c = Utf8::decode(it, text.end());
+    if (c == boost::locale::utf::illegal || c == boost::locale::utf::incomplete) {
+      it = start + 1;  // no UTF-8: left for the expression guard to name
+      out += *start;
+      after_styled = false;
+      continue;
+    }
+    code_point plain = plain_letter(c);
+    const bool styled = plain != 0 && !(plain >= '0' && plain <= '9');
+    if (plain == 0) plain = usual_greek(c);
+    if (const code_point usual = usual_greek(plain); usual != 0) plain = usual;
+    if (styled && after_styled) out += ' ';
+    after_styled = styled;
+    if (c == 0x2061 || c == 0x2063) {
+      out += ' ';
+    } else if (c == 0x2062) {
+      out += '*';
+    } else if (c == 0x200B) {
+      // nothing: a zero-width space only marks where a line may break
+    } else if (plain != 0) {
+      Utf8::encode(plain, std::back_inserter(out));
+    } else {
+      out.append(start, it);
+    }
+  }
+  return out;
 }
 
 std::string typed_spelling(const std::string& latex) {

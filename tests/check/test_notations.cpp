@@ -11,6 +11,7 @@
 #include "check/check_fixture.hpp"
 #include "check/judge.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 #include "temp_files.hpp"
 
@@ -327,4 +328,27 @@ answers = ["I"]
   // "d" is the symbol d, not e, whose LaTeX is d; "m" is no symbol, though d's LaTeX is m.
   REQUIRE_FALSE(f.check("I", "[[a, 0, 0], [0, b + c, 0], [0, 0, d + d]]").correct);
   REQUIRE_THROWS_AS(f.check("I", "[[a, 0, 0], [0, b + c, 0], [0, 0, m + e]]"), InputError);
+}
+
+TEST_CASE("an answer copied from an equation editor: styled letters, invisible operators") {
+  const Fixture plate("flying-plate");
+  for (const std::string& same :
+       std::vector<std::string>{"𝑚𝑅^2/4", "(𝑚𝑅²)/𝟒", "1/4 𝑚𝑅²", "𝑚\u2062𝑅^2/4"}) {
+    INFO(same);
+    REQUIRE(plate.check("I0", same).correct);
+  }
+  REQUIRE_FALSE(plate.check("I0", "𝑚𝑅^2/2").correct);
+  const Fixture earth("earth-free-precession");
+  REQUIRE(earth.check("Omega_body_rate", "𝐻𝜔cos\u2061𝛼/(1−𝐻)").correct);
+  REQUIRE_FALSE(earth.check("Omega_body_rate", "𝐻𝜔sin\u2061𝛼/(1−𝐻)").correct);
+  // The lunate epsilon of LaTeX's \epsilon is the tennis racket's ε.
+  const Fixture racket("tennis-racket");
+  const std::string rate = racket.answer("dw_dt0").symbolic;
+  REQUIRE(racket.check("dw_dt0", sym::to_unicode(rate)).correct);
+  std::string lunate = sym::to_unicode(rate);
+  for (auto at = lunate.find("ε"); at != std::string::npos; at = lunate.find("ε", at)) {
+    lunate.replace(at, std::string("ε").size(), "ϵ");
+  }
+  REQUIRE(lunate != sym::to_unicode(rate));
+  REQUIRE(racket.check("dw_dt0", lunate).correct);
 }

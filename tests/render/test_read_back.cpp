@@ -4,10 +4,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <boost/locale/utf.hpp>
 #include <catch2/catch.hpp>
 #include <cctype>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -266,11 +268,34 @@ std::string symbols_respelled(const std::string& ginac_text, const sym::SymbolTa
   }
   return out;
 }
+
+// Each Latin and Greek letter of `text` in mathematical italic, as a word processor's equation
+// sets a symbol: "I₁" -> "𝐼₁", "ω" -> "𝜔"; anything else as it was.
+std::string in_math_italic(const std::string& text) {
+  using Utf8 = boost::locale::utf::utf_traits<char>;
+  std::string out;
+  for (auto it = text.begin(); it != text.end();) {
+    const auto start = it;
+    const boost::locale::utf::code_point c = Utf8::decode(it, text.end());
+    boost::locale::utf::code_point italic = 0;
+    if (c >= 'A' && c <= 'Z') italic = 0x1D434 + (c - 'A');
+    if (c >= 'a' && c <= 'z') italic = c == 'h' ? 0x210E : 0x1D44E + (c - 'a');
+    if (c >= 0x391 && c <= 0x3A9) italic = 0x1D6E2 + (c - 0x391);  // Α..Ω
+    if (c >= 0x3B1 && c <= 0x3C9) italic = 0x1D6FC + (c - 0x3B1);  // α..ω
+    if (italic != 0) {
+      Utf8::encode(italic, std::back_inserter(out));
+    } else {
+      out.append(start, it);
+    }
+  }
+  return out;
+}
 }  // namespace
 
 TEST_CASE("every closed form with its symbols as the question prints them reads back") {
   // The statement and questions print each symbol from its LaTeX: w1 as "ω₁", I1 as "I₁",
-  // theta0 as "θ₀". A student copies those, or types them as they sound ("omega1").
+  // theta0 as "θ₀". A student copies those, types them as they sound ("omega1"), or copies
+  // them from an equation editor, in italic ("𝜔₁").
   int forms = 0, respelled = 0;
   for (const auto& p : load_catalog()) {
     const Fixture f(p.id);
@@ -280,12 +305,16 @@ TEST_CASE("every closed form with its symbols as the question prints them reads 
     const auto as_typed = [&](const std::string& name) {
       return sym::typed_spelling(f.table.latex_of(name));
     };
+    const auto in_italic = [&](const std::string& name) {
+      return in_math_italic(as_printed(name));
+    };
     for (const auto& part : f.key.parts) {
       for (const auto& a : part.answers) {
         if (a.symbolic.empty()) continue;
         for (const std::string& text :
              {sym::to_unicode(symbols_respelled(a.symbolic, f.table, as_printed)),
-              symbols_respelled(a.symbolic, f.table, as_typed)}) {
+              symbols_respelled(a.symbolic, f.table, as_typed),
+              sym::to_unicode(symbols_respelled(a.symbolic, f.table, in_italic))}) {
           INFO(p.id << " " << a.name << ": " << text);
           const Verdict v = f.check(a.name, text);
           INFO(v.line);
@@ -296,8 +325,8 @@ TEST_CASE("every closed form with its symbols as the question prints them reads 
       }
     }
   }
-  REQUIRE(forms > 150);     // the catalog's closed forms, two spellings each
-  REQUIRE(respelled > 50);  // I₁, θ₀, ω₁ and the rest: most forms are not the key's own
+  REQUIRE(forms > 225);      // the catalog's closed forms, three spellings each
+  REQUIRE(respelled > 125);  // I₁, θ₀, ω₁, 𝑚 and the rest: most forms are not the key's own
 }
 
 TEST_CASE("every answer the worksheet reveals reads back as correct, every problem") {
@@ -781,8 +810,11 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
   REQUIRE(top.check("p_psi", "M R^2 psidot0/2").correct);
   REQUIRE(top.check("p_psi", "1/2 M R^2 ψ̇0").correct);
   REQUIRE_FALSE(top.check("p_psi", "M R^2 (psidot0 + 1)/2").correct);
-  REQUIRE_THAT(top_message("M R^2 (psidot0 + 1/2"),
-               Catch::Contains("products need '*' (M*R^2*(psidot0 + 1/2, not"));
+  REQUIRE_THAT(top_message("1 2 M R^2 psidot0"),
+               Catch::Contains("products need '*' (1*2*M*R^2*psidot0, not"));
+  // Where the stars would not make it read either, what is wrong is named instead.
+  REQUIRE_THAT(top_message("M R^2 (psidot0 + 1/2"), Catch::Contains("a '(' is not closed"));
+  REQUIRE_THAT(top_message("M R^2 psidot0/2 + q"), Catch::Contains("undefined symbol 'q'"));
   // A function's one-factor argument without parentheses, as books write it; not with a power,
   // which books read two ways.
   REQUIRE(top.check("energy_prime", "M l g cos θ0").correct);
