@@ -187,6 +187,28 @@ std::string without_python_wrapper(const std::string& s) {
   return s;
 }
 
+// NumPy 2's scalars as Python shows them, "np.float64(0.00072)", alone or in a list, as
+// "(0.00072)". No expression has a '.' inside a name, so none is touched.
+std::string numpy_scalars_unwrapped(std::string s) {
+  static const std::vector<std::string> kTypes{"float64", "float32", "float16", "longdouble",
+                                               "int64",   "int32",   "int16",   "int8"};
+  for (const std::string module : {"np.", "numpy."}) {
+    for (auto at = s.find(module); at != std::string::npos; at = s.find(module, at)) {
+      const std::size_t type_at = at + module.size();
+      const auto type = std::find_if(kTypes.begin(), kTypes.end(), [&](const std::string& t) {
+        return s.compare(type_at, t.size() + 1, t + "(") == 0;
+      });
+      const bool name_before = at > 0 && (is_letter(s[at - 1]) || is_digit(s[at - 1]));
+      if (type == kTypes.end() || name_before) {
+        ++at;
+        continue;
+      }
+      s.erase(at, module.size() + type->size());
+    }
+  }
+  return s;
+}
+
 // "Hω", "πR", "cosα", "I₁ω₁²": a Greek letter is one symbol, so one after a name or a number,
 // or before a Latin letter, is a product (or a function's argument), never a longer name
 // ("Homega", "I1omega1"); likewise a root after a factor ("ω√(..)"). μ stays glued: "μs" is a
@@ -271,7 +293,8 @@ std::string prepared(const std::string& typed, const std::string& field) {
     if (c == '}' || c == '>') c = ']';
   }
   // "$m*R^2/4$": the math delimiters of a LaTeX or Markdown source around plain text.
-  s = without_python_wrapper(without_math_delimiters(s));
+  s = without_python_wrapper(
+      numpy_scalars_unwrapped(without_output_label(without_math_delimiters(s))));
   // "diag(a, b, c)", "M/12 diag(..)": the matrix as rows (check/written_forms.hpp).
   s = diagonals_written_out(s, field);
   // Python's and Fortran's power, "R**2": GiNaC's '^'.

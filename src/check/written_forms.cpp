@@ -253,4 +253,21 @@ std::optional<std::string> labelled_components(const std::string& text, const st
   return vector + (columns ? "]^T" : "]");
 }
 
+std::string without_output_label(const std::string& s) {
+  const std::string t = trim(s);
+  if (t.compare(0, 4, "Out[") != 0) return s;
+  std::size_t i = 4;
+  while (i < t.size() && is_digit(t[i])) ++i;
+  if (i == 4 || i >= t.size() || t[i] != ']') return s;
+  ++i;
+  // "Out[3]//N=": Mathematica names the function a result was passed through.
+  if (t.compare(i, 2, "//") == 0) {
+    i += 2;
+    while (i < t.size() && is_letter(t[i])) ++i;
+  }
+  while (i < t.size() && t[i] == ' ') ++i;
+  if (i >= t.size() || (t[i] != '=' && t[i] != ':')) return s;
+  return t.substr(i + 1);
+}
+
 }  // namespace wobble::check

@@ -7,6 +7,7 @@
 ///   "np.diag([a, b, c])", "diag([a b c])", "diagm([a, b, c])", "DiagonalMatrix[{a, b, c}]";
 /// - numbers laid out in lines without brackets, as MATLAB displays a result: "0.5 1 1.5" (a
 ///   vector), one number on each line (a column: a vector), or rows of numbers (a matrix);
+/// - a result as a program labels it, "Out[3]= 0.00072" (Mathematica), "Out[3]: .." (IPython);
 /// - an angle in degrees, minutes and seconds of arc, "44°41′", "44° 41′ 37″", "44°41'37\"";
 /// - a vector's components given one by one with their labels, as a student lists them:
 ///   "x = 0.5, y = 1, z = 1.5", "ω₁ = 2 rad/s, ω₂ = 0, ω₃ = 9.7 rad/s", "I1 = .., I2 = .., I3 =
@@ -38,5 +39,9 @@ std::string diagonals_written_out(const std::string& ascii, const std::string& f
 /// @throws InputError naming `field` for such a list whose labels are not one name for each of
 ///   x, y, z or 1, 2, 3 (its components could be put in no order).
 std::optional<std::string> labelled_components(const std::string& text, const std::string& field);
+
+/// The text after a program's label of its result: "0.00072" for "Out[3]= 0.00072",
+/// "Out[3]//N= 0.00072" or "Out[3]: 0.00072"; `typed` itself when it has no such label.
+std::string without_output_label(const std::string& typed);
 
 }  // namespace wobble::check

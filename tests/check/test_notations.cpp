@@ -352,3 +352,27 @@ TEST_CASE("an answer copied from an equation editor: styled letters, invisible o
   REQUIRE(lunate != sym::to_unicode(rate));
   REQUIRE(racket.check("dw_dt0", lunate).correct);
 }
+
+TEST_CASE("results as programs print them: NumPy 2's scalars, Out[n] labels") {
+  const Fixture box("box-corner");
+  const auto& c = box.answer("center_of_mass").value.data;  // metres
+  const auto numpy = [](double x) { return fmt::format("np.float64({:.10g})", x); };
+  const std::string listed = "[" + numpy(c[0]) + ", " + numpy(c[1]) + ", " + numpy(c[2]) + "]";
+  for (const std::string& same :
+       std::vector<std::string>{listed, "Out[3]= " + listed, "Out[12]: " + listed,
+                                "Out[4]//N= " + listed, "numpy.float64(1)*" + listed}) {
+    INFO(same);
+    REQUIRE(box.check("center_of_mass", same).correct);
+  }
+  REQUIRE_FALSE(
+      box.check("center_of_mass", "[" + numpy(c[0]) + ", " + numpy(c[2]) + ", " + numpy(c[1]) + "]")
+          .correct);
+  const Fixture plate("flying-plate");
+  const std::string i0 = fmt::format("{:.6g}", plate.answer("I0").value.data[0]);
+  REQUIRE(plate.check("I0", "np.float64(" + i0 + ") kg m^2").correct);
+  REQUIRE(plate.check("I0", "Out[3]= m R^2/4 = " + i0 + " kg m^2").correct);
+  REQUIRE_FALSE(plate.check("I0", "Out[3]= 2*" + i0).correct);
+  // Only a whole label is dropped; "Out[]" and a lone "np." are read as typed, and refused.
+  REQUIRE_THROWS_AS(plate.check("I0", "Out[]= " + i0), InputError);
+  REQUIRE_THROWS_AS(plate.check("I0", "np.sqrt(" + i0 + ")"), InputError);
+}
