@@ -79,6 +79,9 @@ std::optional<Named> prefixed(const std::string& name) {
     if (name.size() <= letters.size() || name.compare(0, letters.size(), letters) != 0) continue;
     const std::string base = name.substr(letters.size());
     if (std::find(kTakesPrefix.begin(), kTakesPrefix.end(), base) == kTakesPrefix.end()) continue;
+    // An angle is never given in kilo-, mega- or gigaradians: "Grad" is German for degrees (and
+    // a calculator's gradians), "krad" and "Mrad" are doses of radiation.
+    if (base == "rad" && p.factor > 1.0) continue;
     const Named& b = names().at(base);
     return Named{p.factor * b.to_si, b.dim, b.angle, "(" + p.exact + ")*(" + b.exact + ")"};
   }
@@ -185,10 +188,10 @@ Unit parse_unit(const std::string& text, const std::string& field) {
   Unit u;
   u.text = text;
   const auto fail = [&](const std::string& why) -> Unit {
-    throw InputError(field + ": cannot read the unit '" + text + "': " + why +
-                     " (units: " + unit_list() +
-                     "; SI prefixes G M k m µ n on g, m, s, J, N, Hz, rad; e.g. 'kg m^2', "
-                     "'rad/s')");
+    throw InputError(
+        field + ": cannot read the unit '" + text + "': " + why + " (units: " + unit_list() +
+        "; SI prefixes G M k m µ n on g, m, s, J, N, Hz, and m µ n on rad; e.g. 'kg m^2', "
+        "'rad/s')");
   };
   bool denominator = false, any = false, after_denominator = false;
   std::size_t i = 0;
@@ -238,6 +241,16 @@ Unit parse_unit(const std::string& text, const std::string& field) {
     const std::optional<Named> with_prefix =
         it == names().end() ? prefixed(name) : std::optional<Named>{};
     if (it == names().end() && !with_prefix) {
+      // "30 Grad", as German writes degrees; "grad" and "gon", a calculator's gradians.
+      const std::string lower = ascii_lower(name);
+      if (lower == "grad") {
+        return fail("'" + name + "' is degrees in German and gradians (400 to a turn) on a " +
+                    "calculator; write deg for degrees (gradians are not read)");
+      }
+      if (lower == "gon" || lower == "gons" || lower == "gradian" || lower == "gradians") {
+        return fail("'" + name + "' is gradians (400 to a turn), which are not read; write deg " +
+                    "or rad");
+      }
       const std::string apart = run_together(name);
       return fail("unknown unit '" + name + "'" +
                   (apart.empty() ? "" : " ('" + apart + "', with spaces?)"));

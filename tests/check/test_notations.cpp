@@ -66,10 +66,14 @@ TEST_CASE("units with SI prefixes") {
   // A name that is a unit of its own keeps its meaning: minutes, not milli-inches.
   REQUIRE_THAT(parse_unit("min", "u").to_si, WithinRel(60.0, eps));
   for (const std::string& bad :
-       std::vector<std::string>{"xJ", "kdeg", "kkg", "mday", "k", "Mrpm"}) {
+       std::vector<std::string>{"xJ", "kdeg", "kkg", "mday", "k", "Mrpm", "krad", "Mrad"}) {
     INFO(bad);
     REQUIRE_THROWS_AS(parse_unit(bad, "u"), InputError);
   }
+  // An angle has no gigaradians: "Grad" is German for degrees, and gradians are not read.
+  REQUIRE_THROWS_WITH(parse_unit("Grad", "u"), Catch::Contains("write deg for degrees"));
+  REQUIRE_THROWS_WITH(parse_unit("gon", "u"), Catch::Contains("gradians (400 to a turn)"));
+  REQUIRE_THAT(parse_unit("nrad", "u").to_si, WithinRel(1e-9, 4 * eps));
 }
 
 TEST_CASE("numbers as calculators and textbooks write them") {
