@@ -20,14 +20,54 @@ struct Line {
   std::string name, answer;
 };
 
-// NAME = ANSWER or NAME: ANSWER; comments and blank lines give nothing.
+// The line without its comment: from a '#', or from a '%' at its start or after a space or a
+// ';' (MATLAB's and LaTeX's comments: "I0 = 7.2e-4; % kg m^2"). No answer has either.
+std::string without_comment(const std::string& raw) {
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    const bool percent =
+        raw[i] == '%' && (i == 0 || raw[i - 1] == ' ' || raw[i - 1] == '\t' || raw[i - 1] == ';');
+    if (raw[i] == '#' || percent) return raw.substr(0, i);
+  }
+  return raw;
+}
+
+// A part's id as a student marks it: one or two letters or digits ("c", "1b").
+bool is_part_id(const std::string& s) {
+  return !s.empty() && s.size() <= 2 &&
+         std::all_of(s.begin(), s.end(), [](char c) { return is_letter(c) || is_digit(c); });
+}
+
+// The part's mark before a name, "(c) " or "c) ", dropped: "(c) angle_omega_e3" names
+// angle_omega_e3. No answer's name has a bracket.
+std::string without_part_mark(const std::string& name) {
+  const std::size_t close = name.find(')');
+  if (close == std::string::npos || close + 1 >= name.size() || name[close + 1] != ' ') {
+    return name;
+  }
+  const std::size_t open = name[0] == '(' ? 1 : 0;
+  return is_part_id(name.substr(open, close - open)) ? trim(name.substr(close + 1)) : name;
+}
+
+// "(c)", "c)", "Part c", "part (c):": a heading over a part's answers, which names none.
+bool is_part_heading(const std::string& text) {
+  std::string t = ascii_lower(text);
+  const bool word = t.compare(0, 4, "part") == 0;
+  if (word) t = trim(t.substr(4));
+  while (!t.empty() && (t.back() == ':' || t.back() == '.')) t.pop_back();
+  if (t.size() > 2 && t.front() == '(' && t.back() == ')')
+    return is_part_id(t.substr(1, t.size() - 2));
+  if (t.size() > 1 && t.back() == ')') return is_part_id(t.substr(0, t.size() - 1));
+  return word && is_part_id(t);
+}
+
+// NAME = ANSWER or NAME: ANSWER; comments, part headings and blank lines give nothing.
 std::optional<Line> read_line(const std::string& raw, int number) {
-  const std::string text = trim(raw);
-  if (text.empty() || text[0] == '#') return {};
+  const std::string text = trim(without_comment(raw));
+  if (text.empty() || is_part_heading(text)) return {};
   const auto eq = text.find('='), colon = text.find(':');
   const auto at = std::min(eq, colon);
-  if (at == std::string::npos) return Line{number, text, ""};
-  return Line{number, trim(text.substr(0, at)), trim(text.substr(at + 1))};
+  if (at == std::string::npos) return Line{number, without_part_mark(text), ""};
+  return Line{number, without_part_mark(trim(text.substr(0, at))), trim(text.substr(at + 1))};
 }
 
 std::vector<Line> read_lines(const std::string& text) {
@@ -47,9 +87,8 @@ std::vector<Line> read_lines(const std::string& text) {
 }  // namespace
 
 bool SubmissionResult::all_correct() const {
-  return problems.empty() && std::all_of(answers.begin(), answers.end(), [](const auto& a) {
-           return a.verdict.correct;
-         });
+  return problems.empty() && std::all_of(answers.begin(), answers.end(),
+                                         [](const auto& a) { return a.verdict.correct; });
 }
 
 std::optional<long> submission_variant(const std::string& text) {
@@ -76,8 +115,8 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
       result.problems.push_back(
           fmt::format("line {}: '{}' is not NAME = ANSWER", line.number, line.name));
     } else if (!given.emplace(line.name, line).second) {
-      result.problems.push_back(
-          fmt::format("line {}: {} is answered twice (the first is judged)", line.number, line.name));
+      result.problems.push_back(fmt::format("line {}: {} is answered twice (the first is judged)",
+                                            line.number, line.name));
     }
   }
   // A line names an answer by its name, or, if that is no answer's name, by its spelling:

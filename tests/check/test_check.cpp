@@ -684,3 +684,40 @@ TEST_CASE(
   REQUIRE_THAT(r.problems[0] + r.problems[1],
                Catch::Contains("line 5: 'Omega' is no answer of this problem (answers: I0, I, "));
 }
+
+TEST_CASE("a submission's comments, part headings and part marks name no answer") {
+  const Fixture plate("flying-plate");
+  const std::string i0 = fmt::format("{:.6g}", plate.answer("I0").value.data[0]);
+  const double angle = plate.answer("angle_omega_e3").value.data[0] * 180 / M_PI;
+  const std::string text =
+      "Part a:\n"
+      "I0 = " +
+      i0 +
+      " kg m^2   # from the table\n"
+      "(b)\n"
+      "% a MATLAB comment line\n"
+      "(c) angle_omega_e3 = " +
+      fmt::format("{:.6g}", angle) +
+      " deg; % read\n"
+      "c) angle_L_e3 = 3 rad\n"
+      "part (d).\n";
+  const SubmissionResult r = judge_submission({plate.key, plate.table, plate.values}, text, {});
+  const auto verdict = [&](const std::string& name) {
+    for (const auto& s : r.answers) {
+      if (s.name == name) return s;
+    }
+    throw std::logic_error("no answer " + name);
+  };
+  INFO(fmt::format("{}", fmt::join(r.problems, "; ")));
+  REQUIRE(r.problems.empty());  // no heading or comment taken for a name
+  REQUIRE(verdict("I0").verdict.correct);
+  REQUIRE(verdict("angle_omega_e3").verdict.correct);
+  REQUIRE(verdict("angle_L_e3").answered);
+  REQUIRE_FALSE(verdict("angle_L_e3").verdict.correct);  // 3 rad is not the key's
+  REQUIRE_FALSE(verdict("L0_body").answered);
+  // A '%' right after a number is no comment: "5%" is read, and refused.
+  const SubmissionResult percent =
+      judge_submission({plate.key, plate.table, plate.values}, "I0 = 5%\n", {});
+  REQUIRE_FALSE(percent.answers.at(0).verdict.correct);
+  REQUIRE_THAT(percent.answers.at(0).verdict.line, Catch::StartsWith("unreadable: I0"));
+}
