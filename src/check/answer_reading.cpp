@@ -486,6 +486,48 @@ bool has_bare_function(const std::string& written) {
   });
 }
 
+// "dphi/dt", "dφ/dt" (read "d phi/dt"), "dθ₀/dt": a rate in Leibniz's notation, as the
+// problem's rate symbol (phidot, thetadot0), where the problem has one and no symbol "dt".
+std::string leibniz_rates(const std::string& s, const sym::SymbolTable& table) {
+  if (table.contains("dt")) return s;
+  const auto ids = identifiers(s);
+  std::string out;
+  std::size_t done = 0;
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const auto [start, length] = ids[k];
+    if (s[start] != 'd' || (start > 0 && (is_letter(s[start - 1]) || is_digit(s[start - 1])))) {
+      continue;
+    }
+    // The name after the d: glued on ("dphi") or after one space ("d phi").
+    std::size_t name_k = k, name_from = start + 1;
+    if (length == 1) {
+      if (k + 1 >= ids.size() || ids[k + 1].first != start + 2 || s[start + 1] != ' ') continue;
+      name_k = k + 1;
+      name_from = ids[k + 1].first;
+    }
+    const std::size_t name_end = ids[name_k].first + ids[name_k].second;
+    std::string name = s.substr(name_from, name_end - name_from);
+    name.erase(std::remove(name.begin(), name.end(), '_'), name.end());
+    std::size_t i = name_end;
+    while (i < s.size() && s[i] == ' ') ++i;
+    if (i >= s.size() || s[i] != '/') continue;
+    ++i;
+    while (i < s.size() && s[i] == ' ') ++i;
+    if (name_k + 1 >= ids.size() || ids[name_k + 1].first != i || ids[name_k + 1].second != 2 ||
+        s.compare(i, 2, "dt") != 0) {
+      continue;
+    }
+    std::size_t digits = name.size();
+    while (digits > 0 && is_digit(name[digits - 1])) --digits;
+    const std::string rate = name.substr(0, digits) + "dot" + name.substr(digits);
+    if (name.empty() || !table.contains(rate) || table.contains(s.substr(start, length))) continue;
+    out += s.substr(done, start - done) + rate;
+    done = i + 2;
+    k = name_k + 1;
+  }
+  return out + s.substr(done);
+}
+
 // The problem's symbols by the names their LaTeX spells, where that is not the name: w1 by
 // "omega1" when its LaTeX is \omega_1, so "ω₁" as the question prints it reads. Not a spelling
 // two symbols share, nor one that is a symbol, a unit, pi or a function itself.
@@ -1054,7 +1096,8 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
   // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
   const std::string source =
       looks_like_latex(answer) ? latex_as_text(answer, table, field) : answer;
-  const std::string text = sexagesimal_degrees(symbols_as_spelled(prepared(source, field), table));
+  const std::string text =
+      sexagesimal_degrees(symbols_as_spelled(leibniz_rates(prepared(source, field), table), table));
   if (text.empty()) {
     throw InputError(field +
                      ": empty; type a number (with a unit if you like), a vector [x, y, "

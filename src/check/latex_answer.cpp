@@ -799,6 +799,59 @@ class Reader {
   }
 };
 
+// The end of the brace group that opens at `open` (one past its '}'), or npos.
+std::size_t group_end(const std::string& s, std::size_t open) {
+  if (open >= s.size() || s[open] != '{') return std::string::npos;
+  int depth = 0;
+  for (std::size_t i = open; i < s.size(); ++i) {
+    depth += s[i] == '{' ? 1 : s[i] == '}' ? -1 : 0;
+    if (depth == 0) return i + 1;
+  }
+  return std::string::npos;
+}
+
+// A fraction's numerator or denominator without its spacing, its upright d plain:
+// "\mathrm{d}\phi" -> "d\phi", "\mathrm{d} t" -> "dt".
+std::string leibniz_part(std::string s) {
+  for (const std::string upright :
+       {"\\mathrm{d}", "\\text{d}", "\\operatorname{d}", "\\mathrm d"}) {
+    for (auto at = s.find(upright); at != std::string::npos; at = s.find(upright, at))
+      s.replace(at, upright.size(), "d");
+  }
+  for (const std::string space : {"\\,", "\\;", "\\!", " "}) {
+    for (auto at = s.find(space); at != std::string::npos; at = s.find(space, at))
+      s.erase(at, space.size());
+  }
+  return s;
+}
+
+// "\frac{d\phi}{dt}", "\frac{\mathrm{d}\theta_0}{\mathrm{d}t}": a rate in Leibniz's notation,
+// as Newton's dot sets it ("\dot{\phi}", "\dot{\theta}_0"), which the reader knows.
+std::string leibniz_as_dots(std::string s) {
+  for (const std::string frac : {"\\frac", "\\dfrac", "\\tfrac"}) {
+    for (auto at = s.find(frac); at != std::string::npos; at = s.find(frac, at + 1)) {
+      std::size_t open = at + frac.size();
+      while (open < s.size() && s[open] == ' ') ++open;
+      const std::size_t top_end = group_end(s, open);
+      if (top_end == std::string::npos) continue;
+      std::size_t below = top_end;
+      while (below < s.size() && s[below] == ' ') ++below;
+      const std::size_t below_end = group_end(s, below);
+      if (below_end == std::string::npos) continue;
+      const std::string top = leibniz_part(s.substr(open + 1, top_end - open - 2));
+      if (leibniz_part(s.substr(below + 1, below_end - below - 2)) != "dt" || top.size() < 2 ||
+          top[0] != 'd') {
+        continue;
+      }
+      const std::string rate = top.substr(1);
+      const std::size_t sub = rate.find('_');
+      s.replace(at, below_end - at,
+                "\\dot{" + rate.substr(0, sub) + "}" +
+                    (sub == std::string::npos ? "" : rate.substr(sub)));
+    }
+  }
+  return s;
+}
 }  // namespace
 
 std::string without_math_delimiters(std::string s) {
@@ -828,7 +881,7 @@ std::string latex_as_text(const std::string& latex, const sym::SymbolTable& tabl
     if (code >= 0x80 || code < 0x20 || code == 0x7f)
       throw InputError(field + ": cannot read " + character_name(s, i) + " in LaTeX");
   }
-  return Reader(s, table, field).read();
+  return Reader(leibniz_as_dots(s), table, field).read();
 }
 
 std::string latex_assignment_as_text(const std::string& text, const sym::SymbolTable& table) {

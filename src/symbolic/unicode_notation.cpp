@@ -259,13 +259,14 @@ std::string to_ascii(const std::string& typed) {
 std::string letters_folded(const std::string& text) {
   std::string out;
   bool after_styled = false;  // the last character was a styled letter
+  bool after_letter = false;  // the last character was a letter, Latin or Greek, styled or not
   for (auto it = text.begin(); it != text.end();) {
     const auto start = it;
     const code_point c = Utf8::decode(it, text.end());
     if (c == boost::locale::utf::illegal || c == boost::locale::utf::incomplete) {
       it = start + 1;  // no UTF-8: left for the expression guard to name
       out += *start;
-      after_styled = false;
+      after_styled = after_letter = false;
       continue;
     }
     code_point plain = plain_letter(c);
@@ -274,7 +275,13 @@ std::string letters_folded(const std::string& text) {
     if (const code_point usual = usual_greek(plain); usual != 0) plain = usual;
     if (styled && after_styled) out += ' ';
     after_styled = styled;
-    if (c == 0x2061 || c == 0x2063) {
+    const bool was_after_letter = after_letter;
+    const code_point letter = plain != 0 ? plain : c;
+    after_letter = (letter < 0x80 && is_letter(static_cast<char>(letter))) ||
+                   (letter >= 0x391 && letter <= 0x3C9);
+    if (c == 0x2D9 && was_after_letter) {
+      out += kCombiningDot;  // "φ˙", as a PDF gives \dot\phi when copied: φ̇
+    } else if (c == 0x2061 || c == 0x2063) {
       out += ' ';
     } else if (c == 0x2062) {
       out += '*';

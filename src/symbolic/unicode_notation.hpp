@@ -29,7 +29,8 @@ std::string to_ascii(const std::string& unicode_text);
 /// Letters as mathematical typesetting styles them, as the plain letters they are: the italic,
 /// bold, sans-serif, ... letters and digits a word processor's equation or a PDF gives when
 /// copied (𝐼 -> I, 𝜔 -> ω, 𝟐 -> 2, ℎ -> h), and the variant forms of Greek letters (ϵ -> ε,
-/// ϑ -> θ, ϕ -> φ, ϱ -> ρ, ϰ -> κ, ς -> σ). Two styled letters in a row are two symbols, as in the
+/// ϑ -> θ, ϕ -> φ, ϱ -> ρ, ϰ -> κ, ς -> σ), and the spacing dot above after a letter as the
+/// combining one (a PDF's "φ˙" for φ̇). Two styled letters in a row are two symbols, as in the
 /// equation they came from: "𝑚𝑅" -> "m R". The invisible function application and separator
 /// (U+2061, U+2063) become spaces, invisible times (U+2062) '*', a zero-width space nothing.
 /// Not Unicode's NFKC, which would also make x² x2 and ½ 1⁄2, both of which to_ascii reads.

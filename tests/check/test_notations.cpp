@@ -380,3 +380,19 @@ TEST_CASE("results as programs print them: NumPy 2's scalars, Out[n] labels") {
   REQUIRE_THROWS_AS(plate.check("I0", "Out[]= " + i0), InputError);
   REQUIRE_THROWS_AS(plate.check("I0", "np.sqrt(" + i0 + ")"), InputError);
 }
+
+TEST_CASE("Newton's dot as a PDF copies it, and a rate the problem has not") {
+  const Fixture euler("euler-angles");
+  const std::string dotted = sym::to_unicode(euler.answer("omega_primed").symbolic);
+  std::string spacing = dotted;  // "φ̇" with the spacing dot above, as copied from a PDF: "φ˙"
+  for (auto at = spacing.find("\u0307"); at != std::string::npos; at = spacing.find("\u0307", at))
+    spacing.replace(at, 2, "˙");
+  REQUIRE(spacing != dotted);
+  REQUIRE(euler.check("omega_primed", spacing).correct);
+  REQUIRE_FALSE(euler.check("omega_primed", "(φ˙ sin θ, θ˙, φ˙ cos θ + ψ˙)").correct);  // a sign
+  // The heavy top has ψ̇₀, no ψ̇: "dψ/dt" names nothing, and is refused.
+  const Fixture top("heavy-top");
+  REQUIRE(top.check("p_psi", "M R² (dψ₀/dt)/2").correct);
+  REQUIRE_THROWS_AS(top.check("p_psi", "M R² (dψ/dt)/2"), InputError);
+  REQUIRE_THROWS_AS(top.check("p_psi", "\\frac{1}{2} M R^2 \\frac{d\\psi}{dt}"), InputError);
+}

@@ -11,6 +11,7 @@
 #include <functional>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -327,6 +328,69 @@ TEST_CASE("every closed form with its symbols as the question prints them reads 
   }
   REQUIRE(forms > 225);      // the catalog's closed forms, three spellings each
   REQUIRE(respelled > 125);  // I₁, θ₀, ω₁, 𝑚 and the rest: most forms are not the key's own
+}
+
+namespace {
+// A rate symbol's parts: "phidot" -> {"phi", ""}, "psidot0" -> {"psi", "0"}; nullopt for a name
+// that is no rate.
+std::optional<std::pair<std::string, std::string>> rate_parts(const std::string& name) {
+  std::size_t digits = name.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
+  if (digits <= 3 || name.compare(digits - 3, 3, "dot") != 0) return std::nullopt;
+  return std::pair{name.substr(0, digits - 3), name.substr(digits)};
+}
+
+// `text` with each occurrence of `from` replaced by `to`.
+std::string replaced_all(std::string text, const std::string& from, const std::string& to) {
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+}  // namespace
+
+TEST_CASE("every closed form with its rates in Leibniz's notation reads back, every problem") {
+  // φ̇ as a student writes it without Newton's dot: "dphi/dt", "dφ/dt", \frac{d\phi}{dt}.
+  int forms = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    std::vector<std::string> rates;  // the rate symbols, their LaTeX longest first
+    for (const auto& name : f.table.names()) {
+      if (rate_parts(name)) rates.push_back(name);
+    }
+    std::sort(rates.begin(), rates.end(), [&](const std::string& a, const std::string& b) {
+      return f.table.latex_of(a).size() > f.table.latex_of(b).size();
+    });
+    const auto leibniz = [&](const std::string& name) {
+      const auto parts = rate_parts(name);
+      return parts ? "(d" + parts->first + parts->second + "/dt)" : name;
+    };
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        const bool has_rate = std::any_of(rates.begin(), rates.end(), [&](const std::string& r) {
+          return a.latex.find(f.table.latex_of(r)) != std::string::npos;
+        });
+        if (a.symbolic.empty() || !has_rate) continue;
+        std::string latex = a.latex, upright = a.latex;
+        for (const auto& r : rates) {
+          const std::string dotted = f.table.latex_of(r);  // "\dot\psi_0"
+          REQUIRE(dotted.compare(0, 4, "\\dot") == 0);
+          const std::string rest = dotted.substr(4);
+          latex = replaced_all(latex, dotted, "\\frac{d" + rest + "}{dt}");
+          upright = replaced_all(upright, dotted, "\\frac{\\mathrm{d}" + rest + "}{\\mathrm{d}t}");
+        }
+        for (const std::string& text :
+             {symbols_respelled(a.symbolic, f.table, leibniz), latex, upright}) {
+          INFO(p.id << " " << a.name << ": " << text);
+          REQUIRE((text != a.latex && text != a.symbolic));  // a rate was respelled
+          const Verdict v = f.check(a.name, text);
+          INFO(v.line);
+          REQUIRE(v.correct);
+          ++forms;
+        }
+      }
+    }
+  }
+  REQUIRE(forms > 40);  // the Euler angles' rates, twice, and the heavy top's, three forms each
 }
 
 TEST_CASE("every answer the worksheet reveals reads back as correct, every problem") {

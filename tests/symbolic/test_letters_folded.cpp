@@ -59,6 +59,11 @@ TEST_CASE("two styled letters in a row are two symbols; invisible operators are 
   REQUIRE(letters_folded("cos\u2061𝛼") == "cos α");
   REQUIRE(letters_folded("2\u2062𝑚") == "2*m");
   REQUIRE(letters_folded("a\u200bb") == "ab");
+  // The spacing dot above after a letter is Newton's dot, as a PDF gives it; alone it stays.
+  REQUIRE(letters_folded("φ˙") == "φ\u0307");
+  REQUIRE(letters_folded("𝜓˙") == "ψ\u0307");
+  REQUIRE(letters_folded("˙x") == "˙x");
+  REQUIRE(to_ascii("θ˙₀") == "thetadot0");
   // Plain text is left as it was, bytes that are no UTF-8 included.
   REQUIRE(letters_folded("mR^2 ω \xff") == "mR^2 ω \xff");
   REQUIRE(to_ascii("𝑚𝑅²/𝟒") == "m R^2/4");
