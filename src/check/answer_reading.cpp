@@ -111,6 +111,26 @@ const std::vector<std::string>& function_names() {
   return names;
 }
 
+// "cos (θ)" -> "cos(θ)": a function's name, a space, its argument's parentheses, as a PDF's
+// text and some typists set a call. Only the functions an expression may call, so "m (R^2)"
+// stays a symbol times a bracket.
+std::string calls_unspaced(const std::string& s) {
+  std::string out;
+  std::size_t done = 0;
+  for (const auto& [start, length] : identifiers(s)) {
+    const std::string name = s.substr(start, length);
+    std::size_t open = start + length;
+    while (open < s.size() && s[open] == ' ') ++open;
+    if (open == start + length || open >= s.size() || s[open] != '(' ||
+        !sym::is_function_name(name)) {
+      continue;
+    }
+    out += s.substr(done, start - done) + name;
+    done = open;
+  }
+  return out + s.substr(done);
+}
+
 // "cos^2(alpha)" -> "cos(alpha)^2", as textbooks write a power of a trigonometric or hyperbolic
 // function (and "cos²(α)" arrives here so). Only a positive whole power: cos^-1 is arccos in
 // some books and cos(x)^(-1) in others, so it stays an error.
@@ -300,7 +320,7 @@ std::string prepared(const std::string& typed, const std::string& field) {
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
   for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
     s.replace(at, 2, "^");
-  s = function_powers(sym::numbers_times_constants(times_ten(s)));
+  s = function_powers(sym::numbers_times_constants(times_ten(calls_unspaced(s))));
   // "10^-4" -> "10^(-4)": a signed number after '^' (no std::regex: GCC 12 warns inside it).
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {

@@ -396,3 +396,19 @@ TEST_CASE("Newton's dot as a PDF copies it, and a rate the problem has not") {
   REQUIRE_THROWS_AS(top.check("p_psi", "M R² (dψ/dt)/2"), InputError);
   REQUIRE_THROWS_AS(top.check("p_psi", "\\frac{1}{2} M R^2 \\frac{d\\psi}{dt}"), InputError);
 }
+
+TEST_CASE("a call with a space before its parentheses, as a PDF's text sets it") {
+  const Fixture euler("euler-angles");
+  const std::string key = sym::to_unicode(euler.answer("omega_space").symbolic);
+  std::string spaced = key;  // "cos(φ)" -> "cos (φ)", and so on
+  for (const std::string f : {"sin(", "cos("}) {
+    for (auto at = spaced.find(f); at != std::string::npos; at = spaced.find(f, at + 1))
+      spaced.insert(at + 3, " ");
+  }
+  REQUIRE(spaced != key);
+  REQUIRE(euler.check("omega_space", spaced).correct);
+  // A symbol before a bracket stays a product, a space or none.
+  const Fixture plate("flying-plate");
+  REQUIRE(plate.check("I0", "m (R^2)/4").correct);
+  REQUIRE_FALSE(plate.check("I0", "m (R^2)/2").correct);
+}
