@@ -6,6 +6,7 @@
 
 #include "render/common.hpp"
 #include "symbolic/plain_text.hpp"
+#include "symbolic/unicode_notation.hpp"
 
 namespace wobble {
 
@@ -54,13 +55,21 @@ std::string render_handout_text(const Key& key,
   std::string out = title_line(key, variant) + "\n\n" + plain_text(key.statement);
   if (!out.empty() && out.back() != '\n') out += "\n";
   out += "\nValues:\n";
+  // The name to type, and the symbol the statement prints where that is another ("w1 (ω₁)":
+  // its LaTeX is \omega_1); both read back.
+  const auto shown_name = [](const ParameterValue& p) {
+    const std::string name = detail::pretty(p.name);
+    return p.latex.empty() || sym::typed_spelling(p.latex) == p.name
+               ? name
+               : name + " (" + math_to_unicode(p.latex) + ")";
+  };
   std::size_t width = 0;
   for (const auto& p : key.parameters) {
-    width = std::max(width, detail::display_width(detail::pretty(p.name)));
+    width = std::max(width, detail::display_width(shown_name(p)));
   }
   for (const auto& p : key.parameters) {
     const auto [value, unit] = detail::shown_value(p, shown);
-    const std::string name = detail::pretty(p.name);
+    const std::string name = shown_name(p);
     out += fmt::format("  {}{} = {}{}{}\n", name,
                        std::string(width - detail::display_width(name), ' '), value,
                        unit == "°" ? "°" : detail::unit_text(unit),

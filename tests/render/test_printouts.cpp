@@ -113,3 +113,17 @@ TEST_CASE("Markdown tables keep their columns; angles are shown in degrees as gi
   REQUIRE_THAT(render_handout_latex(key, {}, 7),
                Catch::Contains("& angle between $\\omega(0)$ and the symmetry axis \\\\"));
 }
+
+TEST_CASE("a handout's values name a parameter as typed and, where it differs, as printed") {
+  // The asymmetric top's w1 is \omega_1: its statement says ω₁, so the values say both.
+  const Problem top = find_problem("asymmetric-top");
+  const std::string asymmetric =
+      render_handout_text(solve(top, parameter_values(top, {})), {}, std::nullopt, false);
+  REQUIRE_THAT(asymmetric,
+               Catch::Contains("  w1 (ω₁) = 0.3 rad/s") && Catch::Contains("  I1      = 2 kg m²"));
+  // The heavy top's theta0 is \theta_0, which reads as theta0 too: one name.
+  const Problem heavy = find_problem("heavy-top");
+  const std::string heavy_text =
+      render_handout_text(solve(heavy, parameter_values(heavy, {})), {}, std::nullopt, false);
+  REQUIRE_THAT(heavy_text, Catch::Contains("  θ0 = 30°") && !Catch::Contains("θ0 ("));
+}
