@@ -184,43 +184,6 @@ std::optional<std::string> number_rows(const std::string& typed) {
   return "[" + joined(entries) + "]";
 }
 
-std::string sexagesimal_degrees(const std::string& ascii) {
-  std::size_t i = 0;
-  const auto spaces = [&] {
-    while (i < ascii.size() && ascii[i] == ' ') ++i;
-  };
-  const auto number = [&]() -> std::string {
-    spaces();
-    const std::size_t start = i;
-    while (i < ascii.size() && (is_digit(ascii[i]) || ascii[i] == '.')) ++i;
-    return ascii.substr(start, i - start);
-  };
-  const auto mark = [&](std::initializer_list<const char*> marks) {
-    spaces();
-    for (const std::string m : marks) {
-      if (ascii.compare(i, m.size(), m) == 0) {
-        i += m.size();
-        return true;
-      }
-    }
-    return false;
-  };
-  spaces();
-  const std::string sign = i < ascii.size() && (ascii[i] == '-' || ascii[i] == '+')
-                               ? std::string(1, ascii[i++])
-                               : std::string();
-  const std::string degrees = number();
-  if (degrees.empty() || !mark({"deg"})) return ascii;
-  const std::string minutes = number();
-  if (minutes.empty() || !mark({"arcmin", "'"})) return ascii;
-  const std::string seconds = number();
-  if (!seconds.empty() && !mark({"arcsec", "''", "\""})) return ascii;
-  spaces();
-  if (i != ascii.size()) return ascii;
-  return sign + "(" + degrees + " + " + minutes + "/60" +
-         (seconds.empty() ? "" : " + " + seconds + "/3600") + ") deg";
-}
-
 std::optional<std::string> labelled_components(const std::string& text, const std::string& field) {
   const std::vector<std::string> items = top_level(text, ',');
   if (items.size() < 2) return std::nullopt;

@@ -8,7 +8,8 @@
 /// - numbers laid out in lines without brackets, as MATLAB displays a result: "0.5 1 1.5" (a
 ///   vector), one number on each line (a column: a vector), or rows of numbers (a matrix);
 /// - a result as a program labels it, "Out[3]= 0.00072" (Mathematica), "Out[3]: .." (IPython);
-/// - an angle in degrees, minutes and seconds of arc, "44°41′", "44° 41′ 37″", "44°41'37\"";
+/// - an angle in degrees, minutes and seconds of arc, "44°41′", "44° 41′ 37″", "44°41'37\""
+///   (units.hpp's sexagesimal_degrees, which parameter values share);
 /// - a vector's components given one by one with their labels, as a student lists them:
 ///   "x = 0.5, y = 1, z = 1.5", "ω₁ = 2 rad/s, ω₂ = 0, ω₃ = 9.7 rad/s", "I1 = .., I2 = .., I3 =
 ///   ..". The labels differ in their last letter or digit only, x y z or 1 2 3 (in any order: the
@@ -22,11 +23,6 @@ namespace wobble::check {
 /// that is only plain numbers (two or more), separated by spaces and line breaks, each line as
 /// many; nullopt for any other text.
 std::optional<std::string> number_rows(const std::string& typed);
-
-/// "(44 + 41/60 + 37/3600) deg" for "44 deg 41 arcmin 37 arcsec" (the ASCII of "44° 41′ 37″";
-/// "'" and '"' as well as arcmin and arcsec), a sign before it outside the bracket; `ascii` itself
-/// when the whole of it is no such angle.
-std::string sexagesimal_degrees(const std::string& ascii);
 
 /// `ascii` with each diagonal matrix written as its rows: "M/12 diag(a, b, c)" ->
 /// "M/12 [[a, 0, 0], [0, b, 0], [0, 0, c]]". Text that is no such call is left as it is.

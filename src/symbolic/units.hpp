@@ -7,9 +7,9 @@
 /// denominator: "kg m^2", "kg*m^2/s", "rad/s", "m/s^2", "deg", "rev/s", "1/s" (or "s^-1"), in one
 /// pair of brackets or not ("[kg m^2]", "(rad/s)", as a table's heading writes a unit).
 /// Names: kg, g; m, cm, mm; s, ms, min, h, day (days), yr (the Julian year); rad, deg, arcmin,
-/// arcsec, rev; J, N, Hz, rpm; and an SI prefix (G, M, k, m, mu or u, n) on g, m, s, J, N, Hz
-/// and rad ("kJ", "mN", "mus" for µs), where the whole name is no unit of its own (min is
-/// minutes). An unknown name, a missing or non-integer power is an error.
+/// arcsec, rev; J, N, Hz, rpm; and an SI prefix (G, M, k, m, mu or u, n) on g, m, s, J, N and
+/// Hz, and m, mu or u, n on rad ("kJ", "mN", "mus" for µs, "mrad"), where the whole name is no
+/// unit of its own (min is minutes). An unknown name, a missing or non-integer power is an error.
 ///
 /// Radians, one rule everywhere: an angle is a pure number, so rad/s and 1/s are the same unit
 /// and a radian converts as 1; a degree is pi/180 and a revolution 2 pi. Hz and rpm count
@@ -38,6 +38,11 @@ struct Unit {
 
 /// @throws InputError naming `field` and the text for anything outside the grammar.
 Unit parse_unit(const std::string& text, const std::string& field);
+
+/// "(44 + 41/60 + 37/3600) deg" for "44 deg 41 arcmin 37 arcsec" (the ASCII of "44° 41′ 37″";
+/// "'" and '"' as well as arcmin and arcsec), a sign before it outside the bracket; `ascii` itself
+/// when the whole of it is no such angle. For answers and parameter values alike.
+std::string sexagesimal_degrees(const std::string& ascii);
 
 /// True if `text` reads as a unit (no throw).
 bool is_unit(const std::string& text);

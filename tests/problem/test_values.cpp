@@ -89,6 +89,16 @@ TEST_CASE("values with a unit are converted exactly, rounded once") {
     REQUIRE(parse_parameter_value(angle(), glued, "f") ==
             parse_parameter_value(angle(), "pi/6", "f"));
   }
+  // Degrees, minutes and seconds of arc, as an angle is measured: exactly the degrees they sum
+  // to (30°15′ is 121π/720, which the exact route recognises; 30.25 deg reads the same).
+  for (const std::string& arc : {std::string("30°15′"), std::string("30° 15′ 0″"),
+                                 std::string("30 deg 15 arcmin"), std::string("30°15′ = 30.25°")}) {
+    INFO(arc);
+    REQUIRE(parse_parameter_value(angle(), arc, "f") ==
+            parse_parameter_value(angle(), "30.25 deg", "f"));
+  }
+  REQUIRE(parse_parameter_value(angle(), "30°16′", "f") >
+          parse_parameter_value(angle(), "30.25 deg", "f"));
   // A constant expression is not cut into a unit: the "i" of pi, the "e" of an exponent.
   REQUIRE(parse_parameter_value(with_unit("m"), "2*pi", "f") == 2 * M_PI);  // doubling is exact
   REQUIRE(parse_parameter_value(with_unit("m"), "1e-3", "f") == 1e-3);
