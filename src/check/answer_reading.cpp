@@ -313,8 +313,7 @@ std::string prepared(const std::string& typed, const std::string& field) {
     if (c == '}' || c == '>') c = ']';
   }
   // "$m*R^2/4$": the math delimiters of a LaTeX or Markdown source around plain text.
-  s = without_python_wrapper(
-      numpy_scalars_unwrapped(without_output_label(without_math_delimiters(s))));
+  s = without_python_wrapper(numpy_scalars_unwrapped(without_math_delimiters(s)));
   // "diag(a, b, c)", "M/12 diag(..)": the matrix as rows (check/written_forms.hpp).
   s = diagonals_written_out(s, field);
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
@@ -1177,10 +1176,10 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
         if (left_reads && names_a_symbol(right, table) && written != value) {
           // Where the stars would not make it read either ("H ω cos α/(1-h)", h no symbol),
           // what is wrong is that, not the stars.
-          if (!has_bare_function(written))
-            (void)sym::parse_value_text(layout(written), table, field);
+          const bool bare_function = has_bare_function(written);
+          if (!bare_function) (void)sym::parse_value_text(layout(written), table, field);
           throw InputError(field + ": cannot read \"" + value + "\": " +
-                           (has_bare_function(written)
+                           (bare_function
                                 ? "products need '*' and a function's argument parentheses "
                                   "(M*g*cos(theta)^2)"
                                 : "products need '*' (" + written + ", not " + value + ")"));

@@ -17,12 +17,11 @@ std::string without(std::string s, const std::string& chars) {
 // Whether `typed` spells p: a spelling is tried only when no parameter has it as its identifier
 // (Problem::parameter), so "theta_0" cannot take another parameter's place.
 bool spells(const Parameter& p, const std::string& typed) {
-  if (sym::to_ascii(typed) == p.name) return true;
+  const std::string ascii = sym::to_ascii(typed);
+  if (ascii == p.name) return true;
   if (without(typed, "_") == p.name) return true;
   // "ω₁", "omega_1" for w1 whose LaTeX is \omega_1.
-  if (!p.latex.empty() && without(sym::to_ascii(typed), "_ ") == sym::typed_spelling(p.latex)) {
-    return true;
-  }
+  if (!p.latex.empty() && without(ascii, "_ ") == sym::typed_spelling(p.latex)) return true;
   const std::string latex = without(typed, "$ ");
   return !p.latex.empty() && (latex == p.latex || without(latex, "{}") == without(p.latex, "{} "));
 }

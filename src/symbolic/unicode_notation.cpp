@@ -269,16 +269,16 @@ std::string letters_folded(const std::string& text) {
       after_styled = after_letter = false;
       continue;
     }
-    code_point plain = plain_letter(c);
-    const bool styled = plain != 0 && !(plain >= '0' && plain <= '9');
-    if (plain == 0) plain = usual_greek(c);
+    // The character as the letter it is: unstyled, then in its usual Greek form.
+    const code_point unstyled = plain_letter(c);
+    code_point plain = unstyled != 0 ? unstyled : c;
     if (const code_point usual = usual_greek(plain); usual != 0) plain = usual;
+    const bool styled = unstyled != 0 && !(plain >= '0' && plain <= '9');
     if (styled && after_styled) out += ' ';
     after_styled = styled;
     const bool was_after_letter = after_letter;
-    const code_point letter = plain != 0 ? plain : c;
-    after_letter = (letter < 0x80 && is_letter(static_cast<char>(letter))) ||
-                   (letter >= 0x391 && letter <= 0x3C9);
+    after_letter =
+        (plain < 0x80 && is_letter(static_cast<char>(plain))) || (plain >= 0x391 && plain <= 0x3C9);
     if (c == 0x2D9 && was_after_letter) {
       out += kCombiningDot;  // "φ˙", as a PDF gives \dot\phi when copied: φ̇
     } else if (c == 0x2061 || c == 0x2063) {
@@ -287,7 +287,7 @@ std::string letters_folded(const std::string& text) {
       out += '*';
     } else if (c == 0x200B) {
       // nothing: a zero-width space only marks where a line may break
-    } else if (plain != 0) {
+    } else if (plain != c) {
       Utf8::encode(plain, std::back_inserter(out));
     } else {
       out.append(start, it);
