@@ -1115,8 +1115,8 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
   // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
   const std::string source =
       looks_like_latex(answer) ? latex_as_text(answer, table, field) : answer;
-  const std::string text =
-      sexagesimal_degrees(symbols_as_spelled(leibniz_rates(prepared(source, field), table), table));
+  const std::string text = sexagesimal_degrees(
+      symbols_as_spelled(leibniz_rates(prepared(source, field), table), table), field);
   if (text.empty()) {
     throw InputError(field +
                      ": empty; type a number (with a unit if you like), a vector [x, y, "

@@ -381,7 +381,8 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
               const Options& options) {
   // "$$ m R^2/4 = 0.00072 $$": the delimiters are around both sides.
   // "Out[3]= 0.00072": a program's label of its result is no side of an '='.
-  const std::string written = without_output_label(without_math_delimiters(text));
+  // "m*R**2/4  # disc": a comment, as a script has one after its line.
+  const std::string written = without_output_label(without_math_delimiters(without_comments(text)));
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
   if (const auto components = labelled_components(written, kField))
     return judge_one(ctx, a, *components, options);

@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 
@@ -19,17 +20,6 @@ struct Line {
   int number = 0;
   std::string name, answer;
 };
-
-// The line without its comment: from a '#', or from a '%' at its start or after a space or a
-// ';' (MATLAB's and LaTeX's comments: "I0 = 7.2e-4; % kg m^2"). No answer has either.
-std::string without_comment(const std::string& raw) {
-  for (std::size_t i = 0; i < raw.size(); ++i) {
-    const bool percent =
-        raw[i] == '%' && (i == 0 || raw[i - 1] == ' ' || raw[i - 1] == '\t' || raw[i - 1] == ';');
-    if (raw[i] == '#' || percent) return raw.substr(0, i);
-  }
-  return raw;
-}
 
 // A part's id as a student marks it: one or two letters or digits ("c", "1b").
 bool is_part_id(const std::string& s) {
@@ -62,7 +52,7 @@ bool is_part_heading(const std::string& text) {
 
 // NAME = ANSWER or NAME: ANSWER; comments, part headings and blank lines give nothing.
 std::optional<Line> read_line(const std::string& raw, int number) {
-  const std::string text = trim(without_comment(raw));
+  const std::string text = trim(without_comments(raw));
   if (text.empty() || is_part_heading(text)) return {};
   const auto eq = text.find('='), colon = text.find(':');
   const auto at = std::min(eq, colon);

@@ -216,6 +216,20 @@ std::optional<std::string> labelled_components(const std::string& text, const st
   return vector + (columns ? "]^T" : "]");
 }
 
+std::string without_comments(const std::string& s) {
+  std::string out;
+  bool in_comment = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c == '\n') in_comment = false;
+    const bool percent = c == '%' && (i == 0 || s[i - 1] == ' ' || s[i - 1] == '\t' ||
+                                      s[i - 1] == ';' || s[i - 1] == '\n');
+    if (c == '#' || percent) in_comment = true;
+    if (!in_comment) out += c;
+  }
+  return out;
+}
+
 std::string without_output_label(const std::string& s) {
   const std::string t = trim(s);
   if (t.compare(0, 4, "Out[") != 0) return s;

@@ -7,6 +7,8 @@
 ///   "np.diag([a, b, c])", "diag([a b c])", "diagm([a, b, c])", "DiagonalMatrix[{a, b, c}]";
 /// - numbers laid out in lines without brackets, as MATLAB displays a result: "0.5 1 1.5" (a
 ///   vector), one number on each line (a column: a vector), or rows of numbers (a matrix);
+/// - a comment after an answer, as in a script or a LaTeX source: "m*R**2/4  # disc",
+///   "7.2e-4 % kg m^2";
 /// - a result as a program labels it, "Out[3]= 0.00072" (Mathematica), "Out[3]: .." (IPython);
 /// - an angle in degrees, minutes and seconds of arc, "44°41′", "44° 41′ 37″", "44°41'37\""
 ///   (units.hpp's sexagesimal_degrees, which parameter values share);
@@ -35,6 +37,11 @@ std::string diagonals_written_out(const std::string& ascii, const std::string& f
 /// @throws InputError naming `field` for such a list whose labels are not one name for each of
 ///   x, y, z or 1, 2, 3 (its components could be put in no order).
 std::optional<std::string> labelled_components(const std::string& text, const std::string& field);
+
+/// `typed` without its comments: each line up to a '#', or up to a '%' at its start or after a
+/// space, a tab or a ';' (MATLAB's and LaTeX's: "I0 = 7.2e-4; % kg m^2"; "50%" keeps its sign).
+/// No answer wobble reads has either.
+std::string without_comments(const std::string& typed);
 
 /// The text after a program's label of its result: "0.00072" for "Out[3]= 0.00072",
 /// "Out[3]//N= 0.00072" or "Out[3]: 0.00072"; `typed` itself when it has no such label.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <initializer_list>
 #include <map>
@@ -332,7 +333,25 @@ bool is_unit(const std::string& text) {
   }
 }
 
-std::string sexagesimal_degrees(const std::string& ascii) {
+namespace {
+// A count of minutes or seconds of arc as written: 60 or more would carry into the place above,
+// which no one writes; it is a slip, and 30°75′ could have meant 30°57′ or 31°15′.
+void below_sixty(const std::string& count, const char* place, const std::string& field) {
+  // from_chars, not stod: "." and a run of digits past double's range are not to throw here
+  // (the reading after reports them), and no locale's decimal comma applies.
+  double value = 0.0;
+  const std::errc error = std::from_chars(count.data(), count.data() + count.size(), value).ec;
+  if ((error == std::errc() && value >= 60) || error == std::errc::result_out_of_range) {
+    const char* mark = place[0] == 'm' ? "′" : "″";
+    throw InputError(field + ": " + count + mark +
+                     " in an angle: a degree has 60 minutes of arc and a minute 60 seconds; "
+                     "carry the " +
+                     place + " over into the " + (place[0] == 'm' ? "degrees" : "minutes"));
+  }
+}
+}  // namespace
+
+std::string sexagesimal_degrees(const std::string& ascii, const std::string& field) {
   std::size_t i = 0;
   const auto spaces = [&] {
     while (i < ascii.size() && ascii[i] == ' ') ++i;
@@ -365,6 +384,8 @@ std::string sexagesimal_degrees(const std::string& ascii) {
   if (!seconds.empty() && !mark({"arcsec", "''", "\""})) return ascii;
   spaces();
   if (i != ascii.size()) return ascii;
+  below_sixty(minutes, "minutes", field);
+  if (!seconds.empty()) below_sixty(seconds, "seconds", field);
   return sign + "(" + degrees + " + " + minutes + "/60" +
          (seconds.empty() ? "" : " + " + seconds + "/3600") + ") deg";
 }

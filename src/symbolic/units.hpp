@@ -42,7 +42,9 @@ Unit parse_unit(const std::string& text, const std::string& field);
 /// "(44 + 41/60 + 37/3600) deg" for "44 deg 41 arcmin 37 arcsec" (the ASCII of "44° 41′ 37″";
 /// "'" and '"' as well as arcmin and arcsec), a sign before it outside the bracket; `ascii` itself
 /// when the whole of it is no such angle. For answers and parameter values alike.
-std::string sexagesimal_degrees(const std::string& ascii);
+/// @throws InputError naming `field` for minutes or seconds of 60 or more ("30°75′"): a count
+///   that runs over is a slip in writing the angle, and its reading would be a guess.
+std::string sexagesimal_degrees(const std::string& ascii, const std::string& field);
 
 /// True if `text` reads as a unit (no throw).
 bool is_unit(const std::string& text);

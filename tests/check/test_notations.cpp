@@ -412,3 +412,29 @@ TEST_CASE("a call with a space before its parentheses, as a PDF's text sets it")
   REQUIRE(plate.check("I0", "m (R^2)/4").correct);
   REQUIRE_FALSE(plate.check("I0", "m (R^2)/2").correct);
 }
+
+TEST_CASE("a comment after an answer, as a script or a LaTeX source has one") {
+  const Fixture plate("flying-plate");
+  const std::string i0 = fmt::format("{:.6g}", plate.answer("I0").value.data[0]);  // kg m^2
+  for (const std::string& same : std::vector<std::string>{
+           "m*R**2/4  # a disc about a diameter", i0 + " kg m^2 # table", i0 + "; % kg m^2",
+           "\\frac{m R^2}{4} % disc", "% the disc\nm R^2/4"}) {
+    INFO(same);
+    REQUIRE(plate.check("I0", same).correct);
+  }
+  // What comes before the comment is judged: a factor 2 off stays wrong.
+  REQUIRE_FALSE(plate.check("I0", "m*R**2/2  # m R^2/4").correct);
+  REQUIRE_THROWS_AS(plate.check("I0", "# m R^2/4"), InputError);
+}
+
+TEST_CASE("an angle in degrees and minutes whose minutes run over 59 is refused") {
+  const Fixture plate("flying-plate");  // angle_omega_e3 = alpha = 15 deg
+  REQUIRE(plate.check("angle_omega_e3", "14°59′59.9″").correct);
+  REQUIRE_FALSE(plate.check("angle_omega_e3", "14°30′").correct);
+  // 14°75′ might be 14°57′ or 15°15′; 14°60′ is 15° written as no one writes it.
+  for (const char* over : {"14°75′", "14°60′", "15°0′60″", "14 deg 59 arcmin 75 arcsec"}) {
+    INFO(over);
+    REQUIRE_THROWS_WITH(plate.check("angle_omega_e3", over),
+                        Catch::Contains("in an angle") && Catch::Contains("carry the"));
+  }
+}

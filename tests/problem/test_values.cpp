@@ -99,6 +99,16 @@ TEST_CASE("values with a unit are converted exactly, rounded once") {
   }
   REQUIRE(parse_parameter_value(angle(), "30°16′", "f") >
           parse_parameter_value(angle(), "30.25 deg", "f"));
+  // Minutes or seconds that run over 59 are a slip: 30°75′ might be 30°57′ or 31°15′.
+  for (const std::string& over :
+       {std::string("30°75′"), std::string("30°60′"), std::string("30°15′60″"),
+        std::string("30 deg 15 arcmin 99 arcsec")}) {
+    INFO(over);
+    REQUIRE_THROWS_WITH(parse_parameter_value(angle(), over, "--set f"),
+                        Catch::Contains("--set f") && Catch::Contains("carry the"));
+  }
+  REQUIRE(parse_parameter_value(angle(), "30°59′59.9″", "f") <
+          parse_parameter_value(angle(), "31 deg", "f"));
   // A constant expression is not cut into a unit: the "i" of pi, the "e" of an exponent.
   REQUIRE(parse_parameter_value(with_unit("m"), "2*pi", "f") == 2 * M_PI);  // doubling is exact
   REQUIRE(parse_parameter_value(with_unit("m"), "1e-3", "f") == 1e-3);
