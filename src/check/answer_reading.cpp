@@ -10,6 +10,7 @@
 #include <tuple>
 #include <vector>
 
+#include "check/basis_vectors.hpp"
 #include "check/brackets.hpp"
 #include "check/latex_answer.hpp"
 #include "check/written_forms.hpp"
@@ -931,8 +932,9 @@ std::pair<std::string, bool> without_transpose(const std::string& typed) {
 
 namespace {
 // The unit vectors written with a hat, precomposed or with a combining one, and the axis of each
-// (0, 1, 2: x, y, z).
-constexpr std::array<std::pair<std::string_view, int>, 10> kHattedUnitVectors{{{"i\u0302", 0},
+// (0, 1, 2: x, y, z), and the body's e₁, e₂, e₃ as basis_vectors_spelled writes them (3, 4, 5:
+// another basis, which a sum may not mix with the first).
+constexpr std::array<std::pair<std::string_view, int>, 13> kHattedUnitVectors{{{"i\u0302", 0},
                                                                                {"x\u0302", 0},
                                                                                {"î", 0},
                                                                                {"j\u0302", 1},
@@ -941,7 +943,10 @@ constexpr std::array<std::pair<std::string_view, int>, 10> kHattedUnitVectors{{{
                                                                                {"ŷ", 1},
                                                                                {"k\u0302", 2},
                                                                                {"z\u0302", 2},
-                                                                               {"ẑ", 2}}};
+                                                                               {"ẑ", 2},
+                                                                               {"ê₁", 3},
+                                                                               {"ê₂", 4},
+                                                                               {"ê₃", 5}}};
 
 // "0.5i + 1.5k" -> "0.5 i + 1.5 k": i, j or k glued to the number before it, where the problem
 // has no such symbol, set apart (a number swallows the letters after it when names are found).
@@ -1023,6 +1028,7 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     sum = sum.substr(1, close - 1);
   }
   std::array<std::string, 3> components;
+  int bases = 0;  // 1: the space basis's vectors, 2: the body's
   std::size_t term_start = 0;
   int depth = 0;
   const auto add_term = [&](std::size_t end) {
@@ -1034,7 +1040,9 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     }
     const std::size_t at = term.find('@');
     if (at == std::string::npos || term.find('@', at + 1) != std::string::npos) return false;
-    if (at + 1 >= term.size() || term[at + 1] < '0' || term[at + 1] > '2') return false;
+    if (at + 1 >= term.size() || term[at + 1] < '0' || term[at + 1] > '5') return false;
+    const int axis = term[at + 1] - '0';
+    bases |= axis < 3 ? 1 : 2;
     int inner = 0;  // the marker at the term's top level
     for (std::size_t i = 0; i < at; ++i) {
       if (term[i] == '(' || term[i] == '[') ++inner;
@@ -1043,7 +1051,7 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     const std::string before = trim(term.substr(0, at)), after = trim(term.substr(at + 2));
     if (inner != 0 || !is_factor_between(before, after)) return false;
     const std::string coefficient = with_one_in_place(before, after);
-    std::string& component = components.at(static_cast<std::size_t>(term[at + 1] - '0'));
+    std::string& component = components.at(static_cast<std::size_t>(axis % 3));
     component +=
         (component.empty() && sign == "+" ? "" : " " + sign + " ") + "(" + coefficient + ")";
     return true;
@@ -1056,7 +1064,7 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     if (!add_term(i)) return "";
     term_start = i;
   }
-  if (!add_term(sum.size())) return "";
+  if (!add_term(sum.size()) || bases == 3) return "";  // "x̂ + ê₃" mixes two bases
   std::string vector = "[";
   for (std::size_t n = 0; n < 3; ++n)
     vector += (n ? ", " : "") + (components[n].empty() ? std::string("0") : components[n]);
@@ -1064,26 +1072,48 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
 }
 }  // namespace
 
+namespace {
+// "0.5 i + j + 1.5 k", "0.5 ê₁ + 1.5 ê₃" (unit vectors as basis_vectors_spelled writes them): the
+// components read as a vector, or, if they do not, a message that says what to write, not that
+// "i + j" is no unit.
+ReadAnswer read_along_unit_vectors(const std::string& spelled, const std::string& vectors,
+                                   const sym::SymbolTable& table, const std::string& field) {
+  if (const std::string components = unit_vector_sum(spelled, table); !components.empty()) {
+    try {
+      return read_transposed(components, table, field);
+    } catch (const InputError&) {
+    }
+  }
+  // "ω = φ̇ ẑ + ψ̇ ê₃": a sum over two bases, which no one vector's components are.
+  std::size_t body = 0, names = 1;
+  for (std::size_t at = vectors.find("ê"); at != std::string::npos; at = vectors.find("ê", at + 1))
+    ++body;
+  for (const char c : vectors) names += c == ',';
+  if (body > 0 && body < names) {
+    throw InputError(field + ": components along " + vectors +
+                     " mix the space basis and the body's (e₁, e₂, e₃); give the components "
+                     "in one basis, or the vector [x, y, z]");
+  }
+  throw InputError(field + ": cannot read the components along unit vectors (" + vectors +
+                   ") as a sum of a number or expression times each; write the vector as "
+                   "[x, y, z]");
+}
+}  // namespace
+
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field) {
   check_bounds(typed, field);
-  try {
-    return read_transposed(typed, table, field);
-  } catch (const InputError&) {
-    const std::string vectors = unit_vectors_named(typed, table);
-    if (vectors.empty()) throw;
-    // "0.5 i + j + 1.5 k": the components read as a vector, or, if they do not, say what to
-    // write, not that "i + j" is no unit.
-    if (const std::string components = unit_vector_sum(typed, table); !components.empty()) {
-      try {
-        return read_transposed(components, table, field);
-      } catch (const InputError&) {
-      }
+  // "\hat{x}", "e₁" respelled: such a text is a sum along unit vectors, never read as written
+  // ("0.5e₁" would be 5 there, its subscript a digit).
+  const std::string spelled = basis_vectors_spelled(typed, table);
+  if (spelled == typed) {
+    try {
+      return read_transposed(typed, table, field);
+    } catch (const InputError&) {
+      if (unit_vectors_named(typed, table).empty()) throw;
     }
-    throw InputError(field + ": cannot read the components along unit vectors (" + vectors +
-                     ") as a sum of a number or expression times each; write the vector as "
-                     "[x, y, z]");
   }
+  return read_along_unit_vectors(spelled, unit_vectors_named(spelled, table), table, field);
 }
 
 namespace {

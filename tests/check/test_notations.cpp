@@ -438,3 +438,33 @@ TEST_CASE("an angle in degrees and minutes whose minutes run over 59 is refused"
                         Catch::Contains("in an angle") && Catch::Contains("carry the"));
   }
 }
+
+TEST_CASE("components along the body's e₁, e₂, e₃ or LaTeX's unit vectors read as a vector") {
+  const Fixture plate("flying-plate");  // L0_body = (L1, 0, L3)
+  const auto& l = plate.answer("L0_body").value.data;
+  const std::string l1 = fmt::format("{:.6g}", l[0]), l3 = fmt::format("{:.6g}", l[2]);
+  for (const std::string& same : std::vector<std::string>{
+           l1 + " e₁ + " + l3 + " e₃", "(" + l3 + " e3 + " + l1 + " e1) kg m²/s",
+           l1 + " \\hat{e}_1 + " + l3 + " \\hat{e}_3", "m R² ω sin α/4 e₁ + m R² ω cos α/2 e₃",
+           "\\frac{m R^2 \\omega \\sin\\alpha}{4} \\hat{\\mathbf{e}}_1 + \\frac{m R^2 \\omega "
+           "\\cos\\alpha}{2} \\vec{e}_{3}"}) {
+    INFO(same);
+    REQUIRE(plate.check("L0_body", same).correct);
+  }
+  REQUIRE_FALSE(plate.check("L0_body", l1 + " e₃ + " + l3 + " e₁").correct);  // axes swapped
+  // Two bases in one sum are no vector's components: x̂ is in space, e₃ in the body.
+  REQUIRE_THROWS_WITH(plate.check("L0_body", l1 + " x̂ + " + l3 + " e₃"),
+                      Catch::Contains("mix the space basis and the body's"));
+  // A primed e is another basis (the Euler angles'), read as no unit vector; \vec{x} is a
+  // position, no unit vector either.
+  REQUIRE_THROWS_AS(plate.check("L0_body", l1 + " e₁′ + " + l3 + " e₃"), InputError);
+  REQUIRE_THROWS_AS(plate.check("L0_body", l1 + " \\vec{x} + " + l3 + " \\vec{z}"), InputError);
+  // Glued to its component, e₁ is a unit vector still (its subscript no exponent's digit: the
+  // reading as written took 0.5e₁ for 5), and so refused where a number is asked for.
+  REQUIRE(plate.check("L0_body", l1 + "e₁ + " + l3 + "e_3").correct);
+  REQUIRE_THROWS_WITH(plate.check("I0", "7.2e₁"), Catch::Contains("not a 3-vector"));
+  // An exponent's e stays a number's: 2e1 is 20, wherever unit vectors are read.
+  REQUIRE_THROWS_WITH(plate.check("L0_body", "2e1"), Catch::Contains("not a number"));
+  REQUIRE(plate.check("I0", fmt::format("{:.6g}e-2 kg m^2", plate.answer("I0").value.data[0] * 100))
+              .correct);
+}

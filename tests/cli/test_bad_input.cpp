@@ -887,13 +887,15 @@ TEST_CASE("hostile answers are answered within seconds and bounded memory (check
   // And a run of digits: each digit once walked back over the whole run before it (13 s).
   answers.insert(answers.end(), {diagonal + ")", diagonals + "0", greek, std::string(89000, '7')});
   // Passes that rewrite as they go: NumPy's scalars unwrapped, rates in Leibniz's notation,
-  // styled letters set apart, calls unspaced, thousands of times each.
-  std::string numpy, leibniz, styled, calls;
+  // styled letters set apart, calls unspaced, unit vectors respelled (in a sum the reader
+  // splits term by term), thousands of times each.
+  std::string numpy, leibniz, styled, calls, basis = "\\hat{\\mathbf{e}}_{1}";
   for (int k = 0; k < 5000; ++k) numpy += "np.float64(1)+";
   for (int k = 0; k < 8000; ++k) leibniz += "dm/dt+";
   for (int k = 0; k < 20000; ++k) styled += "𝑚";
   for (int k = 0; k < 10000; ++k) calls += "cos (m)+";
-  answers.insert(answers.end(), {numpy + "0", leibniz + "0", styled, calls + "0"});
+  for (int k = 0; k < 4000; ++k) basis += "+m e₂+\\hat{e}_{3}";
+  answers.insert(answers.end(), {numpy + "0", leibniz + "0", styled, calls + "0", basis});
   for (const std::string& answer : answers) {
     for (const std::string how : {"check", "worksheet"}) {
       const std::string command =

@@ -393,6 +393,61 @@ TEST_CASE("every closed form with its rates in Leibniz's notation reads back, ev
   REQUIRE(forms > 40);  // the Euler angles' rates, twice, and the heavy top's, three forms each
 }
 
+namespace {
+// A 3-vector answer as a student writes it along unit vectors, spelled by `unit_vector` (its
+// axis 0, 1, 2 in, the text out): "(0.0019 e₁ + 0.014 e₃) kg m²/s", the zero components left
+// out as people leave them; with `flip`, the largest component's sign turned. Empty for any
+// other answer, and for the zero vector.
+std::string along_unit_vectors(const Answer& a,
+                               const std::function<std::string(std::size_t)>& unit_vector,
+                               bool flip = false) {
+  const auto& d = a.value.data;
+  if (a.value.shape != Value::Shape::vector || d.size() != 3) return "";
+  std::size_t largest = 0;
+  for (std::size_t k = 1; k < 3; ++k) largest = std::abs(d[k]) > std::abs(d[largest]) ? k : largest;
+  if (d[largest] == 0.0) return "";
+  std::string sum;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double x = flip && k == largest ? -d[k] : d[k];
+    if (x == 0.0) continue;
+    const std::string size = format_number(std::abs(x)) + " " + unit_vector(k);
+    sum += sum.empty() ? (x < 0 ? "-" : "") + size : (x < 0 ? " - " : " + ") + size;
+  }
+  return a.unit.empty() ? sum : "(" + sum + ") " + a.unit;
+}
+}  // namespace
+
+TEST_CASE("every vector answer as components along unit vectors reads back, every problem") {
+  // The statements name the body's axes e₁, e₂, e₃; books write the space basis x̂, î or, in
+  // LaTeX, \hat{x}, \mathbf{i}. A vector's components read the same along either.
+  const std::vector<std::function<std::string(std::size_t)>> spellings{
+      [](std::size_t k) { return "e" + std::string("₁₂₃").substr(3 * k, 3); },
+      [](std::size_t k) { return "e" + std::to_string(k + 1); },
+      [](std::size_t k) { return "e_" + std::to_string(k + 1); },
+      [](std::size_t k) { return "\\hat{e}_{" + std::to_string(k + 1) + "}"; },
+      [](std::size_t k) { return "\\mathbf{e}_" + std::to_string(k + 1); },
+      [](std::size_t k) { return "\\hat{" + std::string(1, "xyz"[k]) + "}"; },
+      [](std::size_t k) { return "\\mathbf{" + std::string(1, "ijk"[k]) + "}"; },
+      [](std::size_t k) { return k == 0   ? "\\hat\\imath"
+                                 : k == 1 ? "\\hat\\jmath"
+                                          : "\\hat{k}"; }};
+  int right = 0, wrong = 0;
+  for (const auto& spelling : spellings) {
+    right += forms_judged([&](const Answer& a) {
+      const std::string text = along_unit_vectors(a, spelling);
+      return text.empty() ? std::vector<std::string>{} : std::vector<std::string>{text};
+    });
+    wrong += forms_judged(
+        [&](const Answer& a) {
+          const std::string text = along_unit_vectors(a, spelling, true);
+          return text.empty() ? std::vector<std::string>{} : std::vector<std::string>{text};
+        },
+        false);
+  }
+  REQUIRE(right > 8 * 30);  // the catalog's nonzero 3-vectors, in eight spellings
+  REQUIRE(wrong == right);
+}
+
 TEST_CASE("every answer the worksheet reveals reads back as correct, every problem") {
   int revealed = 0;
   for (const auto& p : load_catalog()) {

@@ -1,0 +1,24 @@
+#pragma once
+/// @file
+/// Unit vectors as students write them after a component, rewritten to the one spelling the
+/// answer reader knows (answer_reading.cpp reads a sum of components along them as a vector):
+/// - the space basis: "x̂", "î" as typed, and LaTeX's "\hat{x}", "\hat\imath", "\hat{i}",
+///   "\mathbf{i}", "\boldsymbol{\hat{k}}", "\hat{\mathbf{z}}" (x, y, z with a hat; i, j, k with a
+///   hat or in bold) -> "x̂", "î", .. (the precomposed forms where Unicode has them);
+/// - the body basis, the problem statements' e₁, e₂, e₃: "e₁", "e1", "e_1", "ê₁", "e_{1}",
+///   "\hat{e}_1", "\mathbf{e}_1", "\vec{e}_{1}", "\hat{\mathbf{e}}_1" -> "ê₁", "ê₂", "ê₃".
+/// A primed e ("e₂′", "e_2'") is another basis (the Euler angles' primed one) and is left as it
+/// is, as is a bare e1 glued to a number ("2e1" is 20) or one that is the problem's own symbol.
+#include <string>
+
+#include "symbolic/expression.hpp"
+
+namespace wobble::check {
+
+/// The body basis as the rewriting spells it, e₁ to e₃ in order.
+inline constexpr const char* kBodyUnitVectors[3] = {"ê₁", "ê₂", "ê₃"};
+
+/// `typed` with each unit vector spelled as above; `typed` itself where it has none.
+std::string basis_vectors_spelled(const std::string& typed, const sym::SymbolTable& table);
+
+}  // namespace wobble::check
