@@ -932,9 +932,13 @@ std::pair<std::string, bool> without_transpose(const std::string& typed) {
 
 namespace {
 // The unit vectors written with a hat, precomposed or with a combining one, and the axis of each
-// (0, 1, 2: x, y, z), and the body's e₁, e₂, e₃ as basis_vectors_spelled writes them (3, 4, 5:
-// another basis, which a sum may not mix with the first).
-constexpr std::array<std::pair<std::string_view, int>, 13> kHattedUnitVectors{{{"i\u0302", 0},
+// (0, 1, 2: x, y, z), and the body's e₁, e₂, e₃ and the primed e₁′, e₂′, e₃′ as
+// basis_vectors_spelled writes them (3 to 5, 6 to 8: other bases, which a sum may not mix). The
+// primed first, so that "ê₁′" is not found as "ê₁".
+constexpr std::array<std::pair<std::string_view, int>, 16> kHattedUnitVectors{{{"ê₁′", 6},
+                                                                               {"ê₂′", 7},
+                                                                               {"ê₃′", 8},
+                                                                               {"i\u0302", 0},
                                                                                {"x\u0302", 0},
                                                                                {"î", 0},
                                                                                {"j\u0302", 1},
@@ -974,7 +978,12 @@ std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable&
     if (!first.count(name) || at < first[name]) first[name] = at;
   };
   for (const auto& [hatted, axis] : kHattedUnitVectors) {
-    if (const auto at = typed.find(hatted); at != std::string::npos) add(at, std::string(hatted));
+    for (auto at = typed.find(hatted); at != std::string::npos; at = typed.find(hatted, at + 1)) {
+      // "ê₁" as the start of "ê₁′" is that one, the primed.
+      if (axis >= 3 && axis < 6 && typed.compare(at + hatted.size(), 3, "′") == 0) continue;
+      add(at, std::string(hatted));
+      break;
+    }
   }
   const std::string unglued = unit_vectors_unglued(typed, table);
   for (const auto& [start, length] : identifiers(unglued)) {
@@ -1028,7 +1037,7 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     sum = sum.substr(1, close - 1);
   }
   std::array<std::string, 3> components;
-  int bases = 0;  // 1: the space basis's vectors, 2: the body's
+  int bases = 0;  // 1: the space basis's vectors, 2: the body's, 4: the primed
   std::size_t term_start = 0;
   int depth = 0;
   const auto add_term = [&](std::size_t end) {
@@ -1040,9 +1049,9 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     }
     const std::size_t at = term.find('@');
     if (at == std::string::npos || term.find('@', at + 1) != std::string::npos) return false;
-    if (at + 1 >= term.size() || term[at + 1] < '0' || term[at + 1] > '5') return false;
+    if (at + 1 >= term.size() || term[at + 1] < '0' || term[at + 1] > '8') return false;
     const int axis = term[at + 1] - '0';
-    bases |= axis < 3 ? 1 : 2;
+    bases |= 1 << (axis / 3);
     int inner = 0;  // the marker at the term's top level
     for (std::size_t i = 0; i < at; ++i) {
       if (term[i] == '(' || term[i] == '[') ++inner;
@@ -1064,7 +1073,8 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     if (!add_term(i)) return "";
     term_start = i;
   }
-  if (!add_term(sum.size()) || bases == 3) return "";  // "x̂ + ê₃" mixes two bases
+  // "x̂ + ê₃" mixes two bases: more than one bit set.
+  if (!add_term(sum.size()) || (bases & (bases - 1)) != 0) return "";
   std::string vector = "[";
   for (std::size_t n = 0; n < 3; ++n)
     vector += (n ? ", " : "") + (components[n].empty() ? std::string("0") : components[n]);
@@ -1084,15 +1094,20 @@ ReadAnswer read_along_unit_vectors(const std::string& spelled, const std::string
     } catch (const InputError&) {
     }
   }
-  // "ω = φ̇ ẑ + ψ̇ ê₃": a sum over two bases, which no one vector's components are.
-  std::size_t body = 0, names = 1;
-  for (std::size_t at = vectors.find("ê"); at != std::string::npos; at = vectors.find("ê", at + 1))
-    ++body;
-  for (const char c : vectors) names += c == ',';
-  if (body > 0 && body < names) {
+  // "ω = φ̇ ẑ + θ̇ ê₂′ + ψ̇ ê₃": a sum over bases, which no one vector's components are.
+  std::set<int> bases;
+  for (std::size_t from = 0; from <= vectors.size();) {
+    const std::size_t end = std::min(vectors.find(", ", from), vectors.size());
+    const std::string name = vectors.substr(from, end - from);
+    bases.insert(name.find("′") != std::string::npos   ? 2
+                 : name.find("ê") != std::string::npos ? 1
+                                                       : 0);
+    from = end + 2;
+  }
+  if (bases.size() > 1) {
     throw InputError(field + ": components along " + vectors +
-                     " mix the space basis and the body's (e₁, e₂, e₃); give the components "
-                     "in one basis, or the vector [x, y, z]");
+                     " mix bases (space x̂ ŷ ẑ, body e₁ e₂ e₃, primed e₁′ e₂′ e₃′); give the "
+                     "components in one basis, or the vector [x, y, z]");
   }
   throw InputError(field + ": cannot read the components along unit vectors (" + vectors +
                    ") as a sum of a number or expression times each; write the vector as "

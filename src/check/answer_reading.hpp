@@ -10,8 +10,8 @@
 ///   angle brackets "⟨5, 7, 10⟩" or "<5, 7, 10>";
 /// - a vector as components along unit vectors, "0.5 i + j - 1.5 k", "0.5î + 1.5k̂", "(x̂ +
 ///   2ŷ) m" (i, j, k where the problem has no such symbol): each term a coefficient times one;
-///   also the body's "e₁", "e_1", and LaTeX's "\hat{x}", "\mathbf{e}_1" (basis_vectors.hpp), one
-///   basis in a sum;
+///   also the body's "e₁", "e_1", the primed "e₁′", and LaTeX's "\hat{x}", "\mathbf{e}_1"
+///   (basis_vectors.hpp), one basis in a sum;
 /// - a transpose mark after a vector or matrix, "[5 7 10]ᵀ", "^T", "^{T}", "^\top", "'": a
 ///   vector is the same either way, a matrix is transposed;
 /// - matrices as printed, row by row ("[ 10 0 0 ] [ 0 6 1 ] [ 0 1 6 ]", on one line or several);

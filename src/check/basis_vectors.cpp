@@ -131,17 +131,21 @@ std::optional<std::pair<std::size_t, std::string>> unit_vector_at(const std::str
     ++p.i;
   }
   if (letter == 'e' && !axis) axis = p.subscript(false);
-  // What follows a unit vector ends its name; a prime makes it another basis's.
-  if (p.i < s.size() && (is_name_char(s[p.i]) || s[p.i] == '\'' || s[p.i] == '^')) {
-    return std::nullopt;
+  // A prime makes it the primed basis's ("e_2'", "e₂′", "e_2^\prime", "e_{2}^{\prime}").
+  bool primed = false;
+  for (const std::string_view prime : {"'", "′", "’", "\u02b9", "^\\prime", "^{\\prime}", "^{'}"}) {
+    if (!primed && p.at(prime)) {
+      primed = true;
+      p.i += prime.size();
+    }
   }
-  for (const std::string_view prime : {"′", "’", "\u02b9"}) {
-    if (p.at(prime)) return std::nullopt;
-  }
+  // What follows a unit vector ends its name.
+  if (p.i < s.size() && (is_name_char(s[p.i]) || s[p.i] == '^')) return std::nullopt;
   if (letter == 'e') {
     if (!axis) return std::nullopt;
-    return std::make_pair(p.i, std::string(kBodyUnitVectors[*axis]));
+    return std::make_pair(p.i, std::string(kBodyUnitVectors[*axis + (primed ? 3 : 0)]));
   }
+  if (primed) return std::nullopt;  // "x̂′" is no basis of any problem
   // x, y, z need a hat; i, j, k without one or bold are the answer reader's own to judge.
   const bool ijk = letter == 'i' || letter == 'j' || letter == 'k';
   if (!(hat || (bold && ijk))) return std::nullopt;

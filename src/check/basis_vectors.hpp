@@ -7,16 +7,18 @@
 ///   hat or in bold) -> "x̂", "î", .. (the precomposed forms where Unicode has them);
 /// - the body basis, the problem statements' e₁, e₂, e₃: "e₁", "e1", "e_1", "ê₁", "e_{1}",
 ///   "\hat{e}_1", "\mathbf{e}_1", "\vec{e}_{1}", "\hat{\mathbf{e}}_1" -> "ê₁", "ê₂", "ê₃".
-/// A primed e ("e₂′", "e_2'") is another basis (the Euler angles' primed one) and is left as it
-/// is, as is a bare e1 glued to a number ("2e1" is 20) or one that is the problem's own symbol.
+/// - the primed basis of the Euler angles (the body's before the last turn), "e₂′", "e_2'",
+///   "\hat{e}_2'", "e_2^\prime" -> "ê₁′", "ê₂′", "ê₃′".
+/// A bare e1 glued to a number ("2e1" is 20) or one that is the problem's own symbol is left as
+/// it is.
 #include <string>
 
 #include "symbolic/expression.hpp"
 
 namespace wobble::check {
 
-/// The body basis as the rewriting spells it, e₁ to e₃ in order.
-inline constexpr const char* kBodyUnitVectors[3] = {"ê₁", "ê₂", "ê₃"};
+/// The body basis as the rewriting spells it, e₁ to e₃ in order, then the primed basis.
+inline constexpr const char* kBodyUnitVectors[6] = {"ê₁", "ê₂", "ê₃", "ê₁′", "ê₂′", "ê₃′"};
 
 /// `typed` with each unit vector spelled as above; `typed` itself where it has none.
 std::string basis_vectors_spelled(const std::string& typed, const sym::SymbolTable& table);

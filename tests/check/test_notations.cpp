@@ -454,10 +454,10 @@ TEST_CASE("components along the body's e₁, e₂, e₃ or LaTeX's unit vectors 
   REQUIRE_FALSE(plate.check("L0_body", l1 + " e₃ + " + l3 + " e₁").correct);  // axes swapped
   // Two bases in one sum are no vector's components: x̂ is in space, e₃ in the body.
   REQUIRE_THROWS_WITH(plate.check("L0_body", l1 + " x̂ + " + l3 + " e₃"),
-                      Catch::Contains("mix the space basis and the body's"));
-  // A primed e is another basis (the Euler angles'), read as no unit vector; \vec{x} is a
-  // position, no unit vector either.
-  REQUIRE_THROWS_AS(plate.check("L0_body", l1 + " e₁′ + " + l3 + " e₃"), InputError);
+                      Catch::Contains("mix bases"));
+  // A primed e is a third basis (the Euler angles'); \vec{x} is a position, no unit vector.
+  REQUIRE_THROWS_WITH(plate.check("L0_body", l1 + " e₁′ + " + l3 + " e₃"),
+                      Catch::Contains("mix bases"));
   REQUIRE_THROWS_AS(plate.check("L0_body", l1 + " \\vec{x} + " + l3 + " \\vec{z}"), InputError);
   // Glued to its component, e₁ is a unit vector still (its subscript no exponent's digit: the
   // reading as written took 0.5e₁ for 5), and so refused where a number is asked for.
@@ -467,4 +467,21 @@ TEST_CASE("components along the body's e₁, e₂, e₃ or LaTeX's unit vectors 
   REQUIRE_THROWS_WITH(plate.check("L0_body", "2e1"), Catch::Contains("not a number"));
   REQUIRE(plate.check("I0", fmt::format("{:.6g}e-2 kg m^2", plate.answer("I0").value.data[0] * 100))
               .correct);
+}
+
+TEST_CASE("components along the Euler angles' primed basis, e₁′, e₂′, e₃′, read as a vector") {
+  const Fixture euler("euler-angles");  // omega_primed = (-φ̇ sin θ, θ̇, φ̇ cos θ + ψ̇)
+  for (const std::string& same : std::vector<std::string>{
+           "-φ̇ sin θ e₁′ + θ̇ e₂′ + (φ̇ cos θ + ψ̇) e₃′",
+           "-phidot sin(theta) e_1' + thetadot e_2' + (phidot cos(theta) + psidot) e_3'",
+           "-\\dot\\phi \\sin\\theta\\, \\hat{e}_1^\\prime + \\dot\\theta\\, "
+           "\\hat{e}_{2}^{\\prime} + "
+           "(\\dot\\phi\\cos\\theta + \\dot\\psi) \\hat{e}_3'"}) {
+    INFO(same);
+    REQUIRE(euler.check("omega_primed", same).correct);
+  }
+  REQUIRE_FALSE(euler.check("omega_primed", "φ̇ sin θ e₁′ + θ̇ e₂′ + (φ̇ cos θ + ψ̇) e₃′").correct);
+  // The hint's ω = φ̇ z + θ̇ e₂′ + ψ̇ e₃ adds vectors of three bases: no one basis's components.
+  REQUIRE_THROWS_WITH(euler.check("omega_primed", "φ̇ ẑ + θ̇ e₂′ + ψ̇ e₃"),
+                      Catch::Contains("ẑ, ê₂′, ê₃ mix bases"));
 }
