@@ -62,6 +62,36 @@ std::string misreading_hint(const Answer& a, const std::string& typed,
   return ungrouped.empty() ? "" : fmt::format(" (digits grouped? write {})", ungrouped);
 }
 
+// " (I0 is the answer to part (a): write it in the problem's symbols)" where `typed` names
+// another answer of the key ("I₀ diag(1, 1, 2)", as question (a) writes I), or "". An answer
+// is no symbol: reading it as its key's value would let a name stand in for the working.
+std::string answer_name_hint(const Context& ctx, const std::string& typed) {
+  const std::string ascii = sym::to_ascii(typed);
+  for (std::size_t i = 0; i < ascii.size();) {
+    if (!std::isalpha(static_cast<unsigned char>(ascii[i])) ||
+        (i > 0 && std::isdigit(static_cast<unsigned char>(ascii[i - 1])))) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < ascii.size() &&
+           (std::isalnum(static_cast<unsigned char>(ascii[end])) || ascii[end] == '_'))
+      ++end;
+    const std::string name = ascii.substr(i, end - i);
+    i = end;
+    if (ctx.table.contains(name)) continue;
+    for (const auto& part : ctx.key.parts) {
+      for (const auto& answer : part.answers) {
+        if (answer.name == name) {
+          return fmt::format(" ({} is the answer to part ({}): write it in the problem's symbols)",
+                             name, part.id);
+        }
+      }
+    }
+  }
+  return "";
+}
+
 void check_shape(const Answer& a, const sym::ValueText& v, const std::string& typed) {
   const bool key_vec = a.value.shape == Value::Shape::vector;
   const bool key_mat = a.value.shape == Value::Shape::matrix;
@@ -336,7 +366,7 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
       return read_answer(text, ctx.table, kField);
     } catch (const InputError& e) {
       // "15,5deg" reads as two entries, one without a unit: say what was more likely meant.
-      const std::string hint = misreading_hint(a, text, std::nullopt);
+      const std::string hint = misreading_hint(a, text, std::nullopt) + answer_name_hint(ctx, text);
       if (hint.empty()) throw;
       throw InputError(e.what() + hint);
     }

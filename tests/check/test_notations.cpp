@@ -485,3 +485,14 @@ TEST_CASE("components along the Euler angles' primed basis, e₁′, e₂′, e�
   REQUIRE_THROWS_WITH(euler.check("omega_primed", "φ̇ ẑ + θ̇ e₂′ + ψ̇ e₃"),
                       Catch::Contains("ẑ, ê₂′, ê₃ mix bases"));
 }
+
+TEST_CASE("an answer's name in an answer is no symbol, and the message says whose it is") {
+  // Question (a) writes I = I₀ diag(…): a student answers I so, with part (a)'s I₀.
+  const Fixture plate("flying-plate");
+  REQUIRE_THROWS_WITH(plate.check("I", "I₀ diag(1, 1, 2)"),
+                      Catch::Contains("I0 is the answer to part (a)"));
+  REQUIRE_THROWS_WITH(plate.check("L0_space", "L0_body"),
+                      Catch::Contains("L0_body is the answer to part (b)"));
+  // A name that is no answer gets no such line.
+  REQUIRE_THROWS_WITH(plate.check("I0", "M R^2/4"), !Catch::Contains("is the answer to"));
+}
