@@ -1160,8 +1160,9 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
   // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
   const std::string source =
       looks_like_latex(answer) ? latex_as_text(answer, table, field) : answer;
-  const std::string text = sexagesimal_degrees(
-      symbols_as_spelled(leibniz_rates(prepared(source, field), table), table), field);
+  // "44°41′37″", "303 days 15 h": a quantity in parts, as their sum.
+  const std::string text = compound_quantity(sexagesimal_degrees(
+      symbols_as_spelled(leibniz_rates(prepared(source, field), table), table), field));
   if (text.empty()) {
     throw InputError(field +
                      ": empty; type a number (with a unit if you like), a vector [x, y, "

@@ -138,15 +138,17 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
     if (t.find('=', eq + 1) != std::string::npos) {
       throw InputError(field + ": '" + text + "' has more than two sides; give one value");
     }
-    v = one_value(p, sexagesimal_degrees(t.substr(0, eq), field), text, field);
-    const double printed = one_value(p, sexagesimal_degrees(t.substr(eq + 1), field), text, field);
+    v = one_value(p, compound_quantity(sexagesimal_degrees(t.substr(0, eq), field)), text, field);
+    const double printed =
+        one_value(p, compound_quantity(sexagesimal_degrees(t.substr(eq + 1), field)), text, field);
     if (!(std::abs(printed - v) <= kPrintedSidesAgree * std::abs(v))) {
       throw InputError(field + ": the two sides of '" + text + "' differ (" + shortest(v) +
                        " and " + shortest(printed) + (p.unit.empty() ? "" : " " + p.unit) +
                        "); give one value");
     }
   } else {
-    v = one_value(p, sexagesimal_degrees(t, field), text, field);  // "30°15′": "(30 + 15/60) deg"
+    v = one_value(p, compound_quantity(sexagesimal_degrees(t, field)), text,
+                  field);  // "30°15′": "(30 + 15/60) deg"
   }
   if (!std::isfinite(v)) throw InputError(field + ": value must be finite, got '" + text + "'");
   if (!p.range.contains(v)) {

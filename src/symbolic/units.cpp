@@ -390,4 +390,57 @@ std::string sexagesimal_degrees(const std::string& ascii, const std::string& fie
          (seconds.empty() ? "" : " + " + seconds + "/3600") + ") deg";
 }
 
+namespace {
+// The SI unit of a dimension (powers of kg, m, s), as the grammar reads it: "kg m^2 s^-1".
+std::string si_unit_text(const Unit& unit) {
+  static const std::array<const char*, 3> names{"kg", "m", "s"};
+  std::string text;
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (unit.dim[k] == 0) continue;
+    text += (text.empty() ? "" : " ") + std::string(names[k]) +
+            (unit.dim[k] == 1 ? "" : "^" + std::to_string(unit.dim[k]));
+  }
+  return text;
+}
+}  // namespace
+
+std::string compound_quantity(const std::string& ascii) {
+  std::size_t i = 0;
+  const auto spaces = [&] {
+    while (i < ascii.size() && ascii[i] == ' ') ++i;
+  };
+  const auto run = [&](auto accepts) {
+    spaces();
+    const std::size_t start = i;
+    while (i < ascii.size() && accepts(ascii[i])) ++i;
+    return ascii.substr(start, i - start);
+  };
+  spaces();
+  const std::string sign = i < ascii.size() && (ascii[i] == '-' || ascii[i] == '+')
+                               ? std::string(1, ascii[i++])
+                               : std::string();
+  std::vector<std::pair<std::string, Unit>> parts;
+  while (true) {
+    spaces();
+    if (i >= ascii.size()) break;
+    const std::string number = run([](char c) { return is_digit(c) || c == '.'; });
+    const std::string name = run([](char c) { return is_letter(c); });
+    if (number.empty() || name.empty() || !is_unit(name)) return ascii;
+    const Unit unit = parse_unit(name, "");
+    // One dimension, the largest first: "1 h 30 min", never "30 min 1 h", nor an angle's
+    // parts (sexagesimal_degrees has those) or a unit per part of different kinds.
+    if (unit.angle) return ascii;
+    if (!parts.empty() &&
+        (!unit.same_dimension(parts.back().second) || !(unit.to_si < parts.back().second.to_si))) {
+      return ascii;
+    }
+    parts.emplace_back(number, unit);
+  }
+  if (parts.size() < 2) return ascii;
+  std::string sum;
+  for (const auto& [number, unit] : parts)
+    sum += (sum.empty() ? "" : " + ") + number + "*(" + unit.to_si_exact + ")";
+  return sign + "(" + sum + ") " + si_unit_text(parts.front().second);
+}
+
 }  // namespace wobble

@@ -46,6 +46,13 @@ Unit parse_unit(const std::string& text, const std::string& field);
 ///   that runs over is a slip in writing the angle, and its reading would be a guess.
 std::string sexagesimal_degrees(const std::string& ascii, const std::string& field);
 
+/// "(303*(86400) + 15*(3600)) s" for "303 days 15 h": a quantity in parts, as durations are
+/// told ("1 h 30 min", "2 min 5 s"), each a plain number and one unit's name, of one dimension,
+/// the largest first, written as their sum in the SI unit (exactly, through to_si_exact); a sign
+/// before it outside the bracket. `ascii` itself when the whole of it is no such quantity (one
+/// part, or parts that are not as above). Angles in degrees and minutes: sexagesimal_degrees.
+std::string compound_quantity(const std::string& ascii);
+
 /// True if `text` reads as a unit (no throw).
 bool is_unit(const std::string& text);
 

@@ -496,3 +496,30 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
   // A name that is no answer gets no such line.
   REQUIRE_THROWS_WITH(plate.check("I0", "M R^2/4"), !Catch::Contains("is the answer to"));
 }
+
+TEST_CASE("a duration told in parts, 303 days 15 h, reads as their sum") {
+  const Fixture earth("earth-free-precession");  // Euler's period, 303.62 days
+  const double days = earth.answer("precession_period_body").value.data[0] / 86400;
+  const int whole = static_cast<int>(days);
+  const double hours = (days - whole) * 24;
+  for (const std::string& same :
+       {fmt::format("{} days {:.0f} h", whole, hours),
+        fmt::format("{} day {:.0f} hours {:.0f} min", whole, std::floor(hours),
+                    (hours - std::floor(hours)) * 60)}) {
+    INFO(same);
+    REQUIRE(earth.check("precession_period_body", same).correct);
+  }
+  // "d" for a day is no unit wobble reads (a problem's distance is d): refused, not misread.
+  REQUIRE_THROWS_AS(
+      earth.check("precession_period_body", fmt::format("{} d {:.0f} h", whole, hours)),
+      InputError);
+  // A part off by a day is judged as such, not dropped.
+  REQUIRE_FALSE(
+      earth.check("precession_period_body", fmt::format("{} days {:.0f} h", whole + 30, hours))
+          .correct);
+  // Parts out of order, or of two dimensions, are no duration.
+  REQUIRE_THROWS_AS(earth.check("precession_period_body", fmt::format("15 h {} days", whole)),
+                    InputError);
+  REQUIRE_THROWS_AS(earth.check("precession_period_body", fmt::format("{} days 15 kg", whole)),
+                    InputError);
+}

@@ -109,6 +109,10 @@ TEST_CASE("values with a unit are converted exactly, rounded once") {
   }
   REQUIRE(parse_parameter_value(angle(), "30°59′59.9″", "f") <
           parse_parameter_value(angle(), "31 deg", "f"));
+  // A length or a time in parts, as people tell them: their sum, converted exactly.
+  REQUIRE(parse_parameter_value(with_unit("m"), "1 m 20 cm", "f") ==
+          parse_parameter_value(with_unit("m"), "120 cm", "f"));
+  REQUIRE_THROWS_AS(parse_parameter_value(with_unit("m"), "20 cm 1 m", "f"), InputError);
   // A constant expression is not cut into a unit: the "i" of pi, the "e" of an exponent.
   REQUIRE(parse_parameter_value(with_unit("m"), "2*pi", "f") == 2 * M_PI);  // doubling is exact
   REQUIRE(parse_parameter_value(with_unit("m"), "1e-3", "f") == 1e-3);
