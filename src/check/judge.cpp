@@ -18,6 +18,7 @@
 #include "core/characters.hpp"
 #include "core/inertia.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/expression_guard.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 #include "symbolic/value_text.hpp"
@@ -411,8 +412,14 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
               const Options& options) {
   // "$$ m R^2/4 = 0.00072 $$": the delimiters are around both sides.
   // "Out[3]= 0.00072": a program's label of its result is no side of an '='.
-  // "m*R**2/4  # disc": a comment, as a script has one after its line.
-  const std::string written = without_output_label(without_math_delimiters(without_comments(text)));
+  // "m*R**2/4  # disc": a comment, as a script has one after its line; "303.6 days (Euler's
+  // period)": a remark.
+  const auto known_word = [&](const std::string& w) {
+    return ctx.table.contains(w) || is_unit(w) || sym::is_function_name(w) ||
+           sym::greek_letters().count(ascii_lower(w)) > 0;
+  };
+  const std::string written = without_output_label(
+      without_math_delimiters(without_remark(without_comments(text), known_word)));
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
   if (const auto components = labelled_components(written, kField))
     return judge_one(ctx, a, *components, options);

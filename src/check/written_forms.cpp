@@ -230,6 +230,31 @@ std::string without_comments(const std::string& s) {
   return out;
 }
 
+std::string without_remark(const std::string& typed,
+                           const std::function<bool(const std::string&)>& is_known) {
+  const std::string t = trim(typed);
+  if (t.size() < 2 || t.back() != ')') return typed;
+  const std::size_t open = t.rfind('(');
+  if (open == std::string::npos || open == 0 || t[open - 1] != ' ') return typed;
+  const std::string inside = t.substr(open + 1, t.size() - open - 2);
+  std::vector<std::string> words(1);
+  for (const char c : inside) {
+    if (is_letter(c)) {
+      words.back() += c;
+    } else if (c == ' ' || c == ',' || c == '-' || c == '\'') {
+      if (!words.back().empty()) words.emplace_back();
+    } else {
+      return typed;  // a digit, an operator, a Unicode letter: mathematics, not a remark
+    }
+  }
+  if (words.back().empty()) words.pop_back();
+  const bool unknown_word = std::any_of(words.begin(), words.end(), [&](const std::string& w) {
+    return w.size() >= 3 && !is_known(w);
+  });
+  if (words.size() < 2 || !unknown_word) return typed;
+  return trim(t.substr(0, open));
+}
+
 std::string without_output_label(const std::string& s) {
   const std::string t = trim(s);
   if (t.compare(0, 4, "Out[") != 0) return s;

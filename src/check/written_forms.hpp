@@ -16,6 +16,7 @@
 ///   "x = 0.5, y = 1, z = 1.5", "ω₁ = 2 rad/s, ω₂ = 0, ω₃ = 9.7 rad/s", "I1 = .., I2 = .., I3 =
 ///   ..". The labels differ in their last letter or digit only, x y z or 1 2 3 (in any order: the
 ///   components are put in theirs).
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -42,6 +43,16 @@ std::optional<std::string> labelled_components(const std::string& text, const st
 /// space, a tab or a ';' (MATLAB's and LaTeX's: "I0 = 7.2e-4; % kg m^2"; "50%" keeps its sign).
 /// No answer wobble reads has either.
 std::string without_comments(const std::string& typed);
+
+/// `typed` without a remark in words after it, in brackets: "303.6 days" for "303.6 days (Euler's
+/// period)", "0.00072 kg m^2" for "0.00072 kg m^2 (about the centre)". A remark is the text's
+/// last bracket, after a space, of two words or more in ASCII letters (an apostrophe, a hyphen
+/// or a comma between), one of them of three letters or more that `is_known` denies (the
+/// problem's symbols, units, functions and Greek letters' names are known): "2 (m R)" stays a
+/// product and "2 (I omega)" an error to report, never a remark dropped. `typed` itself
+/// otherwise.
+std::string without_remark(const std::string& typed,
+                           const std::function<bool(const std::string&)>& is_known);
 
 /// The text after a program's label of its result: "0.00072" for "Out[3]= 0.00072",
 /// "Out[3]//N= 0.00072" or "Out[3]: 0.00072"; `typed` itself when it has no such label.

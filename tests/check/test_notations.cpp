@@ -523,3 +523,20 @@ TEST_CASE("a duration told in parts, 303 days 15 h, reads as their sum") {
   REQUIRE_THROWS_AS(earth.check("precession_period_body", fmt::format("{} days 15 kg", whole)),
                     InputError);
 }
+
+TEST_CASE("a remark in words in brackets after an answer is no part of it") {
+  const Fixture plate("flying-plate");
+  const std::string i0 = fmt::format("{:.6g}", plate.answer("I0").value.data[0]);  // kg m^2
+  for (const std::string& same :
+       std::vector<std::string>{i0 + " kg m² (about the centre)", "m R^2/4 (thin disc)",
+                                i0 + " (Euler's moment, approx)"}) {
+    INFO(same);
+    REQUIRE(plate.check("I0", same).correct);
+  }
+  REQUIRE_FALSE(plate.check("I0", "m R^2/2 (thin disc)").correct);
+  // Brackets of symbols, units or Greek letters' names are mathematics, read as before: a
+  // product, a unit, or an error that names the unknown symbol.
+  REQUIRE_FALSE(plate.check("I0", "m R^2/4 (m R)").correct);
+  REQUIRE(plate.check("I0", i0 + " (kg m^2)").correct);
+  REQUIRE_THROWS_WITH(plate.check("I0", "0.5 (I theta)"), Catch::Contains("undefined symbol"));
+}
