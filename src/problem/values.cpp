@@ -220,11 +220,32 @@ Assignment assignment_of(const Problem& problem, const std::string& text) {
   return {parameter, value};
 }
 
+namespace {
+// assignment_of the k-th --set, where a word without '=' after another --set is most likely the
+// rest of that one's value, which the shell split off at a space: "--set omega=10 rpm".
+Assignment assignment_in(const Problem& problem, const std::vector<std::string>& assignments,
+                         std::size_t k) {
+  const std::string& text = assignments[k];
+  if (k > 0 && text.find('=') == std::string::npos && !trim(text).empty() &&
+      text.size() <= kMaxSetLength && assignments[k - 1].find('=') != std::string::npos) {
+    const std::string whole = assignments[k - 1] + " " + text;
+    throw InputError("--set: expected NAME=VALUE, got '" + text + "' (the rest of '" +
+                     assignments[k - 1] + "', split at its space? quote it: --set '" + whole +
+                     "')");
+  }
+  return assignment_of(problem, text);
+}
+}  // namespace
+
 sym::Values parameter_values(const Problem& problem, const std::vector<std::string>& assignments) {
   sym::Values values;
   for (const auto& p : problem.parameters) values[p.name] = p.default_value;
-  for (const auto& text : assignments) {
-    const Assignment a = assignment_of(problem, text);
+  // Every assignment's shape before any value: a word the shell split off ("--set omega=10
+  // rpm") is named as such, not the value it left behind.
+  std::vector<Assignment> each;
+  for (std::size_t k = 0; k < assignments.size(); ++k)
+    each.push_back(assignment_in(problem, assignments, k));
+  for (const Assignment& a : each) {
     values[a.parameter.name] =
         parse_parameter_value(a.parameter, a.value, "--set " + a.parameter.name);
   }
@@ -233,8 +254,8 @@ sym::Values parameter_values(const Problem& problem, const std::vector<std::stri
 
 void require_each_set_once(const Problem& problem, const std::vector<std::string>& assignments) {
   std::map<std::string, std::string> seen;
-  for (const auto& text : assignments) {
-    const Assignment a = assignment_of(problem, text);  // "θ0" is theta0
+  for (std::size_t k = 0; k < assignments.size(); ++k) {
+    const Assignment a = assignment_in(problem, assignments, k);  // "θ0" is theta0
     const auto [it, fresh] = seen.emplace(a.parameter.name, a.value);
     if (!fresh) {
       throw InputError("--set " + a.parameter.name + ": given twice ('" + it->second + "' and '" +

@@ -134,4 +134,9 @@ TEST_CASE("set assignments NAME=VALUE") {
   REQUIRE_THROWS_WITH(parameter_values(p, {"q=1"}), Catch::Contains("unknown parameter 'q'") &&
                                                         Catch::Contains("known: m, alpha"));
   REQUIRE_THROWS_WITH(parameter_values(p, {"m"}), Catch::Contains("expected NAME=VALUE"));
+  // A word after an assignment is the rest of its value, split off by the shell.
+  REQUIRE_THROWS_WITH(parameter_values(p, {"alpha=45", "deg"}),
+                      Catch::Contains("quote it: --set 'alpha=45 deg'"));
+  REQUIRE_THROWS_WITH(require_each_set_once(p, {"alpha=45", "deg"}),
+                      Catch::Contains("quote it: --set 'alpha=45 deg'"));
 }
