@@ -110,21 +110,67 @@ int check_submission(const CheckOptions& opt, const check::Options& o) {
   }
   return result.all_correct() ? kExitOk : kExitDifference;
 }
+// Whether `word` is one of the problem's part ids or answer names.
+bool names_part_or_answer(const Problem& problem, const std::string& word) {
+  for (const auto& part : problem.parts) {
+    if (part.id == word) return true;
+    for (const auto& answer : part.answers) {
+      if (answer.name == word) return true;
+    }
+  }
+  return false;
+}
+
 // The part and the answer typed. "wobble check P --name N ANSWER": --name lets the part go,
 // so the one word after the problem is the answer unless it names a part or an answer.
 std::pair<std::string, std::string> part_and_answer(const CheckOptions& opt,
                                                     const Problem& problem) {
   const std::string& typed = opt.answer_after_part.empty() ? opt.answer : opt.answer_after_part;
-  if (opt.name.empty() || opt.part.empty() || !typed.empty()) return {opt.part, typed};
-  for (const auto& part : problem.parts) {
-    if (part.id == opt.part) return {opt.part, typed};
-    for (const auto& answer : part.answers) {
-      if (answer.name == opt.part) return {opt.part, typed};
-    }
+  if (opt.name.empty() || opt.part.empty() || !typed.empty() ||
+      names_part_or_answer(problem, opt.part)) {
+    return {opt.part, typed};
   }
   return {"", opt.part};
 }
 }  // namespace
+
+std::string answer_quoted(const std::vector<std::string>& args, const CheckOptions& opt) {
+  // The answer's first word: --answer's value, else (with --name) the word in the part's place
+  // where it names no part or answer, else the word after the part.
+  std::string first = !opt.answer.empty() ? opt.answer : opt.answer_after_part;
+  if (opt.answer.empty() && !opt.name.empty() && !opt.part.empty()) {
+    try {
+      if (!names_part_or_answer(find_problem(opt.problem), opt.part)) first = opt.part;
+    } catch (const InputError&) {
+      return "";
+    }
+  }
+  if (first.empty() || first.find('\'') != std::string::npos) return "";
+  std::size_t at = args.size();
+  for (std::size_t i = args.size(); i-- > 1;) {
+    if (args[i] == first || args[i] == "--answer=" + first) {
+      at = i;
+      break;
+    }
+  }
+  if (at == args.size()) return "";
+  std::size_t end = at + 1;
+  while (end < args.size() && !args[end].empty() && args[end][0] != '-') ++end;
+  if (end == at + 1) return "";
+  std::string answer = first;
+  for (std::size_t i = at + 1; i < end; ++i) answer += " " + args[i];
+  std::string line = "wobble";
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const bool plain = args[i].find_first_of(" '\"*?$&|;<>()[]{}\\") == std::string::npos;
+    if (i == at) {
+      line += (args[i].compare(0, 9, "--answer=") == 0 ? " --answer='" : " '") + answer + "'";
+      i = end - 1;
+    } else {
+      line += plain ? " " + args[i] : " '" + args[i] + "'";
+    }
+  }
+  return line;
+}
 
 int run_check(const CheckOptions& opt) {
   const check::Options o = judge_options(opt.tolerance, opt.sigfigs);

@@ -92,6 +92,10 @@ check::Options judge_options(std::optional<double> tolerance, std::optional<int>
 /// A text file a user names with `option`, refused if missing, not a regular file or over 1 MB.
 std::string read_text_file(const std::string& path, const std::string& option);
 int run_check(const CheckOptions& opt);  ///< 0 right, 1 wrong
+/// "wobble check P I0 '0.00072 kg m^2'", the command line to type where the shell split the
+/// answer into words that the command line then refused (`args` as typed, `opt` as far as it
+/// was parsed); "" where no answer's words can be told.
+std::string answer_quoted(const std::vector<std::string>& args, const CheckOptions& opt);
 
 struct WorksheetOptions {
   std::string problem;

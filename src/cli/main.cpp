@@ -31,6 +31,16 @@ std::string conversion_message(const std::string& what) {
 }
 }  // namespace
 
+namespace {
+// Where the shell split an answer at its spaces ("wobble check ID I0 0.00072 kg m^2"), what to
+// say, with the line to type instead.
+std::string split_answer_message(const std::string& quoted) {
+  return "the answer reached wobble as several words (the shell splits at spaces); put it in "
+         "quotes: " +
+         quoted;
+}
+}  // namespace
+
 int main(int argc, char** argv) {
   // Past a file-size limit (or on a full disk) a write should fail and be reported, with the
   // temporary removed and the old file kept (io/atomic_write), not kill the process.
@@ -107,13 +117,21 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ExtrasError& e) {
     // "wobble check ID I0 -m*R^2/4": CLI11 takes a word that starts with '-' and a letter for
-    // options, so a negative expression needs the "--" that ends them.
+    // options, so a negative expression needs the "--" that ends them ("--frob" is an option).
     const std::string what = e.what();
-    const bool negative_answer = check->parsed() && what.find(": -") != std::string::npos;
-    fmt::print(stderr, "wobble: {}{}\n", what,
-               negative_answer ? "; an answer that starts with '-' goes after -- (wobble check "
-                                 "ID NAME -- -m*R^2/4) or as --answer=-m*R^2/4"
-                               : "");
+    const bool negative_answer = check->parsed() && what.find(": -") != std::string::npos &&
+                                 what.find(": --") == std::string::npos;
+    // "wobble check ID I0 0.00072 kg m^2": the shell split the answer at its spaces.
+    const std::string quoted =
+        check->parsed() && !negative_answer ? answer_quoted({argv, argv + argc}, check_opt) : "";
+    if (!quoted.empty()) {
+      fmt::print(stderr, "wobble: check: {}\n", split_answer_message(quoted));
+    } else {
+      fmt::print(stderr, "wobble: {}{}\n", what,
+                 negative_answer ? "; an answer that starts with '-' goes after -- (wobble check "
+                                   "ID NAME -- -m*R^2/4) or as --answer=-m*R^2/4"
+                                 : "");
+    }
     return kExitBadInput;
   } catch (const CLI::ConversionError& e) {
     fmt::print(stderr, "wobble: {}\n", conversion_message(e.what()));
@@ -127,7 +145,15 @@ int main(int argc, char** argv) {
     }
     return kExitBadInput;
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "wobble: {}\n", e.what());
+    // "--answer 0.00072 kg m^2": the answer's second word in the answer's place.
+    const bool excludes =
+        check->parsed() && std::string_view(e.what()).find("excludes") != std::string_view::npos;
+    const std::string quoted = excludes ? answer_quoted({argv, argv + argc}, check_opt) : "";
+    if (!quoted.empty()) {
+      fmt::print(stderr, "wobble: check: {}\n", split_answer_message(quoted));
+    } else {
+      fmt::print(stderr, "wobble: {}\n", e.what());
+    }
     return kExitBadInput;
   }
 
