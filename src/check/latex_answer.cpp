@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "check/latex_vocabulary.hpp"
+#include "check/siunitx.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -881,7 +882,7 @@ std::string latex_as_text(const std::string& latex, const sym::SymbolTable& tabl
     if (code >= 0x80 || code < 0x20 || code == 0x7f)
       throw InputError(field + ": cannot read " + character_name(s, i) + " in LaTeX");
   }
-  return Reader(leibniz_as_dots(s), table, field).read();
+  return Reader(leibniz_as_dots(siunitx_as_latex(s, field)), table, field).read();
 }
 
 std::string latex_assignment_as_text(const std::string& text, const sym::SymbolTable& table) {

@@ -21,6 +21,7 @@
 ///   "15^\circ"); after each entry of a vector or matrix, ^\circ after a number or a unit in
 ///   \mathrm{..} or \text{..} ("(0.5\,\mathrm{rad/s}, 0)", "\dot\psi\,\mathrm{rad/s}" in a
 ///   pmatrix cell); and 7.2 \times 10^{-4};
+/// - siunitx's \SI \qty \num \si \unit \ang (siunitx.hpp);
 /// - the delimiters $..$, $$..$$, \(..\), \[..\] around it all.
 /// Anything else (\pm, an unknown command, an & outside a matrix) is refused in one line naming it.
 #include <string>

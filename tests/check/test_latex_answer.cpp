@@ -3,6 +3,7 @@
 // correct is tested over the whole catalog in render/test_read_back.cpp.)
 #include <catch2/catch.hpp>
 #include <string>
+#include <vector>
 
 #include "check/check_fixture.hpp"
 #include "check/latex_answer.hpp"
@@ -147,4 +148,29 @@ TEST_CASE("what LaTeX reading refuses, it names in one line") {
   std::string roots;
   for (int k = 0; k < 14000; ++k) roots += "\\sqrt";
   REQUIRE_THAT(refused(roots + "m"), Catch::Contains("nested deeper than"));
+}
+
+TEST_CASE("siunitx's quantities read as the number with its unit") {
+  const Fixture plate("flying-plate");  // I0 = 0.00072 kg m^2, alpha = 15 deg
+  for (const std::string& same :
+       std::vector<std::string>{"\\SI{7.2e-4}{\\kilo\\gram\\metre\\squared}",
+                                "\\qty{7.2e-4}{\\kilo\\gram\\square\\metre}",
+                                "\\SI{7.2x10^-4}{kg.m^2}", "\\num{7.2 x 10^{-4}}\\,\\si{kg.m^2}",
+                                "\\num{7.2d-4}", "\\SI{7200}{\\gram\\centi\\metre\\tothe{2}}"}) {
+    INFO(same);
+    REQUIRE(plate.check("I0", same).correct);
+  }
+  REQUIRE_FALSE(plate.check("I0", "\\SI{720}{\\gram\\centi\\metre\\squared}").correct);  // a tenth
+  const auto wrong_dimension =
+      plate.check("I0", "\\SI{7.2e-4}{\\kilo\\gram\\metre\\squared\\per\\second}");
+  REQUIRE_FALSE(wrong_dimension.correct);
+  REQUIRE_THAT(wrong_dimension.line, Catch::Contains("wrong dimension"));
+  // Degrees, minutes and seconds of arc, below 60 each.
+  REQUIRE(plate.check("angle_omega_e3", "\\ang{14;59;59.9}").correct);
+  REQUIRE(plate.check("angle_omega_e3", "\\qty{15}{\\degree}").correct);
+  REQUIRE_THROWS_WITH(plate.check("angle_omega_e3", "\\ang{14;75}"), Catch::Contains("carry the"));
+  // What is not read is named.
+  REQUIRE_THROWS_WITH(plate.check("I0", "\\SI{7.2e-4}{\\foo}"),
+                      Catch::Contains("\\foo in a siunitx unit"));
+  REQUIRE_THROWS_WITH(plate.check("I0", "\\SI{7.2e-4}"), Catch::Contains("\\SI without its {..}"));
 }

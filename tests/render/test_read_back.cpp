@@ -449,6 +449,26 @@ TEST_CASE("every vector answer as components along unit vectors reads back, ever
   REQUIRE(wrong == right);
 }
 
+TEST_CASE("every number with its unit in siunitx's LaTeX reads back, every answer") {
+  // \qty{0.00072}{kg.m^2}, \SI{..}{..}, \num{..}: how a student who writes LaTeX sets a
+  // quantity. The unit as text, its spaces as siunitx's dots.
+  const auto siunitx = [](const Answer& a, double factor) {
+    std::vector<std::string> texts;
+    // A zero doubled is zero: no wrong twin, so no right one either.
+    if (a.value.shape != Value::Shape::scalar || a.value.data[0] == 0.0) return texts;
+    const std::string n = format_number(a.value.data[0] * factor);
+    if (a.unit.empty()) return std::vector<std::string>{"\\num{" + n + "}"};
+    std::string dotted = a.unit;
+    std::replace(dotted.begin(), dotted.end(), ' ', '.');
+    return std::vector<std::string>{"\\qty{" + n + "}{" + dotted + "}",
+                                    "\\SI[per-mode=symbol]{" + n + "}{" + a.unit + "}"};
+  };
+  const int right = forms_judged([&](const Answer& a) { return siunitx(a, 1.0); });
+  const int wrong = forms_judged([&](const Answer& a) { return siunitx(a, 2.0); }, false);
+  REQUIRE(right > 60);  // the catalog's scalar answers, one or two forms each
+  REQUIRE(wrong == right);
+}
+
 TEST_CASE("every answer the worksheet reveals reads back as correct, every problem") {
   int revealed = 0;
   for (const auto& p : load_catalog()) {
