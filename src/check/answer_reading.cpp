@@ -13,6 +13,7 @@
 #include "check/basis_vectors.hpp"
 #include "check/brackets.hpp"
 #include "check/latex_answer.hpp"
+#include "check/rotations.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
@@ -1156,7 +1157,9 @@ ReadAnswer read_transposed(const std::string& typed, const sym::SymbolTable& tab
 ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& table,
                            const std::string& field) {
   // "0.5 1 1.5", or lines of numbers as MATLAB shows a matrix: a vector or a matrix.
-  const std::string answer = number_rows(typed).value_or(without_closing_punctuation(typed));
+  std::string answer = number_rows(typed).value_or(without_closing_punctuation(typed));
+  // "Rz(φ) Ry(θ) Rz(ψ)": turns about the axes, multiplied out.
+  if (const auto turns = rotations_multiplied(answer, field)) answer = *turns;
   // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
   const std::string source =
       looks_like_latex(answer) ? latex_as_text(answer, table, field) : answer;

@@ -540,3 +540,27 @@ TEST_CASE("a remark in words in brackets after an answer is no part of it") {
   REQUIRE(plate.check("I0", i0 + " (kg m^2)").correct);
   REQUIRE_THROWS_WITH(plate.check("I0", "0.5 (I theta)"), Catch::Contains("undefined symbol"));
 }
+
+TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied out") {
+  // The key derives R = Rz(φ) Ry(θ) Rz(ψ); a student may answer with that product. Its entries,
+  // multiplied out here from the turns' own matrices, are judged against the key's R, which the
+  // solver builds another way: two derivations that must agree.
+  const Fixture euler("euler-angles");  // φ, θ, ψ = 40°, 30°, 70°
+  for (const char* same : {"Rz(φ) Ry(θ) Rz(ψ)", "R_z(phi)*R_y(theta)*R_z(psi)", "Rz(φ)·Ry(θ)·Rz(ψ)",
+                           "Rz(40°) Ry(30°) Rz(70 deg)"}) {
+    INFO(same);
+    REQUIRE(euler.check("R_zyz", same).correct);
+  }
+  // The PHY 711 matrix is its transpose, or the inverse turns in reverse order.
+  for (const char* same : {"(Rz(φ) Ry(θ) Rz(ψ))ᵀ", "Rz(-ψ) Ry(-θ) Rz(-φ)"}) {
+    INFO(same);
+    REQUIRE(euler.check("R_phy711", same).correct);
+  }
+  // Order and axes matter: the turns reversed, x for y, and a degree off are wrong.
+  for (const char* wrong : {"Rz(ψ) Ry(θ) Rz(φ)", "Rz(φ) Rx(θ) Rz(ψ)", "Rz(41°) Ry(30°) Rz(70°)"}) {
+    INFO(wrong);
+    REQUIRE_FALSE(euler.check("R_zyz", wrong).correct);
+  }
+  REQUIRE_THROWS_WITH(euler.check("R_zyz", "Rz(φ) Ry(θ) Rz(ψ) Rx(φ) Ry(θ)"),
+                      Catch::Contains("5 turns in a product; at most 4"));
+}

@@ -915,10 +915,16 @@ TEST_CASE("hostile answers are answered within seconds and bounded memory (check
   for (int k = 0; k < 20000; ++k) styled += "𝑚";
   for (int k = 0; k < 10000; ++k) calls += "cos (m)+";
   for (int k = 0; k < 4000; ++k) basis += "+m e₂+\\hat{e}_{3}";
+  // Four turns about the axes, each angle as long as one may be: multiplied out, every entry
+  // repeats each angle up to 27 times.
+  std::string angle = "m";
+  while (angle.size() + 2 <= 200) angle += "+R";
+  const std::string turns =
+      "Rz(" + angle + ") Ry(" + angle + ") Rz(" + angle + ") Rx(" + angle + ")";
   std::string quantities;  // siunitx's, rewritten before the LaTeX is read
   for (int k = 0; k < 2500; ++k) quantities += "\\SI{1}{\\kilo\\gram\\metre\\squared}+";
   answers.insert(answers.end(),
-                 {numpy + "0", leibniz + "0", styled, calls + "0", basis, quantities + "0"});
+                 {numpy + "0", leibniz + "0", styled, calls + "0", basis, quantities + "0", turns});
   for (const std::string& answer : answers) {
     for (const std::string how : {"check", "worksheet"}) {
       const std::string command =
