@@ -86,7 +86,12 @@ std::string number(const std::string& n) {
       ++i;
       continue;
     }
-    if (c == '^') {  // "10^-4": the power's sign and digits in one group, as LaTeX wants them
+    if (c == '\\') {  // "\times", "\cdot": a command as it stands, its letters no exponent's d
+      std::size_t end = i + 1;
+      while (end < n.size() && std::isalpha(static_cast<unsigned char>(n[end]))) ++end;
+      out += n.substr(i, end - i) + " ";
+      i = end - 1;
+    } else if (c == '^') {  // "10^-4": the power's sign and digits in one group, as LaTeX wants
       const bool braced = i + 1 < n.size() && n[i + 1] == '{';
       const std::size_t from = i + 1 + (braced ? 1 : 0);
       std::size_t end = from;

@@ -152,11 +152,11 @@ TEST_CASE("what LaTeX reading refuses, it names in one line") {
 
 TEST_CASE("siunitx's quantities read as the number with its unit") {
   const Fixture plate("flying-plate");  // I0 = 0.00072 kg m^2, alpha = 15 deg
-  for (const std::string& same :
-       std::vector<std::string>{"\\SI{7.2e-4}{\\kilo\\gram\\metre\\squared}",
-                                "\\qty{7.2e-4}{\\kilo\\gram\\square\\metre}",
-                                "\\SI{7.2x10^-4}{kg.m^2}", "\\num{7.2 x 10^{-4}}\\,\\si{kg.m^2}",
-                                "\\num{7.2d-4}", "\\SI{7200}{\\gram\\centi\\metre\\tothe{2}}"}) {
+  for (const std::string& same : std::vector<std::string>{
+           "\\SI{7.2e-4}{\\kilo\\gram\\metre\\squared}",
+           "\\qty{7.2e-4}{\\kilo\\gram\\square\\metre}", "\\SI{7.2x10^-4}{kg.m^2}",
+           "\\num{7.2 x 10^{-4}}\\,\\si{kg.m^2}", "\\num{7.2d-4}", "\\num{7.2 \\cdot 10^{-4}}",
+           "\\SI{7200}{\\gram\\centi\\metre\\tothe{2}}"}) {
     INFO(same);
     REQUIRE(plate.check("I0", same).correct);
   }
