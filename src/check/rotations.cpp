@@ -73,7 +73,7 @@ std::optional<std::string> rotations_multiplied(const std::string& typed,
   std::vector<std::pair<char, std::string>> turns;
   for (std::size_t i = 0; i < s.size();) {
     bool joined = false;  // spaces or a product's sign between factors
-    for (const std::string_view sep : {" ", "*", "·", "⋅"}) {
+    for (const std::string_view sep : {" ", "*", "·", "⋅", "\\cdot", "\\,", "\\;"}) {
       if (s.compare(i, sep.size(), sep) == 0) {
         i += sep.size();
         joined = true;

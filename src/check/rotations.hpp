@@ -22,7 +22,8 @@ inline constexpr int kMostTurns = 4;
 inline constexpr std::size_t kLongestTurnAngle = 200;
 
 /// The matrix a product of turns makes, as text; nullopt if `typed` is no such product (one
-/// factor or more, nothing else but spaces and '*', '·' or '⋅' between them, and one pair of
+/// factor or more, nothing else but spaces and '*', '·', '⋅', or LaTeX's \cdot, \, or \;
+/// between them, and one pair of
 /// brackets around it all).
 /// @throws InputError naming `field` for a product of more than kMostTurns turns, or a turn's
 ///   angle longer than kLongestTurnAngle.

@@ -546,8 +546,9 @@ TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied ou
   // multiplied out here from the turns' own matrices, are judged against the key's R, which the
   // solver builds another way: two derivations that must agree.
   const Fixture euler("euler-angles");  // φ, θ, ψ = 40°, 30°, 70°
-  for (const char* same : {"Rz(φ) Ry(θ) Rz(ψ)", "R_z(phi)*R_y(theta)*R_z(psi)", "Rz(φ)·Ry(θ)·Rz(ψ)",
-                           "Rz(40°) Ry(30°) Rz(70 deg)"}) {
+  for (const char* same :
+       {"Rz(φ) Ry(θ) Rz(ψ)", "R_z(phi)*R_y(theta)*R_z(psi)", "Rz(φ)·Ry(θ)·Rz(ψ)",
+        "Rz(40°) Ry(30°) Rz(70 deg)", "R_z(\\phi) \\cdot R_y(\\theta) \\cdot R_z(\\psi)"}) {
     INFO(same);
     REQUIRE(euler.check("R_zyz", same).correct);
   }
