@@ -1003,11 +1003,20 @@ std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable&
 namespace {
 // `typed` with each unit vector as a marker "@0", "@1" or "@2" (x, y, z), spaced apart.
 std::string unit_vectors_marked(const std::string& typed, const sym::SymbolTable& table) {
-  std::string s = typed;
-  for (const auto& [hatted, axis] : kHattedUnitVectors) {
-    const std::string marker = " @" + std::to_string(axis) + " ";
-    for (auto at = s.find(hatted); at != std::string::npos; at = s.find(hatted, at))
-      s.replace(at, hatted.size(), marker);
+  // One pass, the first of the list that matches at each place (the primed before their
+  // unprimed prefixes): replacing each in turn moved the text's tail once per unit vector,
+  // quadratic in a sum of thousands.
+  std::string s;
+  for (std::size_t at = 0; at < typed.size();) {
+    const auto hatted = std::find_if(
+        kHattedUnitVectors.begin(), kHattedUnitVectors.end(),
+        [&](const auto& h) { return typed.compare(at, h.first.size(), h.first) == 0; });
+    if (hatted == kHattedUnitVectors.end()) {
+      s += typed[at++];
+    } else {
+      s += " @" + std::to_string(hatted->second) + " ";
+      at += hatted->first.size();
+    }
   }
   s = unit_vectors_unglued(s, table);
   std::string out;
