@@ -936,22 +936,31 @@ namespace {
 // (0, 1, 2: x, y, z), and the body's e₁, e₂, e₃ and the primed e₁′, e₂′, e₃′ as
 // basis_vectors_spelled writes them (3 to 5, 6 to 8: other bases, which a sum may not mix). The
 // primed first, so that "ê₁′" is not found as "ê₁".
-constexpr std::array<std::pair<std::string_view, int>, 16> kHattedUnitVectors{{{"ê₁′", 6},
-                                                                               {"ê₂′", 7},
-                                                                               {"ê₃′", 8},
-                                                                               {"i\u0302", 0},
-                                                                               {"x\u0302", 0},
-                                                                               {"î", 0},
-                                                                               {"j\u0302", 1},
-                                                                               {"y\u0302", 1},
-                                                                               {"ĵ", 1},
-                                                                               {"ŷ", 1},
-                                                                               {"k\u0302", 2},
-                                                                               {"z\u0302", 2},
-                                                                               {"ẑ", 2},
-                                                                               {"ê₁", 3},
-                                                                               {"ê₂", 4},
-                                                                               {"ê₃", 5}}};
+constexpr std::array<std::pair<std::string_view, int>, 16> kHattedUnitVectors{
+    {{kBodyUnitVectors[3], 6},
+     {kBodyUnitVectors[4], 7},
+     {kBodyUnitVectors[5], 8},
+     {"i\u0302", 0},
+     {"x\u0302", 0},
+     {"î", 0},
+     {"j\u0302", 1},
+     {"y\u0302", 1},
+     {"ĵ", 1},
+     {"ŷ", 1},
+     {"k\u0302", 2},
+     {"z\u0302", 2},
+     {"ẑ", 2},
+     {kBodyUnitVectors[0], 3},
+     {kBodyUnitVectors[1], 4},
+     {kBodyUnitVectors[2], 5}}};
+
+// The unit vector written with a hat at `typed[at]`, the first of the list that matches there (the
+// primed before their unprimed prefixes); end() if none.
+auto hatted_at(const std::string& typed, std::size_t at) {
+  return std::find_if(kHattedUnitVectors.begin(), kHattedUnitVectors.end(), [&](const auto& h) {
+    return typed.compare(at, h.first.size(), h.first) == 0;
+  });
+}
 
 // "0.5i + 1.5k" -> "0.5 i + 1.5 k": i, j or k glued to the number before it, where the problem
 // has no such symbol, set apart (a number swallows the letters after it when names are found).
@@ -978,12 +987,13 @@ std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable&
   const auto add = [&](std::size_t at, const std::string& name) {
     if (!first.count(name) || at < first[name]) first[name] = at;
   };
-  for (const auto& [hatted, axis] : kHattedUnitVectors) {
-    for (auto at = typed.find(hatted); at != std::string::npos; at = typed.find(hatted, at + 1)) {
-      // "ê₁" as the start of "ê₁′" is that one, the primed.
-      if (axis >= 3 && axis < 6 && typed.compare(at + hatted.size(), 3, "′") == 0) continue;
-      add(at, std::string(hatted));
-      break;
+  for (std::size_t at = 0; at < typed.size();) {
+    const auto hatted = hatted_at(typed, at);
+    if (hatted == kHattedUnitVectors.end()) {
+      ++at;
+    } else {
+      add(at, std::string(hatted->first));
+      at += hatted->first.size();
     }
   }
   const std::string unglued = unit_vectors_unglued(typed, table);
@@ -1003,14 +1013,11 @@ std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable&
 namespace {
 // `typed` with each unit vector as a marker "@0", "@1" or "@2" (x, y, z), spaced apart.
 std::string unit_vectors_marked(const std::string& typed, const sym::SymbolTable& table) {
-  // One pass, the first of the list that matches at each place (the primed before their
-  // unprimed prefixes): replacing each in turn moved the text's tail once per unit vector,
-  // quadratic in a sum of thousands.
+  // One pass: replacing each in turn moved the text's tail once per unit vector, quadratic in a
+  // sum of thousands.
   std::string s;
   for (std::size_t at = 0; at < typed.size();) {
-    const auto hatted = std::find_if(
-        kHattedUnitVectors.begin(), kHattedUnitVectors.end(),
-        [&](const auto& h) { return typed.compare(at, h.first.size(), h.first) == 0; });
+    const auto hatted = hatted_at(typed, at);
     if (hatted == kHattedUnitVectors.end()) {
       s += typed[at++];
     } else {
