@@ -63,9 +63,26 @@ std::string misreading_hint(const Answer& a, const std::string& typed,
   return ungrouped.empty() ? "" : fmt::format(" (digits grouped? write {})", ungrouped);
 }
 
+// What a name the textbook formulas use but the problem has no symbol for stands for: "a
+// principal moment" for I3 in "(I3 - I1)/I1 ω cos α", or "" for any other name. Such a formula
+// is the general one, not yet this body's; the name is no symbol, and the line says what to do.
+std::string textbook_name_words(const std::string& name) {
+  std::string plain;
+  for (char c : name)
+    if (c != '_') plain += c;
+  if (plain.size() < 2 || !std::isdigit(static_cast<unsigned char>(plain.back())) ||
+      plain.back() < '1' || plain.back() > '3')
+    return "";
+  const std::string letters = plain.substr(0, plain.size() - 1);
+  if (letters == "I") return "a principal moment of the body";
+  if (letters == "omega" || letters == "w") return "a component of ω along the body's axes";
+  return "";
+}
+
 // " (I0 is the answer to part (a): write it in the problem's symbols)" where `typed` names
 // another answer of the key ("I₀ diag(1, 1, 2)", as question (a) writes I), or "". An answer
-// is no symbol: reading it as its key's value would let a name stand in for the working.
+// is no symbol: reading it as its key's value would let a name stand in for the working. A
+// principal moment or a component of ω where the problem has no such symbol is named as such.
 std::string answer_name_hint(const Context& ctx, const std::string& typed) {
   const std::string ascii = sym::to_ascii(typed);
   for (std::size_t i = 0; i < ascii.size();) {
@@ -89,6 +106,10 @@ std::string answer_name_hint(const Context& ctx, const std::string& typed) {
         }
       }
     }
+    const std::string words = textbook_name_words(name);
+    if (!words.empty())
+      return fmt::format(" ({}, {}, is no symbol here: write it in the problem's symbols)", name,
+                         words);
   }
   return "";
 }

@@ -497,6 +497,23 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
   REQUIRE_THROWS_WITH(plate.check("I0", "M R^2/4"), !Catch::Contains("is the answer to"));
 }
 
+TEST_CASE("a textbook formula's principal moment or ω component is named as such") {
+  // (I3 - I1)/I1 ω3 is the general rate, before this body's moments are put in.
+  const Fixture plate("flying-plate");
+  REQUIRE_THROWS_WITH(plate.check("Omega_body_rate", "(I₃ - I₁)/I₁ ω cos α"),
+                      Catch::Contains("I3, a principal moment of the body, is no symbol here"));
+  REQUIRE_THROWS_WITH(plate.check("Omega_body_rate", "ω_3 (m R^2/2 - m R^2/4)/(m R^2/4)"),
+                      Catch::Contains("omega_3, a component of ω along the body's axes"));
+  const Fixture top("heavy-top");
+  REQUIRE_THROWS_WITH(top.check("p_psi", "I_3 psidot0"),
+                      Catch::Contains("I_3, a principal moment of the body"));
+  // Where such a name is the problem's own symbol, it reads (the asymmetric top's w1).
+  const Fixture asym("asymmetric-top");
+  REQUIRE(asym.check("energy", "(I₁ω₁² + I₂ω₂² + I₃ω₃²)/2").correct);
+  REQUIRE_THROWS_WITH(top.check("p_psi", "I4 psidot0"), !Catch::Contains("principal moment"));
+  REQUIRE_THROWS_WITH(plate.check("I0", "M R^2/4"), !Catch::Contains("principal moment"));
+}
+
 TEST_CASE("a duration told in parts, 303 days 15 h, reads as their sum") {
   const Fixture earth("earth-free-precession");  // Euler's period, 303.62 days
   const double days = earth.answer("precession_period_body").value.data[0] / 86400;
