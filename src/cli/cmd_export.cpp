@@ -22,11 +22,13 @@ namespace {
 namespace fs = std::filesystem;
 
 void add_common(CLI::App& sub, ExportOptions& opt, bool several) {
-  auto* problems = sub.add_option("problem", opt.problems,
-                                  several ? "Problem ids (see `wobble list`) or .toml files"
-                                          : "Problem id (see `wobble list`) or a .toml file")
-                       ->required();
-  if (!several) problems->expected(1);
+  // One problem where the system takes one is checked after parsing (single_problem): with
+  // CLI11's expected(1), "-o quiz.xml" would leave quiz.xml as a second problem, and the message
+  // ("At Most 1 required but received 2") would hide the unknown option.
+  sub.add_option("problem", opt.problems,
+                 several ? "Problem ids (see `wobble list`) or .toml files"
+                         : "Problem id (see `wobble list`) or a .toml file")
+      ->required();
   sub.add_flag("--force", opt.force, "Replace files that exist");
   sub.add_option("--tolerance", opt.tolerance,
                  "Relative tolerance of every answer (default: the problem's, else 0.01)");

@@ -138,8 +138,13 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   } catch (const CLI::RequiredError& e) {
     // "wobble" alone: CLI11 would say "A subcommand is required".
+    // CLI11 checks what is required before what is unknown: "export moodle ID -o quiz.xml"
+    // would say "--out is required" and not name the -o typed for it.
+    const std::vector<std::string> unknown = app.remaining(/*recurse=*/true);
     if (argc == 1) {
       fmt::print(stderr, "wobble: name a command ({}; see --help)\n", kCommandList);
+    } else if (!unknown.empty()) {
+      fmt::print(stderr, "wobble: {}\n", CLI::ExtrasError(unknown).what());
     } else {
       fmt::print(stderr, "wobble: {}\n", e.what());
     }

@@ -225,6 +225,12 @@ std::vector<Mistake> mistakes_to_make() {
                  [f](const Answer& a) { return scaled(a.value, f); },
                  fmt::format("factor {:g} is off", f)});
   }
+  // A unit converted the wrong way (g for kg) or a prefix dropped (cm as if m).
+  for (const double f : {1e3, 1e-2}) {
+    m.push_back({fmt::format("a power of ten: {:g} times", f),
+                 [](const Answer& a) { return nonzero(a) && a.kind != AnswerKind::principal_axes; },
+                 [f](const Answer& a) { return scaled(a.value, f); }, "a power of ten is off"});
+  }
   return m;
 }
 }  // namespace
@@ -650,6 +656,18 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
   angle.unit = "rad";
   angle.value = Value::scalar(0.5);
   CHECK_THAT(first(angle, {0.5 * 180 / M_PI}, "rad"), Catch::Contains("in degrees"));
+  // 720 g cm² for 7200 g cm²: a unit converted the wrong way.
+  CHECK_THAT(first(I, {0.2, -0.1, 0, -0.1, 0.2, 0, 0, 0, 0.3}, "kg m^2"),
+             Catch::Contains("1/10 of the answer: a power of ten is off") &&
+                 Catch::Contains("1 g cm² = 10⁻⁷ kg m²"));
+  CHECK_THAT(first(space_rate, {3e7}, "rad/s"),
+             Catch::Contains("10^7 times the answer: a power of ten is off (a prefix, or a "
+                             "unit converted the wrong way?)"));
+  CHECK_THAT(first(space_rate, {3e10}, "rad/s"), Catch::Contains("off by 1e+12%"));
+  CHECK_THAT(first(space_rate, {3e-9}, "rad/s"), Catch::Contains("1/10^9 of the answer"));
+  // One entry a power of ten off and the others right is no such mistake.
+  CHECK_THAT(first(key.parts[0].answers[1], {10.0, 0.0, 3.0}, "kg m^2/s"),
+             Catch::Contains("entry x is off by 900%"));
   REQUIRE(wobble::check::known_mistakes().size() == 8);
 }
 
