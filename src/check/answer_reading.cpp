@@ -987,16 +987,19 @@ std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable&
   const auto add = [&](std::size_t at, const std::string& name) {
     if (!first.count(name) || at < first[name]) first[name] = at;
   };
+  // The hatted ones blanked, so that the k of "k̂" (k and a combining hat) is not named again.
+  std::string blanked = typed;
   for (std::size_t at = 0; at < typed.size();) {
     const auto hatted = hatted_at(typed, at);
     if (hatted == kHattedUnitVectors.end()) {
       ++at;
     } else {
       add(at, std::string(hatted->first));
+      blanked.replace(at, hatted->first.size(), hatted->first.size(), ' ');
       at += hatted->first.size();
     }
   }
-  const std::string unglued = unit_vectors_unglued(typed, table);
+  const std::string unglued = unit_vectors_unglued(blanked, table);
   for (const auto& [start, length] : identifiers(unglued)) {
     const std::string name = unglued.substr(start, length);
     if ((name == "i" || name == "j" || name == "k") && !table.contains(name)) add(start, name);
@@ -1037,12 +1040,52 @@ std::string unit_vectors_marked(const std::string& typed, const sym::SymbolTable
   return out + s.substr(done);
 }
 
+// `text`, or what is inside the brackets around it, if it is a unit ("rad/s", "(rad/s)"); "" if
+// not. After a coefficient in the problem's symbols, one that names only symbols is a factor, as
+// after an expression elsewhere ("ω e₃ m" where m is the mass; "m R² ω e₃ kg m²/s" has a unit);
+// after a plain number, a unit ("0.0139 e₃ m").
+std::string unit_after_term(const std::string& text, const std::string& coefficient,
+                            const sym::SymbolTable& table) {
+  std::string unit = text;
+  if (unit.size() > 2 && unit.front() == '(' && unit.back() == ')')
+    unit = trim(unit.substr(1, unit.size() - 2));
+  if (unit.empty()) return "";
+  if (has_identifier_of(coefficient, table) && all_identifiers_of(unit, table)) return "";
+  try {
+    // "kg m²/s", "s⁻¹", "\mathrm{rad\,s^{-1}}" as the reader takes them; LaTeX reads a unit
+    // after a value only, so after a 1 here.
+    std::string plain = sym::to_ascii(unit);
+    if (looks_like_latex(unit)) {
+      plain = trim(latex_as_text("1\\," + unit, table, "unit"));
+      if (plain.empty() || plain[0] != '1') return "";
+      plain.erase(0, 1);
+    }
+    (void)parse_unit(trim(plain), "unit");
+    return unit;
+  } catch (const InputError&) {
+    return "";
+  }
+}
+
 // "0.5 i + j - 1.5 k", "(0.5 x̂ + 1.5 ẑ) m", "î/2 + (a/2) ĵ": a sum of terms, each a coefficient
-// times one unit vector, written as "[0.5, 1, -1.5]" (with the unit after). "" if `typed` is
-// no such sum (a unit vector inside a bracket or function, two in one term, one divided by).
+// times one unit vector, written as "[0.5, 1, -1.5]" (with the unit after). A unit after the
+// last term only is the whole sum's, as the bracketed form's ("2.59 î + 19.3 k̂ rad/s"); after
+// every term, each component's ("2.59 î rad/s + 19.3 k̂ rad/s"). "" if `typed` is no such sum (a
+// unit vector inside a bracket or function, two in one term, one divided by; a unit after
+// some terms but not all, or on a component told twice).
 std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& table) {
   if (typed.find('@') != std::string::npos) return "";  // the markers' own character
   std::string sum = trim(unit_vectors_marked(typed, table)), unit;
+  // LaTeX's "\left( .. \right)": brackets, their size aside.
+  for (const std::string_view sizing : {"\\left", "\\right"}) {
+    for (auto at = sum.find(sizing); at != std::string::npos; at = sum.find(sizing, at)) {
+      const std::size_t next = at + sizing.size();
+      if (next < sum.size() && std::string_view("()[]").find(sum[next]) != std::string_view::npos)
+        sum.erase(at, sizing.size());
+      else
+        at = next;
+    }
+  }
   if (!sum.empty() && sum[0] == '(') {  // "(..) m": the sum in brackets, a unit after
     std::size_t close = 0;
     for (int depth = 0; close < sum.size(); ++close) {
@@ -1050,12 +1093,18 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
       if (sum[close] == ')' && --depth == 0) break;
     }
     if (close >= sum.size()) return "";
-    unit = trim(sum.substr(close + 1));  // what it is, the reading of the vector says
-    sum = sum.substr(1, close - 1);
+    // Not "(m R² ω sin α/4) e₁ + ..": a first term's coefficient in brackets, the unit vectors
+    // after it.
+    const std::string after = sum.substr(close + 1);
+    if (after.find('@') == std::string::npos) {
+      unit = trim(after);  // what it is, the reading of the vector says
+      sum = sum.substr(1, close - 1);
+    }
   }
-  std::array<std::string, 3> components;
+  std::array<std::string, 3> components, component_units;
   int bases = 0;  // 1: the space basis's vectors, 2: the body's, 4: the primed
-  std::size_t term_start = 0;
+  std::size_t term_start = 0, terms = 0, terms_with_unit = 0;
+  bool last_has_unit = false, unit_twice = false;
   int depth = 0;
   const auto add_term = [&](std::size_t end) {
     std::string term = trim(sum.substr(term_start, end - term_start));
@@ -1074,10 +1123,21 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
       if (term[i] == '(' || term[i] == '[') ++inner;
       if (term[i] == ')' || term[i] == ']') --inner;
     }
-    const std::string before = trim(term.substr(0, at)), after = trim(term.substr(at + 2));
+    const std::string before = trim(term.substr(0, at));
+    std::string after = trim(term.substr(at + 2));
     if (inner != 0 || !is_factor_between(before, after)) return false;
+    const std::size_t n = static_cast<std::size_t>(axis % 3);
+    // "19.3 k̂ rad/s": a unit after a coefficient, not a factor of it.
+    const std::string term_unit = before.empty() ? "" : unit_after_term(after, before, table);
+    if (!term_unit.empty()) after.clear();
+    ++terms;
+    terms_with_unit += term_unit.empty() ? 0 : 1;
+    last_has_unit = !term_unit.empty();
+    unit_twice = unit_twice ||
+                 (!components[n].empty() && !(term_unit.empty() && component_units[n].empty()));
+    component_units[n] = term_unit;
     const std::string coefficient = with_one_in_place(before, after);
-    std::string& component = components.at(static_cast<std::size_t>(axis % 3));
+    std::string& component = components.at(n);
     component +=
         (component.empty() && sign == "+" ? "" : " " + sign + " ") + "(" + coefficient + ")";
     return true;
@@ -1092,9 +1152,24 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
   }
   // "x̂ + ê₃" mixes two bases: more than one bit set.
   if (!add_term(sum.size()) || (bases & (bases - 1)) != 0) return "";
+  const bool each_term = terms_with_unit == terms && terms > 1;
+  if (terms_with_unit > 0) {
+    // The whole sum's unit after the last term, or each term's: nothing else, and no unit
+    // outside the brackets as well.
+    const bool last_only = terms_with_unit == 1 && last_has_unit;
+    if (!unit.empty() || unit_twice || !(last_only || each_term)) return "";
+    if (!each_term) {
+      for (auto& u : component_units) {
+        if (!u.empty()) unit = u;
+        u.clear();
+      }
+    }
+  }
   std::string vector = "[";
-  for (std::size_t n = 0; n < 3; ++n)
-    vector += (n ? ", " : "") + (components[n].empty() ? std::string("0") : components[n]);
+  for (std::size_t n = 0; n < 3; ++n) {
+    vector += (n ? ", " : "") + (components[n].empty() ? std::string("0") : components[n]) +
+              (component_units[n].empty() ? "" : " " + component_units[n]);
+  }
   return vector + "]" + (unit.empty() ? "" : " " + unit);
 }
 }  // namespace

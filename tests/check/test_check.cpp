@@ -431,6 +431,40 @@ TEST_CASE("components along unit vectors read as a vector") {
   }
 }
 
+TEST_CASE("a unit after the last unit vector is the sum's, after every one each component's") {
+  const Fixture plate("flying-plate");
+  const std::vector<double>& key = plate.answer("L0_body").value.data;  // (x, 0, z) kg m²/s
+  const std::string x = fmt::format("{:.6g}", key.at(0)), z = fmt::format("{:.6g}", key.at(2));
+  const std::string gram = fmt::format("{:.6g}", key.at(2) * 1e7);  // in g cm²/s
+  for (const std::string& same :
+       {x + " î + " + z + " k̂ kg m²/s", x + " e₁ + " + z + " e₃ kg m^2 s^-1",
+        x + " î + " + z + " k̂ (kg m²/s)", x + " î kg m²/s + " + z + " k̂ kg m²/s",
+        // m is the mass, and after the symbols a factor; kg m²/s is a unit all the same.
+        std::string("(m R² ω sin α/4) e₁ + (m R² ω cos α/2) e₃ kg m²/s"),
+        // the first coefficient in brackets is no "(sum) unit"
+        std::string("(m R² ω sin α/4) e₁ + (m R² ω cos α/2) e₃"),
+        // and in LaTeX, the unit in \mathrm or \text, brackets sized by \left \right
+        x + "\\,\\hat{x} + " + z + "\\,\\hat{z}\\ \\mathrm{kg\\,m^{2}/s}",
+        x + "\\,\\mathbf{i}\\,\\text{kg m^2/s} + " + z + "\\,\\mathbf{k}\\,\\text{kg m^2/s}",
+        "\\left(" + x + " \\hat{e}_1 + " + z + " \\hat{e}_3\\right) \\mathrm{kg\\,m^2\\,s^{-1}}"}) {
+    INFO(same);
+    REQUIRE(plate.check("L0_body", same).correct);
+  }
+  // The unit is the whole sum's: in g cm²/s only the z component is right.
+  REQUIRE_FALSE(plate.check("L0_body", x + " î + " + gram + " k̂ g cm²/s").correct);
+  REQUIRE_FALSE(plate.check("L0_body", x + " î - " + z + " k̂ kg m²/s").correct);
+  // After some terms but not the last, twice, or inside and outside brackets: refused.
+  for (const std::string& none :
+       {x + " î kg m²/s + " + z + " k̂", x + " î + " + z + " k̂ kg m²/s + 0 k̂ kg m²/s",
+        "(" + x + " î + " + z + " k̂ kg m²/s) kg m²/s"}) {
+    INFO(none);
+    REQUIRE_THROWS_WITH(plate.check("L0_body", none),
+                        Catch::Contains("cannot read the components along unit vectors (î, k̂)"));
+  }
+  // m after an expression in the symbols is the mass, a factor: the wrong dimension's value.
+  REQUIRE_FALSE(plate.check("L0_body", "m R² ω sin α/4 e₁ + m R² ω cos α/2 e₃ m").correct);
+}
+
 TEST_CASE("angle brackets write a vector; a transpose mark transposes a matrix") {
   const Fixture euler("euler-angles");
   const Answer& zyz = euler.answer("R_zyz");

@@ -394,13 +394,17 @@ TEST_CASE("every closed form with its rates in Leibniz's notation reads back, ev
 }
 
 namespace {
+// Where the unit goes: "(0.0019 e₁ + 0.014 e₃) kg m²/s", "0.0019 e₁ + 0.014 e₃ kg m²/s" or
+// "0.0019 e₁ kg m²/s + 0.014 e₃ kg m²/s".
+enum class UnitPlace { bracketed, after_last, after_each };
+
 // A 3-vector answer as a student writes it along unit vectors, spelled by `unit_vector` (its
-// axis 0, 1, 2 in, the text out): "(0.0019 e₁ + 0.014 e₃) kg m²/s", the zero components left
-// out as people leave them; with `flip`, the largest component's sign turned. Empty for any
-// other answer, and for the zero vector.
+// axis 0, 1, 2 in, the text out), the unit placed by `place`, the zero components left out as
+// people leave them; with `flip`, the largest component's sign turned. Empty for any other
+// answer, and for the zero vector.
 std::string along_unit_vectors(const Answer& a,
                                const std::function<std::string(std::size_t)>& unit_vector,
-                               bool flip = false) {
+                               bool flip = false, UnitPlace place = UnitPlace::bracketed) {
   const auto& d = a.value.data;
   if (a.value.shape != Value::Shape::vector || d.size() != 3) return "";
   std::size_t largest = 0;
@@ -410,10 +414,13 @@ std::string along_unit_vectors(const Answer& a,
   for (std::size_t k = 0; k < 3; ++k) {
     const double x = flip && k == largest ? -d[k] : d[k];
     if (x == 0.0) continue;
-    const std::string size = format_number(std::abs(x)) + " " + unit_vector(k);
+    const std::string size =
+        format_number(std::abs(x)) + " " + unit_vector(k) +
+        (place == UnitPlace::after_each && !a.unit.empty() ? " " + a.unit : "");
     sum += sum.empty() ? (x < 0 ? "-" : "") + size : (x < 0 ? " - " : " + ") + size;
   }
-  return a.unit.empty() ? sum : "(" + sum + ") " + a.unit;
+  if (a.unit.empty() || place == UnitPlace::after_each) return sum;
+  return place == UnitPlace::bracketed ? "(" + sum + ") " + a.unit : sum + " " + a.unit;
 }
 }  // namespace
 
@@ -446,6 +453,31 @@ TEST_CASE("every vector answer as components along unit vectors reads back, ever
         false);
   }
   REQUIRE(right > 9 * 30);  // the catalog's nonzero 3-vectors, in nine spellings
+  REQUIRE(wrong == right);
+}
+
+TEST_CASE("every vector answer along unit vectors with its unit after the last term or each") {
+  // "2.59 î + 19.3 k̂ rad/s" as people write it without the brackets; the unit after each term
+  // as a component's.
+  const std::vector<std::function<std::string(std::size_t)>> spellings{
+      [](std::size_t k) { return "e" + std::string("₁₂₃").substr(3 * k, 3); },
+      [](std::size_t k) { return std::string("îĵk̂").substr(k < 2 ? 2 * k : 4, k < 2 ? 2 : 3); }};
+  int right = 0, wrong = 0;
+  for (const auto& spelling : spellings) {
+    for (const UnitPlace place : {UnitPlace::after_last, UnitPlace::after_each}) {
+      right += forms_judged([&](const Answer& a) {
+        const std::string text = along_unit_vectors(a, spelling, false, place);
+        return text.empty() ? std::vector<std::string>{} : std::vector<std::string>{text};
+      });
+      wrong += forms_judged(
+          [&](const Answer& a) {
+            const std::string text = along_unit_vectors(a, spelling, true, place);
+            return text.empty() ? std::vector<std::string>{} : std::vector<std::string>{text};
+          },
+          false);
+    }
+  }
+  REQUIRE(right > 4 * 30);  // the catalog's nonzero 3-vectors, two spellings, two places
   REQUIRE(wrong == right);
 }
 
