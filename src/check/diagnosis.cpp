@@ -119,8 +119,10 @@ Wrong other_answer(const Answer& a, const Key& key, const Unit&) {
     for (const auto& b : part.answers) {
       const bool zero = std::all_of(b.value.data.begin(), b.value.data.end(),
                                     [](double x) { return x == 0; });
+      // Nor one equal to this answer (the Euler angles read back are the angles): a value
+      // close to it is no mistake of taking the other.
       if (&b == &a || b.name == a.name || b.unit != a.unit ||
-          b.value.data.size() != a.value.data.size() || zero) {
+          b.value.data.size() != a.value.data.size() || zero || b.value.data == a.value.data) {
         continue;
       }
       out.push_back({"", b.value.data, "this is " + b.name + " (part " + part.id + "), not " + a.name});

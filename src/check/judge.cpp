@@ -267,11 +267,21 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const ReadAnswer& p,
     const auto [got, want] = at_point(ctx, a, p.value, key, pt);
     for (std::size_t i = 0; i < want.size(); ++i) {
       if (std::abs(got[i] - want[i]) > kIdentityTolerance * std::max(1.0, std::abs(want[i]))) {
-        // Wrong: say why as for a number, from both values at the set parameters.
-        const auto here = at_point(ctx, a, p.value, key, ctx.values).first;
+        // Wrong: say why as for a number, from both values at the set parameters; or, where
+        // they agree there, that the expression is right at these values only ("(φ, 30°, ψ)"
+        // for (φ, θ, ψ) with θ set to 30°).
+        const auto [here, key_here] = at_point(ctx, a, p.value, key, ctx.values);
+        bool agree_here = true;
+        for (std::size_t k = 0; k < here.size(); ++k) {
+          agree_here = agree_here && std::abs(here[k] - key_here[k]) <=
+                                         kIdentityTolerance * std::max(1.0, std::abs(key_here[k]));
+        }
         const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
         return {false, "incorrect: " + a.name + " (your expression differs from the key's)",
-                diagnose(j, key_unit, here, a.value.data)};
+                agree_here ? std::vector<std::string>{"it gives the key's value at the set values "
+                                                      "but not at others: a number where the "
+                                                      "key has a symbol?"}
+                           : diagnose(j, key_unit, here, a.value.data)};
       }
     }
   }

@@ -349,6 +349,30 @@ class Reader {
     return true;
   }
 
+  // "\phi + 90^\circ": degrees after a number that is a term of a sum, written " deg" for the
+  // answer reader, which takes such degrees in an expression as radians. Only where the number
+  // stands alone between the signs (not "2\alpha 90^\circ" or "x/90^\circ"); then the input is
+  // taken past the degree sign.
+  bool degrees_of_term(Out& out, std::size_t circ_end) {
+    if (!out.factor_last) return false;
+    const std::string& text = out.p.text;
+    const std::size_t start = text.find_last_not_of("0123456789.");
+    if (start == text.size() - 1) return false;  // no digits at the end
+    const char before = start == std::string::npos ? '\0' : text[start];
+    if (before != '+' && before != '-' && before != '(' && before != '[' && before != ' ')
+      return false;
+    const std::size_t resume = i_;
+    i_ = circ_end;
+    if (s_[circ_end - 6] == '{') expect('}');  // ^{\circ}
+    skip_spaces();
+    if (!(at('+') || at('-') || at(',') || stops_here())) {
+      i_ = resume;
+      return false;
+    }
+    out.p.text += " deg";
+    return true;
+  }
+
   // "(0.128\,\mathrm{rad/s}, 1.11\,\mathrm{rad/s}, ..)", a pmatrix cell "9.66\,\mathrm{rad/s}":
   // a unit after an entry of a vector or matrix, inside the brackets, written after the entry
   // for the answer reader, which reads a unit on each entry (and says what is wrong with a mix,
@@ -406,7 +430,8 @@ class Reader {
       std::size_t j = i_ + 1;
       if (j < s_.size() && s_[j] == '{') ++j;
       if (s_.compare(j, 5, "\\circ") == 0) {
-        if (!unit_here(out, depth, true) && !degrees_of_entry(out, j + 5)) {
+        if (!unit_here(out, depth, true) && !degrees_of_entry(out, j + 5) &&
+            !degrees_of_term(out, j + 5)) {
           fail("'^\\circ' (degrees) belongs after a number");
         }
         return;

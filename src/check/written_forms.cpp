@@ -272,4 +272,80 @@ std::string without_output_label(const std::string& s) {
   return t.substr(i + 1);
 }
 
+namespace {
+bool name_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+// The end of the plain number that starts at `at` ("90", "1.5", "2e-3"), or `at` if none.
+std::size_t number_end(const std::string& s, std::size_t at) {
+  std::size_t k = at;
+  while (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '.')) ++k;
+  if (k == at) return at;
+  if (k < s.size() && (s[k] == 'e' || s[k] == 'E')) {  // an exponent, if digits follow
+    std::size_t e = k + 1;
+    if (e < s.size() && (s[e] == '+' || s[e] == '-')) ++e;
+    if (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) {
+      while (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) ++e;
+      k = e;
+    }
+  }
+  return k;
+}
+
+// Whether `s` has a name, outside its numbers, that `is_symbol` takes.
+bool names_symbol(const std::string& s, const std::function<bool(const std::string&)>& is_symbol) {
+  for (std::size_t i = 0; i < s.size();) {
+    if (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.') {
+      i = std::max(number_end(s, i), i + 1);
+    } else if (name_char(s[i])) {
+      std::size_t j = i;
+      while (j < s.size() && name_char(s[j])) ++j;
+      if (is_symbol(s.substr(i, j - i))) return true;
+      i = j;
+    } else {
+      ++i;
+    }
+  }
+  return false;
+}
+}  // namespace
+
+std::string degrees_in_expression(const std::string& ascii,
+                                  const std::function<bool(const std::string&)>& is_symbol) {
+  if (ascii.find("deg") == std::string::npos || !names_symbol(ascii, is_symbol)) return ascii;
+  std::string out;
+  for (std::size_t i = 0; i < ascii.size();) {
+    const bool starts_number =
+        (std::isdigit(static_cast<unsigned char>(ascii[i])) || ascii[i] == '.') &&
+        (i == 0 || !name_char(ascii[i - 1]));
+    const std::size_t end = starts_number ? number_end(ascii, i) : i;
+    if (end == i) {
+      // A name whole, so that its digits are no number ("x2 deg").
+      std::size_t j = i + 1;
+      if (name_char(ascii[i]))
+        while (j < ascii.size() && name_char(ascii[j])) ++j;
+      out += ascii.substr(i, j - i);
+      i = j;
+      continue;
+    }
+    std::size_t k = end;
+    while (k < ascii.size() && ascii[k] == ' ') ++k;
+    const bool degrees =
+        ascii.compare(k, 3, "deg") == 0 && (k + 3 == ascii.size() || !name_char(ascii[k + 3]));
+    std::size_t after = k + 3;
+    while (degrees && after < ascii.size() && ascii[after] == ' ') ++after;
+    const bool bound =
+        degrees && after < ascii.size() && (ascii[after] == '/' || ascii[after] == '^');
+    if (degrees && !bound) {
+      out += "(" + ascii.substr(i, end - i) + "*pi/180)";
+      i = k + 3;
+    } else {
+      out += ascii.substr(i, end - i);
+      i = end;
+    }
+  }
+  return out;
+}
+
 }  // namespace wobble::check

@@ -582,3 +582,40 @@ TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied ou
   REQUIRE_THROWS_WITH(euler.check("R_zyz", "Rz(φ) Ry(θ) Rz(ψ) Rx(φ) Ry(θ)"),
                       Catch::Contains("5 turns in a product; at most 4"));
 }
+
+TEST_CASE("degrees in an expression in the symbols are radians: φ + 90°") {
+  // Goldstein's z-x-z angles are Taylor's with a quarter turn: (φ + π/2, θ, ψ − π/2).
+  const Fixture euler("euler-angles");
+  for (const char* same : {"(φ + 90°, θ, ψ − 90°)", "[phi + 90 deg, theta, psi - 90deg]",
+                           "(\\phi + 90^\\circ, \\theta, \\psi - 90^\\circ)"}) {
+    INFO(same);
+    REQUIRE(euler.check("angles_zxz", same).correct);
+  }
+  REQUIRE_FALSE(euler.check("angles_zxz", "(φ + 91°, θ, ψ − 90°)").correct);
+  REQUIRE_FALSE(euler.check("angles_zxz", "(φ − 90°, θ, ψ + 90°)").correct);
+  const Fixture plate("flying-plate");
+  REQUIRE(plate.check("angle_omega_e3", "α + 0°").correct);
+  // A number alone keeps its unit; a unit after the expression stays refused, and degrees
+  // divided ("deg/s") are no number in radians.
+  REQUIRE(plate.check("angle_omega_e3", "15°").correct);
+  REQUIRE_THROWS_WITH(plate.check("angle_omega_e3", "α deg"),
+                      Catch::Contains("in SI already; drop the unit 'deg'"));
+  REQUIRE_THROWS_WITH(euler.check("omega_primed", "(-φ̇ sin θ, θ̇ + 0 deg/s, φ̇ cos θ + ψ̇)"),
+                      !Catch::Contains("pi/180"));
+}
+
+TEST_CASE("an expression right at the set values only is told so, not named another answer") {
+  // R is 0.12 m here: m 0.12²/4 is I0 at these values and no other.
+  const Fixture plate("flying-plate");
+  REQUIRE(plate.values.at("R") == 0.12);
+  const auto number_for_symbol = plate.check("I0", "m 0.12^2/4");
+  REQUIRE_FALSE(number_for_symbol.correct);
+  REQUIRE_THAT(number_for_symbol.feedback.at(0),
+               Catch::Contains("at the set values but not at others"));
+  // angles_back_zyz is (φ, θ, ψ) too: a value equal to this answer's is no taking of another.
+  const Fixture euler("euler-angles");
+  const auto thirty = euler.check("angles_phy711", "(φ, 30°, ψ)");
+  REQUIRE_FALSE(thirty.correct);
+  REQUIRE_THAT(thirty.feedback.at(0), !Catch::Contains("angles_back_zyz"));
+  REQUIRE_THAT(plate.check("I0", "m R^2/2").feedback.at(0), Catch::Contains("factor 2 is off"));
+}

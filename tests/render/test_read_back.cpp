@@ -842,8 +842,14 @@ TEST_CASE("a unit after each number of a vector or matrix reads back, every answ
                Catch::Equals("--answer: the entry \"30\" has no unit where another has deg: give "
                              "each number its unit (a zero may go without), or one unit after "
                              "the whole"));
-  REQUIRE_THAT(error_of(euler, "angles_phy711", "(φ, 30°, ψ)"),
-               Catch::Contains("an expression in the symbols is in SI"));
+  REQUIRE_THAT(error_of(euler, "angles_phy711", "(φ, θ deg, ψ)"),
+               Catch::Contains("an expression in the problem's symbols, in SI already"));
+  // Degrees among the symbols are radians: (φ, 30°, ψ) reads, and is right where θ is 30° only.
+  const auto thirty = euler.check("angles_phy711", "(φ, 30°, ψ)");
+  REQUIRE_FALSE(thirty.correct);
+  REQUIRE_THAT(thirty.feedback.at(0),
+               Catch::Equals("it gives the key's value at the set values but not at others: a "
+                             "number where the key has a symbol?"));
   REQUIRE_THAT(error_of(euler, "angles_phy711", "(40°, 30 kg, 70°)"),
                Catch::Contains("units deg and kg measure different things"));
   // An expression may carry its SI unit too, as a whole expression may; in LaTeX likewise. The
