@@ -1254,15 +1254,15 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
   // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
   const std::string source =
       looks_like_latex(answer) ? latex_as_text(answer, table, field) : answer;
-  // "44°41′37″", "303 days 15 h": a quantity in parts, as their sum; "φ + 90°": degrees in an
-  // expression, as radians.
-  const auto is_symbol = [&](const std::string& name) {
-    return table.contains(name) && !table.contains("deg");
+  // "44°41′37″", "303 days 15 h": a quantity in parts, as their sum; "φ + 90°", "cos(30°)":
+  // degrees in an expression, as radians.
+  const auto in_expression = [&](const std::string& name) {
+    return (table.contains(name) || sym::is_function_name(name)) && !table.contains("deg");
   };
   const std::string text = compound_quantity(degrees_in_expression(
       sexagesimal_degrees(symbols_as_spelled(leibniz_rates(prepared(source, field), table), table),
                           field),
-      is_symbol));
+      in_expression));
   if (text.empty()) {
     throw InputError(field +
                      ": empty; type a number (with a unit if you like), a vector [x, y, "

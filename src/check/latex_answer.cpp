@@ -578,7 +578,11 @@ class Reader {
         if (at('^')) power(one, depth + 1);
         arg = {"(" + one.p.text + ")", true, false};
       } else if (!number_part.empty()) {
-        arg = {"(" + number_part + ")"};
+        // "\cos 30^\circ": the degrees are the argument's, not the cosine's unit.
+        const bool braced = s_.compare(i_, 8, "^{\\circ}") == 0;
+        const bool degrees = braced || s_.compare(i_, 6, "^\\circ") == 0;
+        if (degrees) i_ += braced ? 8 : 6;
+        arg = {"(" + number_part + (degrees ? " deg)" : ")")};
       } else {
         fail(shown + " needs its argument: " + shown + "\\left(x\\right) or " + shown + "\\theta");
       }

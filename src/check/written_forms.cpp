@@ -293,15 +293,15 @@ std::size_t number_end(const std::string& s, std::size_t at) {
   return k;
 }
 
-// Whether `s` has a name, outside its numbers, that `is_symbol` takes.
-bool names_symbol(const std::string& s, const std::function<bool(const std::string&)>& is_symbol) {
+// Whether `s` has a name, outside its numbers, that `takes` takes.
+bool names_symbol(const std::string& s, const std::function<bool(const std::string&)>& takes) {
   for (std::size_t i = 0; i < s.size();) {
     if (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.') {
       i = std::max(number_end(s, i), i + 1);
     } else if (name_char(s[i])) {
       std::size_t j = i;
       while (j < s.size() && name_char(s[j])) ++j;
-      if (is_symbol(s.substr(i, j - i))) return true;
+      if (takes(s.substr(i, j - i))) return true;
       i = j;
     } else {
       ++i;
@@ -312,8 +312,8 @@ bool names_symbol(const std::string& s, const std::function<bool(const std::stri
 }  // namespace
 
 std::string degrees_in_expression(const std::string& ascii,
-                                  const std::function<bool(const std::string&)>& is_symbol) {
-  if (ascii.find("deg") == std::string::npos || !names_symbol(ascii, is_symbol)) return ascii;
+                                  const std::function<bool(const std::string&)>& in_expression) {
+  if (ascii.find("deg") == std::string::npos || !names_symbol(ascii, in_expression)) return ascii;
   std::string out;
   for (std::size_t i = 0; i < ascii.size();) {
     const bool starts_number =

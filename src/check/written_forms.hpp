@@ -58,12 +58,13 @@ std::string without_remark(const std::string& typed,
 /// "Out[3]//N= 0.00072" or "Out[3]: 0.00072"; `typed` itself when it has no such label.
 std::string without_output_label(const std::string& typed);
 
-/// "phi + (90*pi/180)" for "phi + 90 deg": in a text that names one of the problem's symbols
-/// (`is_symbol`), each plain number in degrees ("90 deg", "90deg", as "90°" arrives here) as
-/// radians, the SI of an expression in the symbols ("(φ + 90°, θ, ψ − 90°)"). Not a number
-/// whose degrees are divided or raised ("10 deg/s"), nor after a name's digits ("x2 deg");
-/// `ascii` itself where it names no symbol: "15 deg" alone is a number with its unit.
+/// "phi + (90*pi/180)" for "phi + 90 deg": in an expression, a text that names one of the
+/// problem's symbols or a function (`in_expression`), each plain number in degrees ("90 deg",
+/// "90deg", as "90°" arrives here) as radians, the SI of an expression ("(φ + 90°, θ, ψ − 90°)",
+/// "cos(30°)"). Not a number whose degrees are divided or raised ("10 deg/s"), nor after a
+/// name's digits ("x2 deg"); `ascii` itself where it names neither: "15 deg" alone, or in a
+/// vector of numbers, is a number with its unit.
 std::string degrees_in_expression(const std::string& ascii,
-                                  const std::function<bool(const std::string&)>& is_symbol);
+                                  const std::function<bool(const std::string&)>& in_expression);
 
 }  // namespace wobble::check

@@ -595,6 +595,17 @@ TEST_CASE("degrees in an expression in the symbols are radians: φ + 90°") {
   REQUIRE_FALSE(euler.check("angles_zxz", "(φ − 90°, θ, ψ + 90°)").correct);
   const Fixture plate("flying-plate");
   REQUIRE(plate.check("angle_omega_e3", "α + 0°").correct);
+  // In a function's argument too, without symbols: a calculator's cos(30°).
+  const Fixture top("heavy-top");  // u_p = cos θ₀, θ₀ = 30°
+  for (const char* same : {"cos(30°)", "cos 30°", "cos(30 deg)", "\\cos 30^\\circ"}) {
+    INFO(same);
+    REQUIRE(top.check("u_phidot_zero", same).correct);
+  }
+  REQUIRE_FALSE(top.check("u_phidot_zero", "cos(31°)").correct);
+  REQUIRE(plate.check("angle_L_e3", "atan(tan(15°)/2)").correct);
+  REQUIRE_FALSE(plate.check("angle_L_e3", "atan(tan(15°))").correct);
+  // A vector of numbers in degrees keeps its units: no function, no symbol.
+  REQUIRE(euler.check("angles_phy711", "(40°, 30°, 70°)").correct);
   // A number alone keeps its unit; a unit after the expression stays refused, and degrees
   // divided ("deg/s") are no number in radians.
   REQUIRE(plate.check("angle_omega_e3", "15°").correct);
