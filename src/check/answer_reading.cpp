@@ -361,8 +361,9 @@ std::pair<std::string, std::string> split_unit(const std::string& s) {
 std::string starred(const std::string& s, const sym::SymbolTable& table) {
   const std::vector<std::string>& kFunctions = function_names();
   // "4l^2", "0.5M": a number glued to one of the problem's symbols that spells no unit; or to
-  // one that does, in a product with one that does not ("0.25m R^2"). Alone, where m is a mass,
-  // "2m" is two masses or two metres, and refused. (pi and functions: symbolic/glued_numbers.hpp.)
+  // one that does, in a product with one that does not ("0.25m R^2"), or divided by a number
+  // ("3h/4"). Alone, where m is a mass, "2m" is two masses or two metres, and refused. (pi and
+  // functions: symbolic/glued_numbers.hpp.)
   const auto ids = identifiers(s);
   const bool symbol_spelling_no_unit = std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
     const std::string name = s.substr(id.first, id.second);
@@ -373,7 +374,11 @@ std::string starred(const std::string& s, const sym::SymbolTable& table) {
         sym::starts_exponent(s, at))
       return false;
     const std::string name = sym::name_at(s, at);
-    return table.contains(name) && (symbol_spelling_no_unit || !is_unit(name));
+    // "-3h/4" where h is a height: no unit is divided by a number, so h is the symbol.
+    const std::size_t after = at + name.size();
+    const bool over_number = after + 1 < s.size() && s[after] == '/' &&
+                             std::isdigit(static_cast<unsigned char>(s[after + 1]));
+    return table.contains(name) && (symbol_spelling_no_unit || !is_unit(name) || over_number);
   };
   const auto glued_product = [&](const std::string& before, char next) {
     const char last = before.back();
@@ -474,7 +479,9 @@ bool may_be_side_by_side(const std::string& s, const sym::SymbolTable& table) {
   const bool names_pi = std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
     return s.compare(id.first, id.second, "pi") == 0 || s.compare(id.first, id.second, "Pi") == 0;
   });  // "1/6 pi", "0.25 pi"
-  return names_pi || has_identifier_of(s, table) || s.find(' ') == std::string::npos;
+  // "(0, 0, -3h/4)": a symbol glued to a number is no identifier of the text as written.
+  return names_pi || has_identifier_of(s, table) || s.find(' ') == std::string::npos ||
+         has_identifier_of(starred(s, table), table);
 }
 
 // Reads factors side by side into p, a '*' for each space between two factors, where they may

@@ -186,15 +186,27 @@ std::optional<std::string> number_rows(const std::string& typed) {
 
 std::optional<std::string> labelled_components(const std::string& text, const std::string& field) {
   const std::vector<std::string> items = top_level(text, ',');
-  if (items.size() < 2) return std::nullopt;
+  // One item only where its labels are all the components: "I1 = I2 = I3 = 0.006" (a sphere).
+  const bool one_chain = items.size() == 1;
+  if (one_chain && top_level(text, '=').size() < 3) return std::nullopt;
   std::vector<std::string> labels, values;
+  // A label: one word, no operator or bracket in it ("I₁", "omega_x", "α").
+  const auto label_like = [](const std::string& side) {
+    const std::string t = trim(side);
+    return !t.empty() && t.find_first_of(" +-*/^()[]{}.,") == std::string::npos;
+  };
   for (const auto& item : items) {
     const std::vector<std::string> sides = top_level(item, '=');
-    if (sides.size() != 2 || sides[0].empty() || sides[1].empty()) return std::nullopt;
-    labels.push_back(name_spelling(sides[0]));
-    values.push_back(sides[1]);
+    if (sides.size() < 2 || sides[0].empty() || sides.back().empty()) return std::nullopt;
+    // "I₁ = I₂ = 3M(4R² + h²)/80": equal components told once, as a degenerate pair is.
+    for (std::size_t k = 0; k + 1 < sides.size(); ++k) {
+      if (sides.size() > 2 && !label_like(sides[k])) return std::nullopt;
+      labels.push_back(name_spelling(sides[k]));
+      values.push_back(sides.back());
+    }
   }
   const std::optional<std::vector<std::size_t>> slots = component_slots(labels);
+  if (!slots && one_chain) return std::nullopt;  // "L = I0 = 0.00072": a key's line, labelled
   if (!slots) {
     throw InputError(field +
                      ": components given one by one need one label for each, the same name "

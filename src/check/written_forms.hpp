@@ -33,8 +33,9 @@ std::optional<std::string> number_rows(const std::string& typed);
 ///   matrices are 3x3, and n entries would be written out as n² (a hostile answer's thousands).
 std::string diagonals_written_out(const std::string& ascii, const std::string& field);
 
-/// "[0.5, 1, 1.5]" for "x = 0.5, y = 1, z = 1.5" (the text as typed, Unicode or not); nullopt for
-/// a text that is no list of labelled components.
+/// "[0.5, 1, 1.5]" for "x = 0.5, y = 1, z = 1.5" (the text as typed, Unicode or not), and equal
+/// components told once, "I₁ = I₂ = 0.00975, I₃ = 0.006" (labels of one word each before the
+/// value); nullopt for a text that is no list of labelled components.
 /// @throws InputError naming `field` for such a list whose labels are not one name for each of
 ///   x, y, z or 1, 2, 3 (its components could be put in no order).
 std::optional<std::string> labelled_components(const std::string& text, const std::string& field);

@@ -630,3 +630,26 @@ TEST_CASE("an expression right at the set values only is told so, not named anot
   REQUIRE_THAT(thirty.feedback.at(0), !Catch::Contains("angles_back_zyz"));
   REQUIRE_THAT(plate.check("I0", "m R^2/2").feedback.at(0), Catch::Contains("factor 2 is off"));
 }
+
+TEST_CASE("equal components told once, I₁ = I₂ = .., and a symbol glued to a number over one") {
+  const Fixture cone("solid-cone");  // about the centre of mass: I₁ = I₂ = 3M(4R² + h²)/80
+  const auto& moments = cone.answer("principal_moments_cm").value.data;  // ascending
+  REQUIRE(moments.at(1) == moments.at(2));
+  const std::string pair = fmt::format("{:.6g}", moments.at(1));
+  const std::string axis = fmt::format("{:.6g}", moments.at(0));
+  for (const std::string& same :
+       {std::string("I₁ = I₂ = 3M(4R² + h²)/80, I₃ = 3M R²/10"),
+        "I1 = I2 = " + pair + " kg m², I3 = " + axis + " kg m²", "I_3 = " + axis + ", I_1 = I_2 = " + pair}) {
+    INFO(same);
+    REQUIRE(cone.check("principal_moments_cm", same).correct);
+  }
+  REQUIRE_FALSE(cone.check("principal_moments_cm", "I₁ = I₂ = " + axis + ", I₃ = " + pair).correct);
+  REQUIRE_FALSE(cone.check("principal_moments_cm", "I1 = I2 = I3 = " + pair).correct);
+  // A closed form between the labels is no label: a key's line, refused as more than two sides.
+  REQUIRE_THROWS_WITH(cone.check("principal_moments_cm", "I₁ = I₂ = 3M R²/10 = " + axis),
+                      Catch::Contains("sides of '='"));
+  // The centre of mass at -3h/4 along the axis, h the height glued to its factor: no unit (hours)
+  // is divided by a number, so h is the symbol.
+  REQUIRE(cone.check("center_of_mass", "(0, 0, -3h/4)").correct);
+  REQUIRE_FALSE(cone.check("center_of_mass", "(0, 0, 3h/4)").correct);
+}
