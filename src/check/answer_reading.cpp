@@ -1337,8 +1337,16 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
                                   "(M*g*cos(theta)^2)"
                                 : "products need '*' (" + written + ", not " + value + ")"));
         }
-        // "0.16 parsecs": throws its error; not for a bracket ("1/2 [a, b": the reader says).
-        if (left_reads && right.find_first_of("([{") != 0) (void)parse_unit(right, field);
+        // "0.16 parsecs": throws its error; not for a bracket ("1/2 [a, b": the reader says),
+        // nor for mathematics ("2π/Ω", Ω no symbol: the reader names Ω, not a unit "pi/Omega").
+        const auto ids = identifiers(right);
+        const bool mathematics = std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
+          const std::string name = right.substr(id.first, id.second);
+          return name == "pi" || name == "Pi" || sym::is_function_name(name) ||
+                 sym::greek_letters().count(ascii_lower(name)) > 0;
+        });
+        if (left_reads && !mathematics && right.find_first_of("([{") != 0)
+          (void)parse_unit(right, field);
       }
       const bool glued = !value.empty() && std::isdigit(static_cast<unsigned char>(value[0])) &&
                          value.find(' ') == std::string::npos &&

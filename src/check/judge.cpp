@@ -98,13 +98,22 @@ std::string answer_name_hint(const Context& ctx, const std::string& typed) {
     const std::string name = ascii.substr(i, end - i);
     i = end;
     if (ctx.table.contains(name)) continue;
+    std::vector<std::string> named;  // "Omega" for Omega_body_rate, as a book writes Ω
     for (const auto& part : ctx.key.parts) {
       for (const auto& answer : part.answers) {
         if (answer.name == name) {
           return fmt::format(" ({} is the answer to part ({}): write it in the problem's symbols)",
                              name, part.id);
         }
+        if (answer.name.rfind(name + "_", 0) == 0)
+          named.push_back(fmt::format("{} (part ({}))", answer.name, part.id));
       }
+    }
+    if (!named.empty()) {
+      return fmt::format(" ({} names {} here: write it in the problem's symbols)", name,
+                         named.size() == 1
+                             ? "the answer " + named[0]
+                             : "the answers " + fmt::format("{}", fmt::join(named, ", ")));
     }
     const std::string words = textbook_name_words(name);
     if (!words.empty())

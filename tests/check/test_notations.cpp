@@ -495,6 +495,13 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
                       Catch::Contains("L0_body is the answer to part (b)"));
   // A name that is no answer gets no such line.
   REQUIRE_THROWS_WITH(plate.check("I0", "M R^2/4"), !Catch::Contains("is the answer to"));
+  // Ω as a book writes the precession rate: the answers it names, and no "unit 'pi/Omega'".
+  const Fixture earth("earth-free-precession");
+  REQUIRE_THROWS_WITH(
+      earth.check("precession_period_body", "2π/Ω"),
+      Catch::Contains("undefined symbol 'Omega'") &&
+          Catch::Contains("Omega names the answers Omega_body_rate (part (a)), Omega_space_rate") &&
+          !Catch::Contains("unit"));
 }
 
 TEST_CASE("a textbook formula's principal moment or ω component is named as such") {
