@@ -1083,6 +1083,11 @@ std::string unit_after_term(const std::string& text, const std::string& coeffici
 std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& table) {
   if (typed.find('@') != std::string::npos) return "";  // the markers' own character
   std::string sum = trim(unit_vectors_marked(typed, table)), unit;
+  // "x̂ − ẑ" as a PDF or a word processor sets the minus: the terms' sign.
+  for (const std::string_view minus : {"\u2212", "\u2013"}) {
+    for (auto at = sum.find(minus); at != std::string::npos; at = sum.find(minus, at))
+      sum.replace(at, minus.size(), "-");
+  }
   // LaTeX's "\left( .. \right)": brackets, their size aside.
   for (const std::string_view sizing : {"\\left", "\\right"}) {
     for (auto at = sum.find(sizing); at != std::string::npos; at = sum.find(sizing, at)) {
@@ -1214,9 +1219,10 @@ ReadAnswer read_along_unit_vectors(const std::string& spelled, const std::string
 }
 }  // namespace
 
-ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
-                       const std::string& field) {
-  check_bounds(typed, field);
+namespace {
+// read_answer, but for a list of vectors each read on its own.
+ReadAnswer read_whole(const std::string& typed, const sym::SymbolTable& table,
+                      const std::string& field) {
   // "\hat{x}", "e₁" respelled: such a text is a sum along unit vectors, never read as written
   // ("0.5e₁" would be 5 there, its subscript a digit).
   const std::string spelled = basis_vectors_spelled(typed, table);
@@ -1228,6 +1234,55 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
     }
   }
   return read_along_unit_vectors(spelled, unit_vectors_named(spelled, table), table, field);
+}
+
+// "(1, 0, 1)/√2, (1, 0, −1)/√2, (0, 1, 0)", "x̂ + ẑ, x̂ − ẑ, ŷ": a matrix's rows, as principal
+// axes are listed, each vector written as it reads alone (a factor outside its bracket, along
+// unit vectors), in brackets or not. nullopt where `typed` is no list of two or three such
+// vectors of one length, with one unit or none.
+std::optional<ReadAnswer> rows_read_each(const std::string& typed, const sym::SymbolTable& table,
+                                         const std::string& field) {
+  const std::string t = trim(typed);
+  std::vector<std::string> items = top_level(t, ',');
+  if (items.size() == 1 && (wrapped(t, '[') || wrapped(t, '(')))
+    items = top_level(t.substr(1, t.size() - 2), ',');
+  if (items.size() < 2 || items.size() > 3) return std::nullopt;
+  ReadAnswer rows;
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    ReadAnswer row;
+    try {
+      row = read_whole(items[k], table, field);
+    } catch (const InputError&) {
+      return std::nullopt;
+    }
+    if (!row.value.is_vector || row.value.is_matrix ||
+        (k > 0 && row.value.entries.size() != rows.value.cols) ||
+        (k > 0 && (row.unit.has_value() != rows.unit.has_value() ||
+                   (row.unit && row.unit->text != rows.unit->text))))
+      return std::nullopt;
+    if (k == 0) {
+      rows.unit = row.unit;
+      rows.value.cols = row.value.entries.size();
+    }
+    rows.symbolic = rows.symbolic || row.symbolic;
+    rows.value.entries.insert(rows.value.entries.end(), row.value.entries.begin(),
+                              row.value.entries.end());
+  }
+  rows.value.rows = items.size();
+  rows.value.is_matrix = true;
+  return rows;
+}
+}  // namespace
+
+ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
+                       const std::string& field) {
+  check_bounds(typed, field);
+  try {
+    return read_whole(typed, table, field);
+  } catch (const InputError&) {
+    if (auto rows = rows_read_each(typed, table, field)) return *rows;
+    throw;
+  }
 }
 
 namespace {
@@ -1345,7 +1400,9 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
           return name == "pi" || name == "Pi" || sym::is_function_name(name) ||
                  sym::greek_letters().count(ascii_lower(name)) > 0;
         });
-        if (left_reads && !mathematics && right.find_first_of("([{") != 0)
+        // Nor for a list ("5/2 ma^2, 3ma^2, ..": no unit has a comma).
+        if (left_reads && !mathematics && right.find_first_of("([{") != 0 &&
+            right.find(',') == std::string::npos)
           (void)parse_unit(right, field);
       }
       const bool glued = !value.empty() && std::isdigit(static_cast<unsigned char>(value[0])) &&

@@ -111,7 +111,7 @@ std::vector<std::vector<int>> eigenspace_columns(const Vec3& moments) {
 }
 
 AxesFinding judge_axes(const std::vector<double>& typed, const Mat3& key_axes,
-                       const Vec3& key_moments, double angle_tolerance) {
+                       const Vec3& key_moments, double angle_tolerance, AxesLayout layout) {
   std::array<Vec3, 3> columns, rows;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
@@ -121,11 +121,12 @@ AxesFinding judge_axes(const std::vector<double>& typed, const Mat3& key_axes,
     }
   }
   const auto spaces = eigenspaces(key_moments);
-  AxesFinding as_columns = judge_vectors(columns, key_axes, spaces, angle_tolerance);
-  as_columns.how = "as columns";
-  if (as_columns.correct) return as_columns;
   AxesFinding as_rows = judge_vectors(rows, key_axes, spaces, angle_tolerance);
   as_rows.how = "as rows";
+  if (layout == AxesLayout::rows) return as_rows;
+  AxesFinding as_columns = judge_vectors(columns, key_axes, spaces, angle_tolerance);
+  as_columns.how = "as columns";
+  if (layout == AxesLayout::columns || as_columns.correct) return as_columns;
   if (as_rows.correct) return as_rows;
   // Wrong either way: report the reading with fewer problems (columns, as printed, on a tie).
   if (as_rows.problems.size() < as_columns.problems.size()) {

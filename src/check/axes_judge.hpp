@@ -28,9 +28,16 @@ struct AxesFinding {
 /// core's rule on the ascending moments.
 std::vector<std::vector<int>> eigenspace_columns(const Vec3& key_moments);
 
+/// Which of the student's matrix holds the axes: a matrix as the key prints one may be read
+/// either way; vectors listed one by one ("(1, 0, 1)/√2, (1, 0, −1)/√2, (0, 1, 0)") are its rows,
+/// and vectors labelled e1 = (..), .. its columns. A listed vector is never read across: the
+/// columns of wrong rows can be right axes.
+enum class AxesLayout { rows_or_columns, rows, columns };
+
 /// `typed` is the student's 3x3 matrix, row-major; `key_axes` has the key's axes as columns,
 /// `key_moments` ascending.
 AxesFinding judge_axes(const std::vector<double>& typed, const Mat3& key_axes,
-                       const Vec3& key_moments, double angle_tolerance);
+                       const Vec3& key_moments, double angle_tolerance,
+                       AxesLayout layout = AxesLayout::rows_or_columns);
 
 }  // namespace wobble::check

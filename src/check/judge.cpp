@@ -11,6 +11,7 @@
 
 #include "check/answer_reading.hpp"
 #include "check/axes_judge.hpp"
+#include "check/brackets.hpp"
 #include "check/diagnosis.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
@@ -139,6 +140,7 @@ struct Judge {
   const Answer& a;
   const Options& opt;
   double scale;
+  AxesLayout layout = AxesLayout::rows_or_columns;  // where principal axes are in the matrix
 
   bool close(double v, double k) const {
     if (opt.sigfigs) {
@@ -174,7 +176,7 @@ Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got) {
   }
   const Vec3 lambda(moments[0], moments[1], moments[2]);
   const double tol = j.angle_tolerance();
-  const AxesFinding f = judge_axes(got, axes, lambda, tol);
+  const AxesFinding f = judge_axes(got, axes, lambda, tol, j.layout);
   if (f.correct) {
     return {true, "correct: " + j.a.name + " (" + f.how + ", in any order, each up to sign)", {}};
   }
@@ -244,7 +246,7 @@ Verdict judge_symbolic_axes(const Judge& j, const ReadAnswer& p) {
       sorted[c] = lambda[k];
       for (int r = 0; r < 3; ++r) axes(r, c) = axes_flat[static_cast<std::size_t>(3 * r) + k];
     }
-    if (!judge_axes(got, axes, sorted, tol).correct) {
+    if (!judge_axes(got, axes, sorted, tol, j.layout).correct) {
       return {false,
               "incorrect: " + j.a.name +
                   " (your expression gives the axes at the set values, but not at others)",
@@ -255,9 +257,9 @@ Verdict judge_symbolic_axes(const Judge& j, const ReadAnswer& p) {
           {}};
 }
 
-Verdict judge_symbolic(const Context& ctx, const Answer& a, const ReadAnswer& p,
-                       const Options& opt) {
-  const Judge j{ctx, a, opt, zero_scale(ctx.key, a)};
+Verdict judge_symbolic(const Context& ctx, const Answer& a, const ReadAnswer& p, const Options& opt,
+                       AxesLayout layout) {
+  const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
   if (a.kind == AnswerKind::principal_axes) return judge_symbolic_axes(j, p);
   if (a.symbolic.empty()) {
     throw InputError(kField + ": " + a.name + " has no closed form in the key; give a number");
@@ -399,8 +401,25 @@ bool is_one_name(const std::string& side) {
   });
 }
 
+// Where the axes are in a matrix written as `text`: vectors listed one by one, "[1, 1, 0], [1,
+// -1, 0], [0, 0, 1]", "(1, 0, 1)/√2, ..", "[x̂ + ẑ, x̂ − ẑ, ŷ]", are its rows; a matrix of rows
+// in one bracket, "[[..], [..], [..]]" as the key prints one, either way.
+AxesLayout listed_layout(const std::string& text) {
+  const std::string t = trim(text);
+  std::vector<std::string> items = top_level(t, ',');
+  const bool whole = items.size() == 1 && (wrapped(t, '[') || wrapped(t, '(') || wrapped(t, '{'));
+  if (whole) items = top_level(t.substr(1, t.size() - 2), ',');
+  if (items.size() < 2 || items.size() > 3) return AxesLayout::rows_or_columns;
+  const bool matrix_literal = whole && std::all_of(items.begin(), items.end(), [](const auto& i) {
+                                return wrapped(i, '[') || wrapped(i, '(') || wrapped(i, '{');
+                              });
+  return matrix_literal ? AxesLayout::rows_or_columns : AxesLayout::rows;
+}
+
 Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
-                  const Options& options) {
+                  const Options& options, AxesLayout labelled = AxesLayout::rows_or_columns) {
+  const AxesLayout layout =
+      labelled != AxesLayout::rows_or_columns ? labelled : listed_layout(text);
   const Options opt = options_for(a, options);
   const ReadAnswer p = [&] {
     try {
@@ -430,11 +449,11 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
     to_key = p.unit->to_si / key_unit.to_si;
   }
   // An expression's unit, if any, is an SI one (read_answer), and so is every key's.
-  if (p.symbolic) return judge_symbolic(ctx, a, p, opt);
+  if (p.symbolic) return judge_symbolic(ctx, a, p, opt, layout);
   std::vector<double> got;
   for (const auto& e : p.value.entries)
     got.push_back(sym::evaluate(e, GiNaC::lst{}, kField) * to_key);
-  const Judge j{ctx, a, opt, zero_scale(ctx.key, a)};
+  const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
   if (a.kind == AnswerKind::principal_axes && got.size() == 9) return judge_axes_answer(j, got);
   std::vector<double> compare = got;
   if (a.kind == AnswerKind::principal_moments) std::sort(compare.begin(), compare.end());
@@ -461,8 +480,14 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   const std::string written = without_output_label(
       without_math_delimiters(without_remark(without_comments(text), known_word)));
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
-  if (const auto components = labelled_components(written, kField))
-    return judge_one(ctx, a, *components, options);
+  // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows
+  // of a list where one has a factor outside its bracket.
+  if (const auto components = labelled_components(written, kField)) {
+    const bool columns =
+        components->size() > 2 && components->substr(components->size() - 2) == "^T";
+    return judge_one(ctx, a, *components, options,
+                     columns ? AxesLayout::columns : AxesLayout::rows);
+  }
   const auto parts = sides(approximations_as_equal(written), a.name);
   if (parts.size() == 1) return judge_one(ctx, a, parts[0], options);
   // A key's line has a closed form and a value; judging more sides only costs time (each may be

@@ -660,3 +660,37 @@ TEST_CASE("equal components told once, I₁ = I₂ = .., and a symbol glued to a
   REQUIRE(cone.check("center_of_mass", "(0, 0, -3h/4)").correct);
   REQUIRE_FALSE(cone.check("center_of_mass", "(0, 0, 3h/4)").correct);
 }
+
+TEST_CASE("principal axes listed one by one are the axes, with a factor or along unit vectors") {
+  // The four masses' axes: (1, 1, 0)/√2, (1, −1, 0)/√2, (0, 0, 1). Their matrix's rows, (1, 0,
+  // 1), (1, 0, −1), (0, 1, 0), are no axes: a listed vector is never read across.
+  const Fixture masses("four-masses");
+  for (const char* same :
+       {"(1,1,0)/√2, (1,-1,0)/√2, (0,0,1)", "1/√2 (1, 1, 0), 1/√2 (1, −1, 0), (0, 0, 1)",
+        "x̂ + ŷ, x̂ − ŷ, ẑ", "[x̂ + ŷ, x̂ − ŷ, ẑ]", "(x̂ + ŷ)/√2, (x̂ − ŷ)/√2, ẑ",
+        "e1 = (1, 1, 0)/√2, e2 = (1, -1, 0)/√2, e3 = (0, 0, 1)",
+        "\\frac{1}{\\sqrt{2}}(1,1,0), \\frac{1}{\\sqrt{2}}(1,-1,0), (0,0,1)",
+        "[1, 1, 0], [1, -1, 0], [0, 0, 1]"}) {
+    INFO(same);
+    REQUIRE(masses.check("principal_axes", same).correct);
+  }
+  for (const char* across :
+       {"(1,0,1)/√2, (1,0,-1)/√2, (0,1,0)", "x̂ + ẑ, x̂ − ẑ, ŷ", "[1, 0, 1], [1, 0, -1], [0, 1, 0]",
+        "e1 = (1, 0, 1), e2 = (1, 0, -1), e3 = (0, 1, 0)",
+        "e1 = (1, 0, 1)/√2, e2 = (1, 0, -1)/√2, e3 = (0, 1, 0)"}) {
+    INFO(across);
+    const auto v = masses.check("principal_axes", across);
+    REQUIRE_FALSE(v.correct);
+    REQUIRE_THAT(v.feedback.at(0),
+                 Catch::Contains("(1, 0, 1)") || Catch::Contains("(0.7071, 0, 0.7071)"));
+  }
+  // A matrix in one bracket, as the key prints its axes' matrix, may hold them either way.
+  REQUIRE(masses.check("principal_axes", "[[1, 0, 1], [1, 0, -1], [0, 1, 0]]").correct);
+  REQUIRE(masses.check("principal_axes", "[[1, 1, 0], [1, -1, 0], [0, 0, 1]]").correct);
+  // A minus as a PDF sets it between unit vectors, and a list whose terms run together: the
+  // message names the symbols, not a unit "ma^2, ..".
+  const Fixture plate("flying-plate");
+  REQUIRE_FALSE(plate.check("L0_body", "0.001863 x̂ − 0.01391 ẑ").correct);
+  REQUIRE_THROWS_WITH(masses.check("principal_moments", "5/2 ma², 3ma², 7/2 ma²"),
+                      Catch::Contains("undefined symbol 'ma' (products need '*': m*a)"));
+}

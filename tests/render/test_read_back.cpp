@@ -456,6 +456,29 @@ TEST_CASE("every vector answer as components along unit vectors reads back, ever
   REQUIRE(wrong == right);
 }
 
+TEST_CASE("every problem's principal axes listed one by one read back, with a factor or along x̂") {
+  // The key's axes are its matrix's columns; a student lists them, each scaled as books write a
+  // normalised axis, "(a, b, c)/2, ..", or along unit vectors. (That a list is not read across,
+  // its vectors as a matrix's columns, check's notation tests show on the four masses.)
+  const auto listed = [](const Answer& a, bool with_factor) {
+    std::vector<std::string> out;
+    if (a.kind != AnswerKind::principal_axes) return out;
+    const auto& d = a.value.data;  // row-major, axes as columns
+    std::string text;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::string x = format_number(2 * d[c]), y = format_number(2 * d[3 + c]),
+                        z = format_number(2 * d[6 + c]);
+      text += (c ? ", " : "") + (with_factor ? "(" + x + ", " + y + ", " + z + ")/2"
+                                             : "(" + x + ") x̂ + (" + y + ") ŷ + (" + z + ") ẑ");
+    }
+    out.push_back(text);
+    return out;
+  };
+  const int right = forms_judged([&](const Answer& a) { return listed(a, true); }) +
+                    forms_judged([&](const Answer& a) { return listed(a, false); });
+  REQUIRE(right >= 2 * 7);  // the catalog's principal axes (7 today), two ways each
+}
+
 TEST_CASE("every vector answer along unit vectors with its unit after the last term or each") {
   // "2.59 î + 19.3 k̂ rad/s" as people write it without the brackets; the unit after each term
   // as a component's.
