@@ -342,6 +342,24 @@ std::string name_spelling(const std::string& written) {
   return out;
 }
 
+std::string name_in_key(const Key& key, const std::string& written) {
+  if (written.empty()) return written;
+  const std::string spelling = name_spelling(written);
+  std::string found;
+  int matches = 0;
+  for (const auto& part : key.parts) {
+    if (part.id == written) return written;
+    for (const auto& answer : part.answers) {
+      if (answer.name == written) return written;
+      if (name_spelling(answer.name) == spelling) {
+        found = answer.name;
+        ++matches;
+      }
+    }
+  }
+  return matches == 1 ? found : written;
+}
+
 namespace {
 // The sides of an answer as a key line shows it, "I0 = m·R²/4 = 0.00072 kg m²": split at each
 // '=' outside brackets, the answer's own name (or nothing) on the left dropped.

@@ -75,6 +75,12 @@ Verdict judge(const Context& ctx, const Answer& expected, const std::string& tex
 /// "L_{0,\mathrm{body}}" (LaTeX), "L₀_body" (Unicode) and "L0_body" are all "L0body".
 std::string name_spelling(const std::string& written);
 
+/// `written` as the key names it, where it names a part or an answer however it is written:
+/// "I₀" and "I_0" are I0, "L_{0,\mathrm{body}}" is L0_body, "Ω_body_rate" is Omega_body_rate
+/// (a part's id or an answer's name as printed stays itself; one spelling that two answers share
+/// names neither). `written` itself otherwise, for the lookup to refuse with the key's names.
+std::string name_in_key(const Key& key, const std::string& written);
+
 /// A refusal from judge() without the command-line option it names ("--answer: "), for the
 /// surfaces where the student typed no option (a submission file, the worksheet, the browser).
 std::string without_option(const std::string& message);

@@ -190,7 +190,9 @@ int run_check(const CheckOptions& opt) {
         answers_by_part(key)));
   }
   const auto [part, typed] = part_and_answer(opt, problem);
-  const Answer& answer = find_answer(key, part, opt.name, "part", "--name");
+  // "I₀", "I_0": an answer's name as the statement or a LaTeX handout writes it.
+  const Answer& answer = find_answer(key, check::name_in_key(key, part),
+                                     check::name_in_key(key, opt.name), "part", "--name");
   const sym::SymbolTable table = problem.symbol_table();
   const check::Verdict v = check::judge({key, table, values}, answer, typed, o);
   fmt::print("{}\n", v.line);

@@ -257,7 +257,8 @@ struct Server::Impl {
     const auto e = entry(p, variant);
     const Answer* a = nullptr;
     try {
-      a = &find_answer(e->key, part_id, name, "part", "name");
+      a = &find_answer(e->key, check::name_in_key(e->key, part_id),
+                       check::name_in_key(e->key, name), "part", "name");
     } catch (const AnswerNotFound& missing) {
       return send_error(res, 404, missing.what());
     }

@@ -72,10 +72,10 @@ const Answer& find_answer(const Key& key, const std::string& part_id, const std:
                                      key.problem, shown(name), fmt::join(names, ", ")));
   }
   if (part == nullptr) {
-    std::vector<std::string> ids;
-    for (const auto& p : key.parts) ids.push_back(p.id);
-    throw AnswerNotFound(fmt::format("{}: problem {} has no part '{}' (parts: {})", part_field,
-                                     key.problem, shown(part_id), fmt::join(ids, ", ")));
+    // The answers with their parts: the word may have been meant for an answer's name.
+    throw AnswerNotFound(
+        fmt::format("{}: problem {} has no part or answer '{}' (answers by part: {})", part_field,
+                    key.problem, shown(part_id), answers_by_part(key)));
   }
   if (part->answers.empty()) {
     throw AnswerNotFound(fmt::format(

@@ -694,3 +694,15 @@ TEST_CASE("principal axes listed one by one are the axes, with a factor or along
   REQUIRE_THROWS_WITH(masses.check("principal_moments", "5/2 ma², 3ma², 7/2 ma²"),
                       Catch::Contains("undefined symbol 'ma' (products need '*': m*a)"));
 }
+
+TEST_CASE("an answer's name as the statement or LaTeX writes it finds the answer") {
+  const Fixture plate("flying-plate");
+  using wobble::check::name_in_key;
+  for (const char* i0 : {"I0", "I₀", "I_0", "I_{0}"}) REQUIRE(name_in_key(plate.key, i0) == "I0");
+  REQUIRE(name_in_key(plate.key, "L_{0,\\mathrm{body}}") == "L0_body");
+  REQUIRE(name_in_key(plate.key, "Ω_body_rate") == "Omega_body_rate");
+  // A part's id stays itself, and a word that is neither is returned for the lookup to refuse.
+  REQUIRE(name_in_key(plate.key, "a") == "a");
+  REQUIRE(name_in_key(plate.key, "θ_L") == "θ_L");
+  REQUIRE(name_in_key(plate.key, "") == "");
+}

@@ -282,11 +282,19 @@ TEST_CASE("check: the answer's name where the part goes, the answer as the third
   INFO(after_set.err);
   REQUIRE(after_set.exit_code == 0);
   REQUIRE(after_set.out == "correct: I0\n");
-  // A name that is neither a part nor an answer still lists the parts.
-  const RunResult neither = run_wobble({"check", "flying-plate", "I_0", "1"});
+  // An answer's name as the statement writes it, I₀ or I_0, is the answer; a word that is
+  // neither a part nor an answer lists the answers by part.
+  for (const char* i0 : {"I_0", "I₀"}) {
+    const RunResult spelled = run_wobble({"check", "flying-plate", i0, "m R^2/4"});
+    INFO(i0 << ": " << spelled.err);
+    REQUIRE(spelled.exit_code == 0);
+    REQUIRE_THAT(spelled.out, Catch::StartsWith("correct: I0"));
+  }
+  const RunResult neither = run_wobble({"check", "flying-plate", "I_9", "1"});
   REQUIRE(neither.exit_code == 2);
   REQUIRE(neither.out.empty());
-  REQUIRE_THAT(neither.err, Catch::Contains("no part 'I_0' (parts: a, b,"));
+  REQUIRE_THAT(neither.err,
+               Catch::Contains("no part or answer 'I_9' (answers by part: (a) I0, I;"));
   // The answer given twice is refused before anything is judged.
   const RunResult twice = run_wobble({"check", "flying-plate", "I0", "1", "--answer", "2"});
   REQUIRE(twice.exit_code == 2);
