@@ -323,7 +323,25 @@ Options options_for(const Answer& a, const Options& options) {
 
 std::string without_option(const std::string& message) {
   const std::string prefix = kField + ": ";
-  return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+  if (message.rfind(prefix, 0) == 0) return message.substr(prefix.size());
+  // "--answer[0]: ..", "--answer[1][2]: ..": an entry, counted from 1 as people count.
+  if (message.rfind(kField + "[", 0) != 0) return message;
+  std::vector<std::string> indices;
+  std::size_t at = kField.size();
+  while (at < message.size() && message[at] == '[') {
+    const std::size_t close = message.find(']', at);
+    if (close == std::string::npos) return message;
+    const std::string digits = message.substr(at + 1, close - at - 1);
+    if (digits.empty() || digits.size() > 6 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+      return message;
+    indices.push_back(std::to_string(std::stoul(digits) + 1));
+    at = close + 1;
+  }
+  if (message.compare(at, 2, ": ") != 0 || indices.empty() || indices.size() > 2) return message;
+  const std::string entry =
+      indices.size() == 1 ? indices[0] : "(" + indices[0] + ", " + indices[1] + ")";
+  return "entry " + entry + ": " + message.substr(at + 2);
 }
 
 std::string name_spelling(const std::string& written) {

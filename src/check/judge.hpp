@@ -82,7 +82,9 @@ std::string name_spelling(const std::string& written);
 std::string name_in_key(const Key& key, const std::string& written);
 
 /// A refusal from judge() without the command-line option it names ("--answer: "), for the
-/// surfaces where the student typed no option (a submission file, the worksheet, the browser).
+/// surfaces where the student typed no option (a submission file, the worksheet, the browser);
+/// one about an entry names it counted from 1: "entry 1: .." for "--answer[0]: ..", "entry (1,
+/// 2): .." for "--answer[0][1]: ..".
 std::string without_option(const std::string& message);
 
 }  // namespace wobble::check

@@ -268,7 +268,9 @@ struct Server::Impl {
     } catch (const InputError& error) {
       // The judge names the command line's option; on the page the answer box is the field.
       const std::string what = error.what(), bare = check::without_option(what);
-      throw InputError(bare.size() != what.size() ? "answer: " + bare : what);
+      throw InputError(bare == what                   ? what
+                       : bare.rfind("entry ", 0) == 0 ? "answer, " + bare
+                                                      : "answer: " + bare);
     }
     send_json(res, json{{"correct", v.correct}, {"verdict", v.line}, {"feedback", v.feedback}}.dump());
   }

@@ -706,3 +706,15 @@ TEST_CASE("an answer's name as the statement or LaTeX writes it finds the answer
   REQUIRE(name_in_key(plate.key, "θ_L") == "θ_L");
   REQUIRE(name_in_key(plate.key, "") == "");
 }
+
+TEST_CASE("a refusal shown where no option was typed names an entry counted from 1") {
+  using wobble::check::without_option;
+  REQUIRE(without_option("--answer: empty") == "empty");
+  REQUIRE(without_option("--answer[0]: cannot read expression \"ma\"") ==
+          "entry 1: cannot read expression \"ma\"");
+  REQUIRE(without_option("--answer[2][1]: a ',' where") == "entry (3, 2): a ',' where");
+  // Anything else stays as it is.
+  for (const char* other : {"--answer[x]: no", "--answer[0] no colon", "--answer[]: no",
+                            "--set: R=0", "--answer[1][2][3]: three"})
+    REQUIRE(without_option(other) == other);
+}

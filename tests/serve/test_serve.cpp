@@ -177,6 +177,14 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
   CHECK_THAT(post_check(c, "flying-plate", {{"name", "I9"}, {"answer", right}}, 404)["error"]
                  .get<std::string>(),
              Contains("name: problem flying-plate has no answer 'I9' (answers: I0, I, "));
+  // The name as the statement writes it; an entry that does not read is named counted from 1,
+  // without the command line's option.
+  CHECK(post_check(c, "flying-plate",
+                   {{"name", "I₀"}, {"answer", right}, {"variant", 5}})["correct"] == true);
+  CHECK_THAT(post_check(c, "four-masses",
+                        {{"name", "principal_moments"}, {"answer", "5/2 ma², 3, 4"}}, 400)["error"]
+                 .get<std::string>(),
+             StartsWith("answer, entry 1: cannot read expression") && !Contains("--answer"));
   // A part of several answers needs the name; neither part nor name is a bad request.
   CHECK_THAT(post_check(c, "flying-plate", {{"part", "a"}, {"answer", right}}, 404)["error"]
                  .get<std::string>(),
