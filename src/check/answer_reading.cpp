@@ -1238,14 +1238,11 @@ ReadAnswer read_whole(const std::string& typed, const sym::SymbolTable& table,
 
 // "(1, 0, 1)/√2, (1, 0, −1)/√2, (0, 1, 0)", "x̂ + ẑ, x̂ − ẑ, ŷ": a matrix's rows, as principal
 // axes are listed, each vector written as it reads alone (a factor outside its bracket, along
-// unit vectors), in brackets or not. nullopt where `typed` is no list of two or three such
-// vectors of one length, with one unit or none.
+// unit vectors), in one bracket or not (list_items, as the judge's listed axes). nullopt where
+// `typed` is no list of two or three such vectors of one length, with one unit or none.
 std::optional<ReadAnswer> rows_read_each(const std::string& typed, const sym::SymbolTable& table,
                                          const std::string& field) {
-  const std::string t = trim(typed);
-  std::vector<std::string> items = top_level(t, ',');
-  if (items.size() == 1 && (wrapped(t, '[') || wrapped(t, '(')))
-    items = top_level(t.substr(1, t.size() - 2), ',');
+  const std::vector<std::string> items = list_items(typed).items;
   if (items.size() < 2 || items.size() > 3) return std::nullopt;
   ReadAnswer rows;
   for (std::size_t k = 0; k < items.size(); ++k) {

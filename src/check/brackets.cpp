@@ -72,4 +72,12 @@ bool wrapped(const std::string& s, char open) {
   return s.size() >= 2 && s.front() == open && matching(s, 0) == s.size() - 1;
 }
 
+ListItems list_items(const std::string& s) {
+  const std::string t = trim(s);
+  ListItems list{top_level(t, ','), false};
+  if (list.items.size() == 1 && (wrapped(t, '[') || wrapped(t, '(') || wrapped(t, '{')))
+    list = {top_level(t.substr(1, t.size() - 2), ','), true};
+  return list;
+}
+
 }  // namespace wobble::check

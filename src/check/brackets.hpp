@@ -30,4 +30,13 @@ std::string joined(const std::vector<std::string>& items);
 /// Whether s is one bracket group, opened by `open`: "[a, b]" but not "[a] [b]".
 bool wrapped(const std::string& s, char open);
 
+/// A list's items: `s` split at its top-level commas, or, where one bracket ((), [] or {})
+/// holds it all, what is inside split so. "[a, b], [c, d]" and "[x + z, y]" are both lists of
+/// two; `bracketed` says whether one bracket held them.
+struct ListItems {
+  std::vector<std::string> items;
+  bool bracketed = false;
+};
+ListItems list_items(const std::string& s);
+
 }  // namespace wobble::check

@@ -274,27 +274,28 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const ReadAnswer& p,
   }
   if (proved)
     return {true, "correct: " + a.name + " (your expression simplifies to the key's)", {}};
-  for (const auto& pt : judging_points(ctx.values)) {
-    const auto [got, want] = at_point(ctx, a, p.value, key, pt);
+  const auto agree = [](const std::vector<double>& got, const std::vector<double>& want) {
     for (std::size_t i = 0; i < want.size(); ++i) {
-      if (std::abs(got[i] - want[i]) > kIdentityTolerance * std::max(1.0, std::abs(want[i]))) {
-        // Wrong: say why as for a number, from both values at the set parameters; or, where
-        // they agree there, that the expression is right at these values only ("(φ, 30°, ψ)"
-        // for (φ, θ, ψ) with θ set to 30°).
-        const auto [here, key_here] = at_point(ctx, a, p.value, key, ctx.values);
-        bool agree_here = true;
-        for (std::size_t k = 0; k < here.size(); ++k) {
-          agree_here = agree_here && std::abs(here[k] - key_here[k]) <=
-                                         kIdentityTolerance * std::max(1.0, std::abs(key_here[k]));
-        }
-        const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
-        return {false, "incorrect: " + a.name + " (your expression differs from the key's)",
-                agree_here ? std::vector<std::string>{"it gives the key's value at the set values "
-                                                      "but not at others: a number where the "
-                                                      "key has a symbol?"}
-                           : diagnose(j, key_unit, here, a.value.data)};
-      }
+      if (std::abs(got[i] - want[i]) > kIdentityTolerance * std::max(1.0, std::abs(want[i])))
+        return false;
     }
+    return true;
+  };
+  const std::vector<sym::Values> points = judging_points(ctx.values);  // the set values first
+  for (std::size_t n = 0; n < points.size(); ++n) {
+    const auto [got, want] = at_point(ctx, a, p.value, key, points[n]);
+    if (agree(got, want)) continue;
+    // Right at the set values but not here: a number where the key has a symbol ("(φ, 30°, ψ)"
+    // for (φ, θ, ψ) with θ set to 30°). Wrong at the set values: say why as for a number.
+    if (n > 0) {
+      return {false,
+              "incorrect: " + a.name + " (your expression differs from the key's)",
+              {"it gives the key's value at the set values but not at others: a number where the "
+               "key has a symbol?"}};
+    }
+    const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
+    return {false, "incorrect: " + a.name + " (your expression differs from the key's)",
+            diagnose(j, key_unit, got, a.value.data)};
   }
   return {true,
           "correct: " + a.name +
@@ -441,14 +442,12 @@ bool is_one_name(const std::string& side) {
 // -1, 0], [0, 0, 1]", "(1, 0, 1)/√2, ..", "[x̂ + ẑ, x̂ − ẑ, ŷ]", are its rows; a matrix of rows
 // in one bracket, "[[..], [..], [..]]" as the key prints one, either way.
 AxesLayout listed_layout(const std::string& text) {
-  const std::string t = trim(text);
-  std::vector<std::string> items = top_level(t, ',');
-  const bool whole = items.size() == 1 && (wrapped(t, '[') || wrapped(t, '(') || wrapped(t, '{'));
-  if (whole) items = top_level(t.substr(1, t.size() - 2), ',');
+  const auto [items, bracketed] = list_items(text);
   if (items.size() < 2 || items.size() > 3) return AxesLayout::rows_or_columns;
-  const bool matrix_literal = whole && std::all_of(items.begin(), items.end(), [](const auto& i) {
-                                return wrapped(i, '[') || wrapped(i, '(') || wrapped(i, '{');
-                              });
+  const bool matrix_literal =
+      bracketed && std::all_of(items.begin(), items.end(), [](const std::string& i) {
+        return wrapped(i, '[') || wrapped(i, '(') || wrapped(i, '{');
+      });
   return matrix_literal ? AxesLayout::rows_or_columns : AxesLayout::rows;
 }
 
@@ -519,10 +518,8 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows
   // of a list where one has a factor outside its bracket.
   if (const auto components = labelled_components(written, kField)) {
-    const bool columns =
-        components->size() > 2 && components->substr(components->size() - 2) == "^T";
-    return judge_one(ctx, a, *components, options,
-                     columns ? AxesLayout::columns : AxesLayout::rows);
+    return judge_one(ctx, a, components->text, options,
+                     components->columns ? AxesLayout::columns : AxesLayout::rows);
   }
   const auto parts = sides(approximations_as_equal(written), a.name);
   if (parts.size() == 1) return judge_one(ctx, a, parts[0], options);

@@ -184,7 +184,8 @@ std::optional<std::string> number_rows(const std::string& typed) {
   return "[" + joined(entries) + "]";
 }
 
-std::optional<std::string> labelled_components(const std::string& text, const std::string& field) {
+std::optional<LabelledComponents> labelled_components(const std::string& text,
+                                                      const std::string& field) {
   const std::vector<std::string> items = top_level(text, ',');
   // One item only where its labels are all the components: "I1 = I2 = I3 = 0.006" (a sphere).
   const bool one_chain = items.size() == 1;
@@ -225,7 +226,7 @@ std::optional<std::string> labelled_components(const std::string& text, const st
     const std::string& v = in_order[k];
     vector += (k ? ", " : "") + (columns ? "[" + v.substr(1, v.size() - 2) + "]" : v);
   }
-  return vector + (columns ? "]^T" : "]");
+  return LabelledComponents{vector + (columns ? "]^T" : "]"), columns};
 }
 
 std::string without_comments(const std::string& s) {

@@ -33,12 +33,20 @@ std::optional<std::string> number_rows(const std::string& typed);
 ///   matrices are 3x3, and n entries would be written out as n² (a hostile answer's thousands).
 std::string diagonals_written_out(const std::string& ascii, const std::string& field);
 
+/// Labelled components in the reading form, and whether they were vectors, a matrix's columns.
+struct LabelledComponents {
+  std::string text;
+  bool columns = false;
+};
+
 /// "[0.5, 1, 1.5]" for "x = 0.5, y = 1, z = 1.5" (the text as typed, Unicode or not), and equal
 /// components told once, "I₁ = I₂ = 0.00975, I₃ = 0.006" (labels of one word each before the
-/// value); nullopt for a text that is no list of labelled components.
+/// value); vectors labelled e1 = (..), e2 = (..), e3 = (..) as the columns they are, "[[..],
+/// ..]^T". nullopt for a text that is no list of labelled components.
 /// @throws InputError naming `field` for such a list whose labels are not one name for each of
 ///   x, y, z or 1, 2, 3 (its components could be put in no order).
-std::optional<std::string> labelled_components(const std::string& text, const std::string& field);
+std::optional<LabelledComponents> labelled_components(const std::string& text,
+                                                      const std::string& field);
 
 /// `typed` without its comments: each line up to a '#', or up to a '%' at its start or after a
 /// space, a tab or a ';' (MATLAB's and LaTeX's: "I0 = 7.2e-4; % kg m^2"; "50%" keeps its sign).
