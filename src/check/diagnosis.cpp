@@ -17,17 +17,6 @@ bool Finding::all_close(const std::vector<double>& v, const std::vector<double>&
   return true;
 }
 
-namespace {
-using Wrong = std::vector<WrongAnswer>;
-
-std::vector<double> times(const std::vector<double>& v, double factor) {
-  std::vector<double> out = v;
-  for (double& x : out) x *= factor;
-  return out;
-}
-
-// The entry's name in a message: by rank for moments (compared in increasing order), by axis
-// for a 3-vector, by position otherwise.
 std::string entry_name(const Answer& a, std::size_t i) {
   if (a.value.shape == Value::Shape::vector) {
     if (a.kind == AnswerKind::principal_moments && a.value.data.size() == 3) {
@@ -37,6 +26,15 @@ std::string entry_name(const Answer& a, std::size_t i) {
     return "entry " + (a.value.data.size() == 3 ? std::string(1, "xyz"[i]) : std::to_string(i + 1));
   }
   return fmt::format("entry ({}, {})", i / a.value.cols + 1, i % a.value.cols + 1);
+}
+
+namespace {
+using Wrong = std::vector<WrongAnswer>;
+
+std::vector<double> times(const std::vector<double>& v, double factor) {
+  std::vector<double> out = v;
+  for (double& x : out) x *= factor;
+  return out;
 }
 
 Wrong products_of_inertia_sign(const Answer& a, const Key&, const Unit&) {

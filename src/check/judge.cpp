@@ -13,6 +13,7 @@
 #include "check/axes_judge.hpp"
 #include "check/brackets.hpp"
 #include "check/diagnosis.hpp"
+#include "check/expression_dimension.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
 #include "check/written_forms.hpp"
@@ -257,6 +258,40 @@ Verdict judge_symbolic_axes(const Judge& j, const ReadAnswer& p) {
           {}};
 }
 
+// Why a wrong expression is wrong, where its dimension says it: "m R/4" is a mass x length, and
+// I0 is in kg m^2; "m + R" adds unlike quantities. Told only where the key's own entries scale
+// as its unit says (the parameters' units are then trusted), and entry by entry, the first
+// entry of another dimension named.
+std::optional<Verdict> dimension_verdict(const Context& ctx, const Answer& a,
+                                         const sym::ValueText& mine, const sym::ValueText& key,
+                                         const Unit& key_unit) {
+  // A zero has every dimension.
+  for (const auto& e : key.entries) {
+    if (e.is_zero()) continue;
+    const auto d = expression_dimension(e, ctx.key);
+    if (d && (d->mixed || d->dim != key_unit.dim)) return std::nullopt;
+  }
+  for (std::size_t i = 0; i < mine.entries.size(); ++i) {
+    if (mine.entries[i].is_zero()) continue;
+    const auto d = expression_dimension(mine.entries[i], ctx.key);
+    if (!d || (!d->mixed && d->dim == key_unit.dim)) continue;
+    const std::string what = mine.entries.size() == 1 ? "your expression" : entry_name(a, i);
+    if (d->mixed) {
+      return Verdict{false,
+                     "incorrect: " + a.name + " (your expression differs from the key's)",
+                     {what + " mixes dimensions: it adds unlike quantities, or takes a function "
+                             "such as sin or exp of a quantity with a unit"}};
+    }
+    const std::string has =
+        d->dim == std::array<int, 3>{0, 0, 0} ? " is " + d->words : "'s dimension is " + d->words;
+    return Verdict{false,
+                   "incorrect: " + a.name + " has the wrong dimension",
+                   {what + has + "; the answer is in " + (a.unit.empty() ? "no unit" : a.unit) +
+                    " (" + key_unit.dimension_words() + ")"}};
+  }
+  return std::nullopt;
+}
+
 Verdict judge_symbolic(const Context& ctx, const Answer& a, const ReadAnswer& p, const Options& opt,
                        AxesLayout layout) {
   const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
@@ -285,15 +320,21 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const ReadAnswer& p,
   for (std::size_t n = 0; n < points.size(); ++n) {
     const auto [got, want] = at_point(ctx, a, p.value, key, points[n]);
     if (agree(got, want)) continue;
-    // Right at the set values but not here: a number where the key has a symbol ("(φ, 30°, ψ)"
-    // for (φ, θ, ψ) with θ set to 30°). Wrong at the set values: say why as for a number.
-    if (n > 0) {
-      return {false,
-              "incorrect: " + a.name + " (your expression differs from the key's)",
-              {"it gives the key's value at the set values but not at others: a number where the "
-               "key has a symbol?"}};
-    }
     const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
+    const auto dimension = dimension_verdict(ctx, a, p.value, key, key_unit);
+    // Right at the set values but not here: a number where the key has a symbol ("(φ, 30°, ψ)"
+    // for (φ, θ, ψ) with θ set to 30°, "m 0.12²/4" for m R²/4), or a symbol where it has none
+    // (m² a²/6 for m a²/6 at m = 1 kg): another dimension, if it has one, is said too.
+    if (n > 0) {
+      Verdict v{false,
+                "incorrect: " + a.name + " (your expression differs from the key's)",
+                {"it gives the key's value at the set values but not at others: a number where "
+                 "the key has a symbol?"}};
+      if (dimension) v.feedback.push_back(dimension->feedback.at(0));
+      return v;
+    }
+    // Wrong at the set values: its dimension, else why as for a number.
+    if (dimension) return *dimension;
     return {false, "incorrect: " + a.name + " (your expression differs from the key's)",
             diagnose(j, key_unit, got, a.value.data)};
   }

@@ -1,0 +1,151 @@
+// The dimension of an expression, read off its structure (check/expression_dimension):
+// every closed form in the catalog has the dimension of its unit (a check of the key by
+// dimensional analysis, independent of how its values were found), and a student's expression
+// of another dimension, or one that mixes dimensions, is told so.
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "check/check_fixture.hpp"
+#include "check/expression_dimension.hpp"
+#include "check/judge.hpp"
+#include "solvers/catalog.hpp"
+#include "symbolic/units.hpp"
+#include "symbolic/value_text.hpp"
+
+using namespace wobble;
+using Fixture = wobble::test::CheckFixture;
+
+namespace {
+std::array<int, 3> dimension_of(const std::string& unit) {
+  return unit.empty() ? std::array<int, 3>{0, 0, 0} : parse_unit(unit, "test").dim;
+}
+
+// The first parameter with a unit of mass, length or time, for a factor that changes an
+// answer's dimension.
+const ParameterValue* dimensional_parameter(const Key& key) {
+  for (const auto& p : key.parameters) {
+    if (dimension_of(p.unit) != std::array<int, 3>{0, 0, 0}) return &p;
+  }
+  return nullptr;
+}
+
+std::array<int, 3> sum(std::array<int, 3> a, const std::array<int, 3>& b) {
+  for (std::size_t i = 0; i < 3; ++i) a[i] += b[i];
+  return a;
+}
+}  // namespace
+
+TEST_CASE("every closed form in the catalog has the dimension of its unit") {
+  int entries = 0, dimensional = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.symbolic.empty()) continue;
+        const auto value = sym::parse_value_text(a.symbolic, f.table, "key " + a.name);
+        for (const auto& e : value.entries) {
+          if (e.is_zero()) continue;  // a zero has every dimension
+          INFO(p.id << " " << a.name << " [" << a.unit << "]: " << e);
+          const auto d = check::expression_dimension(e, f.key);
+          REQUIRE(d.has_value());
+          REQUIRE_FALSE(d->mixed);
+          REQUIRE(d->dim == dimension_of(a.unit));
+          ++entries;
+          dimensional += *d->dim != std::array<int, 3>{0, 0, 0};
+        }
+      }
+    }
+  }
+  REQUIRE(entries > 280);      // the catalog's nonzero closed-form entries (304 today)
+  REQUIRE(dimensional > 170);  // most carry mass, length or time (184)
+}
+
+TEST_CASE("an expression of another dimension is told its dimension, one that mixes them too") {
+  int scaled = 0, mixed = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    const ParameterValue* x = dimensional_parameter(f.key);
+    if (x == nullptr) continue;
+    Unit times_x;
+    times_x.dim = dimension_of(x->unit);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.symbolic.empty() || a.value.data.size() != 1 || a.value.data[0] == 0.0) continue;
+        if (a.kind == AnswerKind::principal_moments) continue;
+        Unit wrong;
+        wrong.dim = sum(dimension_of(a.unit), times_x.dim);
+        const std::string product = "(" + a.symbolic + ")*" + x->name;
+        INFO(p.id << " " << a.name << ": " << product);
+        const check::Verdict v = f.check(a.name, product);
+        INFO(v.line);
+        REQUIRE_FALSE(v.correct);
+        // Right at the set values by chance where x is 1 in SI (rect-solid's m = 1 kg): that is
+        // said first, the dimension after it.
+        const bool by_chance = x->value == 1.0;
+        REQUIRE(v.line == "incorrect: " + a.name +
+                              (by_chance ? " (your expression differs from the key's)"
+                                         : " has the wrong dimension"));
+        REQUIRE(v.feedback.size() == (by_chance ? 2U : 1U));
+        CHECK(v.feedback.back().find("dimension is " + wrong.dimension_words() + ";") !=
+              std::string::npos);
+        ++scaled;
+        if (dimension_of(a.unit) == times_x.dim) continue;  // a sum of like quantities
+        const std::string total = "(" + a.symbolic + ") + " + x->name;
+        INFO(total);
+        const check::Verdict w = f.check(a.name, total);
+        REQUIRE_FALSE(w.correct);
+        CHECK(w.feedback.back().find("mixes dimensions") != std::string::npos);
+        ++mixed;
+      }
+    }
+  }
+  REQUIRE(scaled > 60);  // the catalog's nonzero scalar closed forms (68 today)
+  REQUIRE(mixed > 60);
+}
+
+TEST_CASE("what an expression's dimension says, in the plate's symbols") {
+  const Fixture f("flying-plate");
+  const auto said = [&](const std::string& text) {
+    const check::Verdict v = f.check("I0", text);
+    REQUIRE_FALSE(v.correct);
+    REQUIRE(v.feedback.size() == 1);
+    return v.line + " | " + v.feedback[0];
+  };
+  CHECK(said("m R/4") ==
+        "incorrect: I0 has the wrong dimension | your expression's dimension is mass x length; "
+        "the answer is in kg m^2 (mass x length^2)");
+  CHECK(said("sin(α)") ==
+        "incorrect: I0 has the wrong dimension | your expression is a pure number; the answer "
+        "is in kg m^2 (mass x length^2)");
+  CHECK(said("m R^2 sin(ω)") ==
+        "incorrect: I0 (your expression differs from the key's) | your expression mixes "
+        "dimensions: it adds unlike quantities, or takes a function such as sin or exp of a "
+        "quantity with a unit");
+  // Of the right dimension but wrong: the likely mistake, as for a number.
+  CHECK(said("m R^2/2") ==
+        "incorrect: I0 (your expression differs from the key's) | this is 2 times the answer: a "
+        "factor 2 is off (a 1/12 or 1/3 in a moment of inertia, a 1/2 in an energy?)");
+  // Right at the set values by chance (m = 1 kg would hide it; m² R²/4 is another dimension).
+  CHECK(said("m^2 R^2/4") ==
+        "incorrect: I0 has the wrong dimension | your expression's dimension is mass^2 x "
+        "length^2; the answer is in kg m^2 (mass x length^2)");
+  CHECK(said("sqrt(m) R") ==
+        "incorrect: I0 has the wrong dimension | your expression's dimension is mass^(1/2) x "
+        "length; the answer is in kg m^2 (mass x length^2)");
+  CHECK(said("m + R") ==
+        "incorrect: I0 (your expression differs from the key's) | your expression mixes "
+        "dimensions: it adds unlike quantities, or takes a function such as sin or exp of a "
+        "quantity with a unit");
+  // A number for R: right at the set values only, and so a mass.
+  const check::Verdict number = f.check("I0", "m 0.12^2/4");
+  REQUIRE(number.feedback.size() == 2);
+  CHECK(number.feedback[1] ==
+        "your expression's dimension is mass; the answer is in kg m^2 (mass x length^2)");
+  // A vector: the entry of another dimension is named.
+  const check::Verdict v = f.check("L0_body", "[m R^2 ω sin(α)/4, 0, m R ω cos(α)/2]");
+  REQUIRE_FALSE(v.correct);
+  REQUIRE(v.feedback.size() == 1);
+  CHECK(v.feedback[0] ==
+        "entry z's dimension is mass x length / time; the answer is in kg m^2/s (mass x length^2 "
+        "/ time)");
+}
