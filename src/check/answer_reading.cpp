@@ -1074,10 +1074,22 @@ std::string unit_after_term(const std::string& text, const std::string& coeffici
   }
 }
 
+// A coefficient as plain ASCII text: "19.3\,\mathrm{rad/s}\," as "19.3 rad/s"; "" if its
+// LaTeX does not read.
+std::string plain_coefficient(const std::string& coefficient, const sym::SymbolTable& table) {
+  if (!looks_like_latex(coefficient)) return sym::to_ascii(coefficient);
+  try {
+    return trim(latex_as_text(coefficient, table, "coefficient"));
+  } catch (const InputError&) {
+    return "";
+  }
+}
+
 // "0.5 i + j - 1.5 k", "(0.5 x̂ + 1.5 ẑ) m", "î/2 + (a/2) ĵ": a sum of terms, each a coefficient
 // times one unit vector, written as "[0.5, 1, -1.5]" (with the unit after). A unit after the
 // last term only is the whole sum's, as the bracketed form's ("2.59 î + 19.3 k̂ rad/s"); after
-// every term, each component's ("2.59 î rad/s + 19.3 k̂ rad/s"). "" if `typed` is no such sum (a
+// every term, each component's ("2.59 î rad/s + 19.3 k̂ rad/s", or before each unit vector,
+// "2.59 rad/s î + 19.3 rad/s k̂"). "" if `typed` is no such sum (a
 // unit vector inside a bracket or function, two in one term, one divided by; a unit after
 // some terms but not all, or on a component told twice).
 std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& table) {
@@ -1135,13 +1147,22 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
       if (term[i] == '(' || term[i] == '[') ++inner;
       if (term[i] == ')' || term[i] == ']') --inner;
     }
-    const std::string before = trim(term.substr(0, at));
+    std::string before = trim(term.substr(0, at));
     std::string after = trim(term.substr(at + 2));
     if (inner != 0 || !is_factor_between(before, after)) return false;
     const std::size_t n = static_cast<std::size_t>(axis % 3);
     // "19.3 k̂ rad/s": a unit after a coefficient, not a factor of it.
-    const std::string term_unit = before.empty() ? "" : unit_after_term(after, before, table);
+    std::string term_unit = before.empty() ? "" : unit_after_term(after, before, table);
     if (!term_unit.empty()) after.clear();
+    if (term_unit.empty() && after.empty()) {
+      // "19.3 rad/s k̂", as "F = 5 N x̂" is written: a unit between a number and its unit
+      // vector (after an expression in the symbols, "m R² ω/2 ê₃", the letters stay factors).
+      const auto [number, unit_text] = split_value_unit(plain_coefficient(before, table));
+      if (!unit_text.empty() && !number.empty() && !has_identifier_of(number, table)) {
+        before = number;
+        term_unit = unit_text;
+      }
+    }
     ++terms;
     terms_with_unit += term_unit.empty() ? 0 : 1;
     last_has_unit = !term_unit.empty();

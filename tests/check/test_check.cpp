@@ -431,7 +431,8 @@ TEST_CASE("components along unit vectors read as a vector") {
   }
 }
 
-TEST_CASE("a unit after the last unit vector is the sum's, after every one each component's") {
+TEST_CASE(
+    "a unit after the last unit vector is the sum's, after (or before) each, the component's") {
   const Fixture plate("flying-plate");
   const std::vector<double>& key = plate.answer("L0_body").value.data;  // (x, 0, z) kg m²/s
   const std::string x = fmt::format("{:.6g}", key.at(0)), z = fmt::format("{:.6g}", key.at(2));
@@ -446,17 +447,26 @@ TEST_CASE("a unit after the last unit vector is the sum's, after every one each 
         // and in LaTeX, the unit in \mathrm or \text, brackets sized by \left \right
         x + "\\,\\hat{x} + " + z + "\\,\\hat{z}\\ \\mathrm{kg\\,m^{2}/s}",
         x + "\\,\\mathbf{i}\\,\\text{kg m^2/s} + " + z + "\\,\\mathbf{k}\\,\\text{kg m^2/s}",
-        "\\left(" + x + " \\hat{e}_1 + " + z + " \\hat{e}_3\\right) \\mathrm{kg\\,m^2\\,s^{-1}}"}) {
+        "\\left(" + x + " \\hat{e}_1 + " + z + " \\hat{e}_3\\right) \\mathrm{kg\\,m^2\\,s^{-1}}",
+        // before each unit vector, as "F = 5 N x̂" is written; in LaTeX and siunitx too
+        x + " kg m²/s î + " + z + " kg m²/s k̂", x + " kg m^2 s^-1 e₁ + " + z + " kg m^2 s^-1 e₃",
+        x + "\\,\\mathrm{kg\\,m^2/s}\\,\\hat{x} + " + z + "\\,\\mathrm{kg\\,m^2/s}\\,\\hat{z}",
+        "\\qty{" + x + "}{kg.m^2/s}\\,\\hat{x} + \\qty{" + z + "}{kg.m^2/s}\\,\\hat{z}"}) {
     INFO(same);
     REQUIRE(plate.check("L0_body", same).correct);
   }
   // The unit is the whole sum's: in g cm²/s only the z component is right.
   REQUIRE_FALSE(plate.check("L0_body", x + " î + " + gram + " k̂ g cm²/s").correct);
   REQUIRE_FALSE(plate.check("L0_body", x + " î - " + z + " k̂ kg m²/s").correct);
+  REQUIRE_FALSE(plate.check("L0_body", x + " kg m²/s î - " + z + " kg m²/s k̂").correct);
+  // Each component in a unit of its own.
+  REQUIRE(plate.check("L0_body", x + " kg m²/s î + " + gram + " g cm²/s k̂").correct);
+  REQUIRE_FALSE(plate.check("L0_body", x + " kg m²/s î + " + z + " g cm²/s k̂").correct);
   // After some terms but not the last, twice, or inside and outside brackets: refused.
   for (const std::string& none :
        {x + " î kg m²/s + " + z + " k̂", x + " î + " + z + " k̂ kg m²/s + 0 k̂ kg m²/s",
-        "(" + x + " î + " + z + " k̂ kg m²/s) kg m²/s"}) {
+        "(" + x + " î + " + z + " k̂ kg m²/s) kg m²/s", x + " kg m²/s î + " + z + " k̂",
+        x + " kg m²/s î + " + z + " kg m²/s k̂ kg m²/s"}) {
     INFO(none);
     REQUIRE_THROWS_WITH(plate.check("L0_body", none),
                         Catch::Contains("cannot read the components along unit vectors (î, k̂)"));

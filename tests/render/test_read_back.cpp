@@ -396,7 +396,7 @@ TEST_CASE("every closed form with its rates in Leibniz's notation reads back, ev
 namespace {
 // Where the unit goes: "(0.0019 e₁ + 0.014 e₃) kg m²/s", "0.0019 e₁ + 0.014 e₃ kg m²/s" or
 // "0.0019 e₁ kg m²/s + 0.014 e₃ kg m²/s".
-enum class UnitPlace { bracketed, after_last, after_each };
+enum class UnitPlace { bracketed, after_last, after_each, before_each };
 
 // A 3-vector answer as a student writes it along unit vectors, spelled by `unit_vector` (its
 // axis 0, 1, 2 in, the text out), the unit placed by `place`, the zero components left out as
@@ -414,12 +414,15 @@ std::string along_unit_vectors(const Answer& a,
   for (std::size_t k = 0; k < 3; ++k) {
     const double x = flip && k == largest ? -d[k] : d[k];
     if (x == 0.0) continue;
-    const std::string size =
-        format_number(std::abs(x)) + " " + unit_vector(k) +
-        (place == UnitPlace::after_each && !a.unit.empty() ? " " + a.unit : "");
+    const std::string unit = a.unit.empty() ? "" : " " + a.unit;
+    const std::string size = place == UnitPlace::before_each
+                                 ? format_number(std::abs(x)) + unit + " " + unit_vector(k)
+                                 : format_number(std::abs(x)) + " " + unit_vector(k) +
+                                       (place == UnitPlace::after_each ? unit : "");
     sum += sum.empty() ? (x < 0 ? "-" : "") + size : (x < 0 ? " - " : " + ") + size;
   }
-  if (a.unit.empty() || place == UnitPlace::after_each) return sum;
+  if (a.unit.empty() || place == UnitPlace::after_each || place == UnitPlace::before_each)
+    return sum;
   return place == UnitPlace::bracketed ? "(" + sum + ") " + a.unit : sum + " " + a.unit;
 }
 }  // namespace
@@ -481,13 +484,14 @@ TEST_CASE("every problem's principal axes listed one by one read back, with a fa
 
 TEST_CASE("every vector answer along unit vectors with its unit after the last term or each") {
   // "2.59 î + 19.3 k̂ rad/s" as people write it without the brackets; the unit after each term
-  // as a component's.
+  // as a component's, or before each unit vector ("2.59 rad/s î + 19.3 rad/s k̂", as "5 N x̂").
   const std::vector<std::function<std::string(std::size_t)>> spellings{
       [](std::size_t k) { return "e" + std::string("₁₂₃").substr(3 * k, 3); },
       [](std::size_t k) { return std::string("îĵk̂").substr(k < 2 ? 2 * k : 4, k < 2 ? 2 : 3); }};
   int right = 0, wrong = 0;
   for (const auto& spelling : spellings) {
-    for (const UnitPlace place : {UnitPlace::after_last, UnitPlace::after_each}) {
+    for (const UnitPlace place :
+         {UnitPlace::after_last, UnitPlace::after_each, UnitPlace::before_each}) {
       right += forms_judged([&](const Answer& a) {
         const std::string text = along_unit_vectors(a, spelling, false, place);
         return text.empty() ? std::vector<std::string>{} : std::vector<std::string>{text};
@@ -500,7 +504,7 @@ TEST_CASE("every vector answer along unit vectors with its unit after the last t
           false);
     }
   }
-  REQUIRE(right > 4 * 30);  // the catalog's nonzero 3-vectors, two spellings, two places
+  REQUIRE(right > 6 * 30);  // the catalog's nonzero 3-vectors, two spellings, three places
   REQUIRE(wrong == right);
 }
 
