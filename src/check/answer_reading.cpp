@@ -1412,16 +1412,32 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
         }
         // "0.16 parsecs": throws its error; not for a bracket ("1/2 [a, b": the reader says),
         // nor for mathematics ("2π/Ω", Ω no symbol: the reader names Ω, not a unit "pi/Omega").
+        // Nor for what follows an operator ("I1*(thetadot^2) + omega3": no unit starts so), nor
+        // a Greek letter with an index ("omega3").
         const auto ids = identifiers(right);
-        const bool mathematics = std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
-          const std::string name = right.substr(id.first, id.second);
-          return name == "pi" || name == "Pi" || sym::is_function_name(name) ||
-                 sym::greek_letters().count(ascii_lower(name)) > 0;
-        });
+        const bool mathematics =
+            right.find_first_of("+-*/^=") == 0 ||
+            std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
+              std::string name = right.substr(id.first, id.second);
+              if (name == "pi" || name == "Pi" || sym::is_function_name(name)) return true;
+              while (!name.empty() &&
+                     (std::isdigit(static_cast<unsigned char>(name.back())) || name.back() == '_'))
+                name.pop_back();
+              return sym::greek_letters().count(ascii_lower(name)) > 0;
+            });
         // Nor for a list ("5/2 ma^2, 3ma^2, ..": no unit has a comma).
         if (left_reads && !mathematics && right.find_first_of("([{") != 0 &&
             right.find(',') == std::string::npos)
           (void)parse_unit(right, field);
+      }
+      // Where the stars written in leave a name the problem does not have ("½I₁(..) + ½I₃ω₃²",
+      // ω₃ no symbol), that name is what is wrong, not the stars.
+      if (const std::string written = starred(value, table); written != value) {
+        try {
+          (void)sym::parse_value_text(layout(written), table, field);
+        } catch (const InputError& x) {
+          if (std::string(x.what()).find("undefined symbol") != std::string::npos) throw;
+        }
       }
       const bool glued = !value.empty() && std::isdigit(static_cast<unsigned char>(value[0])) &&
                          value.find(' ') == std::string::npos &&

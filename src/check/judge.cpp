@@ -81,11 +81,49 @@ std::string textbook_name_words(const std::string& name) {
   return "";
 }
 
-// " (I0 is the answer to part (a): write it in the problem's symbols)" where `typed` names
-// another answer of the key ("I₀ diag(1, 1, 2)", as question (a) writes I), or "". An answer
-// is no symbol: reading it as its key's value would let a name stand in for the working. A
-// principal moment or a component of ω where the problem has no such symbol is named as such.
-std::string answer_name_hint(const Context& ctx, const std::string& typed) {
+// " (I0 is the answer to part (a): write it in the problem's symbols)" where `name` is another
+// answer of the key, or "". An answer is no symbol: reading it as its key's value would let a
+// name stand in for the working. A principal moment or a component of ω where the problem has
+// no such symbol is named as such.
+std::string name_hint(const Context& ctx, const std::string& name) {
+  if (ctx.table.contains(name)) return "";
+  std::vector<std::string> named;  // "Omega" for Omega_body_rate, as a book writes Ω
+  for (const auto& part : ctx.key.parts) {
+    for (const auto& answer : part.answers) {
+      if (answer.name == name) {
+        return fmt::format(" ({} is the answer to part ({}): write it in the problem's symbols)",
+                           name, part.id);
+      }
+      if (answer.name.rfind(name + "_", 0) == 0)
+        named.push_back(fmt::format("{} (part ({}))", answer.name, part.id));
+    }
+  }
+  if (!named.empty()) {
+    return fmt::format(" ({} names {} here: write it in the problem's symbols)", name,
+                       named.size() == 1
+                           ? "the answer " + named[0]
+                           : "the answers " + fmt::format("{}", fmt::join(named, ", ")));
+  }
+  const std::string words = textbook_name_words(name);
+  if (words.empty()) return "";
+  return fmt::format(" ({}, {}, is no symbol here: write it in the problem's symbols)", name,
+                     words);
+}
+
+// The hint of the first name in `typed` that has one ("I₀ diag(1, 1, 2)", as question (a)
+// writes I), the name the reader found undefined first (in "½I₃ω₃²" the text runs I₃ and ω₃
+// together; the reader, its stars written in, names ω₃).
+std::string answer_name_hint(const Context& ctx, const std::string& typed,
+                             const std::string& message) {
+  const std::string undefined = "undefined symbol '";
+  if (const auto at = message.find(undefined); at != std::string::npos) {
+    const auto from = at + undefined.size();
+    const auto to = message.find('\'', from);
+    if (to != std::string::npos) {
+      const std::string hint = name_hint(ctx, message.substr(from, to - from));
+      if (!hint.empty()) return hint;
+    }
+  }
   const std::string ascii = sym::to_ascii(typed);
   for (std::size_t i = 0; i < ascii.size();) {
     if (!std::isalpha(static_cast<unsigned char>(ascii[i])) ||
@@ -97,30 +135,9 @@ std::string answer_name_hint(const Context& ctx, const std::string& typed) {
     while (end < ascii.size() &&
            (std::isalnum(static_cast<unsigned char>(ascii[end])) || ascii[end] == '_'))
       ++end;
-    const std::string name = ascii.substr(i, end - i);
+    const std::string hint = name_hint(ctx, ascii.substr(i, end - i));
+    if (!hint.empty()) return hint;
     i = end;
-    if (ctx.table.contains(name)) continue;
-    std::vector<std::string> named;  // "Omega" for Omega_body_rate, as a book writes Ω
-    for (const auto& part : ctx.key.parts) {
-      for (const auto& answer : part.answers) {
-        if (answer.name == name) {
-          return fmt::format(" ({} is the answer to part ({}): write it in the problem's symbols)",
-                             name, part.id);
-        }
-        if (answer.name.rfind(name + "_", 0) == 0)
-          named.push_back(fmt::format("{} (part ({}))", answer.name, part.id));
-      }
-    }
-    if (!named.empty()) {
-      return fmt::format(" ({} names {} here: write it in the problem's symbols)", name,
-                         named.size() == 1
-                             ? "the answer " + named[0]
-                             : "the answers " + fmt::format("{}", fmt::join(named, ", ")));
-    }
-    const std::string words = textbook_name_words(name);
-    if (!words.empty())
-      return fmt::format(" ({}, {}, is no symbol here: write it in the problem's symbols)", name,
-                         words);
   }
   return "";
 }
@@ -502,7 +519,8 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
       return read_answer(text, ctx.table, kField);
     } catch (const InputError& e) {
       // "15,5deg" reads as two entries, one without a unit: say what was more likely meant.
-      const std::string hint = misreading_hint(a, text, std::nullopt) + answer_name_hint(ctx, text);
+      const std::string hint =
+          misreading_hint(a, text, std::nullopt) + answer_name_hint(ctx, text, e.what());
       if (hint.empty()) throw;
       throw InputError(e.what() + hint);
     }

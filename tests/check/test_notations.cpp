@@ -519,6 +519,19 @@ TEST_CASE("a textbook formula's principal moment or ω component is named as suc
   REQUIRE(asym.check("energy", "(I₁ω₁² + I₂ω₂² + I₃ω₃²)/2").correct);
   REQUIRE_THROWS_WITH(top.check("p_psi", "I4 psidot0"), !Catch::Contains("principal moment"));
   REQUIRE_THROWS_WITH(plate.check("I0", "M R^2/4"), !Catch::Contains("principal moment"));
+  // The undefined name is what is wrong, not the stars a bracket against a symbol needs, nor a
+  // unit "+ omega3"; where the text runs I₃ and ω₃ together, the reader's name gets the hint.
+  const Fixture euler("euler-angles");
+  for (const char* text : {"½I₁(θ̇² + φ̇² sin²θ) + ½I₃ω₃²", "I1*(thetadot^2) + omega3"}) {
+    INFO(text);
+    REQUIRE_THROWS_WITH(euler.check("kinetic_energy", text),
+                        Catch::Contains("undefined symbol 'omega3'") &&
+                            Catch::Contains("omega3, a component of ω along the body's axes") &&
+                            !Catch::Contains("not a function") && !Catch::Contains("unit"));
+  }
+  REQUIRE(euler.check("kinetic_energy", "½I₁(θ̇² + φ̇² sin²θ) + ½I₃(ψ̇ + φ̇ cos θ)²").correct);
+  REQUIRE_THROWS_WITH(plate.check("I0", "0.16 parsecs"),
+                      Catch::Contains("cannot read the unit 'parsecs'"));
 }
 
 TEST_CASE("a duration told in parts, 303 days 15 h, reads as their sum") {
