@@ -38,7 +38,8 @@ std::vector<double> times(const std::vector<double>& v, double factor) {
 }
 
 Wrong products_of_inertia_sign(const Answer& a, const Key&, const Unit&) {
-  if (a.value.shape != Value::Shape::matrix || a.value.data.size() != 9) return {};
+  // An inertia tensor's, not a rotation's: the sign of its off-diagonal entries is no convention.
+  if (a.kind != AnswerKind::tensor || a.value.data.size() != 9) return {};
   std::vector<double> flipped = a.value.data;
   for (std::size_t i = 0; i < 9; ++i) {
     if (i / 3 != i % 3) flipped[i] = -flipped[i];
@@ -204,6 +205,46 @@ std::optional<std::string> power_of_ten_off(const Finding& f) {
       exponent > 0 ? power_words(exponent) + " times" : "1/" + power_words(-exponent) + " of",
       example);
 }
+// The right entries in other places: a matrix's transpose (rows for columns; for a rotation,
+// its inverse), or a vector's entries in another order (x for z). Not for principal moments,
+// judged in any order.
+std::optional<std::string> entries_moved(const Finding& f) {
+  const Value& shape = f.answer.value;
+  const auto& k = f.expected;
+  if (f.answer.kind == AnswerKind::principal_moments || k.size() != f.typed.size()) {
+    return std::nullopt;
+  }
+  if (shape.shape == Value::Shape::matrix && shape.rows == shape.cols && k.size() > 1) {
+    std::vector<double> transposed(k.size());
+    for (std::size_t r = 0; r < shape.rows; ++r) {
+      for (std::size_t c = 0; c < shape.cols; ++c)
+        transposed[c * shape.cols + r] = k[r * shape.cols + c];
+    }
+    if (f.all_close(f.typed, transposed)) {
+      return "this is the transpose of the answer: its rows are the answer's columns (for a "
+             "rotation, the inverse one: from the body to space, or back?)";
+    }
+    return std::nullopt;
+  }
+  if (shape.shape != Value::Shape::vector || k.size() != 3) return std::nullopt;
+  std::array<std::size_t, 3> order{0, 1, 2};
+  while (std::next_permutation(order.begin(), order.end())) {
+    std::vector<double> moved(3);
+    for (std::size_t i = 0; i < 3; ++i) moved[i] = k[order[i]];
+    if (!f.all_close(f.typed, moved)) continue;
+    std::vector<std::size_t> out_of_place;
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (order[i] != i) out_of_place.push_back(i);
+    }
+    if (out_of_place.size() == 2) {
+      return fmt::format("the right entries in another order: {} and {} are swapped",
+                         entry_name(f.answer, out_of_place[0]),
+                         entry_name(f.answer, out_of_place[1]));
+    }
+    return "the right entries in another order (the axes relabelled?)";
+  }
+  return std::nullopt;
+}
 }  // namespace
 
 std::vector<std::string> diagnose(const Finding& f) {
@@ -211,6 +252,7 @@ std::vector<std::string> diagnose(const Finding& f) {
     if (f.all_close(f.typed, wrong.values)) return {wrong.message};
   }
   if (auto message = power_of_ten_off(f)) return {*message};
+  if (auto message = entries_moved(f)) return {*message};
   const auto& v = f.typed;
   const auto& k = f.expected;
   std::vector<std::string> out;
@@ -221,6 +263,12 @@ std::vector<std::string> diagnose(const Finding& f) {
   }
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (f.close(v[i], k[i])) continue;
+    // One component's sign turned (a cross product's term, a minus lost in a matrix): its size
+    // is right, and 200% off would hide that.
+    if (k[i] != 0.0 && f.close(-v[i], k[i])) {
+      out.push_back(entry_name(f.answer, i) + " has the wrong sign");
+      continue;
+    }
     out.push_back(fmt::format("{} is off by {:.3g}%", entry_name(f.answer, i),
                               100 * std::abs(v[i] - k[i]) / (k[i] != 0 ? std::abs(k[i]) : f.zero_scale)));
   }

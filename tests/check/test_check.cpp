@@ -674,7 +674,8 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
   key.parts.push_back({"a", "?", {rate, L_body, L_space, I, space_rate}, {}, {}});
   const auto close = [](double v, double k) { return std::abs(v - k) <= 0.01 * std::abs(k) + 1e-12; };
   const auto first = [&](const Answer& a, std::vector<double> typed, const std::string& unit) {
-    const Finding f{a, key, std::move(typed), a.value.data, parse_unit(unit, "unit"), close, 1.0};
+    const Unit u = unit.empty() ? Unit{} : parse_unit(unit, "unit");  // "": a pure number
+    const Finding f{a, key, std::move(typed), a.value.data, u, close, 1.0};
     return wobble::check::diagnose(f).at(0);
   };
   CHECK_THAT(first(key.parts[0].answers[3], {2, 1, 0, 1, 2, 0, 0, 0, 3}, "kg m^2"),
@@ -712,6 +713,27 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
   // One entry a power of ten off and the others right is no such mistake.
   CHECK_THAT(first(key.parts[0].answers[1], {10.0, 0.0, 3.0}, "kg m^2/s"),
              Catch::Contains("entry x is off by 900%"));
+  // One entry's sign turned: said so, not "off by 200%"; a zero entry has no sign to turn.
+  CHECK_THAT(first(key.parts[0].answers[1], {-1.0, 0.0, 3.0}, "kg m^2/s"),
+             Catch::Equals("entry x has the wrong sign"));
+  CHECK_THAT(first(key.parts[0].answers[1], {-1.0, 0.0, 3.3}, "kg m^2/s"),
+             Catch::Equals("entry x has the wrong sign"));  // and entry z, off by 10%, next
+  CHECK_THAT(first(key.parts[0].answers[1], {1.0, -0.5, 3.0}, "kg m^2/s"),
+             !Catch::Contains("sign"));
+  // The right entries in other places: swapped, in a cycle, a matrix transposed.
+  CHECK_THAT(first(key.parts[0].answers[2], {2.5, 0.5, 2.0}, "kg m^2/s"),
+             Catch::Equals("the right entries in another order: entry x and entry z are swapped"));
+  CHECK_THAT(first(key.parts[0].answers[2], {0.5, 2.5, 2.0}, "kg m^2/s"),
+             Catch::Equals("the right entries in another order (the axes relabelled?)"));
+  Answer R;
+  R.name = "R";
+  R.kind = AnswerKind::matrix;
+  R.value = Value::matrix(3, 3, {0, -1, 0, 1, 0, 0, 0, 0, 1});  // a quarter turn about z
+  CHECK_THAT(first(R, {0, 1, 0, -1, 0, 0, 0, 0, 1}, ""),
+             Catch::StartsWith("this is the transpose of the answer"));
+  CHECK_THAT(first(R, {0, 1, 0, -1, 0, 0, 0, 0, -1}, ""), !Catch::Contains("transpose"));
+  // Its off-diagonal signs turned are no products of inertia.
+  CHECK_THAT(first(R, {0, 1, 0, -1, 0, 0, 0, 0, 1}, ""), !Catch::Contains("inertia"));
   REQUIRE(wobble::check::known_mistakes().size() == 8);
 }
 
