@@ -101,6 +101,14 @@ class Reader {
 
   std::map<std::string, Powers> parameters_;
 };
+
+bool has_symbol(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) return true;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (has_symbol(e.op(i))) return true;
+  }
+  return false;
+}
 // As Unit::dimension_words, with fractions: "mass^(1/2) x length".
 std::string words(const Powers& powers) {
   static const char* word[] = {"mass", "length", "time"};
@@ -133,6 +141,9 @@ std::optional<ExpressionDimension> expression_dimension(const GiNaC::ex& e, cons
     }
     parameters.emplace(p.name, powers);
   }
+  // A plain number's unit is not written ("[m R² ω sin α/4, 0, 0.0139]"): its dimension is not
+  // known.
+  if (!has_symbol(e)) return std::nullopt;
   const auto d = Reader(std::move(parameters))(e);
   if (!d) return std::nullopt;
   ExpressionDimension out;

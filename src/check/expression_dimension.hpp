@@ -28,7 +28,8 @@ struct ExpressionDimension {
 };
 
 /// The dimension of `e`, each parameter's unit as `key` lists it. Nothing when it cannot be
-/// told: a symbol that is no parameter of the key or a unit that does not read.
+/// told: `e` names no parameter (a plain number, whose unit is not written), a symbol that is
+/// no parameter of the key, or a unit that does not read.
 std::optional<ExpressionDimension> expression_dimension(const GiNaC::ex& e, const Key& key);
 
 }  // namespace wobble::check
