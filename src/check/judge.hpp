@@ -14,7 +14,8 @@
 /// degenerate pair may be any unit vector of its plane. Expressions are right when their
 /// difference from the key's closed form simplifies to zero (GiNaC's normal form), or, since
 /// that cannot prove trigonometric identities, when they equal it at the set values and at three
-/// more parameter points (each parameter scaled by 1.13, 0.87, 1.29 in turn), to 1e-9.
+/// more parameter points (each parameter scaled by 1.13, 0.87, 1.29 or their reciprocals, in an
+/// order of its own, so that no two of up to twelve parameters scale alike), to 1e-9.
 /// A wrong answer gets the likely mistake when it matches one (a reversed sign, products of
 /// inertia with the wrong sign, degrees for radians, rev/s for rad/s, a factor 2, 4 or 12,
 /// another answer of the key such as the body-frame vector for the space-frame one), else

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <catch2/catch.hpp>
+#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "check/check_fixture.hpp"
 #include "check/judge.hpp"
 #include "core/input_error.hpp"
+#include "solvers/catalog.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 #include "temp_files.hpp"
@@ -36,6 +38,24 @@ std::string printed_diagonal(const Fixture& f) {
     }
   }
   throw std::logic_error("no diag(..) in the key's steps");
+}
+
+// `text` with each whole-word occurrence of the symbol `name` replaced by "(value)".
+std::string with_symbol_replaced(const std::string& text, const std::string& name,
+                                 const std::string& value) {
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const bool here = text.compare(i, name.size(), name) == 0 && (i == 0 || !word(text[i - 1])) &&
+                      (i + name.size() == text.size() || !word(text[i + name.size()]));
+    if (here) {
+      out += "(" + value + ")";
+      i += name.size();
+    } else {
+      out += text[i++];
+    }
+  }
+  return out;
 }
 
 // The diagonal of a 3x3 key, each entry times `factor`, formatted by `f`.
@@ -642,13 +662,84 @@ TEST_CASE("an expression right at the set values only is told so, not named anot
   const auto number_for_symbol = plate.check("I0", "m 0.12^2/4");
   REQUIRE_FALSE(number_for_symbol.correct);
   REQUIRE_THAT(number_for_symbol.feedback.at(0),
-               Catch::Contains("at the set values but not at others"));
+               Catch::Equals("it gives the key's value at the set values but not at others: 0.12 "
+                             "is the value of R: write the symbol"));
+  // Degrees (in LaTeX too), two numbers, a value two parameters share, and no number at all.
+  REQUIRE_THAT(plate.check("Omega_body_rate", "\\omega\\cos 15^\\circ").feedback.at(0),
+               Catch::EndsWith("15° is the value of α (alpha): write the symbol"));
+  // 0.5 is both I₃ and θ̇ here: the one that makes the key's expression is named.
+  const Fixture phy711("euler-angles-phy711");
+  REQUIRE_THAT(phy711.check("L_primed", "[-α̇ I₁ sin β, β̇ I₁, 0.5 (α̇ cos β + γ̇)]").feedback.at(0),
+               Catch::EndsWith("0.5 is the value of I₃ (I3): write the symbol"));
+  // Rounded: right at the set values only to a number's tolerance.
+  REQUIRE_THAT(plate.check("Omega_body_rate", "ω cos(0.2618)").feedback.at(0),
+               Catch::StartsWith("it gives the key's value at the set values only as a number "
+                                 "rounded would") &&
+                   Catch::EndsWith("0.2618 is the value of α (alpha), rounded: write the symbol"));
+  // Within a number's tolerance but no number to blame: half of the top's energy, the small
+  // I₁ term left out (0.5% of it), is no "off by 0.5%".
+  const Fixture euler_top("euler-angles");
+  REQUIRE_THAT(euler_top.check("kinetic_energy", "½I₃(ψ̇ + φ̇ cos θ)²").feedback.at(0),
+               Catch::Contains("a small term left out"));
+  // Where no parameter has the number's value (m/0.1 is 2 here), no symbol is named.
+  REQUIRE_THAT(
+      plate.check("I0", "m R^2/4 * (m/0.1)/2").feedback.at(0),
+      Catch::EndsWith("a number, or a symbol of the same value, where the key has a symbol?"));
+  // One value for every place a number stands: a and m are both 0.3 in the racket, and a is
+  // the one whose symbol makes the key's coefficients.
+  const Fixture racket("tennis-racket");
+  REQUIRE_THAT(racket
+                   .check("euler_coefficients",
+                          "[-(b + c)(b - c)/(b² + c²), (0.3 + c)(0.3 - c)/(0.3² + c²), "
+                          "-(0.3 + b)(0.3 - b)/(0.3² + b²)]")
+                   .feedback.at(0),
+               Catch::EndsWith("0.3 is the value of a: write the symbol"));
+  const Fixture top("heavy-top");
+  REQUIRE_THAT(top.check("p_psi", "M*0.05^2*150/2").feedback.at(0),
+               Catch::EndsWith("0.05 is the value of R, 150 is the value of ψ̇₀ (psidot0): write "
+                               "the symbols"));
   // angles_back_zyz is (φ, θ, ψ) too: a value equal to this answer's is no taking of another.
   const Fixture euler("euler-angles");
   const auto thirty = euler.check("angles_phy711", "(φ, 30°, ψ)");
   REQUIRE_FALSE(thirty.correct);
   REQUIRE_THAT(thirty.feedback.at(0), !Catch::Contains("angles_back_zyz"));
   REQUIRE_THAT(plate.check("I0", "m R^2/2").feedback.at(0), Catch::Contains("factor 2 is off"));
+}
+
+TEST_CASE("every closed form with a parameter's value for its symbol is told which symbol") {
+  // Each parameter a closed form names, replaced by its value as the key prints it: right at
+  // the set values only, and the message names the parameter.
+  int told = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.symbolic.empty() || a.kind == AnswerKind::principal_axes) continue;
+        for (const auto& parameter : f.key.parameters) {
+          const std::string number = format_number(parameter.value);
+          // A single digit is taken for a coefficient, not a value (symbol_values.hpp).
+          if (parameter.value == 0.0 || number.size() == 1) continue;
+          const std::string text = with_symbol_replaced(a.symbolic, parameter.name, number);
+          if (text == a.symbolic) continue;
+          INFO(p.id << " " << a.name << ": " << text);
+          const check::Verdict v = f.check(a.name, text);
+          if (v.correct) continue;  // no dependence on it (a ratio where it cancels)
+          REQUIRE_FALSE(v.feedback.empty());
+          // The value to 10 digits: right at the set values to the expression's 1e-9 (then
+          // wrong at others), or within a number's tolerance only.
+          REQUIRE_THAT(v.feedback[0],
+                       (Catch::StartsWith("it gives the key's value at the set values but not at "
+                                          "others: ") ||
+                        Catch::StartsWith("it gives the key's value at the set values only as a "
+                                          "number rounded would")) &&
+                           Catch::Contains(number + " is the value of ") &&
+                           Catch::Contains(parameter.name));
+          ++told;
+        }
+      }
+    }
+  }
+  REQUIRE(told > 250);
 }
 
 TEST_CASE("equal components told once, I₁ = I₂ = .., and a symbol glued to a number over one") {

@@ -875,8 +875,8 @@ TEST_CASE("a unit after each number of a vector or matrix reads back, every answ
   const auto thirty = euler.check("angles_phy711", "(φ, 30°, ψ)");
   REQUIRE_FALSE(thirty.correct);
   REQUIRE_THAT(thirty.feedback.at(0),
-               Catch::Equals("it gives the key's value at the set values but not at others: a "
-                             "number where the key has a symbol?"));
+               Catch::Equals("it gives the key's value at the set values but not at others: "
+                             "30° is the value of θ (theta): write the symbol"));
   REQUIRE_THAT(error_of(euler, "angles_phy711", "(40°, 30 kg, 70°)"),
                Catch::Contains("units deg and kg measure different things"));
   // An expression may carry its SI unit too, as a whole expression may; in LaTeX likewise. The
