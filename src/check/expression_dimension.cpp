@@ -1,5 +1,6 @@
 #include "check/expression_dimension.hpp"
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <string>
@@ -109,7 +110,7 @@ bool has_symbol(const GiNaC::ex& e) {
   }
   return false;
 }
-// As Unit::dimension_words, with fractions: "mass^(1/2) x length".
+// As Unit::dimension_words, with fractions: "mass^(1/2) x length"; "a pure number" for none.
 std::string words(const Powers& powers) {
   static const char* word[] = {"mass", "length", "time"};
   std::string num, den;
@@ -125,12 +126,16 @@ std::string words(const Powers& powers) {
     std::string& side = powers[k].is_positive() ? num : den;
     side += (side.empty() ? "" : " x ") + w;
   }
+  if (num.empty() && den.empty()) return "a pure number";
   if (num.empty()) num = "1";
   return den.empty() ? num : num + " / " + den;
 }
 }  // namespace
 
 std::optional<ExpressionDimension> expression_dimension(const GiNaC::ex& e, const Key& key) {
+  // A plain number's unit is not written ("[m R² ω sin α/4, 0, 0.0139]"): its dimension is not
+  // known.
+  if (!has_symbol(e)) return std::nullopt;
   std::map<std::string, Powers> parameters;
   for (const auto& p : key.parameters) {
     Powers powers{0, 0, 0};
@@ -141,24 +146,16 @@ std::optional<ExpressionDimension> expression_dimension(const GiNaC::ex& e, cons
     }
     parameters.emplace(p.name, powers);
   }
-  // A plain number's unit is not written ("[m R² ω sin α/4, 0, 0.0139]"): its dimension is not
-  // known.
-  if (!has_symbol(e)) return std::nullopt;
   const auto d = Reader(std::move(parameters))(e);
   if (!d) return std::nullopt;
   ExpressionDimension out;
   out.mixed = d->mixed;
   if (out.mixed) return out;
-  bool whole = true;
-  for (const auto& p : d->powers) whole = whole && p.is_integer();
-  if (whole) {
-    Unit u;
-    for (std::size_t k = 0; k < 3; ++k) u.dim[k] = d->powers[k].to_int();
-    out.dim = u.dim;
-    out.words = u.dimension_words();
-    return out;
-  }
   out.words = words(d->powers);
+  if (std::all_of(d->powers.begin(), d->powers.end(),
+                  [](const GiNaC::numeric& p) { return p.is_integer(); })) {
+    out.dim = {d->powers[0].to_int(), d->powers[1].to_int(), d->powers[2].to_int()};
+  }
   return out;
 }
 

@@ -366,11 +366,11 @@ bool agree(const std::vector<double>& got, const std::vector<double>& want) {
   return true;
 }
 
-// Whether `value` equals the key's expression at the set values and at the other points; not
-// where it has no value at one of them.
+// Whether `value` equals the key's expression at the judging points; not where it has no value
+// at one of them.
 bool equals_everywhere(const Context& ctx, const Answer& a, const sym::ValueText& value,
-                       const sym::ValueText& key) {
-  for (const auto& point : judging_points(ctx.values, key_values(ctx, a, key))) {
+                       const sym::ValueText& key, const std::vector<sym::Values>& points) {
+  for (const auto& point : points) {
     try {
       const auto [got, want] = at_point(ctx, a, value, key, point);
       if (!agree(got, want)) return false;
@@ -386,7 +386,8 @@ bool equals_everywhere(const Context& ctx, const Answer& a, const sym::ValueText
 // choice tried where parameters share a value); nothing otherwise: a number that happens to
 // equal a value is not blamed.
 std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
-                                         const std::string& typed, const sym::ValueText& key) {
+                                         const std::string& typed, const sym::ValueText& key,
+                                         const std::vector<sym::Values>& points) {
   // Choices tried at most: two numbers, each one parameter's value or left as it is, are 4;
   // four places, each a parameter's value or not, are 16.
   constexpr std::size_t kMostChoices = 32;
@@ -417,7 +418,7 @@ std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
         const ReadAnswer fixed =
             read_answer(with_symbols(plain, numbers, choice), ctx.table, kField);
         if (fixed.value.entries.size() != key.entries.size() ||
-            !equals_everywhere(ctx, a, fixed.value, key))
+            !equals_everywhere(ctx, a, fixed.value, key, points))
           continue;
       } catch (const InputError&) {
         continue;
@@ -489,7 +490,7 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
     // for (φ, θ, ψ) with θ set to 30°, "m 0.12²/4" for m R²/4), or a symbol where it has none
     // (m² a²/6 for m a²/6 at m = 1 kg): another dimension, if it has one, is said too.
     if (n > 0) {
-      const auto named = numbers_named(ctx, a, typed, key);
+      const auto named = numbers_named(ctx, a, typed, key, points);
       Verdict v{
           false,
           differs,
@@ -502,7 +503,7 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
     // to: a number rounded where the key has a symbol (cos(0.2618) for cos α), if writing the
     // symbol makes it the key's.
     if (j.all_close(got, want)) {
-      if (const auto named = numbers_named(ctx, a, typed, key)) {
+      if (const auto named = numbers_named(ctx, a, typed, key, points)) {
         return {false,
                 differs,
                 {"it gives the key's value at the set values only as a number rounded would, "
