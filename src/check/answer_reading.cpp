@@ -13,6 +13,7 @@
 #include "check/basis_vectors.hpp"
 #include "check/brackets.hpp"
 #include "check/latex_answer.hpp"
+#include "check/names_run_together.hpp"
 #include "check/rotations.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
@@ -82,6 +83,14 @@ std::string layout(const std::string& value) {
     return "[" + joined(rows) + "]";
   }
   return value;
+}
+
+// Whether `name` is no symbol but one of the table's in the other case ("r" for R).
+bool differs_in_case_only(const std::string& name, const sym::SymbolTable& table) {
+  return !table.contains(name) &&
+         std::any_of(table.names().begin(), table.names().end(), [&](const std::string& known) {
+           return ascii_lower(known) == ascii_lower(name);
+         });
 }
 
 // The identifiers in s, in order: "M*R^2 psidot_0" -> {M, R, psidot_0}.
@@ -1340,8 +1349,10 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
     return (table.contains(name) || sym::is_function_name(name)) && !table.contains("deg");
   };
   const std::string text = compound_quantity(degrees_in_expression(
-      sexagesimal_degrees(symbols_as_spelled(leibniz_rates(prepared(source, field), table), table),
-                          field),
+      sexagesimal_degrees(
+          names_apart(symbols_as_spelled(leibniz_rates(prepared(source, field), table), table),
+                      table),
+          field),
       in_expression));
   if (text.empty()) {
     throw InputError(field +
@@ -1420,6 +1431,8 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
             std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
               std::string name = right.substr(id.first, id.second);
               if (name == "pi" || name == "Pi" || sym::is_function_name(name)) return true;
+              // "m r^2/4" where the radius is R: a symbol in the other case, not a unit.
+              if (!is_unit(name) && differs_in_case_only(name, table)) return true;
               while (!name.empty() &&
                      (std::isdigit(static_cast<unsigned char>(name.back())) || name.back() == '_'))
                 name.pop_back();

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <set>
 #include <string>
 #include <string_view>
@@ -52,12 +53,13 @@ std::string as_product(const std::string& name, std::size_t from, const GiNaC::s
   return "";
 }
 
+// Names longer than any a student types run together are not split (nor searched).
+constexpr std::size_t kLongestSplit = 64;
+
 // What the writer of an unknown name probably meant: factors without their '*' ("mR"), or a
 // symbol in the other case ("r" for R). "" if neither.
 std::string probably_meant(const std::string& name, const GiNaC::symtab& symbols,
                            const std::set<std::string>& functions, bool call) {
-  // Names longer than any a student types run together are not split (nor searched).
-  constexpr std::size_t kLongestSplit = 64;
   std::vector<bool> dead(name.size() + 1, false);
   if (const std::string product = name.size() <= kLongestSplit
                                       ? as_product(name, 0, symbols, functions, call, dead)
@@ -69,7 +71,28 @@ std::string probably_meant(const std::string& name, const GiNaC::symtab& symbols
     if (!call && known != name && ascii_lower(known) == ascii_lower(name))
       return " (names are case-sensitive: " + known + "?)";
   }
-  return "";
+  if (call || name.size() > kLongestSplit) return "";
+  // "MR" where the mass is m: the symbols run together, one in the other case. Only names no
+  // two symbols share in lower case ("M" and "m" both symbols: which one is not for us to say).
+  std::map<std::string, std::string> by_lower;
+  std::set<std::string> shared;
+  GiNaC::symtab lowered;
+  for (const auto& [known, value] : symbols) {
+    const std::string lower = ascii_lower(known);
+    if (!by_lower.emplace(lower, known).second) shared.insert(lower);
+    lowered.emplace(lower, value);
+  }
+  for (const auto& lower : shared) lowered.erase(lower);
+  std::fill(dead.begin(), dead.end(), false);
+  const std::string product = as_product(ascii_lower(name), 0, lowered, functions, false, dead);
+  if (product.find('*') == std::string::npos) return "";
+  std::string written;
+  for (std::size_t from = 0; from <= product.size();) {
+    const std::size_t star = std::min(product.find('*', from), product.size());
+    written += (written.empty() ? "" : "*") + by_lower.at(product.substr(from, star - from));
+    from = star + 1;
+  }
+  return " (names are case-sensitive: " + written + "?)";
 }
 
 struct Scanner {

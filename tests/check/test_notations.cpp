@@ -791,12 +791,13 @@ TEST_CASE("principal axes listed one by one are the axes, with a factor or along
   // A matrix in one bracket, as the key prints its axes' matrix, may hold them either way.
   REQUIRE(masses.check("principal_axes", "[[1, 0, 1], [1, 0, -1], [0, 1, 0]]").correct);
   REQUIRE(masses.check("principal_axes", "[[1, 1, 0], [1, -1, 0], [0, 0, 1]]").correct);
-  // A minus as a PDF sets it between unit vectors, and a list whose terms run together: the
-  // message names the symbols, not a unit "ma^2, ..".
+  // A minus as a PDF sets it between unit vectors, and a list whose factors run together: read
+  // as products; with one in the wrong case, the message names the symbols, not a unit "Ma^2".
   const Fixture plate("flying-plate");
   REQUIRE_FALSE(plate.check("L0_body", "0.001863 x̂ − 0.01391 ẑ").correct);
-  REQUIRE_THROWS_WITH(masses.check("principal_moments", "5/2 ma², 3ma², 7/2 ma²"),
-                      Catch::Contains("undefined symbol 'ma' (products need '*': m*a)"));
+  REQUIRE(masses.check("principal_moments", "5/2 ma², 3ma², 7/2 ma²").correct);
+  REQUIRE_THROWS_WITH(masses.check("principal_moments", "5/2 Ma², 3Ma², 7/2 Ma²"),
+                      Catch::Contains("undefined symbol 'Ma' (names are case-sensitive: m*a?)"));
 }
 
 TEST_CASE("an answer's name as the statement or LaTeX writes it finds the answer") {

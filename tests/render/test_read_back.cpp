@@ -1053,9 +1053,11 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
   REQUIRE_THAT(error_of(plate_m, "I0", "m R^2 1 4"), Catch::Contains("products need '*'"));
   // A subscript written as LaTeX does, psidot_0 for psidot0, is the problem's symbol.
   REQUIRE(top.check("p_psi", "M*R^2*psidot_0/2").correct);
-  // Factors run together, or a symbol in the other case: what was probably meant.
-  REQUIRE_THAT(error_of(top, "p_psi", "MR^2*psidot0/2"), Catch::Contains("products need '*': M*R"));
+  // Factors run together are their product; a symbol in the other case is told what was
+  // probably meant, alone or run together.
+  REQUIRE(top.check("p_psi", "MR^2*psidot0/2").correct);
   REQUIRE_THAT(error_of(top, "p_psi", "m*R^2*psidot0/2"), Catch::Contains("case-sensitive: M?"));
+  REQUIRE_THAT(error_of(top, "p_psi", "mR^2*psidot0/2"), Catch::Contains("case-sensitive: M*R?"));
   REQUIRE(top.check("p_psi", "½·M·R²·ψ̇0").correct);
   // LaTeX is read as LaTeX sets it: factors side by side, the symbol as the file spells it.
   REQUIRE(top.check("p_psi", "\\frac{M R^2 \\dot\\psi_0}{2}").correct);

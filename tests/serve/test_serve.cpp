@@ -182,7 +182,7 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
   CHECK(post_check(c, "flying-plate",
                    {{"name", "I₀"}, {"answer", right}, {"variant", 5}})["correct"] == true);
   CHECK_THAT(post_check(c, "four-masses",
-                        {{"name", "principal_moments"}, {"answer", "5/2 ma², 3, 4"}}, 400)["error"]
+                        {{"name", "principal_moments"}, {"answer", "5/2 Ma², 3, 4"}}, 400)["error"]
                  .get<std::string>(),
              StartsWith("answer, entry 1: cannot read expression") && !Contains("--answer"));
   // A part of several answers needs the name; neither part nor name is a bad request.
