@@ -15,10 +15,9 @@
 #include "check/axes_judge.hpp"
 #include "check/brackets.hpp"
 #include "check/diagnosis.hpp"
-#include "check/expression_dimension.hpp"
+#include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
-#include "check/symbol_values.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/inertia.hpp"
@@ -30,26 +29,13 @@
 
 namespace wobble::check {
 
+using detail::Judge;
+using detail::judge_symbolic;
+using detail::kField;
+
 namespace {
-const std::string kField = "--answer";
 // The sides of '=' judged at most: a key's line "closed form = value", its name dropped.
 constexpr std::size_t kMostSides = 2;
-// Two expressions that agree to this relative difference at four parameter points are taken as
-// the same function: 40-digit evaluation leaves ~1e-16, so only a different expression (or one
-// that equals the key's at exactly those points, which the point choice makes unlikely) is
-// farther off.
-constexpr double kIdentityTolerance = 1e-9;
-// The parameter points an expression is judged at besides the set values: each parameter
-// scaled by these, in an order of its own. Not simple ratios (2, 1/2), so that a look-alike
-// that equals the key only at special values is unlikely to agree at all four points; within
-// 30% so that every point stays inside the parameters' ranges near the set values.
-constexpr std::array<double, 3> kProbeFactors{1.13, 0.87, 1.29};
-// Each parameter's order of the factors over the three points (a row: the factor's index at
-// each point), then the same twelve with each factor's reciprocal: no two of the first twelve
-// parameters scale alike, so that one of them in another's place (the angular rate θ̇ = 0.5 for
-// the moment I₃ = 0.5) differs somewhere even where their set values are equal.
-constexpr std::array<std::array<std::size_t, 3>, 6> kProbeOrders{
-    {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}}};
 
 std::string shape_words(std::size_t rows, std::size_t cols, bool vector, bool matrix) {
   if (matrix) return fmt::format("a {}x{} matrix [[..], ..]", rows, cols);
@@ -161,36 +147,9 @@ void check_shape(const Answer& a, const sym::ValueText& v, const std::string& ty
                                  misreading_hint(a, typed, v.entries.size())));
   }
 }
+}  // namespace
 
-struct Judge {
-  const Context& ctx;
-  const Answer& a;
-  const Options& opt;
-  double scale;
-  AxesLayout layout = AxesLayout::rows_or_columns;  // where principal axes are in the matrix
-
-  bool close(double v, double k) const {
-    if (opt.sigfigs) {
-      const double ref = k != 0.0 ? std::abs(k) : scale;
-      const double place = std::pow(10.0, std::floor(std::log10(ref)) - *opt.sigfigs + 1);
-      return std::abs(v - k) <= 0.5 * place * (1 + kHalfUnitSlack);
-    }
-    return std::abs(v - k) <= opt.rel_tol * (k != 0.0 ? std::abs(k) : scale);
-  }
-  // For directions (principal axes): the sine of the angle an axis may be off, from the
-  // relative tolerance or half a unit in the last of N significant figures.
-  double angle_tolerance() const {
-    return opt.sigfigs ? 0.5 * std::pow(10.0, 1 - *opt.sigfigs) : opt.rel_tol;
-  }
-  bool all_close(const std::vector<double>& v, const std::vector<double>& k) const {
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      if (!close(v[i], k[i])) return false;
-    }
-    return true;
-  }
-};
-
-
+namespace detail {
 // Principal axes by meaning (axes_judge.hpp): the sine of the angle within the tolerance.
 Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got) {
   const auto& moments = j.a.axis_moments;
@@ -218,318 +177,7 @@ std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
                   j.scale};
   return check::diagnose(f);
 }
-
-// The values of the student's and the key's entries at one parameter point; principal moments
-// sorted, since they may come in any order.
-std::pair<std::vector<double>, std::vector<double>> at_point(const Context& ctx, const Answer& a,
-                                                             const sym::ValueText& mine,
-                                                             const sym::ValueText& key,
-                                                             const sym::Values& point) {
-  const GiNaC::lst at = sym::substitution(ctx.table, point);
-  std::vector<double> got, want;
-  for (const auto& e : mine.entries) got.push_back(sym::evaluate(e, at, kField));
-  for (const auto& e : key.entries) want.push_back(sym::evaluate(e, at, "key " + a.name));
-  if (a.kind == AnswerKind::principal_moments) {
-    std::sort(got.begin(), got.end());
-    std::sort(want.begin(), want.end());
-  }
-  return {got, want};
-}
-
-// The set values and three more points, each parameter scaled by the factors in its order.
-// Where the key has no value at a point (a heavy top's steady precession needs a fast enough
-// spin, which scaling l up and the spin down can take away), the point is moved halfway back
-// to the set values, up to kMostRetreats times, else left out.
-constexpr int kMostRetreats = 4;
-std::vector<sym::Values> judging_points(const sym::Values& set,
-                                        const std::function<void(const sym::Values&)>& key_at) {
-  std::vector<sym::Values> points{set};
-  for (std::size_t f = 0; f < kProbeFactors.size(); ++f) {
-    for (int retreat = 0; retreat <= kMostRetreats; ++retreat) {
-      sym::Values v = set;
-      std::size_t i = 0;
-      for (auto& [name, x] : v) {
-        const std::size_t pattern = i++ % (2 * kProbeOrders.size());
-        const double factor =
-            std::pow(kProbeFactors[kProbeOrders[pattern % kProbeOrders.size()][f]],
-                     std::ldexp(1.0, -retreat));
-        x *= pattern < kProbeOrders.size() ? factor : 1 / factor;
-      }
-      try {
-        key_at(v);
-      } catch (const InputError&) {
-        continue;
-      }
-      points.push_back(v);
-      break;
-    }
-  }
-  return points;
-}
-
-// Axes as expressions: by meaning at the set values, then, where the key has closed forms for
-// its axes and moments, at the other points too (an expression right only at the set values
-// is wrong).
-Verdict judge_symbolic_axes(const Judge& j, const ReadAnswer& p) {
-  const Context& ctx = j.ctx;
-  const Verdict here = judge_axes_answer(j, at_point(ctx, j.a, p.value, p.value, ctx.values).first);
-  if (!here.correct || j.a.symbolic.empty() || j.a.axis_moments_symbolic.empty()) return here;
-  const auto key_axes = sym::parse_value_text(j.a.symbolic, ctx.table, "key " + j.a.name);
-  const auto key_moments = sym::parse_value_text(j.a.axis_moments_symbolic, ctx.table, "key moments");
-  const double tol = j.angle_tolerance();
-  const auto key_at = [&](const sym::Values& point) {
-    (void)at_point(ctx, j.a, key_axes, key_axes, point);
-    (void)at_point(ctx, j.a, key_moments, key_moments, point);
-  };
-  for (const auto& point : judging_points(ctx.values, key_at)) {
-    const auto [got, axes_flat] = at_point(ctx, j.a, p.value, key_axes, point);
-    const auto lambda = at_point(ctx, j.a, key_moments, key_moments, point).first;  // unsorted
-    // Columns with their moments, ascending (the order may change away from the set values).
-    std::array<int, 3> order{0, 1, 2};
-    std::sort(order.begin(), order.end(), [&](int x, int y) {
-      return lambda[static_cast<std::size_t>(x)] < lambda[static_cast<std::size_t>(y)];
-    });
-    Mat3 axes;
-    Vec3 sorted;
-    for (int c = 0; c < 3; ++c) {
-      const auto k = static_cast<std::size_t>(order[static_cast<std::size_t>(c)]);
-      sorted[c] = lambda[k];
-      for (int r = 0; r < 3; ++r) axes(r, c) = axes_flat[static_cast<std::size_t>(3 * r) + k];
-    }
-    if (!judge_axes(got, axes, sorted, tol, j.layout).correct) {
-      return {false,
-              "incorrect: " + j.a.name +
-                  " (your expression gives the axes at the set values, but not at others)",
-              {"it is right only for these numbers: check it as a function of the parameters"}};
-    }
-  }
-  return {true, here.line.substr(0, here.line.size() - 1) + ", as functions of the parameters)",
-          {}};
-}
-
-// Why a wrong expression is wrong, where its dimension says it: "m R/4" is a mass x length, and
-// I0 is in kg m^2; "m + R" adds unlike quantities. Told only where the key's own entries scale
-// as its unit says (the parameters' units are then trusted), and entry by entry, the first
-// entry of another dimension named.
-std::optional<Verdict> dimension_verdict(const Context& ctx, const Answer& a,
-                                         const sym::ValueText& mine, const sym::ValueText& key,
-                                         const Unit& key_unit) {
-  // A zero has every dimension.
-  for (const auto& e : key.entries) {
-    if (e.is_zero()) continue;
-    const auto d = expression_dimension(e, ctx.key);
-    if (d && (d->mixed || d->dim != key_unit.dim)) return std::nullopt;
-  }
-  for (std::size_t i = 0; i < mine.entries.size(); ++i) {
-    if (mine.entries[i].is_zero()) continue;
-    const auto d = expression_dimension(mine.entries[i], ctx.key);
-    if (!d || (!d->mixed && d->dim == key_unit.dim)) continue;
-    const std::string what = mine.entries.size() == 1 ? "your expression" : entry_name(a, i);
-    if (d->mixed) {
-      return Verdict{false,
-                     "incorrect: " + a.name + " (your expression differs from the key's)",
-                     {what + " mixes dimensions: it adds unlike quantities, or takes a function "
-                             "such as sin or exp of a quantity with a unit"}};
-    }
-    const std::string has =
-        d->dim == std::array<int, 3>{0, 0, 0} ? " is " + d->words : "'s dimension is " + d->words;
-    return Verdict{false,
-                   "incorrect: " + a.name + " has the wrong dimension",
-                   {what + has + "; the answer is in " + (a.unit.empty() ? "no unit" : a.unit) +
-                    " (" + key_unit.dimension_words() + ")"}};
-  }
-  return std::nullopt;
-}
-
-// `typed` as plain text: LaTeX read as the reader reads it ("\\cos 15^\\circ" is "cos(15 deg)").
-std::string plain_text(const Context& ctx, const std::string& typed) {
-  if (!looks_like_latex(typed)) return typed;
-  try {
-    return latex_as_text(typed, ctx.table, kField);
-  } catch (const InputError&) {
-    return typed;
-  }
-}
-
-// What judging_points asks of a point: that the key's entries have values there (throws if not).
-std::function<void(const sym::Values&)> key_values(const Context& ctx, const Answer& a,
-                                                   const sym::ValueText& key) {
-  return [&ctx, &a, &key](const sym::Values& point) { (void)at_point(ctx, a, key, key, point); };
-}
-
-// Whether two sets of values agree to kIdentityTolerance (relative, absolute below 1).
-bool agree(const std::vector<double>& got, const std::vector<double>& want) {
-  for (std::size_t i = 0; i < want.size(); ++i) {
-    if (std::abs(got[i] - want[i]) > kIdentityTolerance * std::max(1.0, std::abs(want[i])))
-      return false;
-  }
-  return true;
-}
-
-// Whether `value` equals the key's expression at the judging points; not where it has no value
-// at one of them.
-bool equals_everywhere(const Context& ctx, const Answer& a, const sym::ValueText& value,
-                       const sym::ValueText& key, const std::vector<sym::Values>& points) {
-  for (const auto& point : points) {
-    try {
-      const auto [got, want] = at_point(ctx, a, value, key, point);
-      if (!agree(got, want)) return false;
-    } catch (const InputError&) {
-      return false;
-    }
-  }
-  return true;
-}
-
-// "0.12 is the value of R: write the symbol": the numbers in `typed` that are parameters'
-// values, where writing their symbols in their place makes it the key's expression (each
-// choice tried where parameters share a value); nothing otherwise: a number that happens to
-// equal a value is not blamed.
-std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
-                                         const std::string& typed, const sym::ValueText& key,
-                                         const std::vector<sym::Values>& points) {
-  // Choices tried at most: two numbers, each one parameter's value or left as it is, are 4;
-  // four places, each a parameter's value or not, are 16.
-  constexpr std::size_t kMostChoices = 32;
-  const std::string plain = plain_text(ctx, typed);
-  const auto numbers = numbers_for_symbols(ctx.key, plain);
-  if (numbers.empty()) return std::nullopt;
-  // The choices for the numbers in groups (group[k] the group of number k): one candidate for
-  // every number of a group, or none (it stays as it is: "/12" where ω is 12 rad/s). The first
-  // that makes the key's expression names them.
-  const auto named = [&](const std::vector<std::size_t>& group) -> std::optional<std::string> {
-    std::vector<std::size_t> counts;
-    for (std::size_t k = 0; k < numbers.size(); ++k) {
-      if (group[k] >= counts.size()) counts.resize(group[k] + 1);
-      counts[group[k]] = numbers[k].candidates.size() + 1;
-    }
-    std::size_t choices = 1;
-    for (const std::size_t n : counts) choices = std::min(choices * n, kMostChoices + 1);
-    if (choices > kMostChoices) return std::nullopt;
-    for (std::size_t c = 0; c < choices; ++c) {
-      std::vector<std::size_t> pick;  // c in the mixed radix of the counts
-      for (std::size_t g = 0, rest = c; g < counts.size(); ++g) {
-        pick.push_back(rest % counts[g]);
-        rest /= counts[g];
-      }
-      std::vector<std::size_t> choice;
-      for (const std::size_t g : group) choice.push_back(pick[g]);
-      try {
-        const ReadAnswer fixed =
-            read_answer(with_symbols(plain, numbers, choice), ctx.table, kField);
-        if (fixed.value.entries.size() != key.entries.size() ||
-            !equals_everywhere(ctx, a, fixed.value, key, points))
-          continue;
-      } catch (const InputError&) {
-        continue;
-      }
-      std::vector<std::string> told;
-      for (std::size_t k = 0; k < numbers.size(); ++k) {
-        if (choice[k] == numbers[k].candidates.size()) continue;  // left as it is
-        const std::string said = numbers[k].number + " is the value of " +
-                                 numbers[k].candidates[choice[k]].shown +
-                                 (numbers[k].rounded ? ", rounded" : "");
-        if (std::find(told.begin(), told.end(), said) == told.end()) told.push_back(said);
-      }
-      return fmt::format("{}: write the symbol{}", fmt::join(told, ", "),
-                         told.size() == 1 ? "" : "s");
-    }
-    return std::nullopt;
-  };
-  // First one choice for each number as written, as a student puts a value in for a symbol
-  // wherever it stands ("(0.3 + c)(0.3 - c)/(0.3² + c²)" where a and m are both 0.3); then one
-  // for each place ("12" for ω in "(12)²" but not in "/12").
-  std::vector<std::string> distinct;
-  std::vector<std::size_t> by_number, by_place;
-  for (std::size_t k = 0; k < numbers.size(); ++k) {
-    const auto it = std::find(distinct.begin(), distinct.end(), numbers[k].number);
-    by_number.push_back(static_cast<std::size_t>(it - distinct.begin()));
-    if (it == distinct.end()) distinct.push_back(numbers[k].number);
-    by_place.push_back(k);
-  }
-  if (auto said = named(by_number)) return said;
-  return distinct.size() == numbers.size() ? std::nullopt : named(by_place);
-}
-
-Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& typed,
-                       const ReadAnswer& p, const Options& opt, AxesLayout layout) {
-  const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
-  if (a.kind == AnswerKind::principal_axes) return judge_symbolic_axes(j, p);
-  if (a.symbolic.empty()) {
-    throw InputError(kField + ": " + a.name + " has no closed form in the key; give a number");
-  }
-  const sym::ValueText key = sym::parse_value_text(a.symbolic, ctx.table, "key " + a.name);
-  // First by simplification: a rational rearrangement of the key's form is proved equal. It
-  // cannot prove trigonometric or radical identities (2*atan(2*tan(a)) in another form), so an
-  // unproved answer is then judged by evaluation.
-  bool proved = true;
-  for (std::size_t i = 0; i < key.entries.size() && proved; ++i) {
-    proved = sym::is_identically_zero(p.value.entries[i] - key.entries[i]);
-  }
-  if (proved)
-    return {true, "correct: " + a.name + " (your expression simplifies to the key's)", {}};
-  // The set values first.
-  const std::vector<sym::Values> points = judging_points(ctx.values, key_values(ctx, a, key));
-  for (std::size_t n = 0; n < points.size(); ++n) {
-    std::vector<double> got, want;
-    try {
-      std::tie(got, want) = at_point(ctx, a, p.value, key, points[n]);
-    } catch (const InputError&) {
-      // No value away from the set values where the key has one (the root of a negative, once a
-      // number stands for a symbol): it differs from the key's. One at the set values is said
-      // as it is.
-      if (n == 0) throw;
-      got.clear();
-    }
-    if (!got.empty() && agree(got, want)) continue;
-    const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
-    const auto dimension = dimension_verdict(ctx, a, p.value, key, key_unit);
-    const std::string differs =
-        "incorrect: " + a.name + " (your expression differs from the key's)";
-    // Right at the set values but not here: a number where the key has a symbol ("(φ, 30°, ψ)"
-    // for (φ, θ, ψ) with θ set to 30°, "m 0.12²/4" for m R²/4), or a symbol where it has none
-    // (m² a²/6 for m a²/6 at m = 1 kg): another dimension, if it has one, is said too.
-    if (n > 0) {
-      const auto named = numbers_named(ctx, a, typed, key, points);
-      Verdict v{
-          false,
-          differs,
-          {"it gives the key's value at the set values but not at others: " +
-           named.value_or("a number, or a symbol of the same value, where the key has a symbol?")}};
-      if (dimension) v.feedback.push_back(dimension->feedback.at(0));
-      return v;
-    }
-    // At the set values right as a number would be, not to the digits an expression is held
-    // to: a number rounded where the key has a symbol (cos(0.2618) for cos α), if writing the
-    // symbol makes it the key's.
-    if (j.all_close(got, want)) {
-      if (const auto named = numbers_named(ctx, a, typed, key, points)) {
-        return {false,
-                differs,
-                {"it gives the key's value at the set values only as a number rounded would, "
-                 "not as the key's expression does: " +
-                 *named}};
-      }
-      // Within a number's tolerance, which an expression is not judged by: "off by 0.5%" would
-      // read as right.
-      if (!dimension) {
-        return {false,
-                differs,
-                {"it comes close to the key's value at the set values, but an expression is "
-                 "right only when it is the key's: a small term left out, or a number rounded?"}};
-      }
-    }
-    // Wrong at the set values: its dimension, else why as for a number.
-    if (dimension) return *dimension;
-    return {false, differs, diagnose(j, key_unit, got, a.value.data)};
-  }
-  return {true,
-          "correct: " + a.name +
-              " (your expression equals the key's at the set values and three more points" +
-              (a.kind == AnswerKind::principal_moments ? ", in any order)" : ")"),
-          {}};
-}
-}  // namespace
+}  // namespace detail
 
 double zero_scale(const Key& key, const Answer& a) {
   double s = 0.0;

@@ -1,0 +1,61 @@
+#pragma once
+/// @file
+/// What the two halves of the judge share, inside the check layer only: judge.cpp reads an
+/// answer and judges a number, a vector or a matrix by its values; expression_judge.cpp judges
+/// an answer in the symbols as a function of the parameters. Both hold values to the same
+/// tolerances (Judge) and say why a value is wrong the same way (diagnose).
+#include <string>
+#include <vector>
+
+#include "check/answer_reading.hpp"
+#include "check/axes_judge.hpp"
+#include "check/judge.hpp"
+#include "symbolic/units.hpp"
+
+namespace wobble::check::detail {
+
+/// The option an answer is given by, as refusals name it.
+inline const std::string kField = "--answer";
+
+/// One answer's judging: its tolerance, the scale of its zeros, where its axes stand.
+struct Judge {
+  const Context& ctx;
+  const Answer& a;
+  const Options& opt;
+  double scale;
+  AxesLayout layout = AxesLayout::rows_or_columns;  // where principal axes are in the matrix
+
+  bool close(double v, double k) const {
+    if (opt.sigfigs) {
+      const double ref = k != 0.0 ? std::abs(k) : scale;
+      const double place = std::pow(10.0, std::floor(std::log10(ref)) - *opt.sigfigs + 1);
+      return std::abs(v - k) <= 0.5 * place * (1 + kHalfUnitSlack);
+    }
+    return std::abs(v - k) <= opt.rel_tol * (k != 0.0 ? std::abs(k) : scale);
+  }
+  // For directions (principal axes): the sine of the angle an axis may be off, from the
+  // relative tolerance or half a unit in the last of N significant figures.
+  double angle_tolerance() const {
+    return opt.sigfigs ? 0.5 * std::pow(10.0, 1 - *opt.sigfigs) : opt.rel_tol;
+  }
+  bool all_close(const std::vector<double>& v, const std::vector<double>& k) const {
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (!close(v[i], k[i])) return false;
+    }
+    return true;
+  }
+};
+
+/// Principal axes by meaning (axes_judge.hpp): the sine of the angle within the tolerance.
+Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got);
+
+/// Why values `v` are not the key's `k` (diagnosis.hpp), each line one finding.
+std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
+                                  const std::vector<double>& v, const std::vector<double>& k);
+
+/// An answer in the symbols (`p` as read from `typed`): proved equal to the key's closed form,
+/// or judged at the set values and three more parameter points.
+Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& typed,
+                       const ReadAnswer& p, const Options& opt, AxesLayout layout);
+
+}  // namespace wobble::check::detail
