@@ -201,27 +201,32 @@ bool equals_everywhere(const Context& ctx, const Answer& a, const sym::ValueText
   return true;
 }
 
-// "0.12 is the value of R: write the symbol": the numbers in `typed` that are parameters'
-// values, where writing their symbols in their place makes it the key's expression (each
-// choice tried where parameters share a value); nothing otherwise: a number that happens to
-// equal a value is not blamed.
-std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
-                                         const std::string& typed, const sym::ValueText& key,
-                                         const std::vector<sym::Values>& points) {
+// Numbers or symbols in `typed` (`found`, found in sym::to_ascii of `plain`) where the key has
+// a symbol of that value: the choices of symbols to write in their places (one candidate per
+// entry of `found`, or none), tried until one makes the key's expression; `told` words one
+// replacement, `whole` the list. Nothing if none does: a number that happens to equal a value
+// is not blamed.
+struct Replacements {
+  std::function<std::string(const NumberForSymbol&, const Candidate&)> told;
+  std::function<std::string(const std::vector<std::string>&)> whole;
+};
+std::optional<std::string> replacements_named(const Context& ctx, const Answer& a,
+                                              const std::string& plain,
+                                              const std::vector<NumberForSymbol>& found,
+                                              const Replacements& say, const sym::ValueText& key,
+                                              const std::vector<sym::Values>& points) {
   // Choices tried at most: two numbers, each one parameter's value or left as it is, are 4;
   // four places, each a parameter's value or not, are 16.
   constexpr std::size_t kMostChoices = 32;
-  const std::string plain = plain_text(ctx, typed);
-  const auto numbers = numbers_for_symbols(ctx.key, plain);
-  if (numbers.empty()) return std::nullopt;
-  // The choices for the numbers in groups (group[k] the group of number k): one candidate for
-  // every number of a group, or none (it stays as it is: "/12" where ω is 12 rad/s). The first
-  // that makes the key's expression names them.
+  if (found.empty()) return std::nullopt;
+  // The choices in groups (group[k] the group of entry k): one candidate for every entry of a
+  // group, or none (it stays as it is: "/12" where ω is 12 rad/s). The first that makes the
+  // key's expression names them.
   const auto named = [&](const std::vector<std::size_t>& group) -> std::optional<std::string> {
     std::vector<std::size_t> counts;
-    for (std::size_t k = 0; k < numbers.size(); ++k) {
+    for (std::size_t k = 0; k < found.size(); ++k) {
       if (group[k] >= counts.size()) counts.resize(group[k] + 1);
-      counts[group[k]] = numbers[k].candidates.size() + 1;
+      counts[group[k]] = found[k].candidates.size() + 1;
     }
     std::size_t choices = 1;
     for (const std::size_t n : counts) choices = std::min(choices * n, kMostChoices + 1);
@@ -235,8 +240,7 @@ std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
       std::vector<std::size_t> choice;
       for (const std::size_t g : group) choice.push_back(pick[g]);
       try {
-        const ReadAnswer fixed =
-            read_answer(with_symbols(plain, numbers, choice), ctx.table, kField);
+        const ReadAnswer fixed = read_answer(with_symbols(plain, found, choice), ctx.table, kField);
         if (fixed.value.entries.size() != key.entries.size() ||
             !equals_everywhere(ctx, a, fixed.value, key, points))
           continue;
@@ -244,33 +248,64 @@ std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
         continue;
       }
       std::vector<std::string> told;
-      for (std::size_t k = 0; k < numbers.size(); ++k) {
-        if (choice[k] == numbers[k].candidates.size()) continue;  // left as it is
-        const std::string said = numbers[k].number + " is the value of " +
-                                 numbers[k].candidates[choice[k]].shown +
-                                 (numbers[k].rounded ? ", rounded" : "");
+      for (std::size_t k = 0; k < found.size(); ++k) {
+        if (choice[k] == found[k].candidates.size()) continue;  // left as it is
+        const std::string said = say.told(found[k], found[k].candidates[choice[k]]);
         if (std::find(told.begin(), told.end(), said) == told.end()) told.push_back(said);
       }
-      return fmt::format("{}: write the symbol{}", fmt::join(told, ", "),
-                         told.size() == 1 ? "" : "s");
+      if (!told.empty()) return say.whole(told);
     }
     return std::nullopt;
   };
-  // First one choice for each number as written, as a student puts a value in for a symbol
+  // First one choice for each entry as written, as a student puts a value in for a symbol
   // wherever it stands ("(0.3 + c)(0.3 - c)/(0.3² + c²)" where a and m are both 0.3); then one
   // for each place ("12" for ω in "(12)²" but not in "/12").
   std::vector<std::string> distinct;
-  std::vector<std::size_t> by_number, by_place;
-  for (std::size_t k = 0; k < numbers.size(); ++k) {
-    const auto it = std::find(distinct.begin(), distinct.end(), numbers[k].number);
-    by_number.push_back(static_cast<std::size_t>(it - distinct.begin()));
-    if (it == distinct.end()) distinct.push_back(numbers[k].number);
+  std::vector<std::size_t> by_entry, by_place;
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    const auto it = std::find(distinct.begin(), distinct.end(), found[k].number);
+    by_entry.push_back(static_cast<std::size_t>(it - distinct.begin()));
+    if (it == distinct.end()) distinct.push_back(found[k].number);
     by_place.push_back(k);
   }
-  if (auto said = named(by_number)) return said;
-  return distinct.size() == numbers.size() ? std::nullopt : named(by_place);
+  if (auto said = named(by_entry)) return said;
+  return distinct.size() == found.size() ? std::nullopt : named(by_place);
 }
 
+// "0.12 is the value of R: write the symbol": the numbers in `typed` that are parameters'
+// values, where writing their symbols in their place makes it the key's expression (each
+// choice tried where parameters share a value).
+std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
+                                         const std::string& typed, const sym::ValueText& key,
+                                         const std::vector<sym::Values>& points) {
+  const std::string plain = plain_text(ctx, typed);
+  const Replacements say{[](const NumberForSymbol& n, const Candidate& c) {
+                           return n.number + " is the value of " + c.shown +
+                                  (n.rounded ? ", rounded" : "");
+                         },
+                         [](const std::vector<std::string>& told) {
+                           return fmt::format("{}: write the symbol{}", fmt::join(told, ", "),
+                                              told.size() == 1 ? "" : "s");
+                         }};
+  return replacements_named(ctx, a, plain, numbers_for_symbols(ctx.key, plain), say, key, points);
+}
+
+// "θ̇ (thetadot) where the key has I₃ (I3)": a symbol in the place of another of the same set
+// value, where writing the other there makes the key's expression.
+std::optional<std::string> symbols_named(const Context& ctx, const Answer& a,
+                                         const std::string& typed, const sym::ValueText& key,
+                                         const std::vector<sym::Values>& points) {
+  const std::string plain = plain_text(ctx, typed);
+  const Replacements say{[](const NumberForSymbol& n, const Candidate& c) {
+                           return n.number + " where the key has " + c.shown;
+                         },
+                         [](const std::vector<std::string>& told) {
+                           return fmt::format("{}? (the same value here, not the same quantity)",
+                                              fmt::join(told, ", "));
+                         }};
+  return replacements_named(ctx, a, plain, symbols_sharing_values(ctx.key, plain), say, key,
+                            points);
+}
 }  // namespace
 
 Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& typed,
@@ -312,7 +347,8 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
     // for (φ, θ, ψ) with θ set to 30°, "m 0.12²/4" for m R²/4), or a symbol where it has none
     // (m² a²/6 for m a²/6 at m = 1 kg): another dimension, if it has one, is said too.
     if (n > 0) {
-      const auto named = numbers_named(ctx, a, typed, key, points);
+      auto named = numbers_named(ctx, a, typed, key, points);
+      if (!named) named = symbols_named(ctx, a, typed, key, points);
       Verdict v{
           false,
           differs,

@@ -1,5 +1,6 @@
 #include "check/symbol_values.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -57,6 +58,12 @@ int significant_digits(const std::string& number) {
   return n;
 }
 
+// A parameter as printed, with its typed name where that differs: "θ (theta)", "R".
+std::string shown_of(const ParameterValue& p) {
+  const std::string shown = math_to_unicode(p.latex.empty() ? p.name : p.latex);
+  return shown == p.name ? shown : shown + " (" + p.name + ")";
+}
+
 // Whether the previous character other than a space is '^': the number is an exponent.
 bool after_power(const std::string& s, std::size_t at) {
   while (at > 0 && s[at - 1] == ' ') --at;
@@ -98,10 +105,37 @@ std::vector<NumberForSymbol> numbers_for_symbols(const Key& key, const std::stri
       const bool as_rounded = significant_digits(number) >= 3 && off <= half_unit;
       if (v == 0.0 || !(same || as_rounded)) continue;
       found_here.rounded = found_here.rounded || !same;
-      const std::string shown = math_to_unicode(p.latex.empty() ? p.name : p.latex);
-      found_here.candidates.push_back({p.name, shown == p.name ? shown : shown + " (" + p.name + ")"});
+      found_here.candidates.push_back({p.name, shown_of(p)});
     }
     if (!found_here.candidates.empty()) found.push_back(std::move(found_here));
+  }
+  return found;
+}
+
+std::vector<NumberForSymbol> symbols_sharing_values(const Key& key, const std::string& typed) {
+  const std::string s = sym::to_ascii(typed);
+  std::vector<NumberForSymbol> found;
+  for (std::size_t i = 0; i < s.size();) {
+    if (digit(s[i]) || s[i] == '.') {  // a number whole, "2" in "2thetadot" and "2e5" too
+      i = std::max(number_end(s, i), i + 1);
+      continue;
+    }
+    if (!in_name(s[i])) {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    while (i < s.size() && in_name(s[i])) ++i;
+    const std::string name = s.substr(start, i - start);
+    const auto self = std::find_if(key.parameters.begin(), key.parameters.end(),
+                                   [&](const ParameterValue& p) { return p.name == name; });
+    if (self == key.parameters.end() || self->value == 0.0) continue;
+    NumberForSymbol here{shown_of(*self), {}, false, start, i - start};
+    for (const auto& p : key.parameters) {
+      if (p.name != name && std::abs(p.value - self->value) <= kSameValue * std::abs(self->value))
+        here.candidates.push_back({p.name, shown_of(p)});
+    }
+    if (!here.candidates.empty()) found.push_back(std::move(here));
   }
   return found;
 }

@@ -34,6 +34,13 @@ struct NumberForSymbol {
 /// coefficient far more often than a value).
 std::vector<NumberForSymbol> numbers_for_symbols(const Key& key, const std::string& typed);
 
+/// The symbols in `typed` (read in ASCII) whose nonzero set value another parameter shares
+/// to 1e-9 (the Euler angles' θ̇ and I₃, both 0.5), in the order typed: each as a
+/// NumberForSymbol whose `number` is the symbol as printed ("θ̇ (thetadot)") and whose
+/// candidates are the others. A symbol of the same value in another's place is right at the set
+/// values only, as a number in a symbol's place is.
+std::vector<NumberForSymbol> symbols_sharing_values(const Key& key, const std::string& typed);
+
 /// sym::to_ascii(typed) with each of `numbers` replaced by its candidate numbered in `choice`
 /// (one index per number; the count of its candidates leaves it as it is).
 std::string with_symbols(const std::string& typed, const std::vector<NumberForSymbol>& numbers,

@@ -58,6 +58,17 @@ std::string with_symbol_replaced(const std::string& text, const std::string& nam
   return out;
 }
 
+// How many times the symbol `name` stands in `text` as a whole word.
+std::size_t occurrences(const std::string& text, const std::string& name) {
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::size_t n = 0;
+  for (std::size_t i = text.find(name); i != std::string::npos; i = text.find(name, i + 1)) {
+    n += (i == 0 || !word(text[i - 1])) &&
+         (i + name.size() == text.size() || !word(text[i + name.size()]));
+  }
+  return n;
+}
+
 // The diagonal of a 3x3 key, each entry times `factor`, formatted by `f`.
 std::vector<std::string> diagonal_of(const Fixture& fx, const std::string& name,
                                      double factor = 1.0) {
@@ -671,6 +682,14 @@ TEST_CASE("an expression right at the set values only is told so, not named anot
   const Fixture phy711("euler-angles-phy711");
   REQUIRE_THAT(phy711.check("L_primed", "[-α̇ I₁ sin β, β̇ I₁, 0.5 (α̇ cos β + γ̇)]").feedback.at(0),
                Catch::EndsWith("0.5 is the value of I₃ (I3): write the symbol"));
+  // A symbol of the same value in another's place: θ̇ is 0.5 rad/s and I₃ 0.5 kg m² here. The
+  // θ̇ of entry y is right; the one of entry z is named.
+  const Fixture euler_angles("euler-angles");
+  const auto swapped = euler_angles.check("L_primed", "[-φ̇ I₁ sin θ, θ̇ I₁, θ̇ (φ̇ cos θ + ψ̇)]");
+  REQUIRE_FALSE(swapped.correct);
+  REQUIRE_THAT(swapped.feedback.at(0),
+               Catch::EndsWith("θ̇ (thetadot) where the key has I₃ (I3)? (the same value here, "
+                               "not the same quantity)"));
   // Rounded: right at the set values only to a number's tolerance.
   REQUIRE_THAT(plate.check("Omega_body_rate", "ω cos(0.2618)").feedback.at(0),
                Catch::StartsWith("it gives the key's value at the set values only as a number "
@@ -740,6 +759,50 @@ TEST_CASE("every closed form with a parameter's value for its symbol is told whi
     }
   }
   REQUIRE(told > 250);
+}
+
+TEST_CASE("every closed form with a symbol for another of the same value is told which") {
+  // Each parameter a closed form names, replaced by another whose set value is the same (θ̇ and
+  // I₃ both 0.5, the racket's a and m both 0.3): right at the set values only, and the message
+  // names both.
+  int told = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.symbolic.empty() || a.kind == AnswerKind::principal_axes) continue;
+        for (const auto& was : f.key.parameters) {
+          for (const auto& put : f.key.parameters) {
+            if (put.name == was.name || was.value == 0.0 || put.value != was.value) continue;
+            const std::string text = with_symbol_replaced(a.symbolic, was.name, put.name);
+            if (text == a.symbolic) continue;
+            INFO(p.id << " " << a.name << ": " << text);
+            const check::Verdict v = f.check(a.name, text);
+            if (v.correct) continue;  // no dependence on it (a ratio where it cancels)
+            REQUIRE_FALSE(v.feedback.empty());
+            REQUIRE_THAT(v.feedback[0], Catch::StartsWith("it gives the key's value at the set "
+                                                          "values but not at others: "));
+            // The judge tries up to 32 choices of which places to change: each place of a
+            // symbol that shares its value kept or changed (the box's a and M, both 1, in
+            // every entry of its tensor are more).
+            std::size_t choices = 1;
+            for (const auto& q : f.key.parameters) {
+              std::size_t partners = 0;
+              for (const auto& r : f.key.parameters)
+                partners += r.name != q.name && r.value == q.value && q.value != 0.0;
+              for (std::size_t places = occurrences(text, q.name); places-- > 0;)
+                choices = std::min<std::size_t>(choices * (partners + 1), 1000);
+            }
+            if (choices > 32) continue;
+            REQUIRE_THAT(v.feedback[0], Catch::Contains(" where the key has ") &&
+                                            Catch::Contains(was.name) && Catch::Contains(put.name));
+            ++told;
+          }
+        }
+      }
+    }
+  }
+  REQUIRE(told > 20);
 }
 
 TEST_CASE("equal components told once, I₁ = I₂ = .., and a symbol glued to a number over one") {
