@@ -978,17 +978,32 @@ auto hatted_at(const std::string& typed, std::size_t at) {
   });
 }
 
-// "0.5i + 1.5k" -> "0.5 i + 1.5 k": i, j or k glued to the number before it, where the problem
-// has no such symbol, set apart (a number swallows the letters after it when names are found).
-std::string unit_vectors_unglued(const std::string& s, const sym::SymbolTable& table) {
+// The axis (0, 1, 2) a bare letter at s[at] names as a unit vector, -1 if none: i, j or k where
+// the problem has no such symbol; with `xyz`, x, y or z too, not an x before a number (a times
+// sign: "7.2 x 10^-4").
+int bare_axis(const std::string& s, std::size_t at, const sym::SymbolTable& table, bool xyz) {
+  const char c = s[at];
+  const bool ijk = c == 'i' || c == 'j' || c == 'k';
+  if (!(ijk || (xyz && (c == 'x' || c == 'y' || c == 'z'))) || table.contains(std::string(1, c)))
+    return -1;
+  std::size_t next = at + 1;
+  while (next < s.size() && s[next] == ' ') ++next;
+  if (c == 'x' && next < s.size() && std::isdigit(static_cast<unsigned char>(s[next]))) return -1;
+  return ijk ? c - 'i' : c - 'x';
+}
+
+// "0.5i + 1.5k" -> "0.5 i + 1.5 k": i, j or k (x, y, z with `xyz`) glued to the number before
+// it, where the problem has no such symbol, set apart (a number swallows the letters after it
+// when names are found).
+std::string unit_vectors_unglued(const std::string& s, const sym::SymbolTable& table,
+                                 bool xyz = false) {
   std::string out;
   for (std::size_t p = 0; p < s.size(); ++p) {
     const char c = s[p];
-    const bool glued = (c == 'i' || c == 'j' || c == 'k') && p > 0 &&
+    const bool glued = bare_axis(s, p, table, xyz) >= 0 && p > 0 &&
                        (std::isdigit(static_cast<unsigned char>(s[p - 1])) || s[p - 1] == '.') &&
                        (p + 1 == s.size() ||
-                        (!std::isalnum(static_cast<unsigned char>(s[p + 1])) && s[p + 1] != '_')) &&
-                       !table.contains(std::string(1, c));
+                        (!std::isalnum(static_cast<unsigned char>(s[p + 1])) && s[p + 1] != '_'));
     if (glued) out += ' ';
     out += c;
   }
@@ -1030,8 +1045,10 @@ std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable&
 }  // namespace
 
 namespace {
-// `typed` with each unit vector as a marker "@0", "@1" or "@2" (x, y, z), spaced apart.
-std::string unit_vectors_marked(const std::string& typed, const sym::SymbolTable& table) {
+// `typed` with each unit vector as a marker "@0", "@1" or "@2" (x, y, z), spaced apart; bare x,
+// y and z too with `xyz`.
+std::string unit_vectors_marked(const std::string& typed, const sym::SymbolTable& table,
+                                bool xyz = false) {
   // One pass: replacing each in turn moved the text's tail once per unit vector, quadratic in a
   // sum of thousands.
   std::string s;
@@ -1044,13 +1061,13 @@ std::string unit_vectors_marked(const std::string& typed, const sym::SymbolTable
       at += hatted->first.size();
     }
   }
-  s = unit_vectors_unglued(s, table);
+  s = unit_vectors_unglued(s, table, xyz);
   std::string out;
   std::size_t done = 0;
   for (const auto& [start, length] : identifiers(s)) {
-    const std::string name = s.substr(start, length);
-    if ((name != "i" && name != "j" && name != "k") || table.contains(name)) continue;
-    out += s.substr(done, start - done) + " @" + std::to_string(name[0] - 'i') + " ";
+    const int axis = length == 1 ? bare_axis(s, start, table, xyz) : -1;
+    if (axis < 0) continue;
+    out += s.substr(done, start - done) + " @" + std::to_string(axis) + " ";
     done = start + length;
   }
   return out + s.substr(done);
@@ -1101,9 +1118,10 @@ std::string plain_coefficient(const std::string& coefficient, const sym::SymbolT
 // "2.59 rad/s î + 19.3 rad/s k̂"). "" if `typed` is no such sum (a
 // unit vector inside a bracket or function, two in one term, one divided by; a unit after
 // some terms but not all, or on a component told twice).
-std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& table) {
+std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& table,
+                            bool xyz = false) {
   if (typed.find('@') != std::string::npos) return "";  // the markers' own character
-  std::string sum = trim(unit_vectors_marked(typed, table)), unit;
+  std::string sum = trim(unit_vectors_marked(typed, table, xyz)), unit;
   // "x̂ − ẑ" as a PDF or a word processor sets the minus: the terms' sign.
   for (const std::string_view minus : {"\u2212", "\u2013"}) {
     for (auto at = sum.find(minus); at != std::string::npos; at = sum.find(minus, at))
@@ -1119,6 +1137,23 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
         at = next;
     }
   }
+  // "ω(sin α x̂ + cos α ẑ)", as a statement writes ω(0): a factor before the bracketed sum,
+  // each component's. Not a sum before it ("a + (..)"), nor a division by the bracket.
+  std::string factor;
+  if (const std::size_t open = sum.find('('); open != std::string::npos && open > 0) {
+    const std::size_t close = matching(sum, open);
+    const bool all_inside =
+        close != std::string::npos && sum.find('@') > open && sum.rfind('@') < close;
+    const std::string before = trim(sum.substr(0, open));
+    const bool one_factor = all_inside && !before.empty() &&
+                            before.find_first_of("+-", 1) == std::string::npos &&
+                            before.back() != '/' && before.find_first_of("([") == std::string::npos;
+    if (one_factor) {
+      factor = before.back() == '*' ? trim(before.substr(0, before.size() - 1)) : before;
+      sum = sum.substr(open);
+    }
+  }
+  bool in_brackets = false;
   if (!sum.empty() && sum[0] == '(') {  // "(..) m": the sum in brackets, a unit after
     std::size_t close = 0;
     for (int depth = 0; close < sum.size(); ++close) {
@@ -1132,8 +1167,10 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     if (after.find('@') == std::string::npos) {
       unit = trim(after);  // what it is, the reading of the vector says
       sum = sum.substr(1, close - 1);
+      in_brackets = true;
     }
   }
+  if (!factor.empty() && !in_brackets) return "";
   std::array<std::string, 3> components, component_units;
   int bases = 0;  // 1: the space basis's vectors, 2: the body's, 4: the primed
   std::size_t term_start = 0, terms = 0, terms_with_unit = 0;
@@ -1207,10 +1244,14 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
       }
     }
   }
+  if (!factor.empty() && terms_with_unit > 0) return "";  // "ω(x̂ rad/s + ..)"
   std::string vector = "[";
   for (std::size_t n = 0; n < 3; ++n) {
-    vector += (n ? ", " : "") + (components[n].empty() ? std::string("0") : components[n]) +
-              (component_units[n].empty() ? "" : " " + component_units[n]);
+    const std::string component = components[n].empty() ? std::string("0")
+                                  : factor.empty()      ? components[n]
+                                                   : "(" + factor + ")*(" + components[n] + ")";
+    vector +=
+        (n ? ", " : "") + component + (component_units[n].empty() ? "" : " " + component_units[n]);
   }
   return vector + "]" + (unit.empty() ? "" : " " + unit);
 }
@@ -1250,6 +1291,22 @@ ReadAnswer read_along_unit_vectors(const std::string& spelled, const std::string
 }  // namespace
 
 namespace {
+// "0.001863 x + 0.01391 z", as the statements write ω(0) = ω(sin α x + cos α z): bare x, y and z
+// where the problem has no such symbols, read as unit vectors only where nothing else reads and
+// the whole answer is a sum of two terms or more along them ("m x R^2" stays an x too many).
+std::optional<ReadAnswer> along_bare_axes(const std::string& typed, const sym::SymbolTable& table,
+                                          const std::string& field) {
+  const std::string marked = unit_vectors_marked(typed, table, true);
+  if (std::count(marked.begin(), marked.end(), '@') < 2) return std::nullopt;
+  const std::string components = unit_vector_sum(typed, table, true);
+  if (components.empty()) return std::nullopt;
+  try {
+    return read_transposed(components, table, field);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
 // read_answer, but for a list of vectors each read on its own.
 ReadAnswer read_whole(const std::string& typed, const sym::SymbolTable& table,
                       const std::string& field) {
@@ -1260,7 +1317,10 @@ ReadAnswer read_whole(const std::string& typed, const sym::SymbolTable& table,
     try {
       return read_transposed(typed, table, field);
     } catch (const InputError&) {
-      if (unit_vectors_named(typed, table).empty()) throw;
+      if (unit_vectors_named(typed, table).empty()) {
+        if (auto along = along_bare_axes(typed, table, field)) return *along;
+        throw;
+      }
     }
   }
   return read_along_unit_vectors(spelled, unit_vectors_named(spelled, table), table, field);

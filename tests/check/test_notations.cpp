@@ -500,6 +500,33 @@ TEST_CASE("components along the body's e₁, e₂, e₃ or LaTeX's unit vectors 
               .correct);
 }
 
+TEST_CASE("a factor before a sum along unit vectors, and the statement's bare x, y, z") {
+  // The flying plate's statement: ω(0) = ω(sin α x + cos α z). Ω_space = ω(sin α, 0, 2 cos α).
+  const Fixture plate("flying-plate");
+  for (const char* right : {"ω(sin α î + 2cos α k̂)", "ω (sin α x̂ + 2 cos α ẑ) rad/s",
+                            "ω(sin α x + 2cos α z)", "10(0.2588190451 x + 1.931851653 z) rad/s",
+                            "2.588190451 x + 19.31851653 z", "2.588190451x + 19.31851653z"}) {
+    INFO(right);
+    REQUIRE(plate.check("Omega_space", right).correct);
+  }
+  REQUIRE_FALSE(plate.check("Omega_space", "ω(sin α î + cos α k̂)").correct);
+  const auto negated = plate.check("Omega_space", "-ω(sin α î + 2cos α k̂)");
+  REQUIRE_FALSE(negated.correct);
+  REQUIRE_THAT(negated.feedback.at(0), Catch::Contains("the sign is reversed"));
+  // Not a sum before the bracket, a division by it, or a unit inside it with a factor outside.
+  for (const char* refused :
+       {"a + ω(sin α î + cos α k̂)", "ω/(sin α î + cos α k̂)", "ω(sin α î rad/s + 2cos α k̂)"}) {
+    INFO(refused);
+    REQUIRE_THROWS_WITH(plate.check("Omega_space", refused),
+                        Catch::Contains("cannot read the components along unit vectors"));
+  }
+  // A bare x is a unit vector only in a sum of two terms or more along bare axes: not one term,
+  // not an x between factors, not the times sign before a power of ten.
+  REQUIRE_THROWS_WITH(plate.check("Omega_space", "19.31851653 z"), Catch::Contains("unit 'z'"));
+  REQUIRE_THROWS_WITH(plate.check("I0", "m x R^2/4"), Catch::Contains("undefined symbol 'x'"));
+  REQUIRE(plate.check("I0", "7.2 x 10^-4").correct);
+}
+
 TEST_CASE("components along the Euler angles' primed basis, e₁′, e₂′, e₃′, read as a vector") {
   const Fixture euler("euler-angles");  // omega_primed = (-φ̇ sin θ, θ̇, φ̇ cos θ + ψ̇)
   for (const std::string& same : std::vector<std::string>{

@@ -459,6 +459,52 @@ TEST_CASE("every vector answer as components along unit vectors reads back, ever
   REQUIRE(wrong == right);
 }
 
+TEST_CASE("every vector answer along bare x, y, z, as the statements write ω(0), reads back") {
+  // "ω(0) = ω(sin α x + cos α z)": the statements' own unit vectors, no hat. Read so only as a
+  // sum of two terms or more (one term, "19.3 z", is refused), so vectors with two nonzero
+  // components or three.
+  const auto bare = [](std::size_t k) { return std::string(1, "xyz"[k]); };
+  const auto two_terms = [](const Answer& a) {
+    return std::count_if(a.value.data.begin(), a.value.data.end(),
+                         [](double x) { return x != 0.0; }) >= 2;
+  };
+  const auto forms = [&](bool flip) {
+    return [&, flip](const Answer& a) {
+      std::vector<std::string> out;
+      if (a.value.shape != Value::Shape::vector || a.value.data.size() != 3 || !two_terms(a))
+        return out;
+      for (const UnitPlace place : {UnitPlace::bracketed, UnitPlace::after_last})
+        out.push_back(along_unit_vectors(a, bare, flip, place));
+      return out;
+    };
+  };
+  const int right = forms_judged(forms(false));
+  REQUIRE(forms_judged(forms(true), false) == right);
+  REQUIRE(right > 2 * 10);  // the catalog's 3-vectors with two nonzero components or three
+}
+
+TEST_CASE("every vector answer as a factor times a bracketed sum along unit vectors reads back") {
+  // "ω(sin α x̂ + 2 cos α ẑ)" as a statement writes ω(0): here the factor 2 before the halves.
+  const auto forms = [](bool flip) {
+    return [flip](const Answer& a) {
+      std::vector<std::string> out;
+      if (a.value.shape != Value::Shape::vector || a.value.data.size() != 3) return out;
+      Answer half = a;
+      for (auto& x : half.value.data) x /= 2;
+      half.unit.clear();
+      const std::string sum = along_unit_vectors(
+          half,
+          [](std::size_t k) { return std::string("îĵk̂").substr(k < 2 ? 2 * k : 4, k < 2 ? 2 : 3); },
+          flip);
+      if (!sum.empty()) out.push_back("2(" + sum + ")" + (a.unit.empty() ? "" : " " + a.unit));
+      return out;
+    };
+  };
+  const int right = forms_judged(forms(false));
+  REQUIRE(forms_judged(forms(true), false) == right);
+  REQUIRE(right > 30);  // the catalog's nonzero 3-vectors
+}
+
 TEST_CASE("every problem's principal axes listed one by one read back, with a factor or along x̂") {
   // The key's axes are its matrix's columns; a student lists them, each scaled as books write a
   // normalised axis, "(a, b, c)/2, ..", or along unit vectors. (That a list is not read across,
