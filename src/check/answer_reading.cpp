@@ -281,6 +281,17 @@ std::string greek_letters_apart(const std::string& typed) {
     if (ends_factor(out)) out += ' ';
     out += typed.substr(i, length);
     i += length;
+    // "φ̇cos θ": the letter's dot above and subscript digits are its own, then a factor apart.
+    for (bool more = true; more;) {
+      more = false;
+      for (const std::string mark : {"\u0307", "₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"}) {
+        if (typed.compare(i, mark.size(), mark) == 0) {
+          out += mark;
+          i += mark.size();
+          more = true;
+        }
+      }
+    }
     if (i < typed.size() && std::isalpha(static_cast<unsigned char>(typed[i]))) out += ' ';
   }
   return out;

@@ -308,6 +308,22 @@ std::optional<std::string> symbols_named(const Context& ctx, const Answer& a,
 }
 }  // namespace
 
+// "90 is in degrees: write 90°": a number in an expression that, read in degrees, makes the key's
+// expression ("φ + 90" for φ + π/2); a plain number in an expression is in radians.
+std::optional<std::string> degrees_named(const Context& ctx, const Answer& a,
+                                         const std::string& typed, const sym::ValueText& key,
+                                         const std::vector<sym::Values>& points) {
+  const std::string plain = plain_text(ctx, typed);
+  const Replacements say{[](const NumberForSymbol& n, const Candidate& c) {
+                           return n.number + " is in degrees: write " + c.shown;
+                         },
+                         [](const std::vector<std::string>& told) {
+                           return fmt::format("{} (a number without a unit is in radians)",
+                                              fmt::join(told, "; "));
+                         }};
+  return replacements_named(ctx, a, plain, numbers_as_degrees(plain), say, key, points);
+}
+
 Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& typed,
                        const ReadAnswer& p, const Options& opt, AxesLayout layout) {
   const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
@@ -377,8 +393,11 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
                  "right only when it is the key's: a small term left out, or a number rounded?"}};
       }
     }
-    // Wrong at the set values: its dimension, else why as for a number.
+    // Wrong at the set values: its dimension, or degrees written as radians ("φ + 90"), else
+    // why as for a number.
     if (dimension) return *dimension;
+    if (const auto degrees = degrees_named(ctx, a, typed, key, points))
+      return {false, differs, {*degrees}};
     return {false, differs, diagnose(j, key_unit, got, a.value.data)};
   }
   return {true,

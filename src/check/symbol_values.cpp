@@ -140,6 +140,30 @@ std::vector<NumberForSymbol> symbols_sharing_values(const Key& key, const std::s
   return found;
 }
 
+std::vector<NumberForSymbol> numbers_as_degrees(const std::string& typed) {
+  const std::string s = sym::to_ascii(typed);
+  std::vector<NumberForSymbol> found;
+  for (std::size_t i = 0; i < s.size();) {
+    const bool starts = digit(s[i]) || (s[i] == '.' && i + 1 < s.size() && digit(s[i + 1]));
+    if (!starts || (i > 0 && (in_name(s[i - 1]) || s[i - 1] == '.')) || after_power(s, i)) {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    i = number_end(s, i);
+    const std::string number = s.substr(start, i - start);
+    std::size_t next = i;
+    while (next < s.size() && s[next] == ' ') ++next;
+    const bool marked = s.compare(next, 3, "deg") == 0;
+    const double x = std::strtod(number.c_str(), nullptr);
+    if (marked || significant_digits(number) < 2 ||
+        number.find_first_of("eE") != std::string::npos || !(x > 0.0 && x <= 360.0))
+      continue;
+    found.push_back({number, {{"(" + number + "*pi/180)", number + "°"}}, false, start, i - start});
+  }
+  return found;
+}
+
 std::string with_symbols(const std::string& typed, const std::vector<NumberForSymbol>& numbers,
                          const std::vector<std::size_t>& choice) {
   std::string s = sym::to_ascii(typed);

@@ -41,6 +41,12 @@ std::vector<NumberForSymbol> numbers_for_symbols(const Key& key, const std::stri
 /// values only, as a number in a symbol's place is.
 std::vector<NumberForSymbol> symbols_sharing_values(const Key& key, const std::string& typed);
 
+/// The numbers in `typed` (read in ASCII) that may be degrees written without their mark, "90"
+/// in "φ + 90" where the key has φ + π/2: of two digits or more (a single digit is a
+/// coefficient), not an exponent, not followed by "deg" or "°", at most 360. Each has one
+/// candidate, the number in radians as an expression ("(90*pi/180)") shown as "90°".
+std::vector<NumberForSymbol> numbers_as_degrees(const std::string& typed);
+
 /// sym::to_ascii(typed) with each of `numbers` replaced by its candidate numbered in `choice`
 /// (one index per number; the count of its candidates leaves it as it is).
 std::string with_symbols(const std::string& typed, const std::vector<NumberForSymbol>& numbers,

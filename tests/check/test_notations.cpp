@@ -166,6 +166,10 @@ TEST_CASE("numbers as calculators and textbooks write them") {
     REQUIRE(earth.check(name, same).correct);
   }
   REQUIRE_FALSE(earth.check("precession_period_body", "2π(1-H)/(Hω sin α)").correct);
+  // A rate's dot above, or a subscript, is the letter's own; a function after it is apart.
+  const Fixture euler_top("euler-angles");
+  REQUIRE(euler_top.check("kinetic_energy", "I1/2 (φ̇²sin²θ+θ̇²) + I3/2 (φ̇cosθ+ψ̇)²").correct);
+  REQUIRE(euler_top.check("omega_primed", "(-φ̇sinθ, θ̇, φ̇cosθ + ψ̇)").correct);
   // A root after a factor, a number glued to a function, a power on a function's name before a
   // bare argument: "ω√(4 - 3sin²α)" is ω*sqrt(4 - 3*sin(α)^2).
   const Fixture plate("flying-plate");
@@ -671,6 +675,17 @@ TEST_CASE("degrees in an expression in the symbols are radians: φ + 90°") {
   }
   REQUIRE_FALSE(euler.check("angles_zxz", "(φ + 91°, θ, ψ − 90°)").correct);
   REQUIRE_FALSE(euler.check("angles_zxz", "(φ − 90°, θ, ψ + 90°)").correct);
+  // Without the mark a number is in radians: told so where it in degrees is the key's.
+  for (const char* unmarked : {"φ+90, θ, ψ-90", "(φ + 90°, θ, ψ - 90)"}) {
+    INFO(unmarked);
+    const auto v = euler.check("angles_zxz", unmarked);
+    REQUIRE_FALSE(v.correct);
+    REQUIRE_THAT(v.feedback.at(0),
+                 Catch::Equals("90 is in degrees: write 90° (a number without a unit is in "
+                               "radians)"));
+  }
+  REQUIRE_THAT(euler.check("angles_zxz", "φ+100, θ, ψ-90").feedback.at(0),
+               !Catch::Contains("in degrees"));
   const Fixture plate("flying-plate");
   REQUIRE(plate.check("angle_omega_e3", "α + 0°").correct);
   // In a function's argument too, without symbols: a calculator's cos(30°).
