@@ -39,6 +39,8 @@ const std::vector<std::pair<std::string, Named>>& units_in_order() {
       {"h", {3600.0, {0, 0, 1}, false, "3600"}},
       // Days, as a key's notes print long periods (the Earth's wobble): 86400 s.
       {"day", {86400.0, {0, 0, 1}, false, "86400"}},
+      // Weeks, 604800 s: a long period as people count it (Euler's period of the Earth, 43 weeks).
+      {"week", {604800.0, {0, 0, 1}, false, "604800"}},
       // The Julian year, 365.25 days, as astronomy's periods are given (the Chandler wobble).
       {"yr", {31557600.0, {0, 0, 1}, false, "31557600"}},
       {"rad", {1.0, {0, 0, 0}, true, "1"}},
@@ -138,6 +140,9 @@ const std::map<std::string, std::string>& spellings() {
       {"newtons", "N"},
       {"RPM", "rpm"},
       {"days", "day"},
+      {"weeks", "week"},
+      {"wk", "week"},
+      {"wks", "week"},
       {"year", "yr"},
       {"years", "yr"},
       {"yrs", "yr"},
@@ -252,6 +257,11 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       if (lower == "gon" || lower == "gons" || lower == "gradian" || lower == "gradians") {
         return fail("'" + name + "' is gradians (400 to a turn), which are not read; write deg " +
                     "or rad");
+      }
+      if (lower == "month" || lower == "months" || lower == "mo" || lower == "mos") {
+        return fail(
+            "a month has no one length (28 to 31 days); give the time in days, weeks or "
+            "yr");
       }
       const std::string apart = run_together(name);
       return fail("unknown unit '" + name + "'" +
