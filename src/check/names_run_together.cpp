@@ -52,6 +52,30 @@ std::string only_split(const std::string& name, const sym::SymbolTable& table) {
     product += (product.empty() ? "" : "*") + name.substr(i, first[i]);
   return product;
 }
+
+// The one way `name` splits into the table's names, a function's name and at most one name
+// after it, its argument ("phidotcos" -> "phidot cos", "phidotcostheta" -> "phidot cos theta",
+// as "φ̇cosθ" reads in ASCII): "" where there is none. The function set apart by spaces, so
+// that its argument may follow without brackets; with no argument in the run, only where one
+// follows it (`argument_follows`).
+std::string only_split_around_call(const std::string& name, const sym::SymbolTable& table,
+                                   bool argument_follows) {
+  std::string found;
+  for (std::size_t at = 0; at < name.size(); ++at) {
+    for (std::size_t length = 2; at + length <= name.size(); ++length) {
+      const std::string function = name.substr(at, length), tail = name.substr(at + length);
+      if (!sym::is_function_name(function)) continue;
+      if (tail.empty() ? !argument_follows : !table.contains(tail)) continue;
+      const std::string head = name.substr(0, at);
+      const std::string product =
+          head.empty() || table.contains(head) ? head : only_split(head, table);
+      if (!head.empty() && product.empty()) continue;
+      if (!found.empty()) return "";  // two ways
+      found = (product.empty() ? "" : product + " ") + function + (tail.empty() ? "" : " " + tail);
+    }
+  }
+  return found;
+}
 }  // namespace
 
 std::string names_apart(const std::string& text, const sym::SymbolTable& table) {
@@ -78,8 +102,16 @@ std::string names_apart(const std::string& text, const sym::SymbolTable& table) 
                        name.find('_') != std::string::npos ||
                        std::isdigit(static_cast<unsigned char>(name[0])) ||
                        means_itself(name, table);
-    const std::string product = whole ? "" : only_split(name, table);
-    out += product.find('*') != std::string::npos ? product : name;
+    // Before a call or an argument ("phidotcos(theta)", "phidotcos theta"), a function may end
+    // the run.
+    std::size_t next = end;
+    while (next < text.size() && text[next] == ' ') ++next;
+    const bool argument_follows =
+        next < text.size() && (text[next] == '(' || word_char(text[next]));
+    std::string product = whole ? "" : only_split(name, table);
+    if (!whole && product.find('*') == std::string::npos)
+      product = only_split_around_call(name, table, argument_follows);
+    out += product.find_first_of("* ") != std::string::npos ? product : name;
     i = end;
   }
   return out;

@@ -50,6 +50,12 @@ TEST_CASE("names run together are split where they split one way into the proble
   CHECK(names_apart("mR^2/4", t) == "m*R^2/4");
   CHECK(names_apart("2mR^2", t) == "2m*R^2");
   CHECK(names_apart("bc + Rtheta0", t) == "b*c + R*theta0");
+  // A function's name may end the run before its call or argument, or stand before one name,
+  // its argument: "φ̇cosθ" reads so in ASCII.
+  CHECK(names_apart("Rcos(theta0)", t) == "R cos(theta0)");
+  CHECK(names_apart("mRsin theta0", t) == "m*R sin theta0");
+  CHECK(names_apart("Rcostheta0", t) == "R cos theta0");
+  CHECK(names_apart("Rcos + 1", t) == "Rcos + 1");
   // Two ways (a*b*c and ab*c), or none: left for the reader to refuse.
   CHECK(names_apart("abc", t) == "abc");
   CHECK(names_apart("mq", t) == "mq");
@@ -74,6 +80,16 @@ TEST_CASE("a product written by hand, its factors run together, is judged as the
   const Fixture top("heavy-top");
   REQUIRE(top.check("omega3_min", "2sqrt(lg(4l²+R²))/R²").correct);
   REQUIRE(top.check("energy_prime", "Mgl cos θ0").correct);
+  // Rates run together with a function, as "φ̇cosθ" is typed and as it reads in ASCII.
+  const Fixture euler("euler-angles");
+  for (const char* right :
+       {"(-φ̇sinθ, θ̇, φ̇cosθ + ψ̇)", "(-phidotsin(theta), thetadot, phidotcostheta + psidot)"}) {
+    INFO(right);
+    REQUIRE(euler.check("omega_primed", right).correct);
+  }
+  // The judge's search for a symbol of the same value reads it so too: θ̇ for I₃ is named.
+  REQUIRE_THAT(euler.check("L_primed", "[-φ̇ I₁ sin θ, θ̇ I₁, θ̇ (φ̇cosθ + ψ̇)]").feedback.at(0),
+               Catch::Contains("θ̇ (thetadot) where the key has I₃ (I3)?"));
   // A symbol in the other case, alone or run together, is named; not taken for a unit.
   REQUIRE_THROWS_WITH(plate.check("I0", "MR^2/4"), Catch::Contains("case-sensitive: m*R?"));
   REQUIRE_THROWS_WITH(plate.check("I0", "m r^2/4"),
