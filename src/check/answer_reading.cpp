@@ -496,9 +496,12 @@ bool may_be_side_by_side(const std::string& s, const sym::SymbolTable& table) {
     if (number_before && next != std::string::npos && numeric(s[next])) return false;
   }
   const auto ids = identifiers(s);
+  // "1/6 pi", "0.25 pi"; a number before a call, "10 sin(0.2618)", as a calculator's result is
+  // written out: no unit is named so.
   const bool names_pi = std::any_of(ids.begin(), ids.end(), [&](const auto& id) {
-    return s.compare(id.first, id.second, "pi") == 0 || s.compare(id.first, id.second, "Pi") == 0;
-  });  // "1/6 pi", "0.25 pi"
+    const std::string name = s.substr(id.first, id.second);
+    return name == "pi" || name == "Pi" || sym::is_function_name(name);
+  });
   // "(0, 0, -3h/4)": a symbol glued to a number is no identifier of the text as written.
   return names_pi || has_identifier_of(s, table) || s.find(' ') == std::string::npos ||
          has_identifier_of(starred(s, table), table);

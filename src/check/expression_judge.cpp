@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -17,6 +18,8 @@
 #include "check/latex_answer.hpp"
 #include "check/symbol_values.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/expression_guard.hpp"
+#include "symbolic/unicode_notation.hpp"
 #include "symbolic/value_text.hpp"
 
 namespace wobble::check::detail {
@@ -281,6 +284,7 @@ std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
   const std::string plain = plain_text(ctx, typed);
   const Replacements say{[](const NumberForSymbol& n, const Candidate& c) {
                            return n.number + " is the value of " + c.shown +
+                                  (c.in_degrees ? " in degrees" : "") +
                                   (n.rounded ? ", rounded" : "");
                          },
                          [](const std::vector<std::string>& told) {
@@ -322,6 +326,48 @@ std::optional<std::string> degrees_named(const Context& ctx, const Answer& a,
                                               fmt::join(told, "; "));
                          }};
   return replacements_named(ctx, a, plain, numbers_as_degrees(plain), say, key, points);
+}
+
+std::optional<std::string> degrees_in_numbers(const Judge& j, const std::string& typed,
+                                              double to_key) {
+  // Choices tried at most: each of five numbers in degrees or not.
+  constexpr std::size_t kMostChoices = 32;
+  const std::string plain = plain_text(j.ctx, typed);
+  const std::string ascii = sym::to_ascii(plain);
+  bool calls = false;
+  for (std::size_t i = 0; i < ascii.size() && !calls;) {
+    std::size_t end = i;
+    while (end < ascii.size() && std::isalpha(static_cast<unsigned char>(ascii[end]))) ++end;
+    calls = end > i && sym::is_function_name(ascii.substr(i, end - i));
+    i = std::max(end, i + 1);
+  }
+  const auto found = numbers_as_degrees(plain);
+  if (!calls || found.empty() || found.size() > 5) return std::nullopt;
+  for (std::size_t c = 1; c < std::min<std::size_t>(std::size_t{1} << found.size(), kMostChoices);
+       ++c) {
+    std::vector<std::size_t> choice;  // bit k: number k in degrees (its candidate 0) or not
+    for (std::size_t k = 0; k < found.size(); ++k) choice.push_back((c >> k) & 1U ? 0 : 1);
+    try {
+      const ReadAnswer fixed = read_answer(with_symbols(plain, found, choice), j.ctx.table, kField);
+      if (fixed.symbolic || fixed.value.entries.size() != j.a.value.data.size()) continue;
+      std::vector<double> got;
+      for (const auto& e : fixed.value.entries)
+        got.push_back(sym::evaluate(e, GiNaC::lst{}, kField) * to_key);
+      if (j.a.kind == AnswerKind::principal_moments) std::sort(got.begin(), got.end());
+      if (!j.all_close(got, j.a.value.data)) continue;
+    } catch (const InputError&) {
+      continue;
+    }
+    std::vector<std::string> told;
+    for (std::size_t k = 0; k < found.size(); ++k) {
+      const std::string said =
+          found[k].number + " is in degrees: write " + found[k].candidates[0].shown;
+      if (choice[k] == 0 && std::find(told.begin(), told.end(), said) == told.end())
+        told.push_back(said);
+    }
+    return fmt::format("{} (a number without a unit is in radians)", fmt::join(told, "; "));
+  }
+  return std::nullopt;
 }
 
 Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& typed,
@@ -398,6 +444,10 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
     if (dimension) return *dimension;
     if (const auto degrees = degrees_named(ctx, a, typed, key, points))
       return {false, differs, {*degrees}};
+    // "ω cos 15" for ω cos α, α = 15°: an angle's value in degrees without its mark, where its
+    // symbol makes the key's expression.
+    if (const auto named = numbers_named(ctx, a, typed, key, points))
+      return {false, differs, {*named}};
     return {false, differs, diagnose(j, key_unit, got, a.value.data)};
   }
   return {true,

@@ -372,6 +372,8 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
         a.kind == AnswerKind::principal_moments && compare != got ? " (in any order)" : "";
     return {true, "correct: " + a.name + note, {}};
   }
+  if (const auto degrees = detail::degrees_in_numbers(j, text, to_key))
+    return {false, "incorrect: " + a.name, {*degrees}};
   return {false, "incorrect: " + a.name, diagnose(j, key_unit, compare, a.value.data)};
 }
 

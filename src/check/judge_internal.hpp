@@ -4,6 +4,7 @@
 /// answer and judges a number, a vector or a matrix by its values; expression_judge.cpp judges
 /// an answer in the symbols as a function of the parameters. Both hold values to the same
 /// tolerances (Judge) and say why a value is wrong the same way (diagnose).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,13 @@ Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got);
 /// Why values `v` are not the key's `k` (diagnosis.hpp), each line one finding.
 std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
                                   const std::vector<double>& v, const std::vector<double>& k);
+
+/// "cos(30)" for cos 30°: where a numeric answer calls a function and reading some of its
+/// numbers in degrees makes its values the key's (to j's tolerance, after `to_key`, the factor
+/// of its unit), the line that says which; nullopt otherwise. (Without a function, a number in
+/// degrees is the diagnosis's "this is the angle in degrees".)
+std::optional<std::string> degrees_in_numbers(const Judge& j, const std::string& typed,
+                                              double to_key);
 
 /// An answer in the symbols (`p` as read from `typed`): proved equal to the key's closed form,
 /// or judged at the set values and three more parameter points.

@@ -99,13 +99,19 @@ std::vector<NumberForSymbol> numbers_for_symbols(const Key& key, const std::stri
     if (single_digit && !degrees) continue;
     NumberForSymbol found_here{number, {}, false, start, end - start};
     for (const auto& p : key.parameters) {
-      const double v = degrees ? p.value * 180 / kPi : p.value;  // in the unit typed
-      const double off = std::abs(x - v);
-      const bool same = off <= kSameValue * std::abs(v);
-      const bool as_rounded = significant_digits(number) >= 3 && off <= half_unit;
-      if (v == 0.0 || !(same || as_rounded)) continue;
-      found_here.rounded = found_here.rounded || !same;
-      found_here.candidates.push_back({p.name, shown_of(p)});
+      // In the unit typed; an angle's degrees also where the mark is missing ("cos 15").
+      const bool unmarked = !degrees && p.unit == "rad" && significant_digits(number) >= 2;
+      for (const bool in_degrees : {degrees, unmarked}) {
+        if (in_degrees && !degrees && !unmarked) continue;
+        const double v = in_degrees ? p.value * 180 / kPi : p.value;
+        const double off = std::abs(x - v);
+        const bool same = off <= kSameValue * std::abs(v);
+        const bool as_rounded = significant_digits(number) >= 3 && off <= half_unit;
+        if (v == 0.0 || !(same || as_rounded)) continue;
+        found_here.rounded = found_here.rounded || !same;
+        found_here.candidates.push_back({p.name, shown_of(p), in_degrees && !degrees});
+        break;
+      }
     }
     if (!found_here.candidates.empty()) found.push_back(std::move(found_here));
   }

@@ -16,6 +16,7 @@ namespace wobble::check {
 struct Candidate {
   std::string name;   ///< as typed in expressions: "theta"
   std::string shown;  ///< as printed, and as typed where that differs: "θ (theta)", "R"
+  bool in_degrees = false;  ///< the number is the angle's value in degrees, without its mark
 };
 
 /// One number and the parameters whose value it is (more than one where they share a value:
@@ -29,9 +30,11 @@ struct NumberForSymbol {
 
 /// The numbers in `typed` (read in ASCII; in degrees where "°" or "deg" follows) equal to a
 /// nonzero parameter value of `key` to 1e-9, or, typed to three significant digits or more, to
-/// within half a unit in their last digit; in the order typed. An exponent ("R^2") is no such
-/// number, nor a digit of a name ("R2"), nor a single digit without "°" ("/2", "(1/2)": a
-/// coefficient far more often than a value).
+/// within half a unit in their last digit; in the order typed. An angle's value in degrees
+/// without "°" counts too ("15" for α = 15°, of two digits or more), its candidate marked
+/// in_degrees: the number stands for the angle, but as radians it is not its value. An exponent
+/// ("R^2") is no such number, nor a digit of a name ("R2"), nor a single digit without "°" ("/2",
+/// "(1/2)": a coefficient far more often than a value).
 std::vector<NumberForSymbol> numbers_for_symbols(const Key& key, const std::string& typed);
 
 /// The symbols in `typed` (read in ASCII) whose nonzero set value another parameter shares

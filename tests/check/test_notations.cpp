@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "check/check_fixture.hpp"
@@ -686,6 +687,28 @@ TEST_CASE("degrees in an expression in the symbols are radians: φ + 90°") {
   }
   REQUIRE_THAT(euler.check("angles_zxz", "φ+100, θ, ψ-90").feedback.at(0),
                !Catch::Contains("in degrees"));
+  // In a function's argument too, numbers only or with symbols: a calculator in radians.
+  const Fixture top_u("heavy-top");    // u_p = cos θ₀, θ₀ = 30°
+  const Fixture disc("flying-plate");  // α = 15°, ω = 10 rad/s
+  for (const auto& [fixture, name, text, told] :
+       std::vector<std::tuple<const Fixture*, std::string, std::string, std::string>>{
+           {&top_u, "u_phidot_zero", "cos(30)", "30 is in degrees: write 30°"},
+           {&disc, "angle_L_e3", "atan(tan(15)/2)", "15 is in degrees: write 15°"},
+           {&disc, "Omega_space", "[10 sin(15), 0, 20 cos(15)]", "15 is in degrees: write 15°"},
+           {&disc, "Omega_body_rate", "ω cos 15",
+            "15 is the value of α (alpha) in degrees: write the symbol"}}) {
+    INFO(text);
+    const auto v = fixture->check(name, text);
+    REQUIRE_FALSE(v.correct);
+    REQUIRE_THAT(v.feedback.at(0), Catch::StartsWith(told));
+  }
+  // Without a function, a number in degrees is an angle in degrees, as before.
+  REQUIRE_THAT(disc.check("angle_L_e3", "7.63").feedback.at(0),
+               Catch::StartsWith("this is the angle in degrees"));
+  // A number before a call reads as a product, as a calculator's result is written out.
+  REQUIRE(disc.check("Omega_space", "[10 sin(0.2617993878), 0, 20 cos(0.2617993878)]").correct);
+  REQUIRE_THAT(top_u.check("u_phidot_zero", "0.5 cos(0.5235987756)").feedback.at(0),
+               Catch::Contains("a factor 2 is off"));
   const Fixture plate("flying-plate");
   REQUIRE(plate.check("angle_omega_e3", "α + 0°").correct);
   // In a function's argument too, without symbols: a calculator's cos(30°).
