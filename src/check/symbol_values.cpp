@@ -69,17 +69,22 @@ bool after_power(const std::string& s, std::size_t at) {
   while (at > 0 && s[at - 1] == ' ') --at;
   return at > 0 && s[at - 1] == '^';
 }
+// The start of the first number at or after `from` that stands alone: not a digit of a name
+// ("R2"), not after a decimal point, not an exponent ("R^2"); s.size() if none.
+std::size_t next_number(const std::string& s, std::size_t from) {
+  for (std::size_t i = from; i < s.size(); ++i) {
+    const bool starts = digit(s[i]) || (s[i] == '.' && i + 1 < s.size() && digit(s[i + 1]));
+    if (starts && !(i > 0 && (in_name(s[i - 1]) || s[i - 1] == '.')) && !after_power(s, i))
+      return i;
+  }
+  return s.size();
+}
 }  // namespace
 
 std::vector<NumberForSymbol> numbers_for_symbols(const Key& key, const std::string& typed) {
   const std::string s = sym::to_ascii(typed);
   std::vector<NumberForSymbol> found;
-  for (std::size_t i = 0; i < s.size();) {
-    const bool starts = digit(s[i]) || (s[i] == '.' && i + 1 < s.size() && digit(s[i + 1]));
-    if (!starts || (i > 0 && (in_name(s[i - 1]) || s[i - 1] == '.')) || after_power(s, i)) {
-      ++i;
-      continue;
-    }
+  for (std::size_t i = next_number(s, 0); i < s.size(); i = next_number(s, i)) {
     const std::size_t start = i;
     std::size_t end = number_end(s, i);
     std::string number = s.substr(i, end - i);
@@ -101,8 +106,8 @@ std::vector<NumberForSymbol> numbers_for_symbols(const Key& key, const std::stri
     for (const auto& p : key.parameters) {
       // In the unit typed; an angle's degrees also where the mark is missing ("cos 15").
       const bool unmarked = !degrees && p.unit == "rad" && significant_digits(number) >= 2;
-      for (const bool in_degrees : {degrees, unmarked}) {
-        if (in_degrees && !degrees && !unmarked) continue;
+      for (int pass = 0; pass < (unmarked ? 2 : 1); ++pass) {
+        const bool in_degrees = degrees || pass == 1;
         const double v = in_degrees ? p.value * 180 / kPi : p.value;
         const double off = std::abs(x - v);
         const bool same = off <= kSameValue * std::abs(v);
@@ -149,12 +154,7 @@ std::vector<NumberForSymbol> symbols_sharing_values(const Key& key, const std::s
 std::vector<NumberForSymbol> numbers_as_degrees(const std::string& typed) {
   const std::string s = sym::to_ascii(typed);
   std::vector<NumberForSymbol> found;
-  for (std::size_t i = 0; i < s.size();) {
-    const bool starts = digit(s[i]) || (s[i] == '.' && i + 1 < s.size() && digit(s[i + 1]));
-    if (!starts || (i > 0 && (in_name(s[i - 1]) || s[i - 1] == '.')) || after_power(s, i)) {
-      ++i;
-      continue;
-    }
+  for (std::size_t i = next_number(s, 0); i < s.size(); i = next_number(s, i)) {
     const std::size_t start = i;
     i = number_end(s, i);
     const std::string number = s.substr(start, i - start);

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -57,6 +58,19 @@ std::string with_symbol_replaced(const std::string& text, const std::string& nam
     }
   }
   return out;
+}
+
+// Each answer in the catalog with a closed form (principal axes aside, judged by meaning), with
+// its problem solved at the defaults.
+void for_each_closed_form(const std::function<void(const Fixture&, const Answer&)>& visit) {
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (!a.symbolic.empty() && a.kind != AnswerKind::principal_axes) visit(f, a);
+      }
+    }
+  }
 }
 
 // How many times the symbol `name` stands in `text` as a whole word.
@@ -794,35 +808,29 @@ TEST_CASE("every closed form with a parameter's value for its symbol is told whi
   // Each parameter a closed form names, replaced by its value as the key prints it: right at
   // the set values only, and the message names the parameter.
   int told = 0;
-  for (const auto& p : load_catalog()) {
-    const Fixture f(p.id);
-    for (const auto& part : f.key.parts) {
-      for (const auto& a : part.answers) {
-        if (a.symbolic.empty() || a.kind == AnswerKind::principal_axes) continue;
-        for (const auto& parameter : f.key.parameters) {
-          const std::string number = format_number(parameter.value);
-          // A single digit is taken for a coefficient, not a value (symbol_values.hpp).
-          if (parameter.value == 0.0 || number.size() == 1) continue;
-          const std::string text = with_symbol_replaced(a.symbolic, parameter.name, number);
-          if (text == a.symbolic) continue;
-          INFO(p.id << " " << a.name << ": " << text);
-          const check::Verdict v = f.check(a.name, text);
-          if (v.correct) continue;  // no dependence on it (a ratio where it cancels)
-          REQUIRE_FALSE(v.feedback.empty());
-          // The value to 10 digits: right at the set values to the expression's 1e-9 (then
-          // wrong at others), or within a number's tolerance only.
-          REQUIRE_THAT(v.feedback[0],
-                       (Catch::StartsWith("it gives the key's value at the set values but not at "
-                                          "others: ") ||
-                        Catch::StartsWith("it gives the key's value at the set values only as a "
-                                          "number rounded would")) &&
-                           Catch::Contains(number + " is the value of ") &&
-                           Catch::Contains(parameter.name));
-          ++told;
-        }
-      }
+  for_each_closed_form([&](const Fixture& f, const Answer& a) {
+    for (const auto& parameter : f.key.parameters) {
+      const std::string number = format_number(parameter.value);
+      // A single digit is taken for a coefficient, not a value (symbol_values.hpp).
+      if (parameter.value == 0.0 || number.size() == 1) continue;
+      const std::string text = with_symbol_replaced(a.symbolic, parameter.name, number);
+      if (text == a.symbolic) continue;
+      INFO(f.key.problem << " " << a.name << ": " << text);
+      const check::Verdict v = f.check(a.name, text);
+      if (v.correct) continue;  // no dependence on it (a ratio where it cancels)
+      REQUIRE_FALSE(v.feedback.empty());
+      // The value to 10 digits: right at the set values to the expression's 1e-9 (then
+      // wrong at others), or within a number's tolerance only.
+      REQUIRE_THAT(v.feedback[0],
+                   (Catch::StartsWith("it gives the key's value at the set values but not at "
+                                      "others: ") ||
+                    Catch::StartsWith("it gives the key's value at the set values only as a "
+                                      "number rounded would")) &&
+                       Catch::Contains(number + " is the value of ") &&
+                       Catch::Contains(parameter.name));
+      ++told;
     }
-  }
+  });
   REQUIRE(told > 250);
 }
 
@@ -831,42 +839,36 @@ TEST_CASE("every closed form with a symbol for another of the same value is told
   // I₃ both 0.5, the racket's a and m both 0.3): right at the set values only, and the message
   // names both.
   int told = 0;
-  for (const auto& p : load_catalog()) {
-    const Fixture f(p.id);
-    for (const auto& part : f.key.parts) {
-      for (const auto& a : part.answers) {
-        if (a.symbolic.empty() || a.kind == AnswerKind::principal_axes) continue;
-        for (const auto& was : f.key.parameters) {
-          for (const auto& put : f.key.parameters) {
-            if (put.name == was.name || was.value == 0.0 || put.value != was.value) continue;
-            const std::string text = with_symbol_replaced(a.symbolic, was.name, put.name);
-            if (text == a.symbolic) continue;
-            INFO(p.id << " " << a.name << ": " << text);
-            const check::Verdict v = f.check(a.name, text);
-            if (v.correct) continue;  // no dependence on it (a ratio where it cancels)
-            REQUIRE_FALSE(v.feedback.empty());
-            REQUIRE_THAT(v.feedback[0], Catch::StartsWith("it gives the key's value at the set "
-                                                          "values but not at others: "));
-            // The judge tries up to 32 choices of which places to change: each place of a
-            // symbol that shares its value kept or changed (the box's a and M, both 1, in
-            // every entry of its tensor are more).
-            std::size_t choices = 1;
-            for (const auto& q : f.key.parameters) {
-              std::size_t partners = 0;
-              for (const auto& r : f.key.parameters)
-                partners += r.name != q.name && r.value == q.value && q.value != 0.0;
-              for (std::size_t places = occurrences(text, q.name); places-- > 0;)
-                choices = std::min<std::size_t>(choices * (partners + 1), 1000);
-            }
-            if (choices > 32) continue;
-            REQUIRE_THAT(v.feedback[0], Catch::Contains(" where the key has ") &&
-                                            Catch::Contains(was.name) && Catch::Contains(put.name));
-            ++told;
-          }
+  for_each_closed_form([&](const Fixture& f, const Answer& a) {
+    for (const auto& was : f.key.parameters) {
+      for (const auto& put : f.key.parameters) {
+        if (put.name == was.name || was.value == 0.0 || put.value != was.value) continue;
+        const std::string text = with_symbol_replaced(a.symbolic, was.name, put.name);
+        if (text == a.symbolic) continue;
+        INFO(f.key.problem << " " << a.name << ": " << text);
+        const check::Verdict v = f.check(a.name, text);
+        if (v.correct) continue;  // no dependence on it (a ratio where it cancels)
+        REQUIRE_FALSE(v.feedback.empty());
+        REQUIRE_THAT(v.feedback[0], Catch::StartsWith("it gives the key's value at the set "
+                                                      "values but not at others: "));
+        // The judge tries up to 32 choices of which places to change: each place of a
+        // symbol that shares its value kept or changed (the box's a and M, both 1, in
+        // every entry of its tensor are more).
+        std::size_t choices = 1;
+        for (const auto& q : f.key.parameters) {
+          std::size_t partners = 0;
+          for (const auto& r : f.key.parameters)
+            partners += r.name != q.name && r.value == q.value && q.value != 0.0;
+          for (std::size_t places = occurrences(text, q.name); places-- > 0;)
+            choices = std::min<std::size_t>(choices * (partners + 1), 1000);
         }
+        if (choices > 32) continue;
+        REQUIRE_THAT(v.feedback[0], Catch::Contains(" where the key has ") &&
+                                        Catch::Contains(was.name) && Catch::Contains(put.name));
+        ++told;
       }
     }
-  }
+  });
   REQUIRE(told > 20);
 }
 
