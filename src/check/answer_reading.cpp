@@ -244,6 +244,10 @@ std::string numpy_scalars_unwrapped(std::string s) {
 // or before a Latin letter, is a product (or a function's argument), never a longer name
 // ("Homega", "I1omega1"); likewise a root after a factor ("ω√(..)"). μ stays glued: "μs" is a
 // microsecond as often as μ times s.
+// What belongs to the letter before it: a dot above (θ̇) and subscript digits (θ₀).
+constexpr std::array<std::string_view, 11> kLetterMarks{"\u0307", "₀", "₁", "₂", "₃", "₄",
+                                                        "₅",      "₆", "₇", "₈", "₉"};
+
 std::string greek_letters_apart(const std::string& typed) {
   const auto greek_at = [&](std::size_t i) -> std::size_t {
     for (const auto& [name, letter] : sym::greek_letters()) {
@@ -257,8 +261,12 @@ std::string greek_letters_apart(const std::string& typed) {
     if (out.empty()) return false;
     const char last = out.back();
     if (std::isalnum(static_cast<unsigned char>(last)) || last == '_') return true;
-    for (const std::string mark : {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉",     "⁰",
-                                   "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹", "\u0307"}) {
+    for (const std::string_view mark : kLetterMarks) {
+      if (out.size() >= mark.size() &&
+          out.compare(out.size() - mark.size(), mark.size(), mark) == 0)
+        return true;
+    }
+    for (const std::string mark : {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"}) {
       if (out.size() >= mark.size() &&
           out.compare(out.size() - mark.size(), mark.size(), mark) == 0)
         return true;
@@ -284,7 +292,7 @@ std::string greek_letters_apart(const std::string& typed) {
     // "φ̇cos θ": the letter's dot above and subscript digits are its own, then a factor apart.
     for (bool more = true; more;) {
       more = false;
-      for (const std::string mark : {"\u0307", "₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"}) {
+      for (const std::string_view mark : kLetterMarks) {
         if (typed.compare(i, mark.size(), mark) == 0) {
           out += mark;
           i += mark.size();

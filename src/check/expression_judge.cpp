@@ -204,20 +204,20 @@ bool equals_everywhere(const Context& ctx, const Answer& a, const sym::ValueText
   return true;
 }
 
-// Numbers or symbols in `typed` (`found`, found in sym::to_ascii of `plain`) where the key has
-// a symbol of that value: the choices of symbols to write in their places (one candidate per
-// entry of `found`, or none), tried until one makes the key's expression; `told` words one
-// replacement, `whole` the list. Nothing if none does: a number that happens to equal a value
-// is not blamed.
+// Numbers or symbols in `typed` (`found`, found in sym::to_ascii of `plain`) that stand where
+// the key has something else (a symbol of that value, the number in degrees): the choices of
+// what to write in their places (one candidate per entry of `found`, or none), tried until the
+// reading is the key's (`is_key`: its expression at the judging points, or its values for a
+// numeric answer); `told` words one replacement, `whole` the list. Nothing if none is: a
+// number that happens to equal a value is not blamed.
 struct Replacements {
   std::function<std::string(const NumberForSymbol&, const Candidate&)> told;
   std::function<std::string(const std::vector<std::string>&)> whole;
 };
-std::optional<std::string> replacements_named(const Context& ctx, const Answer& a,
-                                              const std::string& plain,
+using IsKey = std::function<bool(const ReadAnswer&)>;
+std::optional<std::string> replacements_named(const Context& ctx, const std::string& plain,
                                               const std::vector<NumberForSymbol>& found,
-                                              const Replacements& say, const sym::ValueText& key,
-                                              const std::vector<sym::Values>& points) {
+                                              const Replacements& say, const IsKey& is_key) {
   // Choices tried at most: two numbers, each one parameter's value or left as it is, are 4;
   // four places, each a parameter's value or not, are 16.
   constexpr std::size_t kMostChoices = 32;
@@ -243,10 +243,7 @@ std::optional<std::string> replacements_named(const Context& ctx, const Answer& 
       std::vector<std::size_t> choice;
       for (const std::size_t g : group) choice.push_back(pick[g]);
       try {
-        const ReadAnswer fixed = read_answer(with_symbols(plain, found, choice), ctx.table, kField);
-        if (fixed.value.entries.size() != key.entries.size() ||
-            !equals_everywhere(ctx, a, fixed.value, key, points))
-          continue;
+        if (!is_key(read_answer(with_symbols(plain, found, choice), ctx.table, kField))) continue;
       } catch (const InputError&) {
         continue;
       }
@@ -275,6 +272,15 @@ std::optional<std::string> replacements_named(const Context& ctx, const Answer& 
   return distinct.size() == found.size() ? std::nullopt : named(by_place);
 }
 
+// Whether a reading is the key's expression at the judging points.
+IsKey equals_key(const Context& ctx, const Answer& a, const sym::ValueText& key,
+                 const std::vector<sym::Values>& points) {
+  return [&ctx, &a, &key, &points](const ReadAnswer& fixed) {
+    return fixed.value.entries.size() == key.entries.size() &&
+           equals_everywhere(ctx, a, fixed.value, key, points);
+  };
+}
+
 // "0.12 is the value of R: write the symbol": the numbers in `typed` that are parameters'
 // values, where writing their symbols in their place makes it the key's expression (each
 // choice tried where parameters share a value).
@@ -291,7 +297,8 @@ std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
                            return fmt::format("{}: write the symbol{}", fmt::join(told, ", "),
                                               told.size() == 1 ? "" : "s");
                          }};
-  return replacements_named(ctx, a, plain, numbers_for_symbols(ctx.key, plain), say, key, points);
+  return replacements_named(ctx, plain, numbers_for_symbols(ctx.key, plain), say,
+                            equals_key(ctx, a, key, points));
 }
 
 // "θ̇ (thetadot) where the key has I₃ (I3)": a symbol in the place of another of the same set
@@ -307,31 +314,32 @@ std::optional<std::string> symbols_named(const Context& ctx, const Answer& a,
                            return fmt::format("{}? (the same value here, not the same quantity)",
                                               fmt::join(told, ", "));
                          }};
-  return replacements_named(ctx, a, plain, symbols_sharing_values(ctx.key, plain), say, key,
-                            points);
+  return replacements_named(ctx, plain, symbols_sharing_values(ctx.key, plain), say,
+                            equals_key(ctx, a, key, points));
 }
 }  // namespace
 
 // "90 is in degrees: write 90°": a number in an expression that, read in degrees, makes the key's
 // expression ("φ + 90" for φ + π/2); a plain number in an expression is in radians.
+// How a number read in degrees is told: "90 is in degrees: write 90°".
+const Replacements kDegreesSaid{[](const NumberForSymbol& n, const Candidate& c) {
+                                  return n.number + " is in degrees: write " + c.shown;
+                                },
+                                [](const std::vector<std::string>& told) {
+                                  return fmt::format("{} (a number without a unit is in radians)",
+                                                     fmt::join(told, "; "));
+                                }};
+
 std::optional<std::string> degrees_named(const Context& ctx, const Answer& a,
                                          const std::string& typed, const sym::ValueText& key,
                                          const std::vector<sym::Values>& points) {
   const std::string plain = plain_text(ctx, typed);
-  const Replacements say{[](const NumberForSymbol& n, const Candidate& c) {
-                           return n.number + " is in degrees: write " + c.shown;
-                         },
-                         [](const std::vector<std::string>& told) {
-                           return fmt::format("{} (a number without a unit is in radians)",
-                                              fmt::join(told, "; "));
-                         }};
-  return replacements_named(ctx, a, plain, numbers_as_degrees(plain), say, key, points);
+  return replacements_named(ctx, plain, numbers_as_degrees(plain), kDegreesSaid,
+                            equals_key(ctx, a, key, points));
 }
 
 std::optional<std::string> degrees_in_numbers(const Judge& j, const std::string& typed,
                                               double to_key) {
-  // Choices tried at most: each of five numbers in degrees or not.
-  constexpr std::size_t kMostChoices = 32;
   const std::string plain = plain_text(j.ctx, typed);
   const std::string ascii = sym::to_ascii(plain);
   bool calls = false;
@@ -341,33 +349,17 @@ std::optional<std::string> degrees_in_numbers(const Judge& j, const std::string&
     calls = end > i && sym::is_function_name(ascii.substr(i, end - i));
     i = std::max(end, i + 1);
   }
-  const auto found = numbers_as_degrees(plain);
-  if (!calls || found.empty() || found.size() > 5) return std::nullopt;
-  for (std::size_t c = 1; c < std::min<std::size_t>(std::size_t{1} << found.size(), kMostChoices);
-       ++c) {
-    std::vector<std::size_t> choice;  // bit k: number k in degrees (its candidate 0) or not
-    for (std::size_t k = 0; k < found.size(); ++k) choice.push_back((c >> k) & 1U ? 0 : 1);
-    try {
-      const ReadAnswer fixed = read_answer(with_symbols(plain, found, choice), j.ctx.table, kField);
-      if (fixed.symbolic || fixed.value.entries.size() != j.a.value.data.size()) continue;
-      std::vector<double> got;
-      for (const auto& e : fixed.value.entries)
-        got.push_back(sym::evaluate(e, GiNaC::lst{}, kField) * to_key);
-      if (j.a.kind == AnswerKind::principal_moments) std::sort(got.begin(), got.end());
-      if (!j.all_close(got, j.a.value.data)) continue;
-    } catch (const InputError&) {
-      continue;
-    }
-    std::vector<std::string> told;
-    for (std::size_t k = 0; k < found.size(); ++k) {
-      const std::string said =
-          found[k].number + " is in degrees: write " + found[k].candidates[0].shown;
-      if (choice[k] == 0 && std::find(told.begin(), told.end(), said) == told.end())
-        told.push_back(said);
-    }
-    return fmt::format("{} (a number without a unit is in radians)", fmt::join(told, "; "));
-  }
-  return std::nullopt;
+  if (!calls) return std::nullopt;
+  // The numbers' values, read with some in degrees, are the key's to the answer's tolerance.
+  const auto is_key = [&j, to_key](const ReadAnswer& fixed) {
+    if (fixed.symbolic || fixed.value.entries.size() != j.a.value.data.size()) return false;
+    std::vector<double> got;
+    for (const auto& e : fixed.value.entries)
+      got.push_back(sym::evaluate(e, GiNaC::lst{}, kField) * to_key);
+    if (j.a.kind == AnswerKind::principal_moments) std::sort(got.begin(), got.end());
+    return j.all_close(got, j.a.value.data);
+  };
+  return replacements_named(j.ctx, plain, numbers_as_degrees(plain), kDegreesSaid, is_key);
 }
 
 Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& typed,
