@@ -18,11 +18,13 @@
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
+#include "check/symbol_values.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/inertia.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/expression_guard.hpp"
+#include "symbolic/plain_text.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 #include "symbolic/value_text.hpp"
@@ -76,10 +78,25 @@ std::string textbook_name_words(const std::string& name) {
   return "";
 }
 
+// The parameter `name` likely means, with its "0" added or taken away: ψ̇₀ for "psidot" where
+// the problem gives the spin at t = 0 only (its key writes ψ̇₀, a student the rate ψ̇), θ for
+// "theta0" or "theta_0" where it gives θ itself; nullptr if there is none.
+const ParameterValue* parameter_but_for_zero(const Key& key, const std::string& name) {
+  std::vector<std::string> spellings{name + "0"};
+  for (const std::string zero : {"_0", "0"}) {
+    if (name.size() > zero.size() && name.ends_with(zero))
+      spellings.push_back(name.substr(0, name.size() - zero.size()));
+  }
+  for (const auto& p : key.parameters)
+    if (std::find(spellings.begin(), spellings.end(), p.name) != spellings.end()) return &p;
+  return nullptr;
+}
+
 // " (I0 is the answer to part (a): write it in the problem's symbols)" where `name` is another
 // answer of the key, or "". An answer is no symbol: reading it as its key's value would let a
-// name stand in for the working. A principal moment or a component of ω where the problem has
-// no such symbol is named as such.
+// name stand in for the working. A parameter but for its "0" is named next (not read: ψ̇ is
+// ψ̇₀ at t = 0 only), then answers the name begins, then a principal moment or a component of ω
+// where the problem has no such symbol.
 std::string name_hint(const Context& ctx, const std::string& name) {
   if (ctx.table.contains(name)) return "";
   std::vector<std::string> named;  // "Omega" for Omega_body_rate, as a book writes Ω
@@ -92,6 +109,10 @@ std::string name_hint(const Context& ctx, const std::string& name) {
       if (answer.name.rfind(name + "_", 0) == 0)
         named.push_back(fmt::format("{} (part ({}))", answer.name, part.id));
     }
+  }
+  if (const ParameterValue* p = parameter_but_for_zero(ctx.key, name)) {
+    return fmt::format(" ({} is no symbol here; the problem's is {}, the {})", name, shown_of(*p),
+                       plain_text(p->description));
   }
   if (!named.empty()) {
     return fmt::format(" ({} names {} here: write it in the problem's symbols)", name,

@@ -58,12 +58,6 @@ int significant_digits(const std::string& number) {
   return n;
 }
 
-// A parameter as printed, with its typed name where that differs: "θ (theta)", "R".
-std::string shown_of(const ParameterValue& p) {
-  const std::string shown = math_to_unicode(p.latex.empty() ? p.name : p.latex);
-  return shown == p.name ? shown : shown + " (" + p.name + ")";
-}
-
 // Whether the previous character other than a space is '^': the number is an exponent.
 bool after_power(const std::string& s, std::size_t at) {
   while (at > 0 && s[at - 1] == ' ') --at;
@@ -80,6 +74,11 @@ std::size_t next_number(const std::string& s, std::size_t from) {
   return s.size();
 }
 }  // namespace
+
+std::string shown_of(const ParameterValue& p) {
+  const std::string shown = math_to_unicode(p.latex.empty() ? p.name : p.latex);
+  return shown == p.name ? shown : shown + " (" + p.name + ")";
+}
 
 std::vector<NumberForSymbol> numbers_for_symbols(const Key& key, const std::string& typed) {
   const std::string s = sym::to_ascii(typed);

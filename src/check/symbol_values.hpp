@@ -28,6 +28,9 @@ struct NumberForSymbol {
   std::size_t at = 0, length = 0;  ///< where the number is in sym::to_ascii(typed), "deg" too
 };
 
+/// A parameter as printed, with its typed name where that differs: "θ (theta)", "R".
+std::string shown_of(const ParameterValue& p);
+
 /// The numbers in `typed` (read in ASCII; in degrees where "°" or "deg" follows) equal to a
 /// nonzero parameter value of `key` to 1e-9, or, typed to three significant digits or more, to
 /// within half a unit in their last digit; in the order typed. An angle's value in degrees

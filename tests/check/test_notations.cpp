@@ -581,6 +581,27 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
           !Catch::Contains("unit"));
 }
 
+TEST_CASE("a parameter's name but for its 0 is named with the parameter, not read as it") {
+  // The heavy top gives the rates at t = 0 only: ψ̇ is ψ̇₀ there and nowhere else, so the name
+  // is refused, and the line names the symbol with its description.
+  const Fixture top("heavy-top");
+  REQUIRE_THROWS_WITH(top.check("p_phi", "M R² ψ̇ cos θ₀ / 2"),
+                      Catch::Contains("psidot is no symbol here; the problem's is ψ̇₀ (psidot0), "
+                                      "the initial spin rate about the axle"));
+  // θ without its 0 is θ₀, not the answers θ_min and θ_max it begins.
+  REQUIRE_THROWS_WITH(top.check("p_phi", "M R^2 psidot0 cos(theta)/2"),
+                      Catch::Contains("the problem's is θ₀ (theta0)") &&
+                          !Catch::Contains("theta_min"));
+  // The other way: the Euler angles' θ itself, typed with a 0; a description's math as text.
+  const Fixture euler("euler-angles");
+  REQUIRE_THROWS_WITH(euler.check("omega_space", "[theta_0, 0, 0]"),
+                      Catch::Contains("theta_0 is no symbol here; the problem's is θ (theta), "
+                                      "the second angle, about e₂'"));
+  // A name that is no parameter with or without a 0 gets no such line.
+  REQUIRE_THROWS_WITH(top.check("p_phi", "M R^2 chi cos(theta0)/2"),
+                      !Catch::Contains("the problem's is"));
+}
+
 TEST_CASE("a textbook formula's principal moment or ω component is named as such") {
   // (I3 - I1)/I1 ω3 is the general rate, before this body's moments are put in.
   const Fixture plate("flying-plate");
