@@ -265,14 +265,18 @@ void check_expression_cost(const std::string& text, const std::string& field,
         s.fail("unknown function '" + name + "' (known: " + known + ")");
       }
     } else if (!symbols.count(name) && functions.count(name)) {
-      // "cos alpha", "cos^-1(x)": a function without its call right after it.
+      // "cos^-1(x)" is arccos in most books and 1/cos in some: the line says how to write each.
+      const bool trigonometric = name == "sin" || name == "cos" || name == "tan";
+      if (trigonometric && (text.compare(k, 5, "^(-1)") == 0 || text.compare(k, 3, "^-1") == 0)) {
+        throw ExpressionError(field + ": cannot read expression \"" + shown + "\": " + name +
+                              "^-1 reads two ways: write a" + name + "(x) for the inverse " +
+                              "function, 1/" + name + "(x) for the reciprocal");
+      }
+      // "cos alpha": a function without its call right after it.
       throw ExpressionError(field + ": cannot read expression \"" + shown + "\": " + name +
                             " is a function: its argument comes in parentheses right after it (" +
                             name + "(x), " + name + "(x)^2" +
-                            (name == "sin" || name == "cos" || name == "tan"
-                                 ? "; a" + name + "(x) for the inverse"
-                                 : "") +
-                            ")");
+                            (trigonometric ? "; a" + name + "(x) for the inverse" : "") + ")");
     } else if (!symbols.count(name)) {
       throw ExpressionError(
           field + ": cannot read expression \"" + shown + "\": undefined symbol '" + name + "'" +

@@ -110,11 +110,18 @@ TEST_CASE("an unknown name says what it probably meant: factors without '*', ano
   REQUIRE_THROWS_WITH(t.parse("acos(alpha)*mcos(alpha)", "x"),
                       Catch::Contains("unknown function 'mcos' (products need '*': m*cos)"));
   REQUIRE_THROWS_WITH(t.parse("A*m", "x"), Catch::Contains("names are case-sensitive: a?"));
-  // A function without its call: the form it takes, and the inverse a "^-1" may have meant.
+  // A function without its call: the form it takes, and the inverse it may have meant.
   REQUIRE_THROWS_WITH(
-      t.parse("cos^(-1)(alpha)", "x"),
+      t.parse("cos alpha", "x"),
       Catch::Contains("cos is a function: its argument comes in parentheses "
                       "right after it (cos(x), cos(x)^2; acos(x) for the inverse)"));
+  // "cos^-1": the inverse function in most books, the reciprocal in some; both ways named.
+  for (const char* minus_one : {"cos^(-1)(alpha)", "cos^-1(alpha)", "cos ^(-1) (alpha)"}) {
+    INFO(minus_one);
+    REQUIRE_THROWS_WITH(t.parse(minus_one, "x"),
+                        Catch::Contains("cos^-1 reads two ways: write acos(x) for the inverse "
+                                        "function, 1/cos(x) for the reciprocal"));
+  }
   for (const std::string no_inverse : {"m*sinh", "exp*m", "log^2(m)"}) {
     INFO(no_inverse);
     REQUIRE_THROWS_WITH(t.parse(no_inverse, "x"),
