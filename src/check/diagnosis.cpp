@@ -248,6 +248,17 @@ std::optional<std::string> entries_moved(const Finding& f) {
   }
   return std::nullopt;
 }
+
+// typed / expected where that is 10 or more in size, or 1/10 or less: far off, a ratio says more
+// than a percentage ("308 times the answer", not "off by 3.07e+04%"; "0.0123 times", not "off
+// by 98.8%"); nullopt nearer, or where either is zero.
+constexpr double kFarOff = 10;
+std::optional<double> far_off_ratio(double typed, double expected) {
+  if (typed == 0.0 || expected == 0.0) return std::nullopt;
+  const double ratio = typed / expected;
+  if (std::abs(ratio) < kFarOff && std::abs(ratio) > 1 / kFarOff) return std::nullopt;
+  return ratio;
+}
 }  // namespace
 
 std::vector<std::string> diagnose(const Finding& f) {
@@ -260,8 +271,12 @@ std::vector<std::string> diagnose(const Finding& f) {
   const auto& k = f.expected;
   std::vector<std::string> out;
   if (v.size() == 1) {
-    out.push_back(fmt::format("off by {:.3g}% of the answer",
-                              100 * std::abs(v[0] - k[0]) / std::max(std::abs(k[0]), 1e-300)));
+    if (const auto ratio = far_off_ratio(v[0], k[0])) {
+      out.push_back(fmt::format("{:.3g} times the answer", *ratio));
+    } else {
+      out.push_back(fmt::format("off by {:.3g}% of the answer",
+                                100 * std::abs(v[0] - k[0]) / std::max(std::abs(k[0]), 1e-300)));
+    }
     return out;
   }
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -270,6 +285,11 @@ std::vector<std::string> diagnose(const Finding& f) {
     // is right, and 200% off would hide that.
     if (k[i] != 0.0 && f.close(-v[i], k[i])) {
       out.push_back(entry_name(f.answer, i) + " has the wrong sign");
+      continue;
+    }
+    if (const auto ratio = far_off_ratio(v[i], k[i])) {
+      out.push_back(
+          fmt::format("{} is {:.3g} times its right value", entry_name(f.answer, i), *ratio));
       continue;
     }
     out.push_back(fmt::format("{} is off by {:.3g}%", entry_name(f.answer, i),

@@ -710,11 +710,19 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
   CHECK_THAT(first(space_rate, {3e7}, "rad/s"),
              Catch::Contains("10^7 times the answer: a power of ten is off (a prefix, or a "
                              "unit converted the wrong way?)"));
-  CHECK_THAT(first(space_rate, {3e10}, "rad/s"), Catch::Contains("off by 1e+12%"));
+  // Far off and no power of ten: a ratio, not a percentage of many digits.
+  CHECK_THAT(first(space_rate, {3e10}, "rad/s"), Catch::Equals("1e+10 times the answer"));
+  CHECK_THAT(first(space_rate, {-924.0}, "rad/s"), Catch::Equals("-308 times the answer"));
+  CHECK_THAT(first(space_rate, {0.0369}, "rad/s"), Catch::Equals("0.0123 times the answer"));
+  // Nearer than a factor of 10, a percentage.
+  CHECK_THAT(first(space_rate, {26.7}, "rad/s"), Catch::Equals("off by 790% of the answer"));
+  CHECK_THAT(first(space_rate, {0.35}, "rad/s"), Catch::Equals("off by 88.3% of the answer"));
   CHECK_THAT(first(space_rate, {3e-9}, "rad/s"), Catch::Contains("1/10^9 of the answer"));
   // One entry a power of ten off and the others right is no such mistake.
   CHECK_THAT(first(key.parts[0].answers[1], {10.0, 0.0, 3.0}, "kg m^2/s"),
-             Catch::Contains("entry x is off by 900%"));
+             Catch::Equals("entry x is 10 times its right value"));
+  CHECK_THAT(first(key.parts[0].answers[1], {1.0, 0.0, 25.0}, "kg m^2/s"),
+             Catch::Equals("entry z is off by 733%"));
   // One entry's sign turned: said so, not "off by 200%"; a zero entry has no sign to turn.
   CHECK_THAT(first(key.parts[0].answers[1], {-1.0, 0.0, 3.0}, "kg m^2/s"),
              Catch::Equals("entry x has the wrong sign"));
