@@ -126,19 +126,24 @@ std::string name_hint(const Context& ctx, const std::string& name) {
                      words);
 }
 
+// The name a reader's message says is undefined ("undefined symbol 'T'"), or "".
+std::string undefined_name(const std::string& message) {
+  const std::string undefined = "undefined symbol '";
+  const auto at = message.find(undefined);
+  if (at == std::string::npos) return "";
+  const auto from = at + undefined.size();
+  const auto to = message.find('\'', from);
+  return to == std::string::npos ? "" : message.substr(from, to - from);
+}
+
 // The hint of the first name in `typed` that has one ("I₀ diag(1, 1, 2)", as question (a)
 // writes I), the name the reader found undefined first (in "½I₃ω₃²" the text runs I₃ and ω₃
 // together; the reader, its stars written in, names ω₃).
 std::string answer_name_hint(const Context& ctx, const std::string& typed,
                              const std::string& message) {
-  const std::string undefined = "undefined symbol '";
-  if (const auto at = message.find(undefined); at != std::string::npos) {
-    const auto from = at + undefined.size();
-    const auto to = message.find('\'', from);
-    if (to != std::string::npos) {
-      const std::string hint = name_hint(ctx, message.substr(from, to - from));
-      if (!hint.empty()) return hint;
-    }
+  if (const std::string name = undefined_name(message); !name.empty()) {
+    const std::string hint = name_hint(ctx, name);
+    if (!hint.empty()) return hint;
   }
   const std::string ascii = sym::to_ascii(typed);
   for (std::size_t i = 0; i < ascii.size();) {
@@ -435,12 +440,22 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
     Verdict v;
     try {
       v = judge_one(ctx, a, parts[k], options);
-    } catch (const InputError&) {
+    } catch (const InputError& e) {
       // "θ_L = 7.63°", "L = (..)": a label of the student's own before the '=' (a name that is
       // no symbol of the problem), where a pasted key line has the answer's name. The answer is
       // what follows it.
       if (k == 0 && parts.size() == 2 && is_one_name(parts[0])) {
         return judge_one(ctx, a, parts[1], options);
+      }
+      // "T/2 = 1.91 s": a formula of the student's own in names the problem lacks labels the
+      // value; that side cannot be judged, and the verdict says so.
+      if (const std::string name = undefined_name(e.what());
+          k == 0 && parts.size() == 2 && !name.empty()) {
+        Verdict label = judge_one(ctx, a, parts[1], options);
+        label.feedback.push_back(fmt::format(
+            "the side \"{}\" of your '=' is taken as a label, not judged: {} is no symbol here",
+            trim(parts[0]), name));
+        return label;
       }
       throw;
     }

@@ -426,8 +426,12 @@ TEST_CASE("results as programs print them: NumPy 2's scalars, Out[n] labels") {
   REQUIRE(plate.check("I0", "np.float64(" + i0 + ") kg m^2").correct);
   REQUIRE(plate.check("I0", "Out[3]= m R^2/4 = " + i0 + " kg m^2").correct);
   REQUIRE_FALSE(plate.check("I0", "Out[3]= 2*" + i0).correct);
-  // Only a whole label is dropped; "Out[]" and a lone "np." are read as typed, and refused.
-  REQUIRE_THROWS_AS(plate.check("I0", "Out[]= " + i0), InputError);
+  // Only a whole label is dropped silently; "Out[]" is read as typed, a formula in a name the
+  // problem lacks, and so a label said unjudged; a lone "np." is refused.
+  REQUIRE_THAT(plate.check("I0", "Out[]= " + i0).feedback,
+               Catch::Equals(std::vector<std::string>{
+                   "the side \"Out[]\" of your '=' is taken as a label, not judged: Out is no "
+                   "symbol here"}));
   REQUIRE_THROWS_AS(plate.check("I0", "np.sqrt(" + i0 + ")"), InputError);
 }
 
@@ -579,6 +583,27 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
       Catch::Contains("undefined symbol 'Omega'") &&
           Catch::Contains("Omega names the answers Omega_body_rate (part (a)), Omega_space_rate") &&
           !Catch::Contains("unit"));
+}
+
+TEST_CASE(
+    "a formula in names the problem lacks before '=' labels the value, and is said unjudged") {
+  // The racket flips each half period: "T/2 = 1.91 s", T the student's own name for the period.
+  const Fixture racket("tennis-racket");
+  const auto right = racket.check("flip_interval", "T/2 = 1.91 s");
+  REQUIRE(right.correct);
+  REQUIRE(right.feedback == std::vector<std::string>{"the side \"T/2\" of your '=' is taken as a "
+                                                     "label, not judged: T is no symbol here"});
+  // The value is still judged, and its mistake named before the note.
+  const auto wrong = racket.check("flip_interval", "T/2 = 2.5 s");
+  REQUIRE_FALSE(wrong.correct);
+  REQUIRE(wrong.feedback.size() == 2);
+  REQUIRE_THAT(wrong.feedback[0], Catch::Contains("off by 31%"));
+  REQUIRE_THAT(wrong.feedback[1], Catch::Contains("taken as a label"));
+  // Only before the '=': a value's unreadable side after it is refused, naming the name.
+  REQUIRE_THROWS_WITH(racket.check("flip_interval", "1.91 s = T/2"),
+                      Catch::Contains("undefined symbol 'T'"));
+  // A left side in the problem's symbols is judged as before: a wrong formula is wrong.
+  REQUIRE_FALSE(racket.check("flip_interval", "m a = 1.91 s").correct);
 }
 
 TEST_CASE("a parameter's name but for its 0 is named with the parameter, not read as it") {
