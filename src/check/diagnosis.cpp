@@ -130,6 +130,23 @@ Wrong other_answer(const Answer& a, const Key& key, const Unit&) {
   return out;
 }
 
+// An approximation a course teaches, given for the exact answer: the fast top's steady rates.
+// Numbers only (no approximation of a vector is taught here): the line says how far off it is.
+Wrong approximation_given(const Answer& a, const Key&, const Unit&) {
+  Wrong out;
+  if (a.value.data.size() != 1 || a.value.data[0] == 0.0) return out;
+  const double exact = a.value.data[0];
+  for (const auto& approximation : a.approximations) {
+    if (approximation.values.size() != 1) continue;
+    const double off_percent = 100 * (approximation.values[0] - exact) / exact;
+    out.push_back({"", approximation.values,
+                   fmt::format("this is {}, {:.3g}% {} the exact value here: {}",
+                               approximation.name, std::abs(off_percent),
+                               off_percent < 0 ? "below" : "above", approximation.remedy)});
+  }
+  return out;
+}
+
 Wrong factor_off(const Answer& a, const Key&, const Unit&) {
   Wrong out;
   for (const double factor : {2.0, 0.5, 4.0, 0.25, 12.0, 1.0 / 12, 3.0, 1.0 / 3}) {
@@ -154,6 +171,7 @@ const std::vector<Mistake>& known_mistakes() {
       {"Hz taken as rad/s", hertz_as_radians},
       {"the components in another frame", other_frame},
       {"another answer of the key", other_answer},
+      {"an approximation for the exact answer", approximation_given},
       {"a factor off", factor_off},
   };
   return table;

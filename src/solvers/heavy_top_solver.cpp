@@ -240,6 +240,30 @@ Computed motion_kind(const Top& t) {
   return out;
 }
 
+// The fast top's steady rates, as courses teach them: M g l / (I3 ω3) for the slow one (the
+// quadratic's small root, its φ̇² term dropped), I3 ω3 / (I1 cos θ) for the fast one (its M g l
+// dropped). The note says how far off each is at these values; the judge names one given for
+// the answer.
+void add_fast_top_approximation(const Top& t, bool slow, Answer& answer) {
+  const HeavyTop& n = t.numeric;
+  const double spin_momentum = n.I3_kgm2 * t.constants.w3;
+  const double approximate = slow ? n.M_kg * n.g_m_s2 * n.l_m / spin_momentum
+                                  : spin_momentum / (n.I1_kgm2 * std::cos(t.start.theta));
+  const double exact = answer.value.data.at(0);
+  const double off_percent = 100 * (approximate - exact) / exact;
+  const std::string formula = slow ? "M g l / (I3 ω3)" : "I3 ω3 / (I1 cos θ)";
+  answer.notes.push_back(fmt::format(
+      "The {} precession: for a fast top ≈ {}, {}; here that is {:.4g} rad/s, {:.3g}% {} the "
+      "exact root.",
+      slow ? "slow" : "fast", formula, slow ? "independent of θ" : "nearly the free nutation",
+      approximate, std::abs(off_percent), off_percent < 0 ? "below" : "above"));
+  answer.approximations.push_back(
+      {"the fast-top approximation " + formula,
+       fmt::format("the {} rate is the root of I1 cos θ φ̇² − I3 ω3 φ̇ + M g l = 0 {} zero",
+                   slow ? "slow" : "fast", slow ? "nearer" : "farther from"),
+       {approximate}});
+}
+
 Computed steady(const Top& t, const std::string& q) {
   const ex c = GiNaC::cos(t.theta);
   const ex p = t.p_psi, Mgl = t.M * t.g * t.l;
@@ -271,9 +295,7 @@ Computed steady(const Top& t, const std::string& q) {
                  "Steady precession:"}}};
   const double want = slow ? rates->slow : rates->fast;
   if (std::isfinite(want)) check_routes_agree(out.answer.value.data[0], want, want, kRouteUlps, q);
-  out.answer.notes.push_back(
-      slow ? "The slow precession: for a fast top ≈ M g l / (I3 ω3), independent of θ."
-           : "The fast precession: for a fast top ≈ I3 ω3 / (I1 cos θ), nearly the free nutation.");
+  add_fast_top_approximation(t, slow, out.answer);
   return out;
 }
 

@@ -79,6 +79,14 @@ const char* sign_name(SignConvention s);
 /// "scalar", "vector" or "matrix": how a value is typed (the exports and the page's inputs).
 const char* shape_name(Value::Shape s);
 
+/// A textbook approximation of an answer, evaluated at the key's values: the judge names it when
+/// a student gives it for the answer ("the fast-top approximation M g l / (I3 ω3)").
+struct Approximation {
+  std::string name;  ///< what it is, with its formula: "the fast-top approximation M g l / (I3 ω3)"
+  std::string remedy;  ///< what the answer is instead: "the slow rate is the smaller root of .."
+  std::vector<double> values;  ///< in the answer's unit, as Value::data
+};
+
 struct Answer {
   std::string name;
   std::string quantity;  ///< the solver's quantity (the name unless the problem renamed it)
@@ -94,6 +102,9 @@ struct Answer {
   Value value;
   std::string unit;  ///< SI unit, "" for dimensionless
   std::vector<std::string> notes;
+  /// Approximations a course teaches for this answer, at these values (not in the JSON key: the
+  /// notes say them).
+  std::vector<Approximation> approximations;
   std::optional<double> check_tolerance;  ///< from the problem file, for `wobble check`
 };
 

@@ -1,6 +1,7 @@
 // Checking answers: units, the key's own values accepted and 5% off rejected for every answer
 // of every problem, and each known mistake recognised with its message.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <array>
 #include <catch2/catch.hpp>
@@ -744,7 +745,57 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
   CHECK_THAT(first(R, {0, 1, 0, -1, 0, 0, 0, 0, -1}, ""), !Catch::Contains("transpose"));
   // Its off-diagonal signs turned are no products of inertia.
   CHECK_THAT(first(R, {0, 1, 0, -1, 0, 0, 0, 0, 1}, ""), !Catch::Contains("inertia"));
-  REQUIRE(wobble::check::known_mistakes().size() == 8);
+  // An approximation a course teaches, given for the exact value: named, with how far off.
+  Answer slow;
+  slow.name = "phidot_slow";
+  slow.kind = AnswerKind::rate;
+  slow.unit = "rad/s";
+  slow.value = Value::scalar(5.0);
+  slow.approximations.push_back({"the approximation A", "the rate is B", {4.0}});
+  CHECK_THAT(first(slow, {4.0}, "rad/s"),
+             Catch::Equals("this is the approximation A, 20% below the exact value here: the rate "
+                           "is B"));
+  CHECK_THAT(first(slow, {4.5}, "rad/s"), Catch::Equals("off by 10% of the answer"));
+  REQUIRE(wobble::check::known_mistakes().size() == 9);
+}
+
+TEST_CASE("the heavy top's fast-top approximations are named where given for the exact rates") {
+  const Fixture top("heavy-top");
+  const auto parameter = [&](const std::string& name) {
+    for (const auto& p : top.key.parameters)
+      if (p.name == name) return p.value;
+    throw std::logic_error(name);
+  };
+  // From the parameters, apart from the solver: a disc about its axle, spinning at ψ̇₀ (φ̇₀ = 0
+  // at the defaults, so ω₃ = ψ̇₀), its centre l from the pivot.
+  REQUIRE(parameter("phidot0") == 0.0);
+  const double M = parameter("M"), R = parameter("R"), l = parameter("l"), g = parameter("g");
+  const double I3 = M * R * R / 2, I1 = M * R * R / 4 + M * l * l, w3 = parameter("psidot0");
+  const double slow = M * g * l / (I3 * w3), fast = I3 * w3 / (I1 * std::cos(parameter("theta0")));
+  // Typed to four digits, as a student's calculator gives them.
+  const Verdict slow_given = top.check("phidot_slow", fmt::format("{:.4g} rad/s", slow));
+  REQUIRE_FALSE(slow_given.correct);
+  REQUIRE_THAT(slow_given.feedback.at(0),
+               Catch::StartsWith("this is the fast-top approximation M g l / (I3 ω3), 16.2% "
+                                 "below the exact value here") &&
+                   Catch::Contains("nearer zero"));
+  const Verdict fast_given = top.check("phidot_fast", fmt::format("{:.4g} rad/s", fast));
+  REQUIRE_FALSE(fast_given.correct);
+  REQUIRE_THAT(fast_given.feedback.at(0),
+               Catch::StartsWith("this is the fast-top approximation I3 ω3 / (I1 cos θ), 19.3% "
+                                 "above the exact value here") &&
+                   Catch::Contains("farther from zero"));
+  // The key's notes give the same approximations, to the digits they print.
+  const auto notes = [&](const std::string& name) {
+    for (const auto& p : top.key.parts)
+      for (const auto& a : p.answers)
+        if (a.name == name) return fmt::format("{}", fmt::join(a.notes, " "));
+    throw std::logic_error(name);
+  };
+  REQUIRE_THAT(notes("phidot_slow"),
+               Catch::Contains(fmt::format("{:.4g} rad/s, 16.2% below", slow)));
+  REQUIRE_THAT(notes("phidot_fast"),
+               Catch::Contains(fmt::format("{:.4g} rad/s, 19.3% above", fast)));
 }
 
 TEST_CASE(
