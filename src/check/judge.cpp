@@ -92,11 +92,34 @@ const ParameterValue* parameter_but_for_zero(const Key& key, const std::string& 
   return nullptr;
 }
 
+// What the statement or a question defines `name` as, in its own math: "A = C(1 − H)" for A
+// where the Earth's statement writes "$A = C(1 - H)$" (its left side spelt as `name` is,
+// name_spelling()); "" if no math of theirs begins so. A name a statement defines is no symbol:
+// the line shows the definition to write in.
+std::string definition_in_text(const Key& key, const std::string& name) {
+  std::vector<const std::string*> texts{&key.statement};
+  for (const auto& part : key.parts) texts.push_back(&part.question);
+  const std::string spelling = name_spelling(name);
+  for (const std::string* text : texts) {
+    for (std::size_t open = text->find('$'); open != std::string::npos;) {
+      const std::size_t close = text->find('$', open + 1);
+      if (close == std::string::npos) break;
+      const std::string math = text->substr(open + 1, close - open - 1);
+      const std::size_t equals = math.find('=');
+      if (equals != std::string::npos && !math.empty() &&
+          name_spelling(math.substr(0, equals)) == spelling)
+        return math_to_unicode(math);
+      open = text->find('$', close + 1);
+    }
+  }
+  return "";
+}
+
 // " (I0 is the answer to part (a): write it in the problem's symbols)" where `name` is another
 // answer of the key, or "". An answer is no symbol: reading it as its key's value would let a
 // name stand in for the working. A parameter but for its "0" is named next (not read: ψ̇ is
-// ψ̇₀ at t = 0 only), then answers the name begins, then a principal moment or a component of ω
-// where the problem has no such symbol.
+// ψ̇₀ at t = 0 only), then a name the statement defines, then answers the name begins, then a
+// principal moment or a component of ω where the problem has no such symbol.
 std::string name_hint(const Context& ctx, const std::string& name) {
   if (ctx.table.contains(name)) return "";
   std::vector<std::string> named;  // "Omega" for Omega_body_rate, as a book writes Ω
@@ -113,6 +136,12 @@ std::string name_hint(const Context& ctx, const std::string& name) {
   if (const ParameterValue* p = parameter_but_for_zero(ctx.key, name)) {
     return fmt::format(" ({} is no symbol here; the problem's is {}, the {})", name, shown_of(*p),
                        plain_text(p->description));
+  }
+  if (const std::string defined = definition_in_text(ctx.key, name); !defined.empty()) {
+    return fmt::format(
+        " ({} is no symbol here; the problem defines {}: write it in the "
+        "problem's symbols)",
+        name, defined);
   }
   if (!named.empty()) {
     return fmt::format(" ({} names {} here: write it in the problem's symbols)", name,

@@ -606,6 +606,18 @@ TEST_CASE(
   REQUIRE_FALSE(racket.check("flip_interval", "m a = 1.91 s").correct);
 }
 
+TEST_CASE("a name the statement defines is named with its definition, to be written in") {
+  // The Earth's statement: "equatorial moment $A = C(1 - H)$"; A is no symbol of the problem.
+  const Fixture earth("earth-free-precession");
+  REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "(C − A)/A ω"),
+                      Catch::Contains("A is no symbol here; the problem defines A = C(1 - H): "
+                                      "write it in the problem's symbols"));
+  // Written in, it reads and is judged.
+  REQUIRE(earth.check("Omega_body_rate", "(C − C(1 − H))/(C(1 − H)) ω cos α").correct);
+  // A name no math of the statement defines gets no such line.
+  REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "B ω"), !Catch::Contains("defines"));
+}
+
 TEST_CASE("a parameter's name but for its 0 is named with the parameter, not read as it") {
   // The heavy top gives the rates at t = 0 only: ψ̇ is ψ̇₀ there and nowhere else, so the name
   // is refused, and the line names the symbol with its description.
