@@ -930,6 +930,57 @@ bool read_with_factor(const std::string& value, const sym::SymbolTable& table,
     return false;
   }
 }
+
+// The terms of `s` at its top level, each with its sign: "a [1, 0] - b [0, 1]" -> "a [1, 0]",
+// "- b [0, 1]".
+std::vector<std::string> top_level_terms(const std::string& s) {
+  std::vector<std::string> terms;
+  int depth = 0;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c == '(' || c == '[' || c == '{') ++depth;
+    if (c == ')' || c == ']' || c == '}') --depth;
+    if (depth == 0 && (c == '+' || c == '-') && starts_term(s, i)) {
+      terms.push_back(trim(s.substr(start, i - start)));
+      start = i;
+    }
+  }
+  terms.push_back(trim(s.substr(start)));
+  return terms;
+}
+
+// "φ̇ (0, 0, 1) + θ̇ (−sin φ, cos φ, 0) + ψ̇ (sin θ cos φ, sin θ sin φ, cos θ)": vectors (or
+// matrices) of one shape added, each with a factor outside or none, as ω is built from the
+// Euler angles' rates along their axes. Each term is read as an answer of its own, without a
+// unit; false if `value` is no such sum or a term does not read.
+bool read_vector_sum(const std::string& value, const sym::SymbolTable& table,
+                     const std::string& field, ReadAnswer& p) {
+  const std::vector<std::string> terms = top_level_terms(value);
+  if (terms.size() < 2) return false;
+  ReadAnswer sum;
+  try {
+    for (const std::string& term : terms) {
+      const std::string unsigned_term = term[0] == '+' ? trim(term.substr(1)) : term;
+      ReadAnswer one = read_answer(unsigned_term, table, field);
+      if (one.unit || !(one.value.is_vector || one.value.is_matrix)) return false;
+      if (sum.value.entries.empty()) {
+        sum = std::move(one);
+        continue;
+      }
+      if (one.value.rows != sum.value.rows || one.value.cols != sum.value.cols ||
+          one.value.is_matrix != sum.value.is_matrix)
+        return false;
+      for (std::size_t i = 0; i < sum.value.entries.size(); ++i)
+        sum.value.entries[i] += one.value.entries[i];
+      sum.symbolic = sum.symbolic || one.symbolic;
+    }
+  } catch (const InputError&) {
+    return false;
+  }
+  p = std::move(sum);
+  return true;
+}
 }  // namespace
 
 namespace {
@@ -1463,6 +1514,7 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
         throw InputError(field + ": units inside the bracket and after it; give them in one place");
       return finished(p, unit, field);
     }
+    if (read_vector_sum(value, table, field, p)) return finished(p, unit, field);
     // "omega * m" is an expression, not omega in metres.
     if (!unit.empty()) {
       try {

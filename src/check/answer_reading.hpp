@@ -28,6 +28,8 @@
 ///   "4.995/s";
 /// - a vector or matrix with a factor outside, "M/12 [[b^2 + c^2, 0, 0], ..]", "[a, b, c]/2",
 ///   "1/2 (a, b, c) m" (a product only: the rest is a factor times the bracket);
+/// - vectors (or matrices) of one shape added, each with a factor or none, "φ̇ (0, 0, 1) + θ̇
+///   (−sin φ, cos φ, 0)", a unit after the sum only;
 /// - a numeric exponent with its sign, "10^-4" (read as 10^(-4), as a student means it), and
 ///   the letter x for the times sign before 10^, "7.2x10^-4";
 /// - powers as Python writes them, "R**2", and a trigonometric power as textbooks do,

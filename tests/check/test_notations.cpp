@@ -606,6 +606,30 @@ TEST_CASE(
   REQUIRE_FALSE(racket.check("flip_interval", "m a = 1.91 s").correct);
 }
 
+TEST_CASE("vectors added, each with its factor, read as their sum: ω from the Euler rates") {
+  // ω = φ̇ ẑ + θ̇ ê_N + ψ̇ ê₃, each axis written in the space basis, as the lecture builds it.
+  const Fixture euler("euler-angles");
+  for (const char* same :
+       {"φ̇ (0, 0, 1) + θ̇ (−sin φ, cos φ, 0) + ψ̇ (sin θ cos φ, sin θ sin φ, cos θ)",
+        "φ̇ [0,0,1] + θ̇ [−sin φ, cos φ, 0] + ψ̇ [sinθ cosφ, sinθ sinφ, cosθ]",
+        "φ̇ ẑ + θ̇ (−sin φ, cos φ, 0) + ψ̇ (sin θ cos φ, sin θ sin φ, cos θ)",
+        "ψ̇ (sin θ cos φ, sin θ sin φ, cos θ) - θ̇ (sin φ, −cos φ, 0) + (0, 0, φ̇)"}) {
+    INFO(same);
+    REQUIRE(euler.check("omega_space", same).correct);
+  }
+  // The line of nodes' sign turned: a wrong sum is judged wrong, entry by entry.
+  const auto wrong = euler.check(
+      "omega_space", "φ̇ (0, 0, 1) + θ̇ (sin φ, −cos φ, 0) + ψ̇ (sin θ cos φ, sin θ sin φ, cos θ)");
+  REQUIRE_FALSE(wrong.correct);
+  REQUIRE_THAT(wrong.feedback.at(0), Catch::StartsWith("entry x is off by"));
+  // The box's centre, edge by edge; vectors of two sizes do not add.
+  const Fixture box("box-corner");
+  REQUIRE(box.check("center_of_mass", "(a, 0, 0)/2 + (0, b, 0)/2 + (0, 0, c)/2").correct);
+  REQUIRE_THROWS_AS(box.check("center_of_mass", "(a, 0, 0)/2 + (0, b)/2"), InputError);
+  // A number added to a vector is no sum of vectors.
+  REQUIRE_THROWS_AS(box.check("center_of_mass", "(a, b, c)/2 + 1"), InputError);
+}
+
 TEST_CASE("a name the statement defines is named with its definition, to be written in") {
   // The Earth's statement: "equatorial moment $A = C(1 - H)$"; A is no symbol of the problem.
   const Fixture earth("earth-free-precession");
