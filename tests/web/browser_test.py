@@ -261,6 +261,14 @@ def main():
             d.refresh()
             wait_for(d, "canvas.view3d")
             fps[name] = check_view(d, name, shots)
+            if name == "view-tennis-racket":
+                # Each label says how its answer is typed: the pairs (Ω₁, Ω₂) are no x, y, z.
+                labels = {l.text.split()[0]: l.text
+                          for l in d.find_elements(By.CSS_SELECTOR, ".answer label")}
+                expect(labels.get("Omega_axis1", "").endswith("(a vector [.., ..])"),
+                       "the pair's label: %r" % labels.get("Omega_axis1"))
+                expect(labels.get("dw_dt0", "").endswith("(a vector [x, y, z])"),
+                       "the vector's label: %r" % labels.get("dw_dt0"))
         stage("3-D views done")
         # The instructor's page: the key under each answer, each one judged right pasted back.
         for other in (d, d2):

@@ -25,6 +25,12 @@ function el(tag, attrs, ...children) {
 }
 
 // Units as a reader writes them: kg m^2/s -> kg m²/s.
+// How a vector of n entries is typed: "[x, y, z]" for three (along the axes), "[.., ..]" for
+// the asymmetric top's pairs (Ω₁, Ω₂), which are no components along x and y.
+function vectorForm(n) {
+  return n === 3 ? '[x, y, z]' : '[' + Array(n).fill('..').join(', ') + ']';
+}
+
 function prettyUnit(unit) {
   const sup = {'-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶',
                '7': '⁷', '8': '⁸', '9': '⁹'};
@@ -184,8 +190,9 @@ function partView(id, variant, part, state, partKey, update) {
       }
     });
     const unit = a.unit ? ' [' + prettyUnit(a.unit) + ']' : '';
-    const shape = a.shape === 'vector' ? ' (a vector [x, y, z])' :
-                  a.shape === 'matrix' ? ' (a matrix [[..], [..], [..]])' : '';
+    const shape = a.kind === 'principal_moments' ? ' (three moments [.., .., ..], in any order)' :
+                  a.shape === 'vector' ? ' (a vector ' + vectorForm(a.rows) + ')' :
+                  a.shape === 'matrix' ? ' (a matrix [' + Array(a.rows).fill('[..]').join(', ') + '])' : '';
     div.append(el('div', {class: 'answer'}, el('label', {}, a.name + unit + shape), input, verdict,
                   ...(keyed ? [keyLine(keyed)] : [])));
   }
