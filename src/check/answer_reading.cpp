@@ -1276,8 +1276,10 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     if (term_unit.empty() && after.empty()) {
       // "19.3 rad/s k̂", as "F = 5 N x̂" is written: a unit between a number and its unit
       // vector (after an expression in the symbols, "m R² ω/2 ê₃", the letters stay factors).
+      // A '*' joins a factor, not a unit: "2*h k̂" where h is a height is 2h along z, not hours.
       const auto [number, unit_text] = split_value_unit(plain_coefficient(before, table));
-      if (!unit_text.empty() && !number.empty() && !has_identifier_of(number, table)) {
+      if (!unit_text.empty() && !number.empty() && number.back() != '*' &&
+          !has_identifier_of(number, table)) {
         before = number;
         term_unit = unit_text;
       }

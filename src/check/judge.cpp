@@ -155,6 +155,42 @@ std::string name_hint(const Context& ctx, const std::string& name) {
                      words);
 }
 
+// Where every letter group of a unit as read is also a symbol of the problem ("h" where h is a
+// height, "0.75 h ẑ" read as hours): a line naming them, with what to write for the product;
+// "" otherwise. After a number the letters are the unit (as "0.5 m" is half a metre even where
+// m is a mass); the line says so where that reading gave the wrong dimension.
+std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_text) {
+  std::vector<std::string> words;
+  for (std::size_t i = 0; i < unit_text.size();) {
+    if (!std::isalpha(static_cast<unsigned char>(unit_text[i]))) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < unit_text.size() && std::isalnum(static_cast<unsigned char>(unit_text[end])))
+      ++end;
+    words.push_back(unit_text.substr(i, end - i));
+    if (!ctx.table.contains(words.back())) return "";
+    i = end;
+  }
+  if (words.empty()) return "";
+  const std::string product = fmt::format("number*{}", fmt::join(words, "*"));
+  if (words.size() > 1) {
+    return fmt::format(
+        "{} are also the problem's symbols: after a number they read as a unit; for the "
+        "product, write the '*' ({})",
+        fmt::join(words, ", "), product);
+  }
+  const auto p = std::find_if(ctx.key.parameters.begin(), ctx.key.parameters.end(),
+                              [&](const ParameterValue& q) { return q.name == words[0]; });
+  const std::string what = p == ctx.key.parameters.end() || p->description.empty()
+                               ? "a symbol of the problem"
+                               : "the problem's symbol for the " + plain_text(p->description);
+  return fmt::format(
+      "{} is also {}: after a number it reads as the unit; for the product, write the '*' ({})",
+      words[0], what, product);
+}
+
 // The name a reader's message says is undefined ("undefined symbol 'T'"), or "".
 std::string undefined_name(const std::string& message) {
   const std::string undefined = "undefined symbol '";
@@ -409,6 +445,8 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
       v.feedback.push_back("you gave " + p.unit->text + " (" + p.unit->dimension_words() +
                            "); the answer is in " + (a.unit.empty() ? "no unit" : a.unit) + " (" +
                            key_unit.dimension_words() + ")");
+      if (const std::string symbols = unit_spelling_symbols(ctx, p.unit->text); !symbols.empty())
+        v.feedback.push_back(symbols);
       return v;
     }
     to_key = p.unit->to_si / key_unit.to_si;

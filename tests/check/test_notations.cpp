@@ -630,6 +630,29 @@ TEST_CASE("vectors added, each with its factor, read as their sum: ω from the E
   REQUIRE_THROWS_AS(box.check("center_of_mass", "(a, b, c)/2 + 1"), InputError);
 }
 
+TEST_CASE("a symbol after a number's '*' is a factor; spelling a unit after a space, it is said") {
+  // The cone's centre of mass, −3h/4 along z, h the height (and hours).
+  const Fixture cone("solid-cone");
+  REQUIRE(cone.check("center_of_mass", "-0.75*h ẑ").correct);
+  REQUIRE(cone.check("center_of_mass", "-0.75*h*k̂").correct);
+  REQUIRE_FALSE(cone.check("center_of_mass", "2*h k̂").correct);  // judged, not hours
+  REQUIRE(cone.check("center_of_mass", "-0.225 m k̂").correct);   // a unit after a space
+  // After a space the letters are the unit, as "0.5 m" is half a metre where m is a mass: the
+  // wrong dimension, and a line saying they are the problem's symbol too.
+  const auto hours = cone.check("center_of_mass", "-0.75 h k̂");
+  REQUIRE_FALSE(hours.correct);
+  REQUIRE(hours.feedback ==
+          std::vector<std::string>{"you gave h (time); the answer is in m (length)",
+                                   "h is also the problem's symbol for the height: after a "
+                                   "number it reads as the unit; for the product, write the "
+                                   "'*' (number*h)"});
+  const Fixture plate("flying-plate");
+  REQUIRE_THAT(plate.check("I0", "0.00072 m").feedback.at(1),
+               Catch::StartsWith("m is also the problem's symbol for the mass"));
+  // A unit that is no symbol of the problem gets the dimension alone.
+  REQUIRE(cone.check("center_of_mass", "-0.225 s k̂").feedback.size() == 1);
+}
+
 TEST_CASE("a name the statement defines is named with its definition, to be written in") {
   // The Earth's statement: "equatorial moment $A = C(1 - H)$"; A is no symbol of the problem.
   const Fixture earth("earth-free-precession");
