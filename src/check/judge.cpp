@@ -257,7 +257,19 @@ Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got) {
   if (f.correct) {
     return {true, "correct: " + j.a.name + " (" + f.how + ", in any order, each up to sign)", {}};
   }
-  return {false, "incorrect: " + j.a.name, f.problems};
+  Verdict v{false, "incorrect: " + j.a.name, f.problems};
+  // Vectors listed one by one that are the axes read down instead: the rows of the matrix an
+  // eigenvector routine returns, whose columns are the axes (numpy's eigh(I)[1]).
+  // (Labelled vectors, e1 = (..), come as the columns of their matrix: the other way is rows.)
+  const AxesLayout read_across =
+      j.layout == AxesLayout::rows ? AxesLayout::columns : AxesLayout::rows;
+  if (j.layout != AxesLayout::rows_or_columns &&
+      judge_axes(got, axes, lambda, tol, read_across).correct) {
+    v.feedback.insert(v.feedback.begin(),
+                      "these are the rows of the axes' matrix: an eigenvector routine (numpy's "
+                      "eigh, MATLAB's eig) gives the axes as its columns; list the columns");
+  }
+  return v;
 }
 
 // What the judge found, as data for the diagnosis (diagnosis.hpp).

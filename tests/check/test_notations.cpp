@@ -1000,6 +1000,27 @@ TEST_CASE("equal components told once, I₁ = I₂ = .., and a symbol glued to a
   REQUIRE_FALSE(cone.check("center_of_mass", "(0, 0, 3h/4)").correct);
 }
 
+TEST_CASE("axes listed as the rows of an eigenvector matrix are said to be its rows") {
+  // Taylor 10.35: the axes are x and (y ± z)/√2, the columns of the key's matrix; numpy's
+  // eigh(I)[1] prints that matrix, and its rows listed one by one are no axes.
+  const Fixture taylor("taylor-10-35");
+  for (const char* rows :
+       {"(0, 0, 1), (0.7071, 0.7071, 0), (-0.7071, 0.7071, 0)", "ẑ, (x̂ + ŷ)/√2, (ŷ − x̂)/√2"}) {
+    INFO(rows);
+    const auto v = taylor.check("principal_axes", rows);
+    REQUIRE_FALSE(v.correct);
+    REQUIRE_THAT(v.feedback.at(0), Catch::StartsWith("these are the rows of the axes' matrix"));
+  }
+  // Listed as the columns, they are the axes; as a matrix, either way reads.
+  REQUIRE(taylor.check("principal_axes", "(0, 1, -1)/√2, (0, 1, 1)/√2, (1, 0, 0)").correct);
+  REQUIRE(taylor.check("principal_axes", "[[0, 0, 1], [0.7071, 0.7071, 0], [-0.7071, 0.7071, 0]]")
+              .correct);
+  // Vectors that are no axes either way get no such line.
+  const auto wrong = taylor.check("principal_axes", "(1, 1, 0), (1, -1, 0), (0, 0, 1)");
+  REQUIRE_FALSE(wrong.correct);
+  REQUIRE_THAT(wrong.feedback.at(0), !Catch::Contains("rows of the axes' matrix"));
+}
+
 TEST_CASE("principal axes listed one by one are the axes, with a factor or along unit vectors") {
   // The four masses' axes: (1, 1, 0)/√2, (1, −1, 0)/√2, (0, 0, 1). Their matrix's rows, (1, 0,
   // 1), (1, 0, −1), (0, 1, 0), are no axes: a listed vector is never read across.
@@ -1020,7 +1041,9 @@ TEST_CASE("principal axes listed one by one are the axes, with a factor or along
     INFO(across);
     const auto v = masses.check("principal_axes", across);
     REQUIRE_FALSE(v.correct);
-    REQUIRE_THAT(v.feedback.at(0),
+    // The rows of the axes' matrix: said first, then each vector that is no axis.
+    REQUIRE_THAT(v.feedback.at(0), Catch::StartsWith("these are the rows of the axes' matrix"));
+    REQUIRE_THAT(v.feedback.at(1),
                  Catch::Contains("(1, 0, 1)") || Catch::Contains("(0.7071, 0, 0.7071)"));
   }
   // A matrix in one bracket, as the key prints its axes' matrix, may hold them either way.
