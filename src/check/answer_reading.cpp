@@ -954,10 +954,14 @@ std::vector<std::string> top_level_terms(const std::string& s) {
 // matrices) of one shape added, each with a factor outside or none, as ω is built from the
 // Euler angles' rates along their axes. Each term is read as an answer of its own, without a
 // unit; false if `value` is no such sum or a term does not read.
+// A sum of vectors as a hand writes one has a few terms (ω from three rates, a centre of mass
+// edge by edge); each term is read as a whole answer, so a sum of thousands is not tried.
+constexpr std::size_t kMostVectorTerms = 12;
+
 bool read_vector_sum(const std::string& value, const sym::SymbolTable& table,
                      const std::string& field, ReadAnswer& p) {
   const std::vector<std::string> terms = top_level_terms(value);
-  if (terms.size() < 2) return false;
+  if (terms.size() < 2 || terms.size() > kMostVectorTerms) return false;
   ReadAnswer sum;
   try {
     for (const std::string& term : terms) {
