@@ -25,6 +25,27 @@
 
 namespace wobble::check {
 
+std::vector<std::pair<std::size_t, std::size_t>> identifiers(const std::string& s) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;  // (start, length)
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (!std::isalpha(c) && c != '_') {
+      // Skip a number whole, "2e5" included: its exponent is no identifier.
+      if (std::isdigit(c) || c == '.') {
+        while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
+      } else {
+        ++i;
+      }
+      continue;
+    }
+    std::size_t j = i;
+    while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
+    out.emplace_back(i, j - i);
+    i = j;
+  }
+  return out;
+}
+
 namespace {
 std::string bracket_group(const std::string& group);
 
@@ -91,28 +112,6 @@ bool differs_in_case_only(const std::string& name, const sym::SymbolTable& table
          std::any_of(table.names().begin(), table.names().end(), [&](const std::string& known) {
            return ascii_lower(known) == ascii_lower(name);
          });
-}
-
-// The identifiers in s, in order: "M*R^2 psidot_0" -> {M, R, psidot_0}.
-std::vector<std::pair<std::size_t, std::size_t>> identifiers(const std::string& s) {
-  std::vector<std::pair<std::size_t, std::size_t>> out;  // (start, length)
-  for (std::size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (!std::isalpha(c) && c != '_') {
-      // Skip a number whole, "2e5" included: its exponent is no identifier.
-      if (std::isdigit(c) || c == '.') {
-        while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '.')) ++i;
-      } else {
-        ++i;
-      }
-      continue;
-    }
-    std::size_t j = i;
-    while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
-    out.emplace_back(i, j - i);
-    i = j;
-  }
-  return out;
 }
 
 // The functions an answer may name (GiNaC's names).

@@ -45,6 +45,8 @@
 /// of its letters as a symbol: where m is a mass, "2m" is ambiguous and refused.
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "symbolic/units.hpp"
 #include "symbolic/value_text.hpp"
@@ -56,6 +58,10 @@ struct ReadAnswer {
   std::optional<Unit> unit;
   bool symbolic = false;  ///< has the problem's symbols (then a unit, if any, is an SI one)
 };
+
+/// The identifiers in s, in order, as (start, length): "M*R^2 psidot_0" -> M, R, psidot_0 (a
+/// number's exponent, "2e5", is none).
+std::vector<std::pair<std::size_t, std::size_t>> identifiers(const std::string& s);
 
 /// The answer in wobble's reading form, the unit still attached: "(1, 0, 0) rad/s" ->
 /// "[1, 0, 0] rad/s". Never throws; what it cannot rearrange it leaves for the parser.

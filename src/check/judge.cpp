@@ -82,13 +82,13 @@ std::string textbook_name_words(const std::string& name) {
 // the problem gives the spin at t = 0 only (its key writes ψ̇₀, a student the rate ψ̇), θ for
 // "theta0" or "theta_0" where it gives θ itself; nullptr if there is none.
 const ParameterValue* parameter_but_for_zero(const Key& key, const std::string& name) {
-  std::vector<std::string> spellings{name + "0"};
+  if (const ParameterValue* p = parameter_named(key, name + "0")) return p;
   for (const std::string zero : {"_0", "0"}) {
-    if (name.size() > zero.size() && name.ends_with(zero))
-      spellings.push_back(name.substr(0, name.size() - zero.size()));
+    if (name.size() > zero.size() && name.ends_with(zero)) {
+      if (const ParameterValue* p = parameter_named(key, name.substr(0, name.size() - zero.size())))
+        return p;
+    }
   }
-  for (const auto& p : key.parameters)
-    if (std::find(spellings.begin(), spellings.end(), p.name) != spellings.end()) return &p;
   return nullptr;
 }
 
@@ -161,17 +161,9 @@ std::string name_hint(const Context& ctx, const std::string& name) {
 // m is a mass); the line says so where that reading gave the wrong dimension.
 std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_text) {
   std::vector<std::string> words;
-  for (std::size_t i = 0; i < unit_text.size();) {
-    if (!std::isalpha(static_cast<unsigned char>(unit_text[i]))) {
-      ++i;
-      continue;
-    }
-    std::size_t end = i;
-    while (end < unit_text.size() && std::isalnum(static_cast<unsigned char>(unit_text[end])))
-      ++end;
-    words.push_back(unit_text.substr(i, end - i));
+  for (const auto& [at, length] : identifiers(unit_text)) {
+    words.push_back(unit_text.substr(at, length));
     if (!ctx.table.contains(words.back())) return "";
-    i = end;
   }
   if (words.empty()) return "";
   const std::string product = fmt::format("number*{}", fmt::join(words, "*"));
@@ -181,9 +173,8 @@ std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_te
         "product, write the '*' ({})",
         fmt::join(words, ", "), product);
   }
-  const auto p = std::find_if(ctx.key.parameters.begin(), ctx.key.parameters.end(),
-                              [&](const ParameterValue& q) { return q.name == words[0]; });
-  const std::string what = p == ctx.key.parameters.end() || p->description.empty()
+  const ParameterValue* p = parameter_named(ctx.key, words[0]);
+  const std::string what = p == nullptr || p->description.empty()
                                ? "a symbol of the problem"
                                : "the problem's symbol for the " + plain_text(p->description);
   return fmt::format(

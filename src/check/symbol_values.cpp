@@ -75,6 +75,12 @@ std::size_t next_number(const std::string& s, std::size_t from) {
 }
 }  // namespace
 
+const ParameterValue* parameter_named(const Key& key, const std::string& name) {
+  const auto p = std::find_if(key.parameters.begin(), key.parameters.end(),
+                              [&](const ParameterValue& q) { return q.name == name; });
+  return p == key.parameters.end() ? nullptr : &*p;
+}
+
 std::string shown_of(const ParameterValue& p) {
   const std::string shown = math_to_unicode(p.latex.empty() ? p.name : p.latex);
   return shown == p.name ? shown : shown + " (" + p.name + ")";
@@ -137,9 +143,8 @@ std::vector<NumberForSymbol> symbols_sharing_values(const Key& key, const std::s
     const std::size_t start = i;
     while (i < s.size() && in_name(s[i])) ++i;
     const std::string name = s.substr(start, i - start);
-    const auto self = std::find_if(key.parameters.begin(), key.parameters.end(),
-                                   [&](const ParameterValue& p) { return p.name == name; });
-    if (self == key.parameters.end() || self->value == 0.0) continue;
+    const ParameterValue* self = parameter_named(key, name);
+    if (self == nullptr || self->value == 0.0) continue;
     NumberForSymbol here{shown_of(*self), {}, false, start, i - start};
     for (const auto& p : key.parameters) {
       if (p.name != name && std::abs(p.value - self->value) <= kSameValue * std::abs(self->value))

@@ -28,6 +28,9 @@ struct NumberForSymbol {
   std::size_t at = 0, length = 0;  ///< where the number is in sym::to_ascii(typed), "deg" too
 };
 
+/// The key's parameter of that name, or nullptr.
+const ParameterValue* parameter_named(const Key& key, const std::string& name);
+
 /// A parameter as printed, with its typed name where that differs: "θ (theta)", "R".
 std::string shown_of(const ParameterValue& p);
 
