@@ -18,6 +18,7 @@
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
+#include "check/plus_minus.hpp"
 #include "check/symbol_values.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
@@ -60,6 +61,32 @@ std::string misreading_hint(const Answer& a, const std::string& typed,
   if (looks_like_decimal_comma(typed)) return fmt::format(" ({})", kDecimalCommaHint);
   const std::string ungrouped = digits_ungrouped(typed);
   return ungrouped.empty() ? "" : fmt::format(" (digits grouped? write {})", ungrouped);
+}
+
+// A hint where a number is wanted and `typed` gives an imaginary one, or "": an i or a j standing
+// alone ("9.131i rad/s"; Python's 9.131j), read as a unit vector, or the root of a negative
+// number (the reader's `message` says "not real"). The frequency of a perturbation about the
+// unstable axis is imaginary; the key asks for its rate of growth.
+std::string imaginary_hint(const Answer& a, const std::string& typed, const std::string& message) {
+  if (a.value.shape != Value::Shape::scalar) return "";
+  const bool rate = !a.unit.empty() &&
+                    parse_unit(a.unit, "key unit of " + a.name).dim == std::array<int, 3>{0, 0, -1};
+  const std::string growth =
+      rate ? "; an imaginary frequency iλ is a growth e^(λt), and its rate is λ" : "";
+  if (message.find("not real") != std::string::npos)
+    return fmt::format(" (answers here are real{})", growth);
+  const std::string s = sym::to_ascii(typed);
+  const auto name_char = [&](std::size_t k) {
+    return k < s.size() && (std::isalpha(static_cast<unsigned char>(s[k])) || s[k] == '_');
+  };
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    if ((s[k] != 'i' && s[k] != 'j') || (k > 0 && name_char(k - 1)) || name_char(k + 1) ||
+        (k + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[k + 1]))))
+      continue;
+    return fmt::format(" (the {} reads as the unit vector {} along {}: answers here are real{})",
+                       s[k], s[k] == 'i' ? "î" : "ĵ", s[k] == 'i' ? "x" : "y", growth);
+  }
+  return "";
 }
 
 // What a name the textbook formulas use but the problem has no symbol for stands for: "a
@@ -223,10 +250,11 @@ void check_shape(const Answer& a, const sym::ValueText& v, const std::string& ty
   const bool key_vec = a.value.shape == Value::Shape::vector;
   const bool key_mat = a.value.shape == Value::Shape::matrix;
   if (key_vec != v.is_vector || key_mat != v.is_matrix || a.value.data.size() != v.entries.size()) {
-    throw InputError(fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
-                                 shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
-                                 shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),
-                                 misreading_hint(a, typed, v.entries.size())));
+    throw InputError(
+        fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
+                    shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
+                    shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),
+                    misreading_hint(a, typed, v.entries.size()) + imaginary_hint(a, typed, "")));
   }
 }
 }  // namespace
@@ -429,8 +457,9 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
       return read_answer(text, ctx.table, kField);
     } catch (const InputError& e) {
       // "15,5deg" reads as two entries, one without a unit: say what was more likely meant.
-      const std::string hint =
-          misreading_hint(a, text, std::nullopt) + answer_name_hint(ctx, text, e.what());
+      const std::string hint = misreading_hint(a, text, std::nullopt) +
+                               answer_name_hint(ctx, text, e.what()) +
+                               imaginary_hint(a, text, e.what());
       if (hint.empty()) throw;
       throw InputError(e.what() + hint);
     }
@@ -457,8 +486,12 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
   // An expression's unit, if any, is an SI one (read_answer), and so is every key's.
   if (p.symbolic) return judge_symbolic(ctx, a, text, p, opt, layout);
   std::vector<double> got;
-  for (const auto& e : p.value.entries)
-    got.push_back(sym::evaluate(e, GiNaC::lst{}, kField) * to_key);
+  try {
+    for (const auto& e : p.value.entries)
+      got.push_back(sym::evaluate(e, GiNaC::lst{}, kField) * to_key);
+  } catch (const InputError& e) {
+    throw InputError(e.what() + imaginary_hint(a, text, e.what()));  // "sqrt(-83.4)"
+  }
   const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
   if (a.kind == AnswerKind::principal_axes && got.size() == 9) return judge_axes_answer(j, got);
   std::vector<double> compare = got;
@@ -471,6 +504,45 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
   if (const auto degrees = detail::degrees_in_numbers(j, text, to_key))
     return {false, "incorrect: " + a.name, {*degrees}};
   return {false, "incorrect: " + a.name, diagnose(j, key_unit, compare, a.value.data)};
+}
+
+// An answer with a '±' is two answers (plus_minus.hpp). Both right (a value ± its uncertainty
+// within the tolerance) is right; else the student is asked for one and told which is right, and
+// what the other one is where a mistake is found (the heavy top's other precession rate).
+Verdict judge_signs(const Context& ctx, const Answer& a, const SignReadings& signs,
+                    const Options& options) {
+  const auto read = [&](const std::string& text) -> std::optional<Verdict> {
+    try {
+      return judge(ctx, a, text, options);
+    } catch (const InputError&) {
+      return std::nullopt;  // "sqrt(-x)": that sign gives no answer
+    }
+  };
+  const std::optional<Verdict> plus = read(signs.plus);
+  const std::optional<Verdict> minus = read(signs.minus);
+  if (!plus && !minus) judge(ctx, a, signs.plus, options);  // says why the reader refused it
+  const bool plus_right = plus && plus->correct;
+  const bool minus_right = minus && minus->correct;
+  if (plus_right && minus_right) {
+    return {true, "correct: " + a.name + " (with either sign of its '±')", {}};
+  }
+  const auto said = [](const std::optional<Verdict>& v, const char* sign) {
+    return v && !v->feedback.empty() ? fmt::format("with '{}', {}", sign, v->feedback.front()) : "";
+  };
+  std::string what;
+  if (plus_right || minus_right) {
+    const std::string other = plus_right ? said(minus, "−") : said(plus, "+");
+    what = fmt::format("with '{}' it is right{}", plus_right ? "+" : "−",
+                       other.empty() ? "" : "; " + other);
+  } else {
+    std::vector<std::string> each;
+    for (const auto& [v, sign] : {std::pair{&plus, "+"}, std::pair{&minus, "−"}}) {
+      if (const std::string line = said(*v, sign); !line.empty()) each.push_back(line);
+    }
+    what = fmt::format("neither is right{}",
+                       each.empty() ? "" : fmt::format(" ({})", fmt::join(each, "; ")));
+  }
+  throw InputError(fmt::format("{}: '±' gives two answers; type one: {}", kField, what));
 }
 
 }  // namespace
@@ -487,6 +559,8 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   };
   const std::string written = without_output_label(
       without_math_delimiters(without_remark(without_comments(text), known_word)));
+  // "±9.131 1/s", "(I3ω3 ± √(..))/(2 I1 cos θ)": the roots of a quadratic, two answers.
+  if (const auto signs = sign_readings(written)) return judge_signs(ctx, a, *signs, options);
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
   // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows
   // of a list where one has a factor outside its bracket.

@@ -1081,3 +1081,57 @@ TEST_CASE("a refusal shown where no option was typed names an entry counted from
                             "--set: R=0", "--answer[1][2][3]: three"})
     REQUIRE(without_option(other) == other);
 }
+
+TEST_CASE("an answer with a '±' is two answers: which is right is said, in every spelling") {
+  const Fixture racket("tennis-racket");
+  // The growth rate about the unstable axis: the roots of Ω² = −rate², written ±.
+  const std::string rate = fmt::format("{:.6g}", racket.answer("rate_axis2").value.data.at(0));
+  for (const std::string sign : {"±", "+/-", "+/−", "+-", "\\pm "}) {
+    INFO(sign);
+    REQUIRE_THROWS_WITH(racket.check("rate_axis2", "λ = " + sign + rate + " 1/s"),
+                        Catch::Contains("'±' gives two answers; type one: with '+' it is right; "
+                                        "with '−', the sign is reversed"));
+  }
+  REQUIRE_THROWS_WITH(racket.check("rate_axis2", "∓" + rate + " 1/s"),
+                      Catch::Contains("type one: with '−' it is right"));
+  REQUIRE_THROWS_WITH(racket.check("rate_axis2", "±" + rate + "/2 1/s"),
+                      Catch::Contains("type one: neither is right (with '+', this is 1/2 of the answer"));
+  // A value with its uncertainty, both ends within the tolerance: right either way.
+  const auto within = racket.check("rate_axis2", rate + " ± 0.001 1/s");
+  REQUIRE(within.correct);
+  REQUIRE_THAT(within.line, Catch::EndsWith("(with either sign of its '±')"));
+  REQUIRE_FALSE(racket.check("rate_axis2", "-" + rate + " 1/s").correct);
+
+  // The heavy top's precession rates, the roots of I1 cos θ φ̇² − I3 ω3 φ̇ + M g l = 0 by the
+  // quadratic formula (I1 about the pivot, I3 = M R²/2, ω3 = ψ̇0): a derivation apart from the
+  // key's. The sign that is not asked for gives the other rate.
+  const Fixture top("heavy-top");
+  const std::string i1 = "M*(R^2/4 + l^2)", i3w3 = "(M*R^2/2*psidot0)";
+  const std::string roots =
+      fmt::format("({0} ± sqrt({0}^2 - 4*{1}*cos(theta0)*M*g*l))/(2*{1}*cos(theta0))", i3w3, i1);
+  REQUIRE_THROWS_WITH(top.check("phidot_slow", roots),
+                      Catch::Contains("with '−' it is right; with '+', this is phidot_fast"));
+  REQUIRE_THROWS_WITH(top.check("phidot_fast", roots),
+                      Catch::Contains("with '+' it is right; with '−', this is phidot_slow"));
+  std::string slow = roots;
+  slow.replace(slow.find("±"), std::string("±").size(), "-");
+  REQUIRE(top.check("phidot_slow", slow).correct);
+}
+
+TEST_CASE("an imaginary number where a real one is wanted is said to be read as a unit vector") {
+  const Fixture racket("tennis-racket");
+  const double rate = racket.answer("rate_axis2").value.data.at(0);
+  const std::string growth = "an imaginary frequency iλ is a growth e^(λt), and its rate is λ";
+  REQUIRE_THROWS_WITH(
+      racket.check("rate_axis2", fmt::format("{:.6g}i rad/s", rate)),
+      Catch::Contains("the i reads as the unit vector î along x") && Catch::Contains(growth));
+  REQUIRE_THROWS_WITH(racket.check("rate_axis2", fmt::format("{:.6g}j", rate)),  // Python's
+                      Catch::Contains("the j reads as the unit vector ĵ along y"));
+  REQUIRE_THROWS_WITH(racket.check("rate_axis2", fmt::format("sqrt(-{:.6g}) 1/s", rate * rate)),
+                      Catch::Contains("not real (answers here are real; " + growth));
+  // An energy is no rate: the line says only that answers are real.
+  REQUIRE_THROWS_WITH(racket.check("energy", "0.16i J"),
+                      Catch::Contains("answers here are real)") && !Catch::Contains(growth));
+  // An i inside a name (pi, sin) is no imaginary unit.
+  REQUIRE(racket.check("rate_axis2", fmt::format("{:.6g}*pi/pi*sin(pi/2) 1/s", rate)).correct);
+}
