@@ -263,6 +263,9 @@ Unit parse_unit(const std::string& text, const std::string& field) {
             "a month has no one length (28 to 31 days); give the time in days, weeks or "
             "yr");
       }
+      // The SI's symbol for the day, but a distance's name in problems (the molecule's bond d):
+      // "2 d^2" would read as days squared where it is a length.
+      if (name == "d") return fail("'d' is not read as days (problems name lengths d); write day or days");
       const std::string apart = run_together(name);
       return fail("unknown unit '" + name + "'" +
                   (apart.empty() ? "" : " ('" + apart + "', with spaces?)"));
