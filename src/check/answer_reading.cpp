@@ -14,6 +14,7 @@
 #include "check/brackets.hpp"
 #include "check/latex_answer.hpp"
 #include "check/names_run_together.hpp"
+#include "check/program_notation.hpp"
 #include "check/rotations.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
@@ -335,6 +336,8 @@ std::string prepared(const std::string& typed, const std::string& field) {
   }
   std::string s =
       arc_marks_read(sym::to_ascii(greek_letters_apart(sym::letters_folded(bracketed))));
+  // "Sqrt[m]", "np.sqrt(m)", "R.^2": as Mathematica, Python and MATLAB write them.
+  s = as_programs_mean(s);
   for (char& c : s) {
     if (c == '\n' || c == '\r' || c == '\t') c = ' ';
     // Mathematica's lists, "{{10, 0, 0}, {0, 6, 1}, ...}", and angle brackets: brackets here.

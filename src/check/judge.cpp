@@ -19,6 +19,7 @@
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
 #include "check/plus_minus.hpp"
+#include "check/program_notation.hpp"
 #include "check/symbol_values.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
@@ -447,8 +448,8 @@ AxesLayout listed_layout(const std::string& text) {
   return matrix_literal ? AxesLayout::rows_or_columns : AxesLayout::rows;
 }
 
-Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
-                  const Options& options, AxesLayout labelled = AxesLayout::rows_or_columns) {
+Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string& text,
+                         const Options& options, AxesLayout labelled) {
   const AxesLayout layout =
       labelled != AxesLayout::rows_or_columns ? labelled : listed_layout(text);
   const Options opt = options_for(a, options);
@@ -504,6 +505,28 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
   if (const auto degrees = detail::degrees_in_numbers(j, text, to_key))
     return {false, "incorrect: " + a.name, {*degrees}};
   return {false, "incorrect: " + a.name, diagnose(j, key_unit, compare, a.value.data)};
+}
+
+// judge_as_written, and where a wrong answer calls EllipticK or EllipticE, whether it is right
+// with their arguments read as the parameter m = k² (Mathematica's and SciPy's): then that is
+// the one line of feedback.
+Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
+                  const Options& options, AxesLayout labelled = AxesLayout::rows_or_columns) {
+  Verdict v = judge_as_written(ctx, a, text, options, labelled);
+  if (v.correct) return v;
+  if (const auto of_parameter = elliptic_of_parameter(text)) {
+    try {
+      if (judge_as_written(ctx, a, *of_parameter, options, labelled).correct) {
+        v.feedback = {
+            "EllipticK and EllipticE take the modulus k here, as the key writes them: your "
+            "arguments are the parameter m = k² (Mathematica's EllipticK[m], SciPy's ellipk(m)); "
+            "write EllipticK(sqrt(m)), or EllipticK[m] as Mathematica does"};
+      }
+    } catch (const InputError&) {
+      // sqrt of a negative argument: no such reading
+    }
+  }
+  return v;
 }
 
 // An answer with a '±' is two answers (plus_minus.hpp). Both right (a value ± its uncertainty

@@ -427,12 +427,15 @@ TEST_CASE("results as programs print them: NumPy 2's scalars, Out[n] labels") {
   REQUIRE(plate.check("I0", "Out[3]= m R^2/4 = " + i0 + " kg m^2").correct);
   REQUIRE_FALSE(plate.check("I0", "Out[3]= 2*" + i0).correct);
   // Only a whole label is dropped silently; "Out[]" is read as typed, a formula in a name the
-  // problem lacks, and so a label said unjudged; a lone "np." is refused.
+  // problem lacks, and so a label said unjudged; NumPy's functions are read
+  // (program_notation.hpp), a name NumPy has that no answer uses is refused.
   REQUIRE_THAT(plate.check("I0", "Out[]= " + i0).feedback,
                Catch::Equals(std::vector<std::string>{
                    "the side \"Out[]\" of your '=' is taken as a label, not judged: Out is no "
                    "symbol here"}));
-  REQUIRE_THROWS_AS(plate.check("I0", "np.sqrt(" + i0 + ")"), InputError);
+  REQUIRE(plate.check("I0", "np.sqrt(" + i0 + "**2)").correct);
+  REQUIRE_FALSE(plate.check("I0", "np.sqrt(" + i0 + ")").correct);
+  REQUIRE_THROWS_AS(plate.check("I0", "np.cbrt(" + i0 + "**3)"), InputError);
 }
 
 TEST_CASE("Newton's dot as a PDF copies it, and a rate the problem has not") {

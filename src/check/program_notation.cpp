@@ -1,0 +1,204 @@
+#include "check/program_notation.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <string_view>
+#include <vector>
+
+#include "check/brackets.hpp"
+#include "symbolic/expression.hpp"
+#include "symbolic/expression_guard.hpp"
+
+namespace wobble::check {
+
+namespace {
+// How a program's call is read here.
+enum class Reading {
+  same,       // the function of the name `to`, the arguments as they are
+  parameter,  // an elliptic integral of the parameter m: `to`(sqrt(m))
+  value,      // Mathematica's N[x] (N[x, digits]): x itself
+  swapped,    // Mathematica's ArcTan[x, y]: atan2(y, x); with one argument, atan
+  degrees,    // np.radians(x): x degrees in radians
+};
+
+struct Call {
+  std::string_view from;
+  std::string_view to;
+  Reading reading = Reading::same;
+};
+
+// Mathematica's functions, called with square brackets.
+constexpr std::array<Call, 16> kMathematica{{{"Sqrt", "sqrt"},
+                                             {"Sin", "sin"},
+                                             {"Cos", "cos"},
+                                             {"Tan", "tan"},
+                                             {"ArcSin", "asin"},
+                                             {"ArcCos", "acos"},
+                                             {"ArcTan", "atan", Reading::swapped},
+                                             {"Exp", "exp"},
+                                             {"Log", "log"},
+                                             {"Sinh", "sinh"},
+                                             {"Cosh", "cosh"},
+                                             {"Tanh", "tanh"},
+                                             {"Abs", "abs"},
+                                             {"EllipticK", "EllipticK", Reading::parameter},
+                                             {"EllipticE", "EllipticE", Reading::parameter},
+                                             {"N", "", Reading::value}}};
+
+// Python's and MATLAB's names for functions wobble names otherwise, called with parentheses.
+constexpr std::array<Call, 9> kPython{{{"arctan2", "atan2"},
+                                       {"fabs", "abs"},
+                                       {"ellipk", "EllipticK", Reading::parameter},
+                                       {"ellipe", "EllipticE", Reading::parameter},
+                                       {"elliptic_k", "EllipticK", Reading::parameter},
+                                       {"elliptic_e", "EllipticE", Reading::parameter},
+                                       {"ellipke", "EllipticK", Reading::parameter},
+                                       {"radians", "", Reading::degrees},
+                                       {"deg2rad", "", Reading::degrees}}};
+
+// Python's modules, the longest first ("scipy.special." before "special.").
+constexpr std::array<std::string_view, 8> kModules{"scipy.special.", "special.", "numpy.", "np.",
+                                                   "math.",          "sympy.",   "sp.",    "cmath."};
+
+bool name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+template <std::size_t N>
+const Call* find_call(const std::array<Call, N>& calls, const std::string& name) {
+  for (const auto& c : calls) {
+    if (c.from == name) return &c;
+  }
+  return nullptr;
+}
+
+// The name at s[at] and its end.
+std::size_t name_end(const std::string& s, std::size_t at) {
+  while (at < s.size() && name_char(s[at])) ++at;
+  return at;
+}
+
+// Whether a module's prefix before `name` is a program's: the name is a function wobble reads
+// (under any of its names) or pi. Other names keep theirs ("np.array(", which the reader
+// unwraps, "np.float64(").
+bool module_member(const std::string& name) {
+  return name == "pi" || sym::is_function_name(name) || find_call(kPython, name) != nullptr;
+}
+
+std::string rewritten(const std::string& s);
+
+// The call of `c` on `args` (each rewritten), as the reader writes it.
+std::string call_text(const Call& c, const std::vector<std::string>& args) {
+  std::string joined_args;
+  for (const auto& a : args) joined_args += (joined_args.empty() ? "" : ", ") + a;
+  switch (c.reading) {
+    case Reading::parameter:
+      return std::string(c.to) + "(sqrt(" + joined_args + "))";
+    case Reading::value:
+      return "(" + (args.empty() ? std::string() : args[0]) + ")";
+    case Reading::swapped:
+      if (args.size() == 2) return "atan2(" + args[1] + ", " + args[0] + ")";
+      break;
+    case Reading::degrees:
+      return "((" + joined_args + ")*pi/180)";
+    case Reading::same:
+      break;
+  }
+  return std::string(c.to) + "(" + joined_args + ")";
+}
+
+// The arguments between s[open] and its partner `close`, each rewritten.
+std::vector<std::string> arguments(const std::string& s, std::size_t open, std::size_t close) {
+  std::vector<std::string> args;
+  for (const auto& a : top_level(s.substr(open + 1, close - open - 1), ',')) {
+    args.push_back(rewritten(a));
+  }
+  return args;
+}
+
+std::string rewritten(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    const char c = s[i];
+    const bool after_digit = i > 0 && std::isdigit(static_cast<unsigned char>(s[i - 1]));
+    // Mathematica's InputForm writes 2.395*^-7 for 2.395e-7.
+    if (after_digit && s.compare(i, 2, "*^") == 0) {
+      out += 'e';
+      i += 2;
+      continue;
+    }
+    // MATLAB's element-wise operators: on numbers, the operators themselves ("2.*R" is 2*R
+    // read either way).
+    if (c == '.' && i + 1 < s.size() && (s[i + 1] == '^' || s[i + 1] == '*' || s[i + 1] == '/')) {
+      ++i;
+      continue;
+    }
+    const bool starts_name = std::isalpha(static_cast<unsigned char>(c)) &&
+                             (i == 0 || !(std::isalpha(static_cast<unsigned char>(s[i - 1])) ||
+                                          s[i - 1] == '_' || s[i - 1] == '.'));
+    if (!starts_name) {
+      out += c;
+      ++i;
+      continue;
+    }
+    bool module = false;
+    for (const auto m : kModules) {
+      if (s.compare(i, m.size(), m) != 0) continue;
+      const std::size_t at = i + m.size();
+      if (module_member(s.substr(at, name_end(s, at) - at))) {
+        i = at;
+        module = true;
+        break;
+      }
+    }
+    const std::size_t end = name_end(s, i);
+    const std::string name = s.substr(i, end - i);
+    const Call* mathematica = find_call(kMathematica, name);
+    const Call* python = find_call(kPython, name);
+    const char next = end < s.size() ? s[end] : '\0';
+    const std::size_t close =
+        (next == '[' && mathematica) || (next == '(' && python) ? matching(s, end) : std::string::npos;
+    if (close != std::string::npos) {
+      out += call_text(next == '[' ? *mathematica : *python, arguments(s, end, close));
+      i = close + 1;
+    } else if (name == "Pi" && !module) {
+      out += "pi";
+      i = end;
+    } else if (name == "Degree") {  // a constant, pi/180: "30 Degree", "30*Degree"
+      out += "(pi/180)";
+      i = end;
+    } else {
+      out += name;
+      i = end;
+    }
+  }
+  return out;
+}
+}  // namespace
+
+std::string as_programs_mean(const std::string& text) { return rewritten(text); }
+
+std::optional<std::string> elliptic_of_parameter(const std::string& s) {
+  std::string out;
+  bool found = false;
+  for (std::size_t i = 0; i < s.size();) {
+    const std::size_t end = name_end(s, i);
+    const std::string name = s.substr(i, end - i);
+    const bool starts = i == 0 || !name_char(s[i - 1]);
+    if (starts && (name == "EllipticK" || name == "EllipticE") && end < s.size() && s[end] == '(') {
+      const std::size_t close = matching(s, end);
+      if (close != std::string::npos) {
+        const auto inside = elliptic_of_parameter(s.substr(end + 1, close - end - 1));
+        out += name + "(sqrt(" + inside.value_or(s.substr(end + 1, close - end - 1)) + "))";
+        i = close + 1;
+        found = true;
+        continue;
+      }
+    }
+    out += end > i ? name : std::string(1, s[i]);
+    i = std::max(end, i + 1);
+  }
+  if (!found) return std::nullopt;
+  return out;
+}
+
+}  // namespace wobble::check
