@@ -580,8 +580,9 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
     return ctx.table.contains(w) || is_unit(w) || sym::is_function_name(w) ||
            sym::greek_letters().count(ascii_lower(w)) > 0;
   };
-  const std::string written = without_output_label(
-      without_math_delimiters(without_remark(without_comments(text), known_word)));
+  // "eigenvalues: 0.569, ..", "I1: 0.569, I2: ..": labels before a ':', as one writes an answer.
+  const std::string written = without_colon_labels(without_output_label(
+      without_math_delimiters(without_remark(without_comments(text), known_word))));
   // "±9.131 1/s", "(I3ω3 ± √(..))/(2 I1 cos θ)": the roots of a quadratic, two answers.
   if (const auto signs = sign_readings(written)) return judge_signs(ctx, a, *signs, options);
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.

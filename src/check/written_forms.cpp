@@ -10,6 +10,7 @@
 #include "check/judge.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/units.hpp"
 
 namespace wobble::check {
 
@@ -156,7 +157,29 @@ std::string diagonals_written_out(const std::string& ascii, const std::string& f
   return out;
 }
 
+namespace {
+std::optional<std::string> rows_of_numbers(const std::string& typed);
+}
+
 std::optional<std::string> number_rows(const std::string& typed) {
+  if (auto rows = rows_of_numbers(typed)) return rows;
+  // "(0.5 1 1.5)": a row in parentheses, where no expression has two numbers side by side.
+  const std::string t = trim(typed);
+  const auto unbracketed = [](const std::string& v) {
+    return wrapped(v, '(') ? v.substr(1, v.size() - 2) : v;
+  };
+  if (wrapped(t, '(')) return rows_of_numbers(unbracketed(t));
+  // "0.5 1 1.5 m", "(0.5 1 1.5) m": a unit after the row is the whole vector's.
+  for (std::size_t sp = t.find(' '); sp != std::string::npos; sp = t.find(' ', sp + 1)) {
+    const std::string unit = trim(t.substr(sp + 1));
+    if (unit.empty() || !is_unit(unit)) continue;
+    if (auto rows = rows_of_numbers(unbracketed(trim(t.substr(0, sp))))) return *rows + " " + unit;
+  }
+  return std::nullopt;
+}
+
+namespace {
+std::optional<std::string> rows_of_numbers(const std::string& typed) {
   std::vector<std::vector<std::string>> rows;
   std::size_t start = 0;
   while (start <= typed.size()) {
@@ -183,6 +206,21 @@ std::optional<std::string> number_rows(const std::string& typed) {
   for (const auto& r : rows) entries.push_back("[" + joined(r) + "]");
   return "[" + joined(entries) + "]";
 }
+}  // namespace
+
+namespace {
+// A labelled value and the unit after it: ("1.5", "m") for "1.5 m", the first split at a space
+// whose right side is a unit; (value, "") for one without.
+std::pair<std::string, std::string> value_and_unit(const std::string& value) {
+  const std::string v = trim(value);
+  for (std::size_t sp = v.find(' '); sp != std::string::npos; sp = v.find(' ', sp + 1)) {
+    const std::string right = trim(v.substr(sp + 1));
+    if (!right.empty() && right[0] != '*' && right[0] != '/' && is_unit(right))
+      return {trim(v.substr(0, sp)), right};
+  }
+  return {v, ""};
+}
+}  // namespace
 
 std::optional<LabelledComponents> labelled_components(const std::string& text,
                                                       const std::string& field) {
@@ -214,6 +252,20 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
                      "with x, y, z or 1, 2, 3 in it (x = 0.5, y = 1, z = 1.5), or Euler's "
                      "angles by name; or write the vector [x, y, z]");
   }
+  // "x = 0.5, y = 1, z = 1.5 m": a unit after the last value, and none after the others, is
+  // the whole vector's, as after a list in brackets.
+  std::string unit;
+  if (const auto [last, after] = value_and_unit(values.back()); !after.empty()) {
+    const bool others_bare =
+        std::all_of(values.begin(), values.end() - 1,
+                    [](const std::string& v) { return value_and_unit(v).second.empty(); });
+    if (others_bare) {
+      unit = " " + after;
+      for (auto& v : values) {
+        if (v == values.back()) v = last;  // equal components told once share the value
+      }
+    }
+  }
   std::vector<std::string> in_order(labels.size());
   for (std::size_t k = 0; k < labels.size(); ++k) in_order[(*slots)[k]] = values[k];
   // "e1 = (..), e2 = (..), e3 = (..)": vectors labelled so are a matrix's columns, as the key's
@@ -226,7 +278,46 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
     const std::string& v = in_order[k];
     vector += (k ? ", " : "") + (columns ? "[" + v.substr(1, v.size() - 2) + "]" : v);
   }
-  return LabelledComponents{vector + (columns ? "]^T" : "]"), columns};
+  return LabelledComponents{vector + (columns ? "]^T" : "]") + unit, columns};
+}
+
+std::string without_colon_labels(const std::string& typed) {
+  // A label: words of letters (any Unicode one), digits and underscores, a letter first.
+  const auto label_like = [](const std::string& side) {
+    const std::string t = trim(side);
+    if (t.empty() || !(is_letter(t[0]) || static_cast<unsigned char>(t[0]) >= 0x80)) return false;
+    int words = 1;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const auto c = static_cast<unsigned char>(t[i]);
+      if (t[i] == ' ') {
+        words += t[i - 1] != ' ';
+      } else if (!(std::isalnum(c) || t[i] == '_' || c >= 0x80 || t[i] == '\'')) {
+        return false;
+      }
+    }
+    return words <= 4;
+  };
+  const std::vector<std::string> items = top_level(typed, ',');
+  // "I1: 0.569, I2: 4.209, I3: 4.556": each item labelled.
+  if (items.size() >= 2 && std::all_of(items.begin(), items.end(), [&](const std::string& item) {
+        const auto colon = item.find(':');
+        return colon != std::string::npos && item.find(':', colon + 1) == std::string::npos &&
+               label_like(item.substr(0, colon)) && !trim(item.substr(colon + 1)).empty();
+      })) {
+    std::string out;
+    for (const auto& item : items) {
+      const auto colon = item.find(':');
+      out += (out.empty() ? "" : ", ") + trim(item.substr(0, colon)) + " = " +
+             trim(item.substr(colon + 1));
+    }
+    return out;
+  }
+  // "eigenvalues: 0.569, 4.209, 4.556": one label before the whole.
+  const auto colon = typed.find(':');
+  if (colon == std::string::npos || typed.find(':', colon + 1) != std::string::npos ||
+      !label_like(typed.substr(0, colon)) || trim(typed.substr(colon + 1)).empty())
+    return typed;
+  return trim(typed.substr(colon + 1));
 }
 
 std::string without_comments(const std::string& s) {

@@ -24,7 +24,8 @@ namespace wobble::check {
 
 /// "[0.5, 1, 1.5]" for "0.5 1 1.5", "[[1, 0], [0, 2]]" for the lines "1 0" and "0 2": text
 /// that is only plain numbers (two or more), separated by spaces and line breaks, each line as
-/// many; nullopt for any other text.
+/// many; a row in parentheses, "(0.5 1 1.5)", and a row with a unit after it, "0.5 1 1.5 m" ->
+/// "[0.5, 1, 1.5] m"; nullopt for any other text.
 std::optional<std::string> number_rows(const std::string& typed);
 
 /// `ascii` with each diagonal matrix written as its rows: "M/12 diag(a, b, c)" ->
@@ -42,7 +43,8 @@ struct LabelledComponents {
 /// "[0.5, 1, 1.5]" for "x = 0.5, y = 1, z = 1.5" (the text as typed, Unicode or not), and equal
 /// components told once, "I₁ = I₂ = 0.00975, I₃ = 0.006" (labels of one word each before the
 /// value); vectors labelled e1 = (..), e2 = (..), e3 = (..) as the columns they are, "[[..],
-/// ..]^T". nullopt for a text that is no list of labelled components.
+/// ..]^T". A unit after the last value alone is the whole vector's ("x = 0.5, y = 1, z = 1.5 m"
+/// -> "[0.5, 1, 1.5] m"). nullopt for a text that is no list of labelled components.
 /// @throws InputError naming `field` for such a list whose labels are not one name for each of
 ///   x, y, z or 1, 2, 3 (its components could be put in no order).
 std::optional<LabelledComponents> labelled_components(const std::string& text,
@@ -66,6 +68,12 @@ std::string without_remark(const std::string& typed,
 /// The text after a program's label of its result: "0.00072" for "Out[3]= 0.00072",
 /// "Out[3]//N= 0.00072" or "Out[3]: 0.00072"; `typed` itself when it has no such label.
 std::string without_output_label(const std::string& typed);
+
+/// Labels before a ':' as one writes an answer down: "0.569, 4.209, 4.556" for "eigenvalues:
+/// 0.569, 4.209, 4.556" (a label of up to four words, letters first, no operator or bracket),
+/// and components labelled so as with '=', "I1 = 0.569, I2 = 4.209" for "I1: 0.569, I2: 4.209".
+/// `typed` itself where no such label is.
+std::string without_colon_labels(const std::string& typed);
 
 /// "phi + (90*pi/180)" for "phi + 90 deg": in an expression, a text that names one of the
 /// problem's symbols or a function (`in_expression`), each plain number in degrees ("90 deg",

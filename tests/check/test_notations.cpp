@@ -1138,3 +1138,43 @@ TEST_CASE("an imaginary number where a real one is wanted is said to be read as 
   // An i inside a name (pi, sin) is no imaginary unit.
   REQUIRE(racket.check("rate_axis2", fmt::format("{:.6g}*pi/pi*sin(pi/2) 1/s", rate)).correct);
 }
+
+TEST_CASE("labels before a ':', a unit after labelled components, a row of numbers with its unit") {
+  const Fixture box("box-corner");
+  const auto& centre = box.answer("center_of_mass").value.data;  // (a/2, b/2, c/2) in m
+  const auto at = [&](std::size_t k, double scale) {
+    return fmt::format("{:.6g}", centre.at(k) * scale);
+  };
+  const std::string x = at(0, 1), y = at(1, 1), z = at(2, 1);
+  for (const std::string& right :
+       {"centre of mass: (" + x + ", " + y + ", " + z + ") m",
+        "r_cm: [" + x + ", " + y + ", " + z + "]", "x: " + x + ", y: " + y + ", z: " + z,
+        "x: " + x + " m, y: " + y + " m, z: " + z + " m",
+        "x = " + x + ", y = " + y + ", z = " + z + " m",
+        "x = " + at(0, 100) + ", y = " + at(1, 100) + ", z = " + at(2, 100) + " cm",
+        "(" + x + " " + y + " " + z + ")", "(" + x + " " + y + " " + z + ") m",
+        x + " " + y + " " + z + " m", at(0, 100) + " " + at(1, 100) + " " + at(2, 100) + " cm"}) {
+    INFO(right);
+    REQUIRE(box.check("center_of_mass", right).correct);
+  }
+  // The unit after the last value is the whole vector's: in mm the values are 1000 times off.
+  const auto mm = box.check("center_of_mass", "x = " + x + ", y = " + y + ", z = " + z + " mm");
+  REQUIRE_FALSE(mm.correct);
+  REQUIRE_THAT(mm.feedback.at(0), Catch::Contains("1/1000"));
+  // A unit on some values but not all is still refused, as in a bracket.
+  REQUIRE_THROWS_WITH(
+      box.check("center_of_mass", "x = " + x + " m, y = " + y + ", z = " + z + " m"),
+      Catch::Contains("has no unit where another has m"));
+  // A label is words, a letter first: a formula before a ':' is no label.
+  REQUIRE_THROWS_AS(box.check("center_of_mass", "a/2: (" + x + ", " + y + ", " + z + ")"),
+                    InputError);
+  const auto& moments = box.answer("principal_moments_corner").value.data;
+  const std::string moments_text =
+      fmt::format("{:.6g}, {:.6g}, {:.6g}", moments.at(0), moments.at(1), moments.at(2));
+  REQUIRE(box.check("principal_moments_corner", "eigenvalues: " + moments_text).correct);
+  REQUIRE(box.check("principal_moments_corner",
+                    fmt::format("λ₁: {:.6g}, λ₂: {:.6g}, λ₃: {:.6g}", moments.at(0), moments.at(1),
+                                moments.at(2)))
+              .correct);
+  REQUIRE_FALSE(box.check("principal_moments_corner", "eigenvalues: 1, 2, 3").correct);
+}
