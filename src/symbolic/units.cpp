@@ -53,6 +53,8 @@ const std::vector<std::pair<std::string, Named>>& units_in_order() {
       {"N", {1.0, {1, 1, -2}, false, "1"}},
       {"Hz", {2 * M_PI, {0, 0, -1}, true, "2*pi"}},
       {"rpm", {2 * M_PI / 60, {0, 0, -1}, true, "2*pi/60"}},
+      // Revolutions per second, as a motor's or a spinning wheel's rate is given.
+      {"rps", {2 * M_PI, {0, 0, -1}, true, "2*pi"}},
   };
   return n;
 }
@@ -139,6 +141,7 @@ const std::map<std::string, std::string>& spellings() {
       {"newton", "N"},
       {"newtons", "N"},
       {"RPM", "rpm"},
+      {"RPS", "rps"},
       {"days", "day"},
       {"weeks", "week"},
       {"wk", "week"},

@@ -78,6 +78,9 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   REQUIRE_THAT(parse_unit("yr", "u").to_si, WithinRel(365.25 * 86400, 1e-15));
   REQUIRE(parse_unit("years", "u").dim == std::array<int, 3>{0, 0, 1});
   REQUIRE_THAT(parse_unit("weeks", "u").to_si, WithinRel(7 * 86400, 1e-15));
+  // Revolutions per second: 2π rad/s, the same as rev/s.
+  REQUIRE_THAT(parse_unit("rps", "u").to_si, WithinRel(parse_unit("rev/s", "u").to_si, 1e-15));
+  REQUIRE(parse_unit("RPS", "u").angle);
   REQUIRE_THROWS_WITH(parse_unit("months", "u"), Catch::Contains("a month has no one length"));
   REQUIRE_THROWS_WITH(parse_unit("d", "u"), Catch::Contains("'d' is not read as days"));
   REQUIRE_THAT(parse_unit("arcsec", "u").to_si, WithinRel(M_PI / 180 / 3600, 1e-15));
