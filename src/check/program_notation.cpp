@@ -87,18 +87,28 @@ bool module_member(const std::string& name) {
 std::string rewritten(const std::string& s);
 
 // The call of `c` on `args` (each rewritten), as the reader writes it.
-std::string call_text(const Call& c, const std::vector<std::string>& args) {
+// `whole`: the call is the whole text (N[{40, 30, 70} Degree] is a vector, not a group).
+std::string call_text(const Call& c, const std::vector<std::string>& args, bool whole) {
   std::string joined_args;
   for (const auto& a : args) joined_args += (joined_args.empty() ? "" : ", ") + a;
   switch (c.reading) {
     case Reading::parameter:
       return std::string(c.to) + "(sqrt(" + joined_args + "))";
-    case Reading::value:
-      return "(" + (args.empty() ? std::string() : args[0]) + ")";
+    case Reading::value:  // a vector stays one: N[{1, 2}] is [1, 2], not ([1, 2])
+      if (args.empty()) return "()";
+      return whole || wrapped(args[0], '[') || wrapped(args[0], '{') ? args[0]
+                                                                     : "(" + args[0] + ")";
     case Reading::swapped:
       if (args.size() == 2) return "atan2(" + args[1] + ", " + args[0] + ")";
       break;
     case Reading::degrees:
+      // np.radians([40, 30, 70]): each entry of a list.
+      if (args.size() == 1 && (wrapped(args[0], '[') || wrapped(args[0], '{'))) {
+        std::string entries;
+        for (const auto& e : top_level(args[0].substr(1, args[0].size() - 2), ','))
+          entries += (entries.empty() ? "" : ", ") + ("((" + e + ")*pi/180)");
+        return "[" + entries + "]";
+      }
       return "((" + joined_args + ")*pi/180)";
     case Reading::same:
       break;
@@ -158,7 +168,8 @@ std::string rewritten(const std::string& s) {
     const std::size_t close =
         (next == '[' && mathematica) || (next == '(' && python) ? matching(s, end) : std::string::npos;
     if (close != std::string::npos) {
-      out += call_text(next == '[' ? *mathematica : *python, arguments(s, end, close));
+      const bool whole = out.empty() && close + 1 == s.size();
+      out += call_text(next == '[' ? *mathematica : *python, arguments(s, end, close), whole);
       i = close + 1;
     } else if (name == "Pi" && !module) {
       out += "pi";

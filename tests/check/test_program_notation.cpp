@@ -142,13 +142,16 @@ TEST_CASE("a program's notation is rewritten in the reader's") {
   CHECK(as_programs_mean("Sqrt[m]/EllipticK[0.3]") == "sqrt(m)/EllipticK(sqrt(0.3))");
   CHECK(as_programs_mean("Sqrt[Sin[x]^2]") == "sqrt(sin(x)^2)");
   CHECK(as_programs_mean("ArcTan[x, y] + ArcTan[z]") == "atan2(y, x) + atan(z)");
-  CHECK(as_programs_mean("N[Pi/4, 20]") == "(pi/4)");
+  CHECK(as_programs_mean("N[Pi/4, 20]") == "pi/4");
+  CHECK(as_programs_mean("2/N[Pi/4]") == "2/(pi/4)");
+  CHECK(as_programs_mean("N[{40, 30, 70} Degree]") == "{40, 30, 70} (pi/180)");
   CHECK(as_programs_mean("2.395*^-7") == "2.395e-7");
   CHECK(as_programs_mean("30 Degree") == "30 (pi/180)");
   CHECK(as_programs_mean("np.sqrt(2)*math.pi") == "sqrt(2)*pi");
   CHECK(as_programs_mean("scipy.special.ellipk(m) + ellipe(m)") ==
         "EllipticK(sqrt(m)) + EllipticE(sqrt(m))");
   CHECK(as_programs_mean("np.radians(15)") == "((15)*pi/180)");
+  CHECK(as_programs_mean("np.deg2rad([40, 30])") == "[((40)*pi/180), ((30)*pi/180)]");
   CHECK(as_programs_mean("m.*R.^2./4") == "m*R^2/4");
   // A program's containers are the reader's to unwrap; names of the problem stay.
   CHECK(as_programs_mean("np.array([1, 2])") == "np.array([1, 2])");
@@ -177,6 +180,17 @@ TEST_CASE("every closed form written as Mathematica, NumPy or MATLAB writes it i
     }
   }
   REQUIRE(judged > 300);
+}
+
+TEST_CASE("angles in degrees as NumPy and Mathematica convert them") {
+  const Fixture euler("euler-angles");  // φ, θ, ψ = 40°, 30°, 70°
+  for (const std::string written :
+       {"np.deg2rad([40, 30, 70])", "N[{40, 30, 70} Degree]", "{40 Degree, 30 Degree, 70 Degree}",
+        "np.radians([40, 30, 70])"}) {
+    INFO(written);
+    REQUIRE(euler.check("angles_phy711", written).correct);
+  }
+  REQUIRE_FALSE(euler.check("angles_phy711", "np.deg2rad([40, 70, 30])").correct);
 }
 
 TEST_CASE("an elliptic integral given the parameter where it takes the modulus is named") {
