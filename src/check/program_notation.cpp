@@ -15,11 +15,12 @@ namespace wobble::check {
 namespace {
 // How a program's call is read here.
 enum class Reading {
-  same,       // the function of the name `to`, the arguments as they are
-  parameter,  // an elliptic integral of the parameter m: `to`(sqrt(m))
-  value,      // Mathematica's N[x] (N[x, digits]): x itself
-  swapped,    // Mathematica's ArcTan[x, y]: atan2(y, x); with one argument, atan
-  degrees,    // np.radians(x): x degrees in radians
+  same,           // the function of the name `to`, the arguments as they are
+  parameter,      // an elliptic integral of the parameter m: `to`(sqrt(m))
+  value,          // Mathematica's N[x] (N[x, digits]): x itself
+  swapped,        // Mathematica's ArcTan[x, y]: atan2(y, x); with one argument, atan
+  degrees,        // np.radians(x): x degrees in radians
+  two_arguments,  // Maple's arctan(y, x): atan2(y, x); with one argument, atan
 };
 
 struct Call {
@@ -47,15 +48,20 @@ constexpr std::array<Call, 16> kMathematica{{{"Sqrt", "sqrt"},
                                              {"N", "", Reading::value}}};
 
 // Python's and MATLAB's names for functions wobble names otherwise, called with parentheses.
-constexpr std::array<Call, 9> kPython{{{"arctan2", "atan2"},
-                                       {"fabs", "abs"},
-                                       {"ellipk", "EllipticK", Reading::parameter},
-                                       {"ellipe", "EllipticE", Reading::parameter},
-                                       {"elliptic_k", "EllipticK", Reading::parameter},
-                                       {"elliptic_e", "EllipticE", Reading::parameter},
-                                       {"ellipke", "EllipticK", Reading::parameter},
-                                       {"radians", "", Reading::degrees},
-                                       {"deg2rad", "", Reading::degrees}}};
+// Maple's and Julia's two-argument arctangent, arctan(y, x) and atan(y, x), is atan2(y, x);
+// Maple's evalf(x) is x, as Mathematica's N[x].
+constexpr std::array<Call, 12> kPython{{{"arctan2", "atan2"},
+                                        {"atan", "atan", Reading::two_arguments},
+                                        {"arctan", "atan", Reading::two_arguments},
+                                        {"evalf", "", Reading::value},
+                                        {"fabs", "abs"},
+                                        {"ellipk", "EllipticK", Reading::parameter},
+                                        {"ellipe", "EllipticE", Reading::parameter},
+                                        {"elliptic_k", "EllipticK", Reading::parameter},
+                                        {"elliptic_e", "EllipticE", Reading::parameter},
+                                        {"ellipke", "EllipticK", Reading::parameter},
+                                        {"radians", "", Reading::degrees},
+                                        {"deg2rad", "", Reading::degrees}}};
 
 // Python's modules, the longest first ("scipy.special." before "special.").
 constexpr std::array<std::string_view, 8> kModules{"scipy.special.", "special.", "numpy.", "np.",
@@ -110,6 +116,9 @@ std::string call_text(const Call& c, const std::vector<std::string>& args, bool 
         return "[" + entries + "]";
       }
       return "((" + joined_args + ")*pi/180)";
+    case Reading::two_arguments:
+      if (args.size() == 2) return "atan2(" + joined_args + ")";
+      break;
     case Reading::same:
       break;
   }

@@ -8,6 +8,8 @@
 /// - Python: a module before a function or pi, `np.sqrt`, `math.pi`, `numpy.arctan2`,
 ///   `sp.cos`, `scipy.special.ellipk`; `np.radians(x)`, `math.radians(x)`, `np.deg2rad(x)`.
 /// - MATLAB: the element-wise operators `.^`, `.*`, `./`.
+/// - Maple and Julia: the arctangent of two arguments, `arctan(y, x)`, `atan(y, x)`, as atan2(y,
+///   x) (the same order); Maple's `evalf(..)`.
 ///
 /// The complete elliptic integrals take the modulus k in wobble, as in GiNaC and as its keys print
 /// them, `EllipticK(k)`; Mathematica's `EllipticK[m]`, SciPy's `ellipk(m)`, SymPy's
