@@ -4,6 +4,9 @@
 #include <cctype>
 #include <optional>
 #include <string_view>
+#include <utility>
+
+#include "symbolic/units.hpp"
 
 namespace wobble::check {
 
@@ -153,6 +156,42 @@ std::optional<std::pair<std::size_t, std::string>> unit_vector_at(const std::str
 }
 }  // namespace
 
+// The end of a unit vector spelt in ASCII at typed[i], as plain text and chat write one, and
+// its letter: "ihat", "i_hat", "i-hat", "x^" (before a sign, a bracket's end, a comma, a unit or
+// the end: no power), "e_x"; nullopt if none is there. Only where the letter is no symbol of the
+// problem: then none of these can be an expression in it.
+std::optional<std::pair<std::size_t, char>> ascii_unit_vector_at(const std::string& typed,
+                                                                 std::size_t i,
+                                                                 const sym::SymbolTable& table) {
+  const auto ends_name = [&](std::size_t end) {
+    return end >= typed.size() || !is_name_char(typed[end]);
+  };
+  constexpr std::string_view kLetters = "ijkxyz";
+  const char c = typed[i];
+  if (c == 'e' && typed.compare(i, 2, "e_") == 0 && i + 2 < typed.size()) {
+    const char l = typed[i + 2];
+    if ((l == 'x' || l == 'y' || l == 'z') && ends_name(i + 3) &&
+        !table.contains(typed.substr(i, 3)))
+      return std::make_pair(i + 3, l);
+    return std::nullopt;
+  }
+  if (kLetters.find(c) == std::string_view::npos || table.contains(std::string(1, c)))
+    return std::nullopt;
+  for (const std::string_view hat : {"_hat", "-hat", "hat"}) {
+    const std::size_t end = i + 1 + hat.size();
+    if (typed.compare(i + 1, hat.size(), hat) == 0 && ends_name(end)) return std::make_pair(end, c);
+  }
+  if (i + 1 < typed.size() && typed[i + 1] == '^') {
+    std::size_t k = i + 2;
+    while (k < typed.size() && typed[k] == ' ') ++k;
+    const std::string_view after = "+-),]";
+    if (k >= typed.size() || after.find(typed[k]) != std::string_view::npos ||
+        is_unit(typed.substr(k)))
+      return std::make_pair(i + 2, c);
+  }
+  return std::nullopt;
+}
+
 std::string basis_vectors_spelled(const std::string& typed, const sym::SymbolTable& table) {
   // A problem with its own e1, e2 or e3 keeps them: there "e1" is its symbol.
   const bool own_e = table.contains("e1") || table.contains("e2") || table.contains("e3");
@@ -171,6 +210,13 @@ std::string basis_vectors_spelled(const std::string& typed, const sym::SymbolTab
          typed[i + 1] == '+');
     const bool after_name = i > 0 && !after_number &&
                             (is_name_char(typed[i - 1]) || typed[i - 1] == '\\');
+    if (!after_name && !exponent) {
+      if (const auto ascii = ascii_unit_vector_at(typed, i, table)) {
+        out += typed.substr(done, i - done) + hatted(ascii->second);
+        i = done = ascii->first;
+        continue;
+      }
+    }
     const bool e_hat = typed.compare(i, std::string_view("ê").size(), "ê") == 0;
     if ((command || c == 'e' || e_hat) && !after_name && !exponent) {
       if (const auto found = unit_vector_at(typed, i)) {

@@ -5,6 +5,9 @@
 /// - the space basis: "x̂", "î" as typed, and LaTeX's "\hat{x}", "\hat\imath", "\hat{i}",
 ///   "\mathbf{i}", "\boldsymbol{\hat{k}}", "\hat{\mathbf{z}}" (x, y, z with a hat; i, j, k with a
 ///   hat or in bold) -> "x̂", "î", .. (the precomposed forms where Unicode has them);
+/// - the space basis in ASCII, as plain text and chat write it: "ihat", "i_hat", "i-hat",
+///   "x^" (before a sign, a bracket's end, a comma, a unit or the end), "e_x" -> "î", "x̂", ..
+///   (only where the letter is no symbol of the problem);
 /// - the body basis, the problem statements' e₁, e₂, e₃: "e₁", "e1", "e_1", "ê₁", "e_{1}",
 ///   "\hat{e}_1", "\mathbf{e}_1", "\vec{e}_{1}", "\hat{\mathbf{e}}_1" -> "ê₁", "ê₂", "ê₃".
 /// - the primed basis of the Euler angles (the body's before the last turn), "e₂′", "e_2'",

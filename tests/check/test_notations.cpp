@@ -1178,3 +1178,21 @@ TEST_CASE("labels before a ':', a unit after labelled components, a row of numbe
               .correct);
   REQUIRE_FALSE(box.check("principal_moments_corner", "eigenvalues: 1, 2, 3").correct);
 }
+
+TEST_CASE("unit vectors spelt in ASCII as plain text writes them") {
+  const Fixture plate("flying-plate");
+  const auto& omega = plate.answer("Omega_space").value.data;  // (ω sin α, 0, 2ω cos α)
+  REQUIRE(omega.at(1) == 0.0);
+  const std::string x = fmt::format("{:.6g}", omega.at(0)), z = fmt::format("{:.6g}", omega.at(2));
+  for (const auto& [ex, ez] :
+       {std::pair{"x^", "z^"}, std::pair{"ihat", "khat"}, std::pair{"i-hat", "k-hat"},
+        std::pair{"x_hat", "z_hat"}, std::pair{"e_x", "e_z"}, std::pair{"xhat", "zhat"}}) {
+    const std::string text = x + " " + ex + " + " + z + " " + ez + " rad/s";
+    INFO(text);
+    REQUIRE(plate.check("Omega_space", text).correct);
+  }
+  REQUIRE(plate.check("Omega_space", "ω(sin α x^ + 2 cos α z^)").correct);
+  REQUIRE_FALSE(plate.check("Omega_space", z + " x^ + " + x + " z^").correct);
+  // A caret before a number is a power: z^2 is no unit vector (and z no symbol here).
+  REQUIRE_THROWS_AS(plate.check("Omega_space", x + " x^ + " + z + " z^2"), InputError);
+}
