@@ -400,6 +400,22 @@ std::vector<std::string> sides(const std::string& text, const std::string& name)
   return out;
 }
 
+// "cos" for "cos θ_max", "cos(theta_max)" where `a` is the angle theta_max (sin, tan alike),
+// else "": a side that is a function of the answer's own name.
+std::string function_of_answer(const std::string& side, const Answer& a) {
+  if (a.unit != "rad") return "";
+  const std::string s = trim(sym::to_ascii(side));
+  for (const std::string f : {"cos", "sin", "tan"}) {
+    if (s.compare(0, f.size(), f) != 0) continue;
+    std::string rest = trim(s.substr(f.size()));
+    if (wrapped(rest, '(')) rest = rest.substr(1, rest.size() - 2);
+    if (!rest.empty() && std::isalpha(static_cast<unsigned char>(rest[0])) &&
+        name_spelling(rest) == name_spelling(a.name))
+      return f;
+  }
+  return "";
+}
+
 // "≈ 4.995 rad/s", "φ̇ ≈ 4.995 rad/s", "~4.995": a value given as approximate is judged as
 // given with '=' (every number is judged to a tolerance). A '~' only first: in LaTeX it is a space.
 std::string approximations_as_equal(const std::string& text) {
@@ -594,6 +610,13 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   }
   const auto parts = sides(approximations_as_equal(written), a.name);
   if (parts.size() == 1) return judge_one(ctx, a, parts[0], options);
+  // "cos θ_max = 0.7109": the cosine of an angle asked for, as u = cos θ is found first.
+  if (const std::string f = function_of_answer(parts[0], a); parts.size() == 2 && !f.empty()) {
+    Verdict v = judge_one(ctx, a, "a" + f + "(" + trim(parts[1]) + ")", options);
+    v.feedback.push_back(
+        fmt::format("read as {0} = a{1}({2}): your '=' gives {1} {0}", a.name, f, trim(parts[1])));
+    return v;
+  }
   // A key's line has a closed form and a value; judging more sides only costs time (each may be
   // an expression to simplify).
   if (parts.size() > kMostSides) {

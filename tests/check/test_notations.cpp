@@ -1196,3 +1196,26 @@ TEST_CASE("unit vectors spelt in ASCII as plain text writes them") {
   // A caret before a number is a power: z^2 is no unit vector (and z no symbol here).
   REQUIRE_THROWS_AS(plate.check("Omega_space", x + " x^ + " + z + " z^2"), InputError);
 }
+
+TEST_CASE("the cosine of an angle asked for, as u = cos θ is found first, is read as its angle") {
+  const Fixture top("heavy-top");
+  const double theta_max = top.answer("theta_max").value.data.at(0);
+  const std::string u = fmt::format("{:.6g}", std::cos(theta_max));
+  for (const std::string& left :
+       {std::string("cos θ_max"), std::string("cos(theta_max)"), std::string("cosθmax")}) {
+    INFO(left);
+    const auto v = top.check("theta_max", left + " = " + u);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{"read as theta_max = acos(" + u +
+                                                   "): your '=' gives cos theta_max"});
+  }
+  REQUIRE(top.check("theta_max", fmt::format("sin θ_max = {:.6g}", std::sin(theta_max))).correct);
+  const auto wrong =
+      top.check("theta_max", fmt::format("cos θ_max = {:.6g}", std::cos(theta_max) * 0.8));
+  REQUIRE_FALSE(wrong.correct);
+  REQUIRE_THAT(wrong.feedback.back(), Catch::StartsWith("read as theta_max = acos("));
+  // The cosine of another answer's name is no such reading: its side is a label.
+  const auto other = top.check("theta_max", "cos θ_min = " + u);
+  REQUIRE(other.correct == false);
+  REQUIRE_THAT(other.feedback.back(), Catch::Contains("taken as a label"));
+}
