@@ -247,15 +247,37 @@ std::string answer_name_hint(const Context& ctx, const std::string& typed,
   return "";
 }
 
+// Where the principal moments are asked for and `v` is a 3x3 matrix with nothing off its
+// diagonal (the tensor in its principal axes, "diag(..)"), `v` becomes its diagonal; whether it
+// did.
+bool moments_on_diagonal(const Answer& a, sym::ValueText& v) {
+  if (a.kind != AnswerKind::principal_moments || !v.is_matrix || v.rows != 3 || v.cols != 3)
+    return false;
+  for (std::size_t r = 0; r < 3; ++r) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      if (r != c && !v.entries[3 * r + c].is_zero()) return false;
+    }
+  }
+  v = sym::ValueText{3, 1, true, false, {v.entries[0], v.entries[4], v.entries[8]}};
+  return true;
+}
+
 void check_shape(const Answer& a, const sym::ValueText& v, const std::string& typed) {
   const bool key_vec = a.value.shape == Value::Shape::vector;
   const bool key_mat = a.value.shape == Value::Shape::matrix;
   if (key_vec != v.is_vector || key_mat != v.is_matrix || a.value.data.size() != v.entries.size()) {
-    throw InputError(
-        fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
-                    shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
-                    shape_words(v.rows, v.cols, v.is_vector, v.is_matrix),
-                    misreading_hint(a, typed, v.entries.size()) + imaginary_hint(a, typed, "")));
+    // A matrix for a vector is no decimal comma's doing ("[[0.569,0.1,0], ..]" has commas
+    // between digits); for the principal moments it is likely the tensor not yet diagonal.
+    std::string hint = key_vec && v.is_matrix ? ""
+                                              : misreading_hint(a, typed, v.entries.size()) +
+                                                    imaginary_hint(a, typed, "");
+    if (a.kind == AnswerKind::principal_moments && v.is_matrix)
+      hint +=
+          " (the principal moments are this matrix's eigenvalues; one with nothing off its "
+          "diagonal is read as its diagonal)";
+    throw InputError(fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
+                                 shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
+                                 shape_words(v.rows, v.cols, v.is_vector, v.is_matrix), hint));
   }
 }
 }  // namespace
@@ -464,23 +486,9 @@ AxesLayout listed_layout(const std::string& text) {
   return matrix_literal ? AxesLayout::rows_or_columns : AxesLayout::rows;
 }
 
-Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string& text,
-                         const Options& options, AxesLayout labelled) {
-  const AxesLayout layout =
-      labelled != AxesLayout::rows_or_columns ? labelled : listed_layout(text);
-  const Options opt = options_for(a, options);
-  const ReadAnswer p = [&] {
-    try {
-      return read_answer(text, ctx.table, kField);
-    } catch (const InputError& e) {
-      // "15,5deg" reads as two entries, one without a unit: say what was more likely meant.
-      const std::string hint = misreading_hint(a, text, std::nullopt) +
-                               answer_name_hint(ctx, text, e.what()) +
-                               imaginary_hint(a, text, e.what());
-      if (hint.empty()) throw;
-      throw InputError(e.what() + hint);
-    }
-  }();
+// An answer read, `p`, judged against `a`.
+Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
+                   const ReadAnswer& p, const Options& opt, AxesLayout layout) {
   check_shape(a, p.value, text);
   const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
   double to_key = 1.0;
@@ -521,6 +529,30 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
   if (const auto degrees = detail::degrees_in_numbers(j, text, to_key))
     return {false, "incorrect: " + a.name, {*degrees}};
   return {false, "incorrect: " + a.name, diagnose(j, key_unit, compare, a.value.data)};
+}
+
+Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string& text,
+                         const Options& options, AxesLayout labelled) {
+  const AxesLayout layout =
+      labelled != AxesLayout::rows_or_columns ? labelled : listed_layout(text);
+  ReadAnswer p = [&] {
+    try {
+      return read_answer(text, ctx.table, kField);
+    } catch (const InputError& e) {
+      // "15,5deg" reads as two entries, one without a unit: say what was more likely meant.
+      const std::string hint = misreading_hint(a, text, std::nullopt) +
+                               answer_name_hint(ctx, text, e.what()) +
+                               imaginary_hint(a, text, e.what());
+      if (hint.empty()) throw;
+      throw InputError(e.what() + hint);
+    }
+  }();
+  // "diag(0.569, 4.209, 4.556)": the tensor in its principal axes, whose diagonal holds them.
+  const bool diagonal_read = moments_on_diagonal(a, p.value);
+  Verdict v = judge_read(ctx, a, text, p, options_for(a, options), layout);
+  if (diagonal_read)
+    v.feedback.push_back("read as the moments on its diagonal (the tensor in its principal axes)");
+  return v;
 }
 
 // judge_as_written, and where a wrong answer calls EllipticK or EllipticE, whether it is right

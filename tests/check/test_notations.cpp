@@ -1219,3 +1219,33 @@ TEST_CASE("the cosine of an angle asked for, as u = cos θ is found first, is re
   REQUIRE(other.correct == false);
   REQUIRE_THAT(other.feedback.back(), Catch::Contains("taken as a label"));
 }
+
+TEST_CASE("principal moments given as the diagonal tensor are read as its diagonal") {
+  int judged = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.kind != AnswerKind::principal_moments) continue;
+        const auto& m = a.value.data;  // ascending
+        const std::string diagonal =
+            fmt::format("diag({:.6g}, {:.6g}, {:.6g})", m.at(2), m.at(0), m.at(1));
+        INFO(p.id << " " << a.name << ": " << diagonal);
+        const auto v = f.check(a.name, diagonal);
+        REQUIRE(v.correct);
+        REQUIRE(v.feedback.back() ==
+                "read as the moments on its diagonal (the tensor in its principal axes)");
+        ++judged;
+      }
+    }
+  }
+  REQUIRE(judged >= 5);
+  const Fixture cone("solid-cone");  // in the symbols too
+  REQUIRE(cone.check("principal_moments_cm", "diag(3M(4R² + h²)/80, 3M(4R² + h²)/80, 3M R²/10)")
+              .correct);
+  // A matrix with something off its diagonal is refused, saying the moments are its eigenvalues.
+  const Fixture box("box-corner");
+  REQUIRE_THROWS_WITH(box.check("principal_moments_corner", box.answer("I_corner").symbolic),
+                      Catch::Contains("the principal moments are this matrix's eigenvalues") &&
+                          !Catch::Contains("decimal comma"));
+}
