@@ -134,11 +134,35 @@ std::vector<std::string> arguments(const std::string& s, std::size_t open, std::
   return args;
 }
 
+// The end of Python's zero imaginary part at s[i], "+0j", "-0.j", "+0.00000000e+00j" (as
+// NumPy shows a real root of np.roots, 4.995+0.j), or i if there is none there.
+std::size_t zero_imaginary_end(const std::string& s, std::size_t i) {
+  if (i >= s.size() || (s[i] != '+' && s[i] != '-')) return i;
+  std::size_t k = i + 1;
+  bool digits = false;
+  for (; k < s.size() && (s[k] == '0' || s[k] == '.'); ++k) digits = digits || s[k] == '0';
+  if (digits && k < s.size() && (s[k] == 'e' || s[k] == 'E')) {
+    ++k;
+    if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+    while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+  }
+  if (!digits || k >= s.size() || s[k] != 'j' || (k + 1 < s.size() && name_char(s[k + 1])))
+    return i;
+  return k + 1;
+}
+
 std::string rewritten(const std::string& s) {
   std::string out;
   for (std::size_t i = 0; i < s.size();) {
     const char c = s[i];
     const bool after_digit = i > 0 && std::isdigit(static_cast<unsigned char>(s[i - 1]));
+    // Python's complex number with no imaginary part: its real part.
+    if (i > 0 && (after_digit || s[i - 1] == '.')) {
+      if (const std::size_t end = zero_imaginary_end(s, i); end != i) {
+        i = end;
+        continue;
+      }
+    }
     // Mathematica's InputForm writes 2.395*^-7 for 2.395e-7.
     if (after_digit && s.compare(i, 2, "*^") == 0) {
       out += 'e';

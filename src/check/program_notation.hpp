@@ -7,6 +7,8 @@
 ///   prints them, `2.395*^-7`; `Pi`; `Degree` (π/180: `30 Degree`).
 /// - Python: a module before a function or pi, `np.sqrt`, `math.pi`, `numpy.arctan2`,
 ///   `sp.cos`, `scipy.special.ellipk`; `np.radians(x)`, `math.radians(x)`, `np.deg2rad(x)`.
+///   A complex number with no imaginary part, as np.roots gives a real root, `4.995+0.j`, is its
+///   real part.
 /// - MATLAB: the element-wise operators `.^`, `.*`, `./`.
 /// - Maple and Julia: the arctangent of two arguments, `arctan(y, x)`, `atan(y, x)`, as atan2(y,
 ///   x) (the same order); Maple's `evalf(..)`.

@@ -164,6 +164,12 @@ TEST_CASE("a program's notation is rewritten in the reader's") {
   CHECK(as_programs_mean("np.radians(15)") == "((15)*pi/180)");
   CHECK(as_programs_mean("np.deg2rad([40, 30])") == "[((40)*pi/180), ((30)*pi/180)]");
   CHECK(as_programs_mean("m.*R.^2./4") == "m*R^2/4");
+  CHECK(as_programs_mean("array([25.82+0.j, 4.995-0j, 1.5+0.00000000e+00j])") ==
+        "array([25.82, 4.995, 1.5])");
+  CHECK(as_programs_mean("(4.995+0j)") == "(4.995)");
+  CHECK(as_programs_mean("4.995+0.5j") == "4.995+0.5j");  // not real: left to be refused
+  CHECK(as_programs_mean("2+0*j") == "2+0*j");
+
   CHECK(as_programs_mean("arctan(sin(a), 2) + atan(y, x) + atan(z)") ==
         "atan2(sin(a), 2) + atan2(y, x) + atan(z)");
   CHECK(as_programs_mean("evalf(Pi/4)") == "pi/4");
