@@ -76,7 +76,8 @@ std::string imaginary_hint(const Answer& a, const std::string& typed, const std:
       rate ? "; an imaginary frequency iλ is a growth e^(λt), and its rate is λ" : "";
   if (message.find("not real") != std::string::npos)
     return fmt::format(" (answers here are real{})", growth);
-  const std::string s = sym::to_ascii(typed);
+  // As the reader sees it: "4.995+0.j", NumPy's real root, has no imaginary unit left.
+  const std::string s = as_programs_mean(sym::to_ascii(typed));
   const auto name_char = [&](std::size_t k) {
     return k < s.size() && (std::isalpha(static_cast<unsigned char>(s[k])) || s[k] == '_');
   };

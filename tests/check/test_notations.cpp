@@ -1135,6 +1135,10 @@ TEST_CASE("an imaginary number where a real one is wanted is said to be read as 
   // An energy is no rate: the line says only that answers are real.
   REQUIRE_THROWS_WITH(racket.check("energy", "0.16i J"),
                       Catch::Contains("answers here are real)") && !Catch::Contains(growth));
+  // NumPy's real roots, 4.995+0.j, have no imaginary unit to name: the list is the mistake.
+  REQUIRE_THROWS_WITH(
+      racket.check("rate_axis2", fmt::format("array([{0:.6g}+0.j, -{0:.6g}+0.j])", rate)),
+      Catch::Contains("not a 2-vector") && !Catch::Contains("unit vector"));
   // An i inside a name (pi, sin) is no imaginary unit.
   REQUIRE(racket.check("rate_axis2", fmt::format("{:.6g}*pi/pi*sin(pi/2) 1/s", rate)).correct);
 }
