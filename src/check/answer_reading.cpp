@@ -371,16 +371,6 @@ std::string prepared(const std::string& typed, const std::string& field) {
   return trim(out);
 }
 
-// The value and the unit after it ("" if none): the first split whose right side is a unit.
-std::pair<std::string, std::string> split_unit(const std::string& s) {
-  for (std::size_t sp = s.find(' '); sp != std::string::npos; sp = s.find(' ', sp + 1)) {
-    const std::string right = trim(s.substr(sp + 1));
-    if (right.empty() || right[0] == '*' || right[0] == '/') continue;
-    if (is_unit(right)) return {trim(s.substr(0, sp)), right};
-  }
-  return {s, ""};
-}
-
 // "M R^2 psidot0/2" -> "M*R^2*psidot0/2": a '*' for each space between two factors; and a
 // function's one-factor argument without parentheses, as books write it, in them: "M l g cos
 // theta0" -> "M*l*g*cos(theta0)" (a name or a number, not one with a power: cos theta^2 is

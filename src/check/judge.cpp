@@ -6,6 +6,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <tuple>
@@ -583,16 +584,18 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
 // what the other one is where a mistake is found (the heavy top's other precession rate).
 Verdict judge_signs(const Context& ctx, const Answer& a, const SignReadings& signs,
                     const Options& options) {
+  std::exception_ptr refused;  // why the reader refused the first sign refused
   const auto read = [&](const std::string& text) -> std::optional<Verdict> {
     try {
       return judge(ctx, a, text, options);
     } catch (const InputError&) {
+      if (!refused) refused = std::current_exception();
       return std::nullopt;  // "sqrt(-x)": that sign gives no answer
     }
   };
   const std::optional<Verdict> plus = read(signs.plus);
   const std::optional<Verdict> minus = read(signs.minus);
-  if (!plus && !minus) judge(ctx, a, signs.plus, options);  // says why the reader refused it
+  if (!plus && !minus) std::rethrow_exception(refused);
   const bool plus_right = plus && plus->correct;
   const bool minus_right = minus && minus->correct;
   if (plus_right && minus_right) {

@@ -170,11 +170,9 @@ std::optional<std::string> number_rows(const std::string& typed) {
   };
   if (wrapped(t, '(')) return rows_of_numbers(unbracketed(t));
   // "0.5 1 1.5 m", "(0.5 1 1.5) m": a unit after the row is the whole vector's.
-  for (std::size_t sp = t.find(' '); sp != std::string::npos; sp = t.find(' ', sp + 1)) {
-    const std::string unit = trim(t.substr(sp + 1));
-    if (unit.empty() || !is_unit(unit)) continue;
-    if (auto rows = rows_of_numbers(unbracketed(trim(t.substr(0, sp))))) return *rows + " " + unit;
-  }
+  const auto [row, unit] = split_unit(t);
+  if (unit.empty()) return std::nullopt;
+  if (auto rows = rows_of_numbers(unbracketed(row))) return *rows + " " + unit;
   return std::nullopt;
 }
 
@@ -208,19 +206,14 @@ std::optional<std::string> rows_of_numbers(const std::string& typed) {
 }
 }  // namespace
 
-namespace {
-// A labelled value and the unit after it: ("1.5", "m") for "1.5 m", the first split at a space
-// whose right side is a unit; (value, "") for one without.
-std::pair<std::string, std::string> value_and_unit(const std::string& value) {
-  const std::string v = trim(value);
-  for (std::size_t sp = v.find(' '); sp != std::string::npos; sp = v.find(' ', sp + 1)) {
-    const std::string right = trim(v.substr(sp + 1));
-    if (!right.empty() && right[0] != '*' && right[0] != '/' && is_unit(right))
-      return {trim(v.substr(0, sp)), right};
+std::pair<std::string, std::string> split_unit(const std::string& s) {
+  for (std::size_t sp = s.find(' '); sp != std::string::npos; sp = s.find(' ', sp + 1)) {
+    const std::string right = trim(s.substr(sp + 1));
+    if (right.empty() || right[0] == '*' || right[0] == '/') continue;
+    if (is_unit(right)) return {trim(s.substr(0, sp)), right};
   }
-  return {v, ""};
+  return {s, ""};
 }
-}  // namespace
 
 std::optional<LabelledComponents> labelled_components(const std::string& text,
                                                       const std::string& field) {
@@ -255,10 +248,10 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
   // "x = 0.5, y = 1, z = 1.5 m": a unit after the last value, and none after the others, is
   // the whole vector's, as after a list in brackets.
   std::string unit;
-  if (const auto [last, after] = value_and_unit(values.back()); !after.empty()) {
+  if (const auto [last, after] = split_unit(trim(values.back())); !after.empty()) {
     const bool others_bare =
         std::all_of(values.begin(), values.end() - 1,
-                    [](const std::string& v) { return value_and_unit(v).second.empty(); });
+                    [](const std::string& v) { return split_unit(v).second.empty(); });
     if (others_bare) {
       unit = " " + after;
       for (auto& v : values) {

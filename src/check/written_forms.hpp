@@ -19,8 +19,14 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace wobble::check {
+
+/// The value and the unit after it ("" if none): the first split at a space whose right side is
+/// a unit ("1.5 m" -> ("1.5", "m"); "2 * m" and "x / s" are no value and unit); `s` itself and
+/// "" for a text without one.
+std::pair<std::string, std::string> split_unit(const std::string& s);
 
 /// "[0.5, 1, 1.5]" for "0.5 1 1.5", "[[1, 0], [0, 2]]" for the lines "1 0" and "0 2": text
 /// that is only plain numbers (two or more), separated by spaces and line breaks, each line as
