@@ -215,7 +215,99 @@ std::optional<std::pair<std::string, std::size_t>> dotted_greek(const std::strin
 }
 }  // namespace
 
-std::string latex_text(const std::string& s) {
+namespace {
+bool ascii_word_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+// The Greek letter at i, as its name ("φ" -> "phi"), or "".
+std::string greek_name_at(const std::string& s, std::size_t i) {
+  for (const auto& [name, letter] : sym::greek_letters()) {
+    if (s.compare(i, letter.size(), letter) == 0) return name;
+  }
+  return "";
+}
+
+bool has_index(const std::string& word) {
+  return std::any_of(word.begin(), word.end(), [](char c) {
+    return c == '_' || std::isdigit(static_cast<unsigned char>(c));
+  });
+}
+
+// "I1", "e3", "w2": one letter and a one- or two-digit index.
+bool indexed_letter(const std::string& word) {
+  return word.size() >= 2 && word.size() <= 3 &&
+         std::isalpha(static_cast<unsigned char>(word[0])) &&
+         std::all_of(word.begin() + 1, word.end(),
+                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+}
+
+// wobble's ASCII name for ω is w (the problems' w1 is \omega_1; the keys' symbolic forms write
+// w1): in prose, "w" and "w1" mean ω and ω₁, as the formulas beside them show.
+std::string letter_latex(char letter) {
+  return letter == 'w' ? "\\omega" : std::string(1, letter);
+}
+
+// At the start of a word, the word as math or typewriter type, and the index after it; nullopt
+// for a word that stays prose (or that dotted_greek and the symbol map set: "ω3", "θ̇0").
+std::optional<std::pair<std::string, std::size_t>> prose_word(const std::string& s, std::size_t i,
+                                                              const ProseNames& names) {
+  if (i > 0 && ascii_word_char(s[i - 1])) return std::nullopt;
+  std::string word;  // Greek letters by name: "Ω_space" -> "Omega_space"
+  std::size_t j = i;
+  bool greek_first = false;
+  while (j < s.size()) {
+    if (ascii_word_char(s[j])) {
+      word += s[j++];
+    } else if (const std::string g = greek_name_at(s, j); !g.empty()) {
+      greek_first = greek_first || j == i;
+      word += g;
+      j += sym::greek_letters().at(g).size();
+    } else {
+      break;
+    }
+  }
+  if (word.empty() || std::isdigit(static_cast<unsigned char>(word[0])) ||
+      (greek_first && word.find('_') == std::string::npos)) {
+    return std::nullopt;
+  }
+  const auto math = [&](const std::string& m) {
+    const bool primed = j < s.size() && s[j] == '\'';  // e2' (a turned axis): the prime in math
+    return std::make_pair("$" + m + (primed ? "'" : "") + "$", j + (primed ? 1 : 0));
+  };
+  if (const auto p = names.parameter_latex.find(word);
+      p != names.parameter_latex.end() && (has_index(word) || sym::greek_letters().count(word))) {
+    return math(p->second);
+  }
+  if (const auto symbol = name_latex(word)) return math(*symbol);
+  if (has_index(word) &&
+      std::find(names.answers.begin(), names.answers.end(), word) != names.answers.end()) {
+    std::string typed;
+    for (const char c : word) typed += c == '_' ? std::string("\\_") : std::string(1, c);
+    return std::make_pair("\\texttt{" + typed + "}", j);
+  }
+  if (indexed_letter(word)) return math(letter_latex(word[0]) + "_{" + word.substr(1) + "}");
+  // "dw1/dt": the time derivative of an indexed letter.
+  if (word.size() >= 3 && word[0] == 'd' && indexed_letter(word.substr(1)) &&
+      s.compare(j, 3, "/dt") == 0) {
+    j += 3;
+    return math("\\mathrm{d}" + letter_latex(word[1]) + "_{" + word.substr(2) + "}/\\mathrm{d}t");
+  }
+  if (word == "w") return math("\\omega");
+  return std::nullopt;
+}
+}  // namespace
+
+ProseNames prose_names(const Key& key) {
+  ProseNames names;
+  for (const auto& p : key.parameters) names.parameter_latex[p.name] = p.latex;
+  for (const auto& part : key.parts) {
+    for (const auto& a : part.answers) names.answers.push_back(a.name);
+  }
+  return names;
+}
+
+std::string latex_text(const std::string& s, const ProseNames& names) {
   static const std::vector<std::pair<std::string, std::string>> map{{"\\", "\\textbackslash{}"},
                                                                     {"&", "\\&"},
                                                                     {"%", "\\%"},
@@ -263,12 +355,6 @@ std::string latex_text(const std::string& s) {
                                                                     {"→", "$\\to$"}};
   std::string out;
   for (std::size_t i = 0; i < s.size();) {
-    // A Greek letter with a dot above (a time derivative) and digits: θ̇0 -> $\dot{\theta}_{0}$.
-    if (const auto greek = dotted_greek(s, i)) {
-      out += greek->first;
-      i = greek->second;
-      continue;
-    }
     // A number in e-notation in prose: "4.4e-16" -> 4.4 $\times 10^{-16}$.
     if (std::isdigit(static_cast<unsigned char>(s[i])) &&
         (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
@@ -290,16 +376,24 @@ std::string latex_text(const std::string& s) {
         continue;
       }
     }
-    // A name with a subscript as a whole word (Omega_body, p_phi, theta_min): math.
-    if (std::isalpha(static_cast<unsigned char>(s[i])) &&
-        (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
-      std::size_t j = i;
-      while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
-      if (const auto math = name_latex(s.substr(i, j - i))) {
-        out += "$" + *math + "$";
-        i = j;
-        continue;
-      }
+    // A negative number's sign as a minus, not a hyphen: "by -0.03%", "= -0.5 w2 w3".
+    if (s[i] == '-' && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i + 1])) &&
+        (i == 0 || s[i - 1] == ' ' || s[i - 1] == '(' || s[i - 1] == '[')) {
+      out += "$-$";
+      ++i;
+      continue;
+    }
+    // A name as a whole word (Omega_body, p_φ, I1, w2, angles_zxz): math or typewriter type.
+    if (const auto word = prose_word(s, i, names)) {
+      out += word->first;
+      i = word->second;
+      continue;
+    }
+    // A Greek letter with a dot above (a time derivative) and digits: θ̇0 -> $\dot{\theta}_{0}$.
+    if (const auto greek = dotted_greek(s, i)) {
+      out += greek->first;
+      i = greek->second;
+      continue;
     }
     std::size_t sub = 0;
     if (subscript_at(s, i, sub)) {  // the letter before is already out: make it math

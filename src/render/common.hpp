@@ -51,7 +51,20 @@ std::string markdown_cell(const std::string& s);
 /// ("principal_axes", "max_angle").
 std::optional<std::string> name_latex(const std::string& name);
 
+/// The names a key's prose uses, for setting it on a page as its formulas are: the parameters'
+/// LaTeX by name ("w1" -> "\omega_1", "alpha" -> "\alpha"), and the answers' names (a prose
+/// word that is one and reads as no symbol is the name `check --name` takes: in typewriter type).
+struct ProseNames {
+  std::map<std::string, std::string> parameter_latex;
+  std::vector<std::string> answers;
+};
+ProseNames prose_names(const Key& key);
+
 /// Plain text with Unicode symbols for LaTeX text mode: escapes specials, maps Σ -> $\Sigma$ ...
-std::string latex_text(const std::string& s);
+/// Names in the prose become math as the key's formulas set them: a parameter by its LaTeX (one
+/// with a digit, an underscore or a Greek name; "a" stays a word), a subscripted name
+/// ("Omega_space", "Ω_space", "p_φ") by name_latex, an indexed letter ("I1", "e3", "c2") with
+/// its index as a subscript, and wobble's ASCII ω ("w", "w1", "dw1/dt") as ω.
+std::string latex_text(const std::string& s, const ProseNames& names = {});
 
 }  // namespace wobble::detail

@@ -146,6 +146,8 @@ std::string render_handout_latex(const Key& key,
 
 std::string render_latex(const Key& key) {
   using detail::latex_text;
+  // Prose sets the key's names as its formulas do: w1 as ω₁, I1 as I₁, angles_zxz as typed.
+  const detail::ProseNames names = detail::prose_names(key);
   std::string out =
       latex_preamble() +
       "\\usepackage{graphicx}\n"
@@ -193,14 +195,14 @@ std::string render_latex(const Key& key) {
       if (!a.symbolic.empty()) out += display(a.latex) + "\n";
       out += "\\fit{" + std::string(a.symbolic.empty() ? "" : "= ") + value_latex(a.value) +
              detail::unit_latex(a.unit) + "}\n";
-      for (const auto& n : a.notes) out += "\\emph{Note:} " + latex_text(n) + "\n\n";
+      for (const auto& n : a.notes) out += "\\emph{Note:} " + latex_text(n, names) + "\n\n";
     }
     if (!part.steps.empty()) {
       out += "\\paragraph{Steps}\n\\begin{enumerate}\n";
       for (const auto& s : part.steps) {
         const std::string& prose = s.latex.empty() ? s.text : s.label;
         // Step prose is written for a terminal (sqrt, names): as the text key shows it.
-        out += "\\item " + latex_text(detail::pretty(prose));
+        out += "\\item " + latex_text(detail::pretty(prose), names);
         if (!s.latex.empty()) out += display(s.latex);
         out += "\n";
       }
@@ -208,7 +210,7 @@ std::string render_latex(const Key& key) {
     }
   }
   out += "\n\\subsection*{Conventions}\n\\begin{itemize}\n";
-  for (const auto& n : key.notes) out += "\\item " + latex_text(n) + "\n";
+  for (const auto& n : key.notes) out += "\\item " + latex_text(n, names) + "\n";
   out += "\\end{itemize}\n\\end{document}\n";
   return out;
 }

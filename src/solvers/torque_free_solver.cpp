@@ -277,11 +277,15 @@ Computed identity_residual(const Top& t, const std::string& q) {
   out.answer.value = Value::scalar(r.norm());
   out.answer.latex = format_number(r.norm());
   const char* axis = "xyz";
+  // A negative term after a minus in parentheses: "− (-4.83)", never "− -4.83".
+  const auto subtracted = [](double x) {
+    return x < 0 ? "(" + format_number(x) + ")" : format_number(x);
+  };
   for (int i = 0; i < 3; ++i) {
-    out.steps.push_back({fmt::format("{}: Ω_space − Ω_body − w = {} − {} − {} = {}", axis[i],
-                                     format_number(Os[i]), format_number(Ob[i]),
-                                     format_number(w[i]), format_number(r[i])),
-                         ""});
+    out.steps.push_back(
+        {fmt::format("{}: Ω_space − Ω_body − w = {} − {} − {} = {}", axis[i], format_number(Os[i]),
+                     subtracted(Ob[i]), subtracted(w[i]), format_number(r[i])),
+         ""});
   }
   out.steps.push_back(
       {"Exactly: x: I1 w sin α / I1 − 0 − w sin α = 0; z: I3 w3/I1 − (I3 − I1) w3/I1 − w3 = 0.",

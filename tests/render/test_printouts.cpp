@@ -1,6 +1,8 @@
 // What a terminal and a Markdown page show: no LaTeX or Markdown syntax in text, tables that
 // stay tables, parameters shown as given.
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cctype>
 #include <string>
 
 #include "problem/values.hpp"
@@ -126,4 +128,94 @@ TEST_CASE("a handout's values name a parameter as typed and, where it differs, a
   const std::string heavy_text =
       render_handout_text(solve(heavy, parameter_values(heavy, {})), {}, std::nullopt, false);
   REQUIRE_THAT(heavy_text, Catch::Contains("  θ0 = 30°") && !Catch::Contains("θ0 ("));
+}
+
+TEST_CASE("prose on a LaTeX page sets names as the formulas beside it do") {
+  detail::ProseNames names;
+  names.parameter_latex = {{"alpha", "\\alpha"}, {"a", "a"}, {"theta0", "\\theta_0"}};
+  names.answers = {"k2", "angles_zxz", "period"};
+  const std::vector<std::pair<std::string, std::string>> cases{
+      // wobble's ASCII ω, indexed letters, a derivative in d/dt.
+      {"dw1/dt = c1 w2 w3",
+       "$\\mathrm{d}\\omega_{1}/\\mathrm{d}t$ = $c_{1}$ $\\omega_{2}$ $\\omega_{3}$"},
+      {"s = |w(0)| about e3, I1 < I2", "s = |$\\omega$(0)| about $e_{3}$, $I_{1}$ < $I_{2}$"},
+      // Subscripted names, in ASCII or with a Greek letter (as the text key prints them).
+      {"Ω_space / ω = 1.003", "$\\Omega_{\\mathrm{space}}$ / $\\omega$ = 1.003"},
+      {"(p_φ − p_ψ u)", "($p_{\\phi}$ $-$ $p_{\\psi}$ u)"},
+      // Parameters by their LaTeX; a one-letter parameter is also the article "a".
+      {"d2 sin alpha at theta0, a top", "$d_{2}$ sin $\\alpha$ at $\\theta_0$, a top"},
+      // An answer's name as `check --name` takes it; one that is a word stays a word.
+      {"k² is k2 below; see angles_zxz; the period",
+       "k$^2$ is \\texttt{k2} below; see \\texttt{angles\\_zxz}; the period"},
+      // A turned axis keeps its prime in math; a negative number has a minus, not a hyphen.
+      {"e2' = (0, 1, 0), off by -0.03%", "$e_{2}'$ = (0, 1, 0), off by $-$0.03\\%"},
+      // What is not a name stays: words, z-y-z, e-notation, the dotted Greek.
+      {"z-y-z, 4.4e-16, θ̇0 = 0, 2pi",
+       "z-y-z, 4.4$\\times 10^{-16}$, $\\dot{\\theta}_{0}$ = 0, 2pi"},
+  };
+  for (const auto& [prose, latex] : cases) {
+    INFO(prose);
+    REQUIRE(detail::latex_text(prose, names) == latex);
+  }
+}
+
+namespace {
+// The text of a LaTeX page outside math ($..$, \fit{..}, \fitor{..}{..}) and typewriter type.
+std::string latex_prose(const std::string& tex) {
+  std::string out;
+  const auto skip_group = [&](std::size_t open) {  // index after the group opening at `open`
+    int depth = 0;
+    for (std::size_t k = open; k < tex.size(); ++k) {
+      if (tex[k] == '\\') {
+        ++k;
+      } else if (tex[k] == '{') {
+        ++depth;
+      } else if (tex[k] == '}' && --depth == 0) {
+        return k + 1;
+      }
+    }
+    return tex.size();
+  };
+  for (std::size_t i = tex.find("\\begin{document}"); i < tex.size();) {
+    if (tex[i] == '$') {
+      const auto close = tex.find('$', i + 1);
+      i = close == std::string::npos ? tex.size() : close + 1;
+    } else if (tex.compare(i, 5, "\\fit{") == 0 || tex.compare(i, 8, "\\texttt{") == 0 ||
+               tex.compare(i, 16, "\\includegraphics") == 0) {
+      i = skip_group(tex.find('{', i));
+    } else if (tex.compare(i, 7, "\\fitor{") == 0) {
+      i = skip_group(skip_group(tex.find('{', i)));
+    } else {
+      out += tex[i++];
+    }
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("every LaTeX key's prose has no raw name: no escaped underscore, no bare index") {
+  int keys = 0;
+  for (const auto& p : load_catalog()) {
+    const std::string prose = latex_prose(render_latex(solve(p, parameter_values(p, {}))));
+    INFO(p.id);
+    // "Omega\_space", "p\_phi": a name the page shows as typed outside typewriter type.
+    const auto underscore = prose.find("\\_");
+    INFO(prose.substr(
+        underscore == std::string::npos ? 0 : underscore - std::min<std::size_t>(underscore, 40),
+        80));
+    REQUIRE(underscore == std::string::npos);
+    // "I1", "w2", "e3": one letter and digits, which the formulas set as I₁, ω₂, e₃.
+    for (std::size_t i = 0; i + 1 < prose.size(); ++i) {
+      const auto at = [&](std::size_t k) { return static_cast<unsigned char>(prose[k]); };
+      if (!std::isalpha(at(i)) || (i > 0 && (std::isalnum(at(i - 1)) || prose[i - 1] == '\\')))
+        continue;
+      std::size_t j = i + 1;
+      while (j < prose.size() && std::isdigit(at(j))) ++j;
+      const bool bare_index = j > i + 1 && (j == prose.size() || !std::isalnum(at(j)));
+      INFO(prose.substr(i - std::min<std::size_t>(i, 40), 80));
+      REQUIRE_FALSE(bare_index);
+    }
+    ++keys;
+  }
+  REQUIRE(keys >= 15);
 }
