@@ -538,7 +538,8 @@ bool has_bare_function(const std::string& written) {
 }
 
 // "dphi/dt", "dφ/dt" (read "d phi/dt"), "dθ₀/dt": a rate in Leibniz's notation, as the
-// problem's rate symbol (phidot, thetadot0), where the problem has one and no symbol "dt".
+// problem's rate symbol (phidot, thetadot0), where the problem has one (or its value at t = 0)
+// and no symbol "dt".
 std::string leibniz_rates(const std::string& s, const sym::SymbolTable& table) {
   if (table.contains("dt")) return s;
   const auto ids = identifiers(s);
@@ -571,7 +572,14 @@ std::string leibniz_rates(const std::string& s, const sym::SymbolTable& table) {
     std::size_t digits = name.size();
     while (digits > 0 && is_digit(name[digits - 1])) --digits;
     const std::string rate = name.substr(0, digits) + "dot" + name.substr(digits);
-    if (name.empty() || !table.contains(rate) || table.contains(s.substr(start, length))) continue;
+    // Where the problem has only the rate at t = 0 (psidot0), "dpsi/dt" reads as psidot too: no
+    // symbol, so the reader's refusal names the one the problem has, as it does for "psidot".
+    const bool initial_only =
+        digits == name.size() && !table.contains(rate) && table.contains(rate + "0");
+    if (name.empty() || (!table.contains(rate) && !initial_only) ||
+        table.contains(s.substr(start, length))) {
+      continue;
+    }
     out += s.substr(done, start - done) + rate;
     done = i + 2;
     k = name_k + 1;
