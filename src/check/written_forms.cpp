@@ -169,21 +169,34 @@ std::optional<std::string> number_rows(const std::string& typed) {
     return wrapped(v, '(') ? v.substr(1, v.size() - 2) : v;
   };
   if (wrapped(t, '(')) return rows_of_numbers(unbracketed(t));
+  // "[4.33 -0.5 -0.75\n -0.5 3.33 -1.5\n ...]": MATLAB's literal, a row on each line.
+  const bool on_lines = t.find('\n') != std::string::npos;
+  if (on_lines && wrapped(t, '[')) return rows_of_numbers(t.substr(1, t.size() - 2));
   // "0.5 1 1.5 m", "(0.5 1 1.5) m": a unit after the row is the whole vector's.
   const auto [row, unit] = split_unit(t);
   if (unit.empty()) return std::nullopt;
-  if (auto rows = rows_of_numbers(unbracketed(row))) return *rows + " " + unit;
+  const std::string inside =
+      on_lines && wrapped(row, '[') ? row.substr(1, row.size() - 2) : unbracketed(row);
+  if (auto rows = rows_of_numbers(inside)) return *rows + " " + unit;
   return std::nullopt;
 }
 
 namespace {
 std::optional<std::string> rows_of_numbers(const std::string& typed) {
+  const bool on_lines = typed.find('\n') != std::string::npos;
   std::vector<std::vector<std::string>> rows;
   std::size_t start = 0;
   while (start <= typed.size()) {
     const std::size_t end = std::min(typed.find('\n', start), typed.size());
+    std::string line = trim(typed.substr(start, end - start));
+    if (on_lines) {
+      // "4.33, -0.5, -0.75;": on lines, commas may part a row's entries and a ';' or ',' end it
+      // ("-0.75,\n -0.5" is two entries, not -0.75 - 0.5).
+      while (!line.empty() && (line.back() == ';' || line.back() == ',')) line.pop_back();
+      std::replace(line.begin(), line.end(), ',', ' ');
+    }
     std::vector<std::string> row;
-    for (const auto& token : top_level(typed.substr(start, end - start), ' ')) {
+    for (const auto& token : top_level(line, ' ')) {
       if (!is_plain_number(token)) return std::nullopt;
       row.push_back(token);
     }

@@ -315,6 +315,26 @@ TEST_CASE("a unit glued to a bracket, and numbers in lines as MATLAB shows them"
     shown += "\n";
   }
   REQUIRE(box.check("I_cm", shown).correct);
+  // MATLAB's literal with a row on each line, commas between entries or not, a ';' or ','
+  // ending a row, a unit after it: rows (before, "-0.75,\n -0.5" read as -0.75 - 0.5).
+  const auto& corner = box.answer("I_corner").value.data;  // kg m^2
+  const auto row = [&](std::size_t r, const char* sep) {
+    return fmt::format("{:.6f}{}{:.6f}{}{:.6f}", corner[3 * r], sep, corner[3 * r + 1], sep,
+                       corner[3 * r + 2]);
+  };
+  for (const auto& [sep, end] : std::vector<std::pair<std::string, std::string>>{
+           {" ", ""}, {", ", ""}, {" ", ";"}, {", ", ","}}) {
+    const std::string rows = "[" + row(0, sep.c_str()) + end + "\n " + row(1, sep.c_str()) + end +
+                             "\n " + row(2, sep.c_str()) + "]";
+    INFO(rows);
+    REQUIRE(box.check("I_corner", rows).correct);
+    REQUIRE(box.check("I_corner", rows + " kg m^2").correct);
+    REQUIRE_FALSE(box.check("I_corner", rows + " g cm^2").correct);
+  }
+  // The same rows with one entry changed are wrong where it is.
+  const std::string changed = "[" + row(0, " ") + "\n" + row(1, " ") + "\n" +
+                              fmt::format("{:.6f} {:.6f} 1.2]", corner[6], corner[7]);
+  REQUIRE_THAT(box.check("I_corner", changed).feedback.at(0), Catch::Contains("entry (3, 3)"));
   // Lines of unequal length are no matrix.
   REQUIRE_THROWS_AS(box.check("I_cm", "1 0 0\n0 1\n0 0 1"), InputError);
 }
