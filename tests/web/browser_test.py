@@ -175,6 +175,18 @@ def check_catalog_math(driver, base):
     stage("the catalog's math: %d formulas typeset" % len(formulas))
 
 
+def vertical_scrollbars(driver):
+    """The boxes that show a vertical scrollbar: content taller than the box where the box
+    scrolls (overflow-x: auto makes overflow-y auto too, and KaTeX's radical reaches a pixel
+    below its line). KaTeX's own hidden MathML is no box a student sees."""
+    return driver.execute_script("""
+      return Array.from(document.querySelectorAll('body *')).filter(e => {
+        const style = getComputedStyle(e);
+        return !e.closest('.katex') && ['auto', 'scroll'].includes(style.overflowY) &&
+               e.scrollHeight > e.clientHeight;
+      }).map(e => e.className + ': ' + e.textContent.slice(0, 40));""")
+
+
 def severe_errors(driver):
     # The unreadable answer typed on purpose is refused with a 400, which the browser logs;
     # anything else is an error.
@@ -313,7 +325,8 @@ def main():
         stage("instructor's page done")
         # The page as one file, opened from disk: no server, no network.
         for problem, extra, keyed in (("heavy-top", ["--variant", "3"], False),
-                                      ("flying-plate", ["--key", "--no-hints"], True)):
+                                      ("flying-plate", ["--key", "--no-hints"], True),
+                                      ("tennis-racket", ["--key", "--no-hints"], True)):
             out = os.path.join(shots, problem + "-page.html")
             if os.path.exists(out):
                 os.remove(out)
@@ -338,6 +351,9 @@ def main():
                        "%s page from disk: the opened hint's math is not typeset" % problem)
                 d4.save_screenshot(os.path.join(shots, "file-" + problem + "-hint.png"))
             check_view(d4, "file-" + problem, shots)
+            scrolling = vertical_scrollbars(d4)
+            expect(not scrolling, "%s page from disk: a box with a vertical scrollbar: %s"
+                   % (problem, scrolling[:3]))
             shown = len(d4.find_elements(By.CSS_SELECTOR, ".key-value"))
             expect((shown > 0) == keyed, "%s page from disk: %d key values (key asked: %s)"
                    % (problem, shown, keyed))
