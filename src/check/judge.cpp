@@ -440,11 +440,19 @@ std::string function_of_answer(const std::string& side, const Answer& a) {
   return "";
 }
 
-// "≈ 4.995 rad/s", "φ̇ ≈ 4.995 rad/s", "~4.995": a value given as approximate is judged as
-// given with '=' (every number is judged to a tolerance). A '~' only first: in LaTeX it is a space.
+// "≈ 4.995 rad/s", "φ̇ ≈ 4.995 rad/s", "~4.995", "about 4.995": a value given as approximate is
+// judged as given with '=' (every number is judged to a tolerance). A '~' only first: in LaTeX it is a space.
 std::string approximations_as_equal(const std::string& text) {
   std::string s = trim(text);
   if (!s.empty() && s[0] == '~') s[0] = '=';
+  // "about 304 days", "approx. 9.13 1/s": the word as the sign, before the value only.
+  for (const std::string word : {"approximately ", "approx. ", "approx ", "about ", "roughly ",
+                                 "around ", "circa ", "ca. "}) {
+    if (ascii_lower(s.substr(0, word.size())) == word) {
+      s = "= " + trim(s.substr(word.size()));
+      break;
+    }
+  }
   for (const std::string sign : {"≈", "≃", "∼"}) {
     for (auto at = s.find(sign); at != std::string::npos; at = s.find(sign, at))
       s.replace(at, sign.size(), "=");

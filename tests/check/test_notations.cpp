@@ -145,12 +145,14 @@ TEST_CASE("numbers as calculators and textbooks write them") {
   // Per second without its 1; approximately equal; an SI prefix.
   for (const std::string& same : std::vector<std::string>{
            r + "/s", r + " /s", "≈ " + r + " rad/s", "~" + r + " rad/s", "φ̇ ≈ " + r + " rad/s",
-           "phidot_slow ≃ " + r, fmt::format("{:.6g} mrad/s", rate * 1e3)}) {
+           "phidot_slow ≃ " + r, "about " + r + " rad/s", "Approx. " + r + "/s",
+           "roughly " + r, fmt::format("{:.6g} mrad/s", rate * 1e3)}) {
     INFO(same);
     REQUIRE(top.check("phidot_slow", same).correct);
   }
   REQUIRE_FALSE(top.check("phidot_slow", r + "/min").correct);
   REQUIRE_FALSE(top.check("phidot_slow", "≈ " + fmt::format("{:.6g}", rate * 1.05)).correct);
+  REQUIRE_FALSE(top.check("phidot_slow", "about " + fmt::format("{:.6g}", rate * 1.05)).correct);
   const double energy = top.answer("energy").value.data[0];
   REQUIRE(top.check("energy", fmt::format("{:.6g} mJ", energy * 1e3)).correct);
   REQUIRE(top.check("energy", fmt::format("{:.6g} kJ", energy * 1e-3)).correct);
