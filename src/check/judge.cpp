@@ -483,6 +483,38 @@ bool is_one_name(const std::string& side) {
   });
 }
 
+// "λ² = 83.38 s⁻²", "rate^2 = 83.38": a side that is one name squared, a label of the student's
+// (no symbol of the problem) or the answer's own name, gives the square of a scalar answer. Its
+// square root as the reader takes it, the unit's powers halved ("s^-2" -> "s^-1"); "" for any
+// other side, a unit with an odd power, or a label that names a key's answer ("k² = .." is k2).
+std::string root_of_squared_label(const std::string& label, const std::string& value,
+                                  const Context& ctx, const Answer& a) {
+  if (a.value.shape != Value::Shape::scalar) return "";
+  const std::string s = trim(sym::to_ascii(label));
+  if (s.size() < 3 || s.compare(s.size() - 2, 2, "^2") != 0) return "";
+  const std::string base = trim(s.substr(0, s.size() - 2));
+  if (!is_one_name(base)) return "";
+  const bool own_name = name_spelling(base) == name_spelling(a.name);
+  if (!own_name && (ctx.table.contains(base) || name_in_key(ctx.key, s) != s)) return "";
+  const auto [number, unit_text] = split_value_unit(trim(sym::to_ascii(value)));
+  if (number.empty()) return "";
+  if (unit_text.empty()) return "sqrt(" + number + ")";
+  Unit unit;
+  try {
+    unit = parse_unit(unit_text, kField);
+  } catch (const InputError&) {
+    return "";
+  }
+  static constexpr std::array<const char*, 3> kSiBase{"kg", "m", "s"};
+  std::string si;
+  for (std::size_t k = 0; k < unit.dim.size(); ++k) {
+    if (unit.dim[k] % 2 != 0) return "";
+    if (unit.dim[k] != 0)
+      si += fmt::format("{}{}^{}", si.empty() ? "" : " ", kSiBase[k], unit.dim[k] / 2);
+  }
+  return "sqrt((" + number + ")*(" + unit.to_si_exact + "))" + (si.empty() ? "" : " " + si);
+}
+
 // Where the axes are in a matrix written as `text`: vectors listed one by one, "[1, 1, 0], [1,
 // -1, 0], [0, 0, 1]", "(1, 0, 1)/√2, ..", "[x̂ + ẑ, x̂ − ẑ, ŷ]", are its rows; a matrix of rows
 // in one bracket, "[[..], [..], [..]]" as the key prints one, either way.
@@ -659,6 +691,22 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
     Verdict v = judge_one(ctx, a, "a" + f + "(" + trim(parts[1]) + ")", options);
     v.feedback.push_back(
         fmt::format("read as {0} = a{1}({2}): your '=' gives {1} {0}", a.name, f, trim(parts[1])));
+    return v;
+  }
+  // "λ² = 83.38 s⁻²": the square of the answer, as a rate is found from its square first.
+  if (const std::string root =
+          parts.size() == 2 ? root_of_squared_label(parts[0], parts[1], ctx, a) : std::string();
+      !root.empty()) {
+    Verdict v = judge_one(ctx, a, root, options);
+    std::string sign;
+    if (!v.correct) {  // the negative root, for an answer with a sign
+      if (Verdict negative = judge_one(ctx, a, "-" + root, options); negative.correct) {
+        v = std::move(negative);
+        sign = "−";
+      }
+    }
+    v.feedback.push_back(fmt::format("read as {} = {}√({}): your '=' gives {}", a.name, sign,
+                                     trim(parts[1]), trim(parts[0])));
     return v;
   }
   // A key's line has a closed form and a value; judging more sides only costs time (each may be

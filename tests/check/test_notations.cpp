@@ -1251,6 +1251,43 @@ TEST_CASE("the cosine of an angle asked for, as u = cos θ is found first, is re
   REQUIRE_THAT(other.feedback.back(), Catch::Contains("taken as a label"));
 }
 
+TEST_CASE("a name squared before the value gives the square of the answer, read as its root") {
+  const Fixture racket("tennis-racket");
+  const double rate = racket.answer("rate_axis2").value.data.at(0);  // 1/s
+  const std::string square = fmt::format("{:.6g}", rate * rate);
+  // A label of the student's own, or the answer's name; the unit's powers halved.
+  for (const std::string& written :
+       {"λ² = " + square, "lambda^2 = " + square + " s^-2", "Ω² = " + square + " rad²/s²",
+        "rate_axis2^2 = " + square + " 1/s^2"}) {
+    INFO(written);
+    const auto v = racket.check("rate_axis2", written);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.feedback.back(), Catch::StartsWith("read as rate_axis2 = √(" + square));
+  }
+  const auto wrong = racket.check("rate_axis2", fmt::format("λ² = {:.6g}", rate * rate * 1.1));
+  REQUIRE_FALSE(wrong.correct);
+  REQUIRE_THAT(wrong.feedback.back(), Catch::StartsWith("read as rate_axis2 = √("));
+  // A negative square is an imaginary rate, and is told so.
+  REQUIRE_THROWS_WITH(racket.check("rate_axis2", "λ² = -" + square),
+                      Catch::Contains("an imaginary frequency iλ is a growth"));
+  // A symbol of the problem squared is an expression, judged as one (ω here is the spin).
+  REQUIRE_FALSE(racket.check("rate_axis2", "ω² = " + square).correct);
+  // An answer with a sign: the root with the sign that makes it right, said.
+  const Fixture solid("rect-solid");
+  const double body = solid.answer("Omega_body_rate").value.data.at(0);
+  REQUIRE(body < 0);
+  const auto negative =
+      solid.check("Omega_body_rate", fmt::format("Ω_b² = {:.8g} rad²/s²", body * body));
+  REQUIRE(negative.correct);
+  REQUIRE_THAT(negative.feedback.back(), Catch::StartsWith("read as Omega_body_rate = −√("));
+  // "k² = .." names the key's k2: the answer k2 is k², and k is its root.
+  const Fixture top("asymmetric-top");
+  const std::string k2 = fmt::format("{:.8g}", top.answer("k2").value.data.at(0));
+  REQUIRE(top.check("k2", "k² = " + k2).correct);
+  REQUIRE(top.check("k2", "k² = " + k2).feedback.empty());
+  REQUIRE(top.check("k", "k² = " + k2).correct);
+}
+
 TEST_CASE("principal moments given as the diagonal tensor are read as its diagonal") {
   int judged = 0;
   for (const auto& p : load_catalog()) {
