@@ -616,6 +616,20 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
       // sqrt of a negative argument: no such reading
     }
   }
+  // "ArcTan[Sin[α], 2 Cos[α]]": atan2's order in Mathematica's call, or the other way round.
+  for (const auto& swapped : arctangents_swapped(text)) {
+    try {
+      if (!judge_as_written(ctx, a, swapped.text, options, labelled).correct) continue;
+    } catch (const InputError&) {
+      continue;
+    }
+    v.feedback = {swapped.name == "ArcTan"
+                      ? "your ArcTan's arguments are the other way round: Mathematica's ArcTan[x, "
+                        "y] takes x first (it is atan2(y, x))"
+                      : "your " + swapped.name + "'s arguments are the other way round: " +
+                            swapped.name + "(y, x) takes y first (the angle of the point (x, y))"};
+    break;
+  }
   return v;
 }
 

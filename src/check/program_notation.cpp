@@ -245,4 +245,28 @@ std::optional<std::string> elliptic_of_parameter(const std::string& s) {
   return out;
 }
 
+std::vector<SwappedArctangent> arctangents_swapped(const std::string& s) {
+  static constexpr std::array<std::string_view, 5> kNames{"atan2", "arctan2", "ArcTan", "arctan",
+                                                          "atan"};
+  std::vector<SwappedArctangent> out;
+  for (std::size_t i = 0; i < s.size();) {
+    const std::size_t end = name_end(s, i);
+    const std::string name = s.substr(i, end - i);
+    const bool starts = end > i && (i == 0 || !name_char(s[i - 1]));
+    if (starts && std::find(kNames.begin(), kNames.end(), name) != kNames.end() && end < s.size() &&
+        (s[end] == '(' || s[end] == '[')) {
+      const std::size_t close = matching(s, end);
+      if (close != std::string::npos) {
+        const auto arguments = top_level(s.substr(end + 1, close - end - 1), ',');
+        if (arguments.size() == 2 && !arguments[0].empty() && !arguments[1].empty()) {
+          out.push_back(
+              {s.substr(0, end + 1) + arguments[1] + ", " + arguments[0] + s.substr(close), name});
+        }
+      }
+    }
+    i = std::max(end, i + 1);
+  }
+  return out;
+}
+
 }  // namespace wobble::check

@@ -23,6 +23,7 @@
 /// unwraps itself.
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace wobble::check {
 
@@ -34,5 +35,14 @@ std::string as_programs_mean(const std::string& text);
 /// sqrt(x))`, or nullopt where it calls neither: what a wrong answer meant if its integrals'
 /// arguments are k² (as Mathematica's and SciPy's take them).
 std::optional<std::string> elliptic_of_parameter(const std::string& text);
+
+/// `text` with the two arguments of one two-argument arctangent swapped: atan2(y, x), arctan2,
+/// Mathematica's ArcTan[x, y], Maple's and Julia's arctan(y, x) and atan(y, x). One text per
+/// such call, in order, with the call's name as written: what a wrong answer meant if its
+/// arguments are in another program's order (Mathematica's ArcTan takes x first).
+struct SwappedArctangent {
+  std::string text, name;
+};
+std::vector<SwappedArctangent> arctangents_swapped(const std::string& text);
 
 }  // namespace wobble::check

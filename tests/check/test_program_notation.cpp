@@ -228,3 +228,44 @@ TEST_CASE("an elliptic integral given the parameter where it takes the modulus i
   REQUIRE_THAT(v.feedback[0], Catch::StartsWith("EllipticK and EllipticE take the modulus k here"));
   REQUIRE(racket.check("period", fmt::format("4*EllipticK({:.10g})/{:.10g} s", k, rate)).correct);
 }
+
+TEST_CASE("a two-argument arctangent with its arguments in another program's order is named") {
+  // Every closed form with an atan2, its first atan2's arguments swapped, written as wobble,
+  // Mathematica, NumPy and Maple write it: wrong, with the line that names the order.
+  int judged = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.symbolic.find("atan2(") == std::string::npos) continue;
+        int calls = 0;
+        const std::string swapped = with_calls(
+            a.symbolic,
+            [&](const std::string& fn, const std::vector<std::string>& args) {
+              const bool swap = fn == "atan2" && calls++ == 0;
+              return fn + "(" + (swap ? args.at(1) + "," + args.at(0) : joined(args)) + ")";
+            },
+            [](char c) { return c == 'P' ? std::string("pi") : std::string(1, c); });
+        for (const auto& written :
+             {swapped, mathematica(swapped), python(swapped), maple(swapped)}) {
+          INFO(p.id << " " << a.name << ": " << written);
+          const check::Verdict v = f.check(a.name, written);
+          REQUIRE_FALSE(v.correct);
+          REQUIRE_FALSE(v.feedback.empty());
+          CHECK_THAT(v.feedback[0], Catch::Contains("arguments are the other way round"));
+          ++judged;
+        }
+      }
+    }
+  }
+  REQUIRE(judged >= 20);
+  // Mathematica's order is told as Mathematica's; a wrong answer of another kind is not.
+  const Fixture plate("flying-plate");  // angle_L_e3 = atan2(sin α, 2 cos α)
+  REQUIRE_THAT(plate.check("angle_L_e3", "ArcTan[Sin[α], 2 Cos[α]]").feedback.at(0),
+               Catch::Contains("Mathematica's ArcTan[x, y] takes x first"));
+  REQUIRE_THAT(
+      plate.check("angle_L_e3", "np.arctan2(2*np.cos(alpha), np.sin(alpha))").feedback.at(0),
+      Catch::Contains("arctan2(y, x) takes y first"));
+  REQUIRE_THAT(plate.check("angle_L_e3", "atan2(sin α, 3 cos α)").feedback.at(0),
+               !Catch::Contains("other way round"));
+}
