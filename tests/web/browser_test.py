@@ -91,7 +91,7 @@ def wait_for(driver, css, seconds=20):
 
 
 def answer_input(driver, name):
-    return driver.find_element(By.CSS_SELECTOR, 'input[data-answer="%s"]' % name)
+    return driver.find_element(By.CSS_SELECTOR, '[data-answer="%s"]' % name)
 
 
 def verdict_of(driver, name):
@@ -214,7 +214,7 @@ def main():
         expect(len(links) >= 15, "the list shows %d problems" % len(links))
         d.save_screenshot(os.path.join(shots, "list.png"))
         d.get(base + "#/flying-plate/5")
-        wait_for(d, ".part input")
+        wait_for(d, ".part [data-answer]")
         expect(len(d.find_elements(By.CSS_SELECTOR, ".katex")) > 0, "no math typeset")
         expect(not d.find_elements(By.CSS_SELECTOR, ".katex-error"), "KaTeX error elements")
         box = answer_input(d, "I0")
@@ -225,7 +225,7 @@ def main():
         active = d.switch_to.active_element.get_attribute("data-answer")
         expect(active and active != "I0", "the focus stayed on I0 (%s)" % active)
         # Part (a)'s next answer, twice wrong: the mistake named, then the hint.
-        inputs = d.find_elements(By.CSS_SELECTOR, ".part:first-of-type input")
+        inputs = d.find_elements(By.CSS_SELECTOR, ".part:first-of-type [data-answer]")
         name = active
         answer = next(a for p in key["parts"] for a in p["answers"] if a["name"] == name)
         twice = json.dumps([2 * x for x in answer["value"]] if isinstance(answer["value"], list)
@@ -244,11 +244,26 @@ def main():
         expect(hint and hint[0].find_elements(By.CSS_SELECTOR, ".katex") and
                not hint[0].find_elements(By.CSS_SELECTOR, ".katex-error"),
                "the hint's math is not typeset")
+        # The matrix pasted as MATLAB prints it, a row on each line: the box keeps the lines (an
+        # input strips them, and "-0.75⏎-0.5" became the difference -0.75-0.5) and grows to
+        # show them; Enter judges it.
+        expect(answer["shape"] == "matrix" if "shape" in answer else
+               isinstance(answer["value"][0], list), "part (a)'s second answer is no matrix")
+        rows = "\n".join(" ".join("%r" % x for x in row) for row in answer["value"])
+        target.clear()
+        d.execute_script("arguments[0].value = arguments[1];"
+                         "arguments[0].dispatchEvent(new Event('input'));", target, rows)
+        expect(target.get_attribute("value") == rows, "the pasted rows lost their line breaks")
+        expect(target.get_attribute("rows") == str(len(answer["value"])),
+               "the box shows %s lines of %d" % (target.get_attribute("rows"), len(answer["value"])))
+        d.save_screenshot(os.path.join(shots, "flying-plate-5-rows.png"))
+        target.send_keys(Keys.END, Keys.ENTER)
+        WebDriverWait(d, 20).until(lambda dr: verdict_of(dr, name).text.startswith("correct"))
         check_catalog_math(d, base)
         d.save_screenshot(os.path.join(shots, "flying-plate-5.png"))
         # A reload comes back to the same problem and variant.
         d.refresh()
-        wait_for(d, ".part input")
+        wait_for(d, ".part [data-answer]")
         variant = d.find_element(By.CSS_SELECTOR, ".variant input").get_attribute("value")
         expect(variant == "5" and "flying plate" in d.find_element(By.TAG_NAME, "h1").text.lower(),
                "after a reload: variant %r, %r" % (variant, d.find_element(By.TAG_NAME, "h1").text))
@@ -256,7 +271,7 @@ def main():
         d2 = browser()
         drivers.append(d2)
         d2.get(base + "#/flying-plate")
-        wait_for(d2, ".part input")
+        wait_for(d2, ".part [data-answer]")
         answer_input(d2, "I0").send_keys(right, Keys.ENTER)
         v2 = verdict_of(d2, "I0")
         expect(v2.text.startswith("incorrect"), "variant 5's answer at the defaults: %r" % v2.text)
@@ -264,7 +279,7 @@ def main():
         stage("worksheet done")
         fps = {}
         d.get(base + "#/flying-plate/5")
-        wait_for(d, ".part input")
+        wait_for(d, ".part [data-answer]")
         fps["flying-plate"] = check_view(d, "view-flying-plate", shots)
         for path, name in (("#/heavy-top/3", "view-heavy-top"),
                            ("#/tennis-racket", "view-tennis-racket"),
@@ -291,7 +306,7 @@ def main():
         wait_for(d3, ".key-value")
         # Paused: software WebGL drawing 60 frames a second slows the typing (tens of seconds).
         d3.execute_script("window.wobbleView.pause()")
-        boxes = d3.find_elements(By.CSS_SELECTOR, ".answer input")
+        boxes = d3.find_elements(By.CSS_SELECTOR, ".answer [data-answer]")
         values = d3.find_elements(By.CSS_SELECTOR, ".key-value")
         expect(len(values) == len(boxes) > 5, "the key shows %d values for %d answers"
                % (len(values), len(boxes)))
@@ -309,7 +324,7 @@ def main():
             if not formulas:
                 continue
             copied = d3.execute_script(COPY_SCRIPT, formulas[0])
-            box = answer.find_element(By.CSS_SELECTOR, "input")
+            box = answer.find_element(By.CSS_SELECTOR, "[data-answer]")
             name = box.get_attribute("data-answer")
             expect(copied.startswith("$") and copied.endswith("$"),
                    "%s: the copy is no LaTeX: %r" % (name, copied))

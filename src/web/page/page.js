@@ -13,6 +13,9 @@
 const main = document.getElementById('main');
 const offline = typeof WOBBLE_DATA !== 'undefined';
 const token = new URLSearchParams(location.search).get('token');
+// An answer box grows with the lines pasted into it up to this many (a matrix as MATLAB prints
+// it, with its name and a blank line, is five); beyond, it scrolls.
+const kMostAnswerRows = 8;
 let current = null;  // the 3-D view shown, stopped when the page moves on
 
 function el(tag, attrs, ...children) {
@@ -135,7 +138,7 @@ async function showProblem(id, variant) {
                        ...(motion ? [motionSection(motion)] : []), ...parts,
                        ...(offline ? [] : [summary]));
   typeset(main);
-  const first = main.querySelector('.answer input');
+  const first = main.querySelector('.answer textarea');
   if (first) first.focus({preventScroll: true});
 }
 
@@ -163,12 +166,20 @@ function partView(id, variant, part, state, partKey, update) {
       continue;
     }
     state.total += 1;
-    const input = el('input', {type: 'text', autocomplete: 'off', spellcheck: 'false',
-                               'data-answer': a.name});
+    // A box of one line that keeps line breaks: a matrix pasted as NumPy or MATLAB prints it
+    // keeps its rows, where an input would strip them ("-0.75⏎-0.5" becomes the difference
+    // "-0.75-0.5"). Enter judges; Shift+Enter starts a new line; the box grows with its lines.
+    const input = el('textarea', {rows: '1', autocomplete: 'off', spellcheck: 'false',
+                                  'data-answer': a.name});
+    input.addEventListener('input', () => {
+      input.rows = Math.min(kMostAnswerRows, input.value.split('\n').length);
+    });
     const verdict = el('div', {class: 'verdict', role: 'status'});
     let counted = false;
     input.addEventListener('keydown', async event => {
-      if (event.key !== 'Enter' || !input.value.trim()) return;
+      if (event.key !== 'Enter' || event.shiftKey) return;
+      event.preventDefault();
+      if (!input.value.trim()) return;
       try {
         const v = await getJson('api/problems/' + encodeURIComponent(id) + '/check', {
           method: 'POST', headers: {'Content-Type': 'application/json'},
@@ -179,7 +190,7 @@ function partView(id, variant, part, state, partKey, update) {
         if (v.correct && !counted) { counted = true; state.right += 1; update(); }
         if (!v.correct) await wrongTry();
         if (v.correct) {
-          const inputs = [...main.querySelectorAll('.answer input')];
+          const inputs = [...main.querySelectorAll('.answer textarea')];
           const next = inputs[inputs.indexOf(input) + 1];
           if (next) next.focus();
         }
