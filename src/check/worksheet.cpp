@@ -6,6 +6,7 @@
 #include <istream>
 #include <ostream>
 
+#include "check/brackets.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/plain_text.hpp"
@@ -40,6 +41,21 @@ std::string shown(const Answer& a) {
 }
 
 enum class Outcome { right, revealed, skipped, quit, nothing };
+
+// The lines one answer may take: a 3x3 matrix as NumPy prints it is three, as MATLAB shows one
+// with its name and blank lines about seven.
+constexpr int kMostAnswerLines = 12;
+
+// Whether `text` leaves a list's bracket open, '[' or '{' (a matrix's rows to come). A '(' left
+// open is a slip more often than a matrix ("sqrt(2"): it ends the line, and the judge says so.
+bool list_left_open(const std::string& text) {
+  std::string open;
+  for (const char c : text) {
+    if (opens(c)) open += c;
+    if (closes(c) && !open.empty()) open.pop_back();
+  }
+  return open.find_first_of("[{") != std::string::npos;
+}
 
 // What a line asks for besides an answer: the symbol or the word, in any case ("Quit", "HINT").
 enum class Command { none, hint, reveal, skip, quit, help };
@@ -77,6 +93,24 @@ struct Session {
     return true;
   }
 
+  // An answer pasted over several lines, as NumPy prints a matrix ("[[ 4.33 -0.5 ..]" then
+  // " [-0.5 ..]]"): while a list's bracket is open, the next line continues it, under a prompt
+  // of dots.
+  // An empty line, or the end of input, ends it as it stands (the judge says what is open); so
+  // does the limit, so that a bracket never closed cannot take every line after it.
+  bool read_answer(const std::string& prompt, std::string& line) {
+    if (!read(prompt, line)) return false;
+    std::size_t width = 0;  // the prompt's characters (its unit may have a '²')
+    for (const char c : prompt) width += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    const std::string dots = fmt::format("{:>{}} ", "...", width > 1 ? width - 1 : 3);
+    for (int lines = 1; list_left_open(line) && lines < kMostAnswerLines; ++lines) {
+      std::string more;
+      if (!read_line(dots, more) || trim(more).empty()) break;
+      line += "\n" + trim(more);
+    }
+    return true;
+  }
+
   Outcome part(const PartKey& part, const std::string& hint) {
     out << fmt::format("\n({}) {}\n", part.id, plain_text(part.question));
     if (part.answers.empty()) {
@@ -98,7 +132,7 @@ struct Session {
       while (true) {
         std::string line;
         const bool more =
-            read(fmt::format("  {}{} = ", a.name,
+            read_answer(fmt::format("  {}{} = ", a.name,
                              a.unit.empty() ? "" : " [" + sym::to_unicode(a.unit) + "]"),
                  line);
         const Command command = more ? command_of(line) : Command::quit;

@@ -435,6 +435,20 @@ TEST_CASE("worksheet driven end to end by piped input: feedback, hint, reveal, s
                    Catch::Contains("summary: 0 right, 0 revealed, 0 skipped, 7 not reached "
                                    "(of 8 parts; (a) left unfinished, 1 of its 2 answers "
                                    "right)"));
+  // A matrix pasted as NumPy prints it, over three lines: one answer, its rows under a prompt
+  // of dots; an empty line ends one left open (judged as it stands); a '(' left open does not
+  // wait for more lines.
+  const RunResult m = run_shell(
+      "printf '[[ 4.33333333 -0.5 -0.75 ]\\n [-0.5 3.33333333 -1.5 ]\\n [-0.75 -1.5 "
+      "1.66666667]]\\n[0.5,\\n\\nsqrt(2\\n[0.5, 1, 1.5]\\nq\\n' | " +
+      exe + " worksheet box-corner");
+  INFO(m.out << m.err);
+  REQUIRE(m.exit_code == 0);
+  REQUIRE_THAT(m.out, Catch::Contains("... [-0.75 -1.5 1.66666667]]") &&
+                          Catch::Contains("correct: I_corner") &&
+                          Catch::Contains("\"[0.5,\": it is not a complete expression") &&
+                          Catch::Contains("a '(' is not closed") &&
+                          Catch::Contains("correct: center_of_mass"));
   // End of input at once: no wait, a summary.
   const RunResult c = run_shell(exe + " worksheet flying-plate < /dev/null");
   REQUIRE(c.exit_code == 0);
