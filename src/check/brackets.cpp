@@ -37,6 +37,15 @@ std::vector<std::string> top_level(const std::string& s, char sep) {
   return out;
 }
 
+bool list_left_open(const std::string& text) {
+  std::string open;
+  for (const char c : text) {
+    if (opens(c)) open += c;
+    if (closes(c) && !open.empty()) open.pop_back();
+  }
+  return open.find_first_of("[{") != std::string::npos;
+}
+
 std::size_t matching(const std::string& s, std::size_t open) {
   int depth = 0;
   for (std::size_t i = open; i < s.size(); ++i) {

@@ -27,6 +27,10 @@ std::vector<std::string> space_separated_entries(const std::string& s);
 /// "a, b, c": entries joined as the reading form lists them.
 std::string joined(const std::vector<std::string>& items);
 
+/// Whether `text` leaves a list's bracket open, '[' or '{': a matrix pasted over lines, as NumPy
+/// prints one, with rows to come. A '(' left open is a slip more often ("sqrt(2"), and is not.
+bool list_left_open(const std::string& text);
+
 /// Whether s is one bracket group, opened by `open`: "[a, b]" but not "[a] [b]".
 bool wrapped(const std::string& s, char open);
 

@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "check/brackets.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
@@ -15,6 +16,8 @@ namespace wobble::check {
 namespace {
 // A submission is a few dozen lines; a larger text is no submission.
 constexpr std::size_t kMaxSubmissionBytes = 1 << 20;
+// The lines one answer may take (a 3x3 matrix as NumPy prints it is three).
+constexpr int kMostAnswerLines = 12;
 
 struct Line {
   int number = 0;
@@ -70,7 +73,19 @@ std::vector<Line> read_lines(const std::string& text) {
   std::string raw;
   int number = 0;
   while (std::getline(in, raw)) {
-    if (auto line = read_line(raw, ++number)) out.push_back(*line);
+    auto line = read_line(raw, ++number);
+    if (!line) continue;
+    // A matrix over several lines, as NumPy prints one: while a list's bracket is open the
+    // next lines continue the answer (a blank line, or the limit, ends it as it stands).
+    for (int more = 1; list_left_open(line->answer) && more < kMostAnswerLines; ++more) {
+      std::string next;
+      if (!std::getline(in, next)) break;
+      ++number;
+      next = trim(without_comments(next));
+      if (next.empty()) break;
+      line->answer += "\n" + next;
+    }
+    out.push_back(*line);
   }
   return out;
 }

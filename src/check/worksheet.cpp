@@ -46,17 +46,6 @@ enum class Outcome { right, revealed, skipped, quit, nothing };
 // with its name and blank lines about seven.
 constexpr int kMostAnswerLines = 12;
 
-// Whether `text` leaves a list's bracket open, '[' or '{' (a matrix's rows to come). A '(' left
-// open is a slip more often than a matrix ("sqrt(2"): it ends the line, and the judge says so.
-bool list_left_open(const std::string& text) {
-  std::string open;
-  for (const char c : text) {
-    if (opens(c)) open += c;
-    if (closes(c) && !open.empty()) open.pop_back();
-  }
-  return open.find_first_of("[{") != std::string::npos;
-}
-
 // What a line asks for besides an answer: the symbol or the word, in any case ("Quit", "HINT").
 enum class Command { none, hint, reveal, skip, quit, help };
 

@@ -870,3 +870,29 @@ TEST_CASE("a submission's comments, part headings and part marks name no answer"
   REQUIRE_FALSE(percent.answers.at(0).verdict.correct);
   REQUIRE_THAT(percent.answers.at(0).verdict.line, Catch::StartsWith("unreadable: I0"));
 }
+
+TEST_CASE("a submission's matrix over several lines, as NumPy prints one, is one answer") {
+  const Fixture box("box-corner");
+  const auto& m = box.answer("I_corner").value.data;  // kg m^2, row-major
+  std::string rows;
+  for (int r = 0; r < 3; ++r) {
+    rows += fmt::format("{}[{:.8f} {:.8f} {:.8f}]{}\n", r == 0 ? "[" : " ", m[3 * r], m[3 * r + 1],
+                        m[3 * r + 2], r == 2 ? "]" : "");
+  }
+  const auto judged = [&](const std::string& text) {
+    return judge_submission({box.key, box.table, box.values}, text, {});
+  };
+  const SubmissionResult r =
+      judged("I_corner = " + rows + "  # NumPy's print\ncenter_of_mass = (0.5, 1, 1.5) m\n");
+  INFO(fmt::format("{}", fmt::join(r.problems, "; ")));
+  REQUIRE(r.problems.empty());  // no row taken for a line of its own
+  REQUIRE(r.answers.at(0).verdict.correct);
+  REQUIRE(r.answers.at(1).verdict.correct);
+  // A blank line ends a bracket left open: the answer is judged as it stands, and the lines
+  // after it are answers of their own.
+  const SubmissionResult open =
+      judged("I_corner = [[1, 0, 0],\n\ncenter_of_mass = (0.5, 1, 1.5) m\n");
+  REQUIRE(open.problems.empty());
+  REQUIRE_THAT(open.answers.at(0).verdict.line, Catch::StartsWith("unreadable: I_corner"));
+  REQUIRE(open.answers.at(1).verdict.correct);
+}
