@@ -587,6 +587,39 @@ std::string leibniz_rates(const std::string& s, const sym::SymbolTable& table) {
   return out + s.substr(done);
 }
 
+// "theta'", "phi'": a rate in Lagrange's notation, a prime after the name, as the problem's rate
+// symbol (thetadot; theta0' as thetadot0), where it has one, or has it at t = 0 only (then as
+// "psidot", which the reader refuses naming psidot0, as for "dpsi/dt"). A prime names nothing
+// else here: "E'" (the heavy top's E′), "e1'" (a turned axis) have no rate and stay, and "30'"
+// (minutes of arc) follows no name. Two primes (a second derivative) stay too.
+std::string lagrange_rates(const std::string& s, const sym::SymbolTable& table) {
+  std::string out;
+  std::size_t done = 0;
+  for (const auto& [start, length] : identifiers(s)) {
+    // The prime as typed, "'", or as set, "′" (U+2032, copied from a page).
+    const std::size_t after = start + length;
+    const std::size_t prime = s.compare(after, 1, "'") == 0        ? 1
+                              : s.compare(after, 3, "\u2032") == 0 ? 3
+                                                                   : 0;
+    if (prime == 0 || s.compare(after + prime, 1, "'") == 0 ||
+        s.compare(after + prime, 3, "\u2032") == 0) {
+      continue;
+    }
+    std::string name = s.substr(start, length);
+    name.erase(std::remove(name.begin(), name.end(), '_'), name.end());
+    std::size_t digits = name.size();
+    while (digits > 0 && is_digit(name[digits - 1])) --digits;
+    const std::string rate = name.substr(0, digits) + "dot" + name.substr(digits);
+    const bool initial_only = digits == name.size() && table.contains(rate + "0");
+    if (digits == 0 || (!table.contains(rate) && !initial_only)) {
+      continue;
+    }
+    out += s.substr(done, start - done) + rate;
+    done = after + prime;
+  }
+  return out + s.substr(done);
+}
+
 // The problem's symbols by the names their LaTeX spells, where that is not the name: w1 by
 // "omega1" when its LaTeX is \omega_1, so "ω₁" as the question prints it reads. Not a spelling
 // two symbols share, nor one that is a symbol, a unit, pi or a function itself.
@@ -1489,8 +1522,10 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
   };
   const std::string text = compound_quantity(degrees_in_expression(
       sexagesimal_degrees(
-          names_apart(symbols_as_spelled(leibniz_rates(prepared(source, field), table), table),
-                      table),
+          names_apart(
+              symbols_as_spelled(
+                  lagrange_rates(leibniz_rates(prepared(source, field), table), table), table),
+              table),
           field),
       in_expression));
   if (text.empty()) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/characters.hpp"
+#include "symbolic/glued_numbers.hpp"
 #include "symbolic/plain_text.hpp"
 
 namespace wobble::sym {
@@ -174,6 +175,21 @@ std::string to_unicode(const std::string& s) {
   return out;
 }
 
+namespace {
+// Whether `out` ends in a count of minutes or seconds of arc: a number after no name, or the
+// digits right after a mark read already ("44°41′37″": 41 after "deg", 37 after "arcmin");
+// "ψ₀′" is no count.
+bool ends_in_arc_count(const std::string& out) {
+  if (ends_in_number(out)) return true;
+  std::size_t k = out.size();
+  while (k > 0 && (is_digit(out[k - 1]) || out[k - 1] == '.')) --k;
+  const auto after = [&](const std::string& mark) {
+    return k >= mark.size() && out.compare(k - mark.size(), mark.size(), mark) == 0;
+  };
+  return k < out.size() && (after("deg") || after("arcmin"));
+}
+}  // namespace
+
 std::string to_ascii(const std::string& typed) {
   const std::string text = letters_folded(typed);
   // First pass: everything but √, which becomes a marker (its operand is only known after the
@@ -219,9 +235,9 @@ std::string to_ascii(const std::string& typed) {
       i += std::string(kSubscripts[d]).size();
       continue;
     }
-    // 0.2″, 12′: seconds and minutes of arc after a number (after a name a prime is no unit).
-    if (!out.empty() && is_digit(out.back()) &&
-        (text.compare(i, 3, "″") == 0 || text.compare(i, 3, "′") == 0)) {
+    // 0.2″, 12′: seconds and minutes of arc after a number (after a name a prime is no unit,
+    // though the name end in a digit: "ψ₀′" is psi0′, a rate in Lagrange's notation).
+    if (ends_in_arc_count(out) && (text.compare(i, 3, "″") == 0 || text.compare(i, 3, "′") == 0)) {
       out += text.compare(i, 3, "″") == 0 ? " arcsec" : " arcmin";
       i += 3;
       continue;

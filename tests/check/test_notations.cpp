@@ -695,6 +695,34 @@ TEST_CASE("a name the statement defines is named with its definition, to be writ
   REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "B ω"), !Catch::Contains("defines"));
 }
 
+TEST_CASE("a rate in Lagrange's notation, a prime after the angle, is the problem's rate") {
+  const Fixture euler("euler-angles");
+  for (const char* rates :
+       {"(I1/2)(θ'² + φ'² sin²θ) + (I3/2)(ψ' + φ' cos θ)²",
+        "(I1/2)(θ′² + φ′² sin²θ) + (I3/2)(ψ′ + φ′ cos θ)²",
+        "I1/2*(theta'^2 + phi'^2*sin(theta)^2) + I3/2*(psi' + phi'*cos(theta))^2"}) {
+    INFO(rates);
+    REQUIRE(euler.check("kinetic_energy", rates).correct);
+  }
+  REQUIRE_FALSE(
+      euler.check("kinetic_energy", "(I1/2)(θ'² + φ'² sin²θ) + (I3/2)(ψ' + θ' cos θ)²").correct);
+  // A prime that names no rate keeps its meaning: the heavy top's E′, minutes of arc, a
+  // transpose; a rate the problem has at t = 0 only is refused naming that one, as "psidot" is.
+  const Fixture top("heavy-top");
+  REQUIRE(top.check("energy_prime", "E′ = M g l cos θ₀").correct);
+  const double theta_max = top.answer("theta_max").value.data.at(0) * 180 / kPi;
+  const double minutes = (theta_max - std::floor(theta_max)) * 60;
+  REQUIRE(
+      top.check("theta_max", fmt::format("{}°{:.3f}′", std::floor(theta_max), minutes)).correct);
+  REQUIRE(
+      top.check("theta_max", fmt::format("{}°{}′{:.1f}″", std::floor(theta_max),
+                                         std::floor(minutes), (minutes - std::floor(minutes)) * 60))
+          .correct);
+  REQUIRE_THROWS_WITH(top.check("p_phi", "M R² ψ' cos θ₀ / 2"),
+                      Catch::Contains("the problem's is ψ̇₀ (psidot0)"));
+  REQUIRE(euler.check("omega_primed", "[-φ' sin θ, θ', φ' cos θ + ψ']'").correct);
+}
+
 TEST_CASE("a parameter's name but for its 0 is named with the parameter, not read as it") {
   // The heavy top gives the rates at t = 0 only: ψ̇ is ψ̇₀ there and nowhere else, so the name
   // is refused, and the line names the symbol with its description.

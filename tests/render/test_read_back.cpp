@@ -349,7 +349,8 @@ std::string replaced_all(std::string text, const std::string& from, const std::s
 }  // namespace
 
 TEST_CASE("every closed form with its rates in Leibniz's notation reads back, every problem") {
-  // φ̇ as a student writes it without Newton's dot: "dphi/dt", "dφ/dt", \frac{d\phi}{dt}.
+  // φ̇ as a student writes it without Newton's dot: "dphi/dt", "dφ/dt", \frac{d\phi}{dt},
+  // "phi'", "phi′".
   int forms = 0;
   for (const auto& p : load_catalog()) {
     const Fixture f(p.id);
@@ -363,6 +364,13 @@ TEST_CASE("every closed form with its rates in Leibniz's notation reads back, ev
     const auto leibniz = [&](const std::string& name) {
       const auto parts = rate_parts(name);
       return parts ? "(d" + parts->first + parts->second + "/dt)" : name;
+    };
+    // And in Lagrange's, a prime after the angle, as typed and as a page sets it: "psi0'".
+    const auto lagrange = [](const char* prime) {
+      return [prime](const std::string& name) {
+        const auto parts = rate_parts(name);
+        return parts ? "(" + parts->first + parts->second + prime + ")" : name;
+      };
     };
     for (const auto& part : f.key.parts) {
       for (const auto& a : part.answers) {
@@ -379,7 +387,9 @@ TEST_CASE("every closed form with its rates in Leibniz's notation reads back, ev
           upright = replaced_all(upright, dotted, "\\frac{\\mathrm{d}" + rest + "}{\\mathrm{d}t}");
         }
         for (const std::string& text :
-             {symbols_respelled(a.symbolic, f.table, leibniz), latex, upright}) {
+             {symbols_respelled(a.symbolic, f.table, leibniz), latex, upright,
+              symbols_respelled(a.symbolic, f.table, lagrange("'")),
+              symbols_respelled(a.symbolic, f.table, lagrange("\u2032"))}) {
           INFO(p.id << " " << a.name << ": " << text);
           REQUIRE((text != a.latex && text != a.symbolic));  // a rate was respelled
           const Verdict v = f.check(a.name, text);
@@ -390,7 +400,7 @@ TEST_CASE("every closed form with its rates in Leibniz's notation reads back, ev
       }
     }
   }
-  REQUIRE(forms > 40);  // the Euler angles' rates, twice, and the heavy top's, three forms each
+  REQUIRE(forms > 70);  // the Euler angles' rates, twice, and the heavy top's, five forms each
 }
 
 namespace {
