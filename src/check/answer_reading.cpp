@@ -537,6 +537,19 @@ bool has_bare_function(const std::string& written) {
   });
 }
 
+// The rate of the angle `name` (no underscores) as the problem names it: "phi" -> "phidot",
+// "theta0" -> "thetadot0", where the problem has that symbol; "psi" -> "psidot" too where it
+// has psidot0 only (the reader then refuses psidot naming psidot0, as it does when typed); ""
+// for a name with no such rate.
+std::string rate_symbol(const std::string& name, const sym::SymbolTable& table) {
+  std::size_t digits = name.size();
+  while (digits > 0 && is_digit(name[digits - 1])) --digits;
+  if (digits == 0) return "";
+  const std::string rate = name.substr(0, digits) + "dot" + name.substr(digits);
+  const bool initial_only = digits == name.size() && table.contains(rate + "0");
+  return table.contains(rate) || initial_only ? rate : "";
+}
+
 // "dphi/dt", "dφ/dt" (read "d phi/dt"), "dθ₀/dt": a rate in Leibniz's notation, as the
 // problem's rate symbol (phidot, thetadot0), where the problem has one (or its value at t = 0)
 // and no symbol "dt".
@@ -569,17 +582,8 @@ std::string leibniz_rates(const std::string& s, const sym::SymbolTable& table) {
         s.compare(i, 2, "dt") != 0) {
       continue;
     }
-    std::size_t digits = name.size();
-    while (digits > 0 && is_digit(name[digits - 1])) --digits;
-    const std::string rate = name.substr(0, digits) + "dot" + name.substr(digits);
-    // Where the problem has only the rate at t = 0 (psidot0), "dpsi/dt" reads as psidot too: no
-    // symbol, so the reader's refusal names the one the problem has, as it does for "psidot".
-    const bool initial_only =
-        digits == name.size() && !table.contains(rate) && table.contains(rate + "0");
-    if (name.empty() || (!table.contains(rate) && !initial_only) ||
-        table.contains(s.substr(start, length))) {
-      continue;
-    }
+    const std::string rate = rate_symbol(name, table);
+    if (rate.empty() || table.contains(s.substr(start, length))) continue;
     out += s.substr(done, start - done) + rate;
     done = i + 2;
     k = name_k + 1;
@@ -607,13 +611,8 @@ std::string lagrange_rates(const std::string& s, const sym::SymbolTable& table) 
     }
     std::string name = s.substr(start, length);
     name.erase(std::remove(name.begin(), name.end(), '_'), name.end());
-    std::size_t digits = name.size();
-    while (digits > 0 && is_digit(name[digits - 1])) --digits;
-    const std::string rate = name.substr(0, digits) + "dot" + name.substr(digits);
-    const bool initial_only = digits == name.size() && table.contains(rate + "0");
-    if (digits == 0 || (!table.contains(rate) && !initial_only)) {
-      continue;
-    }
+    const std::string rate = rate_symbol(name, table);
+    if (rate.empty()) continue;
     out += s.substr(done, start - done) + rate;
     done = after + prime;
   }
