@@ -259,6 +259,15 @@ def main():
         d.save_screenshot(os.path.join(shots, "flying-plate-5-rows.png"))
         target.send_keys(Keys.END, Keys.ENTER)
         WebDriverWait(d, 20).until(lambda dr: verdict_of(dr, name).text.startswith("correct"))
+        # An Enter that confirms an input method's composition judges nothing.
+        composing = answer_input(d, "L0_body")
+        composing.send_keys("0.1")
+        d.execute_script("arguments[0].dispatchEvent(new KeyboardEvent('keydown',"
+                         "{key: 'Enter', isComposing: true, bubbles: true}));", composing)
+        time.sleep(1)
+        later = composing.find_element(By.XPATH, "following-sibling::div").text
+        expect(later == "", "an IME's Enter was judged: %r" % later)
+        composing.clear()
         check_catalog_math(d, base)
         d.save_screenshot(os.path.join(shots, "flying-plate-5.png"))
         # A reload comes back to the same problem and variant.

@@ -177,7 +177,9 @@ function partView(id, variant, part, state, partKey, update) {
     const verdict = el('div', {class: 'verdict', role: 'status'});
     let counted = false;
     input.addEventListener('keydown', async event => {
-      if (event.key !== 'Enter' || event.shiftKey) return;
+      // An Enter that confirms an input method's composition (a Greek letter typed through an
+      // IME) is no request to judge.
+      if (event.key !== 'Enter' || event.shiftKey || event.isComposing) return;
       event.preventDefault();
       if (!input.value.trim()) return;
       try {
