@@ -31,6 +31,11 @@ std::string joined(const std::vector<std::string>& items);
 /// prints one, with rows to come. A '(' left open is a slip more often ("sqrt(2"), and is not.
 bool list_left_open(const std::string& text);
 
+/// The lines one answer so continued may take, in the worksheet and in a submission: a 3x3
+/// matrix as NumPy prints it is three, as MATLAB shows one with its name and blank lines about
+/// seven; the limit keeps a bracket never closed from taking every line after it.
+constexpr int kMostAnswerLines = 12;
+
 /// Whether s is one bracket group, opened by `open`: "[a, b]" but not "[a] [b]".
 bool wrapped(const std::string& s, char open);
 

@@ -16,8 +16,6 @@ namespace wobble::check {
 namespace {
 // A submission is a few dozen lines; a larger text is no submission.
 constexpr std::size_t kMaxSubmissionBytes = 1 << 20;
-// The lines one answer may take (a 3x3 matrix as NumPy prints it is three).
-constexpr int kMostAnswerLines = 12;
 
 struct Line {
   int number = 0;

@@ -42,10 +42,6 @@ std::string shown(const Answer& a) {
 
 enum class Outcome { right, revealed, skipped, quit, nothing };
 
-// The lines one answer may take: a 3x3 matrix as NumPy prints it is three, as MATLAB shows one
-// with its name and blank lines about seven.
-constexpr int kMostAnswerLines = 12;
-
 // What a line asks for besides an answer: the symbol or the word, in any case ("Quit", "HINT").
 enum class Command { none, hint, reveal, skip, quit, help };
 
@@ -84,9 +80,8 @@ struct Session {
 
   // An answer pasted over several lines, as NumPy prints a matrix ("[[ 4.33 -0.5 ..]" then
   // " [-0.5 ..]]"): while a list's bracket is open, the next line continues it, under a prompt
-  // of dots.
-  // An empty line, or the end of input, ends it as it stands (the judge says what is open); so
-  // does the limit, so that a bracket never closed cannot take every line after it.
+  // of dots. An empty line, the end of input or the limit ends it as it stands (the judge says
+  // what is open).
   bool read_answer(const std::string& prompt, std::string& line) {
     if (!read(prompt, line)) return false;
     std::size_t width = 0;  // the prompt's characters (its unit may have a '²')

@@ -184,48 +184,44 @@ std::optional<std::string> name_latex(const std::string& name) {
 }
 
 namespace {
-// At i: a Greek letter followed by a combining dot and/or digits ("θ̇0", "φ̇", "θ0"), as LaTeX
-// math, and the index after it; nullopt for anything else (a lone letter maps as usual).
-std::optional<std::pair<std::string, std::size_t>> dotted_greek(const std::string& s,
-                                                                std::size_t i) {
-  for (const auto& [name, letter] : sym::greek_letters()) {
-    if (name == "Pi" || s.compare(i, letter.size(), letter) != 0) continue;
-    std::size_t j = i + letter.size();
-    const bool dot = s.compare(j, 2, "\u0307") == 0;
-    if (dot) j += 2;
-    std::size_t k = j;
-    while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
-    std::string subscript = s.substr(j, k - j);
-    if (k == j && k + 1 < s.size() && s[k] == '_') {  // Ω_i, Ω_ij: a one- or two-letter index
-      std::size_t e = k + 1;
-      while (e < s.size() && e - k - 1 < 3 && std::isalnum(static_cast<unsigned char>(s[e]))) ++e;
-      if (e - k - 1 >= 1 && e - k - 1 <= 2 &&
-          (e == s.size() || !std::isalnum(static_cast<unsigned char>(s[e])))) {
-        subscript = s.substr(k + 1, e - k - 1);
-        k = e;
-      }
-    }
-    if (!dot && subscript.empty()) return std::nullopt;
-    const std::string symbol = "\\" + (name == "pi" ? std::string("pi") : name);
-    std::string math = dot ? "\\dot{" + symbol + "}" : symbol;
-    if (!subscript.empty()) math += "_{" + subscript + "}";
-    return std::make_pair("$" + math + "$", k);
-  }
-  return std::nullopt;
-}
-}  // namespace
-
-namespace {
-bool ascii_word_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
-}
-
 // The Greek letter at i, as its name ("φ" -> "phi"), or "".
 std::string greek_name_at(const std::string& s, std::size_t i) {
   for (const auto& [name, letter] : sym::greek_letters()) {
     if (s.compare(i, letter.size(), letter) == 0) return name;
   }
   return "";
+}
+
+// At i: a Greek letter followed by a combining dot and/or digits ("θ̇0", "φ̇", "θ0"), as LaTeX
+// math, and the index after it; nullopt for anything else (a lone letter maps as usual).
+std::optional<std::pair<std::string, std::size_t>> dotted_greek(const std::string& s,
+                                                                std::size_t i) {
+  const std::string name = greek_name_at(s, i);
+  if (name.empty() || name == "Pi") return std::nullopt;
+  std::size_t j = i + sym::greek_letters().at(name).size();
+  const bool dot = s.compare(j, 2, "\u0307") == 0;
+  if (dot) j += 2;
+  std::size_t k = j;
+  while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+  std::string subscript = s.substr(j, k - j);
+  if (k == j && k + 1 < s.size() && s[k] == '_') {  // Ω_i, Ω_ij: a one- or two-letter index
+    std::size_t e = k + 1;
+    while (e < s.size() && e - k - 1 < 3 && std::isalnum(static_cast<unsigned char>(s[e]))) ++e;
+    if (e - k - 1 >= 1 && e - k - 1 <= 2 &&
+        (e == s.size() || !std::isalnum(static_cast<unsigned char>(s[e])))) {
+      subscript = s.substr(k + 1, e - k - 1);
+      k = e;
+    }
+  }
+  if (!dot && subscript.empty()) return std::nullopt;
+  const std::string symbol = "\\" + (name == "pi" ? std::string("pi") : name);
+  std::string math = dot ? "\\dot{" + symbol + "}" : symbol;
+  if (!subscript.empty()) math += "_{" + subscript + "}";
+  return std::make_pair("$" + math + "$", k);
+}
+
+bool ascii_word_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
 }
 
 bool has_index(const std::string& word) {
