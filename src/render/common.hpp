@@ -45,26 +45,4 @@ std::pair<std::string, std::string> shown_value(
 /// Text for one Markdown table cell: '|' escaped, line breaks as spaces.
 std::string markdown_cell(const std::string& s);
 
-/// A quantity's name as LaTeX math when it reads as a symbol with a subscript: "Omega_body" ->
-/// "\Omega_{\mathrm{body}}", "theta_min" -> "\theta_{\mathrm{min}}", "p_phi" -> "p_{\phi}",
-/// "I_xy" -> "I_{xy}", "L0_space" -> "L_{0,\mathrm{space}}"; nullopt for a name that is words
-/// ("principal_axes", "max_angle").
-std::optional<std::string> name_latex(const std::string& name);
-
-/// The names a key's prose uses, for setting it on a page as its formulas are: the parameters'
-/// LaTeX by name ("w1" -> "\omega_1", "alpha" -> "\alpha"), and the answers' names (a prose
-/// word that is one and reads as no symbol is the name `check --name` takes: in typewriter type).
-struct ProseNames {
-  std::map<std::string, std::string> parameter_latex;
-  std::vector<std::string> answers;
-};
-ProseNames prose_names(const Key& key);
-
-/// Plain text with Unicode symbols for LaTeX text mode: escapes specials, maps Σ -> $\Sigma$ ...
-/// Names in the prose become math as the key's formulas set them: a parameter by its LaTeX (one
-/// with a digit, an underscore or a Greek name; "a" stays a word), a subscripted name
-/// ("Omega_space", "Ω_space", "p_φ") by name_latex, an indexed letter ("I1", "e3", "c2") with
-/// its index as a subscript, and wobble's ASCII ω ("w", "w1", "dw1/dt") as ω.
-std::string latex_text(const std::string& s, const ProseNames& names = {});
-
 }  // namespace wobble::detail

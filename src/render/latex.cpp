@@ -6,6 +6,7 @@
 
 #include "render/common.hpp"
 #include "render/handout.hpp"
+#include "render/prose.hpp"
 #include "render/render.hpp"
 
 namespace wobble {

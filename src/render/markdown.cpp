@@ -1,11 +1,16 @@
 #include <fmt/format.h>
 
 #include "render/common.hpp"
+#include "render/prose.hpp"
 #include "render/render.hpp"
 
 namespace wobble {
 
 std::string render_markdown(const Key& key) {
+  const detail::ProseNames names = detail::prose_names(key);
+  const auto prose = [&](const std::string& s) {
+    return detail::unicode_text(s, names, detail::AnswerNameStyle::code);
+  };
   std::string out = fmt::format("# {}{} (`{}`)\n\n", key.title,
                                 key.variant ? fmt::format(", variant {}", *key.variant) : "",
                                 key.problem);
@@ -29,17 +34,17 @@ std::string render_markdown(const Key& key) {
       out += "\n\n$$\n";
       if (!a.symbolic.empty()) out += a.latex + " = ";
       out += value_latex(a.value) + detail::unit_latex(a.unit) + "\n$$\n\n";
-      for (const auto& n : a.notes) out += "> " + n + "\n>\n";
+      for (const auto& n : a.notes) out += "> " + prose(n) + "\n>\n";
       if (!a.notes.empty()) out.resize(out.size() - 2), out += "\n";
     }
     if (!part.steps.empty()) {
       out += "Steps:\n\n";
       for (std::size_t i = 0; i < part.steps.size(); ++i) {
         const auto& s = part.steps[i];
-        const std::string& prose = s.latex.empty() ? s.text : s.label;
-        out += fmt::format("{}. {}", i + 1, prose);
+        const std::string said = prose(s.latex.empty() ? s.text : s.label);
+        out += fmt::format("{}. {}", i + 1, said);
         if (!s.latex.empty()) {
-          if (!prose.empty()) out += ' ';
+          if (!said.empty()) out += ' ';
           out += '$';
           out += s.latex;
           out += '$';
@@ -49,7 +54,7 @@ std::string render_markdown(const Key& key) {
     }
   }
   out += "\n## Conventions\n\n";
-  for (const auto& n : key.notes) out += "- " + n + "\n";
+  for (const auto& n : key.notes) out += "- " + prose(n) + "\n";
   return out;
 }
 

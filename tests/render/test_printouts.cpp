@@ -8,6 +8,7 @@
 #include "problem/values.hpp"
 #include "render/common.hpp"
 #include "render/handout.hpp"
+#include "render/prose.hpp"
 #include "render/render.hpp"
 #include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
@@ -141,6 +142,7 @@ TEST_CASE("prose on a LaTeX page sets names as the formulas beside it do") {
       {"s = |w(0)| about e3, I1 < I2", "s = |$\\omega$(0)| about $e_{3}$, $I_{1}$ < $I_{2}$"},
       // Subscripted names, in ASCII or with a Greek letter (as the text key prints them).
       {"Ω_space / ω = 1.003", "$\\Omega_{\\mathrm{space}}$ / $\\omega$ = 1.003"},
+      {"Ω_i Ω_j > 0: w_i, w_j", "$\\Omega_{i}$ $\\Omega_{j}$ > 0: $\\omega_{i}$, $\\omega_{j}$"},
       {"(p_φ − p_ψ u)", "($p_{\\phi}$ $-$ $p_{\\psi}$ u)"},
       // Parameters by their LaTeX; a one-letter parameter is also the article "a".
       {"d2 sin alpha at theta0, a top", "$d_{2}$ sin $\\alpha$ at $\\theta_0$, a top"},
@@ -193,11 +195,130 @@ std::string latex_prose(const std::string& tex) {
 }
 }  // namespace
 
+TEST_CASE("prose in a terminal or Markdown key names things as its questions print them") {
+  detail::ProseNames names;
+  names.parameter_latex = {{"alpha", "\\alpha"}, {"a", "a"}, {"theta0", "\\theta_0"}};
+  names.answers = {"k2", "angles_zxz", "period"};
+  using detail::AnswerNameStyle;
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"dw1/dt = c1 w2 w3", "dω₁/dt = c₁ ω₂ ω₃"},
+      {"s = |w(0)| about e3, I1 < I2", "s = |ω(0)| about e₃, I₁ < I₂"},
+      {"Ω2 Ω3 > 0: w_i, w_j grow", "Ω₂ Ω₃ > 0: ω_i, ω_j grow"},
+      {"Omega_space / w = 1.003, (p_phi − p_ψ u)", "Ω_space / ω = 1.003, (p_φ − p_ψ u)"},
+      {"d2 sin alpha at theta0, a top", "d₂ sin α at θ₀, a top"},
+      {"e2' = (0, 1, 0), off by -0.03%", "e₂' = (0, 1, 0), off by -0.03%"},
+      {"z-y-z, 4.4e-16, θ̇0 = 0, 2pi, 2TI3, L0_space",
+       "z-y-z, 4.4e-16, θ̇₀ = 0, 2pi, 2TI3, L0_space"},
+      {"k² is k2 below; see angles_zxz; the period", "k² is k2 below; see angles_zxz; the period"},
+  };
+  for (const auto& [prose, text] : cases) {
+    INFO(prose);
+    REQUIRE(detail::unicode_text(prose, names, AnswerNameStyle::plain) == text);
+  }
+  // Markdown shows an answer's name in prose as its heading does: as code.
+  REQUIRE(detail::unicode_text("k² is k2 below; see angles_zxz; the period", names,
+                               AnswerNameStyle::code) ==
+          "k² is `k2` below; see `angles_zxz`; the period");
+}
+
+namespace {
+// The words of `prose` that are one ASCII letter and digits ("I1", "w2"), a "w_" name ("w_i") or
+// a time derivative in ASCII ("dw1"): names a key sets as its formulas do. An answer's name
+// (`answers`) is shown as typed; a word glued to a digit before it ("2TI3") is a product.
+std::vector<std::string> bare_names(const std::string& prose,
+                                    const std::vector<std::string>& answers) {
+  std::vector<std::string> bare;
+  const auto at = [&](std::size_t k) { return static_cast<unsigned char>(prose[k]); };
+  for (std::size_t i = 0; i < prose.size(); ++i) {
+    if (!std::isalpha(at(i)) ||
+        (i > 0 && (std::isalnum(at(i - 1)) || prose[i - 1] == '\\' || prose[i - 1] == '_'))) {
+      continue;
+    }
+    std::size_t j = i;
+    while (j < prose.size() && (std::isalnum(at(j)) || prose[j] == '_')) ++j;
+    const std::string word = prose.substr(i, j - i);
+    const bool letter_digits =
+        word.size() >= 2 && std::all_of(word.begin() + 1, word.end(), [](char c) {
+          return std::isdigit(static_cast<unsigned char>(c));
+        });
+    const bool derivative = word.size() >= 3 && word[0] == 'd' && word[1] == 'w' &&
+                            std::isdigit(static_cast<unsigned char>(word[2]));
+    if ((letter_digits || derivative || word.compare(0, 2, "w_") == 0) &&
+        std::find(answers.begin(), answers.end(), word) == answers.end()) {
+      bare.push_back(word);
+    }
+  }
+  return bare;
+}
+
+// The prose lines of a terminal key: its notes, steps and conventions.
+std::string text_prose(const std::string& text) {
+  std::string prose;
+  std::size_t at = 0;
+  for (std::size_t end; (end = text.find('\n', at)) != std::string::npos; at = end + 1) {
+    const std::string line = text.substr(at, end - at);
+    const bool step = line.size() > 4 && line.compare(0, 3, "   ") == 0 &&
+                      std::isdigit(static_cast<unsigned char>(line[3]));
+    if (line.compare(0, 12, "      note: ") == 0 || line.compare(0, 4, "  - ") == 0 || step) {
+      prose += line + "\n";
+    }
+  }
+  return prose;
+}
+
+// The prose of a Markdown key outside math ($..$, $$..$$) and code (`..`): its quoted notes,
+// numbered steps and listed conventions.
+std::string markdown_prose(const std::string& md) {
+  std::string prose;
+  std::size_t at = 0;
+  for (std::size_t end; (end = md.find('\n', at)) != std::string::npos; at = end + 1) {
+    const std::string line = md.substr(at, end - at);
+    const bool step = !line.empty() && std::isdigit(static_cast<unsigned char>(line[0]));
+    if (line.compare(0, 2, "> ") != 0 && line.compare(0, 2, "- ") != 0 && !step) continue;
+    for (std::size_t i = 0; i < line.size();) {
+      if (line[i] == '$' || line[i] == '`') {
+        const auto close = line.find(line[i], i + 1);
+        i = close == std::string::npos ? line.size() : close + 1;
+      } else {
+        prose += line[i++];
+      }
+    }
+    prose += "\n";
+  }
+  return prose;
+}
+}  // namespace
+
+TEST_CASE("every terminal and Markdown key's prose has no bare index, as its questions have none") {
+  int keys = 0;
+  for (const auto& p : load_catalog()) {
+    const Key key = solve(p, parameter_values(p, {}));
+    std::vector<std::string> answers;
+    for (const auto& part : key.parts) {
+      for (const auto& a : part.answers) answers.push_back(a.name);
+    }
+    INFO(p.id);
+    const std::string text = text_prose(render_text(key));
+    const std::string markdown = markdown_prose(render_markdown(key));
+    REQUIRE(text.find("note: ") != std::string::npos);
+    INFO(text);
+    REQUIRE(bare_names(text, answers).empty());
+    INFO(markdown);
+    // Markdown shows an answer's name as code, so no name is left in its prose.
+    REQUIRE(bare_names(markdown, {}).empty());
+    ++keys;
+  }
+  REQUIRE(keys >= 15);
+}
+
 TEST_CASE("every LaTeX key's prose has no raw name: no escaped underscore, no bare index") {
   int keys = 0;
   for (const auto& p : load_catalog()) {
-    const std::string prose = latex_prose(render_latex(solve(p, parameter_values(p, {}))));
+    const std::string tex = render_latex(solve(p, parameter_values(p, {})));
+    const std::string prose = latex_prose(tex);
     INFO(p.id);
+    // wobble's ASCII ω in a name ("w_i") is ω on a page, as "w1" is.
+    REQUIRE(tex.find("$w_{") == std::string::npos);
     // "Omega\_space", "p\_phi": a name the page shows as typed outside typewriter type.
     const auto underscore = prose.find("\\_");
     INFO(prose.substr(
@@ -205,16 +326,9 @@ TEST_CASE("every LaTeX key's prose has no raw name: no escaped underscore, no ba
         80));
     REQUIRE(underscore == std::string::npos);
     // "I1", "w2", "e3": one letter and digits, which the formulas set as I₁, ω₂, e₃.
-    for (std::size_t i = 0; i + 1 < prose.size(); ++i) {
-      const auto at = [&](std::size_t k) { return static_cast<unsigned char>(prose[k]); };
-      if (!std::isalpha(at(i)) || (i > 0 && (std::isalnum(at(i - 1)) || prose[i - 1] == '\\')))
-        continue;
-      std::size_t j = i + 1;
-      while (j < prose.size() && std::isdigit(at(j))) ++j;
-      const bool bare_index = j > i + 1 && (j == prose.size() || !std::isalnum(at(j)));
-      INFO(prose.substr(i - std::min<std::size_t>(i, 40), 80));
-      REQUIRE_FALSE(bare_index);
-    }
+    const auto bare = bare_names(prose, {});
+    INFO((bare.empty() ? "" : bare.front()));
+    REQUIRE(bare.empty());
     ++keys;
   }
   REQUIRE(keys >= 15);

@@ -22,6 +22,7 @@
 #include "check/worksheet.hpp"
 #include "problem/values.hpp"
 #include "render/common.hpp"
+#include "render/prose.hpp"
 #include "render/render.hpp"
 #include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
