@@ -41,7 +41,7 @@ std::string render_markdown(const Key& key) {
       out += "Steps:\n\n";
       for (std::size_t i = 0; i < part.steps.size(); ++i) {
         const auto& s = part.steps[i];
-        const std::string said = prose(s.latex.empty() ? s.text : s.label);
+        const std::string said = prose(s.latex.empty() ? detail::pretty(s.text) : s.label);
         out += fmt::format("{}. {}", i + 1, said);
         if (!s.latex.empty()) {
           if (!said.empty()) out += ' ';

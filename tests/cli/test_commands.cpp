@@ -101,7 +101,7 @@ answers = ["principal_moments", "principal_axes"]
 )TOML");
   const RunResult r = run_wobble({"solve", file.string()});
   REQUIRE(r.exit_code == 0);
-  REQUIRE_THAT(r.out, Catch::Contains("λ1 = 0") && Catch::Contains("Degenerate: λ2 = λ3"));
+  REQUIRE_THAT(r.out, Catch::Contains("λ₁ = 0") && Catch::Contains("Degenerate: λ₂ = λ₃"));
 }
 
 TEST_CASE("keys --check passes on the repository's solutions") {
