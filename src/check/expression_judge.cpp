@@ -59,12 +59,14 @@ std::pair<std::vector<double>, std::vector<double>> at_point(const Context& ctx,
   return {got, want};
 }
 
-// The set values and three more points, each parameter scaled by the factors in its order.
+// The set values and three more points, each parameter scaled by the factors in its order (a
+// parameter the key's forms are written with, `held`, stays at its value).
 // Where the key has no value at a point (a heavy top's steady precession needs a fast enough
 // spin, which scaling l up and the spin down can take away), the point is moved halfway back
 // to the set values, up to kMostRetreats times, else left out.
 constexpr int kMostRetreats = 4;
 std::vector<sym::Values> judging_points(const sym::Values& set,
+                                        const std::vector<std::string>& held,
                                         const std::function<void(const sym::Values&)>& key_at) {
   std::vector<sym::Values> points{set};
   for (std::size_t f = 0; f < kProbeFactors.size(); ++f) {
@@ -76,6 +78,7 @@ std::vector<sym::Values> judging_points(const sym::Values& set,
         const double factor =
             std::pow(kProbeFactors[kProbeOrders[pattern % kProbeOrders.size()][f]],
                      std::ldexp(1.0, -retreat));
+        if (std::find(held.begin(), held.end(), name) != held.end()) continue;
         x *= pattern < kProbeOrders.size() ? factor : 1 / factor;
       }
       try {
@@ -104,7 +107,7 @@ Verdict judge_symbolic_axes(const Judge& j, const ReadAnswer& p) {
     (void)at_point(ctx, j.a, key_axes, key_axes, point);
     (void)at_point(ctx, j.a, key_moments, key_moments, point);
   };
-  for (const auto& point : judging_points(ctx.values, key_at)) {
+  for (const auto& point : judging_points(ctx.values, ctx.key.held, key_at)) {
     const auto [got, axes_flat] = at_point(ctx, j.a, p.value, key_axes, point);
     const auto lambda = at_point(ctx, j.a, key_moments, key_moments, point).first;  // unsorted
     // Columns with their moments, ascending (the order may change away from the set values).
@@ -380,7 +383,8 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
   if (proved)
     return {true, "correct: " + a.name + " (your expression simplifies to the key's)", {}};
   // The set values first.
-  const std::vector<sym::Values> points = judging_points(ctx.values, key_values(ctx, a, key));
+  const std::vector<sym::Values> points =
+      judging_points(ctx.values, ctx.key.held, key_values(ctx, a, key));
   for (std::size_t n = 0; n < points.size(); ++n) {
     std::vector<double> got, want;
     try {

@@ -29,7 +29,8 @@ struct Top : BodyContext {
   HeavyTop numeric{};
   HeavyTopStart start{};
   HeavyTopConstants constants{};
-  std::vector<std::string> zero_rates;  // "θ̇0 = 0", ...: set to zero in the exact forms
+  std::vector<std::string> written_in;  // "θ̇0 = 0", "θ0 = 90°": written into the exact forms
+  std::vector<std::string> held;        // the parameters a nonzero one written in depends on
   std::string file() const { return problem.file.string(); }
 };
 
@@ -80,8 +81,17 @@ Top::Top(const Problem& p, const sym::Values& values) : BodyContext(p, values) {
   for (auto [rate, name] : {std::pair<ex*, const char*>{&thetadot, "θ̇0"}, {&phidot, "φ̇0"}}) {
     if (sym::is_identically_zero(rate->subs(t.exact.at))) {
       *rate = 0;
-      zero_rates.push_back(std::string(name) + " = 0");
+      written_in.push_back(std::string(name) + " = 0");
     }
+  }
+  // A horizontal axle likewise: its key reads phidot_slow = 2 g l/(R² psidot0), the gyroscope's
+  // precession, not a form in cos(theta0) that is 0 (and the fast root is gone).
+  if (sym::is_identically_zero(ex(GiNaC::cos(theta)).subs(t.exact.at))) {
+    for (const auto& name : t.table.names()) {
+      if (theta.has(t.table.at(name))) held.push_back(name);  // the judge holds them there
+    }
+    theta = GiNaC::Pi / 2;
+    written_in.push_back("θ0 = 90°");
   }
   if (!(start.theta >= 0.0 && start.theta <= M_PI)) {
     throw InputError(fmt::format("motion.theta0: {:.10g} rad must lie in [0, pi]", start.theta));
@@ -252,16 +262,47 @@ void add_fast_top_approximation(const Top& t, bool slow, Answer& answer) {
   const double exact = answer.value.data.at(0);
   const double off_percent = 100 * (approximate - exact) / exact;
   const std::string formula = slow ? "M g l / (I3 ω3)" : "I3 ω3 / (I1 cos θ)";
-  answer.notes.push_back(fmt::format(
-      "The {} precession: for a fast top ≈ {}, {}; here that is {:.4g} rad/s, {:.3g}% {} the "
-      "exact root.",
-      slow ? "slow" : "fast", formula, slow ? "independent of θ" : "nearly the free nutation",
-      approximate, std::abs(off_percent), off_percent < 0 ? "below" : "above"));
+  // A horizontal axle makes the slow root's equation linear: the approximation is the root.
+  constexpr double kSameRootPercent = 1e-9;
+  const std::string how_far = std::abs(off_percent) < kSameRootPercent
+                                  ? std::string("the exact root itself")
+                                  : fmt::format("{:.3g}% {} the exact root", std::abs(off_percent),
+                                                off_percent < 0 ? "below" : "above");
+  answer.notes.push_back(
+      fmt::format("The {} precession: for a fast top ≈ {}, {}; here that is "
+                  "{:.4g} rad/s, {}.",
+                  slow ? "slow" : "fast", formula,
+                  slow ? "independent of θ" : "nearly the free nutation", approximate, how_far));
   answer.approximations.push_back(
       {"the fast-top approximation " + formula,
        fmt::format("the {} rate is the root of I1 cos θ φ̇² − I3 ω3 φ̇ + M g l = 0 {} zero",
                    slow ? "slow" : "fast", slow ? "nearer" : "farther from"),
        {approximate}});
+}
+
+// How far the double route to a steady precession rate moves with the rounding of its inputs
+// where it is ill-conditioned (rad/s): near a horizontal axle the fast root ~ 1/cos θ0 takes
+// the rounding of θ0 (typed 1.5707963 or 89.9999999deg) amplified by tan θ0, and near the
+// least spin for steady precession the root of D = (I3 ω3)² − 4 I1 M g l cos θ0 takes D's
+// rounding amplified by 1/sqrt(D). Central differences would step across the pole at
+// cos θ0 = 0; these are the first-order terms, by hand.
+double steady_rate_sensitivity(const Top& t, bool slow) {
+  const HeavyTop& n = t.numeric;
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double theta = t.start.theta, c = std::cos(theta), s = std::sin(theta);
+  const double Mgl = n.M_kg * n.g_m_s2 * n.l_m, p = n.I3_kgm2 * t.constants.w3;
+  const double four_I1_Mgl_c = 4 * n.I1_kgm2 * Mgl * c;
+  const double root = std::sqrt(p * p - four_I1_Mgl_c);
+  const double sign = t.constants.w3 >= 0 ? 1.0 : -1.0;
+  const double q = p + sign * root;
+  // rate(q, c): slow = 2 M g l / q, fast = q / (2 I1 c); q(c) = p + sgn(ω3) sqrt(D(c)).
+  const double drate_dq = slow ? -2 * Mgl / (q * q) : 1 / (2 * n.I1_kgm2 * c);
+  const double dq_dD = sign / (2 * root);
+  const double dq_dc = dq_dD * (-4 * n.I1_kgm2 * Mgl);
+  const double drate_dc = drate_dq * dq_dc + (slow ? 0.0 : -q / (2 * n.I1_kgm2 * c * c));
+  const double from_theta = std::abs(drate_dc * s * theta) * eps;
+  const double from_D = std::abs(drate_dq * dq_dD) * (p * p + std::abs(four_I1_Mgl_c)) * eps;
+  return from_theta + from_D;
 }
 
 Computed steady(const Top& t, const std::string& q) {
@@ -285,8 +326,23 @@ Computed steady(const Top& t, const std::string& q) {
     return none;
   }
   const ex root = GiNaC::sqrt(sym::tidy(p * p - 4 * t.I1 * Mgl * c));
-  const ex qq = t.constants.w3 >= 0 ? p + root : p - root;
+  // cos θ is 0 in the forms of a horizontal axle (Top writes θ0 = π/2 in): the root is |p|,
+  // and q = p + sgn(ω3) |p| = 2p.
+  const bool horizontal = c.is_zero();
+  const ex qq = horizontal ? 2 * p : t.constants.w3 >= 0 ? p + root : p - root;
   const bool slow = q == "phidot_slow";
+  if (!slow && horizontal) {
+    // A horizontal axle: the equation is linear in φ̇, its one root the slow (gyroscope's)
+    // precession; the fast root has run off to infinity.
+    Computed none;
+    none.exists = false;
+    none.steps.push_back(
+        {"θ0 = 90°: the axle is horizontal, so I1 cos θ φ̇² vanishes and the one steady "
+         "precession is φ̇ = M g l/(I3 ω3) (the gyroscope's); the fast one has run off to "
+         "infinity.",
+         ""});
+    return none;
+  }
   Computed out{exact_scalar(q, slow ? 2 * Mgl / qq : qq / (2 * t.I1 * c), "rad/s", t.exact),
                {{"θ̈ = 0 at fixed θ with ω3 fixed: I1 cos θ φ̇² − I3 ω3 φ̇ + M g l = 0; the roots as "
                  "2Mgl/q and q/(2 I1 cos θ), q = I3 ω3 + sqrt((I3 ω3)² − 4 I1 M g l cos θ) (no "
@@ -294,7 +350,10 @@ Computed steady(const Top& t, const std::string& q) {
                  "I_1\\cos\\theta\\,\\dot\\phi^2 - I_3\\omega_3\\,\\dot\\phi + Mgl = 0",
                  "Steady precession:"}}};
   const double want = slow ? rates->slow : rates->fast;
-  if (std::isfinite(want)) check_routes_agree(out.answer.value.data[0], want, want, kRouteUlps, q);
+  if (std::isfinite(want)) {
+    const double moved = steady_rate_sensitivity(t, slow);
+    check_routes_agree(out.answer.value.data[0], want, want, kRouteUlps, q, moved);
+  }
   add_fast_top_approximation(t, slow, out.answer);
   return out;
 }
@@ -404,15 +463,23 @@ const std::vector<QuantityRow<const Top>>& rows() {
   return r;
 }
 
+// "a", "a and b", "a, b and c".
+std::string listed(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    out += (i == 0 ? "" : i + 1 == items.size() ? " and " : ", ") + items[i];
+  }
+  return out;
+}
+
 // Every answer of a top whose rates are zero says so first: the forms are written without them.
 Computed quantity(const Top& t, const std::string& q) {
   Computed out = compute_quantity(rows(), t, q);
-  if (!t.zero_rates.empty()) {
-    out.steps.insert(
-        out.steps.begin(),
-        {fmt::format("At these values {}: the exact forms are written with {}.",
-                     fmt::join(t.zero_rates, " and "), t.zero_rates.size() == 1 ? "it" : "them"),
-         ""});
+  if (!t.written_in.empty()) {
+    out.steps.insert(out.steps.begin(),
+                     {fmt::format("At these values {}: the exact forms are written with {}.",
+                                  listed(t.written_in), t.written_in.size() == 1 ? "it" : "them"),
+                      ""});
   }
   return out;
 }
@@ -420,7 +487,9 @@ Computed quantity(const Top& t, const std::string& q) {
 
 Key solve_heavy_top(const Problem& problem, const sym::Values& values) {
   const Top t(problem, values);
-  return assemble_parts(problem, [&](const std::string& q) { return quantity(t, q); });
+  Key key = assemble_parts(problem, [&](const std::string& q) { return quantity(t, q); });
+  key.held = t.held;
+  return key;
 }
 
 SolverInfo heavy_top_solver() {

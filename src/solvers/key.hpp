@@ -151,6 +151,9 @@ struct Key {
   std::string figure;           ///< a sketch drawn beside the key (a LaTeX key includes it)
   std::vector<std::string> notes;  ///< conventions and choices, printed with every key
   std::vector<ParameterValue> parameters;
+  /// Parameters whose set values the exact forms are written with, as a zero rate is (a heavy
+  /// top's θ0 = 90°: cos θ0 is 0 in its forms): an expression is judged with them held there.
+  std::vector<std::string> held;
   std::vector<PartKey> parts;
 };
 

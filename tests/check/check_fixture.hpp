@@ -2,10 +2,11 @@
 // A problem solved at its defaults, with its symbols, for judging answers against its key.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "check/judge.hpp"
-#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
+#include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
 
 namespace wobble::test {
@@ -15,9 +16,10 @@ struct CheckFixture {
   sym::Values values;
   Key key;
   sym::SymbolTable table;
-  explicit CheckFixture(const std::string& id)
+  /// At the defaults, or with `sets` as `--set` gives them ("theta0=90deg").
+  explicit CheckFixture(const std::string& id, const std::vector<std::string>& sets = {})
       : problem(find_problem(id)),
-        values(parameter_values(problem, {})),
+        values(parameter_values(problem, sets)),
         key(solve(problem, values)),
         table(problem.symbol_table()) {}
   const Answer& answer(const std::string& name) const {

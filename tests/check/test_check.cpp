@@ -413,6 +413,25 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
                       Catch::Contains("'m' is one of the problem's symbols, not a function"));
 }
 
+TEST_CASE("a key written with a parameter's value holds it there: the general form is right") {
+  // At θ0 = 90° the heavy top's forms have cos θ0 = 0 written in (2 g l/(R² ψ̇0)): the lecture's
+  // general form in cos(theta0) is right at this tilt, and so is the gyroscope's, without it.
+  const Fixture horizontal("heavy-top", {"theta0=90deg"});
+  REQUIRE(horizontal.key.held == std::vector<std::string>{"theta0"});
+  for (const std::string same :
+       {"2*M*g*l/(M R^2/2*psidot0 + sqrt((M R^2/2)^2 psidot0^2 - 4 (M R^2/4 + M l^2) M g l "
+        "cos(theta0)))",
+        "M g l/(M R^2/2 psidot0)", "2 g l/(R^2 ψ̇0) sin(θ0)"}) {
+    INFO(same);
+    REQUIRE(horizontal.check("phidot_slow", same).correct);
+  }
+  REQUIRE_FALSE(horizontal.check("phidot_slow", "g l/(R^2 psidot0)").correct);
+  // At 30° nothing is held: the gyroscope's form is right nowhere but at 90°.
+  const Fixture tilted("heavy-top");
+  REQUIRE(tilted.key.held.empty());
+  REQUIRE_FALSE(tilted.check("phidot_slow", "M g l/(M R^2/2 psidot0)").correct);
+}
+
 TEST_CASE("components along unit vectors read as a vector") {
   const Fixture plate("flying-plate");
   const std::vector<double>& key = plate.answer("L0_body").value.data;  // (x, 0, z)

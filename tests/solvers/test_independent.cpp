@@ -2,12 +2,14 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 
-#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
+#include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
 
 using namespace wobble;
@@ -304,4 +306,51 @@ TEST_CASE("heavy-top: too slow to precess steadily, part d says so and has no an
   const double need = 2 * std::sqrt(I1 * M * g * l * std::cos(M_PI / 6)) / I3;
   REQUIRE_THAT(d.steps.back().text,
                Catch::Contains("No steady precession") && Catch::Contains(format_number(need)));
+}
+
+TEST_CASE("heavy-top: a horizontal axle has the gyroscope's one precession, without cos theta0") {
+  const Key key = solve_with("heavy-top", {"theta0=90deg"});
+  const double M = 0.5, R = 0.05, l = 0.08, g = 9.81, psidot = 150;
+  const double I3 = M * R * R / 2;
+  const PartKey& d = key.parts.at(3);
+  REQUIRE(d.absent == std::vector<std::string>{"phidot_fast"});
+  REQUIRE_THAT(d.steps.back().text, Catch::Contains("horizontal"));
+  const Answer& slow = answer(key, "phidot_slow");
+  // M g l/(I3 ψ̇0): three roundings in each route.
+  REQUIRE_THAT(slow.value.data.at(0),
+               Catch::Matchers::WithinRel(M * g * l / (I3 * psidot), 4 * kEps));
+  REQUIRE_THAT(slow.symbolic, !Catch::Contains("theta0"));
+  REQUIRE_THAT(slow.notes.at(0), Catch::Contains("the exact root itself"));
+  REQUIRE(key.held == std::vector<std::string>{"theta0"});
+}
+
+TEST_CASE("heavy-top: a nearly horizontal axle's fast precession against 50 digits") {
+  // The fast root q/(2 I1 cos θ0) grows as 1/cos θ0 near 90°, where a double route takes the
+  // rounding of θ0 amplified by tan θ0. A tilt typed as a decimal in radians is exact in the
+  // key; one in degrees (not a simple fraction of π) reaches it as its double in radians.
+  using mp = boost::multiprecision::cpp_bin_float_50;
+  const mp M("0.5"), R("0.05"), l("0.08"), g("9.81"), psidot("150");
+  const mp I1 = M * R * R / 4 + M * l * l, I3 = M * R * R / 2, p = I3 * psidot;
+  const mp deg = boost::math::constants::pi<mp>() / 180;
+  struct Tilt {
+    std::string typed;
+    mp theta;
+    bool exact;  // radians: the decimal itself
+  };
+  const std::vector<Tilt> tilts{{"1.5707963", mp("1.5707963"), true},
+                                {"1.57079632679", mp("1.57079632679"), true},
+                                {"89.9999999deg", mp("89.9999999") * deg, false},
+                                {"90.0000001deg", mp("90.0000001") * deg, false}};
+  for (const auto& [typed, theta, exact] : tilts) {
+    INFO(typed);
+    const mp c = cos(theta);
+    const mp fast = (p + sqrt(p * p - 4 * I1 * M * g * l * c)) / (2 * I1 * c);
+    const Key key = solve_with("heavy-top", {"theta0=" + typed});
+    // Exact: the route's rounding to double and its few operations after. In degrees: θ0's
+    // rounding to double (eps/2 relative) times d ln(fast)/d ln θ0 = θ0 tan θ0.
+    const double theta_d = static_cast<double>(theta);
+    const double tolerance = exact ? 4 * kEps : kEps * std::abs(theta_d * std::tan(theta_d));
+    REQUIRE_THAT(answer(key, "phidot_fast").value.data.at(0),
+                 Catch::Matchers::WithinRel(static_cast<double>(fast), tolerance));
+  }
 }
