@@ -92,13 +92,16 @@ const Answer& find_answer(const Key& key, const std::string& part_id, const std:
     throw AnswerNotFound(
         fmt::format("{}: part {} has several answers; name one ({})", name_field, part->id, names));
   }
-  const bool absent =
-      std::find(part->absent.begin(), part->absent.end(), name) != part->absent.end();
-  throw AnswerNotFound(absent ? fmt::format("{}: {} does not exist at these values (part {}; the "
-                                            "key says why)",
-                                            name_field, name, part->id)
-                              : fmt::format("{}: part {} has no answer '{}' (answers: {})",
-                                            name_field, part->id, shown(name), names));
+  const auto absent = std::find(part->absent.begin(), part->absent.end(), name);
+  if (absent != part->absent.end()) {
+    const auto i = static_cast<std::size_t>(absent - part->absent.begin());
+    const std::string why = i < part->absent_why.size() ? part->absent_why[i] : "";
+    throw AnswerNotFound(fmt::format("{}: {} does not exist at these values (part {}){}",
+                                     name_field, name, part->id,
+                                     why.empty() ? "; the key says why" : ": " + why));
+  }
+  throw AnswerNotFound(fmt::format("{}: part {} has no answer '{}' (answers: {})", name_field,
+                                   part->id, shown(name), names));
 }
 
 const char* kind_name(AnswerKind k) {

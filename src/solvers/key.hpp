@@ -126,6 +126,8 @@ struct PartKey {
   /// Answers the problem asks for that do not exist at these values (no steady precession of a
   /// too slow top): left out of `answers`, a step says why.
   std::vector<std::string> absent;
+  /// For each absent answer, the text of the step that says why ("" where none does).
+  std::vector<std::string> absent_why;
 };
 
 /// Appends `steps` to the part, skipping any whose text the part already has (two answers of a

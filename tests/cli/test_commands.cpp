@@ -231,6 +231,13 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
       {"check", "heavy-top", "--name", "phidot_slow", "--set", "psidot0=10", "--answer", "1"});
   REQUIRE(absent.exit_code == 2);
   REQUIRE_THAT(absent.err, Catch::Contains("part d of heavy-top has nothing to check"));
+  // One absent beside others (a horizontal axle has no fast precession): the line says why.
+  const RunResult horizontal = run_wobble(
+      {"check", "heavy-top", "--name", "phidot_fast", "--set", "theta0=90deg", "--answer", "1"});
+  REQUIRE(horizontal.exit_code == 2);
+  REQUIRE_THAT(horizontal.err,
+               Catch::Contains("phidot_fast does not exist at these values (part d): θ0 = 90°: "
+                               "the axle is horizontal"));
   const RunResult neither = run_wobble({"check", "flying-plate", "--answer", "1"});
   REQUIRE(neither.exit_code == 2);
   // Neither a part nor a name: the line says how, with this problem's answers by part.
@@ -449,6 +456,15 @@ TEST_CASE("worksheet driven end to end by piped input: feedback, hint, reveal, s
                           Catch::Contains("\"[0.5,\": it is not a complete expression") &&
                           Catch::Contains("a '(' is not closed") &&
                           Catch::Contains("correct: center_of_mass"));
+  // A part whose question asks for an answer that does not exist here says so, then asks for
+  // the others.
+  const RunResult h = run_shell("printf 's\\ns\\ns\\nM g l/(M R^2/2 psidot0)\\n' | " + exe +
+                                " worksheet heavy-top --set theta0=90deg");
+  INFO(h.out << h.err);
+  REQUIRE(h.exit_code == 0);
+  REQUIRE_THAT(h.out, Catch::Contains("  phidot_fast does not exist at these values: θ0 = 90°: "
+                                      "the axle is horizontal") &&
+                          Catch::Contains("correct: phidot_slow"));
   // End of input at once: no wait, a summary.
   const RunResult c = run_shell(exe + " worksheet flying-plate < /dev/null");
   REQUIRE(c.exit_code == 0);

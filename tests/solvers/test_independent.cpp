@@ -315,6 +315,7 @@ TEST_CASE("heavy-top: a horizontal axle has the gyroscope's one precession, with
   const PartKey& d = key.parts.at(3);
   REQUIRE(d.absent == std::vector<std::string>{"phidot_fast"});
   REQUIRE_THAT(d.steps.back().text, Catch::Contains("horizontal"));
+  REQUIRE_THAT(d.absent_why.at(0), Catch::StartsWith("θ0 = 90°: the axle is horizontal"));
   const Answer& slow = answer(key, "phidot_slow");
   // M g l/(I3 ψ̇0): three roundings in each route.
   REQUIRE_THAT(slow.value.data.at(0),
