@@ -483,36 +483,46 @@ bool is_one_name(const std::string& side) {
   });
 }
 
+// What a side squared gives: the root as the reader takes it, or, for a value whose unit has an
+// odd power ("λ² = 83.38 1/s"), no root and that unit: no square is in it.
+struct SquaredLabel {
+  std::string root;
+  std::optional<Unit> odd_unit;
+};
+
 // "λ² = 83.38 s⁻²", "rate^2 = 83.38": a side that is one name squared, a label of the student's
 // (no symbol of the problem) or the answer's own name, gives the square of a scalar answer. Its
-// square root as the reader takes it, the unit's powers halved ("s^-2" -> "s^-1"); "" for any
-// other side, a unit with an odd power, or a label that names a key's answer ("k² = .." is k2).
-std::string root_of_squared_label(const std::string& label, const std::string& value,
-                                  const Context& ctx, const Answer& a) {
-  if (a.value.shape != Value::Shape::scalar) return "";
+// square root as the reader takes it, the unit's powers halved ("s^-2" -> "s^-1"); nothing for
+// any other side or a label that names a key's answer ("k² = .." is k2).
+std::optional<SquaredLabel> root_of_squared_label(const std::string& label,
+                                                  const std::string& value, const Context& ctx,
+                                                  const Answer& a) {
+  if (a.value.shape != Value::Shape::scalar) return std::nullopt;
   const std::string s = trim(sym::to_ascii(label));
-  if (s.size() < 3 || s.compare(s.size() - 2, 2, "^2") != 0) return "";
+  if (s.size() < 3 || s.compare(s.size() - 2, 2, "^2") != 0) return std::nullopt;
   const std::string base = trim(s.substr(0, s.size() - 2));
-  if (!is_one_name(base)) return "";
+  if (!is_one_name(base)) return std::nullopt;
   const bool own_name = name_spelling(base) == name_spelling(a.name);
-  if (!own_name && (ctx.table.contains(base) || name_in_key(ctx.key, s) != s)) return "";
+  if (!own_name && (ctx.table.contains(base) || name_in_key(ctx.key, s) != s)) return std::nullopt;
   const auto [number, unit_text] = split_value_unit(trim(sym::to_ascii(value)));
-  if (number.empty()) return "";
-  if (unit_text.empty()) return "sqrt(" + number + ")";
+  if (number.empty()) return std::nullopt;
+  if (unit_text.empty()) return SquaredLabel{"sqrt(" + number + ")", std::nullopt};
   Unit unit;
   try {
     unit = parse_unit(unit_text, kField);
   } catch (const InputError&) {
-    return "";
+    return std::nullopt;
   }
   static constexpr std::array<const char*, 3> kSiBase{"kg", "m", "s"};
   std::string si;
   for (std::size_t k = 0; k < unit.dim.size(); ++k) {
-    if (unit.dim[k] % 2 != 0) return "";
+    if (unit.dim[k] % 2 != 0) return SquaredLabel{"", unit};
     if (unit.dim[k] != 0)
       si += fmt::format("{}{}^{}", si.empty() ? "" : " ", kSiBase[k], unit.dim[k] / 2);
   }
-  return "sqrt((" + number + ")*(" + unit.to_si_exact + "))" + (si.empty() ? "" : " " + si);
+  return SquaredLabel{
+      "sqrt((" + number + ")*(" + unit.to_si_exact + "))" + (si.empty() ? "" : " " + si),
+      std::nullopt};
 }
 
 // Where the axes are in a matrix written as `text`: vectors listed one by one, "[1, 1, 0], [1,
@@ -674,6 +684,35 @@ Verdict judge_signs(const Context& ctx, const Answer& a, const SignReadings& sig
   throw InputError(fmt::format("{}: '±' gives two answers; type one: {}", kField, what));
 }
 
+// "λ² = 83.38 1/s": a square given in a unit no square has, most often the answer's own unit
+// written on its square. Wrong as written; the feedback says which unit the square is in, and
+// whether the number is right in it.
+Verdict square_in_odd_unit(const Context& ctx, const Answer& a, const std::string& label,
+                           const std::string& value, const Unit& unit, const Options& opt) {
+  Unit squared = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
+  for (int& power : squared.dim) power *= 2;
+  Verdict v;
+  v.line = "incorrect: the square of " + a.name + " has the wrong dimension";
+  v.feedback.push_back(fmt::format("you gave {} in {} ({}); the square of {} is in {} ({})", label,
+                                   unit.text, unit.dimension_words(), a.name,
+                                   a.unit.empty() ? "no unit" : "(" + a.unit + ")^2",
+                                   squared.dimension_words()));
+  const std::string number = split_value_unit(trim(sym::to_ascii(value))).first;
+  const std::string root = "sqrt(" + number + ")" + (a.unit.empty() ? "" : " " + a.unit);
+  const auto right = [&](const std::string& sign) {
+    try {
+      return judge_one(ctx, a, sign + root, opt).correct;
+    } catch (const InputError&) {  // "sqrt(-83.4)": no number of this square is right
+      return false;
+    }
+  };
+  if (right("") || right("-")) {
+    v.feedback.push_back(fmt::format("in {} the number would be right",
+                                     a.unit.empty() ? "no unit" : "(" + a.unit + ")^2"));
+  }
+  return v;
+}
+
 }  // namespace
 
 Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
@@ -708,9 +747,12 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
     return v;
   }
   // "λ² = 83.38 s⁻²": the square of the answer, as a rate is found from its square first.
-  if (const std::string root =
-          parts.size() == 2 ? root_of_squared_label(parts[0], parts[1], ctx, a) : std::string();
-      !root.empty()) {
+  if (const auto squared =
+          parts.size() == 2 ? root_of_squared_label(parts[0], parts[1], ctx, a) : std::nullopt) {
+    if (squared->odd_unit) {
+      return square_in_odd_unit(ctx, a, trim(parts[0]), parts[1], *squared->odd_unit, options);
+    }
+    const std::string& root = squared->root;
     Verdict v = judge_one(ctx, a, root, options);
     std::string sign;
     if (!v.correct) {  // the negative root, for an answer with a sign
@@ -753,6 +795,17 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
             "the side \"{}\" of your '=' is taken as a label, not judged: {} is no symbol here",
             trim(parts[0]), name));
         return label;
+      }
+      // "1.91 s = T/2", "7.63° = θ_L": the same label after the value, the value judged right
+      // (a wrong one returned above with its side named).
+      if (const std::string name = undefined_name(e.what());
+          k == 1 && parts.size() == 2 && (!name.empty() || is_one_name(parts[1]))) {
+        if (!is_one_name(parts[1])) {
+          first.feedback.push_back(fmt::format(
+              "the side \"{}\" of your '=' is taken as a label, not judged: {} is no symbol here",
+              trim(parts[1]), name));
+        }
+        return first;
       }
       throw;
     }

@@ -616,7 +616,7 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
 }
 
 TEST_CASE(
-    "a formula in names the problem lacks before '=' labels the value, and is said unjudged") {
+    "a formula in names the problem lacks beside '=' labels the value, and is said unjudged") {
   // The racket flips each half period: "T/2 = 1.91 s", T the student's own name for the period.
   const Fixture racket("tennis-racket");
   const auto right = racket.check("flip_interval", "T/2 = 1.91 s");
@@ -629,9 +629,21 @@ TEST_CASE(
   REQUIRE(wrong.feedback.size() == 2);
   REQUIRE_THAT(wrong.feedback[0], Catch::Contains("off by 31%"));
   REQUIRE_THAT(wrong.feedback[1], Catch::Contains("taken as a label"));
-  // Only before the '=': a value's unreadable side after it is refused, naming the name.
-  REQUIRE_THROWS_WITH(racket.check("flip_interval", "1.91 s = T/2"),
-                      Catch::Contains("undefined symbol 'T'"));
+  // After the value, the same: the value judged first, the label said unjudged.
+  const auto after = racket.check("flip_interval", "1.91 s = T/2");
+  REQUIRE(after.correct);
+  REQUIRE(after.feedback == std::vector<std::string>{"the side \"T/2\" of your '=' is taken as a "
+                                                     "label, not judged: T is no symbol here"});
+  const auto wrong_after = racket.check("flip_interval", "2.5 s = T/2");
+  REQUIRE_FALSE(wrong_after.correct);
+  REQUIRE_THAT(wrong_after.feedback[0], Catch::Equals("the side \"2.5 s\" of your '='"));
+  // A label of one name after the value, as before it, is no formula to note.
+  const auto named = racket.check("flip_interval", "1.91 s = t_flip");
+  REQUIRE(named.correct);
+  REQUIRE(named.feedback.empty());
+  // Neither side readable: the first side's error, naming the name.
+  REQUIRE_THROWS_WITH(racket.check("flip_interval", "T/2 = τ/2"),
+                      Catch::Contains("undefined symbol"));
   // A left side in the problem's symbols is judged as before: a wrong formula is wrong.
   REQUIRE_FALSE(racket.check("flip_interval", "m a = 1.91 s").correct);
 }
@@ -1314,6 +1326,34 @@ TEST_CASE("a name squared before the value gives the square of the answer, read 
   REQUIRE(top.check("k2", "k² = " + k2).correct);
   REQUIRE(top.check("k2", "k² = " + k2).feedback.empty());
   REQUIRE(top.check("k", "k² = " + k2).correct);
+}
+
+TEST_CASE("a square given in its root's unit is wrong, and says which unit the square is in") {
+  const Fixture racket("tennis-racket");
+  const Answer& rate = racket.answer("rate_axis2");
+  REQUIRE(rate.unit == "1/s");
+  const double square = rate.value.data.at(0) * rate.value.data.at(0);
+  const auto v = racket.check("rate_axis2", fmt::format("λ² = {:.6g} 1/s", square));
+  REQUIRE_FALSE(v.correct);
+  REQUIRE(v.line == "incorrect: the square of rate_axis2 has the wrong dimension");
+  REQUIRE(v.feedback ==
+          std::vector<std::string>{"you gave λ² in 1/s (1 / time); the square of rate_axis2 is "
+                                   "in (1/s)^2 (1 / time^2)",
+                                   "in (1/s)^2 the number would be right"});
+  // A wrong number as well: only the unit is named.
+  const auto both = racket.check("rate_axis2", fmt::format("λ² = {:.6g} 1/s", square * 1.1));
+  REQUIRE_FALSE(both.correct);
+  REQUIRE(both.feedback.size() == 1);
+  // Any unit no square has, and an answer with a sign: its negative root is found too.
+  const Fixture solid("rect-solid");
+  const double body = solid.answer("Omega_body_rate").value.data.at(0);
+  REQUIRE(body < 0);
+  const auto negative =
+      solid.check("Omega_body_rate", fmt::format("Ω_b² = {:.8g} kg", body * body));
+  REQUIRE_FALSE(negative.correct);
+  REQUIRE_THAT(negative.feedback.front(), Catch::StartsWith("you gave Ω_b² in kg (mass); "));
+  REQUIRE(negative.feedback.back() ==
+          "in (" + solid.answer("Omega_body_rate").unit + ")^2 the number would be right");
 }
 
 TEST_CASE("principal moments given as the diagonal tensor are read as its diagonal") {
