@@ -106,11 +106,7 @@ struct Session {
     }
     // An answer the question asks for that does not exist here (a horizontal top's fast
     // precession): said before the others are asked.
-    for (std::size_t i = 0; i < part.absent.size(); ++i) {
-      const std::string why = i < part.absent_why.size() ? part.absent_why[i] : "";
-      out << "  " << part.absent[i] << " does not exist at these values"
-          << (why.empty() ? std::string() : ": " + why) << "\n";
-    }
+    for (std::size_t i = 0; i < part.absent.size(); ++i) out << "  " << part.absent_line(i) << "\n";
     bool revealed = false, hint_shown = false;
     const auto give_hint = [&] {
       out << (hint.empty() ? "  no hint for this part; '!' reveals the answer\n"

@@ -95,10 +95,7 @@ const Answer& find_answer(const Key& key, const std::string& part_id, const std:
   const auto absent = std::find(part->absent.begin(), part->absent.end(), name);
   if (absent != part->absent.end()) {
     const auto i = static_cast<std::size_t>(absent - part->absent.begin());
-    const std::string why = i < part->absent_why.size() ? part->absent_why[i] : "";
-    throw AnswerNotFound(fmt::format("{}: {} does not exist at these values (part {}){}",
-                                     name_field, name, part->id,
-                                     why.empty() ? "; the key says why" : ": " + why));
+    throw AnswerNotFound(fmt::format("{}: {}", name_field, part->absent_line(i, true)));
   }
   throw AnswerNotFound(fmt::format("{}: part {} has no answer '{}' (answers: {})", name_field,
                                    part->id, shown(name), names));
@@ -143,6 +140,13 @@ const char* shape_name(Value::Shape s) {
     case Value::Shape::matrix: return "matrix";
   }
   return "?";
+}
+
+std::string PartKey::absent_line(std::size_t i, bool name_part) const {
+  const std::string why = i < absent_why.size() ? absent_why[i] : "";
+  return fmt::format("{}{} does not exist at these values{}", absent.at(i),
+                     name_part ? " (part " + id + ")" : "",
+                     why.empty() ? "; the key says why" : ": " + why);
 }
 
 void append_steps(PartKey& part, const std::vector<Step>& steps) {

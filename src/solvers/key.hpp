@@ -128,6 +128,11 @@ struct PartKey {
   std::vector<std::string> absent;
   /// For each absent answer, the text of the step that says why ("" where none does).
   std::vector<std::string> absent_why;
+
+  /// "phidot_fast does not exist at these values: θ0 = 90°: the axle is horizontal, ..": the
+  /// `i`-th absent answer as every surface names it, with its reason where there is one;
+  /// "phidot_fast (part d) does not .." with `name_part`, for a line outside the part's own.
+  std::string absent_line(std::size_t i, bool name_part = false) const;
 };
 
 /// Appends `steps` to the part, skipping any whose text the part already has (two answers of a

@@ -236,7 +236,7 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
       {"check", "heavy-top", "--name", "phidot_fast", "--set", "theta0=90deg", "--answer", "1"});
   REQUIRE(horizontal.exit_code == 2);
   REQUIRE_THAT(horizontal.err,
-               Catch::Contains("phidot_fast does not exist at these values (part d): θ0 = 90°: "
+               Catch::Contains("phidot_fast (part d) does not exist at these values: θ0 = 90°: "
                                "the axle is horizontal"));
   const RunResult neither = run_wobble({"check", "flying-plate", "--answer", "1"});
   REQUIRE(neither.exit_code == 2);
