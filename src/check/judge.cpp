@@ -16,6 +16,7 @@
 #include "check/axes_judge.hpp"
 #include "check/brackets.hpp"
 #include "check/diagnosis.hpp"
+#include "check/euler_equations.hpp"
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
@@ -730,6 +731,15 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
       without_math_delimiters(without_remark(without_comments(text), known_word))));
   // "±9.131 1/s", "(I3ω3 ± √(..))/(2 I1 cos θ)": the roots of a quadratic, two answers.
   if (const auto signs = sign_readings(written)) return judge_signs(ctx, a, *signs, options);
+  // "dω₁/dt = -0.9651 ω₂ ω₃, ..": Euler's equations for their coefficients, as the question asks
+  // them written and the key's step prints them.
+  if (const auto coefficients = euler_equation_coefficients(written);
+      coefficients && a.value.shape == Value::Shape::vector && a.value.data.size() == 3) {
+    Verdict v = judge_one(ctx, a, *coefficients, options);
+    v.feedback.push_back("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = " +
+                         sym::to_unicode(*coefficients));
+    return v;
+  }
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
   // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows
   // of a list where one has a factor outside its bracket.

@@ -1356,6 +1356,67 @@ TEST_CASE("a square given in its root's unit is wrong, and says which unit the s
           "in (" + solid.answer("Omega_body_rate").unit + ")^2 the number would be right");
 }
 
+TEST_CASE("Euler's equations written out are read as their coefficients, as the key prints them") {
+  // The key's own step, over every problem that asks for the coefficients: pasted back, right.
+  int pasted = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.name != "euler_coefficients") continue;
+        for (const auto& step : part.steps) {
+          // As the key holds it (JSON); the terminal's dω₁/dt .. ω₂ ω₃ is pasted in cli_tests.
+          const auto at = step.text.find(": dw1/dt = ");
+          if (at == std::string::npos || step.text.find(" w2 w3") == std::string::npos) continue;
+          std::string equations = step.text.substr(at + 2);
+          if (equations.back() == '.') equations.pop_back();
+          INFO(p.id << ": " << equations);
+          const auto v = f.check(a.name, equations);
+          REQUIRE(v.correct);
+          REQUIRE_THAT(
+              v.feedback.back(),
+              Catch::StartsWith("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = ["));
+          ++pasted;
+        }
+      }
+    }
+  }
+  REQUIRE(pasted >= 2);  // the asymmetric top and the racket
+  const Fixture racket("tennis-racket");
+  const auto& c = racket.answer("euler_coefficients").value.data;
+  const auto n = [&](std::size_t i, double scale = 1.0) {
+    return fmt::format("{:.6g}", c.at(i) * scale);
+  };
+  // In any order, spelt as hands and keyboards write the derivative, the products run together.
+  for (const std::string& written :
+       {"dw1/dt = " + n(0) + " w2 w3; dw2/dt = " + n(1) + " w3 w1; dw3/dt = " + n(2) + " w1 w2",
+        "ω̇₂ = " + n(1) + " ω₃ω₁, ω̇₁ = " + n(0) + " ω₂ ω₃, ω̇₃ = " + n(2) + " ω₁·ω₂",
+        "omega1' = " + n(0) + "*omega_2*omega_3\nomega2' = " + n(1) +
+            "*omega_3*omega_1\nomega3' = " + n(2) + "*omega_1*omega_2",
+        std::string("dω₁/dt = (c² − b²)/(b² + c²) ω₂ ω₃, dω₂/dt = (a² − c²)/(a² + c²) ω₃ ω₁, "
+                    "dω₃/dt = (b² − a²)/(a² + b²) ω₁ ω₂")}) {
+    INFO(written);
+    REQUIRE(racket.check("euler_coefficients", written).correct);
+  }
+  // A wrong coefficient is judged wrong, the reading said.
+  const auto wrong =
+      racket.check("euler_coefficients", "dω₁/dt = " + n(0) + " ω₂ ω₃, dω₂/dt = " + n(1, 2.0) +
+                                             " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂");
+  REQUIRE_FALSE(wrong.correct);
+  REQUIRE_THAT(
+      wrong.feedback.back(),
+      Catch::StartsWith("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = ["));
+  // The wrong pair of components is no such equation: ω₁ is no symbol of the problem.
+  REQUIRE_THROWS_AS(
+      racket.check("euler_coefficients", "dω₁/dt = " + n(0) + " ω₁ ω₃, dω₂/dt = " + n(1) +
+                                             " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂"),
+      InputError);
+  // The same equations for dω/dt at t = 0 (values, not coefficients) are read so, and wrong.
+  const auto rates = racket.check("dw_dt0", "dω₁/dt = " + n(0) + " ω₂ ω₃, dω₂/dt = " + n(1) +
+                                                " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂");
+  REQUIRE_FALSE(rates.correct);
+}
+
 TEST_CASE("principal moments given as the diagonal tensor are read as its diagonal") {
   int judged = 0;
   for (const auto& p : load_catalog()) {

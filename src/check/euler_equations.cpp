@@ -1,0 +1,93 @@
+#include "check/euler_equations.hpp"
+
+#include <array>
+#include <cctype>
+#include <regex>
+
+#include "check/brackets.hpp"
+#include "core/characters.hpp"
+#include "symbolic/unicode_notation.hpp"
+
+namespace wobble::check {
+
+namespace {
+
+// The component a written derivative is of, 1 to 3, or 0: "domega1/dt", "dw_1/dt",
+// "d(omega1)/dt", "omegadot1", "omega1dot", "omega1'", "w1'".
+int derivative_of(const std::string& side) {
+  std::string s;
+  for (char c : sym::to_ascii(side)) {
+    if (c != ' ' && c != '_' && c != '(' && c != ')' && c != '{' && c != '}' && c != '*') s += c;
+  }
+  static const std::regex kForms(
+      R"(^(?:d(?:omega|w)([123])/dt|(?:omega|w)dot([123])|(?:omega|w)([123])(?:dot|'))$)");
+  std::smatch m;
+  if (!std::regex_match(s, m, kForms)) return 0;
+  for (std::size_t g = 1; g < m.size(); ++g) {
+    if (m[g].matched) return m[g].str()[0] - '0';
+  }
+  return 0;
+}
+
+// The component a factor is, 1 to 3, or 0: "omega2", "omega_2", "w2".
+int component(const std::string& factor) {
+  static const std::regex kComponent(R"(^(?:omega|w)_?([123])$)");
+  std::smatch m;
+  return std::regex_match(factor, m, kComponent) ? m[1].str()[0] - '0' : 0;
+}
+
+// The coefficient of ω_j ω_k in `side` ("-0.9651 omega2 omega3" -> "-0.9651"), or "" where the
+// side is no coefficient times exactly those two components.
+std::string coefficient(const std::string& side, int j, int k) {
+  // "omega2omega3", "2w2w3": components run together are parted first.
+  const std::string ascii = std::regex_replace(sym::to_ascii(side),
+                                               std::regex(R"(([0-9])(omega|w))"), "$1 $2");
+  bool negative = false;
+  std::vector<std::string> rest;
+  std::array<int, 4> seen{};
+  for (const auto& word : space_separated_entries(ascii)) {
+    for (std::string factor : top_level(word, '*')) {
+      if (factor.empty()) return "";
+      if (factor[0] == '-' || factor[0] == '+') {
+        negative ^= factor[0] == '-';
+        factor = trim(factor.substr(1));
+      }
+      if (const int c = component(factor); c != 0) {
+        ++seen.at(c);
+      } else if (!factor.empty()) {
+        rest.push_back(factor);
+      }
+    }
+  }
+  std::array<int, 4> want{};
+  want.at(j) = want.at(k) = 1;
+  if (seen != want) return "";
+  std::string c = negative ? "-" : "";
+  if (rest.empty()) return c + "1";
+  for (std::size_t i = 0; i < rest.size(); ++i) c += (i ? "*" : "") + rest[i];
+  return c;
+}
+
+}  // namespace
+
+std::optional<std::string> euler_equation_coefficients(const std::string& typed) {
+  std::vector<std::string> items;
+  for (const char sep : {',', ';', '\n'}) {
+    items = top_level(typed, sep);
+    if (items.size() == 3) break;
+  }
+  if (items.size() != 3) return std::nullopt;
+  std::array<std::string, 3> coefficients;
+  for (const auto& item : items) {
+    const std::vector<std::string> sides = top_level(item, '=');
+    if (sides.size() != 2) return std::nullopt;
+    const int i = derivative_of(sides[0]);
+    if (i == 0 || !coefficients.at(i - 1).empty()) return std::nullopt;
+    const std::string c = coefficient(sides[1], i % 3 + 1, (i + 1) % 3 + 1);
+    if (c.empty()) return std::nullopt;
+    coefficients.at(i - 1) = c;
+  }
+  return "[" + coefficients[0] + ", " + coefficients[1] + ", " + coefficients[2] + "]";
+}
+
+}  // namespace wobble::check

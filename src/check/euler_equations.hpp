@@ -1,0 +1,20 @@
+#pragma once
+/// @file
+/// Euler's torque-free equations written out as the answer to "find the coefficients": the
+/// equations dω_i/dt = c_i ω_j ω_k, (i, j, k) a cyclic order of 1, 2, 3, read as the vector
+/// (c₁, c₂, c₃) a key gives. A student writes the equations a question shows, and the key's own
+/// step prints them so: "dω₁/dt = -0.965066 ω₂ ω₃, dω₂/dt = 0.99115 ω₃ ω₁, ...".
+#include <optional>
+#include <string>
+
+namespace wobble::check {
+
+/// "[-0.9651, 0.9912, -0.6]" for "dω₁/dt = -0.9651 ω₂ ω₃, dω₂/dt = 0.9912 ω₃ ω₁, dω₃/dt = -0.6
+/// ω₁ ω₂": three equations parted by ',', ';' or line breaks, in any order, each a derivative
+/// of one component of ω (dω₁/dt, ω̇₁, ω₁', in ASCII domega1/dt, dw1/dt, omega1dot, w1') equal
+/// to a coefficient times the other two components (ω₂ ω₃, ω₃·ω₂, w2*w3, a bare ω₂ω₃ for a
+/// coefficient 1, "-ω₂ ω₃" for -1). The coefficient may be any expression; it is left for the
+/// reader. nullopt for any other text.
+std::optional<std::string> euler_equation_coefficients(const std::string& typed);
+
+}  // namespace wobble::check
