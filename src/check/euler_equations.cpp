@@ -6,6 +6,7 @@
 
 #include "check/brackets.hpp"
 #include "core/characters.hpp"
+#include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"
 
 namespace wobble::check {
@@ -70,22 +71,32 @@ std::string coefficient(const std::string& side, int j, int k) {
 
 }  // namespace
 
-std::optional<std::string> euler_equation_coefficients(const std::string& typed) {
+std::optional<std::string> euler_equation_coefficients(const std::string& typed,
+                                                       const std::string& field) {
   std::vector<std::string> items;
   for (const char sep : {',', ';', '\n'}) {
     items = top_level(typed, sep);
-    if (items.size() == 3) break;
+    if (items.size() > 1) break;
   }
-  if (items.size() != 3) return std::nullopt;
+  if (items.empty() || items.size() > 3) return std::nullopt;
   std::array<std::string, 3> coefficients;
+  bool repeated = false;
   for (const auto& item : items) {
     const std::vector<std::string> sides = top_level(item, '=');
     if (sides.size() != 2) return std::nullopt;
     const int i = derivative_of(sides[0]);
-    if (i == 0 || !coefficients.at(i - 1).empty()) return std::nullopt;
+    if (i == 0) return std::nullopt;
     const std::string c = coefficient(sides[1], i % 3 + 1, (i + 1) % 3 + 1);
     if (c.empty()) return std::nullopt;
+    repeated = repeated || !coefficients.at(i - 1).empty();
     coefficients.at(i - 1) = c;
+  }
+  if (items.size() < 3 || repeated) {
+    throw InputError(field +
+                     ": Euler's equations: give one for each component, dω₁/dt = c₁ ω₂ "
+                     "ω₃, dω₂/dt = c₂ ω₃ ω₁, dω₃/dt = c₃ ω₁ ω₂ (" +
+                     std::to_string(items.size()) + " given" + (repeated ? ", one twice" : "") +
+                     ")");
   }
   return "[" + coefficients[0] + ", " + coefficients[1] + ", " + coefficients[2] + "]";
 }

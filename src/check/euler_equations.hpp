@@ -15,6 +15,9 @@ namespace wobble::check {
 /// to a coefficient times the other two components (ω₂ ω₃, ω₃·ω₂, w2*w3, a bare ω₂ω₃ for a
 /// coefficient 1, "-ω₂ ω₃" for -1). The coefficient may be any expression; it is left for the
 /// reader. nullopt for any other text.
-std::optional<std::string> euler_equation_coefficients(const std::string& typed);
+/// @throws InputError naming `field` for such equations that are not one for each component
+///   (two of them, or dω₁/dt twice): no vector of coefficients could be read from them.
+std::optional<std::string> euler_equation_coefficients(const std::string& typed,
+                                                       const std::string& field);
 
 }  // namespace wobble::check

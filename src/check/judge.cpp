@@ -733,12 +733,13 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   if (const auto signs = sign_readings(written)) return judge_signs(ctx, a, *signs, options);
   // "dω₁/dt = -0.9651 ω₂ ω₃, ..": Euler's equations for their coefficients, as the question asks
   // them written and the key's step prints them.
-  if (const auto coefficients = euler_equation_coefficients(written);
-      coefficients && a.value.shape == Value::Shape::vector && a.value.data.size() == 3) {
-    Verdict v = judge_one(ctx, a, *coefficients, options);
-    v.feedback.push_back("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = " +
-                         sym::to_unicode(*coefficients));
-    return v;
+  if (a.value.shape == Value::Shape::vector && a.value.data.size() == 3) {
+    if (const auto coefficients = euler_equation_coefficients(written, kField)) {
+      Verdict v = judge_one(ctx, a, *coefficients, options);
+      v.feedback.push_back("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = " +
+                           sym::to_unicode(*coefficients));
+      return v;
+    }
   }
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
   // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows

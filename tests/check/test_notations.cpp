@@ -1411,6 +1411,17 @@ TEST_CASE("Euler's equations written out are read as their coefficients, as the 
       racket.check("euler_coefficients", "dω₁/dt = " + n(0) + " ω₁ ω₃, dω₂/dt = " + n(1) +
                                              " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂"),
       InputError);
+  // Fewer than three, or one twice: no vector of coefficients, and the line says so.
+  REQUIRE_THROWS_WITH(racket.check("euler_coefficients",
+                                   "dω₁/dt = " + n(0) + " ω₂ ω₃, dω₂/dt = " + n(1) + " ω₃ ω₁"),
+                      Catch::Contains("Euler's equations: give one for each component") &&
+                          Catch::Contains("(2 given)"));
+  REQUIRE_THROWS_WITH(racket.check("euler_coefficients", "dω₁/dt = " + n(0) + " ω₂ ω₃"),
+                      Catch::Contains("(1 given)"));
+  REQUIRE_THROWS_WITH(
+      racket.check("euler_coefficients", "dω₁/dt = " + n(0) + " ω₂ ω₃, dω₁/dt = " + n(1) +
+                                             " ω₃ ω₂, dω₃/dt = " + n(2) + " ω₁ ω₂"),
+      Catch::Contains("(3 given, one twice)"));
   // The same equations for dω/dt at t = 0 (values, not coefficients) are read so, and wrong.
   const auto rates = racket.check("dw_dt0", "dω₁/dt = " + n(0) + " ω₂ ω₃, dω₂/dt = " + n(1) +
                                                 " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂");
