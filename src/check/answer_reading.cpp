@@ -846,9 +846,8 @@ ReadAnswer finished(ReadAnswer p, const std::string& unit, const std::string& fi
   return p;
 }
 
-// What ends a line without being part of the answer: MATLAB's ';' that keeps a value from
-// echoing ("0.00072;", "[1 0 0; 0 1 0];"), a sentence's full stop ("0.00072 kg m^2.",
-// "\frac{m R^2}{4}."). One full stop only: "0.333..." stays as typed (and is refused).
+}  // namespace
+
 std::string without_closing_punctuation(const std::string& typed) {
   std::string s = trim(typed);
   while (!s.empty() && s.back() == ';') s = trim(s.substr(0, s.size() - 1));
@@ -856,7 +855,6 @@ std::string without_closing_punctuation(const std::string& typed) {
     s = trim(s.substr(0, s.size() - 1));
   return s;
 }
-}  // namespace
 
 std::string reading_form(const std::string& typed) {
   check_bounds(typed, "answer");

@@ -63,6 +63,12 @@ struct ReadAnswer {
 /// number's exponent, "2e5", is none).
 std::vector<std::pair<std::size_t, std::size_t>> identifiers(const std::string& s);
 
+/// `typed` without what ends a line but is no part of the answer: MATLAB's ';' that keeps a value
+/// from echoing ("0.00072;", "[1 0 0; 0 1 0];"), a sentence's full stop ("0.00072 kg m^2.",
+/// "\frac{m R^2}{4}.", "ω₁ ω₂ ." as a PDF's text copies it). One full stop only: "0.333..."
+/// stays as typed (and is refused).
+std::string without_closing_punctuation(const std::string& typed);
+
 /// The answer in wobble's reading form, the unit still attached: "(1, 0, 0) rad/s" ->
 /// "[1, 0, 0] rad/s". Never throws; what it cannot rearrange it leaves for the parser.
 std::string reading_form(const std::string& typed);

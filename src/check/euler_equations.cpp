@@ -4,6 +4,7 @@
 #include <cctype>
 #include <regex>
 
+#include "check/answer_reading.hpp"
 #include "check/brackets.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
@@ -75,7 +76,7 @@ std::optional<std::string> euler_equation_coefficients(const std::string& typed,
                                                        const std::string& field) {
   std::vector<std::string> items;
   for (const char sep : {',', ';', '\n'}) {
-    items = top_level(typed, sep);
+    items = top_level(without_closing_punctuation(typed), sep);
     if (items.size() > 1) break;
   }
   if (items.empty() || items.size() > 3) return std::nullopt;

@@ -1393,6 +1393,9 @@ TEST_CASE("Euler's equations written out are read as their coefficients, as the 
         "ω̇₂ = " + n(1) + " ω₃ω₁, ω̇₁ = " + n(0) + " ω₂ ω₃, ω̇₃ = " + n(2) + " ω₁·ω₂",
         "omega1' = " + n(0) + "*omega_2*omega_3\nomega2' = " + n(1) +
             "*omega_3*omega_1\nomega3' = " + n(2) + "*omega_1*omega_2",
+        // As a PDF of the LaTeX key copies its step: spaces before '/', ',' and the full stop.
+        "dω1 /dt = " + n(0) + " ω2 ω3 , dω2 /dt = " + n(1) + " ω3 ω1 , dω3 /dt = " + n(2) +
+            " ω1 ω2 .",
         std::string("dω₁/dt = (c² − b²)/(b² + c²) ω₂ ω₃, dω₂/dt = (a² − c²)/(a² + c²) ω₃ ω₁, "
                     "dω₃/dt = (b² − a²)/(a² + b²) ω₁ ω₂")}) {
     INFO(written);
