@@ -6,6 +6,7 @@
 
 #include "check/answer_reading.hpp"
 #include "check/brackets.hpp"
+#include "check/latex_answer.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -71,6 +72,34 @@ std::string coefficient(const std::string& side, int j, int k) {
 }
 
 }  // namespace
+
+std::string euler_equations_as_text(const std::string& typed, const sym::SymbolTable& table) {
+  if (!looks_like_latex(typed)) return typed;
+  sym::SymbolTable with_components = table;
+  for (const char i : {'1', '2', '3'}) {
+    for (const auto& [name, latex] :
+         {std::pair{std::string("omega") + i, std::string("\\omega_{") + i + "}"},
+          std::pair{std::string("omegadot") + i, std::string("\\dot{\\omega}_{") + i + "}"}}) {
+      if (!with_components.contains(name))
+        with_components.declare(name, latex, sym::SymbolSign::real);
+    }
+  }
+  // "\mathrm{d}\omega_{1}/\mathrm{d}t", as a LaTeX key sets the derivative in a line of text: the
+  // reader takes a derivative as a \frac or a dot, and d here for no symbol. Spaces bounded: an
+  // unbounded run recurses in std::regex, one frame a character.
+  static const std::regex kSlashed(
+      R"((?:\\mathrm\{d\}|\\text\{d\}|d) {0,3}\\omega_\{?([123])\}? {0,3}/ {0,3}(?:\\mathrm\{d\}|\\text\{d\}|d) {0,3}t)");
+  // "$\mathrm{d}\omega_{1}/\mathrm{d}t$ = $-$0.5 $\omega_2$ $\omega_3$, ..": the LaTeX key's
+  // source of its step, prose with math in it; without the dollars, one formula.
+  std::string math = typed;
+  std::erase(math, '$');
+  const std::string dotted = std::regex_replace(math, kSlashed, "\\dot{\\omega}_{$1}");
+  try {
+    return latex_as_text(dotted, with_components, "answer");
+  } catch (const InputError&) {
+    return typed;  // the reader proper says what it cannot read
+  }
+}
 
 std::optional<std::string> euler_equation_coefficients(const std::string& typed,
                                                        const std::string& field) {

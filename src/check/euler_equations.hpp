@@ -7,7 +7,17 @@
 #include <optional>
 #include <string>
 
+#include "symbolic/expression.hpp"
+
 namespace wobble::check {
+
+/// Equations in LaTeX, "\dot\omega_1 = -0.5\,\omega_2\omega_3, ..", in the plain text
+/// euler_equation_coefficients reads ("omegadot1 = -0.5*omega2*omega3, .."): read as any LaTeX
+/// answer is, with the body's components of ω and their derivatives known besides `table`'s
+/// symbols; the LaTeX key's source of its step, "$\mathrm{d}\omega_{1}/\mathrm{d}t$ = $-$0.5
+/// $\omega_2$ $\omega_3$, ..", as one formula. Any other text, LaTeX that does not read so
+/// included, as it is.
+std::string euler_equations_as_text(const std::string& typed, const sym::SymbolTable& table);
 
 /// "[-0.9651, 0.9912, -0.6]" for "dω₁/dt = -0.9651 ω₂ ω₃, dω₂/dt = 0.9912 ω₃ ω₁, dω₃/dt = -0.6
 /// ω₁ ω₂": three equations parted by ',', ';' or line breaks, in any order, each a derivative

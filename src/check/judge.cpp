@@ -734,7 +734,8 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // "dω₁/dt = -0.9651 ω₂ ω₃, ..": Euler's equations for their coefficients, as the question asks
   // them written and the key's step prints them.
   if (a.value.shape == Value::Shape::vector && a.value.data.size() == 3) {
-    if (const auto coefficients = euler_equation_coefficients(written, kField)) {
+    if (const auto coefficients =
+            euler_equation_coefficients(euler_equations_as_text(written, ctx.table), kField)) {
       Verdict v = judge_one(ctx, a, *coefficients, options);
       v.feedback.push_back("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = " +
                            sym::to_unicode(*coefficients));

@@ -1393,6 +1393,16 @@ TEST_CASE("Euler's equations written out are read as their coefficients, as the 
         "ω̇₂ = " + n(1) + " ω₃ω₁, ω̇₁ = " + n(0) + " ω₂ ω₃, ω̇₃ = " + n(2) + " ω₁·ω₂",
         "omega1' = " + n(0) + "*omega_2*omega_3\nomega2' = " + n(1) +
             "*omega_3*omega_1\nomega3' = " + n(2) + "*omega_1*omega_2",
+        // LaTeX, as a student types it and as a LaTeX key sets the derivative.
+        "\\dot\\omega_1 = " + n(0) + "\\,\\omega_2\\omega_3, \\dot\\omega_2 = " + n(1) +
+            "\\,\\omega_3\\omega_1, \\dot\\omega_3 = " + n(2) + "\\,\\omega_1\\omega_2",
+        "$\\frac{d\\omega_{1}}{dt} = " + n(0) +
+            "\\omega_{2}\\omega_{3},\\quad "
+            "\\mathrm{d}\\omega_{2}/\\mathrm{d}t = " +
+            n(1) +
+            "\\omega_{3}\\omega_{1},\\quad "
+            "\\dot{\\omega}_{3} = " +
+            n(2) + "\\omega_{1}\\omega_{2}$",
         // As a PDF of the LaTeX key copies its step: spaces before '/', ',' and the full stop.
         "dω1 /dt = " + n(0) + " ω2 ω3 , dω2 /dt = " + n(1) + " ω3 ω1 , dω3 /dt = " + n(2) +
             " ω1 ω2 .",

@@ -193,27 +193,34 @@ TEST_CASE("keys are byte-identical across processes and equal to the stored solu
   }
 }
 
-TEST_CASE("Euler's equations as the terminal key prints them are pasted back as the coefficients") {
+TEST_CASE(
+    "Euler's equations as the text and LaTeX keys print them are pasted back as the "
+    "coefficients") {
   for (const std::string id : {"asymmetric-top", "tennis-racket"}) {
-    const RunResult key = run_wobble({"solve", id, "--set", "a=0.4"});
-    INFO(id << ": " << key.err);
-    // tennis-racket has a, asymmetric-top is refused it: the key at the defaults then.
-    const RunResult printed = key.exit_code == 0 ? key : run_wobble({"solve", id});
-    REQUIRE(printed.exit_code == 0);
-    const std::string lead = "For these moments: ";
-    const auto at = printed.out.find(lead);
-    REQUIRE(at != std::string::npos);
-    std::string equations =
-        printed.out.substr(at + lead.size(), printed.out.find('\n', at) - at - lead.size());
-    REQUIRE_THAT(equations, Catch::StartsWith("dω₁/dt = ") && Catch::EndsWith("ω₁ ω₂."));
-    equations.pop_back();  // the sentence's full stop
-    std::vector<std::string> args{"check",    id,       "--name", "euler_coefficients",
-                                  "--answer", equations};
-    if (key.exit_code == 0) args.insert(args.end(), {"--set", "a=0.4"});
-    const RunResult judged = run_wobble(args);
-    INFO(equations << "\n" << judged.out << judged.err);
-    REQUIRE(judged.exit_code == 0);
-    REQUIRE_THAT(judged.out, Catch::Contains("read as the coefficients of Euler's equations"));
+    for (const std::string format : {"text", "latex"}) {
+      const RunResult key = run_wobble({"solve", id, "--format", format, "--set", "a=0.4"});
+      INFO(id << " " << format << ": " << key.err);
+      // tennis-racket has a, asymmetric-top is refused it: the key at the defaults then.
+      const RunResult printed =
+          key.exit_code == 0 ? key : run_wobble({"solve", id, "--format", format});
+      REQUIRE(printed.exit_code == 0);
+      const std::string lead = "For these moments: ";
+      const auto at = printed.out.find(lead);
+      REQUIRE(at != std::string::npos);
+      std::string equations =
+          printed.out.substr(at + lead.size(), printed.out.find('\n', at) - at - lead.size());
+      REQUIRE_THAT(equations, Catch::EndsWith("."));
+      REQUIRE_THAT(equations, format == "text" ? Catch::StartsWith("dω₁/dt = ")
+                                               : Catch::StartsWith("$\\mathrm{d}\\omega_{1}/"));
+      equations.pop_back();  // the sentence's full stop
+      std::vector<std::string> args{"check",    id,       "--name", "euler_coefficients",
+                                    "--answer", equations};
+      if (key.exit_code == 0) args.insert(args.end(), {"--set", "a=0.4"});
+      const RunResult judged = run_wobble(args);
+      INFO(equations << "\n" << judged.out << judged.err);
+      REQUIRE(judged.exit_code == 0);
+      REQUIRE_THAT(judged.out, Catch::Contains("read as the coefficients of Euler's equations"));
+    }
   }
 }
 
