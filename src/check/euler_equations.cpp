@@ -3,6 +3,7 @@
 #include <array>
 #include <cctype>
 #include <regex>
+#include <string_view>
 
 #include "check/answer_reading.hpp"
 #include "check/brackets.hpp"
@@ -39,6 +40,20 @@ int component(const std::string& factor) {
   return std::regex_match(factor, m, kComponent) ? m[1].str()[0] - '0' : 0;
 }
 
+// Whether `factor` adds or subtracts outside brackets ("a - b", not "(a - b)", "-a" or "9.9e-05"):
+// a sum beside the components multiplies only its last term ("a - b ω₂ ω₃" is a − b ω₂ ω₃).
+bool sum_outside_brackets(const std::string& factor) {
+  int depth = 0;
+  for (std::size_t i = 0; i < factor.size(); ++i) {
+    const char c = factor[i];
+    depth += opens(c) ? 1 : closes(c) ? -1 : 0;
+    if (depth == 0 && i > 0 && (c == '+' || c == '-') &&
+        std::string_view("eE^*/(").find(factor[i - 1]) == std::string_view::npos)
+      return true;
+  }
+  return false;
+}
+
 // The coefficient of ω_j ω_k in `side` ("-0.9651 omega2 omega3" -> "-0.9651"), or "" where the
 // side is no coefficient times exactly those two components.
 std::string coefficient(const std::string& side, int j, int k) {
@@ -57,6 +72,8 @@ std::string coefficient(const std::string& side, int j, int k) {
       }
       if (const int c = component(factor); c != 0) {
         ++seen.at(c);
+      } else if (sum_outside_brackets(factor)) {
+        return "";
       } else if (!factor.empty()) {
         rest.push_back(factor);
       }

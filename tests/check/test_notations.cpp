@@ -1424,6 +1424,16 @@ TEST_CASE("Euler's equations written out are read as their coefficients, as the 
       racket.check("euler_coefficients", "dω₁/dt = " + n(0) + " ω₁ ω₃, dω₂/dt = " + n(1) +
                                              " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂"),
       InputError);
+  // A sum beside the components multiplies only its last term: a − b ω₂ ω₃ is no coefficient
+  // times ω₂ ω₃, and is not read as one.
+  REQUIRE_THROWS_AS(racket.check("euler_coefficients", "dω₁/dt = 1 - 2 ω₂ ω₃, dω₂/dt = " + n(1) +
+                                                           " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂"),
+                    InputError);
+  REQUIRE(racket
+              .check("euler_coefficients", "dω₁/dt = (" + n(0, 2.0) + " + " + n(0, -1.0) +
+                                               ") ω₂ ω₃, dω₂/dt = " + n(1) +
+                                               " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂")
+              .correct);
   // Fewer than three, or one twice: no vector of coefficients, and the line says so.
   REQUIRE_THROWS_WITH(racket.check("euler_coefficients",
                                    "dω₁/dt = " + n(0) + " ω₂ ω₃, dω₂/dt = " + n(1) + " ω₃ ω₁"),
