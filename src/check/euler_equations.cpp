@@ -1,8 +1,9 @@
 #include "check/euler_equations.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
-#include <regex>
+#include <optional>
 #include <string_view>
 
 #include "check/answer_reading.hpp"
@@ -16,28 +17,56 @@ namespace wobble::check {
 
 namespace {
 
+// The rest of `s` after a name of ω, "omega" or "w"; nullopt where it starts with neither.
+std::optional<std::string_view> after_omega(std::string_view s) {
+  for (const std::string_view name : {"omega", "w"}) {
+    if (s.starts_with(name)) return s.substr(name.size());
+  }
+  return std::nullopt;
+}
+
+// A component's index, "1" to "3", as a number; 0 for anything else.
+int index_of(std::string_view s) {
+  return s.size() == 1 && s[0] >= '1' && s[0] <= '3' ? s[0] - '0' : 0;
+}
+
 // The component a written derivative is of, 1 to 3, or 0: "domega1/dt", "dw_1/dt",
-// "d(omega1)/dt", "omegadot1", "omega1dot", "omega1'", "w1'".
+// "d(omega1)/dt", "omegadot1", "omega1dot", "omega1'", "w1'". (No <regex>: GCC 12's does not
+// build warning-free under the sanitizers.)
 int derivative_of(const std::string& side) {
   std::string s;
   for (char c : sym::to_ascii(side)) {
     if (c != ' ' && c != '_' && c != '(' && c != ')' && c != '{' && c != '}' && c != '*') s += c;
   }
-  static const std::regex kForms(
-      R"(^(?:d(?:omega|w)([123])/dt|(?:omega|w)dot([123])|(?:omega|w)([123])(?:dot|'))$)");
-  std::smatch m;
-  if (!std::regex_match(s, m, kForms)) return 0;
-  for (std::size_t g = 1; g < m.size(); ++g) {
-    if (m[g].matched) return m[g].str()[0] - '0';
+  const std::string_view v = s;
+  if (v.size() > 4 && v.starts_with("d") && v.ends_with("/dt")) {
+    const auto rest = after_omega(v.substr(1, v.size() - 4));
+    return rest ? index_of(*rest) : 0;
   }
-  return 0;
+  const auto rest = after_omega(v);
+  if (!rest) return 0;
+  if (rest->starts_with("dot")) return index_of(rest->substr(3));
+  const std::string_view after = rest->substr(std::min<std::size_t>(1, rest->size()));
+  return after == "dot" || after == "'" ? index_of(rest->substr(0, 1)) : 0;
 }
 
 // The component a factor is, 1 to 3, or 0: "omega2", "omega_2", "w2".
 int component(const std::string& factor) {
-  static const std::regex kComponent(R"(^(?:omega|w)_?([123])$)");
-  std::smatch m;
-  return std::regex_match(factor, m, kComponent) ? m[1].str()[0] - '0' : 0;
+  const auto rest = after_omega(factor);
+  if (!rest) return 0;
+  return index_of(rest->starts_with("_") ? rest->substr(1) : *rest);
+}
+
+// "omega2omega3" -> "omega2 omega3", "2w2w3" -> "2 w2 w3": components run together, parted.
+std::string components_parted(const std::string& ascii) {
+  std::string out;
+  for (std::size_t i = 0; i < ascii.size(); ++i) {
+    if (i > 0 && std::isdigit(static_cast<unsigned char>(ascii[i - 1])) &&
+        after_omega(std::string_view(ascii).substr(i)))
+      out += ' ';
+    out += ascii[i];
+  }
+  return out;
 }
 
 // Whether `factor` adds or subtracts outside brackets ("a - b", not "(a - b)", "-a" or "9.9e-05"):
@@ -57,9 +86,7 @@ bool sum_outside_brackets(const std::string& factor) {
 // The coefficient of ω_j ω_k in `side` ("-0.9651 omega2 omega3" -> "-0.9651"), or "" where the
 // side is no coefficient times exactly those two components.
 std::string coefficient(const std::string& side, int j, int k) {
-  // "omega2omega3", "2w2w3": components run together are parted first.
-  const std::string ascii = std::regex_replace(sym::to_ascii(side),
-                                               std::regex(R"(([0-9])(omega|w))"), "$1 $2");
+  const std::string ascii = components_parted(sym::to_ascii(side));
   bool negative = false;
   std::vector<std::string> rest;
   std::array<int, 4> seen{};
@@ -88,6 +115,47 @@ std::string coefficient(const std::string& side, int j, int k) {
   return c;
 }
 
+// "\mathrm{d}\omega_{1}/\mathrm{d}t" (and d\omega_1/dt) as "\dot{\omega}_{1}": as a LaTeX key
+// sets the derivative in a line of text, where the LaTeX reader takes a derivative as a \frac
+// or a dot, and d here for no symbol.
+std::string slashed_derivatives_dotted(std::string s) {
+  for (const std::string d : {"\\mathrm{d}", "\\text{d}"}) {
+    for (auto at = s.find(d); at != std::string::npos; at = s.find(d, at + 1))
+      s.replace(at, d.size(), "d");
+  }
+  static constexpr std::string_view kOmega = "\\omega_";
+  std::string out;
+  std::size_t copied = 0;
+  for (std::size_t at = s.find(kOmega); at != std::string::npos; at = s.find(kOmega, at + 1)) {
+    std::size_t start = at;  // back over spaces to the d
+    while (start > copied && s[start - 1] == ' ') --start;
+    if (start == copied || s[start - 1] != 'd') continue;
+    --start;
+    if (start > 0 &&
+        (std::isalpha(static_cast<unsigned char>(s[start - 1])) || s[start - 1] == '\\'))
+      continue;
+    std::size_t i = at + kOmega.size();
+    const auto skip_spaces = [&] {
+      while (i < s.size() && s[i] == ' ') ++i;
+    };
+    const auto take = [&](char c) {
+      skip_spaces();
+      if (i >= s.size() || s[i] != c) return false;
+      ++i;
+      return true;
+    };
+    const bool braced = i < s.size() && s[i] == '{';
+    if (braced) ++i;
+    if (i >= s.size() || index_of(std::string_view(s).substr(i, 1)) == 0) continue;
+    const char index = s[i++];
+    if ((braced && !take('}')) || !take('/') || !take('d') || !take('t')) continue;
+    if (i < s.size() && std::isalpha(static_cast<unsigned char>(s[i]))) continue;  // "/dtheta"
+    out += s.substr(copied, start - copied) + "\\dot{\\omega}_{" + index + "}";
+    copied = i;
+  }
+  return out + s.substr(copied);
+}
+
 }  // namespace
 
 std::string euler_equations_as_text(const std::string& typed, const sym::SymbolTable& table) {
@@ -101,16 +169,11 @@ std::string euler_equations_as_text(const std::string& typed, const sym::SymbolT
         with_components.declare(name, latex, sym::SymbolSign::real);
     }
   }
-  // "\mathrm{d}\omega_{1}/\mathrm{d}t", as a LaTeX key sets the derivative in a line of text: the
-  // reader takes a derivative as a \frac or a dot, and d here for no symbol. Spaces bounded: an
-  // unbounded run recurses in std::regex, one frame a character.
-  static const std::regex kSlashed(
-      R"((?:\\mathrm\{d\}|\\text\{d\}|d) {0,3}\\omega_\{?([123])\}? {0,3}/ {0,3}(?:\\mathrm\{d\}|\\text\{d\}|d) {0,3}t)");
   // "$\mathrm{d}\omega_{1}/\mathrm{d}t$ = $-$0.5 $\omega_2$ $\omega_3$, ..": the LaTeX key's
   // source of its step, prose with math in it; without the dollars, one formula.
   std::string math = typed;
   std::erase(math, '$');
-  const std::string dotted = std::regex_replace(math, kSlashed, "\\dot{\\omega}_{$1}");
+  const std::string dotted = slashed_derivatives_dotted(math);
   try {
     return latex_as_text(dotted, with_components, "answer");
   } catch (const InputError&) {
