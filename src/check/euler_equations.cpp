@@ -159,7 +159,9 @@ std::string slashed_derivatives_dotted(std::string s) {
 }  // namespace
 
 std::string euler_equations_as_text(const std::string& typed, const sym::SymbolTable& table) {
-  if (!looks_like_latex(typed)) return typed;
+  // No \omega, no equations of its components: every other LaTeX vector answer passes here, and
+  // is spared a copy of the table and a second reading.
+  if (!looks_like_latex(typed) || typed.find("\\omega") == std::string::npos) return typed;
   sym::SymbolTable with_components = table;
   for (const char i : {'1', '2', '3'}) {
     for (const auto& [name, latex] :

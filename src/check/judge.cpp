@@ -485,10 +485,11 @@ bool is_one_name(const std::string& side) {
 }
 
 // What a side squared gives: the root as the reader takes it, or, for a value whose unit has an
-// odd power ("λ² = 83.38 1/s"), no root and that unit: no square is in it.
+// odd power ("λ² = 83.38 1/s"), no root and that unit (no square is in it) with the number.
 struct SquaredLabel {
   std::string root;
   std::optional<Unit> odd_unit;
+  std::string number;
 };
 
 // "λ² = 83.38 s⁻²", "rate^2 = 83.38": a side that is one name squared, a label of the student's
@@ -507,7 +508,7 @@ std::optional<SquaredLabel> root_of_squared_label(const std::string& label,
   if (!own_name && (ctx.table.contains(base) || name_in_key(ctx.key, s) != s)) return std::nullopt;
   const auto [number, unit_text] = split_value_unit(trim(sym::to_ascii(value)));
   if (number.empty()) return std::nullopt;
-  if (unit_text.empty()) return SquaredLabel{"sqrt(" + number + ")", std::nullopt};
+  if (unit_text.empty()) return SquaredLabel{"sqrt(" + number + ")", std::nullopt, ""};
   Unit unit;
   try {
     unit = parse_unit(unit_text, kField);
@@ -517,13 +518,13 @@ std::optional<SquaredLabel> root_of_squared_label(const std::string& label,
   static constexpr std::array<const char*, 3> kSiBase{"kg", "m", "s"};
   std::string si;
   for (std::size_t k = 0; k < unit.dim.size(); ++k) {
-    if (unit.dim[k] % 2 != 0) return SquaredLabel{"", unit};
+    if (unit.dim[k] % 2 != 0) return SquaredLabel{"", unit, number};
     if (unit.dim[k] != 0)
       si += fmt::format("{}{}^{}", si.empty() ? "" : " ", kSiBase[k], unit.dim[k] / 2);
   }
   return SquaredLabel{
       "sqrt((" + number + ")*(" + unit.to_si_exact + "))" + (si.empty() ? "" : " " + si),
-      std::nullopt};
+      std::nullopt, ""};
 }
 
 // Where the axes are in a matrix written as `text`: vectors listed one by one, "[1, 1, 0], [1,
@@ -689,7 +690,8 @@ Verdict judge_signs(const Context& ctx, const Answer& a, const SignReadings& sig
 // written on its square. Wrong as written; the feedback says which unit the square is in, and
 // whether the number is right in it.
 Verdict square_in_odd_unit(const Context& ctx, const Answer& a, const std::string& label,
-                           const std::string& value, const Unit& unit, const Options& opt) {
+                           const SquaredLabel& square, const Options& opt) {
+  const Unit& unit = *square.odd_unit;
   Unit squared = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
   for (int& power : squared.dim) power *= 2;
   Verdict v;
@@ -698,8 +700,7 @@ Verdict square_in_odd_unit(const Context& ctx, const Answer& a, const std::strin
                                    unit.text, unit.dimension_words(), a.name,
                                    a.unit.empty() ? "no unit" : "(" + a.unit + ")^2",
                                    squared.dimension_words()));
-  const std::string number = split_value_unit(trim(sym::to_ascii(value))).first;
-  const std::string root = "sqrt(" + number + ")" + (a.unit.empty() ? "" : " " + a.unit);
+  const std::string root = "sqrt(" + square.number + ")" + (a.unit.empty() ? "" : " " + a.unit);
   const auto right = [&](const std::string& sign) {
     try {
       return judge_one(ctx, a, sign + root, opt).correct;
@@ -762,7 +763,7 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   if (const auto squared =
           parts.size() == 2 ? root_of_squared_label(parts[0], parts[1], ctx, a) : std::nullopt) {
     if (squared->odd_unit) {
-      return square_in_odd_unit(ctx, a, trim(parts[0]), parts[1], *squared->odd_unit, options);
+      return square_in_odd_unit(ctx, a, trim(parts[0]), *squared, options);
     }
     const std::string& root = squared->root;
     Verdict v = judge_one(ctx, a, root, options);
