@@ -6,6 +6,7 @@
 /// step prints them so: "dω₁/dt = -0.965066 ω₂ ω₃, dω₂/dt = 0.99115 ω₃ ω₁, ...".
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "symbolic/expression.hpp"
 
@@ -19,15 +20,27 @@ namespace wobble::check {
 /// included, as it is.
 std::string euler_equations_as_text(const std::string& typed, const sym::SymbolTable& table);
 
-/// "[-0.9651, 0.9912, -0.6]" for "dω₁/dt = -0.9651 ω₂ ω₃, dω₂/dt = 0.9912 ω₃ ω₁, dω₃/dt = -0.6
-/// ω₁ ω₂": three equations parted by ',', ';' or line breaks, in any order, each a derivative
-/// of one component of ω (dω₁/dt, ω̇₁, ω₁', in ASCII domega1/dt, dw1/dt, omega1dot, w1') equal
-/// to a coefficient times the other two components (ω₂ ω₃, ω₃·ω₂, w2*w3, a bare ω₂ω₃ for a
-/// coefficient 1, "-ω₂ ω₃" for -1). The coefficient may be any expression; it is left for the
-/// reader. nullopt for any other text.
+/// Euler's equations as read: the vector of their coefficients, or what is wrong with them.
+struct EulerEquations {
+  /// "[-0.9651, 0.9912, -0.6]"; empty where a right side has other components than its
+  /// equation's (then `wrong_products` says which).
+  std::string coefficients;
+  /// One line for each equation whose right side is no coefficient times the other two
+  /// components: "dω₃/dt has ω₁ ω₃, not ω₁ ω₂".
+  std::vector<std::string> wrong_products;
+};
+
+/// "dω₁/dt = -0.9651 ω₂ ω₃, dω₂/dt = 0.9912 ω₃ ω₁, dω₃/dt = -0.6 ω₁ ω₂" read as the coefficients
+/// "[-0.9651, 0.9912, -0.6]": three equations parted by ',', ';' or line breaks, in any order,
+/// each a derivative of one component of ω (dω₁/dt, ω̇₁, ω₁', in ASCII domega1/dt, dw1/dt,
+/// omega1dot, w1') equal to a coefficient times the other two components (ω₂ ω₃, ω₃·ω₂, w2*w3,
+/// a bare ω₂ω₃ for a coefficient 1, "-ω₂ ω₃" for -1). The coefficient may be any expression; it
+/// is left for the reader. A right side that is a product of other components (ω₁ ω₃, ω₂²)
+/// is read as a wrong equation. nullopt for any other text, and for right sides with no
+/// component of ω at all (the coefficients labelled by their equations, read elsewhere).
 /// @throws InputError naming `field` for such equations that are not one for each component
-///   (two of them, or dω₁/dt twice): no vector of coefficients could be read from them.
-std::optional<std::string> euler_equation_coefficients(const std::string& typed,
-                                                       const std::string& field);
+///   (two of them, or dω₁/dt twice), saying which is missing or twice.
+std::optional<EulerEquations> read_euler_equations(const std::string& typed,
+                                                   const std::string& field);
 
 }  // namespace wobble::check

@@ -735,11 +735,26 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // "dω₁/dt = -0.9651 ω₂ ω₃, ..": Euler's equations for their coefficients, as the question asks
   // them written and the key's step prints them.
   if (a.value.shape == Value::Shape::vector && a.value.data.size() == 3) {
-    if (const auto coefficients =
-            euler_equation_coefficients(euler_equations_as_text(written, ctx.table), kField)) {
-      Verdict v = judge_one(ctx, a, *coefficients, options);
+    if (const auto equations =
+            read_euler_equations(euler_equations_as_text(written, ctx.table), kField)) {
+      if (!equations->wrong_products.empty()) {
+        Verdict v;
+        v.line = "incorrect: " + a.name +
+                 ": in Euler's equations each dωᵢ/dt is a coefficient times the other two "
+                 "components";
+        v.feedback = equations->wrong_products;
+        return v;
+      }
+      Verdict v = judge_one(ctx, a, equations->coefficients, options);
+      for (auto& line : v.feedback) {  // "entry x is off by 10%": c₁, as the equations name it
+        for (const auto& [entry, c] :
+             {std::pair{"entry x", "c₁"}, {"entry y", "c₂"}, {"entry z", "c₃"}}) {
+          for (auto at = line.find(entry); at != std::string::npos; at = line.find(entry, at))
+            line.replace(at, std::string_view(entry).size(), c);
+        }
+      }
       v.feedback.push_back("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = " +
-                           sym::to_unicode(*coefficients));
+                           sym::to_unicode(equations->coefficients));
       return v;
     }
   }

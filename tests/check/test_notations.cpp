@@ -1365,23 +1365,36 @@ TEST_CASE("Euler's equations written out are read as their coefficients, as the 
       for (const auto& a : part.answers) {
         if (a.name != "euler_coefficients") continue;
         for (const auto& step : part.steps) {
-          // As the key holds it (JSON); the terminal's dω₁/dt .. ω₂ ω₃ is pasted in cli_tests.
-          const auto at = step.text.find(": dw1/dt = ");
-          if (at == std::string::npos || step.text.find(" w2 w3") == std::string::npos) continue;
-          std::string equations = step.text.substr(at + 2);
-          if (equations.back() == '.') equations.pop_back();
+          // As the key holds it (JSON), "dw1/dt = -0.5 w2 w3, .." and the general "I1 dw1/dt =
+          // (I2 − I3) w2 w3, ..", with its full stop; the terminal's dω₁/dt .. ω₂ ω₃ is pasted
+          // in cli_tests.
+          const auto colon = step.text.find(": ");
+          if (colon == std::string::npos || step.text.find("dw1/dt = ") == std::string::npos ||
+              step.text.find(" w2 w3") == std::string::npos)
+            continue;
+          const std::string equations = step.text.substr(colon + 2);
           INFO(p.id << ": " << equations);
+          if (equations.starts_with("I1 ") && !f.table.contains("I1")) {
+            // The racket's moments are its sides': I₁ is no symbol to answer in, and says so.
+            REQUIRE_THROWS_WITH(f.check(a.name, equations), Catch::Contains("is no symbol here"));
+            continue;
+          }
           const auto v = f.check(a.name, equations);
           REQUIRE(v.correct);
           REQUIRE_THAT(
               v.feedback.back(),
               Catch::StartsWith("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = ["));
           ++pasted;
+          // The LaTeX key's source of the same step, where it has one.
+          if (step.latex.empty()) continue;
+          INFO(step.latex);
+          REQUIRE(f.check(a.name, step.latex).correct);
+          ++pasted;
         }
       }
     }
   }
-  REQUIRE(pasted >= 2);  // the asymmetric top and the racket
+  REQUIRE(pasted >= 4);  // the asymmetric top's two forms (and LaTeX), the racket's numbers
   const Fixture racket("tennis-racket");
   const auto& c = racket.answer("euler_coefficients").value.data;
   const auto n = [&](std::size_t i, double scale = 1.0) {
@@ -1419,11 +1432,17 @@ TEST_CASE("Euler's equations written out are read as their coefficients, as the 
   REQUIRE_THAT(
       wrong.feedback.back(),
       Catch::StartsWith("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = ["));
-  // The wrong pair of components is no such equation: ω₁ is no symbol of the problem.
-  REQUIRE_THROWS_AS(
+  // The wrong components on a right side are a wrong equation, whatever its coefficient: each
+  // such equation is named, with the form it should have.
+  const auto pair =
       racket.check("euler_coefficients", "dω₁/dt = " + n(0) + " ω₁ ω₃, dω₂/dt = " + n(1) +
-                                             " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂"),
-      InputError);
+                                             " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₃²");
+  REQUIRE_FALSE(pair.correct);
+  REQUIRE(pair.line ==
+          "incorrect: euler_coefficients: in Euler's equations each dωᵢ/dt is a coefficient times "
+          "the other two components");
+  REQUIRE(pair.feedback == std::vector<std::string>{"dω₁/dt = c₁ ω₂ ω₃, and yours has ω₁ ω₃",
+                                                    "dω₃/dt = c₃ ω₁ ω₂, and yours has ω₃²"});
   // A sum beside the components multiplies only its last term: a − b ω₂ ω₃ is no coefficient
   // times ω₂ ω₃, and is not read as one.
   REQUIRE_THROWS_AS(racket.check("euler_coefficients", "dω₁/dt = 1 - 2 ω₂ ω₃, dω₂/dt = " + n(1) +
@@ -1434,21 +1453,58 @@ TEST_CASE("Euler's equations written out are read as their coefficients, as the 
                                                ") ω₂ ω₃, dω₂/dt = " + n(1) +
                                                " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂")
               .correct);
-  // Fewer than three, or one twice: no vector of coefficients, and the line says so.
+  // Fewer than three, or one twice: no vector of coefficients, and the line says which.
   REQUIRE_THROWS_WITH(racket.check("euler_coefficients",
                                    "dω₁/dt = " + n(0) + " ω₂ ω₃, dω₂/dt = " + n(1) + " ω₃ ω₁"),
                       Catch::Contains("Euler's equations: give one for each component") &&
-                          Catch::Contains("(2 given)"));
-  REQUIRE_THROWS_WITH(racket.check("euler_coefficients", "dω₁/dt = " + n(0) + " ω₂ ω₃"),
-                      Catch::Contains("(1 given)"));
+                          Catch::EndsWith("(dω₃/dt missing)"));
+  REQUIRE_THROWS_WITH(racket.check("euler_coefficients", "dω₂/dt = " + n(1) + " ω₃ ω₁"),
+                      Catch::EndsWith("(dω₁/dt missing, dω₃/dt missing)"));
   REQUIRE_THROWS_WITH(
       racket.check("euler_coefficients", "dω₁/dt = " + n(0) + " ω₂ ω₃, dω₁/dt = " + n(1) +
                                              " ω₃ ω₂, dω₃/dt = " + n(2) + " ω₁ ω₂"),
-      Catch::Contains("(3 given, one twice)"));
+      Catch::EndsWith("(dω₁/dt twice, dω₂/dt missing)"));
+  // A wrong coefficient is named as the equations name it, c₁ to c₃.
+  const auto swapped =
+      racket.check("euler_coefficients", "dω₁/dt = " + n(2) + " ω₂ ω₃, dω₂/dt = " + n(1) +
+                                             " ω₃ ω₁, dω₃/dt = " + n(0) + " ω₁ ω₂");
+  REQUIRE_FALSE(swapped.correct);
+  REQUIRE(swapped.feedback.at(0) == "the right entries in another order: c₁ and c₃ are swapped");
   // The same equations for dω/dt at t = 0 (values, not coefficients) are read so, and wrong.
   const auto rates = racket.check("dw_dt0", "dω₁/dt = " + n(0) + " ω₂ ω₃, dω₂/dt = " + n(1) +
                                                 " ω₃ ω₁, dω₃/dt = " + n(2) + " ω₁ ω₂");
   REQUIRE_FALSE(rates.correct);
+}
+
+TEST_CASE("Euler's equations with the moments written, I₁ ω̇₁ = (I₂ − I₃) ω₂ ω₃, read as theirs") {
+  const Fixture top("asymmetric-top");  // I = (2, 3, 4) kg m²: c = (-1/2, 2/3, -1/4)
+  // The moment on the left, as the lecture writes them, or dividing the right side; numbers too.
+  for (const std::string written :
+       {"I₁ω̇₁ = (I₂ − I₃)ω₂ω₃, I₂ω̇₂ = (I₃ − I₁)ω₃ω₁, I₃ω̇₃ = (I₁ − I₂)ω₁ω₂",
+        "I_1 dω₁/dt = (I_2 - I_3) ω₂ ω₃; I_2 dω₂/dt = (I_3 - I_1) ω₃ ω₁; I_3 dω₃/dt = (I_1 - I_2) "
+        "ω₁ ω₂",
+        "ω̇₁ = (I₂ − I₃)ω₂ω₃/I₁, ω̇₂ = (I₃ − I₁) ω₃ ω₁ / I₂, ω̇₃ = (I₁ − I₂)/I₃ ω₁ω₂",
+        "2 dω₁/dt = -ω₂ω₃, 3 dω₂/dt = 2 ω₃ω₁, 4 dω₃/dt = -ω₁ω₂",
+        "I_1\\dot\\omega_1 = (I_2 - I_3)\\,\\omega_2\\omega_3,\\ I_2\\dot\\omega_2 = (I_3 - "
+        "I_1)\\,\\omega_3\\omega_1,\\ I_3\\dot\\omega_3 = (I_1 - I_2)\\,\\omega_1\\omega_2"}) {
+    INFO(written);
+    const auto v = top.check("euler_coefficients", written);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.feedback.back(),
+                 Catch::StartsWith("read as the coefficients of Euler's equations"));
+  }
+  // The moments' difference turned in the first equation: c₁ has the wrong sign, said so.
+  const auto turned = top.check("euler_coefficients",
+                                "I₁ω̇₁ = (I₃ − I₂)ω₂ω₃, I₂ω̇₂ = (I₃ − I₁)ω₃ω₁, I₃ω̇₃ = (I₁ − I₂)ω₁ω₂");
+  REQUIRE_FALSE(turned.correct);
+  REQUIRE(turned.feedback.at(0) == "c₁ has the wrong sign");
+  // A component of ω on the left, or a derivative on the right, is no such equation, and is
+  // refused as unreadable.
+  for (const std::string other :
+       {"ω₁ ω̇₁ = ω₂ω₃, ω̇₂ = ω₃ω₁, ω̇₃ = ω₁ω₂", "ω̇₁ = ω̇₂ ω₃, ω̇₂ = ω₃ω₁, ω̇₃ = ω₁ω₂"}) {
+    INFO(other);
+    REQUIRE_THROWS_AS(top.check("euler_coefficients", other), InputError);
+  }
 }
 
 TEST_CASE("principal moments given as the diagonal tensor are read as its diagonal") {

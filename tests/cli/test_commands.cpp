@@ -222,6 +222,20 @@ TEST_CASE(
       REQUIRE_THAT(judged.out, Catch::Contains("read as the coefficients of Euler's equations"));
     }
   }
+  // The step before, the equations with the moments, "I₁ dω₁/dt = (I₂ − I₃) ω₂ ω₃, ..", as the
+  // terminal shows it (the racket's moments are no symbols of its problem).
+  const RunResult text = run_wobble({"solve", "asymmetric-top"});
+  const std::string lead = "in the principal frame: ";
+  const auto at = text.out.find(lead);
+  REQUIRE(at != std::string::npos);
+  const std::string general =
+      text.out.substr(at + lead.size(), text.out.find('\n', at) - at - lead.size());
+  REQUIRE_THAT(general, Catch::StartsWith("I₁ dω₁/dt = (I₂ − I₃) ω₂ ω₃, "));
+  const RunResult judged =
+      run_wobble({"check", "asymmetric-top", "--name", "euler_coefficients", "--answer", general});
+  INFO(general << "\n" << judged.out << judged.err);
+  REQUIRE(judged.exit_code == 0);
+  REQUIRE_THAT(judged.out, Catch::Contains("read as the coefficients of Euler's equations"));
 }
 
 TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback") {
