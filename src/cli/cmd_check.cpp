@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "check/answer_choice.hpp"
 #include "check/judge.hpp"
 #include "check/submission.hpp"
 #include "cli/commands.hpp"
@@ -190,11 +191,16 @@ int run_check(const CheckOptions& opt) {
         answers_by_part(key)));
   }
   const auto [part, typed] = part_and_answer(opt, problem);
-  // "I₀", "I_0": an answer's name as the statement or a LaTeX handout writes it.
-  const Answer& answer = find_answer(key, check::name_in_key(key, part),
-                                     check::name_in_key(key, opt.name), "part", "--name");
   const sym::SymbolTable table = problem.symbol_table();
-  const check::Verdict v = check::judge({key, table, values}, answer, typed, o);
+  const check::Context ctx{key, table, values};
+  // "I₀", "I_0": an answer's name as the statement or a LaTeX handout writes it. A part of
+  // several answers with none named: the one the answer's label names, or the only one it is
+  // right for.
+  const std::string part_id = check::name_in_key(key, part);
+  std::string name = check::name_in_key(key, opt.name);
+  if (name.empty() && !part_id.empty()) name = check::answer_meant(ctx, part_id, typed, o);
+  const Answer& answer = find_answer(key, part_id, name, "part", "--name");
+  const check::Verdict v = check::judge(ctx, answer, typed, o);
   fmt::print("{}\n", v.line);
   for (const auto& f : v.feedback) fmt::print("  {}\n", f);
   return v.correct ? kExitOk : kExitDifference;

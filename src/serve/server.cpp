@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "check/answer_choice.hpp"
 #include "check/judge.hpp"
 #include "core/input_error.hpp"
 #include "problem/values.hpp"
@@ -256,15 +257,21 @@ struct Server::Impl {
     std::lock_guard lock(work);
     const auto e = entry(p, variant);
     const Answer* a = nullptr;
+    const check::Context ctx{e->key, e->table, e->values};
     try {
-      a = &find_answer(e->key, check::name_in_key(e->key, part_id),
-                       check::name_in_key(e->key, name), "part", "name");
+      // No name for a part of several answers: the one the answer's label names, or the only
+      // one it is right for (check/answer_choice.hpp).
+      const std::string part_in_key = check::name_in_key(e->key, part_id);
+      std::string name_in_key = check::name_in_key(e->key, name);
+      if (name_in_key.empty() && !part_in_key.empty())
+        name_in_key = check::answer_meant(ctx, part_in_key, answer, {});
+      a = &find_answer(e->key, part_in_key, name_in_key, "part", "name");
     } catch (const AnswerNotFound& missing) {
       return send_error(res, 404, missing.what());
     }
     check::Verdict v;
     try {
-      v = check::judge({e->key, e->table, e->values}, *a, answer, {});
+      v = check::judge(ctx, *a, answer, {});
     } catch (const InputError& error) {
       // The judge names the command line's option; on the page the answer box is the field.
       const std::string what = error.what(), bare = check::without_option(what);

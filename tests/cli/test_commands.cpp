@@ -255,6 +255,33 @@ TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback
               .exit_code == 0);
 }
 
+TEST_CASE(
+    "check: a part of several answers without --name, the answer's label or rightness decides") {
+  // asymmetric-top's part (a) asks for the coefficients of Euler's equations and dω/dt at 0.
+  const auto judged = [](const std::string& answer) {
+    return run_wobble({"check", "asymmetric-top", "a", "--answer", answer});
+  };
+  // Labelled with the answer's name, as the key prints it: that answer, right or wrong.
+  const RunResult labelled = judged("euler_coefficients = [-0.5, 0.6667, -0.25]");
+  REQUIRE(labelled.exit_code == 0);
+  REQUIRE(labelled.out == "correct: euler_coefficients\n");
+  const RunResult labelled_wrong = judged("dw_dt0: [1, 2, 3] rad/s^2");
+  REQUIRE(labelled_wrong.exit_code == 1);
+  REQUIRE_THAT(labelled_wrong.out, Catch::StartsWith("incorrect: dw_dt0\n"));
+  // Right for one of them only: that one. The equations are the coefficients', the rates dω/dt's.
+  REQUIRE(judged("ω̇₁ = −½ ω₂ω₃, ω̇₂ = ⅔ ω₃ω₁, ω̇₃ = −¼ ω₁ω₂").out ==
+          "correct: euler_coefficients\n"
+          "  read as the coefficients of Euler's equations: (c₁, c₂, c₃) = [-1/2, 2/3, -1/4]\n");
+  REQUIRE(judged("(-0.5, 1, -0.015) rad/s²").out == "correct: dw_dt0\n");
+  // Right for neither, and no label: the name is asked for, nothing judged.
+  const RunResult neither = judged("[1, 2, 3]");
+  REQUIRE(neither.exit_code == 2);
+  REQUIRE(neither.out.empty());
+  REQUIRE_THAT(
+      neither.err,
+      Catch::Contains("part a has several answers; name one (euler_coefficients, dw_dt0)"));
+}
+
 TEST_CASE("check: --name alone finds its part; neither part nor name says what to give") {
   const RunResult by_name = run_wobble({"check", "flying-plate", "--name", "Omega_space_rate",
                                         "--answer", "omega*sqrt(3*cos^2(alpha) + 1)"});

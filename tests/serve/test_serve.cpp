@@ -185,7 +185,13 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
                         {{"name", "principal_moments"}, {"answer", "5/2 Ma², 3, 4"}}, 400)["error"]
                  .get<std::string>(),
              StartsWith("answer, entry 1: cannot read expression") && !Contains("--answer"));
-  // A part of several answers needs the name; neither part nor name is a bad request.
+  // A part of several answers and no name: the answer's label names it, or it is right for one
+  // of them only; else the name is needed (here right for none, at the default values).
+  const json labelled =
+      post_check(c, "flying-plate", {{"part", "a"}, {"answer", "I₀ = " + doubled}, {"variant", 5}});
+  CHECK(labelled["verdict"] == "incorrect: I0");
+  CHECK(post_check(c, "flying-plate",
+                   {{"part", "a"}, {"answer", right}, {"variant", 5}})["verdict"] == "correct: I0");
   CHECK_THAT(post_check(c, "flying-plate", {{"part", "a"}, {"answer", right}}, 404)["error"]
                  .get<std::string>(),
              Equals("name: part a has several answers; name one (I0, I)"));

@@ -1,0 +1,47 @@
+#include "check/answer_choice.hpp"
+
+#include <algorithm>
+
+#include "core/characters.hpp"
+#include "core/input_error.hpp"
+
+namespace wobble::check {
+
+namespace {
+
+// The left of the first '=' or ':' in `text`, trimmed; "" where there is neither.
+std::string label_of(const std::string& text) {
+  const auto at = text.find_first_of("=:");
+  return at == std::string::npos ? "" : trim(text.substr(0, at));
+}
+
+}  // namespace
+
+std::string answer_meant(const Context& ctx, const std::string& part_id, const std::string& text,
+                         const Options& options) {
+  const auto part = std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(),
+                                 [&](const PartKey& p) { return p.id == part_id; });
+  if (part == ctx.key.parts.end() || part->answers.size() < 2) return "";
+  if (const std::string label = label_of(text); !label.empty()) {
+    const std::string named = name_in_key(ctx.key, label);
+    for (const auto& a : part->answers) {
+      if (a.name == named) return a.name;
+    }
+  }
+  // Judged against each: an answer that cannot be read as one of them (its shape or unit is
+  // another's) is no answer to it.
+  std::string right;
+  int rights = 0;
+  for (const auto& a : part->answers) {
+    try {
+      if (judge(ctx, a, text, options).correct) {
+        right = a.name;
+        ++rights;
+      }
+    } catch (const InputError&) {
+    }
+  }
+  return rights == 1 ? right : "";
+}
+
+}  // namespace wobble::check
