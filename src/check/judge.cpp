@@ -17,6 +17,7 @@
 #include "check/brackets.hpp"
 #include "check/diagnosis.hpp"
 #include "check/euler_equations.hpp"
+#include "check/inequality.hpp"
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
@@ -715,6 +716,40 @@ Verdict square_in_odd_unit(const Context& ctx, const Answer& a, const std::strin
   return v;
 }
 
+// "ω₃ ≥ 118.8 rad/s" for a least value (inequality.hpp): the side that reads as the answer is
+// its value, the other its label ("θ ≥ θ₀": θ is no symbol of the problem); where both read,
+// the right side, as "ω₃ ≥ .." is written. The sign must say the bound the answer is.
+Verdict judge_bound(const Context& ctx, const Answer& a, const Inequality& q, const Options& opt) {
+  const bool lower = a.bound == AnswerBound::lower;
+  const auto reads = [&](const std::string& side) {
+    try {
+      judge_one(ctx, a, side, opt);
+      return true;
+    } catch (const InputError&) {
+      return false;
+    }
+  };
+  const bool value_right = reads(q.right) || !reads(q.left);
+  const std::string& value = value_right ? q.right : q.left;
+  const std::string& label = value_right ? q.left : q.right;
+  Verdict v = judge_one(ctx, a, value, opt);  // throws, where neither side reads, the right's
+  // label ≥ value says the value is a least one; value ≥ label a greatest.
+  const bool says_lower = value_right == q.left_greater;
+  if (says_lower == lower) {
+    v.feedback.push_back(
+        fmt::format("read as {} = {}, the bound of your '{}'", a.name, value, q.sign));
+    return v;
+  }
+  const bool bound_right = v.correct;
+  v = Verdict{};
+  v.line = "incorrect: " + a.name + ": your inequality points the wrong way";
+  v.feedback.push_back(fmt::format("{} is a {} value: {} {} {}", a.name,
+                                   lower ? "least" : "greatest", label, lower ? "≥" : "≤", a.name));
+  v.feedback.push_back(bound_right ? "the bound itself would be right"
+                                   : "and the bound itself is not right either");
+  return v;
+}
+
 }  // namespace
 
 Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
@@ -757,6 +792,10 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
                            sym::to_unicode(equations->coefficients));
       return v;
     }
+  }
+  // "ω₃ ≥ 118.8 rad/s": a least or greatest value as the bound it is.
+  if (a.bound != AnswerBound::none && a.value.shape == Value::Shape::scalar) {
+    if (const auto q = inequality_of(written)) return judge_bound(ctx, a, *q, options);
   }
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
   // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows

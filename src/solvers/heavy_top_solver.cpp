@@ -394,7 +394,12 @@ Computed energy(const Top& t, const std::string& q) {
   return out;
 }
 
-Computed nutation(const Top& t, const std::string& q) { return nutation_limit(t, q == "theta_max"); }
+Computed nutation(const Top& t, const std::string& q) {
+  const bool upper = q == "theta_max";
+  Computed out = nutation_limit(t, upper);
+  out.answer.bound = upper ? AnswerBound::upper : AnswerBound::lower;  // θ_min ≤ θ ≤ θ_max
+  return out;
+}
 Computed kind_of_motion(const Top& t, const std::string&) { return motion_kind(t); }
 
 Computed spin(const Top& t, const std::string& q) {
@@ -409,6 +414,7 @@ Computed spin(const Top& t, const std::string& q) {
   const bool stable = sleeping_top_is_stable(k.p_psi, t.numeric.M_kg, t.numeric.g_m_s2,
                                              t.numeric.l_m, t.numeric.I1_kgm2);
   if (q == "omega3_min") {
+    out.answer.bound = AnswerBound::lower;  // the top sleeps for ω3 ≥ omega3_min
     const double wn =
         2 * std::sqrt(t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m * t.numeric.I1_kgm2) /
         t.numeric.I3_kgm2;

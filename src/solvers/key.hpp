@@ -66,6 +66,11 @@ enum class AnswerFrame {
   primed,  ///< the line-of-nodes basis of Euler angles (e1', e2', e3' = z)
 };
 
+/// What an answer bounds: a least value (the sleeping top's least spin, the least tilt of a
+/// nutation) or a greatest (the largest angle reached), which a student may give as the
+/// inequality it is, "ω₃ ≥ 118.8 rad/s".
+enum class AnswerBound { none, lower, upper };
+
 /// What the sign of an answer says.
 enum class SignConvention {
   none,                ///< an ordinary signed quantity
@@ -106,6 +111,9 @@ struct Answer {
   /// notes say them).
   std::vector<Approximation> approximations;
   std::optional<double> check_tolerance;  ///< from the problem file, for `wobble check`
+  /// Set by the solver for a least or greatest value (not in the JSON key: the quantity's
+  /// description says it).
+  AnswerBound bound = AnswerBound::none;
 };
 
 struct Step {

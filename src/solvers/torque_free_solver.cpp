@@ -296,6 +296,7 @@ Computed identity_residual(const Top& t, const std::string& q) {
 
 Computed max_angle(const Top& t, const std::string& q) {
   Computed out{exact_scalar(q, 2 * angle_L_e3(t), "rad", t.exact), {}};
+  out.answer.bound = AnswerBound::upper;  // the angle (z, e3) stays at or below it
   check_routes_agree(out.answer.value.data[0], t.numeric.max_angle(), 1.0, kRouteUlps, q);
   out.steps.push_back(
       {"e3 stays at the angle θ_L from the fixed L; z = e3(0) is on that cone, so "

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "check/check_fixture.hpp"
+#include "check/inequality.hpp"
 #include "check/judge.hpp"
 #include "core/input_error.hpp"
 #include "solvers/catalog.hpp"
@@ -1505,6 +1506,60 @@ TEST_CASE("Euler's equations with the moments written, I₁ ω̇₁ = (I₂ − 
     INFO(other);
     REQUIRE_THROWS_AS(top.check("euler_coefficients", other), InputError);
   }
+}
+
+TEST_CASE("a comparison at the top level is found once, its sides and its sense") {
+  const auto q = check::inequality_of("ω₃ ≥ 118.8 rad/s");
+  REQUIRE(q);
+  CHECK(q->left == "ω₃");
+  CHECK(q->right == "118.8 rad/s");
+  CHECK(q->left_greater);
+  const auto latex = check::inequality_of("\\theta \\le \\left(\\frac{\\pi}{4}\\right)");
+  REQUIRE(latex);
+  CHECK_FALSE(latex->left_greater);
+  CHECK(latex->right == "\\left(\\frac{\\pi}{4}\\right)");  // \left is no \le
+  CHECK(check::inequality_of("0.5 <= θ")->sign == "<=");
+  // An angle-bracket vector, a chain, a comparison inside brackets, a side missing: none.
+  for (const std::string none :
+       {"<1, 2, 3>", "0 < θ < 1", "f(a > b)", "≥ 118.8", "\\left(1\\right)"}) {
+    INFO(none);
+    CHECK_FALSE(check::inequality_of(none));
+  }
+}
+
+TEST_CASE("a least or greatest value given as its inequality is judged by its bound and sense") {
+  const Fixture top("heavy-top");
+  const std::string least = fmt::format("{:.6g} rad/s", top.answer("omega3_min").value.data[0]);
+  const std::string most = fmt::format("{:.6g} rad", top.answer("theta_max").value.data[0]);
+  // The bound on either side, in Unicode, ASCII or LaTeX, strict or not.
+  for (const std::string& right :
+       {"ω₃ ≥ " + least, "omega3 > " + least, least + " <= ω₃", "\\omega_3 \\geq " + least}) {
+    INFO(right);
+    const auto v = top.check("omega3_min", right);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.feedback.back(), Catch::StartsWith("read as omega3_min = " + least));
+  }
+  REQUIRE(top.check("theta_max", "θ ≤ " + most).correct);
+  REQUIRE(top.check("theta_min", "θ ≥ θ₀").correct);  // the start is the least tilt, exactly
+  // The sense turned: wrong, and said whether the bound itself would be right.
+  const auto turned = top.check("omega3_min", "ω₃ ≤ " + least);
+  REQUIRE_FALSE(turned.correct);
+  REQUIRE(turned.line == "incorrect: omega3_min: your inequality points the wrong way");
+  REQUIRE(turned.feedback ==
+          std::vector<std::string>{"omega3_min is a least value: ω₃ ≥ omega3_min",
+                                   "the bound itself would be right"});
+  REQUIRE(top.check("theta_max", "θ ≥ 1 rad").feedback.back() ==
+          "and the bound itself is not right either");
+  // A wrong bound in the right sense is judged as any wrong value is.
+  const auto low = top.check("omega3_min", "ω₃ ≥ 100 rad/s");
+  REQUIRE_FALSE(low.correct);
+  REQUIRE_THAT(low.feedback.at(0), Catch::Contains("off by"));
+  // No bound, no inequality: the first time the largest angle is reached is no greatest value.
+  const Fixture plate("flying-plate");
+  REQUIRE(plate.answer("max_angle").bound == AnswerBound::upper);
+  REQUIRE(plate.answer("t_max").bound == AnswerBound::none);
+  REQUIRE_THROWS_AS(plate.check("t_max", "t ≤ 0.1612 s"), InputError);
+  REQUIRE(plate.check("max_angle", "∠(z, e₃) ≤ 15.26°").correct);
 }
 
 TEST_CASE("principal moments given as the diagonal tensor are read as its diagonal") {
