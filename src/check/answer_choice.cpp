@@ -44,4 +44,14 @@ std::string answer_meant(const Context& ctx, const std::string& part_id, const s
   return rights == 1 ? right : "";
 }
 
+const Answer& answer_for(const Context& ctx, const std::string& part, const std::string& name,
+                         const std::string& text, const Options& options,
+                         const std::string& part_field, const std::string& name_field) {
+  const std::string part_id = name_in_key(ctx.key, part);
+  std::string answer_name = name_in_key(ctx.key, name);
+  if (answer_name.empty() && !part_id.empty())
+    answer_name = answer_meant(ctx, part_id, text, options);
+  return find_answer(ctx.key, part_id, answer_name, part_field, name_field);
+}
+
 }  // namespace wobble::check

@@ -17,4 +17,12 @@ namespace wobble::check {
 std::string answer_meant(const Context& ctx, const std::string& part_id, const std::string& text,
                          const Options& options);
 
+/// The answer `text` is to be judged as: find_answer's, with the part and the name read as
+/// name_in_key reads them ("I₀", "I_0"), and for a part of several answers with no name, the one
+/// answer_meant finds. `part_field` and `name_field` name them in a refusal.
+/// @throws AnswerNotFound, InputError as find_answer does.
+const Answer& answer_for(const Context& ctx, const std::string& part, const std::string& name,
+                         const std::string& text, const Options& options,
+                         const std::string& part_field, const std::string& name_field);
+
 }  // namespace wobble::check

@@ -26,7 +26,7 @@ struct EulerEquations {
   /// equation's (then `wrong_products` says which).
   std::string coefficients;
   /// One line for each equation whose right side is no coefficient times the other two
-  /// components: "dω₃/dt has ω₁ ω₃, not ω₁ ω₂".
+  /// components: "dω₃/dt = c₃ ω₁ ω₂, and yours has ω₁ ω₃".
   std::vector<std::string> wrong_products;
 };
 

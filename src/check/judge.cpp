@@ -721,18 +721,19 @@ Verdict square_in_odd_unit(const Context& ctx, const Answer& a, const std::strin
 // the right side, as "ω₃ ≥ .." is written. The sign must say the bound the answer is.
 Verdict judge_bound(const Context& ctx, const Answer& a, const Inequality& q, const Options& opt) {
   const bool lower = a.bound == AnswerBound::lower;
-  const auto reads = [&](const std::string& side) {
+  const auto judged = [&](const std::string& side) -> std::optional<Verdict> {
     try {
-      judge_one(ctx, a, side, opt);
-      return true;
+      return judge_one(ctx, a, side, opt);
     } catch (const InputError&) {
-      return false;
+      return std::nullopt;
     }
   };
-  const bool value_right = reads(q.right) || !reads(q.left);
+  std::optional<Verdict> read = judged(q.right);
+  const bool value_right = read || !(read = judged(q.left));
+  // Where neither side reads, the right side's error.
+  Verdict v = read ? std::move(*read) : judge_one(ctx, a, q.right, opt);
   const std::string& value = value_right ? q.right : q.left;
   const std::string& label = value_right ? q.left : q.right;
-  Verdict v = judge_one(ctx, a, value, opt);  // throws, where neither side reads, the right's
   // label ≥ value says the value is a least one; value ≥ label a greatest.
   const bool says_lower = value_right == q.left_greater;
   if (says_lower == lower) {

@@ -196,10 +196,7 @@ int run_check(const CheckOptions& opt) {
   // "I₀", "I_0": an answer's name as the statement or a LaTeX handout writes it. A part of
   // several answers with none named: the one the answer's label names, or the only one it is
   // right for.
-  const std::string part_id = check::name_in_key(key, part);
-  std::string name = check::name_in_key(key, opt.name);
-  if (name.empty() && !part_id.empty()) name = check::answer_meant(ctx, part_id, typed, o);
-  const Answer& answer = find_answer(key, part_id, name, "part", "--name");
+  const Answer& answer = check::answer_for(ctx, part, opt.name, typed, o, "part", "--name");
   const check::Verdict v = check::judge(ctx, answer, typed, o);
   fmt::print("{}\n", v.line);
   for (const auto& f : v.feedback) fmt::print("  {}\n", f);

@@ -261,11 +261,7 @@ struct Server::Impl {
     try {
       // No name for a part of several answers: the one the answer's label names, or the only
       // one it is right for (check/answer_choice.hpp).
-      const std::string part_in_key = check::name_in_key(e->key, part_id);
-      std::string name_in_key = check::name_in_key(e->key, name);
-      if (name_in_key.empty() && !part_in_key.empty())
-        name_in_key = check::answer_meant(ctx, part_in_key, answer, {});
-      a = &find_answer(e->key, part_in_key, name_in_key, "part", "name");
+      a = &check::answer_for(ctx, part_id, name, answer, {}, "part", "name");
     } catch (const AnswerNotFound& missing) {
       return send_error(res, 404, missing.what());
     }
