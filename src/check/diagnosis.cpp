@@ -23,7 +23,10 @@ std::string entry_name(const Answer& a, std::size_t i) {
       return std::string("the ") + std::array<const char*, 3>{"smallest", "middle", "largest"}[i] +
              " moment";
     }
-    return "entry " + (a.value.data.size() == 3 ? std::string(1, "xyz"[i]) : std::to_string(i + 1));
+    // "c₁" as the question names it; "entry x" or "entry e₁" along the frame's axes.
+    if (!a.named_entries.empty()) return a.named_entries[i];
+    const std::vector<std::string> axes = entry_names(a);
+    return "entry " + (axes.size() == a.value.data.size() ? axes[i] : std::to_string(i + 1));
   }
   return fmt::format("entry ({}, {})", i / a.value.cols + 1, i % a.value.cols + 1);
 }

@@ -54,7 +54,8 @@ struct Mistake {
 };
 
 /// An entry's name in a message: by rank for principal moments (compared in increasing order),
-/// by axis for a 3-vector ("entry z"), by position otherwise ("entry 2", "entry (1, 2)").
+/// as the question names it ("c₁"), by its frame's axis for a 3-vector ("entry z", "entry e₃"),
+/// by position otherwise ("entry 2", "entry (1, 2)").
 std::string entry_name(const Answer& a, std::size_t i);
 
 /// The known mistakes, in the order they are tried.

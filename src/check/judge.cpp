@@ -782,13 +782,6 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
         return v;
       }
       Verdict v = judge_one(ctx, a, equations->coefficients, options);
-      for (auto& line : v.feedback) {  // "entry x is off by 10%": c₁, as the equations name it
-        for (const auto& [entry, c] :
-             {std::pair{"entry x", "c₁"}, {"entry y", "c₂"}, {"entry z", "c₃"}}) {
-          for (auto at = line.find(entry); at != std::string::npos; at = line.find(entry, at))
-            line.replace(at, std::string_view(entry).size(), c);
-        }
-      }
       v.feedback.push_back("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = " +
                            sym::to_unicode(equations->coefficients));
       return v;

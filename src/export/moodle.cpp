@@ -105,8 +105,10 @@ std::string entry_words(const Answer& a, std::size_t e) {
                                       ", the largest moment"}[e];
   }
   if (a.value.shape == Value::Shape::vector) {
-    return a.value.data.size() == 3 ? fmt::format(", its {} component", "xyz"[e])
-                                    : fmt::format(", entry {}", e + 1);
+    // "c₁" as the question names it; "its e₁ component" along the body's axes.
+    const std::vector<std::string> names = entry_names(a);
+    if (names.size() != a.value.data.size()) return fmt::format(", entry {}", e + 1);
+    return a.named_entries.empty() ? fmt::format(", its {} component", names[e]) : ", " + names[e];
   }
   return fmt::format(", entry ({}, {})", e / a.value.cols + 1, e % a.value.cols + 1);
 }

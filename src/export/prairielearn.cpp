@@ -1,11 +1,12 @@
 #include "export/prairielearn.hpp"
 
-#include <boost/uuid/name_generator_sha1.hpp>
-#include <boost/uuid/uuid_io.hpp>
 #include <fmt/format.h>
 
+#include <boost/uuid/name_generator_sha1.hpp>
+#include <boost/uuid/uuid_io.hpp>
 #include <nlohmann/json.hpp>
 
+#include "check/diagnosis.hpp"
 #include "export/html_text.hpp"
 #include "export/prairielearn_server_py.hpp"
 
@@ -20,6 +21,10 @@ json answer_json(const GradedAnswer& g) {
   for (const auto& m : g.mistakes) {
     mistakes.push_back({{"mistake", m.mistake}, {"values", m.values}, {"message", m.message}});
   }
+  // The judge's own names of the entries ("entry e₁", "c₁"), for the grader's feedback.
+  json entries = json::array();
+  for (std::size_t i = 0; i < a.value.data.size() && a.value.data.size() > 1; ++i)
+    entries.push_back(check::entry_name(a, i));
   return {{"input", input_name(g)},
           {"name", a.name},
           {"part", g.part},
@@ -30,6 +35,7 @@ json answer_json(const GradedAnswer& g) {
           {"cols", a.value.cols},
           {"unit", a.unit},
           {"value", a.value.data},
+          {"entries", entries},
           {"rel_tol", g.rel_tol},
           {"zero_scale", g.zero_scale},
           {"eigenspaces", g.eigenspaces},

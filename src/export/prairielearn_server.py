@@ -62,11 +62,8 @@ def _all_close(typed, expected, rules, answer):
 
 
 def _entry_name(answer, i):
-    if answer["shape"] == "vector":
-        if answer["kind"] == "principal_moments" and len(answer["value"]) == 3:
-            return "the " + ["smallest", "middle", "largest"][i] + " moment"
-        return "entry " + ("xyz"[i] if len(answer["value"]) == 3 else str(i + 1))
-    return "entry (%d, %d)" % (i // answer["cols"] + 1, i % answer["cols"] + 1)
+    # As wobble check names it: "entry e₁", "c₁", "the smallest moment", "entry (1, 2)".
+    return answer["entries"][i]
 
 
 def _how_far(answer, typed, rules):

@@ -57,6 +57,7 @@ nlohmann::ordered_json key_to_json(const Key& key) {
       entry["kind"] = kind_name(a.kind);
       if (a.frame != AnswerFrame::none) entry["frame"] = frame_name(a.frame);
       if (a.sign != SignConvention::none) entry["sign"] = sign_name(a.sign);
+      if (!a.named_entries.empty()) entry["entries"] = a.named_entries;
       entry["symbolic"] = a.symbolic.empty() ? J(nullptr) : J(a.symbolic);
       entry["latex"] = a.latex;
       entry["value"] = value_json(a.value);

@@ -199,6 +199,7 @@ std::vector<Step> euler_steps(const Asym& t, const std::vector<ex>& c) {
 Computed euler_coefficients(const Asym& t, const std::string& q) {
   const std::vector<ex> c = euler_c(t);
   Computed out{exact_vector(q, c, "", t.exact), euler_steps(t, c)};
+  out.answer.named_entries = {"c₁", "c₂", "c₃"};
   out.answer.notes.push_back(
       "dw1/dt = c1 w2 w3, dw2/dt = c2 w3 w1, dw3/dt = c3 w1 w2; c2 > 0 > c1, c3 for I1 < I2 "
       "< I3.");
@@ -220,6 +221,9 @@ Computed omega_pair(const Asym& t, const std::string& q) {
   const AxisSpin a = axis_spin(t, axis_of(q), t.spin);
   Computed out{exact_vector(q, {a.Omega_i, a.Omega_j}, "rad/s", t.exact),
                {{axis_steps_text(a), ""}}};
+  constexpr std::array<const char*, 3> kOmega{"Ω₁", "Ω₂", "Ω₃"};
+  out.answer.named_entries = {kOmega[static_cast<std::size_t>(a.i)],
+                              kOmega[static_cast<std::size_t>(a.j)]};
   out.answer.notes.push_back(
       fmt::format("(Ω{}, Ω{}) for spin at s = |w(0)| about e{}.", a.i + 1, a.j + 1, a.k + 1));
   return out;

@@ -133,6 +133,22 @@ const char* sign_name(SignConvention s) {
   return "?";
 }
 
+std::vector<std::string> entry_names(const Answer& a) {
+  if (a.value.shape != Value::Shape::vector || a.kind == AnswerKind::principal_moments) return {};
+  if (!a.named_entries.empty()) return a.named_entries;
+  if (a.value.data.size() != 3) return {};
+  switch (a.frame) {
+    case AnswerFrame::body:
+      return {"e₁", "e₂", "e₃"};
+    case AnswerFrame::primed:
+      return {"e₁′", "e₂′", "e₃′"};
+    case AnswerFrame::space:
+    case AnswerFrame::none:
+      break;
+  }
+  return {"x", "y", "z"};
+}
+
 const char* shape_name(Value::Shape s) {
   switch (s) {
     case Value::Shape::scalar: return "scalar";

@@ -114,7 +114,17 @@ struct Answer {
   /// Set by the solver for a least or greatest value (not in the JSON key: the quantity's
   /// description says it).
   AnswerBound bound = AnswerBound::none;
+  /// A vector's entries as its question names them, where it names them ("c₁", "c₂", "c₃" of
+  /// Euler's equations; "Ω₂", "Ω₃" of a pair): empty for components along axes (entry_names
+  /// gives those). Set by the solver; not in the JSON key.
+  std::vector<std::string> named_entries;
 };
+
+/// The names of a vector answer's entries, as its question writes them: its named_entries, else
+/// for three components its frame's axes ("x", "y", "z" of the fixed axes or of none; "e₁", "e₂",
+/// "e₃" of the body; "e₁′", "e₂′", "e₃′" of the line-of-nodes basis); empty for a matrix, a
+/// scalar, a list of moments, or a vector of another length without names (counted instead).
+std::vector<std::string> entry_names(const Answer& a);
 
 struct Step {
   Step(std::string text_, std::string latex_ = "", std::string label_ = "")

@@ -43,7 +43,7 @@ std::vector<QuantityInfo> quantity_infos(const std::vector<QuantityRow<Context>>
 
 /// Computes `quantity` by its row and stamps the row's kind, frame and sign on the answer.
 /// @throws std::logic_error for a quantity without a row (the loader refuses those, so this is a
-///         bug) or an answer whose unit is not the row's.
+///         bug), an answer whose unit is not the row's, or names for entries it does not have.
 template <class Context>
 Computed compute_quantity(const std::vector<QuantityRow<Context>>& rows, Context& context,
                           const std::string& quantity) {
@@ -54,6 +54,12 @@ Computed compute_quantity(const std::vector<QuantityRow<Context>>& rows, Context
     if (!registered_unit(r.info.unit, c.answer.unit)) {
       throw std::logic_error(quantity + ": computed in '" + c.answer.unit + "', registered in '" +
                              r.info.unit + "'");
+    }
+    if (!c.answer.named_entries.empty() &&
+        c.answer.named_entries.size() != c.answer.value.data.size()) {
+      throw std::logic_error(quantity + ": names for " +
+                             std::to_string(c.answer.named_entries.size()) + " entries, has " +
+                             std::to_string(c.answer.value.data.size()));
     }
     c.answer.quantity = quantity;
     c.answer.kind = r.info.kind;

@@ -40,6 +40,7 @@ std::string student_view_json(const Problem& problem, const Key& key, std::optio
                          {"kind", kind_name(a.kind)},
                          {"frame", frame_name(a.frame)},
                          {"shape", shape_name(a.value.shape)},
+                         {"entries", entry_names(a)},
                          {"rows", a.value.rows},
                          {"cols", a.value.cols}});
     }

@@ -720,7 +720,14 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
   CHECK_THAT(first(key.parts[0].answers[1], {2.0, 0.0, 6.0}, "kg m^2/s"),
              Catch::Contains("2 times the answer"));
   CHECK_THAT(first(key.parts[0].answers[1], {1.0, 0.0, 3.3}, "kg m^2/s"),
-             Catch::Contains("entry z is off by 10%"));
+             Catch::Contains("entry e₃ is off by 10%"));  // body frame: along e₁, e₂, e₃
+  CHECK_THAT(first(key.parts[0].answers[2], {2.0, 0.5, 2.75}, "kg m^2/s"),
+             Catch::Equals("entry z is off by 10%"));  // the fixed axes: x, y, z
+  // Entries the question names (c₁, c₂, c₃ of Euler's equations) are named so.
+  Answer named = L_space;
+  named.named_entries = {"c₁", "c₂", "c₃"};
+  CHECK_THAT(first(named, {2.0, 0.5, 2.75}, "kg m^2/s"), Catch::Equals("c₃ is off by 10%"));
+  CHECK_THAT(first(named, {0.5, 2.0, 2.5}, "kg m^2/s"), Catch::Contains("c₁ and c₂ are swapped"));
   Answer angle;
   angle.name = "alpha";
   angle.kind = AnswerKind::angle;
@@ -744,14 +751,14 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
   CHECK_THAT(first(space_rate, {3e-9}, "rad/s"), Catch::Contains("1/10^9 of the answer"));
   // One entry a power of ten off and the others right is no such mistake.
   CHECK_THAT(first(key.parts[0].answers[1], {10.0, 0.0, 3.0}, "kg m^2/s"),
-             Catch::Equals("entry x is 10 times its right value"));
+             Catch::Equals("entry e₁ is 10 times its right value"));
   CHECK_THAT(first(key.parts[0].answers[1], {1.0, 0.0, 25.0}, "kg m^2/s"),
-             Catch::Equals("entry z is off by 733%"));
+             Catch::Equals("entry e₃ is off by 733%"));
   // One entry's sign turned: said so, not "off by 200%"; a zero entry has no sign to turn.
   CHECK_THAT(first(key.parts[0].answers[1], {-1.0, 0.0, 3.0}, "kg m^2/s"),
-             Catch::Equals("entry x has the wrong sign"));
+             Catch::Equals("entry e₁ has the wrong sign"));
   CHECK_THAT(first(key.parts[0].answers[1], {-1.0, 0.0, 3.3}, "kg m^2/s"),
-             Catch::Equals("entry x has the wrong sign"));  // and entry z, off by 10%, next
+             Catch::Equals("entry e₁ has the wrong sign"));  // and entry e₃, off by 10%, next
   CHECK_THAT(first(key.parts[0].answers[1], {1.0, -0.5, 3.0}, "kg m^2/s"),
              !Catch::Contains("sign"));
   // The right entries in other places: swapped, in a cycle, a matrix transposed.

@@ -149,12 +149,12 @@ TEST_CASE("what an expression's dimension says, in the plate's symbols") {
   // A plain number's unit is not written: its size is what is wrong, not its dimension.
   const check::Verdict number_entry = f.check("L0_body", "[m R² ω sin α/4, 0, 0.02]");
   REQUIRE_FALSE(number_entry.correct);
-  CHECK(number_entry.feedback == std::vector<std::string>{"entry z is off by 43.8%"});
+  CHECK(number_entry.feedback == std::vector<std::string>{"entry e₃ is off by 43.8%"});
   // A vector: the entry of another dimension is named.
   const check::Verdict v = f.check("L0_body", "[m R^2 ω sin(α)/4, 0, m R ω cos(α)/2]");
   REQUIRE_FALSE(v.correct);
   REQUIRE(v.feedback.size() == 1);
   CHECK(v.feedback[0] ==
-        "entry z's dimension is mass x length / time; the answer is in kg m^2/s (mass x length^2 "
+        "entry e₃'s dimension is mass x length / time; the answer is in kg m^2/s (mass x length^2 "
         "/ time)");
 }

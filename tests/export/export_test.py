@@ -51,6 +51,7 @@ def flat(value):
 
 
 KEYS = {}
+ENTRIES = {}  # answer name -> the key's names of its entries
 
 
 def key_values(wobble, problem, number):
@@ -58,6 +59,7 @@ def key_values(wobble, problem, number):
     if number not in KEYS:
         key = json.loads(run([wobble, "solve", problem, "--variant", str(number), "--format", "json"]))
         KEYS[number] = {a["name"]: flat(a["value"]) for p in key["parts"] for a in p["answers"]}
+        ENTRIES.update({a["name"]: a.get("entries", []) for p in key["parts"] for a in p["answers"]})
     return KEYS[number]
 
 
@@ -203,7 +205,8 @@ def check_moodle(wobble, problem, quiz_file):
         # Round trip: "NAME" or "NAME, entry ..." against solve's values of that variant.
         parts = re.match(r"^\S+ \((\w+)\) (\w+)(.*)$", name)
         answer = parts.group(2)
-        entry = entry_index(parts.group(3))
+        key_values(wobble, problem, int(datasets["variant"][0]))  # the entries' names
+        entry = entry_index(parts.group(3), ENTRIES.get(answer, []))
         for number, value in zip(datasets["variant"], datasets["ans"]):
             want = key_values(wobble, problem, int(number))[answer][entry]
             if value != want:
@@ -212,15 +215,23 @@ def check_moodle(wobble, problem, quiz_file):
     return len(questions) - 1, checked
 
 
-def entry_index(words):
+def entry_index(words, names):
+    """The entry a question's name asks for: ", c₁" by the key's names for its entries, ", its
+    e₁ component" by axis, ", the smallest moment" by rank, ", entry (1, 2)" by position."""
     if not words:
         return 0
+    if words[2:] in names:
+        return names.index(words[2:])
     for i, rank in enumerate(("smallest", "middle", "largest")):
         if rank in words:
             return i
-    m = re.search(r"its ([xyz]) component", words)
+    m = re.search(r"its (\S+) component", words)
     if m:
-        return "xyz".index(m.group(1))
+        for axes in (("x", "y", "z"), ("e₁", "e₂", "e₃"), ("e₁′", "e₂′", "e₃′")):
+            if m.group(1) in axes:
+                return axes.index(m.group(1))
+        fail("moodle: no axis %r" % m.group(1))
+        return 0
     m = re.search(r"entry \((\d+), (\d+)\)", words)
     if m:
         return (int(m.group(1)) - 1) * 3 + int(m.group(2)) - 1

@@ -6,7 +6,8 @@
 For each variant in variants.json: generate() with PrairieLearn's data dict; then grade() of
 the key's own answers (score 1), of each listed mistake (score 0 with wobble's message), of a
 principal axis with its sign flipped and of the axes as rows (score 1), of moments in another
-order (score 1), and of each answer 3 tolerances off (score 0). Exits 1 naming the first
+order (score 1), of each answer 3 tolerances off (score 0), and of a vector with its last
+entry 3 tolerances off (score 0, the entry named as wobble check names it). Exits 1 naming the first
 difference; prints what it graded.
 """
 import copy
@@ -93,6 +94,14 @@ def main():
                     for m in a["mistakes"]):
                 expect("3 tolerances off", a["input"], off, 0)
                 counts["off"] += 1
+            if a["kind"] == "vector" and value[-1] != 0:
+                # One entry off: the feedback names it as wobble check does ("entry e₃", "c₃").
+                one_off = value[:-1] + [value[-1] * (1 + 3 * tol)]
+                if not any(all(abs(o - w) <= tol * abs(w) for o, w in zip(one_off, m["values"]))
+                           for m in a["mistakes"]):
+                    expect("last entry off", a["input"], one_off, 0,
+                           "incorrect: %s is off by %.3g%%" % (a["entries"][-1], 300 * tol))
+                    counts["entry named"] = counts.get("entry named", 0) + 1
             if a["kind"] == "principal_axes":
                 flipped = list(value)
                 for r in range(3):

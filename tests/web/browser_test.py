@@ -298,13 +298,17 @@ def main():
             wait_for(d, "canvas.view3d")
             fps[name] = check_view(d, name, shots)
             if name == "view-tennis-racket":
-                # Each label says how its answer is typed: the pairs (Ω₁, Ω₂) are no x, y, z.
+                # Each label says how its answer is typed, its entries as the question names
+                # them: the pair (Ω₂, Ω₃) and the coefficients c₁.. are no x, y, z, and the
+                # body's components are along e₁, e₂, e₃.
                 labels = {l.text.split()[0]: l.text
                           for l in d.find_elements(By.CSS_SELECTOR, ".answer label")}
-                expect(labels.get("Omega_axis1", "").endswith("(a vector [.., ..])"),
-                       "the pair's label: %r" % labels.get("Omega_axis1"))
-                expect(labels.get("dw_dt0", "").endswith("(a vector [x, y, z])"),
-                       "the vector's label: %r" % labels.get("dw_dt0"))
+                for name, form in (("Omega_axis1", "(a vector [Ω₂, Ω₃])"),
+                                   ("Omega_axis2", "(a vector [Ω₃, Ω₁])"),
+                                   ("euler_coefficients", "(a vector [c₁, c₂, c₃])"),
+                                   ("dw_dt0", "(a vector [.., .., ..] along e₁, e₂, e₃)")):
+                    expect(labels.get(name, "").endswith(form),
+                           "%s's label: %r" % (name, labels.get(name)))
         stage("3-D views done")
         # The instructor's page: the key under each answer, each one judged right pasted back.
         for other in (d, d2):

@@ -28,10 +28,15 @@ function el(tag, attrs, ...children) {
 }
 
 // Units as a reader writes them: kg m^2/s -> kg m²/s.
-// How a vector of n entries is typed: "[x, y, z]" for three (along the axes), "[.., ..]" for
-// the asymmetric top's pairs (Ω₁, Ω₂), which are no components along x and y.
-function vectorForm(n) {
-  return n === 3 ? '[x, y, z]' : '[' + Array(n).fill('..').join(', ') + ']';
+// How a vector is typed, its entries as the question names them (the server's `entries`):
+// "[c₁, c₂, c₃]" where it names them; along the fixed axes "[x, y, z]"; along other axes
+// "[.., .., ..] along e₁, e₂, e₃" (the body's components are no x, y, z); unnamed, "[.., ..]".
+function vectorForm(a) {
+  const names = a.entries || [];
+  const dots = '[' + Array(a.rows).fill('..').join(', ') + ']';
+  if (names.length !== a.rows) return dots;
+  if (a.frame === 'body' || a.frame === 'primed') return dots + ' along ' + names.join(', ');
+  return '[' + names.join(', ') + ']';
 }
 
 function prettyUnit(unit) {
@@ -204,8 +209,9 @@ function partView(id, variant, part, state, partKey, update) {
     });
     const unit = a.unit ? ' [' + prettyUnit(a.unit) + ']' : '';
     const shape = a.kind === 'principal_moments' ? ' (three moments [.., .., ..], in any order)' :
-                  a.shape === 'vector' ? ' (a vector ' + vectorForm(a.rows) + ')' :
-                  a.shape === 'matrix' ? ' (a matrix [' + Array(a.rows).fill('[..]').join(', ') + '])' : '';
+        a.shape === 'vector'                     ? ' (a vector ' + vectorForm(a) + ')' :
+        a.shape === 'matrix' ? ' (a matrix [' + Array(a.rows).fill('[..]').join(', ') + '])' :
+                               '';
     div.append(el('div', {class: 'answer'}, el('label', {}, a.name + unit + shape), input, verdict,
                   ...(keyed ? [keyLine(keyed)] : [])));
   }
