@@ -1,6 +1,7 @@
 #include "check/answer_choice.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
@@ -26,6 +27,13 @@ std::string answer_meant(const Context& ctx, const std::string& part_id, const s
     const std::string named = name_in_key(ctx.key, label);
     for (const auto& a : part->answers) {
       if (a.name == named) return a.name;
+    }
+  }
+  // Euler's equations, right or wrong, are an answer for their coefficients c₁, c₂, c₃.
+  if (written_as_euler_equations(ctx, text)) {
+    const std::vector<std::string> coefficients{"c₁", "c₂", "c₃"};
+    for (const auto& a : part->answers) {
+      if (a.named_entries == coefficients) return a.name;
     }
   }
   // Judged against each: an answer that cannot be read as one of them (its shape or unit is

@@ -753,8 +753,10 @@ Verdict judge_bound(const Context& ctx, const Answer& a, const Inequality& q, co
 
 }  // namespace
 
-Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
-              const Options& options) {
+namespace {
+
+// The answer as written, without what surrounds it.
+std::string written_answer(const Context& ctx, const std::string& text) {
   // "$$ m R^2/4 = 0.00072 $$": the delimiters are around both sides.
   // "Out[3]= 0.00072": a program's label of its result is no side of an '='.
   // "m*R**2/4  # disc": a comment, as a script has one after its line; "303.6 days (Euler's
@@ -764,8 +766,25 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
            sym::greek_letters().count(ascii_lower(w)) > 0;
   };
   // "eigenvalues: 0.569, ..", "I1: 0.569, I2: ..": labels before a ':', as one writes an answer.
-  const std::string written = without_colon_labels(without_output_label(
+  return without_colon_labels(without_output_label(
       without_math_delimiters(without_remark(without_comments(text), known_word))));
+}
+
+}  // namespace
+
+bool written_as_euler_equations(const Context& ctx, const std::string& text) {
+  try {
+    return read_euler_equations(euler_equations_as_text(written_answer(ctx, text), ctx.table),
+                                kField)
+        .has_value();
+  } catch (const InputError&) {
+    return true;  // equations, but not one for each component: the judge says which
+  }
+}
+
+Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
+              const Options& options) {
+  const std::string written = written_answer(ctx, text);
   // "±9.131 1/s", "(I3ω3 ± √(..))/(2 I1 cos θ)": the roots of a quadratic, two answers.
   if (const auto signs = sign_readings(written)) return judge_signs(ctx, a, *signs, options);
   // "dω₁/dt = -0.9651 ω₂ ω₃, ..": Euler's equations for their coefficients, as the question asks

@@ -67,6 +67,10 @@ double zero_scale(const Key& key, const Answer& a);
 /// The options `a` is judged with: the problem file's tolerance for it, unless the user gave one.
 Options options_for(const Answer& a, const Options& options);
 
+/// Whether `text` is Euler's equations written out, "dω₁/dt = c₁ ω₂ ω₃, ..", right or wrong
+/// (check/euler_equations.hpp): an answer for the coefficients c₁, c₂, c₃.
+bool written_as_euler_equations(const Context& ctx, const std::string& text);
+
 /// @throws InputError for an empty or unreadable answer, a wrong shape (a vector for a number),
 ///   or an unreadable unit.
 Verdict judge(const Context& ctx, const Answer& expected, const std::string& text,

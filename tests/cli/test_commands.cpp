@@ -273,6 +273,16 @@ TEST_CASE(
           "correct: euler_coefficients\n"
           "  read as the coefficients of Euler's equations: (c₁, c₂, c₃) = [-1/2, 2/3, -1/4]\n");
   REQUIRE(judged("(-0.5, 1, -0.015) rad/s²").out == "correct: dw_dt0\n");
+  // Euler's equations wrong are still the coefficients': judged so, the wrong one named.
+  const RunResult wrong_equations =
+      judged("dw1/dt = -0.5 w2 w3, dw2/dt = 0.7 w3 w1, dw3/dt = -0.25 w1 w2");
+  REQUIRE(wrong_equations.exit_code == 1);
+  REQUIRE_THAT(wrong_equations.out, Catch::StartsWith("incorrect: euler_coefficients\n") &&
+                                        Catch::Contains("c₂ is off by 5%"));
+  const RunResult wrong_products =
+      judged("dω₁/dt = -0.5 ω₂ ω₃, dω₂/dt = (2/3) ω₃ ω₁, dω₃/dt = -0.25 ω₁ ω₃");
+  REQUIRE(wrong_products.exit_code == 1);
+  REQUIRE_THAT(wrong_products.out, Catch::Contains("dω₃/dt = c₃ ω₁ ω₂, and yours has ω₁ ω₃"));
   // Right for neither, and no label: the name is asked for, nothing judged.
   const RunResult neither = judged("[1, 2, 3]");
   REQUIRE(neither.exit_code == 2);
