@@ -772,6 +772,34 @@ std::string written_answer(const Context& ctx, const std::string& text) {
 
 }  // namespace
 
+namespace {
+
+// The answer judged; where right, the bracket's value too, which must be right as well (a
+// bracket no value reads from is a remark, and the verdict says it was not judged).
+Verdict judge_restated(const Context& ctx, const Answer& a, const Restatement& r,
+                       const Options& options) {
+  // One bracket: "1 (= 1) (= 1) .." would judge itself again, bracket by bracket.
+  if (const auto twice = restatement_of(r.answer)) {
+    throw InputError(fmt::format("{}: {} and {}: the answer again in one bracket, not two", kField,
+                                 twice->bracket, r.bracket));
+  }
+  Verdict v = judge(ctx, a, r.answer, options);
+  if (!v.correct) return v;
+  try {
+    Verdict again = judge_one(ctx, a, r.again, options);
+    if (!again.correct) {
+      again.feedback.insert(again.feedback.begin(),
+                            "your bracket \"" + r.bracket + "\" gives another value");
+      return again;
+    }
+  } catch (const InputError&) {
+    v.feedback.push_back("your bracket \"" + r.bracket + "\" is taken as a remark, not judged");
+  }
+  return v;
+}
+
+}  // namespace
+
 bool written_as_euler_equations(const Context& ctx, const std::string& text) {
   try {
     return read_euler_equations(euler_equations_as_text(written_answer(ctx, text), ctx.table),
@@ -785,6 +813,8 @@ bool written_as_euler_equations(const Context& ctx, const std::string& text) {
 Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
               const Options& options) {
   const std::string written = written_answer(ctx, text);
+  // "118.8 rad/s (about 1134 rpm)": the answer and the same again, each judged.
+  if (const auto r = restatement_of(written)) return judge_restated(ctx, a, *r, options);
   // "±9.131 1/s", "(I3ω3 ± √(..))/(2 I1 cos θ)": the roots of a quadratic, two answers.
   if (const auto signs = sign_readings(written)) return judge_signs(ctx, a, *signs, options);
   // "dω₁/dt = -0.9651 ω₂ ω₃, ..": Euler's equations for their coefficients, as the question asks

@@ -365,6 +365,37 @@ std::string without_remark(const std::string& typed,
   return trim(t.substr(0, open));
 }
 
+std::optional<Restatement> restatement_of(const std::string& typed) {
+  const std::string t = trim(typed);
+  if (t.size() < 3 || t.back() != ')') return std::nullopt;
+  // The '(' that the last ')' closes: "(about 1.5 (rad/s))" is one bracket.
+  std::size_t open = t.size() - 1;
+  for (int depth = 0;; --open) {
+    if (t[open] == ')') ++depth;
+    if (t[open] == '(' && --depth == 0) break;
+    if (open == 0) return std::nullopt;
+  }
+  if (open == 0 || t[open - 1] != ' ') return std::nullopt;
+  const std::string inside = trim(t.substr(open + 1, t.size() - open - 2));
+  static const std::array<const char*, 20> kLeads{
+      "about ",   "approx. ",  "approx ", "approximately ",
+      "roughly ", "around ",   "circa ",  "ca. ",
+      "nearly ",  "i.e. ",     "i.e., ",  "ie ",
+      "that is ", "that is, ", "or ",     "=",
+      "≈",        "≃",         "∼",       "~"};
+  for (const char* lead : kLeads) {
+    const std::string l = lead;
+    if (inside.size() <= l.size() || ascii_lower(inside.substr(0, l.size())) != l) continue;
+    const std::string again = trim(inside.substr(l.size()));
+    const bool number =
+        !again.empty() && (is_digit(again[0]) || again[0] == '.' || again[0] == '-' ||
+                           again[0] == '+' || again.rfind("−", 0) == 0);
+    if (!number) return std::nullopt;
+    return Restatement{trim(t.substr(0, open)), again, t.substr(open)};
+  }
+  return std::nullopt;
+}
+
 std::string without_output_label(const std::string& s) {
   const std::string t = trim(s);
   if (t.compare(0, 4, "Out[") != 0) return s;

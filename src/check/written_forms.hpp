@@ -75,6 +75,21 @@ std::string without_remark(const std::string& typed,
 /// "Out[3]//N= 0.00072" or "Out[3]: 0.00072"; `typed` itself when it has no such label.
 std::string without_output_label(const std::string& typed);
 
+/// An answer given again, in another unit or rounded, in a bracket after it, as one writes it:
+/// "118.8 rad/s (about 1134 rpm)", "(≈ 1134 rpm)", "(i.e. 18.9 Hz)", "(or 0.0811 kg m²/s)".
+struct Restatement {
+  std::string answer;   ///< "118.8 rad/s"
+  std::string again;    ///< "1134 rpm"
+  std::string bracket;  ///< "(about 1134 rpm)", as typed
+};
+
+/// The restatement in `typed`: its last bracket, after a space, holding a lead (about, approx.,
+/// approximately, roughly, around, circa, ca., nearly, i.e., that is, or, =, ≈, ≃, ∼, ~) and
+/// then a number (a digit,
+/// a point or a sign first). nullopt otherwise: "(about the centre)" is a remark in words
+/// (without_remark), "2 (m R)" a product.
+std::optional<Restatement> restatement_of(const std::string& typed);
+
 /// Labels before a ':' as one writes an answer down: "0.569, 4.209, 4.556" for "eigenvalues:
 /// 0.569, 4.209, 4.556" (a label of up to four words, letters first, no operator or bracket),
 /// and components labelled so as with '=', "I1 = 0.569, I2 = 4.209" for "I1: 0.569, I2: 4.209".

@@ -14,6 +14,7 @@
 #include "check/check_fixture.hpp"
 #include "check/inequality.hpp"
 #include "check/judge.hpp"
+#include "check/written_forms.hpp"
 #include "core/input_error.hpp"
 #include "solvers/catalog.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -1590,4 +1591,41 @@ TEST_CASE("principal moments given as the diagonal tensor are read as its diagon
   REQUIRE_THROWS_WITH(box.check("principal_moments_corner", box.answer("I_corner").symbolic),
                       Catch::Contains("the principal moments are this matrix's eigenvalues") &&
                           !Catch::Contains("decimal comma"));
+}
+
+TEST_CASE(
+    "an answer restated in a bracket after it is judged twice, the bracket a remark only "
+    "where no value reads from it") {
+  const Fixture top("heavy-top");
+  const double least_rad_s = top.answer("omega3_min").value.data[0];
+  const std::string least = fmt::format("{:.6g} rad/s", least_rad_s);
+  // The same spin in turns per minute: rad/s x 60 / (2 pi).
+  const std::string rpm = fmt::format("{:.4g} rpm", least_rad_s * 60 / (2 * M_PI));
+  for (const std::string& right : {least + " (about " + rpm + ")", least + " (≈ " + rpm + ")",
+                                   least + " (i.e. " + rpm + ")", least + " (= " + rpm + ")"}) {
+    INFO(right);
+    const auto v = top.check("omega3_min", right);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback.empty());
+  }
+  // The restatement wrong: wrong, and said to be the bracket's.
+  const auto wrong = top.check("omega3_min", least + " (about 2000 rpm)");
+  REQUIRE_FALSE(wrong.correct);
+  REQUIRE(wrong.feedback.at(0) == "your bracket \"(about 2000 rpm)\" gives another value");
+  // The answer wrong: wrong whatever the bracket says.
+  REQUIRE_FALSE(top.check("omega3_min", "200 rad/s (about " + rpm + ")").correct);
+  // A bracket that reads as no value is a remark, said not to be judged.
+  const auto remark = top.check("omega3_min", least + " (about 1134 turns a minute)");
+  REQUIRE(remark.correct);
+  REQUIRE(remark.feedback.back() ==
+          "your bracket \"(about 1134 turns a minute)\" is taken as a remark, not judged");
+  // Two brackets: one is asked for, nothing judged.
+  REQUIRE_THROWS_WITH(top.check("omega3_min", least + " (≈ " + rpm + ") (= 19 Hz)"),
+                      "--answer: (≈ " + rpm +
+                          ") and (= 19 Hz): the answer again in one bracket, "
+                          "not two");
+  // Words only stay a remark; a product stays a product.
+  REQUIRE(top.check("omega3_min", least + " (about the vertical)").correct);
+  REQUIRE_FALSE(wobble::check::restatement_of("2 (m R)").has_value());
+  REQUIRE_FALSE(wobble::check::restatement_of("2 (about m R)").has_value());
 }
