@@ -195,6 +195,16 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
   CHECK_THAT(post_check(c, "flying-plate", {{"part", "a"}, {"answer", right}}, 404)["error"]
                  .get<std::string>(),
              Equals("name: part a has several answers; name one (I0, I)"));
+  // Euler's equations, one coefficient wrong, are the coefficients' answer, and the view names
+  // the entries as the question does (c₁ .. c₃; the body's components along e₁ .. e₃).
+  const json equations = post_check(
+      c, "asymmetric-top",
+      {{"part", "a"}, {"answer", "dω₁/dt = −½ ω₂ω₃, dω₂/dt = 0.7 ω₃ω₁, dω₃/dt = −¼ ω₁ω₂"}});
+  CHECK(equations["verdict"] == "incorrect: euler_coefficients");
+  CHECK(equations["feedback"][0] == "c₂ is off by 5%");
+  const json answers_a = get_json(c, "/api/problems/asymmetric-top")["parts"][0]["answers"];
+  CHECK(answers_a[0]["entries"] == json{"c₁", "c₂", "c₃"});
+  CHECK(answers_a[1]["entries"] == json{"e₁", "e₂", "e₃"});
   CHECK_THAT(post_check(c, "flying-plate", {{"answer", right}}, 400)["error"].get<std::string>(),
              StartsWith("part or name: neither is given") &&
                  Contains("(answers: (a) I0, I; (b) L0_body, L0_space; "));
