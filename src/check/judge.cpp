@@ -181,6 +181,17 @@ std::string name_hint(const Context& ctx, const std::string& name) {
                            ? "the answer " + named[0]
                            : "the answers " + fmt::format("{}", fmt::join(named, ", ")));
   }
+  // "ω̇₂ ω₃" on a right side of Euler's equations: a derivative where a component belongs.
+  for (const std::string component : {"1", "2", "3"}) {
+    for (const std::string& spelt : {"omegadot" + component, "wdot" + component,
+                                     "omega" + component + "dot", "w" + component + "dot"}) {
+      if (name != spelt) continue;
+      return fmt::format(
+          " (dω{}/dt is no symbol here: in Euler's equations each right side is a coefficient "
+          "times the other two components, dω₁/dt = c₁ ω₂ ω₃)",
+          std::array<const char*, 3>{"₁", "₂", "₃"}[static_cast<std::size_t>(component[0] - '1')]);
+    }
+  }
   const std::string words = textbook_name_words(name);
   if (words.empty()) return "";
   return fmt::format(" ({}, {}, is no symbol here: write it in the problem's symbols)", name,

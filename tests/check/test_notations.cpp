@@ -1629,3 +1629,19 @@ TEST_CASE(
   REQUIRE_FALSE(wobble::check::restatement_of("2 (m R)").has_value());
   REQUIRE_FALSE(wobble::check::restatement_of("2 (about m R)").has_value());
 }
+
+TEST_CASE("a derivative on a right side of Euler's equations is named, not another symbol") {
+  // The asymmetric top writes ω's components w1, w2, w3: the hint is about ω̇₂, the name the
+  // reader could not read, not about the ω₃ beside it.
+  const Fixture top("asymmetric-top");
+  for (const std::string& typed :
+       {std::string("ω̇₁ = ω̇₂ ω₃, ω̇₂ = ω₃ ω₁, ω̇₃ = ω₁ ω₂"),
+        std::string("dw1/dt = w2dot w3, dw2/dt = w3 w1, dw3/dt = w1 w2")}) {
+    INFO(typed);
+    REQUIRE_THROWS_WITH(top.check("euler_coefficients", typed),
+                        Catch::Contains("(dω₂/dt is no symbol here: in Euler's equations each "
+                                        "right side is a coefficient times the other two "
+                                        "components, dω₁/dt = c₁ ω₂ ω₃)") &&
+                            !Catch::Contains("omega3"));
+  }
+}
