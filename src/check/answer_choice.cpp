@@ -1,7 +1,6 @@
 #include "check/answer_choice.hpp"
 
 #include <algorithm>
-#include <vector>
 
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
@@ -31,9 +30,8 @@ std::string answer_meant(const Context& ctx, const std::string& part_id, const s
   }
   // Euler's equations, right or wrong, are an answer for their coefficients c₁, c₂, c₃.
   if (written_as_euler_equations(ctx, text)) {
-    const std::vector<std::string> coefficients{"c₁", "c₂", "c₃"};
     for (const auto& a : part->answers) {
-      if (a.named_entries == coefficients) return a.name;
+      if (a.named_entries == kEulerCoefficients) return a.name;
     }
   }
   // Judged against each: an answer that cannot be read as one of them (its shape or unit is

@@ -182,14 +182,16 @@ std::string name_hint(const Context& ctx, const std::string& name) {
                            : "the answers " + fmt::format("{}", fmt::join(named, ", ")));
   }
   // "ω̇₂ ω₃" on a right side of Euler's equations: a derivative where a component belongs.
-  for (const std::string component : {"1", "2", "3"}) {
-    for (const std::string& spelt : {"omegadot" + component, "wdot" + component,
-                                     "omega" + component + "dot", "w" + component + "dot"}) {
+  constexpr std::array<const char*, 3> kSubscripts{"₁", "₂", "₃"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::string n = std::to_string(i + 1);
+    for (const std::string& spelt :
+         {"omegadot" + n, "wdot" + n, "omega" + n + "dot", "w" + n + "dot"}) {
       if (name != spelt) continue;
       return fmt::format(
           " (dω{}/dt is no symbol here: in Euler's equations each right side is a coefficient "
           "times the other two components, dω₁/dt = c₁ ω₂ ω₃)",
-          std::array<const char*, 3>{"₁", "₂", "₃"}[static_cast<std::size_t>(component[0] - '1')]);
+          kSubscripts[i]);
     }
   }
   const std::string words = textbook_name_words(name);
@@ -780,10 +782,6 @@ std::string written_answer(const Context& ctx, const std::string& text) {
   return without_colon_labels(without_output_label(
       without_math_delimiters(without_remark(without_comments(text), known_word))));
 }
-
-}  // namespace
-
-namespace {
 
 // The answer judged; where right, the bracket's value too, which must be right as well (a
 // bracket no value reads from is a remark, and the verdict says it was not judged).

@@ -85,9 +85,8 @@ struct Restatement {
 
 /// The restatement in `typed`: its last bracket, after a space, holding a lead (about, approx.,
 /// approximately, roughly, around, circa, ca., nearly, i.e., that is, or, =, ≈, ≃, ∼, ~) and
-/// then a number (a digit,
-/// a point or a sign first). nullopt otherwise: "(about the centre)" is a remark in words
-/// (without_remark), "2 (m R)" a product.
+/// then a number (a digit, a point or a sign first). nullopt otherwise: "(about the centre)" is a
+/// remark in words (without_remark), "2 (m R)" a product.
 std::optional<Restatement> restatement_of(const std::string& typed);
 
 /// Labels before a ':' as one writes an answer down: "0.569, 4.209, 4.556" for "eigenvalues:

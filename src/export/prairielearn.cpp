@@ -23,8 +23,10 @@ json answer_json(const GradedAnswer& g) {
   }
   // The judge's own names of the entries ("entry e₁", "c₁"), for the grader's feedback.
   json entries = json::array();
-  for (std::size_t i = 0; i < a.value.data.size() && a.value.data.size() > 1; ++i)
-    entries.push_back(check::entry_name(a, i));
+  if (a.value.data.size() > 1) {
+    for (std::size_t i = 0; i < a.value.data.size(); ++i)
+      entries.push_back(check::entry_name(a, i));
+  }
   return {{"input", input_name(g)},
           {"name", a.name},
           {"part", g.part},

@@ -199,7 +199,7 @@ std::vector<Step> euler_steps(const Asym& t, const std::vector<ex>& c) {
 Computed euler_coefficients(const Asym& t, const std::string& q) {
   const std::vector<ex> c = euler_c(t);
   Computed out{exact_vector(q, c, "", t.exact), euler_steps(t, c)};
-  out.answer.named_entries = {"c₁", "c₂", "c₃"};
+  out.answer.named_entries = kEulerCoefficients;
   out.answer.notes.push_back(
       "dw1/dt = c1 w2 w3, dw2/dt = c2 w3 w1, dw3/dt = c3 w1 w2; c2 > 0 > c1, c3 for I1 < I2 "
       "< I3.");

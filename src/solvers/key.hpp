@@ -114,11 +114,15 @@ struct Answer {
   /// Set by the solver for a least or greatest value (not in the JSON key: the quantity's
   /// description says it).
   AnswerBound bound = AnswerBound::none;
-  /// A vector's entries as its question names them, where it names them ("c₁", "c₂", "c₃" of
-  /// Euler's equations; "Ω₂", "Ω₃" of a pair): empty for components along axes (entry_names
-  /// gives those). Set by the solver; not in the JSON key.
+  /// A vector's entries as its question names them, where it names them (kEulerCoefficients;
+  /// "Ω₂", "Ω₃" of a pair): empty for components along axes (entry_names gives those). Set by
+  /// the solver; the JSON key lists them as "entries".
   std::vector<std::string> named_entries;
 };
+
+/// The entries of the coefficients c in Euler's equations dω₁/dt = c₁ ω₂ ω₃, ..: the answer
+/// that bears these names is the one Euler's equations written out answer (check/answer_choice).
+inline const std::vector<std::string> kEulerCoefficients{"c₁", "c₂", "c₃"};
 
 /// The names of a vector answer's entries, as its question writes them: its named_entries, else
 /// for three components its frame's axes ("x", "y", "z" of the fixed axes or of none; "e₁", "e₂",

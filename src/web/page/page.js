@@ -209,9 +209,8 @@ function partView(id, variant, part, state, partKey, update) {
     });
     const unit = a.unit ? ' [' + prettyUnit(a.unit) + ']' : '';
     const shape = a.kind === 'principal_moments' ? ' (three moments [.., .., ..], in any order)' :
-        a.shape === 'vector'                     ? ' (a vector ' + vectorForm(a) + ')' :
-        a.shape === 'matrix' ? ' (a matrix [' + Array(a.rows).fill('[..]').join(', ') + '])' :
-                               '';
+                  a.shape === 'vector' ? ' (a vector ' + vectorForm(a) + ')' :
+                  a.shape === 'matrix' ? ' (a matrix [' + Array(a.rows).fill('[..]').join(', ') + '])' : '';
     div.append(el('div', {class: 'answer'}, el('label', {}, a.name + unit + shape), input, verdict,
                   ...(keyed ? [keyLine(keyed)] : [])));
   }
