@@ -142,6 +142,30 @@ std::string calls_unspaced(const std::string& s) {
   return out + s.substr(done);
 }
 
+// "sqrt2" -> "sqrt(2)", "1/sqrt3": a root of a number typed as √2 is printed, without brackets.
+// Only sqrt: "cos2 x" may mean cos(2x) or cos(2) x, and stays an unknown name.
+std::string roots_of_numbers(const std::string& s) {
+  std::string out;
+  std::size_t done = 0;
+  for (const auto& [start, length] : identifiers(s)) {
+    constexpr std::string_view kRoot = "sqrt";
+    const std::string_view name = std::string_view(s).substr(start, length);
+    if (name.size() <= kRoot.size() || name.substr(0, kRoot.size()) != kRoot ||
+        name.find_first_not_of("0123456789", kRoot.size()) != std::string_view::npos)
+      continue;
+    std::size_t end = start + length;  // a decimal part too: "sqrt2.5"
+    if (end + 1 < s.size() && s[end] == '.' &&
+        std::isdigit(static_cast<unsigned char>(s[end + 1]))) {
+      ++end;
+      while (end < s.size() && std::isdigit(static_cast<unsigned char>(s[end]))) ++end;
+    }
+    out += s.substr(done, start - done) + "sqrt(" +
+           s.substr(start + kRoot.size(), end - start - kRoot.size()) + ")";
+    done = end;
+  }
+  return out + s.substr(done);
+}
+
 // "cos^2(alpha)" -> "cos(alpha)^2", as textbooks write a power of a trigonometric or hyperbolic
 // function (and "cos²(α)" arrives here so). Only a positive whole power: cos^-1 is arccos in
 // some books and cos(x)^(-1) in others, so it stays an error.
@@ -351,7 +375,7 @@ std::string prepared(const std::string& typed, const std::string& field) {
   // Python's and Fortran's power, "R**2": GiNaC's '^'.
   for (std::size_t at = s.find("**"); at != std::string::npos; at = s.find("**", at))
     s.replace(at, 2, "^");
-  s = function_powers(sym::numbers_times_constants(times_ten(calls_unspaced(s))));
+  s = function_powers(sym::numbers_times_constants(times_ten(calls_unspaced(roots_of_numbers(s)))));
   // "10^-4" -> "10^(-4)": a signed number after '^' (no std::regex: GCC 12 warns inside it).
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {

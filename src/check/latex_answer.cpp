@@ -526,7 +526,9 @@ class Reader {
     }
     const Piece x = argument(depth);
     const bool symbolic = x.symbolic || (index && index->symbolic);
-    if (!index) return {"sqrt" + x.text, symbolic, false};
+    // A digit's argument comes unbracketed (\sqrt2, \sqrt 3); a group's in brackets.
+    const std::string radicand = x.text.front() == '(' ? x.text : "(" + x.text + ")";
+    if (!index) return {"sqrt" + radicand, symbolic, false};
     return {"(" + x.text + "^(1/(" + index->text + ")))", symbolic, false};
   }
 

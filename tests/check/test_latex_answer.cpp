@@ -49,6 +49,10 @@ TEST_CASE("LaTeX constructs become plain text with their products written out") 
   REQUIRE(text("\\cos^{2}\\left(\\alpha\\right)") == "cos(alpha)^(2)");
   REQUIRE(text("\\sqrt{m}\\,R") == "sqrt(m)*R");
   REQUIRE(text("\\sqrt[3]{m}") == "((m)^(1/(3)))");
+  // A digit is an argument whole, as TeX reads it: \sqrt2, \sqrt 23 (the 3 a factor after).
+  REQUIRE(text("\\sqrt2") == "sqrt(2)");
+  REQUIRE(text("\\sqrt 23") == "sqrt(2)*3");
+  REQUIRE(text("\\frac1{\\sqrt2}") == "(1/(sqrt(2)))");
   REQUIRE(text("\\left|\\omega\\right| \\cdot R") == "abs(omega)*R");
   REQUIRE(text("|R| \\times m") == "abs(R)*m");
   REQUIRE(text("\\bigl(m + R\\bigr)\\big/ 2") == "(m+R)/2");

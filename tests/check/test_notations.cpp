@@ -1102,6 +1102,10 @@ TEST_CASE("principal axes listed one by one are the axes, with a factor or along
         "x̂ + ŷ, x̂ − ŷ, ẑ", "[x̂ + ŷ, x̂ − ŷ, ẑ]", "{x̂ + ŷ, x̂ − ŷ, ẑ}", "(x̂ + ŷ)/√2, (x̂ − ŷ)/√2, ẑ",
         "e1 = (1, 1, 0)/√2, e2 = (1, -1, 0)/√2, e3 = (0, 0, 1)",
         "\\frac{1}{\\sqrt{2}}(1,1,0), \\frac{1}{\\sqrt{2}}(1,-1,0), (0,0,1)",
+        // A root of a digit without brackets, as TeX and a keyboard allow.
+        "\\frac1{\\sqrt2}(1,1,0), \\frac{1}{\\sqrt 2}(1,-1,0), (0,0,1)",
+        "e1=(i+j)/sqrt2, e2=(i-j)/sqrt2, e3=k",
+        "[1/sqrt2, 1/sqrt2, 0], [sqrt2/2, -sqrt(2)/2, 0], [0, 0, 1]",
         "[1, 1, 0], [1, -1, 0], [0, 0, 1]"}) {
     INFO(same);
     REQUIRE(masses.check("principal_axes", same).correct);
