@@ -1237,6 +1237,11 @@ TEST_CASE("principal axes by meaning: rows or columns, any order, any length, ea
   const Verdict rows = four.check("principal_axes", "[0, 0, 1], [1, 1, 0], [1, -1, 0]");
   REQUIRE(rows.correct);
   REQUIRE_THAT(rows.line, Catch::Contains("as rows"));
+  // Not unit vectors: right as directions, and the verdict says the key's are unit.
+  REQUIRE_THAT(rows.line, Catch::Contains("up to sign and length; the key's axes are unit"));
+  const Verdict unit_rows = four.check("principal_axes", "[0, 0, 1], [1, 1, 0]/√2, [1, -1, 0]/√2");
+  REQUIRE(unit_rows.correct);
+  REQUIRE_THAT(unit_rows.line, Catch::EndsWith("each up to sign)"));
   const Verdict columns = four.check("principal_axes", "[[0, 1, 1], [0, 1, -1], [5, 0, 0]]");
   REQUIRE(columns.correct);
   REQUIRE_THAT(columns.line, Catch::Contains("as columns"));
