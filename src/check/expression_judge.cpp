@@ -365,6 +365,30 @@ std::optional<std::string> degrees_in_numbers(const Judge& j, const std::string&
   return replacements_named(j.ctx, plain, numbers_as_degrees(plain), kDegreesSaid, is_key);
 }
 
+namespace {
+// The entries of `mine` that are the key's plus 2π k, k a nonzero whole number (k from the set
+// values, the identity proved), named; none unless every other entry is proved the key's.
+std::vector<std::string> turned_entries(const Context& ctx, const Answer& a,
+                                        const sym::ValueText& mine, const sym::ValueText& key) {
+  std::vector<double> got, want;
+  try {
+    std::tie(got, want) = at_point(ctx, a, mine, key, ctx.values);
+  } catch (const InputError&) {
+    return {};
+  }
+  std::vector<std::string> moved;
+  for (std::size_t i = 0; i < key.entries.size(); ++i) {
+    const double turns = std::round((got[i] - want[i]) / (2 * M_PI));
+    constexpr double kMostTurns = 1e6;  // a whole number in a long, far past any answer's
+    if (!(std::abs(turns) <= kMostTurns)) return {};
+    const GiNaC::ex two_pi_k = GiNaC::numeric(2 * static_cast<long>(turns)) * GiNaC::Pi;
+    if (!sym::is_identically_zero(mine.entries[i] - key.entries[i] - two_pi_k)) return {};
+    if (turns != 0.0) moved.push_back(entry_name(a, i));
+  }
+  return moved;
+}
+}  // namespace
+
 Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& typed,
                        const ReadAnswer& p, const Options& opt, AxesLayout layout) {
   const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
@@ -382,6 +406,12 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
   }
   if (proved)
     return {true, "correct: " + a.name + " (your expression simplifies to the key's)", {}};
+  // Euler angles up to whole turns: an entry proved to be the key's plus 2π k.
+  if (angles_up_to_turns(a)) {
+    if (const auto moved = turned_entries(ctx, a, p.value, key); !moved.empty()) {
+      return {true, "correct: " + a.name + whole_turns_note(moved), {}};
+    }
+  }
   // The set values first.
   const std::vector<sym::Values> points =
       judging_points(ctx.values, ctx.key.held, key_values(ctx, a, key));

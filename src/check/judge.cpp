@@ -299,7 +299,43 @@ void check_shape(const Answer& a, const sym::ValueText& v, const std::string& ty
 }
 }  // namespace
 
+bool angles_up_to_turns(const Answer& a) {
+  return a.kind == AnswerKind::vector && a.unit == "rad";
+}
+
 namespace detail {
+OnKeysTurns on_keys_turns(const Judge& j, const std::vector<double>& got) {
+  const Answer& a = j.a;
+  OnKeysTurns out{got, {}, got};
+  if (!angles_up_to_turns(a) || got.size() != a.value.data.size()) return out;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const double key = a.value.data[i], turns = std::round((got[i] - key) / (2 * M_PI));
+    const double moved = got[i] - turns * (2 * M_PI);
+    if (std::abs(turns) == 1.0) out.for_diagnosis[i] = moved;
+    if (turns == 0.0 || !j.close(moved, key)) continue;
+    out.values[i] = out.for_diagnosis[i] = moved;
+    out.moved.push_back(entry_name(a, i));
+  }
+  // Only where every entry is then near the key's: 1000 times (40°, 30°, 70°) has 40° again in
+  // 40000°, yet is a power of ten off, which the typed values show.
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    if (!(std::abs(out.for_diagnosis[i] - a.value.data[i]) <= M_PI / 2)) {
+      out.for_diagnosis = got;
+      break;
+    }
+  }
+  return out;
+}
+
+std::string whole_turns_note(const std::vector<std::string>& moved) {
+  std::string names;
+  for (std::size_t i = 0; i < moved.size(); ++i)
+    names += (i == 0 ? "" : i + 1 == moved.size() ? " and " : ", ") + moved[i];
+  const bool one = moved.size() == 1;
+  return " (" + names + (one ? " differs" : " differ") +
+         " from the key's by whole turns: the same angle" + (one ? ")" : "s)");
+}
+
 // Principal axes by meaning (axes_judge.hpp): the sine of the angle within the tolerance.
 Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got) {
   const auto& moments = j.a.axis_moments;
@@ -608,6 +644,18 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
     const std::string note =
         a.kind == AnswerKind::principal_moments && compare != got ? " (in any order)" : "";
     return {true, "correct: " + a.name + note, {}};
+  }
+  if (const detail::OnKeysTurns turned = detail::on_keys_turns(j, compare);
+      turned.for_diagnosis != compare) {
+    if (j.all_close(turned.values, a.value.data)) {
+      return {true, "correct: " + a.name + detail::whole_turns_note(turned.moved), {}};
+    }
+    // A known mistake is named from what was typed (degrees for radians); else an entry one
+    // turn off is judged from the key's range.
+    const auto mistakes = wrong_answers(a, ctx.key, key_unit);
+    if (std::none_of(mistakes.begin(), mistakes.end(),
+                     [&](const WrongAnswer& w) { return j.all_close(compare, w.values); }))
+      compare = turned.for_diagnosis;
   }
   if (const auto degrees = detail::degrees_in_numbers(j, text, to_key))
     return {false, "incorrect: " + a.name, {*degrees}};

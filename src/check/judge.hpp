@@ -64,6 +64,10 @@ struct Context {
 /// key (1 if there is none).
 double zero_scale(const Key& key, const Answer& a);
 
+/// Whether `a` is a triple of Euler angles, each the same up to whole turns (ψ = 340° is ψ =
+/// −20°): a vector in rad. The judge takes an entry whole turns off the key's as the key's.
+bool angles_up_to_turns(const Answer& a);
+
 /// The options `a` is judged with: the problem file's tolerance for it, unless the user gave one.
 Options options_for(const Answer& a, const Options& options);
 

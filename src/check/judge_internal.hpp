@@ -50,6 +50,24 @@ struct Judge {
 /// Principal axes by meaning (axes_judge.hpp): the sine of the angle within the tolerance.
 Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got);
 
+/// Euler angles are the same up to whole turns (angles_up_to_turns, judge.hpp): ψ = 340° is
+/// the key's ψ = −20°.
+/// `got` with each entry that whole turns bring within j's tolerance of the key's moved there,
+/// and the names of those entries ("ψ"); none moved where `a` is no vector of angles. For the
+/// diagnosis, an entry one turn off the key's is moved too (ψ = 340.5° is off by 0.5°, not
+/// "-17 times its right value"), where every entry then lies within a quarter turn of the key's;
+/// otherwise the diagnosis sees what was typed (130 for 130° read as radians, 1000 times the
+/// angles).
+struct OnKeysTurns {
+  std::vector<double> values;
+  std::vector<std::string> moved;
+  std::vector<double> for_diagnosis;
+};
+OnKeysTurns on_keys_turns(const Judge& j, const std::vector<double>& got);
+
+/// " (ψ differs from the key's by whole turns: the same angle)", for the entries `moved`.
+std::string whole_turns_note(const std::vector<std::string>& moved);
+
 /// Why values `v` are not the key's `k` (diagnosis.hpp), each line one finding.
 std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
                                   const std::vector<double>& v, const std::vector<double>& k);

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "check/diagnosis.hpp"
+#include "check/judge.hpp"
 #include "export/html_text.hpp"
 #include "export/prairielearn_server_py.hpp"
 
@@ -38,6 +39,7 @@ json answer_json(const GradedAnswer& g) {
           {"unit", a.unit},
           {"value", a.value.data},
           {"entries", entries},
+          {"whole_turns", check::angles_up_to_turns(a)},
           {"rel_tol", g.rel_tol},
           {"zero_scale", g.zero_scale},
           {"eigenspaces", g.eigenspaces},

@@ -4,7 +4,7 @@
 # applies wobble's rules to what the student typed: a relative tolerance (or significant
 # figures), a zero judged against the largest value of the same unit, principal moments in any
 # order, principal axes each up to sign and length, as rows or columns, a degenerate pair's axes
-# anywhere in its plane; and a wrong answer that a known mistake leads to gets wobble's message
+# anywhere in its plane, Euler angles up to whole turns; and a wrong answer that a known mistake leads to gets wobble's message
 # for it. The values and messages were computed by wobble for each variant; nothing here solves
 # the problem. Plain Python 3, no packages.
 import json
@@ -131,6 +131,25 @@ def _judge_axes(answer, typed, rules):
                "the inertia tensor, every axis there once)")
 
 
+def _on_keys_turns(answer, typed, rules):
+    # Euler angles are the same up to whole turns (psi = 340 degrees is the key's -20): each
+    # entry that whole turns bring within the tolerance is moved there and named; for the
+    # feedback, one a single turn off is moved too. (wobble check does the same.)
+    values, moved = list(typed), []
+    for i, (t, k) in enumerate(zip(typed, answer["value"])):
+        turns = round((t - k) / (2 * math.pi))
+        there = t - turns * 2 * math.pi
+        if abs(turns) == 1 or (turns != 0 and _close(there, k, rules, answer)):
+            values[i] = there
+        if turns != 0 and _close(there, k, rules, answer):
+            moved.append(_entry_name(answer, i))
+    # Only where every entry is then within a quarter turn of the key's (1000 times 40 degrees
+    # is 40 again, yet a power of ten off): else the feedback sees what was typed.
+    if any(abs(v - k) > math.pi / 2 for v, k in zip(values, answer["value"])):
+        return list(typed), moved
+    return values, moved
+
+
 def judge(answer, typed, rules):
     """(score, message) for the typed values (a flat list, the key's order)."""
     if answer["kind"] == "principal_axes":
@@ -138,10 +157,18 @@ def judge(answer, typed, rules):
     compare = sorted(typed) if answer["kind"] == "principal_moments" else list(typed)
     if _all_close(compare, answer["value"], rules, answer):
         return 1, "correct"
+    turned, moved = (_on_keys_turns(answer, compare, rules) if answer.get("whole_turns")
+                     else (compare, []))
+    if moved and _all_close(turned, answer["value"], rules, answer):
+        names = " and ".join([", ".join(moved[:-1]), moved[-1]] if len(moved) > 1 else moved)
+        return 1, "correct (%s %s from the key's by whole turns: the same angle%s)" % (
+            names, "differs" if len(moved) == 1 else "differ", "" if len(moved) == 1 else "s")
+    # A known mistake from what was typed; else how far off, an angle one turn off judged from
+    # the key's range.
     for mistake in answer["mistakes"]:
         if _all_close(compare, mistake["values"], rules, answer):
             return 0, "incorrect: " + mistake["message"]
-    return 0, "incorrect: " + "; ".join(_how_far(answer, compare, rules))
+    return 0, "incorrect: " + "; ".join(_how_far(answer, turned, rules))
 
 
 def _flat(submitted):

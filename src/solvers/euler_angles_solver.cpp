@@ -149,6 +149,9 @@ NumericOmega numeric_omega(const Angles& t) {
   return w;
 }
 
+// A triple of Euler angles as Taylor (z-y-z) and Goldstein (z-x-z) name them.
+const std::vector<std::string> kTaylorAngles{"φ", "θ", "ψ"};
+
 Step rotation_step() {
   return {
       "R = Rz(φ) Ry(θ) Rz(ψ): rotate by φ about z, by θ about the new y (e2'), by ψ about "
@@ -192,6 +195,7 @@ Computed angles_back(const Angles& t, bool zxz) {
     a = {t.phi, t.theta, t.psi};
   }
   Computed out{exact_vector(q, a, "rad", t.exact), steps};
+  out.answer.named_entries = kTaylorAngles;
   // The angles must give R back (to rounding), and match core's reading where that is well
   // conditioned (sin(theta) not tiny).
   const EulerConvention c = zxz ? EulerConvention::zxz : EulerConvention::zyz;
@@ -241,6 +245,7 @@ Computed angles_phy711(const Angles& t, const std::string& q) {
   out.answer.notes.push_back(
       "The lectures' warning is about most classical-mechanics texts (Goldstein: z-x-z), whose "
       "angles differ: see angles_zxz.");
+  out.answer.named_entries = {"α", "β", "γ"};  // PHY 711's names
   return out;
 }
 
@@ -254,6 +259,7 @@ Computed angles_zxz(const Angles& t, const std::string& q) {
                  "\\phi_x = \\phi + \\tfrac{\\pi}{2},\\ \\theta_x = \\theta,\\ \\psi_x = \\psi - "
                  "\\tfrac{\\pi}{2}",
                  "To z-x-z:"}}};
+  out.answer.named_entries = kTaylorAngles;  // Goldstein's names too
   const Vec3 got(out.answer.value.data[0], out.answer.value.data[1], out.answer.value.data[2]);
   check_all(q, entries(rotation_from_euler(got, EulerConvention::zxz)), entries(rotation_n(t)),
             kRoundTripUlps);

@@ -857,6 +857,42 @@ TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied ou
                       Catch::Contains("5 turns in a product; at most 4"));
 }
 
+TEST_CASE("Euler angles are the same up to whole turns, and named as the question names them") {
+  // Goldstein's z-x-z angles here: (130°, 30°, −20°), φ and ψ in (−180°, 180°].
+  const Fixture euler("euler-angles");
+  for (const auto& [typed, moved] : std::vector<std::pair<std::string, std::string>>{
+           {"(130°, 30°, 340°)", "ψ differs"},
+           {"(2.269, 0.5236, 5.934)", "ψ differs"},
+           {"(490°, 30°, 340°)", "φ and ψ differ"},
+           {"[pi/2 + phi, theta, psi + 3 pi/2]", "ψ differs"},
+           {"[pi/2 + phi - 2pi, theta + 2 pi, psi + 3 pi/2]", "φ, θ and ψ differ"}}) {
+    INFO(typed);
+    const auto v = euler.check("angles_zxz", typed);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(
+        v.line, Catch::EndsWith("(" + moved + " from the key's by whole turns: the same " +
+                                (moved.find(" and ") == std::string::npos ? "angle)" : "angles)")));
+  }
+  REQUIRE(euler.check("angles_zxz", "(130°, 30°, -20°)").line == "correct: angles_zxz");
+  // Half a turn is another angle; a wrong entry is named, one turn off judged from the key's
+  // range (0.5° off, not "-17 times its right value").
+  REQUIRE_FALSE(euler.check("angles_zxz", "(φ − 90°, θ, ψ + 90°)").correct);
+  REQUIRE_FALSE(euler.check("angles_zxz", "(130°, 30°, 160°)").correct);
+  const auto off = euler.check("angles_zxz", "(130°, 30°, 340.5°)");
+  REQUIRE_FALSE(off.correct);
+  REQUIRE(off.feedback == std::vector<std::string>{"ψ is off by 2.5%"});
+  REQUIRE(euler.check("angles_zxz", "(130°, 35°, -20°)").feedback ==
+          std::vector<std::string>{"θ is off by 16.7%"});
+  // PHY 711 names its angles α, β, γ; degrees for radians is still said as such.
+  const Fixture phy("euler-angles-phy711");
+  REQUIRE(phy.check("angles_phy711", "(40°, 30°, 60°)").feedback ==
+          std::vector<std::string>{"γ is off by 14.3%"});
+  REQUIRE_THAT(euler.check("angles_zxz", "(130, 30, -20)").feedback.at(0),
+               Catch::StartsWith("this is the angle in degrees"));
+  // Reading back: the same, in any range.
+  REQUIRE(euler.check("angles_back_zyz", "(400°, 30°, -290°)").correct);
+}
+
 TEST_CASE("degrees in an expression in the symbols are radians: φ + 90°") {
   // Goldstein's z-x-z angles are Taylor's with a quarter turn: (φ + π/2, θ, ψ − π/2).
   const Fixture euler("euler-angles");

@@ -7,12 +7,14 @@ For each variant in variants.json: generate() with PrairieLearn's data dict; the
 the key's own answers (score 1), of each listed mistake (score 0 with wobble's message), of a
 principal axis with its sign flipped and of the axes as rows (score 1), of moments in another
 order (score 1), of each answer 3 tolerances off (score 0), and of a vector with its last
-entry 3 tolerances off (score 0, the entry named as wobble check names it). Exits 1 naming the first
+entry 3 tolerances off (score 0, the entry named as wobble check names it), and of Euler angles
+with the last a whole turn on (score 1, named). Exits 1 naming the first
 difference; prints what it graded.
 """
 import copy
 import importlib.util
 import json
+import math
 import os
 import sys
 
@@ -102,6 +104,13 @@ def main():
                     expect("last entry off", a["input"], one_off, 0,
                            "incorrect: %s is off by %.3g%%" % (a["entries"][-1], 300 * tol))
                     counts["entry named"] = counts.get("entry named", 0) + 1
+            if a.get("whole_turns"):
+                # Euler angles: the last one a whole turn on is the same angle, named.
+                turned = value[:-1] + [value[-1] + 2 * math.pi]
+                expect("last angle a turn on", a["input"], turned, 1,
+                       "correct (%s differs from the key's by whole turns: the same angle)"
+                       % a["entries"][-1])
+                counts["whole turns"] = counts.get("whole turns", 0) + 1
             if a["kind"] == "principal_axes":
                 flipped = list(value)
                 for r in range(3):
