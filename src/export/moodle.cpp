@@ -7,6 +7,7 @@
 #include <limits>
 #include <utility>
 
+#include "check/judge.hpp"
 #include "core/input_error.hpp"
 #include "export/html_text.hpp"
 
@@ -204,6 +205,13 @@ std::string question_xml(const Question& q) {
   const int type = any_zero ? kNominal : kRelative;
   const double tolerance = any_zero ? g0.rel_tol * smallest_scale : g0.rel_tol;
   std::string answers = answer_xml(100, "{ans}", tolerance, type, "correct");
+  // An Euler angle a turn either way is the same angle (wobble check takes any whole number of
+  // turns; one answer per turn here, a turn either way covering a course's other range).
+  if (check::angles_up_to_turns(g0.answer)) {
+    for (const char* turn : {"{ans} + 2*pi()", "{ans} - 2*pi()"})
+      answers += answer_xml(100, turn, tolerance, type,
+                            "correct (a whole turn from the key's: the same angle)");
+  }
   for (const auto& [message, d] : mistakes) {
     // A mistake that leaves this entry right in every variant (the reversed sign of a zero
     // entry) is no answer of its own here.

@@ -52,6 +52,7 @@ def flat(value):
 
 KEYS = {}
 ENTRIES = {}  # answer name -> the key's names of its entries
+ANGLES = set()  # names of the answers that are Euler angles (a vector in rad): up to whole turns
 
 
 def key_values(wobble, problem, number):
@@ -60,6 +61,8 @@ def key_values(wobble, problem, number):
         key = json.loads(run([wobble, "solve", problem, "--variant", str(number), "--format", "json"]))
         KEYS[number] = {a["name"]: flat(a["value"]) for p in key["parts"] for a in p["answers"]}
         ENTRIES.update({a["name"]: a.get("entries", []) for p in key["parts"] for a in p["answers"]})
+        ANGLES.update(a["name"] for p in key["parts"] for a in p["answers"]
+                      if a["kind"] == "vector" and a.get("unit") == "rad")
     return KEYS[number]
 
 
@@ -193,13 +196,21 @@ def check_moodle(wobble, problem, quiz_file):
             if word not in datasets:
                 fail("moodle: %s: {%s} in the text is no wildcard" % (name, word))
         answers = q.findall("answer")
+        turns = 0
         if not answers or answers[0].get("fraction") != "100":
             fail("moodle: %s: the right answer is not first" % name)
         for a in answers:
             for tag in ("text", "tolerance", "tolerancetype", "correctanswerformat",
                         "correctanswerlength", "feedback/text"):
                 text(a, tag)
-            wildcard = text(a, "text").strip("{}")
+            formula = text(a, "text")
+            # An Euler angle a turn either way: right, said so.
+            if formula in ("{ans} + 2*pi()", "{ans} - 2*pi()"):
+                if a.get("fraction") != "100" or "whole turn" not in text(a, "feedback/text"):
+                    fail("moodle: %s: %s is not right as a whole turn" % (name, formula))
+                turns += 1
+                continue
+            wildcard = formula.strip("{}")
             if wildcard not in datasets:
                 fail("moodle: %s: answer {%s} has no dataset" % (name, wildcard))
         # Round trip: "NAME" or "NAME, entry ..." against solve's values of that variant.
@@ -207,6 +218,9 @@ def check_moodle(wobble, problem, quiz_file):
         answer = parts.group(2)
         key_values(wobble, problem, int(datasets["variant"][0]))  # the entries' names
         entry = entry_index(parts.group(3), ENTRIES.get(answer, []))
+        if (answer in ANGLES) != (turns == 2):
+            fail("moodle: %s: %d answers a whole turn on, for %s" % (
+                name, turns, "an Euler angle" if answer in ANGLES else "no angle"))
         for number, value in zip(datasets["variant"], datasets["ans"]):
             want = key_values(wobble, problem, int(number))[answer][entry]
             if value != want:
