@@ -50,8 +50,8 @@ const Parameter& Problem::parameter(const std::string& name) const {
   for (const auto& p : parameters) {
     if (spells(p, name)) return p;
   }
-  throw InputError("unknown parameter '" + name + "' for problem " + id + " (known: " + known +
-                   ")");
+  // "of heavy-top": a scene's parameters are a problem's too (scene.hpp), so no kind is named.
+  throw InputError("unknown parameter '" + name + "' of " + id + " (known: " + known + ")");
 }
 
 sym::SymbolTable Problem::symbol_table() const {

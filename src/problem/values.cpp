@@ -214,7 +214,13 @@ Assignment assignment_of(const Problem& problem, const std::string& text) {
   if (eq == std::string::npos || trim(text.substr(0, eq)).empty()) {
     throw InputError("--set: expected NAME=VALUE, got '" + text + "'");
   }
-  const Parameter& parameter = problem.parameter(trim(text.substr(0, eq)));
+  const Parameter& parameter = [&]() -> const Parameter& {
+    try {
+      return problem.parameter(trim(text.substr(0, eq)));
+    } catch (const InputError& e) {
+      throw InputError("--set " + text + ": " + e.what());  // the option and what was typed
+    }
+  }();
   const std::string value = trim(text.substr(eq + 1));
   refuse_several_at_once(problem, text, eq);
   return {parameter, value};
