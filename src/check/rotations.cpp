@@ -55,6 +55,11 @@ std::string in_radians(const std::string& angle) {
   return angle;
 }
 
+// After a factor, the marks of its transpose or inverse (longest first where one begins
+// another): for a turn both are the turn back.
+constexpr std::array<std::string_view, 11> kTurnBackMarks{
+    "^{\\top}", "^{-1}", "^(-1)", "^{T}", "^\\top", "^-1", "⁻¹", "ᵀ", "^T", "'", "′"};
+
 // One pair of brackets around all of `s`, dropped: "(Rz(φ) Ry(θ))" -> "Rz(φ) Ry(θ)".
 std::string unwrapped(const std::string& s) {
   if (s.size() < 2 || s.front() != '(' || s.back() != ')') return s;
@@ -102,8 +107,17 @@ std::optional<std::string> rotations_multiplied(const std::string& typed,
                        " characters; at most " + std::to_string(kLongestTurnAngle) +
                        " (write the matrix's entries instead)");
     }
-    turns.emplace_back(axis, in_radians(trim(s.substr(j + 1, close - j - 1))));
+    std::string angle = in_radians(trim(s.substr(j + 1, close - j - 1)));
     i = close + 1;
+    // A turn transposed or inverted is the turn back: "Rz(ψ)ᵀ", "R_z(\psi)^T", "Rz(ψ)⁻¹".
+    for (const std::string_view mark : kTurnBackMarks) {
+      if (s.compare(i, mark.size(), mark) == 0) {
+        angle = "-(" + angle + ")";
+        i += mark.size();
+        break;
+      }
+    }
+    turns.emplace_back(axis, angle);
   }
   if (turns.empty()) return std::nullopt;
   if (turns.size() > static_cast<std::size_t>(kMostTurns)) {

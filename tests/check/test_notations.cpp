@@ -844,10 +844,16 @@ TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied ou
     REQUIRE(euler.check("R_zyz", same).correct);
   }
   // The PHY 711 matrix is its transpose, or the inverse turns in reverse order.
-  for (const char* same : {"(Rz(φ) Ry(θ) Rz(ψ))ᵀ", "Rz(-ψ) Ry(-θ) Rz(-φ)"}) {
+  // Each turn transposed or inverted is the turn back, as the key's step writes PHY 711's R.
+  for (const char* same : {"(Rz(φ) Ry(θ) Rz(ψ))ᵀ", "Rz(-ψ) Ry(-θ) Rz(-φ)", "Rz(ψ)ᵀ Ry(θ)ᵀ Rz(φ)ᵀ",
+                           "R_z(\\psi)^T R_y(\\theta)^T R_z(\\phi)^T",
+                           "R_z(\\psi)^{T} R_y(\\theta)^\\top R_z(\\phi)^{\\top}",
+                           "Rz(ψ)⁻¹ Ry(θ)^-1 Rz(φ)^{-1}", "Rz(ψ)' Ry(θ)' Rz(φ)'"}) {
     INFO(same);
     REQUIRE(euler.check("R_phy711", same).correct);
   }
+  // Transposed in the same order is another matrix.
+  REQUIRE_FALSE(euler.check("R_phy711", "Rz(φ)ᵀ Ry(θ)ᵀ Rz(ψ)ᵀ").correct);
   // Order and axes matter: the turns reversed, x for y, and a degree off are wrong.
   for (const char* wrong : {"Rz(ψ) Ry(θ) Rz(φ)", "Rz(φ) Rx(θ) Rz(ψ)", "Rz(41°) Ry(30°) Rz(70°)"}) {
     INFO(wrong);
