@@ -306,16 +306,24 @@ bool angles_up_to_turns(const Answer& a) {
 namespace detail {
 OnKeysTurns on_keys_turns(const Judge& j, const std::vector<double>& got) {
   const Answer& a = j.a;
-  OnKeysTurns out{got, {}, got};
+  OnKeysTurns out{false, {}, got};
   if (!angles_up_to_turns(a) || got.size() != a.value.data.size()) return out;
+  bool every = true;
   for (std::size_t i = 0; i < got.size(); ++i) {
     const double key = a.value.data[i], turns = std::round((got[i] - key) / (2 * M_PI));
     const double moved = got[i] - turns * (2 * M_PI);
     if (std::abs(turns) == 1.0) out.for_diagnosis[i] = moved;
-    if (turns == 0.0 || !j.close(moved, key)) continue;
-    out.values[i] = out.for_diagnosis[i] = moved;
+    // Significant figures are of the number typed (5.93 for 340°): it must round as the key's
+    // value in that range does. A relative tolerance is of the angle itself, in the key's range
+    // (-20.3° and 339.7° alike are 1.5% off -20°).
+    const bool right =
+        j.opt.sigfigs ? j.close(got[i], key + turns * (2 * M_PI)) : j.close(moved, key);
+    every = every && right;
+    if (turns == 0.0 || !right) continue;
+    out.for_diagnosis[i] = key;  // right: the diagnosis is about the other entries
     out.moved.push_back(entry_name(a, i));
   }
+  out.right = every && !out.moved.empty();
   // Only where every entry is then near the key's: 1000 times (40°, 30°, 70°) has 40° again in
   // 40000°, yet is a power of ten off, which the typed values show.
   for (std::size_t i = 0; i < got.size(); ++i) {
@@ -647,9 +655,8 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
   }
   if (const detail::OnKeysTurns turned = detail::on_keys_turns(j, compare);
       turned.for_diagnosis != compare) {
-    if (j.all_close(turned.values, a.value.data)) {
+    if (turned.right)
       return {true, "correct: " + a.name + detail::whole_turns_note(turned.moved), {}};
-    }
     // A known mistake is named from what was typed (degrees for radians); else an entry one
     // turn off is judged from the key's range.
     const auto mistakes = wrong_answers(a, ctx.key, key_unit);

@@ -52,14 +52,14 @@ Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got);
 
 /// Euler angles are the same up to whole turns (angles_up_to_turns, judge.hpp): ψ = 340° is
 /// the key's ψ = −20°.
-/// `got` with each entry that whole turns bring within j's tolerance of the key's moved there,
-/// and the names of those entries ("ψ"); none moved where `a` is no vector of angles. For the
-/// diagnosis, an entry one turn off the key's is moved too (ψ = 340.5° is off by 0.5°, not
-/// "-17 times its right value"), where every entry then lies within a quarter turn of the key's;
-/// otherwise the diagnosis sees what was typed (130 for 130° read as radians, 1000 times the
-/// angles).
+/// Whether `got` is right with some entries whole turns off the key's, and the names of those
+/// entries ("ψ"); never where `a` is no vector of angles. For the diagnosis, `got` with each
+/// entry that is right whole turns off taken as the key's, and each other one turn off moved to
+/// the key's range (ψ = 340.5° is off by 0.5°, not "-17 times its right value"), where every
+/// entry then lies within a quarter turn of the key's; otherwise as typed (130 for 130° read as
+/// radians, 1000 times the angles).
 struct OnKeysTurns {
-  std::vector<double> values;
+  bool right = false;
   std::vector<std::string> moved;
   std::vector<double> for_diagnosis;
 };

@@ -132,22 +132,29 @@ def _judge_axes(answer, typed, rules):
 
 
 def _on_keys_turns(answer, typed, rules):
-    # Euler angles are the same up to whole turns (psi = 340 degrees is the key's -20): each
-    # entry that whole turns bring within the tolerance is moved there and named; for the
-    # feedback, one a single turn off is moved too. (wobble check does the same.)
-    values, moved = list(typed), []
+    # Euler angles are the same up to whole turns (psi = 340 degrees is the key's -20): whether
+    # the typed values are right so, and the entries whole turns off, named; for the feedback,
+    # the values with each entry one turn off (or right whole turns off) moved to the key's
+    # range. (wobble check does the same.)
+    values, moved, every = list(typed), [], True
     for i, (t, k) in enumerate(zip(typed, answer["value"])):
         turns = round((t - k) / (2 * math.pi))
         there = t - turns * 2 * math.pi
-        if abs(turns) == 1 or (turns != 0 and _close(there, k, rules, answer)):
+        # Significant figures are of the number typed, in its range; a relative tolerance of the
+        # angle in the key's range.
+        right = (_close(t, k + turns * 2 * math.pi, rules, answer) if rules.get("sigfigs")
+                 else _close(there, k, rules, answer))
+        every = every and right
+        if abs(turns) == 1:
             values[i] = there
-        if turns != 0 and _close(there, k, rules, answer):
+        if turns != 0 and right:
+            values[i] = k  # right: the feedback is about the other entries
             moved.append(_entry_name(answer, i))
     # Only where every entry is then within a quarter turn of the key's (1000 times 40 degrees
     # is 40 again, yet a power of ten off): else the feedback sees what was typed.
     if any(abs(v - k) > math.pi / 2 for v, k in zip(values, answer["value"])):
-        return list(typed), moved
-    return values, moved
+        values = list(typed)
+    return every and bool(moved), values, moved
 
 
 def judge(answer, typed, rules):
@@ -157,9 +164,9 @@ def judge(answer, typed, rules):
     compare = sorted(typed) if answer["kind"] == "principal_moments" else list(typed)
     if _all_close(compare, answer["value"], rules, answer):
         return 1, "correct"
-    turned, moved = (_on_keys_turns(answer, compare, rules) if answer.get("whole_turns")
-                     else (compare, []))
-    if moved and _all_close(turned, answer["value"], rules, answer):
+    right, turned, moved = (_on_keys_turns(answer, compare, rules) if answer.get("whole_turns")
+                            else (False, compare, []))
+    if right:
         names = " and ".join([", ".join(moved[:-1]), moved[-1]] if len(moved) > 1 else moved)
         return 1, "correct (%s %s from the key's by whole turns: the same angle%s)" % (
             names, "differs" if len(moved) == 1 else "differ", "" if len(moved) == 1 else "s")

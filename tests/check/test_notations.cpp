@@ -897,6 +897,16 @@ TEST_CASE("Euler angles are the same up to whole turns, and named as the questio
                Catch::StartsWith("this is the angle in degrees"));
   // Reading back: the same, in any range.
   REQUIRE(euler.check("angles_back_zyz", "(400°, 30°, -290°)").correct);
+  // Significant figures are of the number typed: 5.93 is 340° (5.934 rad) to three; a relative
+  // tolerance is of the angle, 5.94 rad being 1.7% off the key's -0.349 rad.
+  check::Options three;
+  three.sigfigs = 3;
+  REQUIRE(euler.check("angles_zxz", "(2.27, 0.524, 5.93)", three).correct);
+  REQUIRE_FALSE(euler.check("angles_zxz", "(2.27, 0.524, 5.94)", three).correct);
+  // A right entry a turn off is no part of what is wrong with the others.
+  REQUIRE(euler.check("angles_zxz", "(2.27, 0.600, 5.93)", three).feedback ==
+          std::vector<std::string>{"θ is off by 14.6%"});
+  REQUIRE_FALSE(euler.check("angles_zxz", "(2.269, 0.5236, 5.94)").correct);
 }
 
 TEST_CASE("degrees in an expression in the symbols are radians: φ + 90°") {
