@@ -1047,13 +1047,8 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
 ReadAnswer read_transposed(const std::string& typed, const sym::SymbolTable& table,
                            const std::string& field);
 
-// The transpose marks after a closing bracket: "[1 2 3]ᵀ", "[1 2 3]^T", LaTeX's "^{T}" and
-// "^\top" (braced or not), MATLAB's "'".
-constexpr std::array<std::string_view, 6> kTransposeMarks{"ᵀ",      "^{T}", "^{\\top}",
-                                                          "^\\top", "^T",   "'"};
-
-// `typed` without a transpose mark after its one bracket at the top level, and whether it had
-// one: "[0.5 1 1.5]ᵀ m" -> "[0.5 1 1.5] m", true. As typed otherwise.
+// `typed` without a transpose mark (rotations.hpp) after its one bracket at the top level, and
+// whether it had one: "[0.5 1 1.5]ᵀ m" -> "[0.5 1 1.5] m", true. As typed otherwise.
 std::pair<std::string, bool> without_transpose(const std::string& typed) {
   int depth = 0;
   std::size_t found = std::string::npos, length = 0;

@@ -49,6 +49,7 @@ AxesFinding judge_vectors(const std::array<Vec3, 3>& typed, const Mat3& axes,
       continue;
     }
     unit[static_cast<std::size_t>(i)] = typed[static_cast<std::size_t>(i)] / n;
+    out.unit_lengths = out.unit_lengths && std::abs(n - 1.0) <= tol;
     double best = 2.0;
     for (std::size_t s = 0; s < spaces.size(); ++s) {
       const double d = spaces[s].distance(axes, unit[static_cast<std::size_t>(i)]);

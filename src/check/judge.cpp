@@ -359,20 +359,9 @@ Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got) {
   const AxesFinding f = judge_axes(got, axes, lambda, tol, j.layout);
   if (f.correct) {
     // An axis is a direction: (1, 1, 0) is right for (1, 1, 0)/√2, and the verdict says so.
-    const bool columns = f.how == "as columns";
-    bool unit = true;
-    for (int i = 0; i < 3; ++i) {
-      const Vec3 v =
-          columns
-              ? Vec3(got[static_cast<std::size_t>(i)], got[static_cast<std::size_t>(3 + i)],
-                     got[static_cast<std::size_t>(6 + i)])
-              : Vec3(got[static_cast<std::size_t>(3 * i)], got[static_cast<std::size_t>(3 * i + 1)],
-                     got[static_cast<std::size_t>(3 * i + 2)]);
-      unit = unit && std::abs(v.norm() - 1.0) <= tol;
-    }
     return {true,
             "correct: " + j.a.name + " (" + f.how + ", in any order, each up to sign" +
-                (unit ? ")" : " and length; the key's axes are unit vectors)"),
+                (f.unit_lengths ? ")" : " and length; the key's axes are unit vectors)"),
             {}};
   }
   Verdict v{false, "incorrect: " + j.a.name, f.problems};

@@ -55,10 +55,9 @@ std::string in_radians(const std::string& angle) {
   return angle;
 }
 
-// After a factor, the marks of its transpose or inverse (longest first where one begins
-// another): for a turn both are the turn back.
-constexpr std::array<std::string_view, 11> kTurnBackMarks{
-    "^{\\top}", "^{-1}", "^(-1)", "^{T}", "^\\top", "^-1", "⁻¹", "ᵀ", "^T", "'", "′"};
+// After a factor, besides the transpose marks, those of its inverse and the prime as a page
+// sets it: for a turn each is the turn back.
+constexpr std::array<std::string_view, 5> kInverseMarks{"^{-1}", "^(-1)", "^-1", "⁻¹", "′"};
 
 // One pair of brackets around all of `s`, dropped: "(Rz(φ) Ry(θ))" -> "Rz(φ) Ry(θ)".
 std::string unwrapped(const std::string& s) {
@@ -110,13 +109,15 @@ std::optional<std::string> rotations_multiplied(const std::string& typed,
     std::string angle = in_radians(trim(s.substr(j + 1, close - j - 1)));
     i = close + 1;
     // A turn transposed or inverted is the turn back: "Rz(ψ)ᵀ", "R_z(\psi)^T", "Rz(ψ)⁻¹".
-    for (const std::string_view mark : kTurnBackMarks) {
-      if (s.compare(i, mark.size(), mark) == 0) {
-        angle = "-(" + angle + ")";
+    const auto marked = [&](const auto& marks) {
+      for (const std::string_view mark : marks) {
+        if (s.compare(i, mark.size(), mark) != 0) continue;
         i += mark.size();
-        break;
+        return true;
       }
-    }
+      return false;
+    };
+    if (marked(kTransposeMarks) || marked(kInverseMarks)) angle = "-(" + angle + ")";
     turns.emplace_back(axis, angle);
   }
   if (turns.empty()) return std::nullopt;

@@ -12,10 +12,18 @@
 /// so that Rz(φ) Ry(θ) Rz(ψ) takes body components to space components (Taylor's convention).
 /// The product is written out entry by entry, "[[cos(φ)*cos(θ)*.. + .., ..], ..]", for the
 /// answer reader to read and the judge to simplify.
+#include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace wobble::check {
+
+/// The transpose marks after a closing bracket, as the answer reader reads them on a vector or a
+/// matrix and here on a turn: "[1 2 3]ᵀ", "^T", LaTeX's "^{T}" and "^\top" (braced or not),
+/// MATLAB's "'".
+inline constexpr std::array<std::string_view, 6> kTransposeMarks{"ᵀ",      "^{T}", "^{\\top}",
+                                                                 "^\\top", "^T",   "'"};
 
 /// The most turns in one product: each entry of a product of n has up to 3^(n-1) terms.
 inline constexpr int kMostTurns = 4;

@@ -4,9 +4,9 @@
 # applies wobble's rules to what the student typed: a relative tolerance (or significant
 # figures), a zero judged against the largest value of the same unit, principal moments in any
 # order, principal axes each up to sign and length, as rows or columns, a degenerate pair's axes
-# anywhere in its plane, Euler angles up to whole turns; and a wrong answer that a known mistake leads to gets wobble's message
-# for it. The values and messages were computed by wobble for each variant; nothing here solves
-# the problem. Plain Python 3, no packages.
+# anywhere in its plane, Euler angles up to whole turns; and a wrong answer that a known mistake
+# leads to gets wobble's message for it. The values and messages were computed by wobble for each
+# variant; nothing here solves the problem. Plain Python 3, no packages.
 import json
 import math
 import os
