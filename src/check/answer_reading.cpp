@@ -1047,14 +1047,19 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
 ReadAnswer read_transposed(const std::string& typed, const sym::SymbolTable& table,
                            const std::string& field);
 
-// `typed` without a transpose mark (rotations.hpp) after its one bracket at the top level, and
-// whether it had one: "[0.5 1 1.5]ᵀ m" -> "[0.5 1 1.5] m", true. As typed otherwise.
+// `typed` without a transpose mark (rotations.hpp) after its last bracket at the top level, and
+// whether it had one: "[0.5 1 1.5]ᵀ m" -> "[0.5 1 1.5] m", true. As typed otherwise: two marks,
+// or a mark with a bracket after it, which marks one factor ("Rz(ψ)ᵀ Ry(θ)⁻¹ Rz(φ)⁻¹", whose
+// turns are the product's to read), not the whole answer.
 std::pair<std::string, bool> without_transpose(const std::string& typed) {
   int depth = 0;
   std::size_t found = std::string::npos, length = 0;
   for (std::size_t i = 0; i < typed.size(); ++i) {
     const char c = typed[i];
-    if (c == '(' || c == '[' || c == '{') ++depth;
+    if (c == '(' || c == '[' || c == '{') {
+      if (depth == 0 && found != std::string::npos) return {typed, false};
+      ++depth;
+    }
     if (c != ')' && c != ']' && c != '}') continue;
     if (--depth != 0) continue;
     for (const std::string_view mark : kTransposeMarks) {
@@ -1065,6 +1070,7 @@ std::pair<std::string, bool> without_transpose(const std::string& typed) {
       if (found != std::string::npos) return {typed, false};
       found = i + 1;
       length = mark.size();
+      i = end - 1;  // past the mark: the brace of "^{T}" opens no bracket after it
       break;
     }
   }

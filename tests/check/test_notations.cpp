@@ -845,10 +845,14 @@ TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied ou
   }
   // The PHY 711 matrix is its transpose, or the inverse turns in reverse order.
   // Each turn transposed or inverted is the turn back, as the key's step writes PHY 711's R.
-  for (const char* same : {"(Rz(φ) Ry(θ) Rz(ψ))ᵀ", "Rz(-ψ) Ry(-θ) Rz(-φ)", "Rz(ψ)ᵀ Ry(θ)ᵀ Rz(φ)ᵀ",
-                           "R_z(\\psi)^T R_y(\\theta)^T R_z(\\phi)^T",
-                           "R_z(\\psi)^{T} R_y(\\theta)^\\top R_z(\\phi)^{\\top}",
-                           "Rz(ψ)⁻¹ Ry(θ)^-1 Rz(φ)^{-1}", "Rz(ψ)' Ry(θ)' Rz(φ)'"}) {
+  for (const char* same :
+       {"(Rz(φ) Ry(θ) Rz(ψ))ᵀ", "Rz(-ψ) Ry(-θ) Rz(-φ)", "Rz(ψ)ᵀ Ry(θ)ᵀ Rz(φ)ᵀ",
+        "R_z(\\psi)^T R_y(\\theta)^T R_z(\\phi)^T",
+        "R_z(\\psi)^{T} R_y(\\theta)^\\top R_z(\\phi)^{\\top}", "Rz(ψ)⁻¹ Ry(θ)^-1 Rz(φ)^{-1}",
+        "Rz(ψ)' Ry(θ)' Rz(φ)'",
+        // Marks mixed, or one alone: a mark after one factor is that factor's,
+        // not the whole product's.
+        "Rz(ψ)^T Ry(θ)^{-1} Rz(φ)′", "Rz(ψ)^{-1} Ry(θ)^T Rz(φ)^{-1}", "Rz(-ψ) Ry(θ)ᵀ Rz(-φ)"}) {
     INFO(same);
     REQUIRE(euler.check("R_phy711", same).correct);
   }
