@@ -995,6 +995,9 @@ std::vector<std::string> top_level_terms(const std::string& s) {
     const char c = s[i];
     if (c == '(' || c == '[' || c == '{') ++depth;
     if (c == ')' || c == ']' || c == '}') --depth;
+    // LaTeX's "\begin{pmatrix} -a \\ b \end{pmatrix}": a bracket, its signs the entries'.
+    if (s.compare(i, 7, "\\begin{") == 0) ++depth;
+    if (s.compare(i, 5, "\\end{") == 0) --depth;
     if (depth == 0 && (c == '+' || c == '-') && starts_term(s, i)) {
       terms.push_back(trim(s.substr(start, i - start)));
       start = i;
@@ -1173,6 +1176,21 @@ std::string unit_vectors_named(const std::string& typed, const sym::SymbolTable&
   std::string found;
   for (const auto& [at, name] : in_order) found += (found.empty() ? "" : ", ") + name;
   return found;
+}
+
+// How many bases the unit vectors of unit_vectors_named's list are of (space x̂ ŷ ẑ, body ê₁,
+// primed ê₁′): a sum over more than one is no vector's components in one basis.
+std::size_t bases_named(const std::string& vectors) {
+  std::set<int> bases;
+  for (std::size_t from = 0; from < vectors.size();) {
+    const std::size_t end = std::min(vectors.find(", ", from), vectors.size());
+    const std::string name = vectors.substr(from, end - from);
+    bases.insert(name.find("′") != std::string::npos   ? 2
+                 : name.find("ê") != std::string::npos ? 1
+                                                       : 0);
+    from = end + 2;
+  }
+  return bases.size();
 }
 }  // namespace
 
@@ -1404,16 +1422,7 @@ ReadAnswer read_along_unit_vectors(const std::string& spelled, const std::string
     }
   }
   // "ω = φ̇ ẑ + θ̇ ê₂′ + ψ̇ ê₃": a sum over bases, which no one vector's components are.
-  std::set<int> bases;
-  for (std::size_t from = 0; from <= vectors.size();) {
-    const std::size_t end = std::min(vectors.find(", ", from), vectors.size());
-    const std::string name = vectors.substr(from, end - from);
-    bases.insert(name.find("′") != std::string::npos   ? 2
-                 : name.find("ê") != std::string::npos ? 1
-                                                       : 0);
-    from = end + 2;
-  }
-  if (bases.size() > 1) {
+  if (bases_named(vectors) > 1) {
     throw InputError(field + ": components along " + vectors +
                      " mix bases (space x̂ ŷ ẑ, body e₁ e₂ e₃, primed e₁′ e₂′ e₃′); give the "
                      "components in one basis, or the vector [x, y, z]");
@@ -1444,17 +1453,16 @@ std::optional<ReadAnswer> along_bare_axes(const std::string& typed, const sym::S
 // read_answer, but for a list of vectors each read on its own.
 ReadAnswer read_whole(const std::string& typed, const sym::SymbolTable& table,
                       const std::string& field) {
-  // "\hat{x}", "e₁" respelled: such a text is a sum along unit vectors, never read as written
-  // ("0.5e₁" would be 5 there, its subscript a digit).
+  // "\hat{x}", "e₁" respelled: such a text is read as respelled, never as written ("0.5e₁"
+  // would be 5 there, its subscript a digit), and so as its Unicode twin reads: "\dot\phi \hat z
+  // + \dot\theta (-\sin\phi, \cos\phi, 0)" as "φ̇ ẑ + θ̇ (−sin φ, cos φ, 0)", a sum of vectors.
   const std::string spelled = basis_vectors_spelled(typed, table);
-  if (spelled == typed) {
-    try {
-      return read_transposed(typed, table, field);
-    } catch (const InputError&) {
-      if (unit_vectors_named(typed, table).empty()) {
-        if (auto along = along_bare_axes(typed, table, field)) return *along;
-        throw;
-      }
+  try {
+    return read_transposed(spelled, table, field);
+  } catch (const InputError&) {
+    if (spelled == typed && unit_vectors_named(typed, table).empty()) {
+      if (auto along = along_bare_axes(typed, table, field)) return *along;
+      throw;
     }
   }
   return read_along_unit_vectors(spelled, unit_vectors_named(spelled, table), table, field);
@@ -1534,9 +1542,23 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
   std::string answer = number_rows(typed).value_or(without_closing_punctuation(typed));
   // "Rz(φ) Ry(θ) Rz(ψ)": turns about the axes, multiplied out.
   if (const auto turns = rotations_multiplied(answer, field)) answer = *turns;
-  // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out.
-  const std::string source =
-      looks_like_latex(answer) ? latex_as_text(answer, table, field) : answer;
+  // "\frac{m R^{2}}{4}": as a LaTeX key prints it, products written out. A sum of vectors with
+  // one along a unit vector ("\dot\phi \hat z + \dot\theta (-\sin\phi, \cos\phi, 0)", the
+  // hat spelled ẑ, which is no LaTeX) is read term by term, as its Unicode twin is below.
+  std::string source = answer;
+  if (looks_like_latex(answer)) {
+    try {
+      source = latex_as_text(answer, table, field);
+    } catch (const InputError&) {
+      // Not over two bases ("\dot\phi \hat z + \dot\psi \hat e_3"): the caller says so.
+      ReadAnswer sum;
+      if (bases_named(unit_vectors_named(answer, table)) <= 1 &&
+          read_vector_sum(answer, table, field, sum)) {
+        return finished(sum, "", field);
+      }
+      throw;
+    }
+  }
   // "44°41′37″", "303 days 15 h": a quantity in parts, as their sum; "φ + 90°", "cos(30°)":
   // degrees in an expression, as radians.
   const auto in_expression = [&](const std::string& name) {

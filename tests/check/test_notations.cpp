@@ -657,10 +657,29 @@ TEST_CASE("vectors added, each with its factor, read as their sum: ω from the E
        {"φ̇ (0, 0, 1) + θ̇ (−sin φ, cos φ, 0) + ψ̇ (sin θ cos φ, sin θ sin φ, cos θ)",
         "φ̇ [0,0,1] + θ̇ [−sin φ, cos φ, 0] + ψ̇ [sinθ cosφ, sinθ sinφ, cosθ]",
         "φ̇ ẑ + θ̇ (−sin φ, cos φ, 0) + ψ̇ (sin θ cos φ, sin θ sin φ, cos θ)",
-        "ψ̇ (sin θ cos φ, sin θ sin φ, cos θ) - θ̇ (sin φ, −cos φ, 0) + (0, 0, φ̇)"}) {
+        "ψ̇ (sin θ cos φ, sin θ sin φ, cos θ) - θ̇ (sin φ, −cos φ, 0) + (0, 0, φ̇)",
+        // The same in LaTeX, the hat a unit vector and the brackets a tuple or a pmatrix
+        // (whose entries' signs are no terms of the sum).
+        "\\dot\\phi \\hat z + \\dot\\theta (-\\sin\\phi, \\cos\\phi, 0) + \\dot\\psi "
+        "(\\cos\\phi \\sin\\theta, \\sin\\phi \\sin\\theta, \\cos\\theta)",
+        "\\dot{\\phi}\\,\\hat{\\mathbf{z}} - \\dot\\theta \\begin{pmatrix} \\sin\\phi \\\\ "
+        "-\\cos\\phi \\\\ 0 \\end{pmatrix} + \\dot\\psi \\begin{pmatrix} \\cos\\phi "
+        "\\sin\\theta \\\\ \\sin\\phi \\sin\\theta \\\\ \\cos\\theta \\end{pmatrix}"}) {
     INFO(same);
     REQUIRE(euler.check("omega_space", same).correct);
   }
+  REQUIRE_FALSE(euler
+                    .check("omega_space",
+                           "\\dot\\phi \\hat z + \\dot\\theta (\\sin\\phi, "
+                           "-\\cos\\phi, 0) + \\dot\\psi (\\cos\\phi "
+                           "\\sin\\theta, \\sin\\phi \\sin\\theta, "
+                           "\\cos\\theta)")
+                    .correct);
+  // Nor in LaTeX do vectors of two bases add.
+  REQUIRE_THROWS_WITH(
+      euler.check("omega_space",
+                  "\\dot\\phi \\hat z + \\dot\\theta (0, 1, 0) + \\dot\\psi \\hat e_3"),
+      Catch::Contains("ẑ, ê₃ mix bases"));
   // The line of nodes' sign turned: a wrong sum is judged wrong, entry by entry.
   const auto wrong = euler.check(
       "omega_space", "φ̇ (0, 0, 1) + θ̇ (sin φ, −cos φ, 0) + ψ̇ (sin θ cos φ, sin θ sin φ, cos θ)");
