@@ -55,10 +55,17 @@ nlohmann::ordered_json model_json(const SceneSetup& s) {
   return j;
 }
 
+// A measured time to three figures, in us, ms or s. Rounded before the unit is chosen: 999.6 us
+// is "1 ms", where "{:.3g}" of 999.6 would print "1e+03 us".
 std::string seconds(double t) {
+  if (t > 0.0 && std::isfinite(t)) {
+    const double scale = std::pow(10.0, 2.0 - std::floor(std::log10(t)));
+    t = std::round(t * scale) / scale;
+  }
   if (t < 1e-3) return fmt::format("{:.3g} us", t * 1e6);
   if (t < 1.0) return fmt::format("{:.3g} ms", t * 1e3);
-  return fmt::format("{:.3g} s", t);
+  if (t < 1e3) return fmt::format("{:.3g} s", t);
+  return fmt::format("{:.0f} s", t);
 }
 }  // namespace
 

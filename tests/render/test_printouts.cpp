@@ -10,6 +10,7 @@
 #include "render/handout.hpp"
 #include "render/prose.hpp"
 #include "render/render.hpp"
+#include "render/simulation_output.hpp"
 #include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/plain_text.hpp"
@@ -332,4 +333,27 @@ TEST_CASE("every LaTeX key's prose has no raw name: no escaped underscore, no ba
     ++keys;
   }
   REQUIRE(keys >= 15);
+}
+
+TEST_CASE("a measured time is printed to three figures in the unit it reaches") {
+  // Rounded before the unit is chosen: just under a millisecond is 1 ms, not "1e+03 us".
+  const auto cost_line = [](double simulation_time_s) {
+    CrossCheck c;
+    c.method = "Fehlberg 7(8)";
+    c.rhs_evals = 52000;
+    c.simulation_time_s = simulation_time_s;
+    const std::string text = cross_check_text(c, 0.5);
+    return text.substr(text.find("cost of the simulation"));
+  };
+  for (const auto& [t, printed] :
+       std::vector<std::pair<double, std::string>>{{0.0009996, "1 ms"},
+                                                   {0.000999, "999 us"},
+                                                   {0.0123456, "12.3 ms"},
+                                                   {0.9996, "1 s"},
+                                                   {999.6, "1000 s"},
+                                                   {12345.0, "12300 s"}}) {
+    INFO(t);
+    REQUIRE(cost_line(t) == "cost of the simulation: 52000 right-hand-side evaluations, " +
+                                printed + " (Fehlberg 7(8))\n");
+  }
 }
