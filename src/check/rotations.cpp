@@ -1,5 +1,6 @@
 #include "check/rotations.hpp"
 
+#include <algorithm>
 #include <array>
 #include <string_view>
 #include <vector>
@@ -69,11 +70,49 @@ std::string unwrapped(const std::string& s) {
   }
   return trim(s.substr(1, s.size() - 2));
 }
+// The calls that transpose or invert a whole product, as programs write them: MATLAB's and
+// NumPy's, Mathematica's in square brackets.
+constexpr std::array<std::string_view, 9> kInvertingCalls{
+    "transpose(",       "inverse(",          "inv(",       "np.transpose(", "np.linalg.inv(",
+    "numpy.transpose(", "numpy.linalg.inv(", "Transpose[", "Inverse["};
+
+// The product inside a mark or a call that transposes or inverts all of it ("(Rz(φ) Ry(θ))⁻¹",
+// "transpose(Rz(φ) Ry(θ))", "Inverse[..]", NumPy's "(..).T"); nullopt if `s` is no such thing.
+// For turns transposing is inverting: both are the turns back in reverse order.
+std::optional<std::string> inverted_whole(const std::string& s) {
+  for (const std::string_view call : kInvertingCalls) {
+    if (s.compare(0, call.size(), call) != 0) continue;
+    const char close = call.back() == '[' ? ']' : ')';
+    if (s.back() != close) return std::nullopt;
+    int depth = 0;  // the call's bracket must close at the end, not before
+    for (std::size_t i = call.size() - 1; i + 1 < s.size(); ++i) {
+      depth += s[i] == call.back() ? 1 : s[i] == close ? -1 : 0;
+      if (depth == 0) return std::nullopt;
+    }
+    return trim(s.substr(call.size(), s.size() - call.size() - 1));
+  }
+  if (s.empty() || s.front() != '(') return std::nullopt;
+  int depth = 0;
+  std::size_t close = 0;
+  for (; close < s.size(); ++close) {
+    depth += s[close] == '(' ? 1 : s[close] == ')' ? -1 : 0;
+    if (depth == 0) break;
+  }
+  if (close >= s.size()) return std::nullopt;
+  const std::string_view mark = std::string_view(s).substr(close + 1);
+  const auto is_mark = [&](const auto& marks) {
+    return std::find(marks.begin(), marks.end(), mark) != marks.end();
+  };
+  if (!is_mark(kTransposeMarks) && !is_mark(kInverseMarks) && mark != ".T") return std::nullopt;
+  return trim(s.substr(1, close - 1));
+}
 }  // namespace
 
 std::optional<std::string> rotations_multiplied(const std::string& typed,
                                                 const std::string& field) {
-  const std::string s = unwrapped(trim(typed));
+  std::string s = unwrapped(trim(typed));
+  const std::optional<std::string> inside = inverted_whole(s);
+  if (inside) s = unwrapped(*inside);
   std::vector<std::pair<char, std::string>> turns;
   for (std::size_t i = 0; i < s.size();) {
     bool joined = false;  // spaces or a product's sign between factors
@@ -121,6 +160,10 @@ std::optional<std::string> rotations_multiplied(const std::string& typed,
     turns.emplace_back(axis, angle);
   }
   if (turns.empty()) return std::nullopt;
+  if (inside) {  // (A B C)⁻¹ = C⁻¹ B⁻¹ A⁻¹, each turn back
+    std::reverse(turns.begin(), turns.end());
+    for (auto& turn : turns) turn.second = "-(" + turn.second + ")";
+  }
   if (turns.size() > static_cast<std::size_t>(kMostTurns)) {
     throw InputError(field + ": " + std::to_string(turns.size()) + " turns in a product; at most " +
                      std::to_string(kMostTurns) + " (Euler's angles take three)");

@@ -4,7 +4,10 @@
 /// derives one: "Rz(φ) Ry(θ) Rz(ψ)", "R_z(phi)*R_y(theta)*R_z(psi)", "(Rz(φ)·Ry(θ))ᵀ" (the
 /// transpose mark is the answer reader's), and PHY 711's "R_z(\psi)^T R_y(\theta)^T
 /// R_z(\phi)^T": a factor transposed or inverted (ᵀ, ^T, ^{T}, ^\top, ', ⁻¹, ^-1, ^{-1}) is
-/// the turn back, by minus its angle. Each factor is an active turn by its argument
+/// the turn back, by minus its angle, and so is the whole product transposed or inverted by a
+/// mark after its bracket or a program's call ("(Rz(φ) Ry(θ))⁻¹", "inv(..)", "transpose(..)",
+/// NumPy's "np.linalg.inv(..)" and "(..).T", Mathematica's "Inverse[..]"): the turns back in
+/// reverse order. Each factor is an active turn by its argument
 /// (radians, or as the answer reader reads the argument) about x, y or z:
 ///   Rx(a) = [[1, 0, 0], [0, cos a, -sin a], [0, sin a, cos a]],
 ///   Ry(a) = [[cos a, 0, sin a], [0, 1, 0], [-sin a, 0, cos a]],

@@ -871,10 +871,19 @@ TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied ou
         "Rz(ψ)' Ry(θ)' Rz(φ)'",
         // Marks mixed, or one alone: a mark after one factor is that factor's,
         // not the whole product's.
-        "Rz(ψ)^T Ry(θ)^{-1} Rz(φ)′", "Rz(ψ)^{-1} Ry(θ)^T Rz(φ)^{-1}", "Rz(-ψ) Ry(θ)ᵀ Rz(-φ)"}) {
+        "Rz(ψ)^T Ry(θ)^{-1} Rz(φ)′", "Rz(ψ)^{-1} Ry(θ)^T Rz(φ)^{-1}", "Rz(-ψ) Ry(θ)ᵀ Rz(-φ)",
+        // The whole of Taylor's product inverted or transposed, by a mark or by a program's call.
+        "(Rz(φ) Ry(θ) Rz(ψ))⁻¹", "(R_z(\\phi) R_y(\\theta) R_z(\\psi))^{-1}",
+        "transpose(Rz(φ) Ry(θ) Rz(ψ))", "inv(Rz(φ)*Ry(θ)*Rz(ψ))",
+        "np.linalg.inv(Rz(φ) Ry(θ) Rz(ψ))", "(Rz(φ) Ry(θ) Rz(ψ)).T", "Inverse[Rz(φ) Ry(θ) Rz(ψ)]",
+        "Transpose[Rz(φ) Ry(θ) Rz(ψ)]"}) {
     INFO(same);
     REQUIRE(euler.check("R_phy711", same).correct);
   }
+  // Inverted, the reversed product is another matrix; a call on part of a product is no turn.
+  REQUIRE_FALSE(euler.check("R_phy711", "inv(Rz(ψ) Ry(θ) Rz(φ))").correct);
+  REQUIRE_THROWS_WITH(euler.check("R_phy711", "inv(Rz(φ) Ry(θ)) Rz(ψ)"),
+                      Catch::Contains("unknown function 'inv'"));
   // Transposed in the same order is another matrix.
   REQUIRE_FALSE(euler.check("R_phy711", "Rz(φ)ᵀ Ry(θ)ᵀ Rz(ψ)ᵀ").correct);
   // Order and axes matter: the turns reversed, x for y, and a degree off are wrong.
