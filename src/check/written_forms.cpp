@@ -85,7 +85,21 @@ std::optional<std::vector<std::size_t>> checked(const std::vector<std::size_t>& 
 // Where each label's component goes: Euler's angles by name ("phi, theta, psi", "alpha, beta,
 // gamma", as a key orders them), or names alike but for one character, at one place, that says
 // the component ("x", "omega_x", "x_cm", "I1"). nullopt where the labels say no order.
-std::optional<std::vector<std::size_t>> component_slots(const std::vector<std::string>& labels) {
+std::optional<std::vector<std::size_t>> component_slots(const std::vector<std::string>& labels,
+                                                        const std::vector<std::string>& entry_names,
+                                                        std::size_t entries) {
+  if (labels.size() == entry_names.size()) {  // the key's own names, in any order
+    std::vector<std::size_t> slots;
+    for (const auto& l : labels) {
+      const auto at = std::find_if(entry_names.begin(), entry_names.end(),
+                                   [&](const std::string& n) { return name_spelling(n) == l; });
+      if (at == entry_names.end()) break;
+      slots.push_back(static_cast<std::size_t>(at - entry_names.begin()));
+    }
+    if (slots.size() == labels.size()) {
+      if (auto checked_slots = checked(slots)) return checked_slots;
+    }
+  }
   for (const auto& names : {std::array<std::string, 3>{"phi", "theta", "psi"},
                             std::array<std::string, 3>{"alpha", "beta", "gamma"}}) {
     std::vector<std::size_t> slots;
@@ -104,7 +118,8 @@ std::optional<std::vector<std::size_t>> component_slots(const std::vector<std::s
         places.push_back(k);
     }
   }
-  if (places.size() != 1 || labels.size() != 3) return std::nullopt;
+  // Three components, or two where the answer is a pair ("Ω₁ = 7.2, Ω₂ = −11.6").
+  if (places.size() != 1 || labels.size() != (entries == 2 ? 2 : 3)) return std::nullopt;
   std::string axes;
   for (const auto& l : labels)
     axes += static_cast<char>(std::tolower(static_cast<unsigned char>(l[places[0]])));
@@ -229,7 +244,9 @@ std::pair<std::string, std::string> split_unit(const std::string& s) {
 }
 
 std::optional<LabelledComponents> labelled_components(const std::string& text,
-                                                      const std::string& field) {
+                                                      const std::string& field,
+                                                      const std::vector<std::string>& entry_names,
+                                                      std::size_t entries) {
   const std::vector<std::string> items = top_level(text, ',');
   // One item only where its labels are all the components: "I1 = I2 = I3 = 0.006" (a sphere).
   const bool one_chain = items.size() == 1;
@@ -250,13 +267,14 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
       values.push_back(sides.back());
     }
   }
-  const std::optional<std::vector<std::size_t>> slots = component_slots(labels);
+  const std::optional<std::vector<std::size_t>> slots =
+      component_slots(labels, entry_names, entries);
   if (!slots && one_chain) return std::nullopt;  // "L = I0 = 0.00072": a key's line, labelled
   if (!slots) {
     throw InputError(field +
                      ": components given one by one need one label for each, the same name "
-                     "with x, y, z or 1, 2, 3 in it (x = 0.5, y = 1, z = 1.5), or Euler's "
-                     "angles by name; or write the vector [x, y, z]");
+                     "with x, y, z or 1, 2, 3 in it (x = 0.5, y = 1, z = 1.5), the key's names "
+                     "of the entries, or Euler's angles by name; or write the vector [x, y, z]");
   }
   // "x = 0.5, y = 1, z = 1.5 m": a unit after the last value, and none after the others, is
   // the whole vector's, as after a list in brackets.

@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace wobble::check {
 
@@ -51,10 +52,15 @@ struct LabelledComponents {
 /// value); vectors labelled e1 = (..), e2 = (..), e3 = (..) as the columns they are, "[[..],
 /// ..]^T". A unit after the last value alone is the whole vector's ("x = 0.5, y = 1, z = 1.5 m"
 /// -> "[0.5, 1, 1.5] m"). nullopt for a text that is no list of labelled components.
+/// Labels are placed by the key's names of its entries where they are those (`entry_names`,
+/// name_spelling'd: "Ω₃ = 7.2, Ω₁ = −11.6" for the pair the key names (Ω₃, Ω₁)); otherwise by
+/// the one character in which they differ (x, y, z or 1, 2, 3; two of them where the answer has
+/// `entries` = 2, a pair as the lecture's generic "Ω₁, Ω₂").
 /// @throws InputError naming `field` for such a list whose labels are not one name for each of
 ///   x, y, z or 1, 2, 3 (its components could be put in no order).
-std::optional<LabelledComponents> labelled_components(const std::string& text,
-                                                      const std::string& field);
+std::optional<LabelledComponents> labelled_components(
+    const std::string& text, const std::string& field,
+    const std::vector<std::string>& entry_names = {}, std::size_t entries = 3);
 
 /// `typed` without its comments: each line up to a '#', or up to a '%' at its start or after a
 /// space, a tab or a ';' (MATLAB's and LaTeX's: "I0 = 7.2e-4; % kg m^2"; "50%" keeps its sign).

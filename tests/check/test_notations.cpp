@@ -280,6 +280,21 @@ TEST_CASE("components given one by one with their labels") {
   REQUIRE(by_name.correct);
   REQUIRE_THAT(by_name.line, Catch::Contains("as columns"));
 
+  // A pair: the racket spun about e₂ has (Ω₃, Ω₁) in the key, (Ω₁, Ω₂) as the lecture writes
+  // the pair about e₃ and the question asks for it; both name the entries, in any order.
+  const Fixture racket("tennis-racket");
+  const auto& pair = racket.answer("Omega_axis2").value.data;
+  const auto g = [&](std::size_t k) { return fmt::format("{:.10g}", pair[k]); };
+  for (const std::string& same : std::vector<std::string>{
+           "Ω₃ = " + g(0) + ", Ω₁ = " + g(1), "Omega1 = " + g(1) + ", Omega3 = " + g(0) + " rad/s",
+           "Ω₁ = " + g(0) + ", Ω₂ = " + g(1), "Ω_2 = " + g(1) + ", Ω_1 = " + g(0)}) {
+    INFO(same);
+    REQUIRE(racket.check("Omega_axis2", same).correct);
+  }
+  REQUIRE_FALSE(racket.check("Omega_axis2", "Ω₁ = " + g(0) + ", Ω₃ = " + g(1)).correct);
+  REQUIRE_THROWS_WITH(racket.check("Omega_axis2", "Ω₁ = " + g(0) + ", Ω₄ = " + g(1)),
+                      Catch::Contains("the key's names of the entries"));
+
   // Euler's angles by name, in the order of the key's vector.
   const Fixture euler("euler-angles");
   const auto& angles = euler.answer("angles_phy711").value.data;
