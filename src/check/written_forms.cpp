@@ -274,7 +274,9 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
     throw InputError(field +
                      ": components given one by one need one label for each, the same name "
                      "with x, y, z or 1, 2, 3 in it (x = 0.5, y = 1, z = 1.5), the key's names "
-                     "of the entries, or Euler's angles by name; or write the vector [x, y, z]");
+                     "of the entries" +
+                     (entry_names.empty() ? std::string() : " (" + joined(entry_names) + ")") +
+                     ", or Euler's angles by name; or write the vector [x, y, z]");
   }
   // "x = 0.5, y = 1, z = 1.5 m": a unit after the last value, and none after the others, is
   // the whole vector's, as after a list in brackets.

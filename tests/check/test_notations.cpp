@@ -293,7 +293,7 @@ TEST_CASE("components given one by one with their labels") {
   }
   REQUIRE_FALSE(racket.check("Omega_axis2", "Ω₁ = " + g(0) + ", Ω₃ = " + g(1)).correct);
   REQUIRE_THROWS_WITH(racket.check("Omega_axis2", "Ω₁ = " + g(0) + ", Ω₄ = " + g(1)),
-                      Catch::Contains("the key's names of the entries"));
+                      Catch::Contains("the key's names of the entries (Ω₃, Ω₁)"));
 
   // Euler's angles by name, in the order of the key's vector.
   const Fixture euler("euler-angles");
