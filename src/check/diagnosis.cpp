@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <optional>
 
 namespace wobble::check {
@@ -250,14 +251,16 @@ std::optional<std::string> entries_moved(const Finding& f) {
     }
     return std::nullopt;
   }
-  if (shape.shape != Value::Shape::vector || k.size() != 3) return std::nullopt;
-  std::array<std::size_t, 3> order{0, 1, 2};
+  // A vector of three, or a pair (the racket's (Ω₃, Ω₁) about e₂, told the other way round).
+  if (shape.shape != Value::Shape::vector || k.size() < 2 || k.size() > 3) return std::nullopt;
+  std::vector<std::size_t> order(k.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
   while (std::next_permutation(order.begin(), order.end())) {
-    std::vector<double> moved(3);
-    for (std::size_t i = 0; i < 3; ++i) moved[i] = k[order[i]];
+    std::vector<double> moved(k.size());
+    for (std::size_t i = 0; i < k.size(); ++i) moved[i] = k[order[i]];
     if (!f.all_close(f.typed, moved)) continue;
     std::vector<std::size_t> out_of_place;
-    for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t i = 0; i < k.size(); ++i) {
       if (order[i] != i) out_of_place.push_back(i);
     }
     if (out_of_place.size() == 2) {

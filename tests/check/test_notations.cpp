@@ -291,7 +291,10 @@ TEST_CASE("components given one by one with their labels") {
     INFO(same);
     REQUIRE(racket.check("Omega_axis2", same).correct);
   }
-  REQUIRE_FALSE(racket.check("Omega_axis2", "Ω₁ = " + g(0) + ", Ω₃ = " + g(1)).correct);
+  const check::Verdict swapped = racket.check("Omega_axis2", "Ω₁ = " + g(0) + ", Ω₃ = " + g(1));
+  REQUIRE_FALSE(swapped.correct);
+  REQUIRE(swapped.feedback ==
+          std::vector<std::string>{"the right entries in another order: Ω₃ and Ω₁ are swapped"});
   REQUIRE_THROWS_WITH(racket.check("Omega_axis2", "Ω₁ = " + g(0) + ", Ω₄ = " + g(1)),
                       Catch::Contains("the key's names of the entries (Ω₃, Ω₁)"));
 
