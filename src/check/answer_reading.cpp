@@ -889,7 +889,8 @@ std::string reading_form(const std::string& typed) {
 namespace {
 // The one bracket at the top level of `s` that holds a vector or matrix: '[' or '{', or '(' with
 // a comma inside that is no function's call ("atan2(y, x)" is one). npos if none or several.
-std::pair<std::size_t, std::size_t> vector_group(const std::string& s) {
+std::pair<std::size_t, std::size_t> vector_group(const std::string& s,
+                                                 const sym::SymbolTable& table) {
   std::pair<std::size_t, std::size_t> found{std::string::npos, std::string::npos};
   int depth = 0;
   std::size_t open = 0;
@@ -904,9 +905,15 @@ std::pair<std::size_t, std::size_t> vector_group(const std::string& s) {
     } else if (c == ')' || c == ']' || c == '}') {
       if (--depth < 0) return {std::string::npos, std::string::npos};
       if (depth > 0) continue;
-      const bool call =
-          s[open] == '(' && open > 0 &&
-          (std::isalnum(static_cast<unsigned char>(s[open - 1])) || s[open - 1] == '_');
+      // "atan2(y, x)" is a call; "omega(sin alpha, 0, 2 cos alpha)", the problem's symbol against
+      // the bracket, a factor outside a vector, as books write one.
+      std::size_t name = open;
+      while (name > 0 &&
+             (std::isalnum(static_cast<unsigned char>(s[name - 1])) || s[name - 1] == '_'))
+        --name;
+      const std::string before = s.substr(name, open - name);
+      const bool call = s[open] == '(' && !before.empty() &&
+                        !(table.contains(before) && !sym::is_function_name(before));
       if (s[open] != '(' || (comma && !call)) {
         if (found.first != std::string::npos) return {std::string::npos, std::string::npos};
         found = {open, i};
@@ -963,7 +970,7 @@ std::string with_one_in_place(const std::string& before, const std::string& afte
 // such product or either part does not read.
 bool read_with_factor(const std::string& value, const sym::SymbolTable& table,
                       const std::string& field, ReadAnswer& p) {
-  const auto [open, close] = vector_group(value);
+  const auto [open, close] = vector_group(value, table);
   if (open == std::string::npos || (open == 0 && close + 1 == value.size())) return false;
   // A product only, decided from the text: judging it by algebra on the rest (is it k X?) could
   // take GiNaC's normal() on a hostile expression.

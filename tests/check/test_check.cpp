@@ -378,6 +378,9 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
            {"L0_body", "m R^2 omega/4 [sin(alpha), 0, 2 cos(alpha)]"},
            {"L0_body", "[sin(alpha), 0, 2*cos(alpha)]*m*R^2*omega/4"},
            {"L0_body", "(m R^2 omega/4)(sin(alpha), 0, 2 cos(alpha))"},
+           // A symbol against the bracket, as a statement writes ω(sin α, 0, cos α): no call.
+           {"L0_body", "m R²ω(sin α, 0, 2cos α)/4"},
+           {"Omega_space", "ω(sin α, 0, 2 cos α) rad/s"},
            {"L0_body", "2 (0.0009317485625, 0, 0.00695466595) kg m^2/s"},
            {"I", "m R^2/4 [[1, 0, 0], [0, 1, 0], [0, 0, 2]]"},
            {"I",
@@ -391,7 +394,7 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
   REQUIRE_FALSE(plate.check("I", "m R^2/2 [[1, 0, 0], [0, 1, 0], [0, 0, 2]]").correct);
   for (const std::string none :
        {"[sin(alpha), 0, 2 cos(alpha)]/4 + 1", "sqrt([1, 0, 2])", "2 [1, 0, 2] [1, 0, 2]",
-        "1/[1, 0, 2]", "[1, 0, 2]^2", "2^[1, 0, 2]"}) {
+        "1/[1, 0, 2]", "[1, 0, 2]^2", "2^[1, 0, 2]", "atan2(sin(alpha), 0, 2)"}) {
     INFO(none);
     REQUIRE_THROWS_AS(plate.check("L0_body", none), InputError);
   }
