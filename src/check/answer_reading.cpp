@@ -83,8 +83,10 @@ std::string bracket_group(const std::string& group) {
 std::string layout(const std::string& value) {
   if (value.empty()) return value;
   if (top_level(value, ';').size() > 1) return semicolon_rows(value);
-  if (wrapped(value, '(') && top_level(value.substr(1, value.size() - 2), ',').size() > 1) {
-    return bracket_group("[" + value.substr(1, value.size() - 2) + "]");
+  // "(a, b, c)", and "(a; b; c)" as "[a; b; c]", a column.
+  if (const std::string inside = wrapped(value, '(') ? value.substr(1, value.size() - 2) : "";
+      top_level(inside, ',').size() > 1 || top_level(inside, ';').size() > 1) {
+    return bracket_group("[" + inside + "]");
   }
   const auto groups = top_level(value, ' ');
   const bool all_groups = std::all_of(groups.begin(), groups.end(), [](const std::string& g) {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -521,9 +522,11 @@ TEST_CASE("angle brackets write a vector; a transpose mark transposes a matrix")
   std::string with_ampersands = inside;
   for (auto at = with_ampersands.find(','); at != std::string::npos; at = with_ampersands.find(','))
     with_ampersands.replace(at, 1, " &");
+  std::string with_semicolons = inside;  // a column, as MATLAB's [x; y; z] and in parentheses
+  std::replace(with_semicolons.begin(), with_semicolons.end(), ',', ';');
   for (const std::string& same :
        {"<" + inside + ">", "⟨" + inside + "⟩", "〈" + inside + "〉 m", "[" + inside + "]ᵀ",
-        "(" + inside + ")^T m",
+        "[" + with_semicolons + "]", "(" + with_semicolons + ") m", "(" + inside + ")^T m",
         // LaTeX's row vector, transposed
         "\\begin{pmatrix}" + with_ampersands + "\\end{pmatrix}^{\\top}"}) {
     INFO(same);
