@@ -247,16 +247,35 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
                                                       const std::string& field,
                                                       const std::vector<std::string>& entry_names,
                                                       std::size_t entries) {
-  const std::vector<std::string> items = top_level(text, ',');
-  // One item only where its labels are all the components: "I1 = I2 = I3 = 0.006" (a sphere).
-  const bool one_chain = items.size() == 1;
-  if (one_chain && top_level(text, '=').size() < 3) return std::nullopt;
-  std::vector<std::string> labels, values;
   // A label: one word, no operator or bracket in it ("I₁", "omega_x", "α").
   const auto label_like = [](const std::string& side) {
     const std::string t = trim(side);
     return !t.empty() && t.find_first_of(" +-*/^()[]{}.,") == std::string::npos;
   };
+  std::vector<std::string> items = top_level(text, ',');
+  // "φ=130° θ=30° ψ=-20°": items parted by spaces alone, each side between two '=' a value and
+  // the next label; read so only where the labels place the components (below).
+  bool spaced = false;
+  if (const std::vector<std::string> sides = top_level(text, '=');
+      items.size() == 1 && sides.size() >= 3) {
+    std::vector<std::string> parted{trim(sides[0])};
+    for (std::size_t k = 1; k + 1 < sides.size(); ++k) {
+      const std::string side = trim(sides[k]);
+      const std::size_t space = side.find_last_of(' ');
+      if (space == std::string::npos || !label_like(side.substr(space + 1))) break;
+      parted.back() += " = " + trim(side.substr(0, space));
+      parted.push_back(side.substr(space + 1));
+    }
+    if (parted.size() == sides.size() - 1) {
+      parted.back() += " = " + trim(sides.back());
+      items = parted;
+      spaced = true;
+    }
+  }
+  // One item only where its labels are all the components: "I1 = I2 = I3 = 0.006" (a sphere).
+  const bool one_chain = items.size() == 1;
+  if (one_chain && top_level(text, '=').size() < 3) return std::nullopt;
+  std::vector<std::string> labels, values;
   for (const auto& item : items) {
     const std::vector<std::string> sides = top_level(item, '=');
     if (sides.size() < 2 || sides[0].empty() || sides.back().empty()) return std::nullopt;
@@ -269,7 +288,8 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
   }
   const std::optional<std::vector<std::size_t>> slots =
       component_slots(labels, entry_names, entries);
-  if (!slots && one_chain) return std::nullopt;  // "L = I0 = 0.00072": a key's line, labelled
+  // "L = I0 = 0.00072": a key's line, labelled; "L = I0 ω = 0.00072", no components spaced.
+  if (!slots && (one_chain || spaced)) return std::nullopt;
   if (!slots) {
     throw InputError(field +
                      ": components given one by one need one label for each, the same name "

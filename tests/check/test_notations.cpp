@@ -253,6 +253,7 @@ TEST_CASE("components given one by one with their labels") {
            "x = " + f(0) + ", y = " + f(1) + ", z = " + f(2),
            "z = " + f(2) + " m, x = " + f(0) + " m, y = " + f(1) + " m",  // any order
            "x_cm = a/2, y_cm = b/2, z_cm = c/2",
+           "x=a/2 y=b/2 z=c/2",  // parted by spaces alone
            "r₁ = " + f(0) + ", r₂ = " + f(1) + ", r₃ = " + f(2)}) {
     INFO(same);
     REQUIRE(box.check("center_of_mass", same).correct);
@@ -306,6 +307,13 @@ TEST_CASE("components given one by one with their labels") {
               .check("angles_phy711",
                      "γ = " + degrees(2) + ", α = " + degrees(0) + ", β = " + degrees(1))
               .correct);
+  REQUIRE(
+      euler.check("angles_phy711", "α=" + degrees(0) + " β=" + degrees(1) + "  γ = " + degrees(2))
+          .correct);
+  // Spaces part labelled components only where the labels place them: a key's line with a
+  // product in it stays a line ("I0 ω" is no label and value).
+  REQUIRE_THROWS_WITH(euler.check("kinetic_energy", "T = I1 ω = 3"),
+                      Catch::Contains("3 sides of '='"));
   REQUIRE(euler
               .check("angles_phy711",
                      "phi = " + degrees(0) + ", theta = " + degrees(1) + ", psi = " + degrees(2))
