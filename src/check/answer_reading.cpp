@@ -914,7 +914,9 @@ std::pair<std::size_t, std::size_t> vector_group(const std::string& s,
              (std::isalnum(static_cast<unsigned char>(s[name - 1])) || s[name - 1] == '_'))
         --name;
       const std::string before = s.substr(name, open - name);
+      // A number against the bracket ("a^2(3, 0; ..)", "2(1, 0, 1)") is no name: no call either.
       const bool call = s[open] == '(' && !before.empty() &&
+                        !std::isdigit(static_cast<unsigned char>(before[0])) &&
                         !(table.contains(before) && !sym::is_function_name(before));
       if (s[open] != '(' || (comma && !call)) {
         if (found.first != std::string::npos) return {std::string::npos, std::string::npos};

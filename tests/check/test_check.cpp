@@ -382,6 +382,8 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
            // A symbol against the bracket, as a statement writes ω(sin α, 0, cos α): no call.
            {"L0_body", "m R²ω(sin α, 0, 2cos α)/4"},
            {"Omega_space", "ω(sin α, 0, 2 cos α) rad/s"},
+           // A power against it: MATLAB's rows in parentheses, the factor glued.
+           {"I", "mR²(1 0 0; 0 1 0; 0 0 2)/4"},
            {"L0_body", "2 (0.0009317485625, 0, 0.00695466595) kg m^2/s"},
            {"I", "m R^2/4 [[1, 0, 0], [0, 1, 0], [0, 0, 2]]"},
            {"I",
