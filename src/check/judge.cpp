@@ -911,7 +911,7 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
   // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows
   // of a list where one has a factor outside its bracket.
-  const std::size_t entries = a.value.shape == Value::Shape::vector ? a.value.data.size() : 3;
+  const std::size_t entries = a.value.shape == Value::Shape::scalar ? 3 : a.value.data.size();
   if (const auto components = labelled_components(written, kField, a.named_entries, entries)) {
     return judge_one(ctx, a, components->text, options,
                      components->columns ? AxesLayout::columns : AxesLayout::rows);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "check/brackets.hpp"
@@ -243,6 +244,65 @@ std::pair<std::string, std::string> split_unit(const std::string& s) {
   return {s, ""};
 }
 
+namespace {
+// The axis an index character names (x, y, z or 1, 2, 3 as 0, 1, 2), or -1.
+int axis_index(char c) {
+  const std::size_t at = std::string_view("xyz123").find(
+      static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+  return at == std::string_view::npos ? -1 : static_cast<int>(at % 3);
+}
+
+// "I_xx = .., I_yy = .., I_zz = .., I_xy = ..": a tensor's entries by their two indices, names
+// alike but for two characters side by side (xx, xy, .. or 11, 12, ..). An entry not given is
+// its mirror's, the tensor being symmetric, else zero ("I_xx = I_yy = .., I_zz = ..": a
+// diagonal tensor told by its diagonal). nullopt where the labels are no such entries.
+std::optional<std::string> tensor_entries(const std::vector<std::string>& labels,
+                                          const std::vector<std::string>& values) {
+  if (labels.size() < 2 || labels.size() > 9) return std::nullopt;
+  const std::string& first = labels[0];
+  std::vector<std::size_t> places;  // where some label differs from the first
+  for (const auto& l : labels) {
+    if (l.size() != first.size() || l.size() < 2) return std::nullopt;
+    for (std::size_t k = 0; k < l.size(); ++k) {
+      if (l[k] != first[k] && std::find(places.begin(), places.end(), k) == places.end())
+        places.push_back(k);
+    }
+  }
+  std::sort(places.begin(), places.end());
+  if (places.empty() || places.size() > 2 || places.back() - places.front() > 1)
+    return std::nullopt;
+  // The two indices: the places themselves, or one of them and its neighbour.
+  for (const std::size_t at : {places.front(), places.front() == 0 ? 0 : places.front() - 1}) {
+    if (at + 1 >= first.size() || places.back() > at + 1) continue;
+    std::array<std::array<std::string, 3>, 3> m;
+    bool fits = true;
+    const bool digits = std::isdigit(static_cast<unsigned char>(first[at])) != 0;
+    for (std::size_t k = 0; k < labels.size() && fits; ++k) {
+      const char a = labels[k][at], b = labels[k][at + 1];
+      const int r = axis_index(a), c = axis_index(b);
+      fits = r >= 0 && c >= 0 && (std::isdigit(static_cast<unsigned char>(a)) != 0) == digits &&
+             (std::isdigit(static_cast<unsigned char>(b)) != 0) == digits;
+      if (!fits) break;
+      std::string& entry = m[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+      fits = entry.empty();  // each entry once
+      entry = values[k];
+    }
+    if (!fits) continue;
+    std::string out = "[";
+    for (std::size_t r = 0; r < 3; ++r) {
+      out += r ? ", [" : "[";
+      for (std::size_t c = 0; c < 3; ++c) {
+        const std::string& v = !m[r][c].empty() ? m[r][c] : !m[c][r].empty() ? m[c][r] : "0";
+        out += (c ? ", " : "") + v;
+      }
+      out += "]";
+    }
+    return out + "]";
+  }
+  return std::nullopt;
+}
+}  // namespace
+
 std::optional<LabelledComponents> labelled_components(const std::string& text,
                                                       const std::string& field,
                                                       const std::vector<std::string>& entry_names,
@@ -286,18 +346,6 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
       values.push_back(sides.back());
     }
   }
-  const std::optional<std::vector<std::size_t>> slots =
-      component_slots(labels, entry_names, entries);
-  // "L = I0 = 0.00072": a key's line, labelled; "L = I0 ω = 0.00072", no components spaced.
-  if (!slots && (one_chain || spaced)) return std::nullopt;
-  if (!slots) {
-    throw InputError(field +
-                     ": components given one by one need one label for each, the same name "
-                     "with x, y, z or 1, 2, 3 in it (x = 0.5, y = 1, z = 1.5), the key's names "
-                     "of the entries" +
-                     (entry_names.empty() ? std::string() : " (" + joined(entry_names) + ")") +
-                     ", or Euler's angles by name; or write the vector [x, y, z]");
-  }
   // "x = 0.5, y = 1, z = 1.5 m": a unit after the last value, and none after the others, is
   // the whole vector's, as after a list in brackets.
   std::string unit;
@@ -311,6 +359,21 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
         if (v == values.back()) v = last;  // equal components told once share the value
       }
     }
+  }
+  if (entries == 9) {  // a matrix: its entries by two indices
+    if (auto tensor = tensor_entries(labels, values)) return LabelledComponents{*tensor + unit};
+  }
+  const std::optional<std::vector<std::size_t>> slots =
+      component_slots(labels, entry_names, entries);
+  // "L = I0 = 0.00072": a key's line, labelled; "L = I0 ω = 0.00072", no components spaced.
+  if (!slots && (one_chain || spaced)) return std::nullopt;
+  if (!slots) {
+    throw InputError(field +
+                     ": components given one by one need one label for each, the same name "
+                     "with x, y, z or 1, 2, 3 in it (x = 0.5, y = 1, z = 1.5), the key's names "
+                     "of the entries" +
+                     (entry_names.empty() ? std::string() : " (" + joined(entry_names) + ")") +
+                     ", or Euler's angles by name; or write the vector [x, y, z]");
   }
   std::vector<std::string> in_order(labels.size());
   for (std::size_t k = 0; k < labels.size(); ++k) in_order[(*slots)[k]] = values[k];

@@ -55,7 +55,9 @@ struct LabelledComponents {
 /// Labels are placed by the key's names of its entries where they are those (`entry_names`,
 /// name_spelling'd: "Ω₃ = 7.2, Ω₁ = −11.6" for the pair the key names (Ω₃, Ω₁)); otherwise by
 /// the one character in which they differ (x, y, z or 1, 2, 3; two of them where the answer has
-/// `entries` = 2, a pair as the lecture's generic "Ω₁, Ω₂").
+/// `entries` = 2, a pair as the lecture's generic "Ω₁, Ω₂"). Where the answer is a matrix
+/// (`entries` = 9), labels alike but for two indices side by side are its entries, "I_xx = ..,
+/// I_yy = .., I_zz = .., I_xy = ..", one not given its mirror's (a symmetric tensor) or zero.
 /// @throws InputError naming `field` for such a list whose labels are not one name for each of
 ///   x, y, z or 1, 2, 3 (its components could be put in no order).
 std::optional<LabelledComponents> labelled_components(

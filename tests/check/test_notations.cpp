@@ -281,6 +281,20 @@ TEST_CASE("components given one by one with their labels") {
   REQUIRE(by_name.correct);
   REQUIRE_THAT(by_name.line, Catch::Contains("as columns"));
 
+  // A tensor by its entries' two indices: one not given is its mirror's, else zero.
+  const Fixture cone("solid-cone");
+  for (const std::string& same : std::vector<std::string>{
+           "I_xx = I_yy = 3M(R²+4h²)/20, I_zz = 3MR²/10",
+           "I₁₁ = I₂₂ = 3M(R² + 4h²)/20, I₃₃ = 3M R²/10, I₁₂ = 0",
+           "Izz = 3 M R^2/10 Ixx = 3M(R^2 + 4h^2)/20 Iyy = 3M(R^2 + 4h^2)/20"}) {
+    INFO(same);
+    REQUIRE(cone.check("I_apex", same).correct);
+  }
+  REQUIRE_FALSE(cone.check("I_apex", "I_xx = 3M(R²+4h²)/20, I_zz = 3MR²/10").correct);
+  const Fixture masses("four-masses");  // I_xy = −m a²/2, told once
+  REQUIRE(masses.check("I", "Ixx = Iyy = Izz = 3 m a^2, Ixy = -m a^2/2").correct);
+  REQUIRE_FALSE(masses.check("I", "Ixx = Iyy = Izz = 3 m a^2, Ixz = -m a^2/2").correct);
+
   // A pair: the racket spun about e₂ has (Ω₃, Ω₁) in the key, (Ω₁, Ω₂) as the lecture writes
   // the pair about e₃ and the question asks for it; both name the entries, in any order.
   const Fixture racket("tennis-racket");
