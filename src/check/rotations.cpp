@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "check/brackets.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 
@@ -83,22 +84,13 @@ std::optional<std::string> inverted_whole(const std::string& s) {
   for (const std::string_view call : kInvertingCalls) {
     if (s.compare(0, call.size(), call) != 0) continue;
     const char close = call.back() == '[' ? ']' : ')';
-    if (s.back() != close) return std::nullopt;
-    int depth = 0;  // the call's bracket must close at the end, not before
-    for (std::size_t i = call.size() - 1; i + 1 < s.size(); ++i) {
-      depth += s[i] == call.back() ? 1 : s[i] == close ? -1 : 0;
-      if (depth == 0) return std::nullopt;
-    }
+    // The call's bracket closes at the end, not before.
+    if (s.back() != close || matching(s, call.size() - 1) != s.size() - 1) return std::nullopt;
     return trim(s.substr(call.size(), s.size() - call.size() - 1));
   }
   if (s.empty() || s.front() != '(') return std::nullopt;
-  int depth = 0;
-  std::size_t close = 0;
-  for (; close < s.size(); ++close) {
-    depth += s[close] == '(' ? 1 : s[close] == ')' ? -1 : 0;
-    if (depth == 0) break;
-  }
-  if (close >= s.size()) return std::nullopt;
+  const std::size_t close = matching(s, 0);
+  if (close == std::string::npos) return std::nullopt;
   const std::string_view mark = std::string_view(s).substr(close + 1);
   const auto is_mark = [&](const auto& marks) {
     return std::find(marks.begin(), marks.end(), mark) != marks.end();

@@ -83,35 +83,25 @@ std::optional<std::vector<std::size_t>> checked(const std::vector<std::size_t>& 
   return slots;
 }
 
-// Where each label's component goes: Euler's angles by name ("phi, theta, psi", "alpha, beta,
-// gamma", as a key orders them), or names alike but for one character, at one place, that says
-// the component ("x", "omega_x", "x_cm", "I1"). nullopt where the labels say no order.
-std::optional<std::vector<std::size_t>> component_slots(const std::vector<std::string>& labels,
-                                                        const std::vector<std::string>& entry_names,
-                                                        std::size_t entries) {
-  if (labels.size() == entry_names.size()) {  // the key's own names, in any order
-    std::vector<std::size_t> slots;
-    for (const auto& l : labels) {
-      const auto at = std::find_if(entry_names.begin(), entry_names.end(),
-                                   [&](const std::string& n) { return name_spelling(n) == l; });
-      if (at == entry_names.end()) break;
-      slots.push_back(static_cast<std::size_t>(at - entry_names.begin()));
-    }
-    if (slots.size() == labels.size()) {
-      if (auto checked_slots = checked(slots)) return checked_slots;
-    }
+// The slots of labels that are all among `names`, as many as they, in any order (each label's
+// place in `names`); nullopt otherwise.
+std::optional<std::vector<std::size_t>> slots_among(const std::vector<std::string>& labels,
+                                                    const std::vector<std::string>& names) {
+  if (labels.size() != names.size()) return std::nullopt;
+  std::vector<std::size_t> slots;
+  for (const auto& l : labels) {
+    const auto at = std::find(names.begin(), names.end(), l);
+    if (at == names.end()) return std::nullopt;
+    slots.push_back(static_cast<std::size_t>(at - names.begin()));
   }
-  for (const auto& names : {std::array<std::string, 3>{"phi", "theta", "psi"},
-                            std::array<std::string, 3>{"alpha", "beta", "gamma"}}) {
-    std::vector<std::size_t> slots;
-    for (const auto& l : labels) {
-      const auto at = std::find(names.begin(), names.end(), l);
-      if (at != names.end()) slots.push_back(static_cast<std::size_t>(at - names.begin()));
-    }
-    if (slots.size() == labels.size() && labels.size() == names.size()) return checked(slots);
-  }
-  const std::string& first = labels[0];
-  std::vector<std::size_t> places;  // where some label differs from the first
+  return slots;
+}
+
+// Where labels of one length differ from the first, in increasing order; nullopt where their
+// lengths differ.
+std::optional<std::vector<std::size_t>> differing_places(const std::vector<std::string>& labels) {
+  const std::string& first = labels.at(0);
+  std::vector<std::size_t> places;
   for (const auto& l : labels) {
     if (l.size() != first.size()) return std::nullopt;
     for (std::size_t k = 0; k < l.size(); ++k) {
@@ -119,11 +109,33 @@ std::optional<std::vector<std::size_t>> component_slots(const std::vector<std::s
         places.push_back(k);
     }
   }
+  std::sort(places.begin(), places.end());
+  return places;
+}
+
+// Where each label's component goes: by the key's own names of the entries, Euler's angles by
+// name ("phi, theta, psi", "alpha, beta, gamma", as a key orders them), or names alike but for
+// one character, at one place, that says the component ("x", "omega_x", "x_cm", "I1"). nullopt
+// where the labels say no order.
+std::optional<std::vector<std::size_t>> component_slots(const std::vector<std::string>& labels,
+                                                        const std::vector<std::string>& entry_names,
+                                                        std::size_t entries) {
+  std::vector<std::string> spelled;  // the key's names as labels are spelled
+  for (const auto& n : entry_names) spelled.push_back(name_spelling(n));
+  if (const auto slots = slots_among(labels, spelled)) {
+    if (auto each_once = checked(*slots)) return each_once;
+  }
+  for (const auto& names : {std::vector<std::string>{"phi", "theta", "psi"},
+                            std::vector<std::string>{"alpha", "beta", "gamma"}}) {
+    if (const auto slots = slots_among(labels, names)) return checked(*slots);
+  }
+  const auto places = differing_places(labels);
+  if (!places) return std::nullopt;
   // Three components, or two where the answer is a pair ("Ω₁ = 7.2, Ω₂ = −11.6").
-  if (places.size() != 1 || labels.size() != (entries == 2 ? 2 : 3)) return std::nullopt;
+  if (places->size() != 1 || labels.size() != (entries == 2 ? 2 : 3)) return std::nullopt;
   std::string axes;
   for (const auto& l : labels)
-    axes += static_cast<char>(std::tolower(static_cast<unsigned char>(l[places[0]])));
+    axes += static_cast<char>(std::tolower(static_cast<unsigned char>(l[places->front()])));
   const std::string order = axes.find_first_of("xyz") != std::string::npos ? "xyz" : "123";
   std::vector<std::size_t> slots;
   for (const char a : axes) {
@@ -260,15 +272,9 @@ std::optional<std::string> tensor_entries(const std::vector<std::string>& labels
                                           const std::vector<std::string>& values) {
   if (labels.size() < 2 || labels.size() > 9) return std::nullopt;
   const std::string& first = labels[0];
-  std::vector<std::size_t> places;  // where some label differs from the first
-  for (const auto& l : labels) {
-    if (l.size() != first.size() || l.size() < 2) return std::nullopt;
-    for (std::size_t k = 0; k < l.size(); ++k) {
-      if (l[k] != first[k] && std::find(places.begin(), places.end(), k) == places.end())
-        places.push_back(k);
-    }
-  }
-  std::sort(places.begin(), places.end());
+  const auto found = differing_places(labels);
+  if (!found || first.size() < 2) return std::nullopt;
+  const std::vector<std::size_t>& places = *found;
   if (places.empty() || places.size() > 2 || places.back() - places.front() > 1)
     return std::nullopt;
   // The two indices: the places themselves, or one of them and its neighbour.
