@@ -123,6 +123,16 @@ void check_budget(const IntegrationCost& cost, std::int64_t limit) {
   }
 }
 
+// |q|^2 from four scalar loads. Eigen's squaredNorm() loads q's components in pairs, and a pair
+// that straddles two of the step's stores cannot be forwarded from them: the load waits for the
+// stores to reach the cache. On the bench's P1 (Dormand-Prince, tolerance 1e-12) that load and
+// the multiply after it held half the samples of the integrator's own loop in a profile; written
+// out, a run went from 40.1-40.4 to 38.6-39.1 us (medians of 41, two side-by-side runs).
+double quaternion_squared_norm(const State7& y) {
+  const double* q = y.data() + 3;
+  return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+}
+
 // Scales q to unit length; returns the factor. f's q part, q (0, w) / 2, scales with it and its
 // m part does not depend on |q| (the torques use q / |q|): a first-same-as-last stage f(y)
 // stays f of the renormalised y when its q part is multiplied by the same factor.
@@ -136,7 +146,7 @@ void check_budget(const IntegrationCost& cost, std::int64_t limit) {
 constexpr double kSeriesReach = 0x1p-18;
 double renormalise(State7& y) {
   double* q = y.data() + 3;
-  const double squared = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], d = squared - 1.0;
+  const double squared = quaternion_squared_norm(y), d = squared - 1.0;
   const double factor =
       std::abs(d) <= kSeriesReach ? 1.0 + d * (-0.5 + 0.375 * d) : 1.0 / std::sqrt(squared);
   for (int i = 0; i < 4; ++i) q[i] *= factor;
@@ -151,7 +161,7 @@ double renormalise(State7& y) {
 // evaluation on the free body).
 constexpr double kUnitSlack = 1e-6;
 double keep_near_unit(State7& y) {
-  return std::abs(y.tail<4>().squaredNorm() - 1.0) > kUnitSlack ? renormalise(y) : 1.0;
+  return std::abs(quaternion_squared_norm(y) - 1.0) > kUnitSlack ? renormalise(y) : 1.0;
 }
 
 template <class T>
