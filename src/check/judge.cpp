@@ -718,6 +718,18 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
   return v;
 }
 
+// One name that no symbol of the problem has, as "E" or "θ_L" before an '='.
+bool is_own_label(const Context& ctx, const Answer& a, const std::string& side,
+                  const Options& options) {
+  if (!is_one_name(side)) return false;
+  try {
+    judge_one(ctx, a, side, options);
+  } catch (const InputError& e) {
+    return !undefined_name(e.what()).empty();
+  }
+  return false;
+}
+
 // An answer with a '±' is two answers (plus_minus.hpp). Both right (a value ± its uncertainty
 // within the tolerance) is right; else the student is asked for one and told which is right, and
 // what the other one is where a mistake is found (the heavy top's other precession rate).
@@ -916,7 +928,13 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
     return judge_one(ctx, a, components->text, options,
                      components->columns ? AxesLayout::columns : AxesLayout::rows);
   }
-  const auto parts = sides(approximations_as_equal(written), a.name);
+  auto parts = sides(approximations_as_equal(written), a.name);
+  // "E = M R² ψ̇₀²/4 + M g l cos θ₀ = 7.37 J", "E = T + V = 7.37 J": a label of the student's own
+  // (one name that is no symbol of the problem) before a key's line, or before a formula of
+  // their own and the value. The label is dropped, as before one side; the rest read as two
+  // sides are.
+  if (parts.size() > kMostSides && is_own_label(ctx, a, parts[0], options))
+    parts.erase(parts.begin());
   if (parts.size() == 1) return judge_one(ctx, a, parts[0], options);
   // "cos θ_max = 0.7109": the cosine of an angle asked for, as u = cos θ is found first.
   if (const std::string f = function_of_answer(parts[0], a); parts.size() == 2 && !f.empty()) {

@@ -775,6 +775,30 @@ TEST_CASE("a key line with '=' is judged side by side, the answer's name or a la
   const Verdict symbol_side = plate.check("angle_omega_e3", "m = 0.2618 rad");
   REQUIRE_FALSE(symbol_side.correct);
   REQUIRE_THAT(symbol_side.feedback.at(0), Catch::StartsWith("the side \"m\""));
+  // The label before a whole key's line, "E = closed form = value", as a derivation ends: dropped
+  // as before one side, and the two sides after it judged. A formula of the student's own
+  // between them ("E = T + V = ..") is a label too, said unjudged; a symbol of the problem first
+  // is no label, and the line stays three sides.
+  const Answer& energy = top.answer("energy");
+  const std::string energy_value = printed_value(energy);
+  REQUIRE(top.check("energy", "E = " + energy.symbolic + " = " + energy_value).correct);
+  REQUIRE(top.check("energy", "E = " + energy_value + " = " + energy.symbolic).correct);
+  REQUIRE(top.check("energy", "E = MR²ψ̇₀²/4 + Mgl cos θ₀ = " + energy_value).correct);
+  const Verdict labelled = top.check("energy", "E = T + V = " + energy_value);
+  REQUIRE(labelled.correct);
+  REQUIRE(labelled.feedback == std::vector<std::string>{"the side \"T + V\" of your '=' is taken "
+                                                        "as a label, not judged: T is no symbol "
+                                                        "here"});
+  const Verdict wrong_side = top.check(
+      "energy", "E = " + energy.symbolic + " = " + format_number(energy.value.data[0] * 1.05));
+  REQUIRE_FALSE(wrong_side.correct);
+  REQUIRE_THAT(wrong_side.feedback.at(0),
+               Catch::StartsWith("the side \"" + format_number(energy.value.data[0] * 1.05)));
+  REQUIRE_FALSE(top.check("energy", "E = MR²ψ̇₀²/4 − Mgl cos θ₀ = " + energy_value).correct);
+  REQUIRE_THAT(error_of(top, "energy", "M = " + energy.symbolic + " = " + energy_value),
+               Catch::Contains("3 sides of '='"));
+  REQUIRE_THAT(error_of(top, "energy", "E = T + V = " + energy.symbolic + " = " + energy_value),
+               Catch::Contains("3 sides of '='"));
   // Every side must be right; the wrong one is named.
   const Verdict v = plate.check("I0", i0.symbolic + " = " + format_number(i0.value.data[0] * 1.05));
   REQUIRE_FALSE(v.correct);
