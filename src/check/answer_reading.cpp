@@ -1421,11 +1421,24 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
 }  // namespace
 
 namespace {
+// Whether unit_vectors_named's list ("i, k", "x̂, ẑ") names bare i, j or k only: letters that
+// may be names of the student's own ("k'^2", "4K(k)/λ") rather than unit vectors.
+bool only_bare_letters(const std::string& vectors) {
+  for (std::size_t at = 0; at < vectors.size();) {
+    const std::size_t end = std::min(vectors.find(", ", at), vectors.size());
+    const std::string name = vectors.substr(at, end - at);
+    if (name != "i" && name != "j" && name != "k") return false;
+    at = end + 2;
+  }
+  return true;
+}
+
 // "0.5 i + j + 1.5 k", "0.5 ê₁ + 1.5 ê₃" (unit vectors as basis_vectors_spelled writes them): the
 // components read as a vector, or, if they do not, a message that says what to write, not that
 // "i + j" is no unit.
 ReadAnswer read_along_unit_vectors(const std::string& spelled, const std::string& vectors,
-                                   const sym::SymbolTable& table, const std::string& field) {
+                                   const sym::SymbolTable& table, const std::string& field,
+                                   const std::string& as_written) {
   if (const std::string components = unit_vector_sum(spelled, table); !components.empty()) {
     try {
       return read_transposed(components, table, field);
@@ -1438,9 +1451,10 @@ ReadAnswer read_along_unit_vectors(const std::string& spelled, const std::string
                      " mix bases (space x̂ ŷ ẑ, body e₁ e₂ e₃, primed e₁′ e₂′ e₃′); give the "
                      "components in one basis, or the vector [x, y, z]");
   }
-  throw InputError(field + ": cannot read the components along unit vectors (" + vectors +
-                   ") as a sum of a number or expression times each; write the vector as "
-                   "[x, y, z]");
+  throw UnitVectorsUnread(field + ": cannot read the components along unit vectors (" + vectors +
+                              ") as a sum of a number or expression times each; write the "
+                              "vector as [x, y, z]",
+                          only_bare_letters(vectors) ? as_written : "");
 }
 }  // namespace
 
@@ -1468,15 +1482,20 @@ ReadAnswer read_whole(const std::string& typed, const sym::SymbolTable& table,
   // would be 5 there, its subscript a digit), and so as its Unicode twin reads: "\dot\phi \hat z
   // + \dot\theta (-\sin\phi, \cos\phi, 0)" as "φ̇ ẑ + θ̇ (−sin φ, cos φ, 0)", a sum of vectors.
   const std::string spelled = basis_vectors_spelled(typed, table);
+  std::string as_written;
   try {
     return read_transposed(spelled, table, field);
-  } catch (const InputError&) {
+  } catch (const InputError& e) {
     if (spelled == typed && unit_vectors_named(typed, table).empty()) {
       if (auto along = along_bare_axes(typed, table, field)) return *along;
       throw;
     }
+    as_written = e.what();
   }
-  return read_along_unit_vectors(spelled, unit_vectors_named(spelled, table), table, field);
+  const std::string vectors = unit_vectors_named(spelled, table);
+  ReadAnswer along = read_along_unit_vectors(spelled, vectors, table, field, as_written);
+  if (only_bare_letters(vectors)) along.as_written_error = as_written;
+  return along;
 }
 
 // "(1, 0, 1)/√2, (1, 0, −1)/√2, (0, 1, 0)", "x̂ + ẑ, x̂ − ẑ, ŷ": a matrix's rows, as principal

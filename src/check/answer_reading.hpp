@@ -48,6 +48,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/input_error.hpp"
 #include "symbolic/units.hpp"
 #include "symbolic/value_text.hpp"
 
@@ -57,6 +58,10 @@ struct ReadAnswer {
   sym::ValueText value;
   std::optional<Unit> unit;
   bool symbolic = false;  ///< has the problem's symbols (then a unit, if any, is an SI one)
+  /// Read along bare unit vectors i, j, k only because the text as written did not read: what
+  /// reading it as written said, for a caller that wants no vector (the letters are then names
+  /// of the student's own, "k²" with k an elliptic modulus); else "".
+  std::string as_written_error;
 };
 
 /// The identifiers in s, in order, as (start, length): "M*R^2 psidot_0" -> M, R, psidot_0 (a
@@ -73,8 +78,18 @@ std::string without_closing_punctuation(const std::string& typed);
 /// "[1, 0, 0] rad/s". Never throws; what it cannot rearrange it leaves for the parser.
 std::string reading_form(const std::string& typed);
 
+/// read_answer's refusal of a text it took for a sum along unit vectors and could not read as
+/// one ("0.5 i + j^2"). Where every such letter is a bare i, j or k (no hat), the text may use
+/// it as a name of its own instead ("k'^2 = 0.9976", k an elliptic modulus): `as_written` then
+/// holds what reading the text as written said, for a caller that wants no vector; else "".
+struct UnitVectorsUnread : InputError {
+  UnitVectorsUnread(const std::string& message, std::string as_written_message)
+      : InputError(message), as_written(std::move(as_written_message)) {}
+  std::string as_written;
+};
+
 /// @throws InputError naming `field` for an empty or unreadable answer or unit, one line a
-///   student can act on (never a parser's jargon).
+///   student can act on (never a parser's jargon); UnitVectorsUnread, above.
 ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
                        const std::string& field);
 

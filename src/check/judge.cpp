@@ -227,14 +227,18 @@ std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_te
       words[0], what, product);
 }
 
-// The name a reader's message says is undefined ("undefined symbol 'T'"), or "".
-std::string undefined_name(const std::string& message) {
-  const std::string undefined = "undefined symbol '";
-  const auto at = message.find(undefined);
+// The name a reader's message quotes after `what` ("undefined symbol 'T'"), or "".
+std::string quoted_after(const std::string& message, const std::string& what) {
+  const auto at = message.find(what + " '");
   if (at == std::string::npos) return "";
-  const auto from = at + undefined.size();
+  const auto from = at + what.size() + 2;
   const auto to = message.find('\'', from);
   return to == std::string::npos ? "" : message.substr(from, to - from);
+}
+
+// The name a reader's message says is undefined ("undefined symbol 'T'"), or "".
+std::string undefined_name(const std::string& message) {
+  return quoted_after(message, "undefined symbol");
 }
 
 // The hint of the first name in `typed` that has one ("I₀ diag(1, 1, 2)", as question (a)
@@ -662,18 +666,24 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
                          const Options& options, AxesLayout labelled) {
   const AxesLayout layout =
       labelled != AxesLayout::rows_or_columns ? labelled : listed_layout(text);
+  // "15,5deg" reads as two entries, one without a unit: say what was more likely meant.
+  const auto refused = [&](const std::string& message) {
+    return InputError(message + misreading_hint(a, text, std::nullopt) +
+                      answer_name_hint(ctx, text, message) + imaginary_hint(a, text, message));
+  };
+  // A number wanted: bare i, j and k are names of the student's own ("k²", "k'^2", "4K(k)/λ",
+  // k the elliptic modulus), no unit vectors, and the text is refused as it reads as written.
+  const bool number = a.value.shape == Value::Shape::scalar;
   ReadAnswer p = [&] {
     try {
       return read_answer(text, ctx.table, kField);
+    } catch (const UnitVectorsUnread& e) {
+      throw refused(number && !e.as_written.empty() ? e.as_written : e.what());
     } catch (const InputError& e) {
-      // "15,5deg" reads as two entries, one without a unit: say what was more likely meant.
-      const std::string hint = misreading_hint(a, text, std::nullopt) +
-                               answer_name_hint(ctx, text, e.what()) +
-                               imaginary_hint(a, text, e.what());
-      if (hint.empty()) throw;
-      throw InputError(e.what() + hint);
+      throw refused(e.what());
     }
   }();
+  if (number && !p.as_written_error.empty()) throw refused(p.as_written_error);
   // "diag(0.569, 4.209, 4.556)": the tensor in its principal axes, whose diagonal holds them.
   const bool diagonal_read = moments_on_diagonal(a, p.value);
   Verdict v = judge_read(ctx, a, text, p, options_for(a, options), layout);
@@ -716,6 +726,30 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
     break;
   }
   return v;
+}
+
+// Why a side that could not be read is a label of the student's own, "T is no symbol here", or
+// "" where it is no label: a name the problem lacks ("T/2"), a function it lacks ("4K(k)/λ",
+// K for the complete integral), or either once primes are taken off ("k′²", k′ the
+// complementary modulus: the reader refuses the prime itself first).
+std::string label_reason(const Context& ctx, const Answer& a, const std::string& side,
+                         const std::string& message, const Options& options) {
+  if (const std::string name = undefined_name(message); !name.empty())
+    return name + " is no symbol here";
+  if (const std::string name = quoted_after(message, "unknown function"); !name.empty())
+    return name + " is no function here";
+  std::string unprimed = side;
+  for (const std::string prime : {"′", "″"}) {
+    for (auto at = unprimed.find(prime); at != std::string::npos; at = unprimed.find(prime))
+      unprimed.erase(at, prime.size());
+  }
+  if (unprimed == side) return "";
+  try {
+    judge_one(ctx, a, unprimed, options);
+  } catch (const InputError& e) {
+    return label_reason(ctx, a, unprimed, e.what(), options);
+  }
+  return "";
 }
 
 // One name that no symbol of the problem has, as "E" or "θ_L" before an '='.
@@ -985,22 +1019,22 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
       }
       // "T/2 = 1.91 s": a formula of the student's own in names the problem lacks labels the
       // value; that side cannot be judged, and the verdict says so.
-      if (const std::string name = undefined_name(e.what());
-          k == 0 && parts.size() == 2 && !name.empty()) {
+      if (parts.size() != 2) throw;
+      const std::string reason = label_reason(ctx, a, parts[k], e.what(), options);
+      if (k == 0 && !reason.empty()) {
         Verdict label = judge_one(ctx, a, parts[1], options);
-        label.feedback.push_back(fmt::format(
-            "the side \"{}\" of your '=' is taken as a label, not judged: {} is no symbol here",
-            trim(parts[0]), name));
+        label.feedback.push_back(
+            fmt::format("the side \"{}\" of your '=' is taken as a label, not judged: {}",
+                        trim(parts[0]), reason));
         return label;
       }
       // "1.91 s = T/2", "7.63° = θ_L": the same label after the value, the value judged right
       // (a wrong one returned above with its side named).
-      if (const std::string name = undefined_name(e.what());
-          k == 1 && parts.size() == 2 && (!name.empty() || is_one_name(parts[1]))) {
+      if (k == 1 && (!reason.empty() || is_one_name(parts[1]))) {
         if (!is_one_name(parts[1])) {
-          first.feedback.push_back(fmt::format(
-              "the side \"{}\" of your '=' is taken as a label, not judged: {} is no symbol here",
-              trim(parts[1]), name));
+          first.feedback.push_back(
+              fmt::format("the side \"{}\" of your '=' is taken as a label, not judged: {}",
+                          trim(parts[1]), reason));
         }
         return first;
       }

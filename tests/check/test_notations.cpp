@@ -660,6 +660,50 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
           !Catch::Contains("unit"));
 }
 
+TEST_CASE("where a number is asked for, a bare k is a name of the student's own, no unit vector") {
+  // The asymmetric top's modulus k, its square and k'² = 1 - k², as a student labels them.
+  const Fixture top("asymmetric-top");
+  const auto value = [&](const std::string& name) {
+    return format_number(top.answer(name).value.data.at(0));
+  };
+  const std::string kc2 = value("kc2");
+  for (const std::string label : {"k'^2", "k′²", "1 − k²", "1 - k^2"}) {
+    INFO(label);
+    const auto v = top.check("kc2", label + " = " + kc2);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{"the side \"" + label +
+                                                   "\" of your '=' is taken as a label, not "
+                                                   "judged: k is no symbol here"});
+  }
+  REQUIRE(top.check("k2", "k² = " + value("k2")).correct);
+  // Which answer a labelled value is, where it is another part's.
+  REQUIRE_THAT(top.check("k2", "k′² = " + kc2).feedback.at(0), Catch::Contains("this is kc2"));
+  // A formula in a function the problem lacks (K for the complete integral) labels it too.
+  const std::string period = value("period") + " s";
+  const auto labelled = top.check("period", "T = 4K(k)/λ = " + period);
+  REQUIRE(labelled.correct);
+  REQUIRE(labelled.feedback ==
+          std::vector<std::string>{"the side \"4K(k)/λ\" of your '=' is taken as a label, not "
+                                   "judged: K is no function here"});
+  REQUIRE(top.check("period", period + " = 4K(k)/λ").correct);
+  const auto wrong = top.check(
+      "period", "4K(k)/λ = " + format_number(top.answer("period").value.data.at(0) * 1.1) + " s");
+  REQUIRE_FALSE(wrong.correct);
+  REQUIRE_THAT(wrong.feedback.at(0), Catch::Contains("off by 10%"));
+  // Alone, such a k is refused as a name, said to be part (c)'s answer: no "unit vectors" line.
+  REQUIRE_THROWS_WITH(top.check("kc2", "1 - k^2"),
+                      Catch::Contains("undefined symbol 'k'") &&
+                          Catch::Contains("k is the answer to part (c)") &&
+                          !Catch::Contains("unit vectors"));
+  REQUIRE_THROWS_WITH(top.check("k2", "k²"),
+                      Catch::Contains("undefined symbol 'k'") && !Catch::Contains("3-vector"));
+  // Where a vector is asked for, i, j and k are still unit vectors, and a sum along them that
+  // does not read is said so.
+  REQUIRE(top.check("dw_dt0", "-0.5 i + j - 0.015 k").correct);
+  REQUIRE_THROWS_WITH(top.check("dw_dt0", "-0.5 i + j^2 - 0.015 k"),
+                      Catch::Contains("cannot read the components along unit vectors"));
+}
+
 TEST_CASE(
     "a formula in names the problem lacks beside '=' labels the value, and is said unjudged") {
   // The racket flips each half period: "T/2 = 1.91 s", T the student's own name for the period.
