@@ -12,11 +12,13 @@
 #include <tuple>
 #include <utility>
 
+#include "check/brackets.hpp"
 #include "check/diagnosis.hpp"
 #include "check/expression_dimension.hpp"
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/symbol_values.hpp"
+#include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/expression_guard.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -304,6 +306,58 @@ std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
                             equals_key(ctx, a, key, points));
 }
 
+// The length of the number `s` starts with ("10" of "10 ma^2", "2.5e-3" of "2.5e-3*m"), 0 if
+// none.
+std::size_t leading_number(const std::string& s) {
+  std::size_t end = 0;
+  if (end < s.size() && (s[end] == '-' || s[end] == '+')) ++end;
+  const std::size_t digits = end;
+  while (end < s.size() && (std::isdigit(static_cast<unsigned char>(s[end])) || s[end] == '.'))
+    ++end;
+  if (end == digits) return 0;
+  if (end + 1 < s.size() && (s[end] == 'e' || s[end] == 'E')) {
+    std::size_t exponent = end + 1;
+    if (s[exponent] == '-' || s[exponent] == '+') ++exponent;
+    if (exponent < s.size() && std::isdigit(static_cast<unsigned char>(s[exponent]))) {
+      end = exponent;
+      while (end < s.size() && std::isdigit(static_cast<unsigned char>(s[end]))) ++end;
+    }
+  }
+  return end;
+}
+
+// "5, 7, 10 ma²" for the moments (5, 7, 10) m a²: a factor after the last of a list's numbers
+// multiplies that entry alone, as it reads. Where multiplying each makes the key's, the line
+// says how to write that; nullopt otherwise.
+std::optional<std::string> factor_after_last_entry(const Context& ctx, const Answer& a,
+                                                   const std::string& typed,
+                                                   const sym::ValueText& key,
+                                                   const std::vector<sym::Values>& points) {
+  const ListItems list = list_items(sym::to_ascii(plain_text(ctx, typed)));
+  if (list.bracketed || list.items.size() < 2 || list.items.size() != key.entries.size())
+    return std::nullopt;
+  std::vector<std::string> numbers;
+  for (const std::string& item : list.items) {
+    const std::string t = trim(item);
+    const std::size_t n = leading_number(t);
+    if (n == 0 || (n != t.size() && &item != &list.items.back())) return std::nullopt;
+    numbers.push_back(t.substr(0, n));
+  }
+  const std::string last = trim(list.items.back());
+  std::string factor = trim(last.substr(numbers.back().size()));
+  if (!factor.empty() && factor[0] == '*') factor = trim(factor.substr(1));
+  if (factor.empty() || std::isdigit(static_cast<unsigned char>(factor[0]))) return std::nullopt;
+  const std::string each = fmt::format("({}) {}", fmt::join(numbers, ", "), factor);
+  try {
+    if (!equals_key(ctx, a, key, points)(read_answer(each, ctx.table, kField))) return std::nullopt;
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  return fmt::format(
+      "{} after the last number multiplies that entry alone; for it to multiply each, write {}",
+      factor, each);
+}
+
 // "θ̇ (thetadot) where the key has I₃ (I3)": a symbol in the place of another of the same set
 // value, where writing the other there makes the key's expression.
 std::optional<std::string> symbols_named(const Context& ctx, const Answer& a,
@@ -431,6 +485,8 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
     const auto dimension = dimension_verdict(ctx, a, p.value, key, key_unit);
     const std::string differs =
         "incorrect: " + a.name + " (your expression differs from the key's)";
+    if (const auto factor = factor_after_last_entry(ctx, a, typed, key, points))
+      return {false, differs, {*factor}};
     // Right at the set values but not here: a number where the key has a symbol ("(φ, 30°, ψ)"
     // for (φ, θ, ψ) with θ set to 30°, "m 0.12²/4" for m R²/4), or a symbol where it has none
     // (m² a²/6 for m a²/6 at m = 1 kg): another dimension, if it has one, is said too.

@@ -660,6 +660,26 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
           !Catch::Contains("unit"));
 }
 
+TEST_CASE(
+    "a factor after a list's last number is that entry's, and the line says how to share it") {
+  // Taylor 10.35's moments (5, 7, 10) m a², as "5, 7, 10 ma²" reads: 10 m a² alone.
+  const Fixture taylor("taylor-10-35");
+  for (const std::string typed : {"5, 7, 10 ma²", "5, 7, 10 * m*a^2", "λ = 5, 7, 10 m a^2"}) {
+    INFO(typed);
+    const auto v = taylor.check("principal_moments", typed);
+    REQUIRE_FALSE(v.correct);
+    REQUIRE(v.feedback.size() == 1);
+    REQUIRE_THAT(v.feedback[0], Catch::Contains("after the last number multiplies that entry "
+                                                "alone; for it to multiply each, write (5, 7, "
+                                                "10) m"));
+  }
+  REQUIRE(taylor.check("principal_moments", "(5, 7, 10) ma²").correct);
+  // Not where sharing the factor is wrong too: the usual diagnosis.
+  const auto off = taylor.check("principal_moments", "5, 7, 11 ma²");
+  REQUIRE_FALSE(off.correct);
+  REQUIRE_THAT(off.feedback.at(0), !Catch::Contains("after the last number"));
+}
+
 TEST_CASE("where a number is asked for, a bare k is a name of the student's own, no unit vector") {
   // The asymmetric top's modulus k, its square and k'² = 1 - k², as a student labels them.
   const Fixture top("asymmetric-top");
