@@ -333,19 +333,24 @@ std::optional<std::string> factor_after_last_entry(const Context& ctx, const Ans
                                                    const std::string& typed,
                                                    const sym::ValueText& key,
                                                    const std::vector<sym::Values>& points) {
-  const ListItems list = list_items(sym::to_ascii(plain_text(ctx, typed)));
+  const ListItems list = list_items(plain_text(ctx, typed));
   if (list.bracketed || list.items.size() < 2 || list.items.size() != key.entries.size())
     return std::nullopt;
-  std::vector<std::string> numbers;
-  for (const std::string& item : list.items) {
-    const std::string t = trim(item);
-    const std::size_t n = leading_number(t);
-    if (n == 0 || (n != t.size() && &item != &list.items.back())) return std::nullopt;
-    numbers.push_back(t.substr(0, n));
+  std::vector<std::string> numbers;  // as typed, but for a minus sign
+  std::string factor;                // as typed: "ma²"
+  for (std::size_t k = 0; k < list.items.size(); ++k) {
+    const std::string item = trim(list.items[k]);
+    const std::string ascii = sym::to_ascii(item);
+    const std::size_t n = leading_number(ascii);
+    if (n == 0 || (n != ascii.size() && k + 1 != list.items.size())) return std::nullopt;
+    numbers.push_back(ascii.substr(0, n));
+    // The number's end in `item`: its characters are ASCII but for a leading "−" (3 bytes).
+    const std::size_t minus = item.rfind("−", 0) == 0 ? std::string("−").size() - 1 : 0;
+    if (k + 1 == list.items.size()) factor = trim(item.substr(std::min(n + minus, item.size())));
   }
-  const std::string last = trim(list.items.back());
-  std::string factor = trim(last.substr(numbers.back().size()));
-  if (!factor.empty() && factor[0] == '*') factor = trim(factor.substr(1));
+  if (!factor.empty() &&
+      (factor[0] == '*' || factor.rfind("·", 0) == 0 || factor.rfind("×", 0) == 0))
+    factor = trim(factor.substr(factor[0] == '*' ? 1 : std::string("·").size()));
   if (factor.empty() || std::isdigit(static_cast<unsigned char>(factor[0]))) return std::nullopt;
   const std::string each = fmt::format("({}) {}", fmt::join(numbers, ", "), factor);
   try {
