@@ -11,6 +11,7 @@
 #include "check/judge.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/expression_guard.hpp"
 #include "symbolic/units.hpp"
 
 namespace wobble::check {
@@ -561,9 +562,38 @@ bool names_symbol(const std::string& s, const std::function<bool(const std::stri
 }
 }  // namespace
 
+// Whether a '/' at `at` divides by a number ("15 deg/2"), not by a unit ("10 deg/s").
+bool divides_by_number(const std::string& s, std::size_t at) {
+  if (at >= s.size() || s[at] != '/') return false;
+  std::size_t k = at + 1;
+  while (k < s.size() && s[k] == ' ') ++k;
+  return k < s.size() &&
+         (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '.' || s[k] == '(');
+}
+
+// Whether `s` is arithmetic on angles in degrees: two numbers in degrees or more joined by a '+'
+// or '-' ("15 deg - 7.63 deg"), or one divided by a number ("15 deg/2"); and no list or vector
+// (no comma, semicolon or square or curly bracket: "[15 deg -30 deg 45 deg]" is three entries).
+bool degrees_joined(const std::string& s) {
+  if (s.find_first_of(",;[]{}\n") != std::string::npos) return false;
+  std::size_t count = 0, first_end = std::string::npos;
+  for (std::size_t at = s.find("deg"); at != std::string::npos; at = s.find("deg", at + 3)) {
+    std::size_t k = at;
+    while (k > 0 && s[k - 1] == ' ') --k;
+    if (k == 0 || !std::isdigit(static_cast<unsigned char>(s[k - 1]))) continue;
+    std::size_t after = at + 3;
+    while (after < s.size() && s[after] == ' ') ++after;
+    if (divides_by_number(s, after)) return true;
+    if (count++ == 0) first_end = at + 3;
+  }
+  return count >= 2 && s.find_first_of("+-", first_end) != std::string::npos;
+}
+
 std::string degrees_in_expression(const std::string& ascii,
                                   const std::function<bool(const std::string&)>& in_expression) {
-  if (ascii.find("deg") == std::string::npos || !names_symbol(ascii, in_expression)) return ascii;
+  if (ascii.find("deg") == std::string::npos ||
+      !(names_symbol(ascii, in_expression) || degrees_joined(ascii)))
+    return ascii;
   std::string out;
   for (std::size_t i = 0; i < ascii.size();) {
     const bool starts_number =
@@ -585,9 +615,19 @@ std::string degrees_in_expression(const std::string& ascii,
         ascii.compare(k, 3, "deg") == 0 && (k + 3 == ascii.size() || !name_char(ascii[k + 3]));
     std::size_t after = k + 3;
     while (degrees && after < ascii.size() && ascii[after] == ' ') ++after;
+    // "10 deg/s", "deg^2": the degrees of a unit; "15 deg/2" halves an angle.
     const bool bound =
-        degrees && after < ascii.size() && (ascii[after] == '/' || ascii[after] == '^');
+        degrees && after < ascii.size() &&
+        ((ascii[after] == '/' && !divides_by_number(ascii, after)) || ascii[after] == '^');
     if (degrees && !bound) {
+      // "sin 15 deg": the call's bracket against its name, as "sin(" is read.
+      std::size_t name_end = out.size();
+      while (name_end > 0 && out[name_end - 1] == ' ') --name_end;
+      std::size_t name_start = name_end;
+      while (name_start > 0 && name_char(out[name_start - 1])) --name_start;
+      if (name_end < out.size() && name_start < name_end &&
+          sym::is_function_name(out.substr(name_start, name_end - name_start)))
+        out.erase(name_end);
       out += "(" + ascii.substr(i, end - i) + "*pi/180)";
       i = k + 3;
     } else {

@@ -106,9 +106,10 @@ std::string without_colon_labels(const std::string& typed);
 /// "phi + (90*pi/180)" for "phi + 90 deg": in an expression, a text that names one of the
 /// problem's symbols or a function (`in_expression`), each plain number in degrees ("90 deg",
 /// "90deg", as "90°" arrives here) as radians, the SI of an expression ("(φ + 90°, θ, ψ − 90°)",
-/// "cos(30°)"). Not a number whose degrees are divided or raised ("10 deg/s"), nor after a
-/// name's digits ("x2 deg"); `ascii` itself where it names neither: "15 deg" alone, or in a
-/// vector of numbers, is a number with its unit.
+/// "cos(30°)", "sin 15°" as "sin(15°)"), and in arithmetic on angles ("15° − 7.63°", "15°/2").
+/// Not a number whose degrees are divided by a unit or raised ("10 deg/s"), nor after a name's
+/// digits ("x2 deg"); `ascii` itself where it is neither: "15 deg" alone, or in a vector of
+/// numbers, is a number with its unit.
 std::string degrees_in_expression(const std::string& ascii,
                                   const std::function<bool(const std::string&)>& in_expression);
 

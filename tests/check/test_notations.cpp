@@ -1102,6 +1102,29 @@ TEST_CASE("degrees in an expression in the symbols are radians: φ + 90°") {
   REQUIRE_FALSE(top.check("u_phidot_zero", "cos(31°)").correct);
   REQUIRE(plate.check("angle_L_e3", "atan(tan(15°)/2)").correct);
   REQUIRE_FALSE(plate.check("angle_L_e3", "atan(tan(15°))").correct);
+  // A call without its bracket on a number in degrees, after a factor: the argument is the
+  // angle, and a division after it the call's ("tan 15°/2" is tan(15°)/2).
+  for (const char* same : {"atan(0.5 tan 15°)", "arctan(tan 15°/2)", "atan(0.5 tan 15 deg)",
+                           "θ_L = arctan(0.5 tan 15°) = 7.63°"}) {
+    INFO(same);
+    REQUIRE(plate.check("angle_L_e3", same).correct);
+  }
+  REQUIRE_FALSE(plate.check("angle_L_e3", "atan(2 tan 15°)").correct);
+  // Arithmetic on angles in degrees, as the half angles are found: the space cone's α − θ_L.
+  const double space_cone = plate.answer("space_cone_half_angle").value.data.at(0) * 180 / kPi;
+  const double theta_l = plate.answer("angle_L_e3").value.data.at(0) * 180 / kPi;
+  for (const std::string& same :
+       {fmt::format("15° − {:.3f}°", theta_l), fmt::format("15 deg - {:.3f} deg", theta_l),
+        fmt::format("15° − {:.3f}° = {:.3f}°", theta_l, space_cone)}) {
+    INFO(same);
+    REQUIRE(plate.check("space_cone_half_angle", same).correct);
+  }
+  REQUIRE_FALSE(
+      plate.check("space_cone_half_angle", fmt::format("15° + {:.3f}°", theta_l)).correct);
+  REQUIRE(plate.check("angle_omega_e3", "30°/2").correct);
+  REQUIRE_FALSE(plate.check("angle_omega_e3", "30°/3").correct);
+  // A vector of angles stays one, its entries parted by spaces or signs.
+  REQUIRE(euler.check("angles_phy711", "[40 deg 30 deg 70 deg]").correct);
   // A vector of numbers in degrees keeps its units: no function, no symbol.
   REQUIRE(euler.check("angles_phy711", "(40°, 30°, 70°)").correct);
   // A number alone keeps its unit; a unit after the expression stays refused, and degrees
