@@ -957,6 +957,21 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
   // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows
   // of a list where one has a factor outside its bracket.
+  // "z_cm = −3h/4" for a centre of mass on the axis: a 3-vector's components given in part, the
+  // others zero, as the line says.
+  if (a.value.shape == Value::Shape::vector && a.value.data.size() == 3 &&
+      a.named_entries.empty() && a.kind != AnswerKind::principal_moments) {
+    if (const auto some = some_components(written)) {
+      Verdict v = judge_one(ctx, a, some->text, options);
+      const std::vector<std::string> axes = entry_names(a);  // x y z, or the body's e₁ e₂ e₃
+      std::vector<std::string> missing;
+      for (const std::size_t k : some->missing)
+        missing.push_back(axes.size() == 3 ? axes[k] : std::string(1, "xyz"[k]));
+      v.feedback.push_back(fmt::format("read as {}: {} not given, taken as zero", some->text,
+                                       fmt::join(missing, ", ")));
+      return v;
+    }
+  }
   const std::size_t entries = a.value.shape == Value::Shape::scalar ? 3 : a.value.data.size();
   if (const auto components = labelled_components(written, kField, a.named_entries, entries)) {
     return judge_one(ctx, a, components->text, options,

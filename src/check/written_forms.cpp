@@ -12,6 +12,7 @@
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/expression_guard.hpp"
+#include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 
 namespace wobble::check {
@@ -395,6 +396,74 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
     vector += (k ? ", " : "") + (columns ? "[" + v.substr(1, v.size() - 2) + "]" : v);
   }
   return LabelledComponents{vector + (columns ? "]^T" : "]") + unit, columns};
+}
+
+namespace {
+// The axis (0, 1, 2) a label of one component names (in ASCII, its underscores kept), or -1: x,
+// y or z alone, first before an underscore ("z_cm"), or last after one letter or a Greek
+// letter's name ("L_z", "Lz", "omega_3" as ω₃ is spelled; not "Omega_body", whose y is no axis).
+int axis_of_label(const std::string& label) {
+  if (label.empty()) return -1;
+  const bool xyz = label.size() == 1 || label[1] == '_';
+  if (xyz && std::string_view("xyz").find(label[0]) != std::string_view::npos)
+    return axis_index(label[0]);
+  if (label.size() < 2 || std::string_view("xyz123").find(label.back()) == std::string_view::npos)
+    return -1;
+  std::string name = label.substr(0, label.size() - 1);
+  if (name.back() == '_') name.pop_back();
+  const bool letter = name.size() == 1 && std::isalpha(static_cast<unsigned char>(name[0]));
+  return letter || sym::greek_letters().count(ascii_lower(name)) ? axis_index(label.back()) : -1;
+}
+}  // namespace
+
+std::optional<SomeComponents> some_components(const std::string& text) {
+  const std::vector<std::string> items = top_level(text, ',');
+  if (items.size() > 2) return std::nullopt;
+  std::vector<std::string> labels, values;
+  for (const auto& item : items) {
+    const std::vector<std::string> sides = top_level(item, '=');
+    if (sides.size() != 2) return std::nullopt;
+    const std::string label = trim(sides[0]), value = trim(sides[1]);
+    if (label.empty() || value.empty() ||
+        label.find_first_of(" +-*/^()[]{}.,") != std::string::npos)
+      return std::nullopt;
+    labels.push_back(sym::to_ascii(label));
+    values.push_back(value);
+  }
+  std::array<std::string, 3> in_place;
+  std::vector<int> axes;
+  for (const auto& label : labels) axes.push_back(axis_of_label(label));
+  if (labels.size() == 2) {  // alike but for the axis's character
+    const auto places = differing_places(labels);
+    if (!places || places->size() != 1) return std::nullopt;
+    for (std::size_t k = 0; k < 2; ++k) {
+      const int axis = axis_index(labels[k][places->front()]);
+      if (axis < 0 || (axes[k] >= 0 && axes[k] != axis)) return std::nullopt;
+      axes[k] = axis;
+    }
+  }
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    if (axes[k] < 0 || !in_place[static_cast<std::size_t>(axes[k])].empty()) return std::nullopt;
+    in_place[static_cast<std::size_t>(axes[k])] = values[k];
+  }
+  // A unit after the last value alone is the whole vector's, as with every component given.
+  std::string unit;
+  if (const auto [last, after] = split_unit(values.back());
+      !after.empty() && std::all_of(values.begin(), values.end() - 1, [](const std::string& v) {
+        return split_unit(v).second.empty();
+      })) {
+    unit = " " + after;
+    for (auto& v : in_place) {
+      if (v == values.back()) v = last;
+    }
+  }
+  SomeComponents out{"[", {}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    out.text += (k ? ", " : "") + (in_place[k].empty() ? std::string("0") : in_place[k]);
+    if (in_place[k].empty()) out.missing.push_back(k);
+  }
+  out.text += "]" + unit;
+  return out;
 }
 
 std::string without_colon_labels(const std::string& typed) {

@@ -64,6 +64,18 @@ std::optional<LabelledComponents> labelled_components(
     const std::string& text, const std::string& field,
     const std::vector<std::string>& entry_names = {}, std::size_t entries = 3);
 
+/// Some of a 3-vector's components by label, the others left out as zero: "z = −3h/4",
+/// "z_cm = −3h/4", "L_z = 0.0139", "x = 0, z = −3h/4" (as a centre of mass on a body's axis is
+/// given). `text` is the vector in the reading form ("[0, 0, −3h/4]", a unit after the last
+/// value the whole vector's) and `missing` the places of those left out. A label names its axis
+/// alone (x), first before an underscore (z_cm), or last (L_z, Lz, ω₃); two labels differ in
+/// that one character. nullopt for a text that is no such list.
+struct SomeComponents {
+  std::string text;
+  std::vector<std::size_t> missing;
+};
+std::optional<SomeComponents> some_components(const std::string& text);
+
 /// `typed` without its comments: each line up to a '#', or up to a '%' at its start or after a
 /// space, a tab or a ';' (MATLAB's and LaTeX's: "I0 = 7.2e-4; % kg m^2"; "50%" keeps its sign).
 /// No answer wobble reads has either.

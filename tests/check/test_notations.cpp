@@ -261,11 +261,15 @@ TEST_CASE("components given one by one with their labels") {
   REQUIRE_FALSE(
       box.check("center_of_mass", "x = " + f(1) + ", y = " + f(0) + ", z = " + f(2)).correct);
   for (const std::string& none : std::vector<std::string>{
-           "x = 1, y = 2, w = 3", "x = 1, x = 2, z = 3", "x = 1, y = 2", "a = 1, b = 2, c = 3"}) {
+           "x = 1, y = 2, w = 3", "x = 1, x = 2, z = 3", "a = 1, b = 2, c = 3"}) {
     INFO(none);
     REQUIRE_THROWS_WITH(box.check("center_of_mass", none),
                         Catch::Contains("components given one by one"));
   }
+  // Two of three: the third not given is zero, and the line says so.
+  const auto two = box.check("center_of_mass", "x = 1, y = 2");
+  REQUIRE_FALSE(two.correct);
+  REQUIRE(two.feedback.back() == "read as [1, 2, 0]: z not given, taken as zero");
   const auto& moments = box.answer("principal_moments_corner").value.data;
   REQUIRE(box.check("principal_moments_corner",
                     fmt::format("I₁ = {:.6g} kg m², I₂ = {:.6g} kg m², I₃ = {:.6g} kg m²",
@@ -658,6 +662,40 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
       Catch::Contains("undefined symbol 'Omega'") &&
           Catch::Contains("Omega names the answers Omega_body_rate (part (a)), Omega_space_rate") &&
           !Catch::Contains("unit"));
+}
+
+TEST_CASE("a 3-vector's components given in part are read with the others zero, and said so") {
+  // The cone's centre of mass on its axis, as "z_cm = −3h/4" gives it.
+  const Fixture cone("solid-cone");
+  for (const std::string same : {"z = −3h/4", "z_cm = -3h/4", "x_cm = 0, z_cm = -3h/4"}) {
+    INFO(same);
+    const auto v = cone.check("center_of_mass", same);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.feedback.back(), Catch::EndsWith("not given, taken as zero"));
+  }
+  REQUIRE(cone.check("center_of_mass", "z = -3h/4").feedback.back() ==
+          "read as [0, 0, -3h/4]: x, y not given, taken as zero");
+  // The wrong axis, or a component not zero left out, is wrong, the reading said.
+  const auto wrong_axis = cone.check("center_of_mass", "x_cm = -3h/4");
+  REQUIRE_FALSE(wrong_axis.correct);
+  REQUIRE(wrong_axis.feedback.back() == "read as [-3h/4, 0, 0]: y, z not given, taken as zero");
+  // Along the body's axes the entries are named as the key names them.
+  const Fixture plate("flying-plate");
+  const std::string along_e3 = format_number(plate.answer("L0_body").value.data.at(2));
+  const auto body = plate.check("L0_body", "L₃ = " + along_e3);
+  REQUIRE_FALSE(body.correct);  // its e₁ component is not zero
+  REQUIRE(body.feedback.back() ==
+          "read as [0, 0, " + along_e3 + "]: e₁, e₂ not given, taken as zero");
+  // A name whose last letter is no axis ("Ω_body") labels the whole vector; a number answer
+  // keeps its label; principal moments are never given in part.
+  const Fixture square("flying-square-plate");
+  REQUIRE(square.check("Omega_body", "Ω_body = (0, 0, 9.659258263)").correct);
+  REQUIRE(square.check("Omega_body", "ω_z = 9.659258263 rad/s").correct);
+  const Fixture top("heavy-top");
+  REQUIRE(top.check("omega3", "ω₃ = 150 rad/s").correct);
+  const Fixture taylor("taylor-10-35");
+  REQUIRE_THROWS_WITH(taylor.check("principal_moments", "I1 = 5"),
+                      Catch::Contains("wants a 3-vector"));
 }
 
 TEST_CASE(
