@@ -752,6 +752,37 @@ std::string label_reason(const Context& ctx, const Answer& a, const std::string&
   return "";
 }
 
+// The value labelled with `a`'s name in a list of labelled values ("φ̇_slow = 4.995 rad/s,
+// φ̇_fast = 25.82 rad/s" for phidot_slow), and a line on the rest ("φ̇_fast = 25.82 rad/s
+// (phidot_fast) not judged here: .."); nullopt where the text is no such list or no one label
+// is the answer's name.
+struct OwnItem {
+  std::string value, note;
+};
+std::optional<OwnItem> own_labelled_item(const Context& ctx, const Answer& a,
+                                         const std::string& text) {
+  const std::vector<std::string> items = top_level(text, ',');
+  if (items.size() < 2) return std::nullopt;
+  std::optional<OwnItem> own;
+  std::vector<std::string> others;
+  for (const auto& item : items) {
+    const std::vector<std::string> sides = top_level(item, '=');
+    if (sides.size() != 2 || trim(sides[1]).empty() || !is_one_name(sides[0])) return std::nullopt;
+    const std::string label = trim(sides[0]);
+    if (name_spelling(label) == name_spelling(a.name)) {
+      if (own) return std::nullopt;  // labelled twice
+      own = OwnItem{trim(sides[1]), ""};
+      continue;
+    }
+    const std::string other = name_in_key(ctx.key, label);
+    others.push_back(trim(item) + (other != label ? " (" + other + ")" : ""));
+  }
+  if (!own) return std::nullopt;
+  own->note =
+      fmt::format("{} not judged here: give each answer on its own", fmt::join(others, "; "));
+  return own;
+}
+
 // One name that no symbol of the problem has, as "E" or "θ_L" before an '='.
 bool is_own_label(const Context& ctx, const Answer& a, const std::string& side,
                   const Options& options) {
@@ -957,6 +988,15 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
   // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows
   // of a list where one has a factor outside its bracket.
+  // "φ̇_slow = 4.995 rad/s, φ̇_fast = 25.82 rad/s": a part's numbers in one box, each labelled
+  // with its answer's name. This answer's is judged; the line says the others were not.
+  if (a.value.shape == Value::Shape::scalar) {
+    if (auto own = own_labelled_item(ctx, a, written)) {
+      Verdict v = judge_one(ctx, a, own->value, options);
+      v.feedback.push_back(own->note);
+      return v;
+    }
+  }
   // "z_cm = −3h/4" for a centre of mass on the axis: a 3-vector's components given in part, the
   // others zero, as the line says.
   if (a.value.shape == Value::Shape::vector && a.value.data.size() == 3 &&

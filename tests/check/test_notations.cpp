@@ -664,6 +664,26 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
           !Catch::Contains("unit"));
 }
 
+TEST_CASE(
+    "a part's answers in one box, each labelled: this answer's is judged, the rest said not") {
+  // Both precession rates of the heavy top's part (d), as a student writes them down.
+  const Fixture top("heavy-top");
+  const std::string slow = format_number(top.answer("phidot_slow").value.data.at(0));
+  const std::string fast = format_number(top.answer("phidot_fast").value.data.at(0));
+  const std::string both = "φ̇_slow = " + slow + " rad/s, φ̇_fast = " + fast + " rad/s";
+  const auto v = top.check("phidot_slow", both);
+  REQUIRE(v.correct);
+  REQUIRE(v.feedback == std::vector<std::string>{"φ̇_fast = " + fast +
+                                                 " rad/s (phidot_fast) not judged here: give "
+                                                 "each answer on its own"});
+  REQUIRE(top.check("phidot_fast", both).correct);
+  // This answer's value is judged as it stands: a wrong one is wrong.
+  REQUIRE_FALSE(top.check("phidot_fast", "φ̇_slow = " + slow + " rad/s, φ̇_fast = 30 rad/s").correct);
+  // Labels that are no answer's name, or the answer labelled twice, are no such list.
+  REQUIRE_THROWS(top.check("phidot_slow", "slow = " + slow + ", fast = " + fast));
+  REQUIRE_THROWS(top.check("phidot_slow", "φ̇_slow = " + slow + ", φ̇_slow = " + fast));
+}
+
 TEST_CASE("a 3-vector's components given in part are read with the others zero, and said so") {
   // The cone's centre of mass on its axis, as "z_cm = −3h/4" gives it.
   const Fixture cone("solid-cone");
