@@ -778,8 +778,14 @@ std::optional<OwnItem> own_labelled_item(const Context& ctx, const Answer& a,
     others.push_back(trim(item) + (other != label ? " (" + other + ")" : ""));
   }
   if (!own) return std::nullopt;
-  own->note =
-      fmt::format("{} not judged here: give each answer on its own", fmt::join(others, "; "));
+  constexpr std::size_t kMostNamed = 3;  // a line, not a list of hundreds
+  std::string named = fmt::format(
+      "{}",
+      fmt::join(others.begin(),
+                others.begin() + static_cast<std::ptrdiff_t>(std::min(others.size(), kMostNamed)),
+                "; "));
+  if (others.size() > kMostNamed) named += fmt::format(" and {} more", others.size() - kMostNamed);
+  own->note = named + " not judged here: give each answer on its own";
   return own;
 }
 
