@@ -40,7 +40,13 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   int zeros = 0;
   for (int i = 0; i < 3; ++i) zeros += m0_P[i] == 0.0 ? 1 : 0;
   if (zeros == 3) throw std::invalid_argument("exact free body: m0 must not be zero");
-  if (zeros == 2) return;  // steady rotation about a principal axis
+  using DD = DoubleDouble;
+  if (zeros == 2) {  // steady rotation about a principal axis, at |m_k| / I_k
+    for (int k = 0; k < 3; ++k) {
+      if (m0_P[k] != 0.0) rate_dd_ = DD(std::abs(m0_P[k])) / DD(I_[k]);
+    }
+    return;
+  }
   for (int j = 0; j < 3; ++j) {
     const int a = (j + 1) % 3, b = (j + 2) % 3;
     if (I_[a] == I_[b]) {
@@ -51,6 +57,13 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
       // reciprocals loses its digits for an almost spherical top.
       c_ = (I_perp_ - I_[j]) / (I_[j] * I_perp_) * m0_[j];
       if (c_ != 0.0) period_ = 2.0 * M_PI / std::abs(c_);
+      // The rates to double-double, so that the angles c t and |L| t / I_perp keep their digits
+      // over many turns (as the elliptic phase below): in double each rate's rounding, a few
+      // eps, grows into the angle with t (7e-9 rad of a flying plate's attitude after 1e7 s).
+      c_dd_ = two_sum(I_perp_, -I_[j]) / two_prod(I_[j], I_perp_) * DD(m0_[j]);
+      DD L2;
+      for (int k = 0; k < 3; ++k) L2 = L2 + two_prod(m0_[k], m0_[k]);
+      rate_dd_ = sqrt(L2) / DD(I_perp_);
       return;
     }
   }
@@ -65,7 +78,6 @@ ExactFreeMotion::ExactFreeMotion(const Vec3& I_P, const Vec3& m0_P, const Quat& 
   Vec3 m = S * m0_;
   // D = |m|^2 - 2 T J2 = m3^2 (J3-J2)/J3 - m1^2 (J2-J1)/J1, in factored form, to
   // double-double (it decides k'^2, and so the period, whose rounding grows with time).
-  using DD = DoubleDouble;
   const auto difference = [](double x, double y) { return two_sum(x, -y); };  // exact
   const DD alpha = sqrt(difference(J[2], J[1]) / DD(J[2])),
            beta = sqrt(difference(J[1], J[0]) / DD(J[0]));
@@ -180,12 +192,28 @@ FreeBodyState ExactFreeMotion::at_elliptic(double t) const {
   return s;
 }
 
+double ExactFreeMotion::fastest_phase_rate() const {
+  switch (kind_) {
+    case Kind::steady:
+      return rate_dd_.hi;
+    case Kind::symmetric:
+      return std::max(std::abs(c_dd_.hi), std::abs(rate_dd_.hi));
+    case Kind::elliptic:
+      break;
+  }
+  return std::max(std::abs(lambda_), std::abs(phi_rate_));
+}
+
+double ExactFreeMotion::angle(const DoubleDouble& rate, double t) {
+  return remainder_two_pi(rate * DoubleDouble(t));
+}
+
 Vec3 ExactFreeMotion::momentum_at(double t) const {
   switch (kind_) {
     case Kind::steady:
       return m0_;
     case Kind::symmetric:
-      return Eigen::AngleAxisd(-c_ * t, Vec3::Unit(axis_)) * m0_;
+      return Eigen::AngleAxisd(-angle(c_dd_, t), Vec3::Unit(axis_)) * m0_;
     case Kind::elliptic:
       break;
   }
@@ -199,13 +227,13 @@ FreeBodyState ExactFreeMotion::at(double t) const {
     case Kind::steady: {
       const Vec3 w = m0_.cwiseQuotient(I_);
       s.m_B = m0_;
-      s.q_BtoS = q0_ * Quat(Eigen::AngleAxisd(w.norm() * t, w.normalized()));
+      s.q_BtoS = q0_ * Quat(Eigen::AngleAxisd(angle(rate_dd_, t), w.normalized()));
       return s;
     }
     case Kind::symmetric: {
       const Vec3 L_S = q0_ * m0_;
-      const Eigen::AngleAxisd body(c_ * t, Vec3::Unit(axis_));
-      const Eigen::AngleAxisd space(L_S.norm() / I_perp_ * t, L_S.normalized());
+      const Eigen::AngleAxisd body(angle(c_dd_, t), Vec3::Unit(axis_));
+      const Eigen::AngleAxisd space(angle(rate_dd_, t), L_S.normalized());
       s.q_BtoS = (Quat(space) * q0_ * Quat(body)).normalized();
       s.m_B = body.inverse() * m0_;
       return s;

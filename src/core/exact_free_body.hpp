@@ -42,6 +42,10 @@ class ExactFreeMotion {
   double period_s() const { return period_; }
   /// Elliptic only: k'^2 = 1 - k^2 (0 on the separatrix).
   double kc2() const { return kc2_; }
+  /// The fastest of the phases that grow with t (rad/s, or the elliptic argument's rate):
+  /// each is formed and reduced in double-double, which keeps every digit of a phase up to
+  /// about 2^50 (its error 2^50 2^-104 is below half an ulp of the reduced angle).
+  double fastest_phase_rate() const;
 
  private:
   FreeBodyState at_elliptic(double t) const;
@@ -49,9 +53,13 @@ class ExactFreeMotion {
   Quat q0_;
   Kind kind_ = Kind::steady;
   double period_ = std::numeric_limits<double>::infinity();
-  // symmetric
+  // symmetric (and steady: rate_dd_ alone)
   int axis_ = 2;
   double c_ = 0.0, I_perp_ = 1.0;
+  /// c and the turning rate about L, |L| / I_perp (steady: |w|), rad/s, to double-double
+  DoubleDouble c_dd_, rate_dd_;
+  /// rate t, rad, reduced to (-pi, pi] with its digits kept however many turns it holds
+  static double angle(const DoubleDouble& rate, double t_s);
   // elliptic, in W: m_W = C m_P
   Mat3 C_ = Mat3::Identity();
   Vec3 J_ = Vec3::Ones(), amp_ = Vec3::Zero(), sign_ = Vec3::Ones();

@@ -2,14 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <algorithm>
 #include <optional>
 #include <span>
 
 #include "core/exact_free_body.hpp"
 #include "core/exact_heavy_top.hpp"
+#include "core/input_error.hpp"
 #include "core/runge_kutta.hpp"
 #include "core/work_budget.hpp"
 #include "simulate/outputs.hpp"
@@ -86,6 +87,15 @@ void sample_exact(const Motion& motion, const std::vector<double>& times, Simula
                   const std::function<void(std::size_t k, const SimState& state)>& at_sample,
                   const std::function<void(double)>& progress) {
   const std::size_t n = times.size();
+  // Past this a phase formed in double-double (rate t, reduced by its period) no longer keeps
+  // every digit: the samples would print digits the solution does not hold.
+  constexpr double kMostPhase = 0x1p50;
+  if (n > 0 && times.back() * motion.fastest_phase_rate() > kMostPhase) {
+    throw InputError(fmt::format(
+        "run.t_end: {:.6g} s is past what the exact solution resolves here: its phases would "
+        "pass 2^50 (1.1e15) rad, where their digits start to go; at most {:.3g} s for this scene",
+        times.back(), kMostPhase / motion.fastest_phase_rate()));
+  }
   describe(motion, result.notes);
   for (std::size_t k = 0; k < n; ++k) {
     throw_if_interrupted();

@@ -236,6 +236,24 @@ TEST_CASE("simulate --t-end sets the time span (an expression), --samples the co
   REQUIRE_THAT(glued.out, Catch::Contains("time: 0 to 6.283185307 s, 5 samples"));
 }
 
+TEST_CASE("simulate refuses an exact run past where its phases keep their digits, before output") {
+  // 1e13 s of the flying plate is within 2^50 rad of its fastest angle; 1e300 s is not, and
+  // the samples there would print digits the solution does not hold.
+  const RunResult far =
+      run_wobble({"simulate", "flying-plate", "--t-end", "1e13", "--samples", "2"});
+  INFO(far.err);
+  REQUIRE(far.exit_code == 0);
+  for (const char* scene : {"flying-plate", "tennis-racket"}) {
+    const RunResult r = run_wobble({"simulate", scene, "--t-end", "1e300", "--samples", "2"});
+    INFO(scene << "\n" << r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.out.empty());
+    REQUIRE_THAT(r.err, Catch::StartsWith("wobble: run.t_end: 1e+300 s is past what the exact "
+                                          "solution resolves here") &&
+                            Catch::Contains("at most"));
+  }
+}
+
 TEST_CASE("simulate --samples takes a count as 1e3, --method a name in any case") {
   // Counts are written as --max-evaluations takes them (5e7); the tables print DOP853.
   const RunResult r = run_wobble(

@@ -626,3 +626,86 @@ TEST_CASE("hard 17: a top released near upright is exact at any time, against 50
     }
   }
 }
+
+namespace {
+// A quaternion at 50 digits, (w, x, y, z).
+using BigQuat = std::array<Big, 4>;
+
+BigQuat big_product(const BigQuat& a, const BigQuat& b) {
+  return {a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
+          a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
+          a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1],
+          a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0]};
+}
+
+// The turn by `angle` about the unit vector along `axis`, at 50 digits.
+BigQuat big_turn(const Big& angle, const BigVec& axis) {
+  const Big size = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  const Big s = sin(angle / 2) / size;
+  return {cos(angle / 2), s * axis[0], s * axis[1], s * axis[2]};
+}
+
+// The largest difference of two quaternions' components, up to their common sign.
+double quaternion_distance(const Quat& q, const BigQuat& r) {
+  const std::array<double, 4> c{q.w(), q.x(), q.y(), q.z()};
+  double same = 0.0, opposite = 0.0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    same = std::max(same, std::abs(c[k] - static_cast<double>(r[k])));
+    opposite = std::max(opposite, std::abs(c[k] + static_cast<double>(r[k])));
+  }
+  return std::min(same, opposite);
+}
+}  // namespace
+
+TEST_CASE("hard 18: symmetric and steady free bodies exact at any time, against 50 digits") {
+  // The symmetric top's closed form turns the body by c t about its axis and the whole by |L| t /
+  // I_perp about L; a steady spin by |w| t. In double each rate's rounding, a few eps, grew into
+  // the angle with t (a flying plate's attitude 7e-9 off after 1e7 s, 9e-6 after 1e10): the
+  // rates are double-double now, and the angles reduced by 2 pi there. The reference forms the
+  // same closed form from the same doubles at 50 digits. Bounds: the quaternion built and
+  // normalised in double, its components within 4 eps; m turned once, within 4 eps |m0|.
+  const Quat q0(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  const BigQuat big_q0{Big(q0.w()), Big(q0.x()), Big(q0.y()), Big(q0.z())};
+  const double m = 0.2, R = 0.12, a = boost::math::constants::pi<double>() / 12;  // 15 deg
+  const Vec3 plate(m * R * R / 4, m * R * R / 4, m * R * R / 2);
+  const std::vector<std::pair<Vec3, Vec3>> symmetric{
+      {plate, plate.cwiseProduct(Vec3(10 * std::sin(a), 0, 10 * std::cos(a)))},  // flying plate
+      {Vec3(1.0, 1.0, 1.5), Vec3(0.3, -0.4, 1.0)},                               // oblate
+      {Vec3(2.0, 2.0, 1.0), Vec3(0.7, 0.2, -0.5)},                               // prolate
+  };
+  for (const auto& [I, m0] : symmetric) {
+    const ExactFreeMotion exact(I, m0, q0);
+    REQUIRE(exact.kind() == ExactFreeMotion::Kind::symmetric);
+    const Big I1 = I[0], I3 = I[2];
+    const Big c = (I1 - I3) / (I3 * I1) * Big(m0[2]);
+    const BigVec m_big{Big(m0[0]), Big(m0[1]), Big(m0[2])};
+    const BigQuat m_quat{Big(0), m_big[0], m_big[1], m_big[2]};
+    const BigQuat conj{big_q0[0], -big_q0[1], -big_q0[2], -big_q0[3]};
+    const BigQuat L_S = big_product(big_product(big_q0, m_quat), conj);
+    const Big L = sqrt(m_big[0] * m_big[0] + m_big[1] * m_big[1] + m_big[2] * m_big[2]);
+    for (const double t : {10.0, 1e4, 1e7, 1e10}) {
+      const FreeBodyState s = exact.at(t);
+      const BigQuat space = big_turn(L / I1 * Big(t), {L_S[1], L_S[2], L_S[3]});
+      const BigQuat body = big_turn(c * Big(t), {Big(0), Big(0), Big(1)});
+      const BigQuat q = big_product(big_product(space, big_q0), body);
+      const Big angle = -c * Big(t);
+      const Vec3 m_t(static_cast<double>(m_big[0] * cos(angle) - m_big[1] * sin(angle)),
+                     static_cast<double>(m_big[0] * sin(angle) + m_big[1] * cos(angle)), m0[2]);
+      INFO("I = " << I.transpose() << ", t = " << t << ": attitude "
+                  << quaternion_distance(s.q_BtoS, q) / kEps << " eps, m "
+                  << (s.m_B - m_t).norm() / (kEps * m0.norm()) << " eps |m0|");
+      REQUIRE(quaternion_distance(s.q_BtoS, q) <= 4 * kEps);
+      REQUIRE((s.m_B - m_t).norm() <= 4 * kEps * m0.norm());
+    }
+  }
+  // A steady spin about an axis of an asymmetric body.
+  const Vec3 I(1.0, 2.0, 3.0), m0(0.0, 0.0, 2.7);
+  const ExactFreeMotion steady(I, m0, q0);
+  REQUIRE(steady.kind() == ExactFreeMotion::Kind::steady);
+  for (const double t : {10.0, 1e7, 1e10}) {
+    const BigQuat q =
+        big_product(big_q0, big_turn(Big(m0[2]) / Big(I[2]) * Big(t), {Big(0), Big(0), Big(1)}));
+    INFO("t = " << t << ": " << quaternion_distance(steady.at(t).q_BtoS, q) / kEps << " eps");
+    REQUIRE(quaternion_distance(steady.at(t).q_BtoS, q) <= 4 * kEps);
+  }
+}
