@@ -1693,12 +1693,18 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
           (void)parse_unit(right, field);
       }
       // Where the stars written in leave a name the problem does not have ("½I₁(..) + ½I₃ω₃²",
-      // ω₃ no symbol), that name is what is wrong, not the stars.
+      // ω₃ no symbol), that name is what is wrong, not the stars. So is what they leave where
+      // the text as written failed only for a call without its brackets, which the stars mend:
+      // "[sin β, 1, q′]" is refused for its q′, not for the sin β of its first entry.
       if (const std::string written = starred(value, table); written != value) {
         try {
           (void)sym::parse_value_text(layout(written), table, field);
         } catch (const InputError& x) {
-          if (std::string(x.what()).find("undefined symbol") != std::string::npos) throw;
+          const bool bare_call =
+              std::string(e.what()).find("is a function: its argument comes in parentheses") !=
+              std::string::npos;
+          if (bare_call || std::string(x.what()).find("undefined symbol") != std::string::npos)
+            throw;
         }
       }
       const bool glued = !value.empty() && std::isdigit(static_cast<unsigned char>(value[0])) &&

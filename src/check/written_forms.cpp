@@ -401,8 +401,14 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
 namespace {
 // The axis (0, 1, 2) a label of one component names (in ASCII, its underscores kept), or -1: x,
 // y or z alone, first before an underscore ("z_cm"), or last after one letter or a Greek
-// letter's name ("L_z", "Lz", "omega_3" as ω₃ is spelled; not "Omega_body", whose y is no axis).
-int axis_of_label(const std::string& label) {
+// letter's name ("L_z", "Lz", "omega_3" as ω₃ is spelled, "omega3′" with a primed basis's prime;
+// not "Omega_body", whose y is no axis).
+int axis_of_label(std::string label) {
+  // "ω₃′": a primed basis's component is labelled with its prime after the index.
+  for (const std::string prime : {"′", "'"}) {
+    while (label.size() > prime.size() && label.ends_with(prime))
+      label.erase(label.size() - prime.size());
+  }
   if (label.empty()) return -1;
   const bool xyz = label.size() == 1 || label[1] == '_';
   if (xyz && std::string_view("xyz").find(label[0]) != std::string_view::npos)

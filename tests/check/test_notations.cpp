@@ -716,6 +716,21 @@ TEST_CASE("a 3-vector's components given in part are read with the others zero, 
   const Fixture taylor("taylor-10-35");
   REQUIRE_THROWS_WITH(taylor.check("principal_moments", "I1 = 5"),
                       Catch::Contains("wants a 3-vector"));
+  // The primed basis's components, labelled with their primes.
+  const Fixture euler("euler-angles-phy711");
+  const auto primed = euler.check("omega_primed", "ω₁′ = −α̇ sin β, ω₃′ = α̇ cos β + γ̇");
+  REQUIRE_FALSE(primed.correct);  // its e₂′ component, β̇, is not zero
+  REQUIRE(primed.feedback.back() ==
+          "read as [−α̇ sin β, 0, α̇ cos β + γ̇]: e₂′ not given, taken as zero");
+}
+
+TEST_CASE("an entry refused is named, not an earlier one whose bare call the reader mends") {
+  // "sin β" reads once the factors' stars are written in; the third entry's prime never does.
+  const Fixture euler("euler-angles-phy711");
+  REQUIRE_THROWS_WITH(euler.check("L_primed", "[sin β, 1, q′]"),
+                      Catch::StartsWith("--answer[2]: expression \"q′\" is refused"));
+  REQUIRE_THROWS_WITH(euler.check("L_primed", "L₁′ = −I₁ α̇ sin β, L₂′ = I₁ β̇, L₃′ = I₃ ω₃′"),
+                      Catch::StartsWith("--answer[2]:") && !Catch::Contains("sin is a function"));
 }
 
 TEST_CASE(
