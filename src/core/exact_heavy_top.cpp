@@ -441,6 +441,17 @@ ExactHeavyTop::Phase ExactHeavyTop::phase_at(double t) const {
   return reduce_by_half_period(tau0_dd_ + rate_dd_ * DD(t), K_dd_, kc2_);
 }
 
+double ExactHeavyTop::fastest_phase_rate() const {
+  if (kind_ != Kind::nutating || !std::isfinite(K_))
+    return std::max({std::abs(phidot_lin_.hi), std::abs(psidot_lin_.hi), std::abs(rate_)});
+  // 2 j grows by tau' / K per second.
+  const double half_periods = std::abs(rate_) / K_;
+  const double integrals = std::abs(c_plus_.hi * complete_plus_.hi) * half_periods +
+                           std::abs(c_minus_.hi * complete_minus_.hi) * half_periods;
+  return std::max({std::abs(rate_), std::abs(phidot_lin_.hi) + integrals,
+                   std::abs(psidot_lin_.hi) + integrals});
+}
+
 double ExactHeavyTop::euler_rate_bound() const {
   if (kind_ == Kind::sleeping) return std::abs(w3_);
   // phi' = 1/2 (b - a)/(1 - u) + 1/2 (b + a)/(1 + u) is monotonic between the poles in each

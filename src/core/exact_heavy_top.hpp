@@ -35,8 +35,6 @@
 /// double-double and reduced there, from constants in double-double (the start state's b -+ a
 /// and cubic, its roots polished by Newton's method, tau', k'^2, K, c±), so the error against
 /// 50 digits does not grow with t (hard case 14, to 1e6 s).
-#include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "core/elliptic.hpp"
@@ -77,10 +75,12 @@ class ExactHeavyTop {
   /// 1/sin(theta_limit) when the axle passes near the vertical (the Euler angles' singularity),
   /// where an integrator does better.
   double euler_rate_bound() const;
-  /// The fastest of the phases that grow with t (rad/s): the Euler rates' bound and the
-  /// nutation's tau'. Formed and reduced in double-double, each keeps every digit up to about
-  /// 2^50.
-  double fastest_phase_rate() const { return std::max(euler_rate_bound(), std::abs(rate_)); }
+  /// The fastest of the phases that grow with t (rad/s): the nutation's tau', and phi's and
+  /// psi's secular rates, their linear parts and the complete integrals' share per second (2 j
+  /// of them after j half periods of tau). Formed and reduced in double-double, each keeps
+  /// every digit up to about 2^50. Not the Euler rates' bound: near a pole phi' is large for a
+  /// moment, but phi turns by pi there and no more.
+  double fastest_phase_rate() const;
 
  private:
   /// tau reduced by the period 2K of sn^2: u, u' and the integrals' reduced parts need only r.
