@@ -991,9 +991,6 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   if (a.bound != AnswerBound::none && a.value.shape == Value::Shape::scalar) {
     if (const auto q = inequality_of(written)) return judge_bound(ctx, a, *q, options);
   }
-  // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
-  // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows
-  // of a list where one has a factor outside its bracket.
   // "φ̇_slow = 4.995 rad/s, φ̇_fast = 25.82 rad/s": a part's numbers in one box, each labelled
   // with its answer's name. This answer's is judged; the line says the others were not.
   if (a.value.shape == Value::Shape::scalar) {
@@ -1018,6 +1015,9 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
       return v;
     }
   }
+  // "x = 0.5, y = 1, z = 1.5": components one by one, each with its label.
+  // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows
+  // of a list where one has a factor outside its bracket.
   const std::size_t entries = a.value.shape == Value::Shape::scalar ? 3 : a.value.data.size();
   if (const auto components = labelled_components(written, kField, a.named_entries, entries)) {
     return judge_one(ctx, a, components->text, options,
