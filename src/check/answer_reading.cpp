@@ -1435,7 +1435,7 @@ bool only_bare_letters(const std::string& vectors) {
 
 // "0.5 i + j + 1.5 k", "0.5 ê₁ + 1.5 ê₃" (unit vectors as basis_vectors_spelled writes them): the
 // components read as a vector, or, if they do not, a message that says what to write, not that
-// "i + j" is no unit.
+// "i + j" is no unit (UnitVectorsUnread, carrying `as_written`: "" unless bare i, j, k).
 ReadAnswer read_along_unit_vectors(const std::string& spelled, const std::string& vectors,
                                    const sym::SymbolTable& table, const std::string& field,
                                    const std::string& as_written) {
@@ -1454,7 +1454,7 @@ ReadAnswer read_along_unit_vectors(const std::string& spelled, const std::string
   throw UnitVectorsUnread(field + ": cannot read the components along unit vectors (" + vectors +
                               ") as a sum of a number or expression times each; write the "
                               "vector as [x, y, z]",
-                          only_bare_letters(vectors) ? as_written : "");
+                          as_written);
 }
 }  // namespace
 
@@ -1492,9 +1492,11 @@ ReadAnswer read_whole(const std::string& typed, const sym::SymbolTable& table,
     }
     as_written = e.what();
   }
+  // Bare i, j, k only: what reading as written said goes with the answer (answer_reading.hpp).
   const std::string vectors = unit_vectors_named(spelled, table);
+  if (!only_bare_letters(vectors)) as_written.clear();
   ReadAnswer along = read_along_unit_vectors(spelled, vectors, table, field, as_written);
-  if (only_bare_letters(vectors)) along.as_written_error = as_written;
+  along.as_written_error = as_written;
   return along;
 }
 

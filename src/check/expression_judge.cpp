@@ -18,6 +18,7 @@
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/symbol_values.hpp"
+#include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/expression_guard.hpp"
@@ -306,24 +307,12 @@ std::optional<std::string> numbers_named(const Context& ctx, const Answer& a,
                             equals_key(ctx, a, key, points));
 }
 
-// The length of the number `s` starts with ("10" of "10 ma^2", "2.5e-3" of "2.5e-3*m"), 0 if
-// none.
+// The length of the number `s` starts with, a sign included ("10" of "10 ma^2", "-2.5e-3" of
+// "-2.5e-3*m"), 0 if none.
 std::size_t leading_number(const std::string& s) {
-  std::size_t end = 0;
-  if (end < s.size() && (s[end] == '-' || s[end] == '+')) ++end;
-  const std::size_t digits = end;
-  while (end < s.size() && (std::isdigit(static_cast<unsigned char>(s[end])) || s[end] == '.'))
-    ++end;
-  if (end == digits) return 0;
-  if (end + 1 < s.size() && (s[end] == 'e' || s[end] == 'E')) {
-    std::size_t exponent = end + 1;
-    if (s[exponent] == '-' || s[exponent] == '+') ++exponent;
-    if (exponent < s.size() && std::isdigit(static_cast<unsigned char>(s[exponent]))) {
-      end = exponent;
-      while (end < s.size() && std::isdigit(static_cast<unsigned char>(s[end]))) ++end;
-    }
-  }
-  return end;
+  const std::size_t sign = !s.empty() && (s[0] == '-' || s[0] == '+') ? 1 : 0;
+  const std::size_t end = number_end(s, sign);
+  return end == sign ? 0 : end;
 }
 
 // "5, 7, 10 ma²" for the moments (5, 7, 10) m a²: a factor after the last of a list's numbers

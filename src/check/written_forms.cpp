@@ -603,22 +603,6 @@ bool name_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
 
-// The end of the plain number that starts at `at` ("90", "1.5", "2e-3"), or `at` if none.
-std::size_t number_end(const std::string& s, std::size_t at) {
-  std::size_t k = at;
-  while (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '.')) ++k;
-  if (k == at) return at;
-  if (k < s.size() && (s[k] == 'e' || s[k] == 'E')) {  // an exponent, if digits follow
-    std::size_t e = k + 1;
-    if (e < s.size() && (s[e] == '+' || s[e] == '-')) ++e;
-    if (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) {
-      while (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) ++e;
-      k = e;
-    }
-  }
-  return k;
-}
-
 // Whether `s` has a name, outside its numbers, that `takes` takes.
 bool names_symbol(const std::string& s, const std::function<bool(const std::string&)>& takes) {
   for (std::size_t i = 0; i < s.size();) {
@@ -662,6 +646,21 @@ bool degrees_joined(const std::string& s) {
     if (count++ == 0) first_end = at + 3;
   }
   return count >= 2 && s.find_first_of("+-", first_end) != std::string::npos;
+}
+
+std::size_t number_end(const std::string& s, std::size_t at) {
+  std::size_t k = at;
+  while (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '.')) ++k;
+  if (k == at) return at;
+  if (k < s.size() && (s[k] == 'e' || s[k] == 'E')) {  // an exponent, if digits follow
+    std::size_t e = k + 1;
+    if (e < s.size() && (s[e] == '+' || s[e] == '-')) ++e;
+    if (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) {
+      while (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) ++e;
+      k = e;
+    }
+  }
+  return k;
 }
 
 std::string degrees_in_expression(const std::string& ascii,

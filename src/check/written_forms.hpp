@@ -115,6 +115,10 @@ std::optional<Restatement> restatement_of(const std::string& typed);
 /// `typed` itself where no such label is.
 std::string without_colon_labels(const std::string& typed);
 
+/// The end of the plain number that starts at `at` in `s` ("90", "1.5", "2e-3"; no sign), or
+/// `at` itself if none starts there.
+std::size_t number_end(const std::string& s, std::size_t at);
+
 /// "phi + (90*pi/180)" for "phi + 90 deg": in an expression, a text that names one of the
 /// problem's symbols or a function (`in_expression`), each plain number in degrees ("90 deg",
 /// "90deg", as "90°" arrives here) as radians, the SI of an expression ("(φ + 90°, θ, ψ − 90°)",
