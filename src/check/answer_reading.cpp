@@ -312,7 +312,8 @@ std::string greek_letters_apart(const std::string& typed) {
       out += typed[i++];
       continue;
     }
-    if (ends_factor(out)) out += ' ';
+    // After '_' the letter is the name's subscript ("p_ψ", "ω_φ"), not a factor of its own.
+    if (ends_factor(out) && out.back() != '_') out += ' ';
     out += typed.substr(i, length);
     i += length;
     // "φ̇cos θ": the letter's dot above and subscript digits are its own, then a factor apart.

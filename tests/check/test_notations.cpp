@@ -653,6 +653,14 @@ TEST_CASE("an answer's name in an answer is no symbol, and the message says whos
                       Catch::Contains("I0 is the answer to part (a)"));
   REQUIRE_THROWS_WITH(plate.check("L0_space", "L0_body"),
                       Catch::Contains("L0_body is the answer to part (b)"));
+  // A Greek subscript after '_' belongs to the name: p_ψ is the heavy top's p_psi, not "p_".
+  const Fixture top("heavy-top");
+  for (const char* with_other_answer : {"p_ψ cos θ₀", "p_ψ·cos(θ₀)", "p_psi cos θ₀"}) {
+    INFO(with_other_answer);
+    REQUIRE_THROWS_WITH(top.check("p_phi", with_other_answer),
+                        Catch::Contains("undefined symbol 'p_psi'") &&
+                            Catch::Contains("p_psi is the answer to part (a)"));
+  }
   // A name that is no answer gets no such line.
   REQUIRE_THROWS_WITH(plate.check("I0", "M R^2/4"), !Catch::Contains("is the answer to"));
   // Ω as a book writes the precession rate: the answers it names, and no "unit 'pi/Omega'".
