@@ -962,10 +962,12 @@ bool is_factor_between(const std::string& before, const std::string& after) {
 }
 
 // `before` X `after` with 1 in X's place, joined by '*' where no '*' or '/' joins it: "2 [a, b]"
-// is a product where "2 1" would be refused, and "(1 - x)(1)" would read as rows.
+// is a product where "2 1" would be refused, and "(1 - x)(1)" would read as rows. A sign before
+// X is its own ("-(a, b, c)": -1; X is one term, so the sign starts it).
 std::string with_one_in_place(const std::string& before, const std::string& after) {
   const auto joins = [](char c) { return c == '*' || c == '/'; };
-  return before + (before.empty() || joins(before.back()) ? "" : "*") + "1" +
+  const bool sign = !before.empty() && (before.back() == '-' || before.back() == '+');
+  return before + (before.empty() || joins(before.back()) || sign ? "" : "*") + "1" +
          (after.empty() || joins(after[0]) ? "" : "*") + after;
 }
 

@@ -253,7 +253,14 @@ std::pair<std::string, std::string> split_unit(const std::string& s) {
   for (std::size_t sp = s.find(' '); sp != std::string::npos; sp = s.find(' ', sp + 1)) {
     const std::string right = trim(s.substr(sp + 1));
     if (right.empty() || right[0] == '*' || right[0] == '/') continue;
-    if (is_unit(right)) return {trim(s.substr(0, sp)), right};
+    // As typed ("kg m²") or as read ("kg m^2"): the unit parser reads the latter. A unit is a
+    // few words: a longer right side is not rewritten first, or a long answer would be rewritten
+    // at each of its spaces.
+    constexpr std::size_t kLongestTypedUnit = 48;
+    const bool ascii = std::all_of(right.begin(), right.end(),
+                                   [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+    if (is_unit(ascii || right.size() > kLongestTypedUnit ? right : sym::to_ascii(right)))
+      return {trim(s.substr(0, sp)), right};
   }
   return {s, ""};
 }

@@ -25,7 +25,8 @@
 namespace wobble::check {
 
 /// The value and the unit after it ("" if none): the first split at a space whose right side is
-/// a unit ("1.5 m" -> ("1.5", "m"); "2 * m" and "x / s" are no value and unit); `s` itself and
+/// a unit, as typed or in ASCII ("1.5 m" -> ("1.5", "m"); "4.2 kg m²" -> ("4.2", "kg m²"); "2 * m"
+/// and "x / s" are no value and unit); `s` itself and
 /// "" for a text without one.
 std::pair<std::string, std::string> split_unit(const std::string& s);
 

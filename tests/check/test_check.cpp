@@ -393,6 +393,15 @@ TEST_CASE("equal expressions in other forms are right, unequal ones wrong") {
     INFO(name << " = " << same);
     REQUIRE(plate.check(name, same).correct);
   }
+  // A sign alone before the bracket is its factor: -(..) is -1 (..).
+  const Fixture box("box-corner");  // the centre of mass (a/2, b/2, c/2)
+  for (const char* negated : {"-(-a, -b, -c)/2", "−(−a/2, −b/2, −c/2)", "-[-a, -b, -c]/2"}) {
+    INFO(negated);
+    REQUIRE(box.check("center_of_mass", negated).correct);
+  }
+  const Verdict reversed = box.check("center_of_mass", "-(a, b, c)/2");
+  REQUIRE_FALSE(reversed.correct);
+  REQUIRE_THAT(reversed.feedback.at(0), Catch::Contains("sign is reversed"));
   // Only a product: the rest must be a factor times the bracket.
   REQUIRE_FALSE(plate.check("I", "m R^2/2 [[1, 0, 0], [0, 1, 0], [0, 0, 2]]").correct);
   for (const std::string none :

@@ -1529,6 +1529,15 @@ TEST_CASE("labels before a ':', a unit after labelled components, a row of numbe
     INFO(right);
     REQUIRE(box.check("center_of_mass", right).correct);
   }
+  // The unit after the last value as typed, with its superscript: the principal moments' kg m².
+  const auto& moments_kg_m2 = box.answer("principal_moments_corner").value.data;
+  for (const char* unit : {"kg m²", "kg·m²", "kg m^2"}) {
+    const std::string labelled =
+        fmt::format("I₁ = {:.6g}, I₂ = {:.6g}, I₃ = {:.6g} {}", moments_kg_m2.at(0),
+                    moments_kg_m2.at(1), moments_kg_m2.at(2), unit);
+    INFO(labelled);
+    REQUIRE(box.check("principal_moments_corner", labelled).correct);
+  }
   // The unit after the last value is the whole vector's: in mm the values are 1000 times off.
   const auto mm = box.check("center_of_mass", "x = " + x + ", y = " + y + ", z = " + z + " mm");
   REQUIRE_FALSE(mm.correct);
