@@ -25,6 +25,11 @@ std::pair<long, long> variant_range(const std::string& text, const std::string& 
 /// --max-evaluations takes 5e7). A fraction, or more than 2^53, is refused naming the text.
 /// For CLI11's transform(): it rewrites an exact whole number in decimal digits.
 CLI::Validator whole_number();
+/// "--t-end 2 min": where the first of the `extras` the command line refused is a word of such an
+/// option's value that the shell parted at a space, the line saying so with the command to type
+/// (`args` as typed); "" otherwise.
+std::string value_split_message(const std::vector<std::string>& args,
+                                const std::vector<std::string>& extras);
 
 /// "NAME=VALUE" assignments as (identifier, value text) pairs, for a handout: the last given for
 /// a parameter first (a --set after a variant's value).

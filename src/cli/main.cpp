@@ -124,8 +124,13 @@ int main(int argc, char** argv) {
     // "wobble check ID I0 0.00072 kg m^2": the shell split the answer at its spaces.
     const std::string quoted =
         check->parsed() && !negative_answer ? answer_quoted({argv, argv + argc}, check_opt) : "";
+    // "wobble simulate wheel-brake --t-end 2 min": an option's value split likewise.
+    const std::string split_value =
+        quoted.empty() ? value_split_message({argv, argv + argc}, app.remaining(true)) : "";
     if (!quoted.empty()) {
       fmt::print(stderr, "wobble: check: {}\n", split_answer_message(quoted));
+    } else if (!split_value.empty()) {
+      fmt::print(stderr, "wobble: {}\n", split_value);
     } else {
       fmt::print(stderr, "wobble: {}{}\n", what,
                  negative_answer ? "; an answer that starts with '-' goes after -- (wobble check "

@@ -282,6 +282,24 @@ TEST_CASE("simulate --t-end takes a unit of time, as a value is typed elsewhere"
     REQUIRE(r.exit_code == 0);
     CHECK_THAT(r.out, Catch::Contains(shown));
   }
+  // Typed without quotes the shell parts the value: the line says so and gives the command.
+  for (const auto& [typed, line] :
+       {std::pair<std::vector<std::string>, std::string>{
+            {"simulate", "tennis-racket", "--t-end", "2", "min", "--samples", "3"},
+            "give it in quotes: wobble simulate tennis-racket --t-end '2 min' --samples 3"},
+        {{"simulate", "tennis-racket", "--t-end=2", "min"},
+         "give it in quotes: wobble simulate tennis-racket --t-end='2 min'"}}) {
+    const RunResult r = run_wobble(typed);
+    INFO(r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Catch::StartsWith("wobble: --t-end: the shell parted its value") &&
+                          Catch::Contains(line));
+  }
+  // A word left over elsewhere is not called a part of the value.
+  const RunResult other = run_wobble({"simulate", "tennis-racket", "--samples", "3", "extra"});
+  CHECK(other.exit_code == 2);
+  CHECK_THAT(other.err, !Catch::Contains("--t-end") && Catch::Contains("extra"));
 }
 
 TEST_CASE("a million samples are written in bounded memory") {
