@@ -1599,12 +1599,16 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
   const auto in_expression = [&](const std::string& name) {
     return (table.contains(name) || sym::is_function_name(name)) && !table.contains("deg");
   };
+  const auto is_symbol = [&](const std::string& name) { return table.contains(name); };
   const std::string text = compound_quantity(degrees_in_expression(
       sexagesimal_degrees(
-          names_apart(
-              symbols_as_spelled(
-                  lagrange_rates(leibniz_rates(prepared(source, field), table), table), table),
-              table),
+          names_apart(symbols_as_spelled(
+                          lagrange_rates(leibniz_rates(elliptic_integral_named(
+                                                           prepared(source, field), is_symbol),
+                                                       table),
+                                         table),
+                          table),
+                      table),
           field),
       in_expression));
   if (text.empty()) {

@@ -727,6 +727,17 @@ class Reader {
       out.factor(function(run, run, depth));
       return;
     }
+    // K(k), the complete elliptic integral of the first kind as books write it, where K is no
+    // symbol of the problem (as in plain text: written_forms.hpp, elliptic_integral_named).
+    if (whole && run == "K" && !table_.contains("K")) {
+      std::size_t next = i_ + 1;
+      while (next < s_.size() && s_[next] == ' ') ++next;
+      if (next < s_.size() && (s_[next] == '(' || s_.compare(next, 5, "\\left") == 0)) {
+        ++i_;
+        out.factor(function("EllipticK", "K", depth));
+        return;
+      }
+    }
     // "0.21kg": a unit glued to a plain number, where its first letter is no symbol.
     if (!table_.contains(run.substr(0, 1)) && unit_here(out, depth)) return;
     out.factor(letter_symbol());

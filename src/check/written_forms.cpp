@@ -719,4 +719,32 @@ std::string degrees_in_expression(const std::string& ascii,
   return out;
 }
 
+std::string elliptic_integral_named(const std::string& ascii,
+                                    const std::function<bool(const std::string&)>& is_symbol) {
+  if (ascii.find("K") == std::string::npos || is_symbol("K")) return ascii;
+  const auto name_char = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+  };
+  std::string out;
+  for (std::size_t i = 0; i < ascii.size(); ++i) {
+    std::size_t open = i + 1;
+    while (open < ascii.size() && ascii[open] == ' ') ++open;
+    const bool alone = ascii[i] == 'K' &&
+                       (i == 0 || !std::isalpha(static_cast<unsigned char>(ascii[i - 1]))) &&
+                       (i == 0 || ascii[i - 1] != '_') && open < ascii.size() &&
+                       ascii[open] == '(' && (open == i + 1 || !name_char(ascii[i + 1]));
+    if (!alone) {
+      out += ascii[i];
+      continue;
+    }
+    // "4K(k)", "4 K(k)", "(..)K(k)": the factor before it multiplies it.
+    const std::size_t before = out.find_last_not_of(' ');
+    if (before != std::string::npos && (std::isdigit(static_cast<unsigned char>(out[before])) ||
+                                        out[before] == '.' || out[before] == ')'))
+      out = out.substr(0, before + 1) + '*';
+    out += "EllipticK";
+  }
+  return out;
+}
+
 }  // namespace wobble::check

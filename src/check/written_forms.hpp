@@ -26,8 +26,7 @@ namespace wobble::check {
 
 /// The value and the unit after it ("" if none): the first split at a space whose right side is
 /// a unit, as typed or in ASCII ("1.5 m" -> ("1.5", "m"); "4.2 kg m²" -> ("4.2", "kg m²"); "2 * m"
-/// and "x / s" are no value and unit); `s` itself and
-/// "" for a text without one.
+/// and "x / s" are no value and unit); `s` itself and "" for a text without one.
 std::pair<std::string, std::string> split_unit(const std::string& s);
 
 /// "[0.5, 1, 1.5]" for "0.5 1 1.5", "[[1, 0], [0, 2]]" for the lines "1 0" and "0 2": text
@@ -129,5 +128,12 @@ std::size_t number_end(const std::string& s, std::size_t at);
 /// numbers, is a number with its unit.
 std::string degrees_in_expression(const std::string& ascii,
                                   const std::function<bool(const std::string&)>& in_expression);
+
+/// "4*EllipticK(k)/lambda" for "4K(k)/lambda", "4 K(k)": the complete elliptic integral of the
+/// first kind as books write it, K(k) of the modulus k (as the key's EllipticK takes it), where K
+/// is no symbol of the problem (`is_symbol`) and stands alone before its bracket; a number or a
+/// bracket before it multiplies it. `ascii` itself where there is no such K.
+std::string elliptic_integral_named(const std::string& ascii,
+                                    const std::function<bool(const std::string&)>& is_symbol);
 
 }  // namespace wobble::check

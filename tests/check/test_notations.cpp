@@ -779,13 +779,37 @@ TEST_CASE("where a number is asked for, a bare k is a name of the student's own,
   REQUIRE(top.check("k2", "k² = " + value("k2")).correct);
   // Which answer a labelled value is, where it is another part's.
   REQUIRE_THAT(top.check("k2", "k′² = " + kc2).feedback.at(0), Catch::Contains("this is kc2"));
-  // A formula in a function the problem lacks (K for the complete integral) labels it too.
+  // A formula in names the problem lacks (k, λ) labels it too; K is the complete integral.
   const std::string period = value("period") + " s";
   const auto labelled = top.check("period", "T = 4K(k)/λ = " + period);
   REQUIRE(labelled.correct);
   REQUIRE(labelled.feedback ==
           std::vector<std::string>{"the side \"4K(k)/λ\" of your '=' is taken as a label, not "
-                                   "judged: K is no function here"});
+                                   "judged: k is no symbol here"});
+  // K(k) as books write the complete elliptic integral of the first kind (of the modulus, as the
+  // key's EllipticK): glued to its factor or not, in LaTeX, and in the problem's symbols.
+  const double lambda = 4 * std::comp_ellint_1(top.answer("k").value.data.at(0)) /
+                        top.answer("period").value.data.at(0);
+  const std::string k = value("k"), rate = format_number(lambda);
+  for (const std::string& same :
+       {"4K(" + k + ")/" + rate, "4 K(" + k + ") / " + rate + " s", "4*K(" + k + ")/" + rate,
+        "\\frac{4K(" + k + ")}{" + rate + "}", "4K\\left(" + k + "\\right)/" + rate,
+        std::string("4K(√((I₁−I₂)(I₁ω₁²(I₁−I₃) + I₂ω₂²(I₂−I₃))/((I₂−I₃)(I₂ω₂²(I₁−I₂) + "
+                    "I₃ω₃²(I₁−I₃)))))/√((I₁I₂ω₂² + I₁I₃ω₃² − I₂²ω₂² − I₃²ω₃²)(I₂ − "
+                    "I₃)/(I₁I₂I₃))")}) {
+    INFO(same);
+    REQUIRE(top.check("period", same).correct);
+  }
+  // K alone, not before a bracket, is still no symbol here; where a problem has a symbol K, K(..)
+  // is not the integral.
+  REQUIRE_THROWS_WITH(top.check("period", "K/" + rate), Catch::Contains("undefined symbol 'K'"));
+  const auto none = [](const std::string&) { return false; };
+  const auto has_K = [](const std::string& name) { return name == "K"; };
+  CHECK(check::elliptic_integral_named("4 K(k)/L", none) == "4*EllipticK(k)/L");
+  CHECK(check::elliptic_integral_named("(a+b)K(k)", none) == "(a+b)*EllipticK(k)");
+  CHECK(check::elliptic_integral_named("K (k) + MK(k) + K_1(k)", none) ==
+        "EllipticK (k) + MK(k) + K_1(k)");
+  CHECK(check::elliptic_integral_named("4 K(k)/L", has_K) == "4 K(k)/L");
   REQUIRE(top.check("period", period + " = 4K(k)/λ").correct);
   const auto wrong = top.check(
       "period", "4K(k)/λ = " + format_number(top.answer("period").value.data.at(0) * 1.1) + " s");
