@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "check/inequality.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 
@@ -32,6 +33,12 @@ std::string answer_meant(const Context& ctx, const std::string& part_id, const s
   if (written_as_euler_equations(ctx, text)) {
     for (const auto& a : part->answers) {
       if (a.named_entries == kEulerCoefficients) return a.name;
+    }
+  }
+  // "30° ≤ θ ≤ 44.7°": a range is an answer for its first bound (the line names the other's).
+  if (range_of(text)) {
+    for (const auto& a : part->answers) {
+      if (a.bound != AnswerBound::none && a.value.shape == Value::Shape::scalar) return a.name;
     }
   }
   // Judged against each: an answer that cannot be read as one of them (its shape or unit is

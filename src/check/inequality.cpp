@@ -4,6 +4,7 @@
 #include <cctype>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "check/brackets.hpp"
 #include "core/characters.hpp"
@@ -37,10 +38,19 @@ const std::pair<std::string_view, bool>* sign_at(const std::string& s, std::size
 
 }  // namespace
 
-std::optional<Inequality> inequality_of(const std::string& text) {
-  std::optional<Inequality> found;
+namespace {
+// A comparison's sign at the top level of a text: where it starts, and which.
+struct SignAt {
+  std::size_t at;
+  const std::pair<std::string_view, bool>* sign;
+};
+
+// Every comparison sign at the top level of `text` (outside brackets), at most `most` + 1: more
+// than `most` says only that there are too many.
+std::vector<SignAt> signs_of(const std::string& text, std::size_t most) {
+  std::vector<SignAt> found;
   int depth = 0;
-  for (std::size_t i = 0; i < text.size();) {
+  for (std::size_t i = 0; i < text.size() && found.size() <= most;) {
     const char c = text[i];
     if (opens(c) || closes(c)) {
       depth += opens(c) ? 1 : -1;
@@ -52,17 +62,37 @@ std::optional<Inequality> inequality_of(const std::string& text) {
       ++i;
       continue;
     }
-    if (found) return std::nullopt;  // "a < b < c": no one bound
-    Inequality q;
-    q.left = trim(text.substr(0, i));
-    q.right = trim(text.substr(i + sign->first.size()));
-    q.left_greater = sign->second;
-    q.sign = std::string(sign->first);
-    found = std::move(q);
+    found.push_back({i, sign});
     i += sign->first.size();
   }
-  if (found && (found->left.empty() || found->right.empty())) return std::nullopt;
   return found;
+}
+}  // namespace
+
+std::optional<Inequality> inequality_of(const std::string& text) {
+  const std::vector<SignAt> signs = signs_of(text, 1);
+  if (signs.size() != 1) return std::nullopt;  // "a < b < c": no one bound
+  const auto [at, sign] = signs.front();
+  Inequality q;
+  q.left = trim(text.substr(0, at));
+  q.right = trim(text.substr(at + sign->first.size()));
+  q.left_greater = sign->second;
+  q.sign = std::string(sign->first);
+  if (q.left.empty() || q.right.empty()) return std::nullopt;
+  return q;
+}
+
+std::optional<Range> range_of(const std::string& text) {
+  const std::vector<SignAt> signs = signs_of(text, 2);
+  if (signs.size() != 2 || signs[0].sign->second != signs[1].sign->second) return std::nullopt;
+  const std::size_t first_end = signs[0].at + signs[0].sign->first.size();
+  const std::string left = trim(text.substr(0, signs[0].at));
+  const std::string middle = trim(text.substr(first_end, signs[1].at - first_end));
+  const std::string right = trim(text.substr(signs[1].at + signs[1].sign->first.size()));
+  if (left.empty() || middle.empty() || right.empty()) return std::nullopt;
+  const bool descending = signs[0].sign->second;  // "44.7° ≥ θ ≥ 30°"
+  return Range{descending ? right : left, middle, descending ? left : right,
+               std::string(signs[0].sign->first)};
 }
 
 }  // namespace wobble::check

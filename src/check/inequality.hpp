@@ -18,4 +18,13 @@ struct Inequality {
 /// nullopt where there is no comparison, more than one, or a side is empty.
 std::optional<Inequality> inequality_of(const std::string& text);
 
+/// A range as a chain of two comparisons that point the same way: "30° ≤ θ ≤ 44.7°" (or
+/// "44.7° ≥ θ ≥ 30°") for the nutation's limits, each end trimmed and not empty.
+struct Range {
+  std::string lower, quantity, upper;
+  std::string sign;  ///< the first as written: "≤", "<", "\leq", ...
+};
+/// nullopt where `text` is no such chain (one comparison, three, or two that point both ways).
+std::optional<Range> range_of(const std::string& text);
+
 }  // namespace wobble::check

@@ -906,6 +906,31 @@ Verdict judge_bound(const Context& ctx, const Answer& a, const Inequality& q, co
   return v;
 }
 
+// "30° ≤ θ ≤ 44.7°" for the nutation's limits (inequality.hpp): a least value is the range's
+// lower end, a greatest its upper; the other end is named as not judged, with the answer of the
+// same part it would be, where there is one.
+Verdict judge_range_end(const Context& ctx, const Answer& a, const Range& r, const Options& opt) {
+  const bool lower = a.bound == AnswerBound::lower;
+  const std::string& end = lower ? r.lower : r.upper;
+  const std::string& other = lower ? r.upper : r.lower;
+  Verdict v = judge_one(ctx, a, end, opt);
+  std::string partner;
+  for (const auto& p : ctx.key.parts) {
+    const auto own = std::find_if(p.answers.begin(), p.answers.end(),
+                                  [&](const Answer& b) { return b.name == a.name; });
+    if (own == p.answers.end()) continue;
+    for (const auto& b : p.answers) {
+      if (b.bound != AnswerBound::none && b.bound != a.bound) partner = b.name;
+    }
+  }
+  v.feedback.push_back(fmt::format(
+      "read as {} = {}, the {} end of your range; {} ({}) not judged "
+      "here{}",
+      a.name, end, lower ? "lower" : "upper", other, lower ? "its upper end" : "its lower end",
+      partner.empty() ? "" : ": it is " + partner + "'s"));
+  return v;
+}
+
 }  // namespace
 
 namespace {
@@ -989,6 +1014,7 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   }
   // "ω₃ ≥ 118.8 rad/s": a least or greatest value as the bound it is.
   if (a.bound != AnswerBound::none && a.value.shape == Value::Shape::scalar) {
+    if (const auto r = range_of(written)) return judge_range_end(ctx, a, *r, options);
     if (const auto q = inequality_of(written)) return judge_bound(ctx, a, *q, options);
   }
   // "φ̇_slow = 4.995 rad/s, φ̇_fast = 25.82 rad/s": a part's numbers in one box, each labelled

@@ -11,6 +11,7 @@
 #include <tuple>
 #include <vector>
 
+#include "check/answer_choice.hpp"
 #include "check/check_fixture.hpp"
 #include "check/inequality.hpp"
 #include "check/judge.hpp"
@@ -1893,6 +1894,38 @@ TEST_CASE("a least or greatest value given as its inequality is judged by its bo
   REQUIRE(plate.answer("t_max").bound == AnswerBound::none);
   REQUIRE_THROWS_AS(plate.check("t_max", "t ≤ 0.1612 s"), InputError);
   REQUIRE(plate.check("max_angle", "∠(z, e₃) ≤ 15.26°").correct);
+}
+
+TEST_CASE("a range, as the nutation's limits are written, gives each bound its end") {
+  const Fixture top("heavy-top");
+  const auto degrees = [&](const std::string& name) {
+    return fmt::format("{:.6g}°", top.answer(name).value.data[0] * 180 / kPi);
+  };
+  const std::string low = degrees("theta_min"), high = degrees("theta_max");
+  for (const std::string& range :
+       {low + " ≤ θ ≤ " + high, high + " ≥ θ ≥ " + low, low + " < theta < " + high,
+        "θ₀ ≤ θ ≤ " + high, "\\theta_0 \\le \\theta \\le " + high}) {
+    INFO(range);
+    const auto most = top.check("theta_max", range);
+    REQUIRE(most.correct);
+    REQUIRE_THAT(most.feedback.back(), Catch::StartsWith("read as theta_max = " + high +
+                                                         ", the upper end of your range") &&
+                                           Catch::EndsWith("not judged here: it is theta_min's"));
+    const auto least = top.check("theta_min", range);
+    REQUIRE(least.correct);
+    REQUIRE_THAT(least.feedback.back(), Catch::Contains("the lower end of your range"));
+  }
+  // Each end is judged for its own answer: a wrong upper end is wrong for theta_max only.
+  const std::string too_high = low + " ≤ θ ≤ 50°";
+  REQUIRE_FALSE(top.check("theta_max", too_high).correct);
+  REQUIRE(top.check("theta_min", too_high).correct);
+  // Without a name, part (b) takes a range for its first bound, theta_min.
+  const check::Context ctx{top.key, top.table, top.values};
+  REQUIRE(check::answer_meant(ctx, "b", low + " ≤ θ ≤ " + high, {}) == "theta_min");
+  // Two comparisons that point both ways are no range.
+  CHECK_FALSE(check::range_of("1 ≤ θ ≥ 2"));
+  CHECK_FALSE(check::range_of("1 ≤ θ ≤ 2 ≤ 3"));
+  CHECK_FALSE(check::range_of("θ ≤ 2"));
 }
 
 TEST_CASE("principal moments given as the diagonal tensor are read as its diagonal") {
