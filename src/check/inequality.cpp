@@ -25,6 +25,8 @@ constexpr std::array<std::pair<std::string_view, bool>, 14> kSigns{{
 // The sign at `at` in `s`, if one is there: a LaTeX command only as a whole word ("\le", not
 // the start of "\left").
 const std::pair<std::string_view, bool>* sign_at(const std::string& s, std::size_t at) {
+  // "E -> 7.37": an arrow, as Mathematica writes a rule, compares nothing.
+  if (s[at] == '>' && at > 0 && s[at - 1] == '-') return nullptr;
   for (const auto& sign : kSigns) {
     if (s.compare(at, sign.first.size(), sign.first) != 0) continue;
     const std::size_t after = at + sign.first.size();

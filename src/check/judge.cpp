@@ -1016,6 +1016,13 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   if (a.bound != AnswerBound::none && a.value.shape == Value::Shape::scalar) {
     if (const auto r = range_of(written)) return judge_range_end(ctx, a, *r, options);
     if (const auto q = inequality_of(written)) return judge_bound(ctx, a, *q, options);
+  } else if (inequality_of(written) || range_of(written)) {
+    // "E < 8 J", "t ≤ 0.1612 s": no expression compares, and this answer is no bound.
+    throw InputError(
+        fmt::format("{}: {} is a value, not a bound: give the value itself (an "
+                    "inequality or a range is read only for a least or greatest "
+                    "value)",
+                    kField, a.name));
   }
   // "φ̇_slow = 4.995 rad/s, φ̇_fast = 25.82 rad/s": a part's numbers in one box, each labelled
   // with its answer's name. This answer's is judged; the line says the others were not.

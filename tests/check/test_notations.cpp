@@ -1922,6 +1922,14 @@ TEST_CASE("a range, as the nutation's limits are written, gives each bound its e
   // Without a name, part (b) takes a range for its first bound, theta_min.
   const check::Context ctx{top.key, top.table, top.values};
   REQUIRE(check::answer_meant(ctx, "b", low + " ≤ θ ≤ " + high, {}) == "theta_min");
+  // An answer that is no bound takes no inequality or range, and is told so; an arrow is none.
+  for (const char* compared : {"E < 8 J", "7 J < E < 8 J", "E ≤ 8 J"}) {
+    INFO(compared);
+    REQUIRE_THROWS_WITH(top.check("energy", compared),
+                        Catch::Contains("energy is a value, not a bound"));
+  }
+  REQUIRE_THROWS_WITH(top.check("energy", "E -> 8 J"), !Catch::Contains("not a bound"));
+  CHECK_FALSE(check::inequality_of("E -> 8"));
   // Two comparisons that point both ways are no range.
   CHECK_FALSE(check::range_of("1 ≤ θ ≥ 2"));
   CHECK_FALSE(check::range_of("1 ≤ θ ≤ 2 ≤ 3"));
