@@ -946,8 +946,9 @@ std::string written_answer(const Context& ctx, const std::string& text) {
            sym::greek_letters().count(ascii_lower(w)) > 0;
   };
   // "eigenvalues: 0.569, ..", "I1: 0.569, I2: ..": labels before a ':', as one writes an answer.
-  return without_colon_labels(without_output_label(
-      without_math_delimiters(without_remark(without_comments(text), known_word))));
+  // "2.5, 3, 3.5 (in units of m a²)": the value times the expression it is given in units of.
+  return without_colon_labels(without_output_label(without_math_delimiters(
+      without_remark(in_units_of_written(without_comments(text)), known_word))));
 }
 
 // The answer judged; where right, the bracket's value too, which must be right as well (a

@@ -532,6 +532,33 @@ std::string without_comments(const std::string& s) {
   return out;
 }
 
+std::string in_units_of_written(const std::string& typed) {
+  std::string t = trim(typed);
+  const bool bracketed = !t.empty() && t.back() == ')';
+  if (bracketed) t = trim(t.substr(0, t.size() - 1));
+  constexpr std::string_view kPhrase = "in units of ";
+  const std::size_t at = ascii_lower(t).rfind(kPhrase);
+  if (at == std::string::npos || at == 0) return typed;
+  const std::string unit = trim(t.substr(at + kPhrase.size()));
+  std::string before = trim(t.substr(0, at));
+  if (bracketed) {
+    if (before.empty() || before.back() != '(') return typed;
+    before = trim(before.substr(0, before.size() - 1));
+  }
+  if (unit.empty() || before.empty()) return typed;
+  // The value after the last '=' at the top level; a label before it stays.
+  const std::vector<std::string> sides = top_level(before, '=');
+  const std::string value = trim(sides.back());
+  if (value.empty()) return typed;
+  const std::string label = trim(before.substr(0, before.size() - sides.back().size()));
+  const bool one_bracket =
+      (value.front() == '[' || value.front() == '(') && top_level(value, ',').size() == 1;
+  // "(0.0737) * 100 J": a number is joined by '*', as a number beside a number is no product.
+  const bool number = std::isdigit(static_cast<unsigned char>(unit[0])) != 0 || unit[0] == '.';
+  return label + (label.empty() ? "" : " ") + (one_bracket ? value : "(" + value + ")") +
+         (number ? " * " : " ") + unit;
+}
+
 std::string without_remark(const std::string& typed,
                            const std::function<bool(const std::string&)>& is_known) {
   const std::string t = trim(typed);

@@ -81,6 +81,11 @@ std::optional<SomeComponents> some_components(const std::string& text);
 /// No answer wobble reads has either.
 std::string without_comments(const std::string& typed);
 
+/// "λ = (2.5, 3, 3.5) m a²" for "λ = 2.5, 3, 3.5 (in units of m a²)": a value given in units of an
+/// expression, in brackets or not, as that expression times the value after the last '=' (a list
+/// in brackets first). `typed` itself where it does not end so.
+std::string in_units_of_written(const std::string& typed);
+
 /// `typed` without a remark in words after it, in brackets: "303.6 days" for "303.6 days (Euler's
 /// period)", "0.00072 kg m^2" for "0.00072 kg m^2 (about the centre)". A remark is the text's
 /// last bracket, after a space, of two words or more in ASCII letters (an apostrophe, a hyphen

@@ -1896,6 +1896,23 @@ TEST_CASE("a least or greatest value given as its inequality is judged by its bo
   REQUIRE(plate.check("max_angle", "∠(z, e₃) ≤ 15.26°").correct);
 }
 
+TEST_CASE("a value given in units of an expression is that expression times it") {
+  const Fixture cube("four-masses");  // moments (5/2, 3, 7/2) m a², I = m a² [[3, -1/2, 0], ..]
+  for (const char* same : {"λ = 2.5, 3, 3.5 (in units of ma²)", "2.5, 3, 3.5 in units of m a^2",
+                           "(2.5, 3, 3.5) (In units of m*a^2)", "[2.5 3 3.5] in units of ma^2"}) {
+    INFO(same);
+    const auto v = cube.check("principal_moments", same);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.line, Catch::Contains("simplifies to the key's"));
+  }
+  REQUIRE(cube.check("I", "[[3, -0.5, 0], [-0.5, 3, 0], [0, 0, 3]] (in units of ma²)").correct);
+  REQUIRE_FALSE(cube.check("principal_moments", "2.5, 3, 3.6 (in units of ma²)").correct);
+  const Fixture top("heavy-top");  // E = 7.371 J
+  REQUIRE(top.check("energy", "0.07371 (in units of 100 J)").correct);
+  CHECK(check::in_units_of_written("x = 1, 2 (in units of m a^2)") == "x = (1, 2) m a^2");
+  CHECK(check::in_units_of_written("2.5 (about the axis)") == "2.5 (about the axis)");
+}
+
 TEST_CASE("a range, as the nutation's limits are written, gives each bound its end") {
   const Fixture top("heavy-top");
   const auto degrees = [&](const std::string& name) {
