@@ -551,6 +551,9 @@ std::string in_units_of_written(const std::string& typed) {
   const std::string value = trim(sides.back());
   if (value.empty()) return typed;
   const std::string label = trim(before.substr(0, before.size() - sides.back().size()));
+  // "303.6 days (in units of days)": a value with its unit already says it; the words are a
+  // remark.
+  if (!split_unit(value).second.empty()) return label + (label.empty() ? "" : " ") + value;
   const bool one_bracket =
       (value.front() == '[' || value.front() == '(') && top_level(value, ',').size() == 1;
   // "(0.0737) * 100 J": a number is joined by '*', as a number beside a number is no product.

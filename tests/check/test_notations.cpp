@@ -1911,6 +1911,9 @@ TEST_CASE("a value given in units of an expression is that expression times it")
   REQUIRE(top.check("energy", "0.07371 (in units of 100 J)").correct);
   CHECK(check::in_units_of_written("x = 1, 2 (in units of m a^2)") == "x = (1, 2) m a^2");
   CHECK(check::in_units_of_written("2.5 (about the axis)") == "2.5 (about the axis)");
+  // A value with its unit already: the words are a remark.
+  CHECK(check::in_units_of_written("303.6 days (in units of days)") == "303.6 days");
+  REQUIRE(top.check("energy", "7.371 J (in units of J)").correct);
 }
 
 TEST_CASE("a range, as the nutation's limits are written, gives each bound its end") {
