@@ -554,8 +554,7 @@ std::string in_units_of_written(const std::string& typed) {
   // "303.6 days (in units of days)": a value with its unit already says it; the words are a
   // remark.
   if (!split_unit(value).second.empty()) return label + (label.empty() ? "" : " ") + value;
-  const bool one_bracket =
-      (value.front() == '[' || value.front() == '(') && top_level(value, ',').size() == 1;
+  const bool one_bracket = opens(value.front()) && matching(value, 0) == value.size() - 1;
   // "(0.0737) * 100 J": a number is joined by '*', as a number beside a number is no product.
   const bool number = std::isdigit(static_cast<unsigned char>(unit[0])) != 0 || unit[0] == '.';
   return label + (label.empty() ? "" : " ") + (one_bracket ? value : "(" + value + ")") +
@@ -752,17 +751,16 @@ std::string degrees_in_expression(const std::string& ascii,
 std::string elliptic_integral_named(const std::string& ascii,
                                     const std::function<bool(const std::string&)>& is_symbol) {
   if (ascii.find("K") == std::string::npos || is_symbol("K")) return ascii;
-  const auto name_char = [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
-  };
   std::string out;
   for (std::size_t i = 0; i < ascii.size(); ++i) {
-    std::size_t open = i + 1;
-    while (open < ascii.size() && ascii[open] == ' ') ++open;
-    const bool alone = ascii[i] == 'K' &&
-                       (i == 0 || !std::isalpha(static_cast<unsigned char>(ascii[i - 1]))) &&
-                       (i == 0 || ascii[i - 1] != '_') && open < ascii.size() &&
-                       ascii[open] == '(' && (open == i + 1 || !name_char(ascii[i + 1]));
+    // A K that ends no longer name ("4K" is a number's factor, "MK" a name), before a bracket.
+    bool alone = ascii[i] == 'K' && (i == 0 || !name_char(ascii[i - 1]) ||
+                                     std::isdigit(static_cast<unsigned char>(ascii[i - 1])));
+    if (alone) {
+      std::size_t open = i + 1;
+      while (open < ascii.size() && ascii[open] == ' ') ++open;
+      alone = open < ascii.size() && ascii[open] == '(';
+    }
     if (!alone) {
       out += ascii[i];
       continue;
