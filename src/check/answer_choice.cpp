@@ -42,19 +42,27 @@ std::string answer_meant(const Context& ctx, const std::string& part_id, const s
     }
   }
   // Judged against each: an answer that cannot be read as one of them (its shape or unit is
-  // another's) is no answer to it.
-  std::string right;
-  int rights = 0;
+  // another's) is no answer to it. Right for one only: that one. Right for none and read as a
+  // value of one only (its shape, and its dimension where it has one): that one, so that a wrong
+  // answer is judged, its mistake named, where only a name would be asked for.
+  std::string right, readable;
+  int rights = 0, readables = 0;
   for (const auto& a : part->answers) {
     try {
-      if (judge(ctx, a, text, options).correct) {
+      const Verdict v = judge(ctx, a, text, options);
+      if (!v.wrong_dimension) {
+        readable = a.name;
+        ++readables;
+      }
+      if (v.correct) {
         right = a.name;
         ++rights;
       }
     } catch (const InputError&) {
     }
   }
-  return rights == 1 ? right : "";
+  if (rights == 1) return right;
+  return rights == 0 && readables == 1 ? readable : "";
 }
 
 const Answer& answer_for(const Context& ctx, const std::string& part, const std::string& name,

@@ -12,9 +12,10 @@ namespace wobble::check {
 /// The name of the answer of part `part_id` that `text` is meant for: the one its label names
 /// (the left of its first '=' or ':', spelt as name_in_key reads names), else for Euler's
 /// equations written out the one whose entries are c₁, c₂, c₃ (right or wrong: the equations
-/// say what they are), else the only one it is judged right for. "" where the part has one answer
-/// or none, where no such part exists, or where neither decides (no label of an answer, right for
-/// none or for several): the caller's lookup then asks for a name.
+/// say what they are), else the only one it is judged right for, else (right for none) the only
+/// one it reads as a value of: its shape, and its dimension where it has a unit. "" where the
+/// part has one answer or none, where no such part exists, or where none of these decides (right
+/// for several, or for none and a value of several): the caller's lookup then asks for a name.
 std::string answer_meant(const Context& ctx, const std::string& part_id, const std::string& text,
                          const Options& options);
 

@@ -165,7 +165,8 @@ std::optional<Verdict> dimension_verdict(const Context& ctx, const Answer& a,
     return Verdict{false,
                    "incorrect: " + a.name + " has the wrong dimension",
                    {what + has + "; the answer is in " + (a.unit.empty() ? "no unit" : a.unit) +
-                    " (" + key_unit.dimension_words() + ")"}};
+                    " (" + key_unit.dimension_words() + ")"},
+                   true};
   }
   return std::nullopt;
 }

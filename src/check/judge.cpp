@@ -619,6 +619,7 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
     if (!p.unit->same_dimension(key_unit) || (p.unit->angle && pure_number_key)) {
       Verdict v;
       v.line = "incorrect: " + a.name + " has the wrong dimension";
+      v.wrong_dimension = true;
       v.feedback.push_back("you gave " + p.unit->text + " (" + p.unit->dimension_words() +
                            "); the answer is in " + (a.unit.empty() ? "no unit" : a.unit) + " (" +
                            key_unit.dimension_words() + ")");
@@ -852,6 +853,7 @@ Verdict square_in_odd_unit(const Context& ctx, const Answer& a, const std::strin
   for (int& power : squared.dim) power *= 2;
   Verdict v;
   v.line = "incorrect: the square of " + a.name + " has the wrong dimension";
+  v.wrong_dimension = true;
   v.feedback.push_back(fmt::format("you gave {} in {} ({}); the square of {} is in {} ({})", label,
                                    unit.text, unit.dimension_words(), a.name,
                                    a.unit.empty() ? "no unit" : "(" + a.unit + ")^2",

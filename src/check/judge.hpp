@@ -52,6 +52,9 @@ struct Verdict {
   bool correct = false;
   std::string line;                   ///< one line: "correct" or "incorrect: ..."
   std::vector<std::string> feedback;  ///< more lines
+  /// The answer's unit (or expression) has another dimension than the key's: read, but as no
+  /// value of this answer (answer_choice.hpp takes an answer whose dimension it has).
+  bool wrong_dimension = false;
 };
 
 struct Context {

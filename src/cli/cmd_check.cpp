@@ -194,8 +194,8 @@ int run_check(const CheckOptions& opt) {
   const sym::SymbolTable table = problem.symbol_table();
   const check::Context ctx{key, table, values};
   // "I₀", "I_0": an answer's name as the statement or a LaTeX handout writes it. A part of
-  // several answers with none named: the one the answer's label names, or the only one it is
-  // right for.
+  // several answers with none named: the one the answer's label names, the only one it is right
+  // for, or the only one it reads as a value of (check/answer_choice.hpp).
   const Answer& answer = check::answer_for(ctx, part, opt.name, typed, o, "part", "--name");
   const check::Verdict v = check::judge(ctx, answer, typed, o);
   fmt::print("{}\n", v.line);

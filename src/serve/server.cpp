@@ -259,8 +259,8 @@ struct Server::Impl {
     const Answer* a = nullptr;
     const check::Context ctx{e->key, e->table, e->values};
     try {
-      // No name for a part of several answers: the one the answer's label names, or the only
-      // one it is right for (check/answer_choice.hpp).
+      // No name for a part of several answers: the one the answer's label names, the only one
+      // it is right for, or the only one it reads as a value of (check/answer_choice.hpp).
       a = &check::answer_for(ctx, part_id, name, answer, {}, "part", "name");
     } catch (const AnswerNotFound& missing) {
       return send_error(res, 404, missing.what());

@@ -256,7 +256,8 @@ TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback
 }
 
 TEST_CASE(
-    "check: a part of several answers without --name, the answer's label or rightness decides") {
+    "check: a part of several answers without --name, the answer's label, rightness or reading "
+    "decides") {
   // asymmetric-top's part (a) asks for the coefficients of Euler's equations and dω/dt at 0.
   const auto judged = [](const std::string& answer) {
     return run_wobble({"check", "asymmetric-top", "a", "--answer", answer});
@@ -283,7 +284,19 @@ TEST_CASE(
       judged("dω₁/dt = -0.5 ω₂ ω₃, dω₂/dt = (2/3) ω₃ ω₁, dω₃/dt = -0.25 ω₁ ω₃");
   REQUIRE(wrong_products.exit_code == 1);
   REQUIRE_THAT(wrong_products.out, Catch::Contains("dω₃/dt = c₃ ω₁ ω₂, and yours has ω₁ ω₃"));
-  // Right for neither, and no label: the name is asked for, nothing judged.
+  // Right for neither, but a value of one only (dω/dt's unit): judged as that one.
+  const RunResult wrong_rates = judged("[1, 2, 3] rad/s^2");
+  REQUIRE(wrong_rates.exit_code == 1);
+  REQUIRE_THAT(wrong_rates.out, Catch::StartsWith("incorrect: dw_dt0\n"));
+  // The axes' matrix read by rows, labelled e₁ .. e₃ (no answer's name), for four-masses' part of
+  // moments and axes: only the axes read three vectors, and the mistake is named.
+  const RunResult rows = run_wobble(
+      {"check", "four-masses", "b", "--answer", "e1 = (1,0,1)/√2, e2 = (1,0,-1)/√2, e3 = (0,1,0)"});
+  REQUIRE(rows.exit_code == 1);
+  REQUIRE_THAT(rows.out, Catch::StartsWith("incorrect: principal_axes\n") &&
+                             Catch::Contains("these are the rows of the axes' matrix"));
+  // Right for neither, and a value of either (pure numbers, or no unit): the name is asked for,
+  // nothing judged.
   const RunResult neither = judged("[1, 2, 3]");
   REQUIRE(neither.exit_code == 2);
   REQUIRE(neither.out.empty());

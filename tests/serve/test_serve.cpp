@@ -186,15 +186,21 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
                  .get<std::string>(),
              StartsWith("answer, entry 1: cannot read expression") && !Contains("--answer"));
   // A part of several answers and no name: the answer's label names it, or it is right for one
-  // of them only; else the name is needed (here right for none, at the default values).
+  // of them only, or (right for none) a value of one only; else the name is needed.
   const json labelled =
       post_check(c, "flying-plate", {{"part", "a"}, {"answer", "I₀ = " + doubled}, {"variant", 5}});
   CHECK(labelled["verdict"] == "incorrect: I0");
   CHECK(post_check(c, "flying-plate",
                    {{"part", "a"}, {"answer", right}, {"variant", 5}})["verdict"] == "correct: I0");
-  CHECK_THAT(post_check(c, "flying-plate", {{"part", "a"}, {"answer", right}}, 404)["error"]
-                 .get<std::string>(),
-             Equals("name: part a has several answers; name one (I0, I)"));
+  // Variant 5's I₀ at the default values: wrong, and a number, so I₀'s (I is a matrix).
+  CHECK(post_check(c, "flying-plate", {{"part", "a"}, {"answer", right}})["verdict"] ==
+        "incorrect: I0");
+  // A vector of angular velocity is a value of Ω_body and of Ω_space alike.
+  CHECK_THAT(
+      post_check(c, "flying-plate", {{"part", "e"}, {"answer", "(1, 2, 3) rad/s"}}, 404)["error"]
+          .get<std::string>(),
+      Equals("name: part e has several answers; name one (Omega_body, Omega_space, "
+             "Omega_body_rate, Omega_space_rate)"));
   // Euler's equations, one coefficient wrong, are the coefficients' answer, and the view names
   // the entries as the question does (c₁ .. c₃; the body's components along e₁ .. e₃).
   const json equations = post_check(
