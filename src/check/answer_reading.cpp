@@ -230,15 +230,24 @@ std::string times_ten(const std::string& s) {
   return out;
 }
 
-// NumPy's "array([[10., 0., 0.], ...])" and SymPy's "Matrix([[10, 0, 0], ...])", as Python
-// shows a result: the list inside. Only around the whole answer, so no expression is touched.
-std::string without_python_wrapper(const std::string& s) {
+// NumPy's "array([[10., 0., 0.], ...])", "matrix([[..]])" and SymPy's "Matrix([[10, 0, 0],
+// ...])", as Python shows a result or a student writes one in an expression, `m*a**2*np.array(
+// [[..]])`: the bracketed list inside. Only a call of a list ('[' first inside), whose name no
+// letter, digit or '.' comes before ("myarray(" stays), so no expression is touched.
+std::string without_python_wrapper(std::string s) {
   static const std::vector<std::string> kWrappers{"np.array(",  "numpy.array(",  "array(",
+                                                  "np.matrix(", "numpy.matrix(", "matrix(",
                                                   "sp.Matrix(", "sympy.Matrix(", "Matrix("};
-  const std::string t = trim(s);
-  for (const auto& w : kWrappers) {
-    if (t.compare(0, w.size(), w) == 0 && matching(t, w.size() - 1) == t.size() - 1) {
-      return t.substr(w.size(), t.size() - w.size() - 1);
+  for (std::size_t at = 0; at < s.size(); ++at) {
+    if (at > 0 && (is_letter(s[at - 1]) || is_digit(s[at - 1]) || s[at - 1] == '.')) continue;
+    for (const auto& w : kWrappers) {
+      if (s.compare(at, w.size(), w) != 0) continue;
+      const std::size_t open = at + w.size() - 1, close = matching(s, open);
+      const std::size_t first = s.find_first_not_of(' ', open + 1);
+      if (close == std::string::npos || first == std::string::npos || s[first] != '[') continue;
+      s.erase(close, 1);
+      s.erase(at, w.size());
+      break;
     }
   }
   return s;
@@ -1503,6 +1512,20 @@ ReadAnswer read_whole(const std::string& typed, const sym::SymbolTable& table,
   return along;
 }
 
+// `item` of a list of vectors with a lone bare x, y or z, as the statements write e₁ = x, given
+// its hat ("−z" is "−ẑ"), where the letter is no symbol of the problem: alone in a list of
+// vectors it reads as nothing else. `item` itself otherwise.
+std::string lone_axis_hatted(const std::string& item, const sym::SymbolTable& table) {
+  const std::string t = trim(item);
+  const std::size_t sign = t.rfind("−", 0) == 0 ? std::string_view("−").size()
+                           : !t.empty() && (t[0] == '-' || t[0] == '+') ? 1
+                                                                        : 0;
+  const std::string letter = trim(t.substr(sign));
+  if (letter != "x" && letter != "y" && letter != "z") return item;
+  if (table.contains(letter)) return item;
+  return t.substr(0, sign) + letter + "\u0302";
+}
+
 // "(1, 0, 1)/√2, (1, 0, −1)/√2, (0, 1, 0)", "x̂ + ẑ, x̂ − ẑ, ŷ": a matrix's rows, as principal
 // axes are listed, each vector written as it reads alone (a factor outside its bracket, along
 // unit vectors), in one bracket or not (list_items, as the judge's listed axes). nullopt where
@@ -1515,7 +1538,7 @@ std::optional<ReadAnswer> rows_read_each(const std::string& typed, const sym::Sy
   for (std::size_t k = 0; k < items.size(); ++k) {
     ReadAnswer row;
     try {
-      row = read_whole(items[k], table, field);
+      row = read_whole(lone_axis_hatted(items[k], table), table, field);
     } catch (const InputError&) {
       return std::nullopt;
     }

@@ -1040,7 +1040,7 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // others zero, as the line says.
   if (a.value.shape == Value::Shape::vector && a.value.data.size() == 3 &&
       a.named_entries.empty() && a.kind != AnswerKind::principal_moments) {
-    if (const auto some = some_components(written)) {
+    if (const auto some = some_components(without_others_zero(written))) {
       Verdict v = judge_one(ctx, a, some->text, options);
       const std::vector<std::string> axes = entry_names(a);  // x y z, or the body's e₁ e₂ e₃
       std::vector<std::string> missing;
@@ -1055,7 +1055,8 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // Vectors labelled e1 = (..), .. are the axes: written as columns ("[..]^T"), or as the rows
   // of a list where one has a factor outside its bracket.
   const std::size_t entries = a.value.shape == Value::Shape::scalar ? 3 : a.value.data.size();
-  if (const auto components = labelled_components(written, kField, a.named_entries, entries)) {
+  if (const auto components =
+          labelled_components(without_others_zero(written), kField, a.named_entries, entries)) {
     return judge_one(ctx, a, components->text, options,
                      components->columns ? AxesLayout::columns : AxesLayout::rows);
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -429,6 +430,39 @@ int axis_of_label(std::string label) {
 }
 }  // namespace
 
+std::string without_others_zero(const std::string& text) {
+  const std::vector<std::string> items = top_level(text, ',');
+  if (items.size() < 2) return text;
+  std::vector<std::string> words(1);
+  for (const char c : ascii_lower(items.back())) {
+    if (c == ' ' || c == '=') {
+      if (!words.back().empty()) words.emplace_back();
+    } else {
+      words.back() += c;
+    }
+  }
+  if (words.back().empty()) words.pop_back();
+  if (words.size() < 2) return text;
+  static const std::set<std::string> kZero{"0", "zero", "vanish", "vanishes"};
+  static const std::set<std::string> kRest{"others", "other", "rest"};
+  static const std::set<std::string> kFiller{
+      "all", "the", "are", "is", "entries", "elements", "components", "products", "off-diagonal"};
+  if (!kZero.count(words.back())) return text;
+  bool rest = false;
+  for (std::size_t k = 0; k + 1 < words.size(); ++k) {
+    if (kRest.count(words[k])) {
+      rest = true;
+    } else if (!kFiller.count(words[k])) {
+      return text;
+    }
+  }
+  const bool labelled = std::any_of(items.begin(), items.end() - 1, [](const std::string& item) {
+    return item.find('=') != std::string::npos;
+  });
+  if (!rest || !labelled) return text;
+  return text.substr(0, text.rfind(','));
+}
+
 std::optional<SomeComponents> some_components(const std::string& text) {
   const std::vector<std::string> items = top_level(text, ',');
   if (items.size() > 2) return std::nullopt;
@@ -536,10 +570,24 @@ std::string in_units_of_written(const std::string& typed) {
   std::string t = trim(typed);
   const bool bracketed = !t.empty() && t.back() == ')';
   if (bracketed) t = trim(t.substr(0, t.size() - 1));
-  constexpr std::string_view kPhrase = "in units of ";
-  const std::size_t at = ascii_lower(t).rfind(kPhrase);
+  // "in units of X"; in brackets also "(in X)", "(times X)", "(× X)", "(all × X)", "(each
+  // times X)".
+  std::size_t at = ascii_lower(t).rfind("in units of ");
+  std::size_t phrase = std::string_view("in units of ").size();
+  if (bracketed && (at == std::string::npos || at == 0)) {
+    const std::size_t open = t.rfind('(');
+    const std::string inside = open == std::string::npos ? "" : ascii_lower(t.substr(open + 1));
+    for (const std::string_view factor :
+         {"in ", "times ", "× ", "×", "all times ", "all × ", "each times ", "each × "}) {
+      if (inside.compare(0, factor.size(), factor) == 0) {
+        at = open + 1;
+        phrase = factor.size();
+        break;
+      }
+    }
+  }
   if (at == std::string::npos || at == 0) return typed;
-  const std::string unit = trim(t.substr(at + kPhrase.size()));
+  const std::string unit = trim(t.substr(at + phrase));
   std::string before = trim(t.substr(0, at));
   if (bracketed) {
     if (before.empty() || before.back() != '(') return typed;
@@ -552,8 +600,10 @@ std::string in_units_of_written(const std::string& typed) {
   if (value.empty()) return typed;
   const std::string label = trim(before.substr(0, before.size() - sides.back().size()));
   // "303.6 days (in units of days)": a value with its unit already says it; the words are a
-  // remark.
-  if (!split_unit(value).second.empty()) return label + (label.empty() ? "" : " ") + value;
+  // remark. So is "(in SI)", "(in SI units)": a bare number is read in the key's unit, an SI one.
+  const std::string lower_unit = ascii_lower(unit);
+  if (!split_unit(value).second.empty() || lower_unit == "si" || lower_unit == "si units")
+    return label + (label.empty() ? "" : " ") + value;
   const bool one_bracket = opens(value.front()) && matching(value, 0) == value.size() - 1;
   // "(0.0737) * 100 J": a number is joined by '*', as a number beside a number is no product.
   const bool number = std::isdigit(static_cast<unsigned char>(unit[0])) != 0 || unit[0] == '.';

@@ -76,6 +76,12 @@ struct SomeComponents {
 };
 std::optional<SomeComponents> some_components(const std::string& text);
 
+/// `text`, a list of labelled components, without a last item that says the rest are zero:
+/// "I_xx = 10 m a², I_yz = m a², others 0" (also "the rest are zero", "all others = 0", "other
+/// entries vanish"), as the components left out are read as zero anyway. `text` itself where it
+/// ends otherwise, or where no item before it has a label ('=').
+std::string without_others_zero(const std::string& text);
+
 /// `typed` without its comments: each line up to a '#', or up to a '%' at its start or after a
 /// space, a tab or a ';' (MATLAB's and LaTeX's: "I0 = 7.2e-4; % kg m^2"; "50%" keeps its sign).
 /// No answer wobble reads has either.
@@ -83,7 +89,8 @@ std::string without_comments(const std::string& typed);
 
 /// "λ = (2.5, 3, 3.5) m a²" for "λ = 2.5, 3, 3.5 (in units of m a²)": a value given in units of an
 /// expression, in brackets or not, as that expression times the value after the last '=' (a list
-/// in brackets first). `typed` itself where it does not end so.
+/// in brackets first); in brackets also "(in m a²)", "(times m a²)", "(× m a²)", "(all × m a²)".
+/// `typed` itself where it does not end so.
 std::string in_units_of_written(const std::string& typed);
 
 /// `typed` without a remark in words after it, in brackets: "303.6 days" for "303.6 days (Euler's

@@ -299,6 +299,21 @@ TEST_CASE("components given one by one with their labels") {
   const Fixture masses("four-masses");  // I_xy = −m a²/2, told once
   REQUIRE(masses.check("I", "Ixx = Iyy = Izz = 3 m a^2, Ixy = -m a^2/2").correct);
   REQUIRE_FALSE(masses.check("I", "Ixx = Iyy = Izz = 3 m a^2, Ixz = -m a^2/2").correct);
+  // A last item saying the rest are zero, as they are read anyway.
+  for (const char* same : {"Ixx = Iyy = Izz = 3 m a^2, Ixy = -m a^2/2, others 0",
+                           "I_xx = I_yy = I_zz = 3ma², I_xy = −ma²/2, the rest are zero",
+                           "Ixx = Iyy = Izz = 3ma^2, Ixy = -ma^2/2, all other products = 0"}) {
+    INFO(same);
+    REQUIRE(masses.check("I", same).correct);
+  }
+  REQUIRE_FALSE(masses.check("I", "Ixx = Iyy = Izz = 3 m a^2, Ixz = -m a^2/2, others 0").correct);
+  REQUIRE(cone.check("center_of_mass", "z = -3h/4, others 0").correct);
+  using wobble::check::without_others_zero;
+  CHECK(without_others_zero("x = 1, others 0") == "x = 1");
+  // Not without a label before it, nor where the words say more than that the rest are zero.
+  CHECK(without_others_zero("1, others 0") == "1, others 0");
+  CHECK(without_others_zero("x = 1, others 2") == "x = 1, others 2");
+  CHECK(without_others_zero("x = 1, y equals 0") == "x = 1, y equals 0");
 
   // A pair: the racket spun about e₂ has (Ω₃, Ω₁) in the key, (Ω₁, Ω₂) as the lecture writes
   // the pair about e₃ and the question asks for it; both name the entries, in any order.
@@ -479,6 +494,26 @@ TEST_CASE("an answer copied from an equation editor: styled letters, invisible o
   REQUIRE(racket.check("dw_dt0", lunate).correct);
 }
 
+TEST_CASE("a program's array or matrix inside an expression, times the problem's symbols") {
+  const Fixture taylor("taylor-10-35");  // I = m a² [[10, 0, 0], [0, 6, 1], [0, 1, 6]]
+  for (const char* same : {"m*a**2*np.array([[10, 0, 0], [0, 6, 1], [0, 1, 6]])",
+                           "np.array([[10,0,0],[0,6,1],[0,1,6]])*m*a**2",
+                           "m*a**2 * np.matrix([[10,0,0],[0,6,1],[0,1,6]])",
+                           "matrix([[10, 0, 0], [0, 6, 1], [0, 1, 6]])",
+                           "Matrix([[10, 0, 0], [0, 6, 1], [0, 1, 6]])*m*a**2",
+                           "m*a**2*sp.Matrix([[10, 0, 0], [0, 6, 1], [0, 1, 6]])"}) {
+    INFO(same);
+    REQUIRE(taylor.check("I", same).correct);
+  }
+  REQUIRE_FALSE(taylor.check("I", "m*a**2*np.array([[10, 0, 0], [0, 6, -1], [0, -1, 6]])").correct);
+  REQUIRE(taylor.check("principal_moments", "m*a**2*np.array([5, 7, 10])").correct);
+  // A name that merely ends in one ("myarray(") is no container, nor a call of no list.
+  REQUIRE_THROWS_WITH(taylor.check("I", "m*a**2*myarray([[10, 0, 0], [0, 6, 1], [0, 1, 6]])"),
+                      Catch::Contains("myarray"));
+  REQUIRE_THROWS_WITH(taylor.check("principal_moments", "array(5)*m*a**2"),
+                      Catch::Contains("array"));
+}
+
 TEST_CASE("results as programs print them: NumPy 2's scalars, Out[n] labels") {
   const Fixture box("box-corner");
   const auto& c = box.answer("center_of_mass").value.data;  // metres
@@ -628,6 +663,15 @@ TEST_CASE("a factor before a sum along unit vectors, and the statement's bare x,
   REQUIRE_THROWS_WITH(plate.check("Omega_space", "19.31851653 z"), Catch::Contains("unit 'z'"));
   REQUIRE_THROWS_WITH(plate.check("I0", "m x R^2/4"), Catch::Contains("undefined symbol 'x'"));
   REQUIRE(plate.check("I0", "7.2 x 10^-4").correct);
+  // In a list of axes a lone x, y or z is that axis, as the statements write e₁ = x; signed, or
+  // after a label. The list still judges which vectors are axes.
+  const Fixture masses("four-masses");  // axes (x̂ + ŷ)/√2, ẑ, (x̂ − ŷ)/√2
+  for (const char* right : {"z, (x + y)/√2, (x − y)/√2", "(x + y)/√2, (x - y)/√2, -z",
+                            "e1 = (x+y)/√2, e2 = −z, e3 = (x−y)/√2", "[x + y, z, x - y]"}) {
+    INFO(right);
+    REQUIRE(masses.check("principal_axes", right).correct);
+  }
+  REQUIRE_FALSE(masses.check("principal_axes", "x, y, z").correct);
 }
 
 TEST_CASE("components along the Euler angles' primed basis, e₁′, e₂′, e₃′, read as a vector") {
@@ -1899,7 +1943,9 @@ TEST_CASE("a least or greatest value given as its inequality is judged by its bo
 TEST_CASE("a value given in units of an expression is that expression times it") {
   const Fixture cube("four-masses");  // moments (5/2, 3, 7/2) m a², I = m a² [[3, -1/2, 0], ..]
   for (const char* same : {"λ = 2.5, 3, 3.5 (in units of ma²)", "2.5, 3, 3.5 in units of m a^2",
-                           "(2.5, 3, 3.5) (In units of m*a^2)", "[2.5 3 3.5] in units of ma^2"}) {
+                           "(2.5, 3, 3.5) (In units of m*a^2)", "[2.5 3 3.5] in units of ma^2",
+                           "λ = 2.5, 3, 3.5 (× ma²)", "2.5, 3, 3.5 (times m a^2)",
+                           "2.5, 3, 3.5 (all × ma²)", "2.5, 3, 3.5 (in ma^2)"}) {
     INFO(same);
     const auto v = cube.check("principal_moments", same);
     REQUIRE(v.correct);
@@ -1914,6 +1960,12 @@ TEST_CASE("a value given in units of an expression is that expression times it")
   // A value with its unit already: the words are a remark.
   CHECK(check::in_units_of_written("303.6 days (in units of days)") == "303.6 days");
   REQUIRE(top.check("energy", "7.371 J (in units of J)").correct);
+  // "(in SI)": a bare number is read in the key's unit, which is SI; the words are a remark.
+  REQUIRE(cube.check("principal_moments", "2.5, 3, 3.5 (in SI)").correct);
+  REQUIRE_FALSE(cube.check("principal_moments", "2.5, 3, 3.6 (in SI units)").correct);
+  REQUIRE(top.check("energy", "7.371 (in J)").correct);
+  // Only in brackets is "times" or "×" the words of a unit: "2.5 × 10" stays a product.
+  CHECK(check::in_units_of_written("2.5 times m a^2") == "2.5 times m a^2");
 }
 
 TEST_CASE("a range, as the nutation's limits are written, gives each bound its end") {
