@@ -1057,8 +1057,10 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   const std::size_t entries = a.value.shape == Value::Shape::scalar ? 3 : a.value.data.size();
   if (const auto components =
           labelled_components(without_others_zero(written), kField, a.named_entries, entries)) {
-    return judge_one(ctx, a, components->text, options,
-                     components->columns ? AxesLayout::columns : AxesLayout::rows);
+    Verdict v = judge_one(ctx, a, components->text, options,
+                          components->columns ? AxesLayout::columns : AxesLayout::rows);
+    v.feedback.insert(v.feedback.end(), components->notes.begin(), components->notes.end());
+    return v;
   }
   auto parts = sides(approximations_as_equal(written), a.name);
   // "E = M R² ψ̇₀²/4 + M g l cos θ₀ = 7.37 J", "E = T + V = 7.37 J": a label of the student's own

@@ -1,5 +1,7 @@
 #include "check/written_forms.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -351,13 +353,20 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
   // One item only where its labels are all the components: "I1 = I2 = I3 = 0.006" (a sphere).
   const bool one_chain = items.size() == 1;
   if (one_chain && top_level(text, '=').size() < 3) return std::nullopt;
-  std::vector<std::string> labels, values;
+  std::vector<std::string> labels, values, notes;
   for (const auto& item : items) {
     const std::vector<std::string> sides = top_level(item, '=');
     if (sides.size() < 2 || sides[0].empty() || sides.back().empty()) return std::nullopt;
-    // "I₁ = I₂ = 3M(4R² + h²)/80": equal components told once, as a degenerate pair is.
-    for (std::size_t k = 0; k + 1 < sides.size(); ++k) {
-      if (sides.size() > 2 && !label_like(sides[k])) return std::nullopt;
+    // "I₁ = I₂ = 3M(4R² + h²)/80": equal components told once, as a degenerate pair is. After
+    // the labels, formulas before the value, "I₃ = I₁ + I₂ = 5.5" (the plane body's
+    // perpendicular axes), in a list of several items: read past, said so.
+    std::size_t named = sides.size() == 2 ? 1 : 0;  // one label: as it is written
+    while (named + 1 < sides.size() && label_like(sides[named])) ++named;
+    if (named == 0 || (named + 1 < sides.size() && (one_chain || spaced))) return std::nullopt;
+    for (std::size_t k = named; k + 1 < sides.size(); ++k)
+      notes.push_back(fmt::format("{} (before {}'s value) is not judged: its value is",
+                                  trim(sides[k]), trim(sides[0])));
+    for (std::size_t k = 0; k < named; ++k) {
       labels.push_back(name_spelling(sides[k]));
       values.push_back(sides.back());
     }
@@ -377,7 +386,8 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
     }
   }
   if (entries == 9) {  // a matrix: its entries by two indices
-    if (auto tensor = tensor_entries(labels, values)) return LabelledComponents{*tensor + unit};
+    if (auto tensor = tensor_entries(labels, values))
+      return LabelledComponents{*tensor + unit, false, notes};
   }
   const std::optional<std::vector<std::size_t>> slots =
       component_slots(labels, entry_names, entries);
@@ -403,7 +413,7 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
     const std::string& v = in_order[k];
     vector += (k ? ", " : "") + (columns ? "[" + v.substr(1, v.size() - 2) + "]" : v);
   }
-  return LabelledComponents{vector + (columns ? "]^T" : "]") + unit, columns};
+  return LabelledComponents{vector + (columns ? "]^T" : "]") + unit, columns, notes};
 }
 
 namespace {

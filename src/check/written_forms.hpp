@@ -45,6 +45,9 @@ std::string diagonals_written_out(const std::string& ascii, const std::string& f
 struct LabelledComponents {
   std::string text;
   bool columns = false;
+  /// A formula between a label and its value, "I₃ = I₁ + I₂ = 5.5": read past, not judged, and
+  /// said so ("I₁ + I₂ (before I₃'s value) is not judged: its value is").
+  std::vector<std::string> notes;
 };
 
 /// "[0.5, 1, 1.5]" for "x = 0.5, y = 1, z = 1.5" (the text as typed, Unicode or not), and equal

@@ -308,6 +308,19 @@ TEST_CASE("components given one by one with their labels") {
   }
   REQUIRE_FALSE(masses.check("I", "Ixx = Iyy = Izz = 3 m a^2, Ixz = -m a^2/2, others 0").correct);
   REQUIRE(cone.check("center_of_mass", "z = -3h/4, others 0").correct);
+  // A formula between a label and its value, the plane body's I₃ = I₁ + I₂: read past, and the
+  // feedback says it was not judged.
+  const Fixture molecule("three-atom-molecule");  // moments about the origin, a plane body
+  const auto& planar = molecule.answer("principal_moments").value.data;
+  const auto listed = [&](double third) {
+    return fmt::format("I₁ = {:.6g}, I₂ = {:.6g}, I₃ = I₁ + I₂ = {:.6g} kg m²", planar[0],
+                       planar[1], third);
+  };
+  const auto past = molecule.check("principal_moments", listed(planar[2]));
+  REQUIRE(past.correct);
+  REQUIRE_THAT(past.feedback, Catch::VectorContains(std::string(
+                                  "I₁ + I₂ (before I₃'s value) is not judged: its value is")));
+  REQUIRE_FALSE(molecule.check("principal_moments", listed(planar[2] * 1.05)).correct);
   using wobble::check::without_others_zero;
   CHECK(without_others_zero("x = 1, others 0") == "x = 1");
   // Not without a label before it, nor where the words say more than that the rest are zero.
