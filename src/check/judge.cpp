@@ -693,6 +693,73 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
   return v;
 }
 
+// The answer `name` names where `a` may be written in terms of it, as question (a) of the
+// rectangular solid writes I = I₀ diag(..) and t_max is π/Ω_space_rate: a number with a closed
+// form, of a part before a's or of a's own, not `a` itself; else nullptr.
+const Answer* referable_answer(const Context& ctx, const Answer& a, const std::string& name) {
+  const std::string named = name_in_key(ctx.key, name);
+  for (const auto& part : ctx.key.parts) {
+    bool own = false;
+    const Answer* found = nullptr;
+    for (const auto& other : part.answers) {
+      if (&other == &a) {
+        own = true;
+      } else if (other.name == named) {
+        found = &other;
+      }
+    }
+    if (found != nullptr) {
+      const bool number = found->value.shape == Value::Shape::scalar && !found->symbolic.empty();
+      return number ? found : nullptr;
+    }
+    if (own) return nullptr;  // a's part is the last that may hold it
+  }
+  return nullptr;
+}
+
+// `text` with another answer's name, the one the reader's `message` found undefined, written
+// as the key's closed form in brackets, and the line that says so; nullopt where that name is
+// no referable_answer or the text does not spell it as a name of its own (LaTeX is left alone).
+struct Referenced {
+  std::string text, note;
+};
+std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
+                                            const std::string& text, const std::string& message) {
+  const std::string name = undefined_name(message);
+  const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
+  if (r == nullptr || looks_like_latex(text)) return std::nullopt;
+  const std::string ascii = sym::to_ascii(text);
+  std::string out;
+  bool found = false;
+  for (std::size_t i = 0; i < ascii.size();) {
+    // A name starts at a letter after no letter, '_' or '.' ("2I0" is 2 times I0).
+    const bool starts = std::isalpha(static_cast<unsigned char>(ascii[i])) &&
+                        (i == 0 || !(std::isalpha(static_cast<unsigned char>(ascii[i - 1])) ||
+                                     ascii[i - 1] == '_' || ascii[i - 1] == '.'));
+    if (!starts) {
+      out += ascii[i++];
+      continue;
+    }
+    std::size_t end = i;
+    while (end < ascii.size() &&
+           (std::isalnum(static_cast<unsigned char>(ascii[end])) || ascii[end] == '_'))
+      ++end;
+    const std::string word = ascii.substr(i, end - i);
+    const bool same = name_in_key(ctx.key, word) == r->name;
+    out += same ? "(" + r->symbolic + ")" : word;
+    found = found || same;
+    i = end;
+  }
+  if (!found) return std::nullopt;
+  const auto part = std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
+    return std::any_of(p.answers.begin(), p.answers.end(),
+                       [&](const Answer& x) { return &x == r; });
+  });
+  return Referenced{out, fmt::format("read with {0} = {2}, the key's answer to part ({1}): "
+                                     "right as far as your {0} is",
+                                     r->name, part->id, sym::to_unicode(r->symbolic))};
+}
+
 // judge_as_written, and where a wrong answer calls EllipticK or EllipticE, whether it is right
 // with their arguments read as the parameter m = k² (Mathematica's and SciPy's): then that is
 // the one line of feedback.
@@ -727,6 +794,29 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
     break;
   }
   return v;
+}
+
+// judge_one for the whole answer or the value after a label: an answer in terms of an earlier
+// one, "I₀ diag(2, 2, 1)", "π/Ω_space_rate", is read with the key's closed form for it
+// (answer_referenced), and the feedback says so. Not for a side that may be a label or an
+// inequality's variable ("cos θ_min = ..", "118.8 rad/s ≤ ω₃"): there a name is the student's.
+Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& text,
+                        const Options& options) {
+  try {
+    return judge_one(ctx, a, text, options);
+  } catch (const InputError& e) {
+    const auto referenced = answer_referenced(ctx, a, text, e.what());
+    if (!referenced) throw;
+    const std::exception_ptr refusal = std::current_exception();
+    Verdict v;
+    try {
+      v = judge_referring(ctx, a, referenced->text, options);
+    } catch (const InputError&) {
+      std::rethrow_exception(refusal);  // the name as it was refused, with its hint
+    }
+    v.feedback.push_back(referenced->note);
+    return v;
+  }
 }
 
 // Why a side that could not be read is a label of the student's own, "T is no symbol here", or
@@ -1069,7 +1159,7 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // sides are.
   if (parts.size() > kMostSides && is_own_label(ctx, a, parts[0], options))
     parts.erase(parts.begin());
-  if (parts.size() == 1) return judge_one(ctx, a, parts[0], options);
+  if (parts.size() == 1) return judge_referring(ctx, a, parts[0], options);
   // "cos θ_max = 0.7109": the cosine of an angle asked for, as u = cos θ is found first.
   if (const std::string f = function_of_answer(parts[0], a); parts.size() == 2 && !f.empty()) {
     Verdict v = judge_one(ctx, a, "a" + f + "(" + trim(parts[1]) + ")", options);
@@ -1115,14 +1205,14 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
       // no symbol of the problem), where a pasted key line has the answer's name. The answer is
       // what follows it.
       if (k == 0 && parts.size() == 2 && is_one_name(parts[0])) {
-        return judge_one(ctx, a, parts[1], options);
+        return judge_referring(ctx, a, parts[1], options);
       }
       // "T/2 = 1.91 s": a formula of the student's own in names the problem lacks labels the
       // value; that side cannot be judged, and the verdict says so.
       if (parts.size() != 2) throw;
       const std::string reason = label_reason(ctx, a, parts[k], e.what(), options);
       if (k == 0 && !reason.empty()) {
-        Verdict label = judge_one(ctx, a, parts[1], options);
+        Verdict label = judge_referring(ctx, a, parts[1], options);
         label.feedback.push_back(
             fmt::format("the side \"{}\" of your '=' is taken as a label, not judged: {}",
                         trim(parts[0]), reason));

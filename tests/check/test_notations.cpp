@@ -704,20 +704,42 @@ TEST_CASE("components along the Euler angles' primed basis, e₁′, e₂′, e�
                       Catch::Contains("ẑ, ê₂′, ê₃ mix bases"));
 }
 
-TEST_CASE("an answer's name in an answer is no symbol, and the message says whose it is") {
-  // Question (a) writes I = I₀ diag(…): a student answers I so, with part (a)'s I₀.
+TEST_CASE("an earlier answer's name in an answer is its closed form, said; others are refused") {
+  // Question (a) writes I = I₀ diag(…): a student answers I so, with part (a)'s I₀, read as the
+  // key's I₀ and said so.
   const Fixture plate("flying-plate");
-  REQUIRE_THROWS_WITH(plate.check("I", "I₀ diag(1, 1, 2)"),
-                      Catch::Contains("I0 is the answer to part (a)"));
+  const std::string i0_note =
+      "read with I0 = m·R²/4, the key's answer to part (a): right as far as your I0 is";
+  for (const char* same : {"I₀ diag(1, 1, 2)", "I = I₀ diag(1, 1, 2)", "I_0*diag(1,1,2)",
+                           "diag(1, 1, 2)I₀", "[[I0, 0, 0], [0, I0, 0], [0, 0, 2I0]]"}) {
+    INFO(same);
+    const auto v = plate.check("I", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{i0_note});
+  }
+  const auto doubled = plate.check("I", "I₀ diag(2, 2, 4)");
+  REQUIRE_FALSE(doubled.correct);
+  REQUIRE_THAT(doubled.feedback.back(), Catch::Equals(i0_note));
+  // t_max in terms of part (e)'s rate, as half its period.
+  const auto half = plate.check("t_max", "π/Ω_space_rate");
+  REQUIRE(half.correct);
+  REQUIRE_THAT(half.feedback.back(), Catch::StartsWith("read with Omega_space_rate = ω·√("));
+  REQUIRE_FALSE(plate.check("t_max", "2π/Omega_space_rate").correct);
+  // Not a vector (no closed form to put in a product), not a later part's answer, not the answer
+  // itself: refused with whose name it is.
   REQUIRE_THROWS_WITH(plate.check("L0_space", "L0_body"),
                       Catch::Contains("L0_body is the answer to part (b)"));
+  REQUIRE_THROWS_WITH(plate.check("Omega_space_rate", "2 t_max/π"),
+                      Catch::Contains("t_max is the answer to part (h)"));
+  REQUIRE_THROWS_WITH(plate.check("t_max", "t_max"),
+                      Catch::Contains("t_max is the answer to part (h)"));
   // A Greek subscript after '_' belongs to the name: p_ψ is the heavy top's p_psi, not "p_".
   const Fixture top("heavy-top");
   for (const char* with_other_answer : {"p_ψ cos θ₀", "p_ψ·cos(θ₀)", "p_psi cos θ₀"}) {
     INFO(with_other_answer);
-    REQUIRE_THROWS_WITH(top.check("p_phi", with_other_answer),
-                        Catch::Contains("undefined symbol 'p_psi'") &&
-                            Catch::Contains("p_psi is the answer to part (a)"));
+    const auto v = top.check("p_phi", with_other_answer);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.feedback.back(), Catch::StartsWith("read with p_psi = M·R²·ψ̇0/2"));
   }
   // A name that is no answer gets no such line.
   REQUIRE_THROWS_WITH(plate.check("I0", "M R^2/4"), !Catch::Contains("is the answer to"));
@@ -873,13 +895,16 @@ TEST_CASE("where a number is asked for, a bare k is a name of the student's own,
       "period", "4K(k)/λ = " + format_number(top.answer("period").value.data.at(0) * 1.1) + " s");
   REQUIRE_FALSE(wrong.correct);
   REQUIRE_THAT(wrong.feedback.at(0), Catch::Contains("off by 10%"));
-  // Alone, such a k is refused as a name, said to be part (c)'s answer: no "unit vectors" line.
-  REQUIRE_THROWS_WITH(top.check("kc2", "1 - k^2"),
-                      Catch::Contains("undefined symbol 'k'") &&
-                          Catch::Contains("k is the answer to part (c)") &&
-                          !Catch::Contains("unit vectors"));
-  REQUIRE_THROWS_WITH(top.check("k2", "k²"),
-                      Catch::Contains("undefined symbol 'k'") && !Catch::Contains("3-vector"));
+  // Alone, such a k is part (c)'s own answer k, the key's closed form read for it (and said):
+  // no "unit vectors" line, no "3-vector".
+  for (const auto& [name, typed] :
+       std::vector<std::pair<std::string, std::string>>{{"kc2", "1 - k^2"}, {"k2", "k²"}}) {
+    INFO(typed);
+    const auto v = top.check(name, typed);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.feedback.back(), Catch::StartsWith("read with k = √("));
+  }
+  REQUIRE_FALSE(top.check("kc2", "1 + k^2").correct);
   // Where a vector is asked for, i, j and k are still unit vectors, and a sum along them that
   // does not read is said so.
   REQUIRE(top.check("dw_dt0", "-0.5 i + j - 0.015 k").correct);
