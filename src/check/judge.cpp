@@ -138,8 +138,13 @@ std::string definition_in_text(const Key& key, const std::string& name) {
       if (close == std::string::npos) break;
       const std::string math = text->substr(open + 1, close - open - 1);
       const std::size_t equals = math.find('=');
-      if (equals != std::string::npos && !math.empty() &&
-          name_spelling(math.substr(0, equals)) == spelling)
+      // "$\theta = 0$" in "what happens at θ = 0?" is a case, not a definition: the right side
+      // of one has a letter.
+      const bool formula =
+          equals != std::string::npos &&
+          std::any_of(math.begin() + static_cast<std::ptrdiff_t>(equals), math.end(),
+                      [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; });
+      if (formula && name_spelling(math.substr(0, equals)) == spelling)
         return math_to_unicode(math);
       open = text->find('$', close + 1);
     }

@@ -1021,6 +1021,10 @@ TEST_CASE("a name the statement defines is named with its definition, to be writ
   REQUIRE(earth.check("Omega_body_rate", "(C − C(1 − H))/(C(1 − H)) ω cos α").correct);
   // A name no math of the statement defines gets no such line.
   REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "B ω"), !Catch::Contains("defines"));
+  // Nor a case the text names: "what happens at $\theta = 0$" defines no θ.
+  const Fixture phy711("euler-angles-phy711");
+  REQUIRE_THROWS_WITH(phy711.check("angles_phy711", "(φ, θ, ψ)"),
+                      Catch::Contains("undefined symbol") && !Catch::Contains("defines"));
 }
 
 TEST_CASE("a rate in Lagrange's notation, a prime after the angle, is the problem's rate") {
