@@ -824,6 +824,19 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
   }
 }
 
+// judge_referring's verdict on `side`, before an '=', where it is right and refers to an
+// earlier answer (not one name alone, which is a label); else nullopt, and the side is a label.
+std::optional<Verdict> side_referring(const Context& ctx, const Answer& a, const std::string& side,
+                                      const Options& options) {
+  if (is_one_name(side)) return std::nullopt;
+  try {
+    Verdict v = judge_referring(ctx, a, side, options);
+    if (v.correct) return v;
+  } catch (const InputError&) {
+  }
+  return std::nullopt;
+}
+
 // Why a side that could not be read is a label of the student's own, "T is no symbol here", or
 // "" where it is no label: a name the problem lacks ("T/2"), a function it lacks ("4K(k)/λ",
 // K for the complete integral), or either once primes are taken off ("k′²", k′ the
@@ -1217,6 +1230,18 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
       if (parts.size() != 2) throw;
       const std::string reason = label_reason(ctx, a, parts[k], e.what(), options);
       if (k == 0 && !reason.empty()) {
+        // "2π/Ω_body_rate = 303.6 days": a formula in an earlier answer's name, right as the
+        // key's closed form reads in, is judged as a side (said so), not taken as a label.
+        if (const auto formula = side_referring(ctx, a, parts[0], options)) {
+          Verdict value = judge_one(ctx, a, parts[1], options);
+          if (!value.correct) {
+            value.feedback.insert(value.feedback.begin(),
+                                  "the side \"" + trim(parts[1]) + "\" of your '='");
+          }
+          value.feedback.insert(value.feedback.end(), formula->feedback.begin(),
+                                formula->feedback.end());
+          return value;
+        }
         Verdict label = judge_referring(ctx, a, parts[1], options);
         label.feedback.push_back(
             fmt::format("the side \"{}\" of your '=' is taken as a label, not judged: {}",

@@ -725,6 +725,17 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
   REQUIRE(half.correct);
   REQUIRE_THAT(half.feedback.back(), Catch::StartsWith("read with Omega_space_rate = ω·√("));
   REQUIRE_FALSE(plate.check("t_max", "2π/Omega_space_rate").correct);
+  // Before an '=' and a value, such a formula is a side, judged, where it is right; else a label.
+  const std::string t_max = fmt::format("{:.6g} s", plate.answer("t_max").value.data.at(0));
+  const auto both = plate.check("t_max", "π/Ω_space_rate = " + t_max);
+  REQUIRE(both.correct);
+  REQUIRE(both.feedback.size() == 1);
+  REQUIRE_THAT(both.feedback[0], Catch::StartsWith("read with Omega_space_rate"));
+  const auto value_wrong = plate.check("t_max", "π/Ω_space_rate = 0.2 s");
+  REQUIRE_FALSE(value_wrong.correct);
+  REQUIRE(value_wrong.feedback.at(0) == "the side \"0.2 s\" of your '='");
+  REQUIRE_THAT(plate.check("t_max", "2π/Ω_space_rate = " + t_max).feedback.back(),
+               Catch::Contains("taken as a label"));
   // Not a vector (no closed form to put in a product), not a later part's answer, not the answer
   // itself: refused with whose name it is.
   REQUIRE_THROWS_WITH(plate.check("L0_space", "L0_body"),
@@ -848,13 +859,21 @@ TEST_CASE("where a number is asked for, a bare k is a name of the student's own,
     return format_number(top.answer(name).value.data.at(0));
   };
   const std::string kc2 = value("kc2");
-  for (const std::string label : {"k'^2", "k′²", "1 − k²", "1 - k^2"}) {
+  for (const std::string label : {"k'^2", "k′²"}) {
     INFO(label);
     const auto v = top.check("kc2", label + " = " + kc2);
     REQUIRE(v.correct);
     REQUIRE(v.feedback == std::vector<std::string>{"the side \"" + label +
                                                    "\" of your '=' is taken as a label, not "
                                                    "judged: k is no symbol here"});
+  }
+  // 1 − k², in the same part's k, is a side: judged with the key's k, and said so.
+  for (const std::string side : {"1 − k²", "1 - k^2"}) {
+    INFO(side);
+    const auto v = top.check("kc2", side + " = " + kc2);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback.size() == 1);
+    REQUIRE_THAT(v.feedback[0], Catch::StartsWith("read with k = √("));
   }
   REQUIRE(top.check("k2", "k² = " + value("k2")).correct);
   // Which answer a labelled value is, where it is another part's.
