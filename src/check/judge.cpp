@@ -1057,8 +1057,9 @@ std::string written_answer(const Context& ctx, const std::string& text) {
   };
   // "eigenvalues: 0.569, ..", "I1: 0.569, I2: ..": labels before a ':', as one writes an answer.
   // "2.5, 3, 3.5 (in units of m a²)": the value times the expression it is given in units of.
-  return without_colon_labels(without_output_label(without_math_delimiters(
-      without_remark(in_units_of_written(without_comments(text)), known_word))));
+  // "{{E -> 7.371}}": Mathematica's rules, as Solve gives them, are equations.
+  return without_colon_labels(without_output_label(without_math_delimiters(without_remark(
+      in_units_of_written(rules_as_equations(without_comments(text))), known_word))));
 }
 
 // The answer judged; where right, the bracket's value too, which must be right as well (a

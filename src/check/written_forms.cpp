@@ -440,6 +440,29 @@ int axis_of_label(std::string label) {
 }
 }  // namespace
 
+std::string rules_as_equations(const std::string& text) {
+  std::string t = trim(text);
+  if (t.find("->") == std::string::npos && t.find("→") == std::string::npos) return text;
+  // Solve's answer: a list of solutions, each a list of rules.
+  while (t.size() >= 2 && t.front() == '{' && matching(t, 0) == t.size() - 1)
+    t = trim(t.substr(1, t.size() - 2));
+  std::string out;
+  for (const std::string& item : top_level(t, ',')) {
+    std::size_t at = item.find("->"), width = 2;
+    if (const std::size_t unicode = item.find("→"); unicode < at) {
+      at = unicode;
+      width = std::string_view("→").size();
+    }
+    if (at == std::string::npos) return text;
+    const std::string left = trim(item.substr(0, at)), right = trim(item.substr(at + width));
+    if (left.empty() || right.empty() || right.find("->") != std::string::npos ||
+        right.find("→") != std::string::npos)
+      return text;
+    out += (out.empty() ? "" : ", ") + left + " = " + right;
+  }
+  return out;
+}
+
 std::string without_others_zero(const std::string& text) {
   const std::vector<std::string> items = top_level(text, ',');
   if (items.size() < 2) return text;

@@ -85,6 +85,11 @@ std::optional<SomeComponents> some_components(const std::string& text);
 /// ends otherwise, or where no item before it has a label ('=').
 std::string without_others_zero(const std::string& text);
 
+/// Mathematica's rules as equations: "E -> 7.371" and Solve's "{{E -> 7.371}}" as "E = 7.371",
+/// "{a -> 1, b -> 2}" as "a = 1, b = 2" ("→" as "->"), so that a label reads as after '='.
+/// `text` itself where it is no list of rules, each one arrow between two sides.
+std::string rules_as_equations(const std::string& text);
+
 /// `typed` without its comments: each line up to a '#', or up to a '%' at its start or after a
 /// space, a tab or a ';' (MATLAB's and LaTeX's: "I0 = 7.2e-4; % kg m^2"; "50%" keeps its sign).
 /// No answer wobble reads has either.

@@ -527,6 +527,26 @@ TEST_CASE("a program's array or matrix inside an expression, times the problem's
                       Catch::Contains("array"));
 }
 
+TEST_CASE("Mathematica's rules, as Solve gives them, are equations") {
+  const Fixture top("heavy-top");
+  const std::string energy = fmt::format("{:.6g}", top.answer("energy").value.data.at(0));
+  for (const std::string& same : {"E -> " + energy, "{{E -> " + energy + "}}",
+                                  "{E -> " + energy + " J}", "E → " + energy + " J"}) {
+    INFO(same);
+    REQUIRE(top.check("energy", same).correct);
+  }
+  REQUIRE_FALSE(top.check("energy", "{{E -> 8}}").correct);
+  const auto several = top.check("energy", "{{energy -> " + energy + ", theta_min -> 0.5}}");
+  REQUIRE(several.correct);
+  REQUIRE_THAT(several.feedback.at(0), Catch::StartsWith("theta_min = 0.5 not judged here"));
+  using wobble::check::rules_as_equations;
+  CHECK(rules_as_equations("{{a -> 1, b -> 2}}") == "a = 1, b = 2");
+  // Not a list with an item that is no rule, an arrow with an empty side, or two arrows.
+  CHECK(rules_as_equations("{a -> 1, 2}") == "{a -> 1, 2}");
+  CHECK(rules_as_equations("a -> ") == "a -> ");
+  CHECK(rules_as_equations("a -> b -> 1") == "a -> b -> 1");
+}
+
 TEST_CASE("results as programs print them: NumPy 2's scalars, Out[n] labels") {
   const Fixture box("box-corner");
   const auto& c = box.answer("center_of_mass").value.data;  // metres
@@ -2061,7 +2081,10 @@ TEST_CASE("a range, as the nutation's limits are written, gives each bound its e
     REQUIRE_THROWS_WITH(top.check("energy", compared),
                         Catch::Contains("energy is a value, not a bound"));
   }
-  REQUIRE_THROWS_WITH(top.check("energy", "E -> 8 J"), !Catch::Contains("not a bound"));
+  // "E -> 8 J", a Mathematica rule, is the equation E = 8 J: judged, and wrong.
+  const auto rule = top.check("energy", "E -> 8 J");
+  REQUIRE_FALSE(rule.correct);
+  REQUIRE_THAT(rule.feedback.at(0), Catch::Contains("off by"));
   CHECK_FALSE(check::inequality_of("E -> 8"));
   // Two comparisons that point both ways are no range.
   CHECK_FALSE(check::range_of("1 ≤ θ ≥ 2"));
