@@ -816,8 +816,19 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
     Verdict v;
     try {
       v = judge_referring(ctx, a, referenced->text, options);
-    } catch (const InputError&) {
-      std::rethrow_exception(refusal);  // the name as it was refused, with its hint
+    } catch (const InputError& then) {
+      // "4K(k)/λ": k reads, λ does not. The name that keeps it from reading is said, in the
+      // expression as typed (the refusal's quote, not the closed form put in).
+      const std::string other = undefined_name(then.what());
+      const std::string first = e.what(), second = then.what();
+      const std::string quote = "expression \"";
+      const std::size_t at1 = first.find(quote), at2 = second.find(quote);
+      const std::size_t end1 = at1 == std::string::npos ? at1 : first.find("\": ", at1);
+      const std::size_t end2 = at2 == std::string::npos ? at2 : second.find("\": ", at2);
+      if (other.empty() || other == undefined_name(first) || end1 == std::string::npos ||
+          end2 == std::string::npos)
+        std::rethrow_exception(refusal);  // the name as it was refused, with its hint
+      throw InputError(second.substr(0, at2) + first.substr(at1, end1 - at1) + second.substr(end2));
     }
     v.feedback.push_back(referenced->note);
     return v;

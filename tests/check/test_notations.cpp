@@ -764,6 +764,11 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
                       Catch::Contains("t_max is the answer to part (h)"));
   REQUIRE_THROWS_WITH(plate.check("t_max", "t_max"),
                       Catch::Contains("t_max is the answer to part (h)"));
+  // Where another name still keeps it from reading, that name is said, in the text as typed.
+  const Fixture asymmetric("asymmetric-top");
+  REQUIRE_THROWS_WITH(asymmetric.check("period", "4K(k)/λ"),
+                      Catch::Contains("\"4*EllipticK(k)/lambda\": undefined symbol 'lambda'") &&
+                          !Catch::Contains("sqrt"));
   // A Greek subscript after '_' belongs to the name: p_ψ is the heavy top's p_psi, not "p_".
   const Fixture top("heavy-top");
   for (const char* with_other_answer : {"p_ψ cos θ₀", "p_ψ·cos(θ₀)", "p_psi cos θ₀"}) {
