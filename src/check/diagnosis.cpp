@@ -7,6 +7,11 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
+#include <sstream>
+
+#include "symbolic/expression.hpp"
+#include "symbolic/unicode_notation.hpp"
+#include "symbolic/value_text.hpp"
 
 namespace wobble::check {
 
@@ -134,6 +139,55 @@ Wrong other_answer(const Answer& a, const Key& key, const Unit&) {
   return out;
 }
 
+// A rotation made of the right turns, each taken the other way, or in reverse order: PHY 711's
+// R_z(γ)ᵀ R_y(β)ᵀ R_z(α)ᵀ written R_z(γ) R_y(β) R_z(α) (the turns' own matrices where the
+// components' are wanted: R(a)ᵀ = R(−a)), Taylor's R_z(φ) R_y(θ) R_z(ψ) written
+// R_z(ψ) R_y(θ) R_z(φ). A turn taken the other way is the turn by minus its angle, so the first
+// is the key's form at its angles negated, whatever the axes; the second is that one's transpose,
+// (R₁(−a) R₂(−b) R₃(−c))ᵀ = R₃(c) R₂(b) R₁(a). From the key's exact form: a matrix of numbers
+// does not say which turns made it.
+Wrong turns_reversed(const Answer& a, const Key& key, const Unit&) {
+  if (a.kind != AnswerKind::matrix || a.symbolic.empty() || a.value.data.size() != 9) return {};
+  sym::SymbolTable table;
+  GiNaC::lst at;
+  std::vector<GiNaC::ex> angles;
+  std::string names;
+  for (const auto& p : key.parameters) {
+    const GiNaC::ex s = table.declare(p.name, p.latex, sym::SymbolSign::real);
+    const bool angle = !p.unit.empty() && pure_angle(parse_unit(p.unit, "unit of " + p.name));
+    at.append(s == sym::exact_value(angle ? -p.value : p.value));
+    if (angle) angles.push_back(s);
+  }
+  try {
+    const sym::ValueText form = sym::parse_value_text(a.symbolic, table, "key of " + a.name);
+    std::vector<double> negated;
+    for (const auto& e : form.entries) negated.push_back(sym::evaluate(e, at, "key of " + a.name));
+    for (std::size_t i = 0; i < angles.size(); ++i) {
+      const bool turns_by_it = std::any_of(form.entries.begin(), form.entries.end(),
+                                           [&](const GiNaC::ex& e) { return e.has(angles[i]); });
+      if (!turns_by_it) continue;
+      std::ostringstream name;
+      name << angles[i];
+      names += (names.empty() ? "" : ", ") + sym::to_unicode(name.str());
+    }
+    if (names.empty() || form.rows != 3 || form.cols != 3) return {};
+    std::vector<double> reversed(9);
+    for (std::size_t r = 0; r < 3; ++r) {
+      for (std::size_t c = 0; c < 3; ++c) reversed[c * 3 + r] = negated[r * 3 + c];
+    }
+    return {{"", negated,
+             fmt::format("each turn is taken the other way: this is the answer with {} negated (a "
+                         "turn's own matrix where the one for components is wanted, or back? "
+                         "R(a)ᵀ = R(−a))",
+                         names)},
+            {"", reversed,
+             "the right turns multiplied in reverse order: the turn written first acts last on a "
+             "vector"}};
+  } catch (const InputError&) {
+    return {};  // no value at the angles negated (a square root of a sine): no such mistake
+  }
+}
+
 // An approximation a course teaches, given for the exact answer: the fast top's steady rates.
 // Numbers only (no approximation of a vector is taught here): the line says how far off it is.
 Wrong approximation_given(const Answer& a, const Key&, const Unit&) {
@@ -175,6 +229,7 @@ const std::vector<Mistake>& known_mistakes() {
       {"Hz taken as rad/s", hertz_as_radians},
       {"the components in another frame", other_frame},
       {"another answer of the key", other_answer},
+      {"a rotation's turns reversed", turns_reversed},
       {"an approximation for the exact answer", approximation_given},
       {"a factor off", factor_off},
   };

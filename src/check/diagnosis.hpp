@@ -11,10 +11,11 @@
 /// with the wrong sign; a reversed sign (for a signed precession rate: what its sign means);
 /// degrees for radians; turns per second for rad/s; 2π times a rate (Hz taken as rad/s); the
 /// components in another frame (answer kind and frame, solvers/key.hpp); another answer of the
-/// key; a factor 2, 1/2, 4, 1/4, 12, 1/12, 3 or 1/3. Then, by rule, every entry a power of ten
-/// off; a square matrix's transpose; a 3-vector's entries in another order (not principal
-/// moments, which may come in any). Else each wrong entry of a vector or matrix is named: with the
-/// wrong sign where only its sign is wrong, else with how far off it is.
+/// key; a rotation's turns each taken the other way or in reverse order (from the key's exact
+/// form at its angles negated); a factor 2, 1/2, 4, 1/4, 12, 1/12, 3 or 1/3. Then, by rule, every
+/// entry a power of ten off; a square matrix's transpose; a 3-vector's entries in another order
+/// (not principal moments, which may come in any). Else each wrong entry of a vector or matrix is
+/// named: with the wrong sign where only its sign is wrong, else with how far off it is.
 #include <functional>
 #include <string>
 #include <vector>

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
@@ -10,6 +11,8 @@
 #include <functional>
 #include <map>
 #include <sstream>
+#include <tuple>
+#include <vector>
 
 #include "check/check_fixture.hpp"
 #include "check/diagnosis.hpp"
@@ -275,6 +278,56 @@ TEST_CASE("each known mistake is named, on every answer of every problem where i
     INFO(mistake.kind);
     REQUIRE(seen[mistake.kind] > 0);
   }
+}
+
+TEST_CASE("a rotation's turns each taken the other way, or in reverse order, are named so") {
+  // Both Euler problems: Taylor's R = Rz(a) Ry(b) Rz(c) and PHY 711's R = Rz(c)ᵀ Ry(b)ᵀ Rz(a)ᵀ,
+  // with (a, b, c) the problem's angles. Each mistake typed two ways, apart from the judge's
+  // route (the key's form at the angles negated): as a product of turns, which the answer reader
+  // multiplies out, and as the numbers Eigen's turns make.
+  const std::string other_way = "each turn is taken the other way";
+  const std::string reversed = "the right turns multiplied in reverse order";
+  int seen = 0;
+  for (const auto& [id, a, b, c] : std::vector<std::array<std::string, 4>>{
+           {"euler-angles", "φ", "θ", "ψ"}, {"euler-angles-phy711", "α", "β", "γ"}}) {
+    const Fixture f(id);
+    const auto angle = [&](std::size_t i) { return f.key.parameters.at(i).value; };
+    const auto turn = [](const Eigen::Vector3d& axis, double by) {
+      return Eigen::Matrix3d(Eigen::AngleAxisd(by, axis));
+    };
+    const Eigen::Vector3d y = Eigen::Vector3d::UnitY(), z = Eigen::Vector3d::UnitZ();
+    const auto numbers = [&](const Eigen::Matrix3d& m) {
+      std::vector<double> rows;
+      for (int r = 0; r < 3; ++r)
+        for (int col = 0; col < 3; ++col) rows.push_back(m(r, col));
+      return typed(Value::matrix(3, 3, rows));
+    };
+    // The first three parameters are the angles, in order.
+    const double ta = angle(0), tb = angle(1), tc = angle(2);
+    const auto R = [&](const std::string& t) { return "Rz(" + t + ")"; };
+    const auto Ry = [&](const std::string& t) { return "Ry(" + t + ")"; };
+    for (const auto& [name, mistake, product, matrix] :
+         std::vector<std::tuple<std::string, std::string, std::string, Eigen::Matrix3d>>{
+             {"R_zyz", other_way, R("-" + a) + " " + Ry("-" + b) + " " + R("-" + c),
+              turn(z, -ta) * turn(y, -tb) * turn(z, -tc)},
+             {"R_zyz", reversed, R(c) + " " + Ry(b) + " " + R(a),
+              turn(z, tc) * turn(y, tb) * turn(z, ta)},
+             {"R_phy711", other_way, R(c) + " " + Ry(b) + " " + R(a),
+              turn(z, tc) * turn(y, tb) * turn(z, ta)},
+             {"R_phy711", reversed, R(a) + "ᵀ " + Ry(b) + "ᵀ " + R(c) + "ᵀ",
+              turn(z, -ta) * turn(y, -tb) * turn(z, -tc)}}) {
+      for (const std::string& answer : {product, numbers(matrix)}) {
+        INFO(id << " " << name << ": " << answer);
+        const Verdict v = f.check(name, answer);
+        REQUIRE_FALSE(v.correct);
+        REQUIRE_THAT(v.feedback.at(0), Catch::StartsWith(mistake));
+        if (mistake == other_way)
+          REQUIRE_THAT(v.feedback.at(0), Catch::Contains(a + ", " + b + ", " + c + " negated"));
+        ++seen;
+      }
+    }
+  }
+  REQUIRE(seen == 16);
 }
 
 TEST_CASE("components in another frame are named as such (omega_body for omega_space, ...)") {
@@ -803,7 +856,7 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
              Catch::Equals("this is the approximation A, 20% below the exact value here: the rate "
                            "is B"));
   CHECK_THAT(first(slow, {4.5}, "rad/s"), Catch::Equals("off by 10% of the answer"));
-  REQUIRE(wobble::check::known_mistakes().size() == 9);
+  REQUIRE(wobble::check::known_mistakes().size() == 10);
 }
 
 TEST_CASE("the heavy top's fast-top approximations are named where given for the exact rates") {
