@@ -722,22 +722,14 @@ const Answer* referable_answer(const Context& ctx, const Answer& a, const std::s
   return nullptr;
 }
 
-// `text` with another answer's name, the one the reader's `message` found undefined, written
-// as the key's closed form in brackets, and the line that says so; nullopt where that name is
-// no referable_answer or the text does not spell it as a name of its own (LaTeX is left alone).
-struct Referenced {
-  std::string text, note;
-};
-std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
-                                            const std::string& text, const std::string& message) {
-  const std::string name = undefined_name(message);
-  const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
-  if (r == nullptr || looks_like_latex(text)) return std::nullopt;
-  const std::string ascii = sym::to_ascii(text);
+// `ascii` with each name that `replacement` gives text for replaced by it, and whether any was;
+// a name starts at a letter after no letter, '_' or '.' ("2I0" is 2 times I0).
+std::pair<std::string, bool> names_replaced(
+    const std::string& ascii,
+    const std::function<std::optional<std::string>(const std::string&)>& replacement) {
   std::string out;
   bool found = false;
   for (std::size_t i = 0; i < ascii.size();) {
-    // A name starts at a letter after no letter, '_' or '.' ("2I0" is 2 times I0).
     const bool starts = std::isalpha(static_cast<unsigned char>(ascii[i])) &&
                         (i == 0 || !(std::isalpha(static_cast<unsigned char>(ascii[i - 1])) ||
                                      ascii[i - 1] == '_' || ascii[i - 1] == '.'));
@@ -750,11 +742,30 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
            (std::isalnum(static_cast<unsigned char>(ascii[end])) || ascii[end] == '_'))
       ++end;
     const std::string word = ascii.substr(i, end - i);
-    const bool same = name_in_key(ctx.key, word) == r->name;
-    out += same ? "(" + r->symbolic + ")" : word;
-    found = found || same;
+    const std::optional<std::string> put = replacement(word);
+    out += put ? *put : word;
+    found = found || put.has_value();
     i = end;
   }
+  return {out, found};
+}
+
+// `text` with another answer's name, the one the reader's `message` found undefined, written
+// as the key's closed form in brackets, and the line that says so; nullopt where that name is
+// no referable_answer or the text does not spell it as a name of its own (LaTeX is left alone).
+struct Referenced {
+  std::string text, note;
+};
+std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
+                                            const std::string& text, const std::string& message) {
+  const std::string name = undefined_name(message);
+  const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
+  if (r == nullptr || looks_like_latex(text)) return std::nullopt;
+  const auto [out, found] = names_replaced(
+      sym::to_ascii(text), [&](const std::string& word) -> std::optional<std::string> {
+        if (name_in_key(ctx.key, word) != r->name) return std::nullopt;
+        return "(" + r->symbolic + ")";
+      });
   if (!found) return std::nullopt;
   const auto part = std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
     return std::any_of(p.answers.begin(), p.answers.end(),
@@ -763,6 +774,38 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
   return Referenced{out, fmt::format("read with {0} = {2}, the key's answer to part ({1}): "
                                      "right as far as your {0} is",
                                      r->name, part->id, sym::to_unicode(r->symbolic))};
+}
+
+// `text` with the convention's names (key.hpp's ConventionName: Taylor's φ for PHY 711's α)
+// written as the parameters they are here, where the reader's `message` found one undefined,
+// and the line that says which; nullopt otherwise (LaTeX is left alone).
+std::optional<Referenced> convention_named(const Context& ctx, const std::string& text,
+                                           const std::string& message) {
+  const std::string name = undefined_name(message);
+  const auto& names = ctx.key.convention_names;
+  const auto of = [&](const std::string& word) {
+    return std::find_if(names.begin(), names.end(),
+                        [&](const ConventionName& c) { return c.name == word; });
+  };
+  if (name.empty() || of(name) == names.end() || looks_like_latex(text)) return std::nullopt;
+  std::vector<bool> read(names.size(), false);
+  const auto [out, found] = names_replaced(
+      sym::to_ascii(text), [&](const std::string& word) -> std::optional<std::string> {
+        const auto it = of(word);
+        if (it == names.end()) return std::nullopt;
+        read[static_cast<std::size_t>(it - names.begin())] = true;
+        return it->parameter;
+      });
+  if (!found) return std::nullopt;
+  std::string lines;  // in the convention's order, whatever the answer's
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (read[i]) {
+      lines += (lines.empty() ? "" : ", ") + sym::to_unicode(names[i].name) + " = " +
+               sym::to_unicode(names[i].parameter);
+    }
+  }
+  return Referenced{out, fmt::format("read in {} names, as this problem's symbols: {}",
+                                     ctx.key.convention, lines)};
 }
 
 // judge_as_written, and where a wrong answer calls EllipticK or EllipticE, whether it is right
@@ -810,7 +853,9 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
   try {
     return judge_one(ctx, a, text, options);
   } catch (const InputError& e) {
-    const auto referenced = answer_referenced(ctx, a, text, e.what());
+    std::optional<Referenced> referenced = convention_named(ctx, text, e.what());
+    const bool convention = referenced.has_value();
+    if (!referenced) referenced = answer_referenced(ctx, a, text, e.what());
     if (!referenced) throw;
     const std::exception_ptr refusal = std::current_exception();
     Verdict v;
@@ -825,8 +870,13 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
       const std::size_t at1 = first.find(quote), at2 = second.find(quote);
       const std::size_t end1 = at1 == std::string::npos ? at1 : first.find("\": ", at1);
       const std::size_t end2 = at2 == std::string::npos ? at2 : second.find("\": ", at2);
-      if (other.empty() || other == undefined_name(first) || end1 == std::string::npos ||
-          end2 == std::string::npos)
+      // The same entry refused both times ("entry 1: "), or the quote is another entry's.
+      const bool same_entry = end1 != std::string::npos && end2 != std::string::npos &&
+                              first.compare(0, at1, second, 0, at2) == 0;
+      // The convention's names read, what still keeps the answer from reading is said: a
+      // vector for a matrix, or another entry's unknown name.
+      if (convention && (other.empty() || !same_entry)) throw;
+      if (other.empty() || other == undefined_name(first) || !same_entry)
         std::rethrow_exception(refusal);  // the name as it was refused, with its hint
       throw InputError(second.substr(0, at2) + first.substr(at1, end1 - at1) + second.substr(end2));
     }

@@ -378,8 +378,16 @@ const std::vector<QuantityRow<const Angles>>& rows() {
 
 Key solve_euler_angles(const Problem& problem, const sym::Values& values) {
   const Angles t(problem, values);
-  return assemble_parts(problem,
-                        [&](const std::string& q) { return compute_quantity(rows(), t, q); });
+  Key key =
+      assemble_parts(problem, [&](const std::string& q) { return compute_quantity(rows(), t, q); });
+  // PHY 711's α, β, γ are Taylor's φ, θ, ψ: a student relating the two may write either.
+  for (const std::string name : {"phi", "theta", "psi", "phidot", "thetadot", "psidot"}) {
+    const std::string& given = problem.motion->at(name);
+    if (given != name && !t.table.contains(name) && t.table.contains(given))
+      key.convention_names.push_back({name, given});
+  }
+  key.convention = "Taylor's";
+  return key;
 }
 
 SolverInfo euler_angles_solver() {

@@ -174,6 +174,15 @@ struct ParameterValue {
   double value = 0.0;
 };
 
+/// A name a solver's convention gives a quantity that is one parameter of this problem, which
+/// names it otherwise: the PHY 711 problem's α is Taylor's φ (its [motion] phi = "alpha"). A
+/// student may write either; `wobble check` reads the convention's name as the parameter and
+/// says so.
+struct ConventionName {
+  std::string name;       ///< the convention's, as GiNaC text: "phi"
+  std::string parameter;  ///< the problem's: "alpha"
+};
+
 struct Key {
   std::string problem, title, source, statement;
   std::optional<long> variant;  ///< the student's variant the values are drawn for, if any
@@ -183,6 +192,10 @@ struct Key {
   /// Parameters whose set values the exact forms are written with, as a zero rate is (a heavy
   /// top's θ0 = 90°: cos θ0 is 0 in its forms): an expression is judged with them held there.
   std::vector<std::string> held;
+  /// The convention's names for parameters named otherwise here, and whose names they are
+  /// ("Taylor's"); not in the JSON key (its notes say them).
+  std::vector<ConventionName> convention_names;
+  std::string convention;
   std::vector<PartKey> parts;
 };
 

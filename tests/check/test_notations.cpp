@@ -3,6 +3,7 @@
 // is the key's value, and as wrong when it is not. Every value is the key's own, formatted here.
 #include <fmt/format.h>
 
+#include <array>
 #include <catch2/catch.hpp>
 #include <cctype>
 #include <cmath>
@@ -724,6 +725,48 @@ TEST_CASE("components along the Euler angles' primed basis, e₁′, e₂′, e�
                       Catch::Contains("ẑ, ê₂′, ê₃ mix bases"));
 }
 
+TEST_CASE("the PHY 711 problem reads Taylor's φ, θ, ψ as its α, β, γ, and says so") {
+  // Its [motion] table gives Taylor's angles as α, β, γ: the question relates the two, and a
+  // student may answer in either names.
+  const Fixture phy711("euler-angles-phy711");
+  const std::string all = "read in Taylor's names, as this problem's symbols: φ = α, θ = β, ψ = γ";
+  for (const auto& [name, typed, note] : std::vector<std::array<std::string, 3>>{
+           {"angles_phy711", "(φ, θ, ψ)", all},
+           {"angles_phy711", "(phi, theta, psi)", all},
+           {"angles_zxz", "(φ + π/2, θ, ψ − π/2)", all},
+           {"angles_phy711", "(α, θ, γ)",
+            "read in Taylor's names, as this problem's symbols: θ = β"},
+           {"R_phy711", "Rz(ψ)ᵀ Ry(θ)ᵀ Rz(φ)ᵀ", all},
+           {"omega_primed", "(−φ̇ sin θ, θ̇, φ̇ cos θ + ψ̇)",
+            "read in Taylor's names, as this problem's symbols: θ = β, φ̇ = α̇, θ̇ = β̇, ψ̇ = γ̇"},
+           {"kinetic_energy", "I1/2 (φ̇² sin²θ + θ̇²) + I3/2 (φ̇ cos θ + ψ̇)²",
+            "read in Taylor's names, as this problem's symbols: θ = β, φ̇ = α̇, θ̇ = β̇, ψ̇ = γ̇"}}) {
+    INFO(name << ": " << typed);
+    const auto v = phy711.check(name, typed);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{note});
+  }
+  // Read so, a wrong answer is still wrong, and says how it was read (in the convention's
+  // order, as every note is).
+  const auto swapped = phy711.check("angles_phy711", "(θ, φ, ψ)");
+  REQUIRE_FALSE(swapped.correct);
+  REQUIRE(swapped.feedback.back() == all);
+  // What still keeps such an answer from reading is said: a vector for a matrix, a name the
+  // problem lacks (in the entry it is in).
+  REQUIRE_THROWS_WITH(phy711.check("R_phy711", "(φ, θ, ψ)"),
+                      !Catch::Contains("undefined symbol") && Catch::Contains("3-vector"));
+  REQUIRE_THROWS_WITH(phy711.check("angles_phy711", "(φ, θ, q)"),
+                      Catch::StartsWith("--answer[2]: cannot read expression \"q\": undefined "
+                                        "symbol 'q'"));
+  REQUIRE_THROWS_WITH(phy711.check("angles_phy711", "(φ + q, θ, ψ)"),
+                      Catch::StartsWith("--answer[0]: cannot read expression \"phi + q\": "
+                                        "undefined symbol 'q'"));
+  // Taylor's problem has no other names: PHY 711's there are refused, with its symbols listed.
+  const Fixture taylor("euler-angles");
+  REQUIRE_THROWS_WITH(taylor.check("angles_phy711", "(α, β, γ)"),
+                      Catch::Contains("undefined symbol 'alpha'"));
+}
+
 TEST_CASE("an earlier answer's name in an answer is its closed form, said; others are refused") {
   // Question (a) writes I = I₀ diag(…): a student answers I so, with part (a)'s I₀, read as the
   // key's I₀ and said so.
@@ -1065,10 +1108,10 @@ TEST_CASE("a name the statement defines is named with its definition, to be writ
   REQUIRE(earth.check("Omega_body_rate", "(C − C(1 − H))/(C(1 − H)) ω cos α").correct);
   // A name no math of the statement defines gets no such line.
   REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "B ω"), !Catch::Contains("defines"));
-  // Nor a case the text names: "what happens at $\theta = 0$" defines no θ.
-  const Fixture phy711("euler-angles-phy711");
-  REQUIRE_THROWS_WITH(phy711.check("angles_phy711", "(φ, θ, ψ)"),
-                      Catch::Contains("undefined symbol") && !Catch::Contains("defines"));
+  // Nor a case the text names: "at $t = 0$" defines no t.
+  const Fixture plate("flying-plate");
+  REQUIRE_THROWS_WITH(plate.check("I0", "m R² t/4"),
+                      Catch::Contains("undefined symbol 't'") && !Catch::Contains("defines"));
 }
 
 TEST_CASE("a rate in Lagrange's notation, a prime after the angle, is the problem's rate") {
