@@ -372,12 +372,13 @@ std::optional<LabelledComponents> labelled_components(const std::string& text,
     }
   }
   // "x = 0.5, y = 1, z = 1.5 m": a unit after the last value, and none after the others, is
-  // the whole vector's, as after a list in brackets.
+  // the whole vector's, as after a list in brackets; the last told once for several labels,
+  // "I_xy = −0.5, I_xx = I_yy = I_zz = 3 kg m²", is one value.
   std::string unit;
   if (const auto [last, after] = split_unit(trim(values.back())); !after.empty()) {
-    const bool others_bare =
-        std::all_of(values.begin(), values.end() - 1,
-                    [](const std::string& v) { return split_unit(v).second.empty(); });
+    const bool others_bare = std::all_of(
+        values.begin(), values.end() - 1,
+        [&](const std::string& v) { return v == values.back() || split_unit(v).second.empty(); });
     if (others_bare) {
       unit = " " + after;
       for (auto& v : values) {
@@ -463,37 +464,59 @@ std::string rules_as_equations(const std::string& text) {
   return out;
 }
 
+// The unit after a rule's zero, "(kg m²)", "in kg m²" or "kg m²": the whole list's, as a unit in
+// brackets after its last value is; "" where nothing follows the zero; nullopt where what follows
+// is no unit.
+std::optional<std::string> unit_after_rule(const std::string& tail) {
+  std::string unit = trim(tail);
+  if (unit.empty()) return std::string();
+  if (unit.size() > 2 && unit.front() == '(' && unit.back() == ')')
+    unit = trim(unit.substr(1, unit.size() - 2));
+  if (ascii_lower(unit.substr(0, 3)) == "in ") unit = trim(unit.substr(3));
+  try {
+    (void)parse_unit(sym::to_ascii(unit), "unit");
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  return unit;
+}
+
 std::string without_others_zero(const std::string& text) {
   const std::vector<std::string> items = top_level(text, ',');
   if (items.size() < 2) return text;
-  std::vector<std::string> words(1);
-  for (const char c : ascii_lower(items.back())) {
-    if (c == ' ' || c == '=') {
-      if (!words.back().empty()) words.emplace_back();
-    } else {
-      words.back() += c;
-    }
-  }
-  if (words.back().empty()) words.pop_back();
-  if (words.size() < 2) return text;
+  const std::string& rule = items.back();
   static const std::set<std::string> kZero{"0", "zero", "vanish", "vanishes"};
   static const std::set<std::string> kRest{"others", "other", "rest"};
   static const std::set<std::string> kFiller{
       "all", "the", "are", "is", "entries", "elements", "components", "products", "off-diagonal"};
-  if (!kZero.count(words.back())) return text;
+  // The rule's words up to its zero ('=' parts them as a space does: "all others = 0"), each
+  // a rest word or filler, and where the zero ends.
   bool rest = false;
-  for (std::size_t k = 0; k + 1 < words.size(); ++k) {
-    if (kRest.count(words[k])) {
+  std::size_t i = 0, zero_end = std::string::npos;
+  while (i < rule.size() && zero_end == std::string::npos) {
+    if (rule[i] == ' ' || rule[i] == '=') {
+      ++i;
+      continue;
+    }
+    const std::size_t end = rule.find_first_of(" =", i);
+    const std::string word = ascii_lower(rule.substr(i, end - i));
+    if (kZero.count(word) && i > 0) {
+      zero_end = end == std::string::npos ? rule.size() : end;
+    } else if (kRest.count(word)) {
       rest = true;
-    } else if (!kFiller.count(words[k])) {
+    } else if (!kFiller.count(word)) {
       return text;
     }
+    i = end == std::string::npos ? rule.size() : end;
   }
+  if (zero_end == std::string::npos || !rest) return text;
+  const std::optional<std::string> unit = unit_after_rule(rule.substr(zero_end));
   const bool labelled = std::any_of(items.begin(), items.end() - 1, [](const std::string& item) {
     return item.find('=') != std::string::npos;
   });
-  if (!rest || !labelled) return text;
-  return text.substr(0, text.rfind(','));
+  if (!unit || !labelled) return text;
+  const std::string listed = text.substr(0, text.rfind(','));
+  return unit->empty() ? listed : listed + " (" + *unit + ")";
 }
 
 std::optional<SomeComponents> some_components(const std::string& text) {

@@ -309,6 +309,22 @@ TEST_CASE("components given one by one with their labels") {
   }
   REQUIRE_FALSE(masses.check("I", "Ixx = Iyy = Izz = 3 m a^2, Ixz = -m a^2/2, others 0").correct);
   REQUIRE(cone.check("center_of_mass", "z = -3h/4, others 0").correct);
+  // A unit after the last value alone is the whole list's, where that value is told once for
+  // several labels too.
+  REQUIRE(masses.check("I", "Ixy = -0.5e7, Ixx = Iyy = Izz = 3e7 g cm²").correct);
+  REQUIRE(masses.check("I", "Ixy = Iyx = -0.5e7, Ixx = Iyy = Izz = 3e7 (g cm²)").correct);
+  // The list's unit after the rule, as after its last value: bracketed, after "in", or bare. In
+  // g cm² (10⁷ of the key's numbers), so that a unit dropped would be judged wrong.
+  for (const char* unit : {" (g cm²)", " in g cm^2", " g cm²"}) {
+    INFO(unit);
+    REQUIRE(masses.check("I", std::string("Ixx = Iyy = Izz = 3e7, Ixy = -0.5e7, others 0") + unit)
+                .correct);
+    REQUIRE(masses.check("I", std::string("Ixy = -0.5e7, Ixx = Iyy = Izz = 3e7, others 0") + unit)
+                .correct);
+    REQUIRE_FALSE(
+        masses.check("I", std::string("Ixx = Iyy = Izz = 3, Ixy = -0.5, the rest are zero") + unit)
+            .correct);
+  }
   // A formula between a label and its value, the plane body's I₃ = I₁ + I₂: read past, and the
   // feedback says it was not judged.
   const Fixture molecule("three-atom-molecule");  // moments about the origin, a plane body
@@ -328,6 +344,10 @@ TEST_CASE("components given one by one with their labels") {
   CHECK(without_others_zero("1, others 0") == "1, others 0");
   CHECK(without_others_zero("x = 1, others 2") == "x = 1, others 2");
   CHECK(without_others_zero("x = 1, y equals 0") == "x = 1, y equals 0");
+  CHECK(without_others_zero("x = 1, others 0 (kg m²)") == "x = 1 (kg m²)");
+  // After the zero, only a unit: "or 1" says more.
+  CHECK(without_others_zero("x = 1, others 0 or 1") == "x = 1, others 0 or 1");
+  CHECK(without_others_zero("x = 1, others 0 furlongs") == "x = 1, others 0 furlongs");
 
   // A pair: the racket spun about e₂ has (Ω₃, Ω₁) in the key, (Ω₁, Ω₂) as the lecture writes
   // the pair about e₃ and the question asks for it; both name the entries, in any order.
