@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
-#include <sstream>
+#include <utility>
 
 #include "symbolic/expression.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -150,25 +150,22 @@ Wrong turns_reversed(const Answer& a, const Key& key, const Unit&) {
   if (a.kind != AnswerKind::matrix || a.symbolic.empty() || a.value.data.size() != 9) return {};
   sym::SymbolTable table;
   GiNaC::lst at;
-  std::vector<GiNaC::ex> angles;
+  std::vector<std::pair<GiNaC::ex, std::string>> angles;  // each symbol and its name
   std::string names;
   for (const auto& p : key.parameters) {
     const GiNaC::ex s = table.declare(p.name, p.latex, sym::SymbolSign::real);
     const bool angle = !p.unit.empty() && pure_angle(parse_unit(p.unit, "unit of " + p.name));
     at.append(s == sym::exact_value(angle ? -p.value : p.value));
-    if (angle) angles.push_back(s);
+    if (angle) angles.emplace_back(s, p.name);
   }
   try {
     const sym::ValueText form = sym::parse_value_text(a.symbolic, table, "key of " + a.name);
     std::vector<double> negated;
     for (const auto& e : form.entries) negated.push_back(sym::evaluate(e, at, "key of " + a.name));
-    for (std::size_t i = 0; i < angles.size(); ++i) {
+    for (const auto& [symbol, name] : angles) {
       const bool turns_by_it = std::any_of(form.entries.begin(), form.entries.end(),
-                                           [&](const GiNaC::ex& e) { return e.has(angles[i]); });
-      if (!turns_by_it) continue;
-      std::ostringstream name;
-      name << angles[i];
-      names += (names.empty() ? "" : ", ") + sym::to_unicode(name.str());
+                                           [&](const GiNaC::ex& e) { return e.has(symbol); });
+      if (turns_by_it) names += (names.empty() ? "" : ", ") + sym::to_unicode(name);
     }
     if (names.empty() || form.rows != 3 || form.cols != 3) return {};
     std::vector<double> reversed(9);

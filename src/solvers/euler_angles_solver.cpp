@@ -20,6 +20,9 @@ namespace wobble {
 namespace {
 using GiNaC::ex;
 
+// The [motion] table's keys: Taylor's angles and their rates, in that order.
+const std::array<const char*, 6> kMotionKeys{"phi", "theta", "psi", "phidot", "thetadot", "psidot"};
+
 struct Angles : BodyContext {
   Angles(const Problem& problem, const sym::Values& values);
   ex phi, theta, psi, phidot, thetadot, psidot, I1, I3;  // exact
@@ -39,11 +42,11 @@ Angles::Angles(const Problem& p, const sym::Values& values) : BodyContext(p, val
   I1 = I(0, 0);
   I3 = I(2, 2);
   const std::array<ex*, 6> fields{&phi, &theta, &psi, &phidot, &thetadot, &psidot};
-  const std::array<const char*, 6> keys{"phi", "theta", "psi", "phidot", "thetadot", "psidot"};
   for (std::size_t i = 0; i < 6; ++i) {
-    *fields[i] = sym::parse_quantity(t.table, problem.motion->at(keys[i]),
-                                     std::string("motion.") + keys[i], i < 3 ? "rad" : "rad/s");
-    const double v = value(t, *fields[i], std::string("motion.") + keys[i]);
+    *fields[i] =
+        sym::parse_quantity(t.table, problem.motion->at(kMotionKeys[i]),
+                            std::string("motion.") + kMotionKeys[i], i < 3 ? "rad" : "rad/s");
+    const double v = value(t, *fields[i], std::string("motion.") + kMotionKeys[i]);
     (i < 3 ? angles_n : rates_n)[static_cast<int>(i % 3)] = v;
   }
   // The principal ranges, in which the angles read back from R are the angles given.
@@ -381,7 +384,7 @@ Key solve_euler_angles(const Problem& problem, const sym::Values& values) {
   Key key =
       assemble_parts(problem, [&](const std::string& q) { return compute_quantity(rows(), t, q); });
   // PHY 711's α, β, γ are Taylor's φ, θ, ψ: a student relating the two may write either.
-  for (const std::string name : {"phi", "theta", "psi", "phidot", "thetadot", "psidot"}) {
+  for (const std::string name : kMotionKeys) {
     const std::string& given = problem.motion->at(name);
     if (given != name && !t.table.contains(name) && t.table.contains(given))
       key.convention_names.push_back({name, given});
@@ -395,7 +398,7 @@ SolverInfo euler_angles_solver() {
   s.name = "euler_angles";
   s.summary = "Euler angles and their rates: the rotation in three conventions, w in three "
               "bases, a symmetric top's L and T, the angles read back";
-  s.motion_keys = {"phi", "theta", "psi", "phidot", "thetadot", "psidot"};
+  s.motion_keys = {kMotionKeys.begin(), kMotionKeys.end()};
   s.quantities = quantity_infos(rows());
   s.solve = solve_euler_angles;
   return s;
