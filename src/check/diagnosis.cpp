@@ -162,10 +162,10 @@ Wrong turns_reversed(const Answer& a, const Key& key, const Unit&) {
     const sym::ValueText form = sym::parse_value_text(a.symbolic, table, "key of " + a.name);
     std::vector<double> negated;
     for (const auto& e : form.entries) negated.push_back(sym::evaluate(e, at, "key of " + a.name));
-    for (const auto& [symbol, name] : angles) {
+    for (const auto& angle : angles) {
       const bool turns_by_it = std::any_of(form.entries.begin(), form.entries.end(),
-                                           [&](const GiNaC::ex& e) { return e.has(symbol); });
-      if (turns_by_it) names += (names.empty() ? "" : ", ") + sym::to_unicode(name);
+                                           [&](const GiNaC::ex& e) { return e.has(angle.first); });
+      if (turns_by_it) names += (names.empty() ? "" : ", ") + sym::to_unicode(angle.second);
     }
     if (names.empty() || form.rows != 3 || form.cols != 3) return {};
     std::vector<double> reversed(9);
