@@ -650,6 +650,9 @@ std::string in_units_of_written(const std::string& typed) {
     before = trim(before.substr(0, before.size() - 1));
   }
   if (unit.empty() || before.empty()) return typed;
+  // "Ixx = 3, Ixy = -0.5, others 0 (in g cm²)": the unit is the whole list's, which the rule's
+  // reading takes; here it would be the last item's, rule and all.
+  if (without_others_zero(before) != before) return typed;
   // The value after the last '=' at the top level; a label before it stays.
   const std::vector<std::string> sides = top_level(before, '=');
   const std::string value = trim(sides.back());

@@ -110,6 +110,11 @@ const std::map<std::string, std::string>& spellings() {
   static const std::map<std::string, std::string> n{
       {"kilogram", "kg"},
       {"kilograms", "kg"},
+      // The plural and capitals a hurried hand writes; none is another unit here (no kelvin).
+      {"kgs", "kg"},
+      {"Kg", "kg"},
+      {"Kgs", "kg"},
+      {"KG", "kg"},
       {"gram", "g"},
       {"grams", "g"},
       {"meter", "m"},

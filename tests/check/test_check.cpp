@@ -71,6 +71,12 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   REQUIRE_THAT(parse_unit("degrees", "u").to_si, WithinRel(M_PI / 180, 1e-15));
   REQUIRE(parse_unit("kilogram metres^2 per second", "u").dim == std::array<int, 3>{1, 2, -1});
   REQUIRE(parse_unit("radians", "u").angle);
+  // Kilograms as a hurried hand writes them: a plural, capitals (there is no kelvin to mistake).
+  for (const std::string kilograms : {"kgs m^2", "Kg m^2", "KG m^2", "Kgs m2"}) {
+    CAPTURE(kilograms);
+    REQUIRE_THAT(parse_unit(kilograms, "u").to_si, WithinRel(1.0, 1e-15));
+    REQUIRE(parse_unit(kilograms, "u").dim == std::array<int, 3>{1, 2, 0});
+  }
   // Powers without a caret, as the SI writes them and a PDF's "m²" pastes.
   REQUIRE(parse_unit("kg m2 s-1", "u").dim == std::array<int, 3>{1, 2, -1});
   REQUIRE(parse_unit("kg m2/s", "u").dim == std::array<int, 3>{1, 2, -1});

@@ -313,9 +313,10 @@ TEST_CASE("components given one by one with their labels") {
   // several labels too.
   REQUIRE(masses.check("I", "Ixy = -0.5e7, Ixx = Iyy = Izz = 3e7 g cm²").correct);
   REQUIRE(masses.check("I", "Ixy = Iyx = -0.5e7, Ixx = Iyy = Izz = 3e7 (g cm²)").correct);
-  // The list's unit after the rule, as after its last value: bracketed, after "in", or bare. In
-  // g cm² (10⁷ of the key's numbers), so that a unit dropped would be judged wrong.
-  for (const char* unit : {" (g cm²)", " in g cm^2", " g cm²"}) {
+  // The list's unit after the rule, as after its last value: bracketed (with "in" or not), after
+  // "in", or bare. In g cm² (10⁷ of the key's numbers), so that a unit dropped would be judged
+  // wrong.
+  for (const char* unit : {" (g cm²)", " (in g cm²)", " in g cm^2", " g cm²"}) {
     INFO(unit);
     REQUIRE(masses.check("I", std::string("Ixx = Iyy = Izz = 3e7, Ixy = -0.5e7, others 0") + unit)
                 .correct);
@@ -1749,7 +1750,7 @@ TEST_CASE("labels before a ':', a unit after labelled components, a row of numbe
   }
   // The unit after the last value as typed, with its superscript: the principal moments' kg m².
   const auto& moments_kg_m2 = box.answer("principal_moments_corner").value.data;
-  for (const char* unit : {"kg m²", "kg·m²", "kg m^2"}) {
+  for (const char* unit : {"kg m²", "kg·m²", "kg m^2", "Kg m²", "kgs m^2"}) {
     const std::string labelled =
         fmt::format("I₁ = {:.6g}, I₂ = {:.6g}, I₃ = {:.6g} {}", moments_kg_m2.at(0),
                     moments_kg_m2.at(1), moments_kg_m2.at(2), unit);
