@@ -776,21 +776,59 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
                                      r->name, part->id, sym::to_unicode(r->symbolic))};
 }
 
+// A convention's name as LaTeX draws it, "phidot" -> "\dot\phi", as a problem file spells its own.
+std::string convention_latex(const std::string& name) {
+  const std::string_view rate = "dot";
+  const bool dot =
+      name.size() > rate.size() && name.compare(name.size() - rate.size(), rate.size(), rate) == 0;
+  const std::string base = dot ? name.substr(0, name.size() - rate.size()) : name;
+  const std::string letter = sym::greek_letters().count(base) ? "\\" + base : base;
+  if (!dot) return letter;
+  return letter[0] == '\\' ? "\\dot" + letter : "\\dot{" + letter + "}";
+}
+
+// The LaTeX answer as plain text, read with the convention's names as symbols too ("\dot\phi"
+// as phidot); nullopt where it reads no better so. Where the convention's name was what kept it
+// from reading (`refused`) and something else still does, that is said instead.
+std::optional<std::string> latex_with_convention_names(const Context& ctx, const std::string& latex,
+                                                       const std::string& refused) {
+  sym::SymbolTable with_names = ctx.table;
+  for (const ConventionName& c : ctx.key.convention_names) {
+    if (!with_names.contains(c.name))
+      with_names.declare(c.name, convention_latex(c.name), sym::SymbolSign::real);
+  }
+  try {
+    return latex_as_text(latex, with_names, kField);
+  } catch (const InputError& e) {
+    if (std::string_view(e.what()) == refused) return std::nullopt;
+    throw;
+  }
+}
+
 // `text` with the convention's names (key.hpp's ConventionName: Taylor's φ for PHY 711's α)
-// written as the parameters they are here, where the reader's `message` found one undefined,
-// and the line that says which; nullopt otherwise (LaTeX is left alone).
+// written as the parameters they are here, where the reader's `message` found one undefined
+// (in LaTeX, where the text reads with them), and the line that says which; nullopt otherwise.
 std::optional<Referenced> convention_named(const Context& ctx, const std::string& text,
                                            const std::string& message) {
-  const std::string name = undefined_name(message);
   const auto& names = ctx.key.convention_names;
   const auto of = [&](const std::string& word) {
     return std::find_if(names.begin(), names.end(),
                         [&](const ConventionName& c) { return c.name == word; });
   };
-  if (name.empty() || of(name) == names.end() || looks_like_latex(text)) return std::nullopt;
+  if (names.empty()) return std::nullopt;
+  std::string ascii;
+  if (looks_like_latex(text)) {
+    const std::optional<std::string> plain = latex_with_convention_names(ctx, text, message);
+    if (!plain) return std::nullopt;
+    ascii = *plain;
+  } else {
+    const std::string name = undefined_name(message);
+    if (name.empty() || of(name) == names.end()) return std::nullopt;
+    ascii = sym::to_ascii(text);
+  }
   std::vector<bool> read(names.size(), false);
-  const auto [out, found] = names_replaced(
-      sym::to_ascii(text), [&](const std::string& word) -> std::optional<std::string> {
+  const auto [out, found] =
+      names_replaced(ascii, [&](const std::string& word) -> std::optional<std::string> {
         const auto it = of(word);
         if (it == names.end()) return std::nullopt;
         read[static_cast<std::size_t>(it - names.begin())] = true;

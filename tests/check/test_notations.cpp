@@ -761,6 +761,16 @@ TEST_CASE("the PHY 711 problem reads Taylor's φ, θ, ψ as its α, β, γ, and 
            {"omega_primed", "(−φ̇ sin θ, θ̇, φ̇ cos θ + ψ̇)",
             "read in Taylor's names, as this problem's symbols: θ = β, φ̇ = α̇, θ̇ = β̇, ψ̇ = γ̇"},
            {"kinetic_energy", "I1/2 (φ̇² sin²θ + θ̇²) + I3/2 (φ̇ cos θ + ψ̇)²",
+            "read in Taylor's names, as this problem's symbols: θ = β, φ̇ = α̇, θ̇ = β̇, ψ̇ = γ̇"},
+           // In LaTeX, as a LaTeX key of Taylor's problem writes them.
+           {"angles_zxz", "(\\phi + \\frac{\\pi}{2}, \\theta, \\psi - \\pi/2)", all},
+           {"omega_primed",
+            "\\begin{pmatrix} -\\dot\\phi \\sin\\theta \\\\ \\dot{\\theta} \\\\ "
+            "\\dot\\phi\\cos\\theta + \\dot\\psi \\end{pmatrix}",
+            "read in Taylor's names, as this problem's symbols: θ = β, φ̇ = α̇, θ̇ = β̇, ψ̇ = γ̇"},
+           {"kinetic_energy",
+            "\\frac{I_1}{2}(\\dot{\\varphi}^2 \\sin^2\\theta + \\dot\\theta^2) + "
+            "\\frac{I_3}{2}(\\dot\\phi\\cos\\theta + \\dot\\psi)^2",
             "read in Taylor's names, as this problem's symbols: θ = β, φ̇ = α̇, θ̇ = β̇, ψ̇ = γ̇"}}) {
     INFO(name << ": " << typed);
     const auto v = phy711.check(name, typed);
@@ -782,10 +792,18 @@ TEST_CASE("the PHY 711 problem reads Taylor's φ, θ, ψ as its α, β, γ, and 
   REQUIRE_THROWS_WITH(phy711.check("angles_phy711", "(φ + q, θ, ψ)"),
                       Catch::StartsWith("--answer[0]: cannot read expression \"phi + q\": "
                                         "undefined symbol 'q'"));
+  // In LaTeX too: the name that still keeps the answer from reading is said, not Taylor's.
+  REQUIRE_THROWS_WITH(phy711.check("angles_phy711", "(\\phi, \\theta, q)"),
+                      Catch::Contains("q is not one of this problem's symbols"));
+  const auto swapped_latex = phy711.check("angles_phy711", "(\\theta, \\phi, \\psi)");
+  REQUIRE_FALSE(swapped_latex.correct);
+  REQUIRE(swapped_latex.feedback.back() == all);
   // Taylor's problem has no other names: PHY 711's there are refused, with its symbols listed.
   const Fixture taylor("euler-angles");
   REQUIRE_THROWS_WITH(taylor.check("angles_phy711", "(α, β, γ)"),
                       Catch::Contains("undefined symbol 'alpha'"));
+  REQUIRE_THROWS_WITH(taylor.check("angles_phy711", "(\\alpha, \\beta, \\gamma)"),
+                      Catch::Contains("\\alpha is not one of this problem's symbols"));
 }
 
 TEST_CASE("an earlier answer's name in an answer is its closed form, said; others are refused") {
