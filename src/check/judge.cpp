@@ -21,6 +21,7 @@
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
+#include "check/names_run_together.hpp"
 #include "check/plus_minus.hpp"
 #include "check/program_notation.hpp"
 #include "check/symbol_values.hpp"
@@ -882,6 +883,95 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
   return v;
 }
 
+// Marks around a form put in for a name, until brackets_put_in makes them brackets.
+constexpr char kPutIn = '\x01', kPutInEnd = '\x02';
+
+// `marked` with each form put in as a bracket, joined by '*' to a bracket beside it: "I₃ (ψ̇₀)"
+// would otherwise be "(M*R^2/2) (psidot0)", which reads as a matrix's two rows.
+std::string brackets_put_in(const std::string& marked) {
+  std::string out;
+  for (std::size_t i = 0; i < marked.size(); ++i) {
+    const char c = marked[i];
+    if (c == kPutIn) {
+      const std::size_t last = out.find_last_not_of(' ');
+      if (last != std::string::npos && out[last] == ')') out += '*';
+      out += '(';
+    } else if (c == kPutInEnd) {
+      out += ')';
+      const std::size_t next = marked.find_first_not_of(' ', i + 1);
+      if (next != std::string::npos && marked[next] == '(') out += '*';
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// A name as the key's DefinedName spells it: "I_3" and "I3" alike, and "w3" as ω₃ ("omega3").
+std::string defined_spelling(const std::string& word) {
+  std::string plain;
+  for (const char c : word) {
+    if (c != '_') plain += c;
+  }
+  if (plain.size() > 1 && plain[0] == 'w' &&
+      std::all_of(plain.begin() + 1, plain.end(),
+                  [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }))
+    return "omega" + plain.substr(1);
+  return plain;
+}
+
+// `text` with the names the key's steps write for quantities of this problem (key.hpp's
+// DefinedName: the heavy top's I₁, I₃, ω₃) as their exact forms in brackets, where the reader's
+// `message` found one undefined, and the line that says so; nullopt otherwise (LaTeX is left
+// alone, as with an earlier answer's name). Never the answer's own name: ω₃ for ω₃ is no working.
+std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
+                                        const std::string& text, const std::string& message) {
+  const auto& names = ctx.key.defined_names;
+  const auto of = [&](const std::string& word) {
+    const std::string spelled = defined_spelling(word);
+    return std::find_if(names.begin(), names.end(), [&](const DefinedName& d) {
+      return d.name == spelled && d.name != a.name && !ctx.table.contains(d.name);
+    });
+  };
+  const std::string name = undefined_name(message);
+  if (name.empty() || names.empty() || looks_like_latex(text)) return std::nullopt;
+  // "I₃ω₃", "MglI₁": run together as a hand writes a product, apart as the problem's own symbols
+  // are. The name refused must be one of them, or hold one.
+  sym::SymbolTable with_names = ctx.table;
+  for (const DefinedName& d : names) {
+    if (!with_names.contains(d.name)) with_names.declare(d.name, "", sym::SymbolSign::real);
+  }
+  const auto is_defined = [&](const std::string& word) -> std::optional<std::string> {
+    return of(word) == names.end() ? std::nullopt : std::optional<std::string>(word);
+  };
+  if (!names_replaced(names_apart(name, with_names), is_defined).second) return std::nullopt;
+  std::vector<bool> read(names.size(), false);
+  const auto [out, found] =
+      names_replaced(names_apart(sym::to_ascii(text), with_names),
+                     [&](const std::string& word) -> std::optional<std::string> {
+                       const auto it = of(word);
+                       if (it == names.end()) return std::nullopt;
+                       read[static_cast<std::size_t>(it - names.begin())] = true;
+                       return kPutIn + it->symbolic + kPutInEnd;
+                     });
+  if (!found) return std::nullopt;
+  std::string forms, yours;  // in the key's order, whatever the answer's
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (!read[i]) continue;
+    const std::string shown = sym::to_unicode(names[i].name);
+    forms += fmt::format("{}{} = {} ({})", forms.empty() ? "" : ", ", shown,
+                         sym::to_unicode(names[i].symbolic), names[i].meaning);
+    yours += (yours.empty() ? "" : ", ") + shown;
+    ++count;
+  }
+  return Referenced{
+      brackets_put_in(out),
+      fmt::format("read with {}, as the key's steps write {}: right as far as "
+                  "your {} {}",
+                  forms, count == 1 ? "it" : "them", yours, count == 1 ? "is" : "are")};
+}
+
 // judge_one for the whole answer or the value after a label: an answer in terms of an earlier
 // one, "I₀ diag(2, 2, 1)", "π/Ω_space_rate", is read with the key's closed form for it
 // (answer_referenced), and the feedback says so. Not for a side that may be a label or an
@@ -893,6 +983,7 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
   } catch (const InputError& e) {
     std::optional<Referenced> referenced = convention_named(ctx, text, e.what());
     const bool convention = referenced.has_value();
+    if (!referenced) referenced = defined_named(ctx, a, text, e.what());
     if (!referenced) referenced = answer_referenced(ctx, a, text, e.what());
     if (!referenced) throw;
     const std::exception_ptr refusal = std::current_exception();

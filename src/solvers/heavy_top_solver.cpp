@@ -495,6 +495,11 @@ Key solve_heavy_top(const Problem& problem, const sym::Values& values) {
   const Top t(problem, values);
   Key key = assemble_parts(problem, [&](const std::string& q) { return quantity(t, q); });
   key.held = t.held;
+  // The steps write the answers in I1, I3 and ω3, as the lecture does; so may a student.
+  key.defined_names = {
+      {"I1", sym::to_text(t.I1, t.table), "the moment about a transverse axis through the pivot"},
+      {"I3", sym::to_text(t.I3, t.table), "the moment about the axle"},
+      {"omega3", sym::to_text(t.w3, t.table), "the spin about the axle"}};
   return key;
 }
 

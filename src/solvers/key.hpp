@@ -183,6 +183,16 @@ struct ConventionName {
   std::string parameter;  ///< the problem's: "alpha"
 };
 
+/// A name the solver's steps write for a quantity of this problem that is no parameter of it (the
+/// heavy top's I1 and I3, its moments about the pivot), with its exact form at these values. A
+/// student may write an answer as the steps do; `wobble check` reads the name as that form and
+/// says so.
+struct DefinedName {
+  std::string name;      ///< as GiNaC text: "I3"
+  std::string symbolic;  ///< its exact form, GiNaC text: "1/2*M*R^2"
+  std::string meaning;   ///< what it is, for that line: "the moment about the axle"
+};
+
 struct Key {
   std::string problem, title, source, statement;
   std::optional<long> variant;  ///< the student's variant the values are drawn for, if any
@@ -196,6 +206,9 @@ struct Key {
   /// ("Taylor's"); not in the JSON key (its notes say them).
   std::vector<ConventionName> convention_names;
   std::string convention;
+  /// The names the steps write for quantities that are no parameter; not in the JSON key (the
+  /// steps say them).
+  std::vector<DefinedName> defined_names;
   std::vector<PartKey> parts;
 };
 

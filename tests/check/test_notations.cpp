@@ -1202,6 +1202,61 @@ TEST_CASE("a parameter's name but for its 0 is named with the parameter, not rea
                       !Catch::Contains("the problem's is"));
 }
 
+TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and says so") {
+  // The steps write p_ψ = I₃ ω₃, ω₃ ≥ 2 √(M g l I₁)/I₃: a student writes the answers so too. The
+  // names read as the key's exact forms, and the line says which, as for an earlier answer.
+  const Fixture top("heavy-top");
+  const std::string i1 = "I1 = M·(4·l² + R²)/4 (the moment about a transverse axis through the "
+                         "pivot)",
+                    i3 = "I3 = M·R²/2 (the moment about the axle)",
+                    w3 = "ω3 = ψ̇0 (the spin about the axle)";
+  const std::string one = "read with " + i3 +
+                          ", as the key's steps write it: right as far as "
+                          "your I3 is";
+  const std::string spin = "read with " + i3 + ", " + w3 +
+                           ", as the key's steps write them: right as far as your I3, ω3 are";
+  for (const auto& [name, typed, note] : std::vector<std::array<std::string, 3>>{
+           {"p_psi", "I₃ ψ̇₀", one},
+           {"p_psi", "I_3 psidot0", one},
+           {"p_psi", "I3 (ψ̇0)", one},
+           {"p_psi", "I₃ω₃", spin},
+           {"p_psi", "I_3 w_3", spin},
+           {"p_phi", "I3 ω3 cos θ0", spin},
+           {"energy", "½ I₃ ψ̇₀² + M g l cos θ₀", one},
+           {"omega3_min", "2√(MglI₁)/I₃",
+            "read with " + i1 + ", " + i3 +
+                ", as the key's steps write them: right as far as your I1, I3 are"}}) {
+    INFO(name << ": " << typed);
+    const auto v = top.check(name, typed);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{note});
+  }
+  // Read so, a wrong answer is wrong: the transverse moment for the axial one, and the fast
+  // top's approximation, which is said as such.
+  const auto transverse = top.check("p_phi", "I1 ψ̇0 cos θ0");
+  REQUIRE_FALSE(transverse.correct);
+  REQUIRE_THAT(transverse.feedback.back(), Catch::StartsWith("read with " + i1));
+  const auto fast_top = top.check("phidot_slow", "M g l/(I3 ω3)");
+  REQUIRE_FALSE(fast_top.correct);
+  REQUIRE_THAT(fast_top.feedback.front(), Catch::StartsWith("this is the fast-top approximation"));
+  REQUIRE(fast_top.feedback.back() == spin);
+  // With an earlier answer's name too, each is said.
+  const auto both = top.check("omega3", "p_ψ/I₃");
+  REQUIRE(both.correct);
+  REQUIRE(both.feedback.size() == 2);
+  // Not the answer's own name: ω₃ for ω₃ is no working.
+  REQUIRE_THROWS_WITH(top.check("omega3", "ω₃"),
+                      Catch::Contains("omega3 is the answer to part (c)"));
+  // Where another name still keeps the answer from reading, that one is said.
+  REQUIRE_THROWS_WITH(top.check("omega3_min", "2√(M g l I₁)/q"),
+                      Catch::Contains("undefined symbol 'q'"));
+  // A body whose key names no moments keeps the textbook name's line (the flying plate's I₀ is
+  // an answer of its own).
+  const Fixture plate("flying-plate");
+  REQUIRE_THROWS_WITH(plate.check("Omega_body_rate", "(I3 - I1)/I1 ω cos α"),
+                      Catch::Contains("I3, a principal moment of the body, is no symbol here"));
+}
+
 TEST_CASE("a textbook formula's principal moment or ω component is named as such") {
   // (I3 - I1)/I1 ω3 is the general rate, before this body's moments are put in.
   const Fixture plate("flying-plate");
@@ -1209,9 +1264,9 @@ TEST_CASE("a textbook formula's principal moment or ω component is named as suc
                       Catch::Contains("I3, a principal moment of the body, is no symbol here"));
   REQUIRE_THROWS_WITH(plate.check("Omega_body_rate", "ω_3 (m R^2/2 - m R^2/4)/(m R^2/4)"),
                       Catch::Contains("omega_3, a component of ω along the body's axes"));
-  const Fixture top("heavy-top");
-  REQUIRE_THROWS_WITH(top.check("p_psi", "I_3 psidot0"),
+  REQUIRE_THROWS_WITH(plate.check("Omega_body_rate", "(I_3 - I_1)/I_1 ω cos α"),
                       Catch::Contains("I_3, a principal moment of the body"));
+  const Fixture top("heavy-top");
   // Where such a name is the problem's own symbol, it reads (the asymmetric top's w1).
   const Fixture asym("asymmetric-top");
   REQUIRE(asym.check("energy", "(I₁ω₁² + I₂ω₂² + I₃ω₃²)/2").correct);

@@ -1,6 +1,7 @@
 // Students' answers: numbers with units, vectors, matrices and expressions, judged against a
-// number, a vector and a matrix of real keys; and against a rotation and a vector of angles of
-// the PHY 711 problem, whose key names Taylor's φ, θ, ψ for its α, β, γ.
+// number, a vector and a matrix of real keys; against a rotation and a vector of angles of the
+// PHY 711 problem, whose key names Taylor's φ, θ, ψ for its α, β, γ; and against the heavy top's
+// p_phi, whose key reads I₁, I₃, ω₃ as its steps write them.
 #include <set>
 #include <string>
 #include <utility>
@@ -30,8 +31,9 @@ struct Fixture {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const Fixture plate("flying-plate", {"I0", "I", "L0_body", "angle_L_e3"});
   static const Fixture phy711("euler-angles-phy711", {"R_phy711", "angles_phy711"});
+  static const Fixture top("heavy-top", {"p_phi"});
   const std::string text = wobble::fuzz::text_of(data, size);
-  for (const Fixture* f : {&plate, &phy711}) {
+  for (const Fixture* f : {&plate, &phy711, &top}) {
     for (const auto& part : f->key.parts) {
       for (const auto& a : part.answers) {
         if (f->judged.count(a.name) == 0) continue;
