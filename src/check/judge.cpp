@@ -788,15 +788,16 @@ std::string convention_latex(const std::string& name) {
   return letter[0] == '\\' ? "\\dot" + letter : "\\dot{" + letter + "}";
 }
 
-// The LaTeX answer as plain text, read with the convention's names as symbols too ("\dot\phi"
-// as phidot); nullopt where it reads no better so. Where the convention's name was what kept it
-// from reading (`refused`) and something else still does, that is said instead.
-std::optional<std::string> latex_with_convention_names(const Context& ctx, const std::string& latex,
-                                                       const std::string& refused) {
+// The LaTeX answer as plain text, read with `extra` (name, LaTeX) as symbols too (Taylor's
+// "\\dot\\phi" as phidot, the heavy top's "I_3" as I3); nullopt where it reads no better so.
+// Where such a name was what kept it from reading (`refused`) and something else still does,
+// that is said instead.
+std::optional<std::string> latex_with_names(
+    const Context& ctx, const std::string& latex, const std::string& refused,
+    const std::vector<std::pair<std::string, std::string>>& extra) {
   sym::SymbolTable with_names = ctx.table;
-  for (const ConventionName& c : ctx.key.convention_names) {
-    if (!with_names.contains(c.name))
-      with_names.declare(c.name, convention_latex(c.name), sym::SymbolSign::real);
+  for (const auto& [name, name_latex] : extra) {
+    if (!with_names.contains(name)) with_names.declare(name, name_latex, sym::SymbolSign::real);
   }
   try {
     return latex_as_text(latex, with_names, kField);
@@ -819,7 +820,9 @@ std::optional<Referenced> convention_named(const Context& ctx, const std::string
   if (names.empty()) return std::nullopt;
   std::string ascii;
   if (looks_like_latex(text)) {
-    const std::optional<std::string> plain = latex_with_convention_names(ctx, text, message);
+    std::vector<std::pair<std::string, std::string>> extra;
+    for (const ConventionName& c : names) extra.emplace_back(c.name, convention_latex(c.name));
+    const std::optional<std::string> plain = latex_with_names(ctx, text, message, extra);
     if (!plain) return std::nullopt;
     ascii = *plain;
   } else {
@@ -922,8 +925,8 @@ std::string defined_spelling(const std::string& word) {
 
 // `text` with the names the key's steps write for quantities of this problem (key.hpp's
 // DefinedName: the heavy top's I₁, I₃, ω₃) as their exact forms in brackets, where the reader's
-// `message` found one undefined, and the line that says so; nullopt otherwise (LaTeX is left
-// alone, as with an earlier answer's name). Never the answer's own name: ω₃ for ω₃ is no working.
+// `message` found one undefined (in LaTeX, where the text reads with them), and the line that
+// says so; nullopt otherwise. Never the answer's own name: ω₃ for ω₃ is no working.
 std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
                                         const std::string& text, const std::string& message) {
   const auto& names = ctx.key.defined_names;
@@ -933,27 +936,38 @@ std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
       return d.name == spelled && d.name != a.name && !ctx.table.contains(d.name);
     });
   };
-  const std::string name = undefined_name(message);
-  if (name.empty() || names.empty() || looks_like_latex(text)) return std::nullopt;
-  // "I₃ω₃", "MglI₁": run together as a hand writes a product, apart as the problem's own symbols
-  // are. The name refused must be one of them, or hold one.
-  sym::SymbolTable with_names = ctx.table;
-  for (const DefinedName& d : names) {
-    if (!with_names.contains(d.name)) with_names.declare(d.name, "", sym::SymbolSign::real);
+  if (names.empty()) return std::nullopt;
+  std::string ascii;
+  if (looks_like_latex(text)) {
+    // "I_3\\omega_3": the LaTeX reader finds each by its letters and subscript.
+    std::vector<std::pair<std::string, std::string>> extra;
+    for (const DefinedName& d : names) extra.emplace_back(d.name, "");
+    const std::optional<std::string> plain = latex_with_names(ctx, text, message, extra);
+    if (!plain) return std::nullopt;
+    ascii = *plain;
+  } else {
+    // "I₃ω₃", "MglI₁": run together as a hand writes a product, apart as the problem's own
+    // symbols are. The name refused must be one of them, or hold one.
+    sym::SymbolTable with_names = ctx.table;
+    for (const DefinedName& d : names) {
+      if (!with_names.contains(d.name)) with_names.declare(d.name, "", sym::SymbolSign::real);
+    }
+    const auto is_defined = [&](const std::string& word) -> std::optional<std::string> {
+      return of(word) == names.end() ? std::nullopt : std::optional<std::string>(word);
+    };
+    const std::string name = undefined_name(message);
+    if (name.empty() || !names_replaced(names_apart(name, with_names), is_defined).second)
+      return std::nullopt;
+    ascii = names_apart(sym::to_ascii(text), with_names);
   }
-  const auto is_defined = [&](const std::string& word) -> std::optional<std::string> {
-    return of(word) == names.end() ? std::nullopt : std::optional<std::string>(word);
-  };
-  if (!names_replaced(names_apart(name, with_names), is_defined).second) return std::nullopt;
   std::vector<bool> read(names.size(), false);
   const auto [out, found] =
-      names_replaced(names_apart(sym::to_ascii(text), with_names),
-                     [&](const std::string& word) -> std::optional<std::string> {
-                       const auto it = of(word);
-                       if (it == names.end()) return std::nullopt;
-                       read[static_cast<std::size_t>(it - names.begin())] = true;
-                       return kPutIn + it->symbolic + kPutInEnd;
-                     });
+      names_replaced(ascii, [&](const std::string& word) -> std::optional<std::string> {
+        const auto it = of(word);
+        if (it == names.end()) return std::nullopt;
+        read[static_cast<std::size_t>(it - names.begin())] = true;
+        return kPutIn + it->symbolic + kPutInEnd;
+      });
   if (!found) return std::nullopt;
   std::string forms, yours;  // in the key's order, whatever the answer's
   std::size_t count = 0;

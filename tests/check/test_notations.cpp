@@ -1225,6 +1225,12 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
            {"energy", "½ I₃ ψ̇₀² + M g l cos θ₀", one},
            {"omega3_min", "2√(MglI₁)/I₃",
             "read with " + i1 + ", " + i3 +
+                ", as the key's steps write them: right as far as your I1, I3 are"},
+           // In LaTeX, as the key's LaTeX steps write them.
+           {"p_psi", "I_3\\omega_3", spin},
+           {"p_phi", "I_{3} \\dot\\psi_0 \\cos\\theta_0", one},
+           {"omega3_min", "\\frac{2\\sqrt{M g l I_1}}{I_3}",
+            "read with " + i1 + ", " + i3 +
                 ", as the key's steps write them: right as far as your I1, I3 are"}}) {
     INFO(name << ": " << typed);
     const auto v = top.check(name, typed);
@@ -1250,6 +1256,8 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
   // Where another name still keeps the answer from reading, that one is said.
   REQUIRE_THROWS_WITH(top.check("omega3_min", "2√(M g l I₁)/q"),
                       Catch::Contains("undefined symbol 'q'"));
+  REQUIRE_THROWS_WITH(top.check("omega3_min", "\\frac{2\\sqrt{M g l I_1}}{q}"),
+                      Catch::Contains("q is not one of this problem's symbols"));
   // A body whose key names no moments keeps the textbook name's line (the flying plate's I₀ is
   // an answer of its own).
   const Fixture plate("flying-plate");
