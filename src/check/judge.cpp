@@ -777,27 +777,31 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
                                      r->name, part->id, sym::to_unicode(r->symbolic))};
 }
 
-// A convention's name as LaTeX draws it, "phidot" -> "\dot\phi", as a problem file spells its own.
-std::string convention_latex(const std::string& name) {
+// A name as LaTeX draws it, as a problem file spells its own: "phidot" -> "\dot\phi", "omega3"
+// -> "\omega_3", "I1" -> "I_1". The LaTeX reader lists the symbols so.
+std::string name_latex(const std::string& name) {
+  std::size_t digits = name.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
+  std::string base = name.substr(0, digits);
+  const std::string sub = name.substr(digits);
   const std::string_view rate = "dot";
-  const bool dot =
-      name.size() > rate.size() && name.compare(name.size() - rate.size(), rate.size(), rate) == 0;
-  const std::string base = dot ? name.substr(0, name.size() - rate.size()) : name;
-  const std::string letter = sym::greek_letters().count(base) ? "\\" + base : base;
-  if (!dot) return letter;
-  return letter[0] == '\\' ? "\\dot" + letter : "\\dot{" + letter + "}";
+  const bool dot = base.size() > rate.size() && base.ends_with(rate);
+  if (dot) base.resize(base.size() - rate.size());
+  std::string letter = sym::greek_letters().count(base) ? "\\" + base : base;
+  if (dot) letter = letter[0] == '\\' ? "\\dot" + letter : "\\dot{" + letter + "}";
+  return sub.empty() ? letter : letter + "_" + sub;
 }
 
 // The LaTeX answer as plain text, read with `extra` (name, LaTeX) as symbols too (Taylor's
-// "\\dot\\phi" as phidot, the heavy top's "I_3" as I3); nullopt where it reads no better so.
+// "\dot\phi" as phidot, the heavy top's "I_3" as I3); nullopt where it reads no better so.
 // Where such a name was what kept it from reading (`refused`) and something else still does,
 // that is said instead.
 std::optional<std::string> latex_with_names(
     const Context& ctx, const std::string& latex, const std::string& refused,
     const std::vector<std::pair<std::string, std::string>>& extra) {
   sym::SymbolTable with_names = ctx.table;
-  for (const auto& [name, name_latex] : extra) {
-    if (!with_names.contains(name)) with_names.declare(name, name_latex, sym::SymbolSign::real);
+  for (const auto& [name, drawn] : extra) {
+    if (!with_names.contains(name)) with_names.declare(name, drawn, sym::SymbolSign::real);
   }
   try {
     return latex_as_text(latex, with_names, kField);
@@ -821,7 +825,7 @@ std::optional<Referenced> convention_named(const Context& ctx, const std::string
   std::string ascii;
   if (looks_like_latex(text)) {
     std::vector<std::pair<std::string, std::string>> extra;
-    for (const ConventionName& c : names) extra.emplace_back(c.name, convention_latex(c.name));
+    for (const ConventionName& c : names) extra.emplace_back(c.name, name_latex(c.name));
     const std::optional<std::string> plain = latex_with_names(ctx, text, message, extra);
     if (!plain) return std::nullopt;
     ascii = *plain;
@@ -939,9 +943,9 @@ std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
   if (names.empty()) return std::nullopt;
   std::string ascii;
   if (looks_like_latex(text)) {
-    // "I_3\\omega_3": the LaTeX reader finds each by its letters and subscript.
+    // "I_3\omega_3": the LaTeX reader finds each by its letters and subscript.
     std::vector<std::pair<std::string, std::string>> extra;
-    for (const DefinedName& d : names) extra.emplace_back(d.name, "");
+    for (const DefinedName& d : names) extra.emplace_back(d.name, name_latex(d.name));
     const std::optional<std::string> plain = latex_with_names(ctx, text, message, extra);
     if (!plain) return std::nullopt;
     ascii = *plain;
