@@ -792,66 +792,97 @@ std::string name_latex(const std::string& name) {
   return sub.empty() ? letter : letter + "_" + sub;
 }
 
-// The LaTeX answer as plain text, read with `extra` (name, LaTeX) as symbols too (Taylor's
-// "\dot\phi" as phidot, the heavy top's "I_3" as I3); nullopt where it reads no better so.
-// Where such a name was what kept it from reading (`refused`) and something else still does,
-// that is said instead.
-std::optional<std::string> latex_with_names(
-    const Context& ctx, const std::string& latex, const std::string& refused,
-    const std::vector<std::pair<std::string, std::string>>& extra) {
+// Whether two refusals of the LaTeX reader name the same thing: the same text, or the same
+// symbol refused whatever the symbols they list.
+bool same_refusal(std::string_view a, std::string_view b) {
+  constexpr std::string_view kUnknown = " is not one of this problem's symbols";
+  const std::size_t at_a = a.find(kUnknown), at_b = b.find(kUnknown);
+  if (at_a == std::string_view::npos || at_b == std::string_view::npos) return a == b;
+  return a.substr(0, at_a) == b.substr(0, at_b);
+}
+
+// What names_put_in read: the text with forms put in for names, and which names it read.
+struct NamesPutIn {
+  std::string text;
+  std::vector<bool> read;
+};
+
+// `text` with each of `names` (GiNaC text) that `index_of` knows replaced by its `form`, where
+// the reader's `message` refused one of them, run together with others or not ("φ̇θ", "I₃ω₃");
+// in LaTeX, where the text reads with them declared ("\dot\phi", "I_3"), and where it then
+// still does not, what else keeps it from reading is said. nullopt where no such name is read.
+std::optional<NamesPutIn> names_put_in(
+    const Context& ctx, const std::string& text, const std::string& message,
+    const std::vector<std::string>& names,
+    const std::function<std::optional<std::size_t>(const std::string&)>& index_of,
+    const std::function<std::string(std::size_t)>& form) {
+  if (names.empty()) return std::nullopt;
   sym::SymbolTable with_names = ctx.table;
-  for (const auto& [name, drawn] : extra) {
-    if (!with_names.contains(name)) with_names.declare(name, drawn, sym::SymbolSign::real);
+  for (const std::string& name : names) {
+    if (!with_names.contains(name))
+      with_names.declare(name, name_latex(name), sym::SymbolSign::real);
   }
-  try {
-    return latex_as_text(latex, with_names, kField);
-  } catch (const InputError& e) {
-    if (std::string_view(e.what()) == refused) return std::nullopt;
-    throw;
+  std::string ascii;
+  if (looks_like_latex(text)) {
+    try {
+      ascii = latex_as_text(text, with_names, kField);
+    } catch (const InputError& with) {
+      // Where the names make no difference to what the LaTeX reader refuses, the refusal
+      // stands as it was (that symbol, or "ẑ, ê₃ mix bases" from a later reading).
+      const std::exception_ptr with_names_refusal = std::current_exception();
+      try {
+        (void)latex_as_text(text, ctx.table, kField);
+      } catch (const InputError& without) {
+        if (!same_refusal(with.what(), without.what())) std::rethrow_exception(with_names_refusal);
+      }
+      return std::nullopt;
+    }
+  } else {
+    const auto ours = [&](const std::string& word) -> std::optional<std::string> {
+      return index_of(word) ? std::optional<std::string>(word) : std::nullopt;
+    };
+    const std::string refused = undefined_name(message);
+    if (refused.empty() || !names_replaced(names_apart(refused, with_names), ours).second)
+      return std::nullopt;
+    ascii = names_apart(sym::to_ascii(text), with_names);
   }
+  NamesPutIn put{"", std::vector<bool>(names.size(), false)};
+  const auto [replaced, found] =
+      names_replaced(ascii, [&](const std::string& word) -> std::optional<std::string> {
+        const std::optional<std::size_t> i = index_of(word);
+        if (!i) return std::nullopt;
+        put.read[*i] = true;
+        return form(*i);
+      });
+  if (!found) return std::nullopt;
+  put.text = replaced;
+  return put;
 }
 
 // `text` with the convention's names (key.hpp's ConventionName: Taylor's φ for PHY 711's α)
-// written as the parameters they are here, where the reader's `message` found one undefined
-// (in LaTeX, where the text reads with them), and the line that says which; nullopt otherwise.
+// written as the parameters they are here (names_put_in), and the line that says which.
 std::optional<Referenced> convention_named(const Context& ctx, const std::string& text,
                                            const std::string& message) {
   const auto& names = ctx.key.convention_names;
-  const auto of = [&](const std::string& word) {
-    return std::find_if(names.begin(), names.end(),
-                        [&](const ConventionName& c) { return c.name == word; });
+  std::vector<std::string> spelled;
+  for (const ConventionName& c : names) spelled.push_back(c.name);
+  const auto index_of = [&](const std::string& word) -> std::optional<std::size_t> {
+    const auto it = std::find(spelled.begin(), spelled.end(), word);
+    if (it == spelled.end()) return std::nullopt;
+    return static_cast<std::size_t>(it - spelled.begin());
   };
-  if (names.empty()) return std::nullopt;
-  std::string ascii;
-  if (looks_like_latex(text)) {
-    std::vector<std::pair<std::string, std::string>> extra;
-    for (const ConventionName& c : names) extra.emplace_back(c.name, name_latex(c.name));
-    const std::optional<std::string> plain = latex_with_names(ctx, text, message, extra);
-    if (!plain) return std::nullopt;
-    ascii = *plain;
-  } else {
-    const std::string name = undefined_name(message);
-    if (name.empty() || of(name) == names.end()) return std::nullopt;
-    ascii = sym::to_ascii(text);
-  }
-  std::vector<bool> read(names.size(), false);
-  const auto [out, found] =
-      names_replaced(ascii, [&](const std::string& word) -> std::optional<std::string> {
-        const auto it = of(word);
-        if (it == names.end()) return std::nullopt;
-        read[static_cast<std::size_t>(it - names.begin())] = true;
-        return it->parameter;
-      });
-  if (!found) return std::nullopt;
+  const std::optional<NamesPutIn> put = names_put_in(
+      ctx, text, message, spelled, index_of, [&](std::size_t i) { return names[i].parameter; });
+  if (!put) return std::nullopt;
   std::string lines;  // in the convention's order, whatever the answer's
   for (std::size_t i = 0; i < names.size(); ++i) {
-    if (read[i]) {
+    if (put->read[i]) {
       lines += (lines.empty() ? "" : ", ") + sym::to_unicode(names[i].name) + " = " +
                sym::to_unicode(names[i].parameter);
     }
   }
-  return Referenced{out, fmt::format("read in {} names, as this problem's symbols: {}",
-                                     ctx.key.convention, lines)};
+  return Referenced{put->text, fmt::format("read in {} names, as this problem's symbols: {}",
+                                           ctx.key.convention, lines)};
 }
 
 // judge_as_written, and where a wrong answer calls EllipticK or EllipticE, whether it is right
@@ -928,55 +959,26 @@ std::string defined_spelling(const std::string& word) {
 }
 
 // `text` with the names the key's steps write for quantities of this problem (key.hpp's
-// DefinedName: the heavy top's I₁, I₃, ω₃) as their exact forms in brackets, where the reader's
-// `message` found one undefined (in LaTeX, where the text reads with them), and the line that
-// says so; nullopt otherwise. Never the answer's own name: ω₃ for ω₃ is no working.
+// DefinedName: the heavy top's I₁, I₃, ω₃) as their exact forms in brackets (names_put_in), and
+// the line that says so. Never the answer's own name: ω₃ for ω₃ is no working.
 std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
                                         const std::string& text, const std::string& message) {
   const auto& names = ctx.key.defined_names;
-  const auto of = [&](const std::string& word) {
-    const std::string spelled = defined_spelling(word);
-    return std::find_if(names.begin(), names.end(), [&](const DefinedName& d) {
-      return d.name == spelled && d.name != a.name && !ctx.table.contains(d.name);
-    });
+  std::vector<std::string> spelled;
+  for (const DefinedName& d : names) spelled.push_back(d.name);
+  const auto index_of = [&](const std::string& word) -> std::optional<std::size_t> {
+    const auto it = std::find(spelled.begin(), spelled.end(), defined_spelling(word));
+    if (it == spelled.end() || *it == a.name || ctx.table.contains(*it)) return std::nullopt;
+    return static_cast<std::size_t>(it - spelled.begin());
   };
-  if (names.empty()) return std::nullopt;
-  std::string ascii;
-  if (looks_like_latex(text)) {
-    // "I_3\omega_3": the LaTeX reader finds each by its letters and subscript.
-    std::vector<std::pair<std::string, std::string>> extra;
-    for (const DefinedName& d : names) extra.emplace_back(d.name, name_latex(d.name));
-    const std::optional<std::string> plain = latex_with_names(ctx, text, message, extra);
-    if (!plain) return std::nullopt;
-    ascii = *plain;
-  } else {
-    // "I₃ω₃", "MglI₁": run together as a hand writes a product, apart as the problem's own
-    // symbols are. The name refused must be one of them, or hold one.
-    sym::SymbolTable with_names = ctx.table;
-    for (const DefinedName& d : names) {
-      if (!with_names.contains(d.name)) with_names.declare(d.name, "", sym::SymbolSign::real);
-    }
-    const auto is_defined = [&](const std::string& word) -> std::optional<std::string> {
-      return of(word) == names.end() ? std::nullopt : std::optional<std::string>(word);
-    };
-    const std::string name = undefined_name(message);
-    if (name.empty() || !names_replaced(names_apart(name, with_names), is_defined).second)
-      return std::nullopt;
-    ascii = names_apart(sym::to_ascii(text), with_names);
-  }
-  std::vector<bool> read(names.size(), false);
-  const auto [out, found] =
-      names_replaced(ascii, [&](const std::string& word) -> std::optional<std::string> {
-        const auto it = of(word);
-        if (it == names.end()) return std::nullopt;
-        read[static_cast<std::size_t>(it - names.begin())] = true;
-        return kPutIn + it->symbolic + kPutInEnd;
-      });
-  if (!found) return std::nullopt;
+  const std::optional<NamesPutIn> put =
+      names_put_in(ctx, text, message, spelled, index_of,
+                   [&](std::size_t i) { return kPutIn + names[i].symbolic + kPutInEnd; });
+  if (!put) return std::nullopt;
   std::string forms, yours;  // in the key's order, whatever the answer's
   std::size_t count = 0;
   for (std::size_t i = 0; i < names.size(); ++i) {
-    if (!read[i]) continue;
+    if (!put->read[i]) continue;
     const std::string shown = sym::to_unicode(names[i].name);
     forms += fmt::format("{}{} = {} ({})", forms.empty() ? "" : ", ", shown,
                          sym::to_unicode(names[i].symbolic), names[i].meaning);
@@ -984,10 +986,9 @@ std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
     ++count;
   }
   return Referenced{
-      brackets_put_in(out),
-      fmt::format("read with {}, as the key's steps write {}: right as far as "
-                  "your {} {}",
-                  forms, count == 1 ? "it" : "them", yours, count == 1 ? "is" : "are")};
+      brackets_put_in(put->text),
+      fmt::format("read with {}, as the key's steps write {}: right as far as your {} {}", forms,
+                  count == 1 ? "it" : "them", yours, count == 1 ? "is" : "are")};
 }
 
 // judge_one for the whole answer or the value after a label: an answer in terms of an earlier
