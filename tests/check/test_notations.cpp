@@ -762,6 +762,9 @@ TEST_CASE("the PHY 711 problem reads Taylor's φ, θ, ψ as its α, β, γ, and 
             "read in Taylor's names, as this problem's symbols: θ = β, φ̇ = α̇, θ̇ = β̇, ψ̇ = γ̇"},
            {"kinetic_energy", "I1/2 (φ̇² sin²θ + θ̇²) + I3/2 (φ̇ cos θ + ψ̇)²",
             "read in Taylor's names, as this problem's symbols: θ = β, φ̇ = α̇, θ̇ = β̇, ψ̇ = γ̇"},
+           // Run together with the problem's own names, as a hand writes a product.
+           {"L_primed", "(−I1φ̇ sin θ, I1θ̇, I3(φ̇cosθ + ψ̇))",
+            "read in Taylor's names, as this problem's symbols: θ = β, φ̇ = α̇, θ̇ = β̇, ψ̇ = γ̇"},
            // In LaTeX, as a LaTeX key of Taylor's problem writes them.
            {"angles_zxz", "(\\phi + \\frac{\\pi}{2}, \\theta, \\psi - \\pi/2)", all},
            {"omega_primed",
