@@ -1001,8 +1001,10 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
     return judge_one(ctx, a, text, options);
   } catch (const InputError& e) {
     std::optional<Referenced> referenced = convention_named(ctx, text, e.what());
-    const bool convention = referenced.has_value();
     if (!referenced) referenced = defined_named(ctx, a, text, e.what());
+    // A name the key itself reads (a convention's, its steps'), unlike an answer's name, is no
+    // longer what keeps the answer from reading.
+    const bool key_names = referenced.has_value();
     if (!referenced) referenced = answer_referenced(ctx, a, text, e.what());
     if (!referenced) throw;
     const std::exception_ptr refusal = std::current_exception();
@@ -1021,9 +1023,9 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
       // The same entry refused both times ("entry 1: "), or the quote is another entry's.
       const bool same_entry = end1 != std::string::npos && end2 != std::string::npos &&
                               first.compare(0, at1, second, 0, at2) == 0;
-      // The convention's names read, what still keeps the answer from reading is said: a
-      // vector for a matrix, or another entry's unknown name.
-      if (convention && (other.empty() || !same_entry)) throw;
+      // The key's names read, what still keeps the answer from reading is said: a vector for
+      // a matrix or a number, or another entry's unknown name.
+      if (key_names && (other.empty() || !same_entry)) throw;
       if (other.empty() || other == undefined_name(first) || !same_entry)
         std::rethrow_exception(refusal);  // the name as it was refused, with its hint
       throw InputError(second.substr(0, at2) + first.substr(at1, end1 - at1) + second.substr(end2));

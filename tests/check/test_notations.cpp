@@ -1261,6 +1261,9 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
                       Catch::Contains("undefined symbol 'q'"));
   REQUIRE_THROWS_WITH(top.check("omega3_min", "\\frac{2\\sqrt{M g l I_1}}{q}"),
                       Catch::Contains("q is not one of this problem's symbols"));
+  // The names read, a vector for a number is what is said, not that I₃ is no symbol.
+  REQUIRE_THROWS_WITH(top.check("p_psi", "(I3, ω3)"),
+                      Catch::Contains("not a 2-vector") && !Catch::Contains("no symbol here"));
   // A body whose key names no moments keeps the textbook name's line (the flying plate's I₀ is
   // an answer of its own).
   const Fixture plate("flying-plate");
