@@ -841,7 +841,9 @@ std::optional<NamesPutIn> names_put_in(
     const auto ours = [&](const std::string& word) -> std::optional<std::string> {
       return index_of(word) ? std::optional<std::string>(word) : std::nullopt;
     };
-    const std::string refused = undefined_name(message);
+    // "ψ̇₀ I₃": after a value the reader takes a word for its unit, and refuses the unit.
+    std::string refused = undefined_name(message);
+    if (refused.empty()) refused = sym::to_ascii(quoted_after(message, "cannot read the unit"));
     if (refused.empty() || !names_replaced(names_apart(refused, with_names), ours).second)
       return std::nullopt;
     ascii = names_apart(sym::to_ascii(text), with_names);
@@ -1023,6 +1025,10 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
       // The same entry refused both times ("entry 1: "), or the quote is another entry's.
       const bool same_entry = end1 != std::string::npos && end2 != std::string::npos &&
                               first.compare(0, at1, second, 0, at2) == 0;
+      // "150 rad/s I₃": the names read for a word taken as a unit, but the rest does not read
+      // as an expression; the refusal of the unit, as typed, says more than the forms put in.
+      const bool unit_refused = !quoted_after(first, "cannot read the unit").empty();
+      if (unit_refused && !other.empty()) std::rethrow_exception(refusal);
       // The key's names read, what still keeps the answer from reading is said: a vector for
       // a matrix or a number, or another entry's unknown name.
       if (key_names && (other.empty() || !same_entry)) throw;

@@ -1222,6 +1222,9 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
            {"p_psi", "I₃ ψ̇₀", one},
            {"p_psi", "I_3 psidot0", one},
            {"p_psi", "I3 (ψ̇0)", one},
+           // After a value, the reader takes a word for its unit: the name is read all the same.
+           {"p_psi", "ψ̇₀ I₃", one},
+           {"p_psi", "(ψ̇0) I_3", one},
            {"p_psi", "I₃ω₃", spin},
            {"p_psi", "I_3 w_3", spin},
            {"p_phi", "I3 ω3 cos θ0", spin},
@@ -1261,6 +1264,11 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
                       Catch::Contains("undefined symbol 'q'"));
   REQUIRE_THROWS_WITH(top.check("omega3_min", "\\frac{2\\sqrt{M g l I_1}}{q}"),
                       Catch::Contains("q is not one of this problem's symbols"));
+  // A unit the names do not make read stays the unit's refusal, as typed, not the forms put in.
+  REQUIRE_THROWS_WITH(top.check("p_psi", "ψ̇0 q"), Catch::Contains("cannot read the unit 'q'"));
+  REQUIRE_THROWS_WITH(
+      top.check("p_psi", "150 rad/s I3"),
+      Catch::Contains("cannot read the unit 'rad/s I3'") && !Catch::Contains("M*R^2/2"));
   // The names read, a vector for a number is what is said, not that I₃ is no symbol.
   REQUIRE_THROWS_WITH(top.check("p_psi", "(I3, ω3)"),
                       Catch::Contains("not a 2-vector") && !Catch::Contains("no symbol here"));
