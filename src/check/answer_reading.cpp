@@ -1574,11 +1574,47 @@ ReadAnswer read_answer(const std::string& typed, const sym::SymbolTable& table,
 
 namespace {
 // read_answer, with a transpose mark read.
+// "transpose(X)", as MATLAB, NumPy (np.transpose) and Mathematica (Transpose[X]) write it: "(X)ᵀ",
+// what follows (a unit) kept; "Rᵀ", a name alone marked so, "(R)ᵀ" (a name may be an earlier
+// answer's matrix; "R^T" reads as a power until then). `typed` itself otherwise.
+std::string transpose_called(const std::string& typed) {
+  const std::string t = trim(typed);
+  constexpr std::string_view kMark = kTransposeMarks[0];
+  if (t.size() > kMark.size() && t.ends_with(kMark)) {
+    const std::string name = t.substr(0, t.size() - kMark.size());
+    if (std::isalpha(static_cast<unsigned char>(name[0])) &&
+        std::all_of(name.begin(), name.end(),
+                    [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }))
+      return "(" + name + ")" + std::string(kMark);
+  }
+  for (const std::string_view name : {"transpose", "Transpose", "np.transpose"}) {
+    if (!t.starts_with(name) || t.size() == name.size() || !opens(t[name.size()])) continue;
+    const std::size_t close = matching(t, name.size());
+    if (close == std::string::npos) break;
+    return "(" + t.substr(name.size() + 1, close - name.size() - 1) + ")ᵀ" + t.substr(close + 1);
+  }
+  return typed;
+}
+
+// "([[a, b], [c, d]])" -> "[[a, b], [c, d]]": round brackets about one vector or matrix, as a
+// transpose mark needs them about a name ("(R)ᵀ"), taken off; what follows (a unit) kept.
+std::string list_unwrapped(const std::string& text) {
+  std::string t = trim(text);
+  while (!t.empty() && t[0] == '(') {
+    const std::size_t close = matching(t, 0);
+    if (close == std::string::npos) break;
+    const std::string inner = trim(t.substr(1, close - 1));
+    if (!wrapped(inner, '[') && !wrapped(inner, '(')) break;
+    t = inner + t.substr(close + 1);
+  }
+  return t;
+}
+
 ReadAnswer read_transposed(const std::string& typed, const sym::SymbolTable& table,
                            const std::string& field) {
-  const auto [untransposed, transposed] = without_transpose(typed);
+  const auto [untransposed, transposed] = without_transpose(transpose_called(typed));
   if (!transposed) return read_as_written(typed, table, field);
-  ReadAnswer p = read_as_written(untransposed, table, field);
+  ReadAnswer p = read_as_written(list_unwrapped(untransposed), table, field);
   // "(1 + x)^T" with T a symbol is a power: only a vector or matrix is transposed.
   if (!p.value.is_vector && !p.value.is_matrix) return read_as_written(typed, table, field);
   // A column or a row is the same vector; a matrix is read as the transpose it asks for.
