@@ -247,6 +247,13 @@ std::string undefined_name(const std::string& message) {
   return quoted_after(message, "undefined symbol");
 }
 
+// undefined_name, or the text the reader took for a unit and refused: after a value it takes a
+// word for its unit ("ψ̇₀ I₃", "2 L0_body"), where a name may be meant.
+std::string refused_name(const std::string& message) {
+  const std::string name = undefined_name(message);
+  return name.empty() ? sym::to_ascii(quoted_after(message, "cannot read the unit")) : name;
+}
+
 // The hint of the first name in `typed` that has one ("I₀ diag(1, 1, 2)", as question (a)
 // writes I), the name the reader found undefined first (in "½I₃ω₃²" the text runs I₃ and ω₃
 // together; the reader, its stars written in, names ω₃).
@@ -701,7 +708,9 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
 
 // The answer `name` names where `a` may be written in terms of it, as question (a) of the
 // rectangular solid writes I = I₀ diag(..) and t_max is π/Ω_space_rate: a number with a closed
-// form, of a part before a's or of a's own, not `a` itself; else nullptr.
+// form, of a part before a's or of a's own, not `a` itself; or a vector or matrix so, as PHY
+// 711's R(α, β, γ) is Taylor's R transposed (R_zyzᵀ), which reads only where its shape does.
+// Else nullptr.
 const Answer* referable_answer(const Context& ctx, const Answer& a, const std::string& name) {
   const std::string named = name_in_key(ctx.key, name);
   for (const auto& part : ctx.key.parts) {
@@ -714,10 +723,7 @@ const Answer* referable_answer(const Context& ctx, const Answer& a, const std::s
         found = &other;
       }
     }
-    if (found != nullptr) {
-      const bool number = found->value.shape == Value::Shape::scalar && !found->symbolic.empty();
-      return number ? found : nullptr;
-    }
+    if (found != nullptr) return found->symbolic.empty() ? nullptr : found;
     if (own) return nullptr;  // a's part is the last that may hold it
   }
   return nullptr;
@@ -759,12 +765,14 @@ struct Referenced {
 };
 std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
                                             const std::string& text, const std::string& message) {
-  const std::string name = undefined_name(message);
+  const std::string name = refused_name(message);
   const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
   if (r == nullptr || looks_like_latex(text)) return std::nullopt;
   const auto [out, found] = names_replaced(
       sym::to_ascii(text), [&](const std::string& word) -> std::optional<std::string> {
         if (name_in_key(ctx.key, word) != r->name) return std::nullopt;
+        // A vector's or matrix's own brackets hold it (round ones about it would not read).
+        if (r->value.shape != Value::Shape::scalar) return r->symbolic;
         return "(" + r->symbolic + ")";
       });
   if (!found) return std::nullopt;
@@ -772,9 +780,12 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
     return std::any_of(p.answers.begin(), p.answers.end(),
                        [&](const Answer& x) { return &x == r; });
   });
-  return Referenced{out, fmt::format("read with {0} = {2}, the key's answer to part ({1}): "
+  // A matrix's closed form is nine entries long: its name says which.
+  const std::string as =
+      r->value.shape == Value::Shape::scalar ? " = " + sym::to_unicode(r->symbolic) + "," : " as";
+  return Referenced{out, fmt::format("read with {0}{2} the key's answer to part ({1}): "
                                      "right as far as your {0} is",
-                                     r->name, part->id, sym::to_unicode(r->symbolic))};
+                                     r->name, part->id, as)};
 }
 
 // A name as LaTeX draws it, as a problem file spells its own: "phidot" -> "\dot\phi", "omega3"
@@ -841,9 +852,7 @@ std::optional<NamesPutIn> names_put_in(
     const auto ours = [&](const std::string& word) -> std::optional<std::string> {
       return index_of(word) ? std::optional<std::string>(word) : std::nullopt;
     };
-    // "ψ̇₀ I₃": after a value the reader takes a word for its unit, and refuses the unit.
-    std::string refused = undefined_name(message);
-    if (refused.empty()) refused = sym::to_ascii(quoted_after(message, "cannot read the unit"));
+    const std::string refused = refused_name(message);
     if (refused.empty() || !names_replaced(names_apart(refused, with_names), ours).second)
       return std::nullopt;
     ascii = names_apart(sym::to_ascii(text), with_names);

@@ -575,6 +575,38 @@ TEST_CASE(
   REQUIRE_FALSE(plate.check("L0_body", "m R² ω sin α/4 e₁ + m R² ω cos α/2 e₃ m").correct);
 }
 
+TEST_CASE("a matrix answered as an earlier one transposed, R_zyzᵀ, reads in every spelling") {
+  // PHY 711's R(α, β, γ) acts on components: it is Taylor's R transposed, as the steps say.
+  const Fixture phy711("euler-angles-phy711");
+  const std::string note =
+      "read with R_zyz as the key's answer to part (a): right as far as your R_zyz is";
+  for (const char* same : {"R_zyz^T", "R_zyzᵀ", "(R_zyz)ᵀ", "R_zyz'", "transpose(R_zyz)",
+                           "np.transpose(R_zyz)", "R_phy711 = R_zyz^T"}) {
+    INFO(same);
+    const auto v = phy711.check("R_phy711", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{note});
+  }
+  // Untransposed it is the other matrix, and said so.
+  const auto untransposed = phy711.check("R_phy711", "R_zyz");
+  REQUIRE_FALSE(untransposed.correct);
+  REQUIRE_THAT(untransposed.feedback.front(), Catch::Contains("this is R_zyz (part a)"));
+  // A matrix of numbers transposed by a call, or in round brackets before its mark, as MATLAB,
+  // NumPy and Mathematica write it.
+  const std::string zyz = typed(phy711.answer("R_zyz").value);  // "[[..], [..], [..]]"
+  for (const std::string& same : {"transpose(" + zyz + ")", "Transpose[" + zyz + "]",
+                                  "(" + zyz + ")ᵀ", "((" + zyz + "))^T"}) {
+    INFO(same);
+    REQUIRE(phy711.check("R_phy711", same).correct);
+    REQUIRE_FALSE(phy711.check("R_zyz", same).correct);
+  }
+  // A name that is no answer, transposed, is refused as that name.
+  REQUIRE_THROWS_WITH(phy711.check("R_phy711", "Qᵀ"), Catch::Contains("undefined symbol 'Q'"));
+  // transpose of a number is no transpose: the function is refused as unknown.
+  REQUIRE_THROWS_WITH(phy711.check("kinetic_energy", "transpose(2)"),
+                      Catch::Contains("unknown function 'transpose'"));
+}
+
 TEST_CASE("angle brackets write a vector; a transpose mark transposes a matrix") {
   const Fixture euler("euler-angles");
   const Answer& zyz = euler.answer("R_zyz");

@@ -841,10 +841,18 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
   REQUIRE(value_wrong.feedback.at(0) == "the side \"0.2 s\" of your '='");
   REQUIRE_THAT(plate.check("t_max", "2π/Ω_space_rate = " + t_max).feedback.back(),
                Catch::Contains("taken as a label"));
-  // Not a vector (no closed form to put in a product), not a later part's answer, not the answer
-  // itself: refused with whose name it is.
-  REQUIRE_THROWS_WITH(plate.check("L0_space", "L0_body"),
-                      Catch::Contains("L0_body is the answer to part (b)"));
+  // A vector's name reads where a vector does: L in space at t = 0 is L in the body, the frames
+  // being one then. Its closed form is not written out in the line, its name says which.
+  const auto at_start = plate.check("L0_space", "L0_body");
+  REQUIRE(at_start.correct);
+  REQUIRE(at_start.feedback == std::vector<std::string>{"read with L0_body as the key's answer to "
+                                                        "part (b): right as far as your L0_body "
+                                                        "is"});
+  // After a number, where a unit would stand, the name is read all the same: twice L is wrong.
+  const auto twice = plate.check("L0_space", "2 L0_body");
+  REQUIRE_FALSE(twice.correct);
+  REQUIRE_THAT(twice.feedback.front(), Catch::StartsWith("this is 2 times the answer"));
+  // Not a later part's answer, not the answer itself: refused with whose name it is.
   REQUIRE_THROWS_WITH(plate.check("Omega_space_rate", "2 t_max/π"),
                       Catch::Contains("t_max is the answer to part (h)"));
   REQUIRE_THROWS_WITH(plate.check("t_max", "t_max"),
