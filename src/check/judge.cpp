@@ -780,9 +780,12 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
     return std::any_of(p.answers.begin(), p.answers.end(),
                        [&](const Answer& x) { return &x == r; });
   });
-  // A matrix's closed form is nine entries long: its name says which.
-  const std::string as =
-      r->value.shape == Value::Shape::scalar ? " = " + sym::to_unicode(r->symbolic) + "," : " as";
+  // A matrix's closed form is nine entries long, the tennis racket's period some 400 characters:
+  // there the name says which, and the form is the key's to look up. One line's worth is shown.
+  constexpr std::size_t kLongestFormShown = 80;
+  const bool shown =
+      r->value.shape == Value::Shape::scalar && r->symbolic.size() <= kLongestFormShown;
+  const std::string as = shown ? " = " + sym::to_unicode(r->symbolic) + "," : " as";
   return Referenced{out, fmt::format("read with {0}{2} the key's answer to part ({1}): "
                                      "right as far as your {0} is",
                                      r->name, part->id, as)};
