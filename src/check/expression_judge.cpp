@@ -187,11 +187,16 @@ std::function<void(const sym::Values&)> key_values(const Context& ctx, const Ans
   return [&ctx, &a, &key](const sym::Values& point) { (void)at_point(ctx, a, key, key, point); };
 }
 
-// Whether two sets of values agree to kIdentityTolerance (relative, absolute below 1).
-bool agree(const std::vector<double>& got, const std::vector<double>& want) {
+// Whether two sets of values agree to kIdentityTolerance relative to the largest of `want`'s
+// entries (a vector's zero component against its size), or to `zero_scale` (judge.hpp) where
+// every entry is zero. Not absolute below 1: in SI the Earth's wobble rate is 2.4e-7 rad/s and
+// its angle 1e-6 rad, where 1e-9 absolute would pass an answer 0.1% off as the key's form.
+bool agree(const std::vector<double>& got, const std::vector<double>& want, double zero_scale) {
+  double scale = 0.0;
+  for (const double w : want) scale = std::max(scale, std::abs(w));
+  if (scale == 0.0) scale = zero_scale;
   for (std::size_t i = 0; i < want.size(); ++i) {
-    if (std::abs(got[i] - want[i]) > kIdentityTolerance * std::max(1.0, std::abs(want[i])))
-      return false;
+    if (std::abs(got[i] - want[i]) > kIdentityTolerance * scale) return false;
   }
   return true;
 }
@@ -203,7 +208,7 @@ bool equals_everywhere(const Context& ctx, const Answer& a, const sym::ValueText
   for (const auto& point : points) {
     try {
       const auto [got, want] = at_point(ctx, a, value, key, point);
-      if (!agree(got, want)) return false;
+      if (!agree(got, want, zero_scale(ctx.key, a))) return false;
     } catch (const InputError&) {
       return false;
     }
@@ -475,7 +480,7 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
       if (n == 0) throw;
       got.clear();
     }
-    if (!got.empty() && agree(got, want)) continue;
+    if (!got.empty() && agree(got, want, j.scale)) continue;
     const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
     const auto dimension = dimension_verdict(ctx, a, p.value, key, key_unit);
     const std::string differs =

@@ -1582,6 +1582,24 @@ TEST_CASE("an expression right at the set values only is told so, not named anot
   const Fixture euler_top("euler-angles");
   REQUIRE_THAT(euler_top.check("kinetic_energy", "½I₃(ψ̇ + φ̇ cos θ)²").feedback.at(0),
                Catch::Contains("a small term left out"));
+  // An answer far below 1 in SI is held to the same relative digits: the Earth's wobble rate is
+  // 2.4e-7 rad/s and L's angle 1e-6 rad, where an absolute 1e-9 passed forms 0.07% and 0.01%
+  // off as the key's (1.2 H for H, a factor 1.0001), and said of Hω, 0.3% off, that it gives
+  // the key's value at the set values.
+  const Fixture earth("earth-free-precession");
+  for (const auto& [name, close] : std::vector<std::pair<std::string, std::string>>{
+           {"angle_L_e3", "α(1 - 1.2H)"},
+           {"angle_L_e3", "α(1 - H - 0.0001)"},
+           {"Omega_body_rate", "Hω"},
+           {"Omega_body_rate", "1.0001 Hω cos α/(1 - H)"}}) {
+    INFO(name << ": " << close);
+    const auto v = earth.check(name, close);
+    REQUIRE_FALSE(v.correct);
+    REQUIRE_THAT(v.feedback.at(0), Catch::Contains("a small term left out"));
+  }
+  // The small-angle form of the exact atan2 is the key's to 1e-12 at every point: right.
+  REQUIRE(earth.check("angle_L_e3", "α(1 - H)").correct);
+  REQUIRE(earth.check("Omega_body_rate", "(C - C(1 - H))/(C(1 - H)) ω cos α").correct);
   // Where no parameter has the number's value (m/0.1 is 2 here), no symbol is named.
   REQUIRE_THAT(
       plate.check("I0", "m R^2/4 * (m/0.1)/2").feedback.at(0),
