@@ -706,13 +706,30 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
   return v;
 }
 
+// The one answer whose name begins with `name` and '_' ("Omega_body" for Omega_body_rate, as
+// the Earth's question (a) writes Ω_body), where `name` is no answer's own; "" otherwise (two
+// begin so: "Omega" for Omega_body_rate and Omega_space_rate).
+std::string answer_begun(const Key& key, const std::string& name) {
+  std::string found;
+  for (const auto& part : key.parts) {
+    for (const auto& answer : part.answers) {
+      if (name_in_key(key, name) == answer.name) return "";
+      if (!answer.name.starts_with(name + "_")) continue;
+      if (!found.empty()) return "";
+      found = answer.name;
+    }
+  }
+  return found;
+}
+
 // The answer `name` names where `a` may be written in terms of it, as question (a) of the
 // rectangular solid writes I = I₀ diag(..) and t_max is π/Ω_space_rate: a number with a closed
 // form, of a part before a's or of a's own, not `a` itself; or a vector or matrix so, as PHY
 // 711's R(α, β, γ) is Taylor's R transposed (R_zyzᵀ), which reads only where its shape does.
 // Else nullptr.
 const Answer* referable_answer(const Context& ctx, const Answer& a, const std::string& name) {
-  const std::string named = name_in_key(ctx.key, name);
+  std::string named = name_in_key(ctx.key, name);
+  if (const std::string begun = answer_begun(ctx.key, name); !begun.empty()) named = begun;
   for (const auto& part : ctx.key.parts) {
     bool own = false;
     const Answer* found = nullptr;
@@ -770,7 +787,8 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
   if (r == nullptr || looks_like_latex(text)) return std::nullopt;
   const auto [out, found] = names_replaced(
       sym::to_ascii(text), [&](const std::string& word) -> std::optional<std::string> {
-        if (name_in_key(ctx.key, word) != r->name) return std::nullopt;
+        if (name_in_key(ctx.key, word) != r->name && answer_begun(ctx.key, word) != r->name)
+          return std::nullopt;
         // A vector's or matrix's own brackets hold it (round ones about it would not read).
         if (r->value.shape != Value::Shape::scalar) return r->symbolic;
         return "(" + r->symbolic + ")";
@@ -785,10 +803,16 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
   constexpr std::size_t kLongestFormShown = 80;
   const bool shown =
       r->value.shape == Value::Shape::scalar && r->symbolic.size() <= kLongestFormShown;
-  const std::string as = shown ? " = " + sym::to_unicode(r->symbolic) + "," : " as";
-  return Referenced{out, fmt::format("read with {0}{2} the key's answer to part ({1}): "
-                                     "right as far as your {0} is",
-                                     r->name, part->id, as)};
+  // Ω_body for Omega_body_rate: the name as typed, and the answer it is read as.
+  const bool begun = name_in_key(ctx.key, name) != r->name;
+  const std::string yours = begun ? sym::to_unicode(name) : r->name;
+  const std::string subject = begun ? yours + " as " + r->name : r->name;
+  const std::string read = shown   ? subject + " = " + sym::to_unicode(r->symbolic) + ","
+                           : begun ? subject + ","
+                                   : subject + " as";
+  return Referenced{out, fmt::format("read with {} the key's answer to part ({}): right as far "
+                                     "as your {} is",
+                                     read, part->id, yours)};
 }
 
 // A name as LaTeX draws it, as a problem file spells its own: "phidot" -> "\dot\phi", "omega3"

@@ -880,6 +880,18 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
   }
   // A name that is no answer gets no such line.
   REQUIRE_THROWS_WITH(plate.check("I0", "M R^2/4"), !Catch::Contains("is the answer to"));
+  // Ω_body as the Earth's question (a) writes the answer Omega_body_rate: the one answer the
+  // name begins is read, and the line says which; Ω alone begins two and is refused.
+  const Fixture wobble_rate("earth-free-precession");
+  const auto euler_period = wobble_rate.check("precession_period_body", "2π/Ω_body");
+  REQUIRE(euler_period.correct);
+  REQUIRE(euler_period.feedback ==
+          std::vector<std::string>{"read with Omega_body as Omega_body_rate = -H·ω·cos(α)/(H - "
+                                   "1), the key's answer to part (a): right as far as your "
+                                   "Omega_body is"});
+  REQUIRE_FALSE(wobble_rate.check("precession_period_body", "π/Ω_body").correct);
+  REQUIRE_THROWS_WITH(wobble_rate.check("Omega_body_rate", "Ω_body"),
+                      Catch::Contains("Omega_body names the answer Omega_body_rate (part (a))"));
   // Ω as a book writes the precession rate: the answers it names, and no "unit 'pi/Omega'".
   const Fixture earth("earth-free-precession");
   REQUIRE_THROWS_WITH(
