@@ -250,6 +250,12 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       i = j;
       continue;
     }
+    // "Days", "SECONDS", "Rad": a word in capitals, as a sentence or a table's heading starts
+    // it. Three letters or more, so that no prefixed symbol ("Ms", megaseconds) is read so.
+    if (const std::string lower = ascii_lower(name);
+        lower != name && lower.size() >= 3 && !names().count(name) && !prefixed(name) &&
+        (names().count(lower) || spellings().count(lower)))
+      name = lower;
     if (const auto spelled = spellings().find(name); spelled != spellings().end())
       name = spelled->second;
     const auto it = names().find(name);

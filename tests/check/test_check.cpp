@@ -28,6 +28,7 @@
 using namespace wobble;
 using namespace wobble::check;
 using Catch::Matchers::WithinRel;
+using Catch::Matchers::WithinULP;
 
 namespace {
 // An answer written the way a student types it: numbers to 17 digits, vectors and matrices in
@@ -77,6 +78,25 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
     REQUIRE_THAT(parse_unit(kilograms, "u").to_si, WithinRel(1.0, 1e-15));
     REQUIRE(parse_unit(kilograms, "u").dim == std::array<int, 3>{1, 2, 0});
   }
+  // A word in capitals, as a sentence or a table's heading starts it: each the unit it spells.
+  for (const auto& [capitals, plain] :
+       std::vector<std::pair<std::string, std::string>>{{"Days", "day"},
+                                                        {"DAYS", "day"},
+                                                        {"Hours", "h"},
+                                                        {"Seconds", "s"},
+                                                        {"SEC", "s"},
+                                                        {"Weeks", "week"},
+                                                        {"Years", "yr"},
+                                                        {"Degrees", "deg"},
+                                                        {"RAD", "rad"},
+                                                        {"Radians per Second", "rad/s"}}) {
+    CAPTURE(capitals);
+    REQUIRE_THAT(parse_unit(capitals, "u").to_si, WithinULP(parse_unit(plain, "u").to_si, 0));
+    REQUIRE(parse_unit(capitals, "u").dim == parse_unit(plain, "u").dim);
+  }
+  // Not a prefixed symbol: Ms is a megasecond, ms a millisecond.
+  REQUIRE_THAT(parse_unit("Ms", "u").to_si, WithinRel(1e6, 1e-15));
+  REQUIRE_THAT(parse_unit("ms", "u").to_si, WithinRel(1e-3, 1e-15));
   // Powers without a caret, as the SI writes them and a PDF's "m²" pastes.
   REQUIRE(parse_unit("kg m2 s-1", "u").dim == std::array<int, 3>{1, 2, -1});
   REQUIRE(parse_unit("kg m2/s", "u").dim == std::array<int, 3>{1, 2, -1});
