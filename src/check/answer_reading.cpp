@@ -360,6 +360,39 @@ std::string arc_marks_read(const std::string& s) {
   return out;
 }
 
+// "|x|" -> "abs(x)", as a student writes a magnitude ("π/|Ω|", "m |R|^2/4"; "‖x‖" alike): a bar
+// after an operand closes the one open at its bracket depth, any other opens one. Bars that do
+// not pair are left as typed, for the reader to refuse.
+std::string bars_as_abs(const std::string& text) {
+  std::string s = text;
+  for (auto at = s.find("‖"); at != std::string::npos; at = s.find("‖", at))
+    s.replace(at, std::string_view("‖").size(), "|");
+  if (s.find('|') == std::string::npos) return text;
+  std::string out;
+  std::vector<int> open_at_depth;
+  int depth = 0;
+  for (const char c : s) {
+    if (c == '(' || c == '[' || c == '{') ++depth;
+    if (c == ')' || c == ']' || c == '}') --depth;
+    if (c != '|') {
+      out += c;
+      continue;
+    }
+    const std::size_t last = out.find_last_not_of(' ');
+    const char before = last == std::string::npos ? '\0' : out[last];
+    const bool after_operand = std::isalnum(static_cast<unsigned char>(before)) || before == ')' ||
+                               before == ']' || before == '.';
+    if (after_operand && !open_at_depth.empty() && open_at_depth.back() == depth) {
+      out += ')';
+      open_at_depth.pop_back();
+    } else {
+      out += after_operand ? " abs(" : "abs(";  // "2|x|": a product, as "2 abs(x)" reads
+      open_at_depth.push_back(depth);
+    }
+  }
+  return open_at_depth.empty() ? out : text;
+}
+
 // ASCII, one line, a numeric exponent's sign in parentheses.
 std::string prepared(const std::string& typed, const std::string& field) {
   // Angle brackets, as calculus writes a vector ("⟨1, 2, 3⟩", "<1, 2, 3>"): no expression
@@ -370,8 +403,8 @@ std::string prepared(const std::string& typed, const std::string& field) {
     for (auto at = bracketed.find(angle); at != std::string::npos; at = bracketed.find(angle, at))
       bracketed.replace(at, std::string(angle).size(), square);
   }
-  std::string s =
-      arc_marks_read(sym::to_ascii(greek_letters_apart(sym::letters_folded(bracketed))));
+  std::string s = bars_as_abs(
+      arc_marks_read(sym::to_ascii(greek_letters_apart(sym::letters_folded(bracketed)))));
   // "Sqrt[m]", "np.sqrt(m)", "R.^2": as Mathematica, Python and MATLAB write them.
   s = as_programs_mean(s);
   for (char& c : s) {

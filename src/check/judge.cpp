@@ -780,20 +780,71 @@ std::pair<std::string, bool> names_replaced(
 struct Referenced {
   std::string text, note;
 };
+// `ascii` with the magnitude of the vector answer `r` put in where the text takes it of r's
+// name, "|Omega_space|" or "norm(Omega_space)", as the flying plate's statement writes
+// t = π/|Ω_space|: sqrt of the sum of its entries' squares; and whether it was.
+std::pair<std::string, bool> magnitudes_put_in(
+    const std::string& ascii, const Answer& r,
+    const std::function<bool(const std::string&)>& names_r) {
+  if (r.value.shape != Value::Shape::vector) return {ascii, false};
+  std::string squares;
+  for (const std::string& entry : list_items(r.symbolic).items)
+    squares += (squares.empty() ? "(" : "+(") + entry + ")^2";
+  const std::string magnitude = "(sqrt(" + squares + "))";
+  std::string out;
+  bool found = false;
+  for (std::size_t i = 0; i < ascii.size();) {
+    const bool bar = ascii[i] == '|';
+    const bool norm = ascii.compare(i, 5, "norm(") == 0 &&
+                      (i == 0 || !std::isalnum(static_cast<unsigned char>(ascii[i - 1])));
+    const std::size_t from = i + (bar ? 1 : norm ? 5 : 0);
+    const std::size_t to = bar ? ascii.find('|', from) : norm ? ascii.find(')', from) : 0;
+    if ((bar || norm) && to != std::string::npos && names_r(trim(ascii.substr(from, to - from)))) {
+      out += magnitude;
+      found = true;
+      i = to + 1;
+      continue;
+    }
+    out += ascii[i++];
+  }
+  return {out, found};
+}
+
+// The name inside the first |..| or norm(..) of `ascii` ("Omega_space" in "pi/|Omega_space|"),
+// or "": the reader refuses "norm" as a function before it comes to the name.
+std::string name_in_magnitude(const std::string& ascii) {
+  for (const std::string_view open : {"|", "norm("}) {
+    const std::size_t at = ascii.find(open);
+    if (at == std::string::npos) continue;
+    const std::size_t from = at + open.size();
+    const std::size_t to = ascii.find(open == "|" ? '|' : ')', from);
+    if (to != std::string::npos) return trim(ascii.substr(from, to - from));
+  }
+  return "";
+}
+
 std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
                                             const std::string& text, const std::string& message) {
-  const std::string name = refused_name(message);
+  // "‖Ω_space‖", a norm's double bars, as single ones.
+  std::string ascii = sym::to_ascii(text);
+  for (std::size_t at = ascii.find("‖"); at != std::string::npos; at = ascii.find("‖"))
+    ascii.replace(at, std::string_view("‖").size(), "|");
+  std::string name = refused_name(message);
+  if (name.empty()) name = name_in_magnitude(ascii);
   const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
   if (r == nullptr || looks_like_latex(text)) return std::nullopt;
-  const auto [out, found] = names_replaced(
-      sym::to_ascii(text), [&](const std::string& word) -> std::optional<std::string> {
-        if (name_in_key(ctx.key, word) != r->name && answer_begun(ctx.key, word) != r->name)
-          return std::nullopt;
+  const auto names_r = [&](const std::string& word) {
+    return name_in_key(ctx.key, word) == r->name || answer_begun(ctx.key, word) == r->name;
+  };
+  const auto [with_magnitudes, magnitude] = magnitudes_put_in(ascii, *r, names_r);
+  const auto [out, named] =
+      names_replaced(with_magnitudes, [&](const std::string& word) -> std::optional<std::string> {
+        if (!names_r(word)) return std::nullopt;
         // A vector's or matrix's own brackets hold it (round ones about it would not read).
         if (r->value.shape != Value::Shape::scalar) return r->symbolic;
         return "(" + r->symbolic + ")";
       });
-  if (!found) return std::nullopt;
+  if (!magnitude && !named) return std::nullopt;
   const auto part = std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
     return std::any_of(p.answers.begin(), p.answers.end(),
                        [&](const Answer& x) { return &x == r; });

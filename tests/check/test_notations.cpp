@@ -901,6 +901,31 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
           !Catch::Contains("unit"));
 }
 
+TEST_CASE("a magnitude in bars reads, of an expression or of an earlier vector answer") {
+  // |x| as a student writes it, with a bar after an operand closing the one open.
+  const Fixture plate("flying-plate");
+  for (const char* same :
+       {"|m R^2/4|", "m |R|^2/4", "|−m R²/4|", "2|m R^2/8|", "|m| |R|^2/4", "‖m R²/4‖"}) {
+    INFO(same);
+    REQUIRE(plate.check("I0", same).correct);
+  }
+  REQUIRE_FALSE(plate.check("I0", "|m R^2/2|").correct);
+  // A bar that pairs with none is refused, not dropped.
+  REQUIRE_THROWS_AS(plate.check("I0", "m R^2/4 |"), InputError);
+  // The statement writes t = π/|Ω_space|: the vector answer's magnitude, and the line says so.
+  const std::string note =
+      "read with Omega_space as the key's answer to part (e): right as far as your Omega_space is";
+  for (const char* same : {"π/|Ω_space|", "pi/norm(Omega_space)", "π/‖Ω_space‖"}) {
+    INFO(same);
+    const auto v = plate.check("t_max", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{note});
+  }
+  REQUIRE_FALSE(plate.check("t_max", "2π/|Ω_space|").correct);
+  // The magnitude of a name that is no answer is refused as that name.
+  REQUIRE_THROWS_WITH(plate.check("t_max", "π/|Q|"), Catch::Contains("undefined symbol 'Q'"));
+}
+
 TEST_CASE(
     "a part's answers in one box, each labelled: this answer's is judged, the rest said not") {
   // Both precession rates of the heavy top's part (d), as a student writes them down.
