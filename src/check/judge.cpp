@@ -710,10 +710,11 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
 // the Earth's question (a) writes Ω_body), where `name` is no answer's own; "" otherwise (two
 // begin so: "Omega" for Omega_body_rate and Omega_space_rate).
 std::string answer_begun(const Key& key, const std::string& name) {
+  const std::string own = name_in_key(key, name);
   std::string found;
   for (const auto& part : key.parts) {
     for (const auto& answer : part.answers) {
-      if (name_in_key(key, name) == answer.name) return "";
+      if (own == answer.name) return "";
       if (!answer.name.starts_with(name + "_")) continue;
       if (!found.empty()) return "";
       found = answer.name;
