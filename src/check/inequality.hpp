@@ -24,7 +24,12 @@ struct Range {
   std::string lower, quantity, upper;
   std::string sign;  ///< the first as written: "≤", "<", "\leq", ...
 };
-/// nullopt where `text` is no such chain (one comparison, three, or two that point both ways).
+/// Or an interval, "θ ∈ [30°, 44.7°]" or "theta in [0.52, 0.78]" (`sign` "∈" or "in"). nullopt
+/// where `text` is no such chain (one comparison, three, or two that point both ways).
 std::optional<Range> range_of(const std::string& text);
+
+/// "30° ≤ θ ≥ 44.7°": two comparisons that point both ways, written as a range ("30° ≤ θ ≤
+/// 44.7°", the first sign twice), for a message; nullopt otherwise.
+std::optional<std::string> range_both_ways(const std::string& text);
 
 }  // namespace wobble::check

@@ -1433,6 +1433,11 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   if (a.bound != AnswerBound::none && a.value.shape == Value::Shape::scalar) {
     if (const auto r = range_of(written)) return judge_range_end(ctx, a, *r, options);
     if (const auto q = inequality_of(written)) return judge_bound(ctx, a, *q, options);
+    if (const auto one_way = range_both_ways(written)) {
+      throw InputError(fmt::format(
+          "{}: the signs of your range point both ways; a range's point one way, as in {}", kField,
+          *one_way));
+    }
   } else if (inequality_of(written) || range_of(written)) {
     // "E < 8 J", "t ≤ 0.1612 s": no expression compares, and this answer is no bound.
     throw InputError(

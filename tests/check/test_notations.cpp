@@ -2293,7 +2293,9 @@ TEST_CASE("a range, as the nutation's limits are written, gives each bound its e
   const std::string low = degrees("theta_min"), high = degrees("theta_max");
   for (const std::string& range :
        {low + " ≤ θ ≤ " + high, high + " ≥ θ ≥ " + low, low + " < theta < " + high,
-        "θ₀ ≤ θ ≤ " + high, "\\theta_0 \\le \\theta \\le " + high}) {
+        "θ₀ ≤ θ ≤ " + high, "\\theta_0 \\le \\theta \\le " + high,
+        // An interval, closed or open.
+        "θ ∈ [" + low + ", " + high + "]", "theta in (" + low + ", " + high + ")"}) {
     INFO(range);
     const auto most = top.check("theta_max", range);
     REQUIRE(most.correct);
@@ -2304,6 +2306,13 @@ TEST_CASE("a range, as the nutation's limits are written, gives each bound its e
     REQUIRE(least.correct);
     REQUIRE_THAT(least.feedback.back(), Catch::Contains("the lower end of your range"));
   }
+  // An interval's unit after it is each end's.
+  const std::string in_radians =
+      fmt::format("θ ∈ [{:.6g}, {:.6g}] rad", top.answer("theta_min").value.data[0],
+                  top.answer("theta_max").value.data[0]);
+  const auto radians = top.check("theta_max", in_radians);
+  REQUIRE(radians.correct);
+  REQUIRE_THAT(radians.feedback.back(), Catch::Contains(" rad (its lower end) not judged here"));
   // Each end is judged for its own answer: a wrong upper end is wrong for theta_max only.
   const std::string too_high = low + " ≤ θ ≤ 50°";
   REQUIRE_FALSE(top.check("theta_max", too_high).correct);
@@ -2322,7 +2331,18 @@ TEST_CASE("a range, as the nutation's limits are written, gives each bound its e
   REQUIRE_FALSE(rule.correct);
   REQUIRE_THAT(rule.feedback.at(0), Catch::Contains("off by"));
   CHECK_FALSE(check::inequality_of("E -> 8"));
-  // Two comparisons that point both ways are no range.
+  // Two comparisons that point both ways are no range: a bound so written is told how a range
+  // is written, in its own ends.
+  REQUIRE_THROWS_WITH(top.check("theta_max", "30° ≤ θ ≥ 44.7°"),
+                      Catch::Contains("the signs of your range point both ways") &&
+                          Catch::Contains("30° ≤ θ ≤ 44.7°"));
+  CHECK(check::range_both_ways("1 ≥ θ ≤ 2") == "1 ≥ θ ≥ 2");
+  CHECK_FALSE(check::range_both_ways("1 ≤ θ ≤ 2"));
+  REQUIRE_THROWS_WITH(top.check("energy", "E ∈ [7, 8] J"),
+                      Catch::Contains("energy is a value, not a bound"));
+  CHECK_FALSE(check::range_of("θ ∈ [1]"));
+  CHECK_FALSE(check::range_of("θ ∈ [1, 2, 3]"));
+  CHECK_FALSE(check::range_of("∈ [1, 2]"));
   CHECK_FALSE(check::range_of("1 ≤ θ ≥ 2"));
   CHECK_FALSE(check::range_of("1 ≤ θ ≤ 2 ≤ 3"));
   CHECK_FALSE(check::range_of("θ ≤ 2"));
