@@ -7,7 +7,6 @@
 #include <cctype>
 #include <cmath>
 #include <exception>
-#include <functional>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -21,7 +20,7 @@
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
-#include "check/names_run_together.hpp"
+#include "check/names_put_in.hpp"
 #include "check/plus_minus.hpp"
 #include "check/program_notation.hpp"
 #include "check/symbol_values.hpp"
@@ -37,9 +36,15 @@
 
 namespace wobble::check {
 
+using detail::answer_referenced;
+using detail::convention_named;
+using detail::defined_named;
 using detail::Judge;
 using detail::judge_symbolic;
 using detail::kField;
+using detail::quoted_after;
+using detail::Referenced;
+using detail::undefined_name;
 
 namespace {
 // The sides of '=' judged at most: a key's line "closed form = value", its name dropped.
@@ -231,27 +236,6 @@ std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_te
   return fmt::format(
       "{} is also {}: after a number it reads as the unit; for the product, write the '*' ({})",
       words[0], what, product);
-}
-
-// The name a reader's message quotes after `what` ("undefined symbol 'T'"), or "".
-std::string quoted_after(const std::string& message, const std::string& what) {
-  const auto at = message.find(what + " '");
-  if (at == std::string::npos) return "";
-  const auto from = at + what.size() + 2;
-  const auto to = message.find('\'', from);
-  return to == std::string::npos ? "" : message.substr(from, to - from);
-}
-
-// The name a reader's message says is undefined ("undefined symbol 'T'"), or "".
-std::string undefined_name(const std::string& message) {
-  return quoted_after(message, "undefined symbol");
-}
-
-// undefined_name, or the text the reader took for a unit and refused: after a value it takes a
-// word for its unit ("ψ̇₀ I₃", "2 L0_body"), where a name may be meant.
-std::string refused_name(const std::string& message) {
-  const std::string name = undefined_name(message);
-  return name.empty() ? sym::to_ascii(quoted_after(message, "cannot read the unit")) : name;
 }
 
 // The hint of the first name in `typed` that has one ("I₀ diag(1, 1, 2)", as question (a)
@@ -706,275 +690,6 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
   return v;
 }
 
-// The one answer whose name begins with `name` and '_' ("Omega_body" for Omega_body_rate, as
-// the Earth's question (a) writes Ω_body), where `name` is no answer's own; "" otherwise (two
-// begin so: "Omega" for Omega_body_rate and Omega_space_rate).
-std::string answer_begun(const Key& key, const std::string& name) {
-  const std::string own = name_in_key(key, name);
-  std::string found;
-  for (const auto& part : key.parts) {
-    for (const auto& answer : part.answers) {
-      if (own == answer.name) return "";
-      if (!answer.name.starts_with(name + "_")) continue;
-      if (!found.empty()) return "";
-      found = answer.name;
-    }
-  }
-  return found;
-}
-
-// The answer `name` names where `a` may be written in terms of it, as question (a) of the
-// rectangular solid writes I = I₀ diag(..) and t_max is π/Ω_space_rate: a number with a closed
-// form, of a part before a's or of a's own, not `a` itself; or a vector or matrix so, as PHY
-// 711's R(α, β, γ) is Taylor's R transposed (R_zyzᵀ), which reads only where its shape does.
-// Else nullptr.
-const Answer* referable_answer(const Context& ctx, const Answer& a, const std::string& name) {
-  std::string named = name_in_key(ctx.key, name);
-  if (const std::string begun = answer_begun(ctx.key, name); !begun.empty()) named = begun;
-  for (const auto& part : ctx.key.parts) {
-    bool own = false;
-    const Answer* found = nullptr;
-    for (const auto& other : part.answers) {
-      if (&other == &a) {
-        own = true;
-      } else if (other.name == named) {
-        found = &other;
-      }
-    }
-    if (found != nullptr) return found->symbolic.empty() ? nullptr : found;
-    if (own) return nullptr;  // a's part is the last that may hold it
-  }
-  return nullptr;
-}
-
-// `ascii` with each name that `replacement` gives text for replaced by it, and whether any was;
-// a name starts at a letter after no letter, '_' or '.' ("2I0" is 2 times I0).
-std::pair<std::string, bool> names_replaced(
-    const std::string& ascii,
-    const std::function<std::optional<std::string>(const std::string&)>& replacement) {
-  std::string out;
-  bool found = false;
-  for (std::size_t i = 0; i < ascii.size();) {
-    const bool starts = std::isalpha(static_cast<unsigned char>(ascii[i])) &&
-                        (i == 0 || !(std::isalpha(static_cast<unsigned char>(ascii[i - 1])) ||
-                                     ascii[i - 1] == '_' || ascii[i - 1] == '.'));
-    if (!starts) {
-      out += ascii[i++];
-      continue;
-    }
-    std::size_t end = i;
-    while (end < ascii.size() &&
-           (std::isalnum(static_cast<unsigned char>(ascii[end])) || ascii[end] == '_'))
-      ++end;
-    const std::string word = ascii.substr(i, end - i);
-    const std::optional<std::string> put = replacement(word);
-    out += put ? *put : word;
-    found = found || put.has_value();
-    i = end;
-  }
-  return {out, found};
-}
-
-// `text` with another answer's name, the one the reader's `message` found undefined, written
-// as the key's closed form in brackets, and the line that says so; nullopt where that name is
-// no referable_answer or the text does not spell it as a name of its own (LaTeX is left alone).
-struct Referenced {
-  std::string text, note;
-};
-// `ascii` with the magnitude of the vector answer `r` put in where the text takes it of r's
-// name, "|Omega_space|" or "norm(Omega_space)", as the flying plate's statement writes
-// t = π/|Ω_space|: sqrt of the sum of its entries' squares; and whether it was.
-std::pair<std::string, bool> magnitudes_put_in(
-    const std::string& ascii, const Answer& r,
-    const std::function<bool(const std::string&)>& names_r) {
-  if (r.value.shape != Value::Shape::vector) return {ascii, false};
-  std::string squares;
-  for (const std::string& entry : list_items(r.symbolic).items)
-    squares += (squares.empty() ? "(" : "+(") + entry + ")^2";
-  const std::string magnitude = "(sqrt(" + squares + "))";
-  std::string out;
-  bool found = false;
-  for (std::size_t i = 0; i < ascii.size();) {
-    const bool bar = ascii[i] == '|';
-    const bool norm = ascii.compare(i, 5, "norm(") == 0 &&
-                      (i == 0 || !std::isalnum(static_cast<unsigned char>(ascii[i - 1])));
-    const std::size_t from = i + (bar ? 1 : norm ? 5 : 0);
-    const std::size_t to = bar ? ascii.find('|', from) : norm ? ascii.find(')', from) : 0;
-    if ((bar || norm) && to != std::string::npos && names_r(trim(ascii.substr(from, to - from)))) {
-      out += magnitude;
-      found = true;
-      i = to + 1;
-      continue;
-    }
-    out += ascii[i++];
-  }
-  return {out, found};
-}
-
-// The name inside the first |..| or norm(..) of `ascii` ("Omega_space" in "pi/|Omega_space|"),
-// or "": the reader refuses "norm" as a function before it comes to the name.
-std::string name_in_magnitude(const std::string& ascii) {
-  for (const std::string_view open : {"|", "norm("}) {
-    const std::size_t at = ascii.find(open);
-    if (at == std::string::npos) continue;
-    const std::size_t from = at + open.size();
-    const std::size_t to = ascii.find(open == "|" ? '|' : ')', from);
-    if (to != std::string::npos) return trim(ascii.substr(from, to - from));
-  }
-  return "";
-}
-
-std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
-                                            const std::string& text, const std::string& message) {
-  // "‖Ω_space‖", a norm's double bars, as single ones.
-  std::string ascii = sym::to_ascii(text);
-  for (std::size_t at = ascii.find("‖"); at != std::string::npos; at = ascii.find("‖"))
-    ascii.replace(at, std::string_view("‖").size(), "|");
-  std::string name = refused_name(message);
-  if (name.empty()) name = name_in_magnitude(ascii);
-  const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
-  if (r == nullptr || looks_like_latex(text)) return std::nullopt;
-  const auto names_r = [&](const std::string& word) {
-    return name_in_key(ctx.key, word) == r->name || answer_begun(ctx.key, word) == r->name;
-  };
-  const auto [with_magnitudes, magnitude] = magnitudes_put_in(ascii, *r, names_r);
-  const auto [out, named] =
-      names_replaced(with_magnitudes, [&](const std::string& word) -> std::optional<std::string> {
-        if (!names_r(word)) return std::nullopt;
-        // A vector's or matrix's own brackets hold it (round ones about it would not read).
-        if (r->value.shape != Value::Shape::scalar) return r->symbolic;
-        return "(" + r->symbolic + ")";
-      });
-  if (!magnitude && !named) return std::nullopt;
-  const auto part = std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
-    return std::any_of(p.answers.begin(), p.answers.end(),
-                       [&](const Answer& x) { return &x == r; });
-  });
-  // A matrix's closed form is nine entries long, the tennis racket's period some 400 characters:
-  // there the name says which, and the form is the key's to look up. One line's worth is shown.
-  constexpr std::size_t kLongestFormShown = 80;
-  const bool shown =
-      r->value.shape == Value::Shape::scalar && r->symbolic.size() <= kLongestFormShown;
-  // Ω_body for Omega_body_rate: the name as typed, and the answer it is read as.
-  const bool begun = name_in_key(ctx.key, name) != r->name;
-  const std::string yours = begun ? sym::to_unicode(name) : r->name;
-  const std::string subject = begun ? yours + " as " + r->name : r->name;
-  const std::string read = shown   ? subject + " = " + sym::to_unicode(r->symbolic) + ","
-                           : begun ? subject + ","
-                                   : subject + " as";
-  return Referenced{out, fmt::format("read with {} the key's answer to part ({}): right as far "
-                                     "as your {} is",
-                                     read, part->id, yours)};
-}
-
-// A name as LaTeX draws it, as a problem file spells its own: "phidot" -> "\dot\phi", "omega3"
-// -> "\omega_3", "I1" -> "I_1". The LaTeX reader lists the symbols so.
-std::string name_latex(const std::string& name) {
-  std::size_t digits = name.size();
-  while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
-  std::string base = name.substr(0, digits);
-  const std::string sub = name.substr(digits);
-  const std::string_view rate = "dot";
-  const bool dot = base.size() > rate.size() && base.ends_with(rate);
-  if (dot) base.resize(base.size() - rate.size());
-  std::string letter = sym::greek_letters().count(base) ? "\\" + base : base;
-  if (dot) letter = letter[0] == '\\' ? "\\dot" + letter : "\\dot{" + letter + "}";
-  return sub.empty() ? letter : letter + "_" + sub;
-}
-
-// Whether two refusals of the LaTeX reader name the same thing: the same text, or the same
-// symbol refused whatever the symbols they list.
-bool same_refusal(std::string_view a, std::string_view b) {
-  constexpr std::string_view kUnknown = " is not one of this problem's symbols";
-  const std::size_t at_a = a.find(kUnknown), at_b = b.find(kUnknown);
-  if (at_a == std::string_view::npos || at_b == std::string_view::npos) return a == b;
-  return a.substr(0, at_a) == b.substr(0, at_b);
-}
-
-// What names_put_in read: the text with forms put in for names, and which names it read.
-struct NamesPutIn {
-  std::string text;
-  std::vector<bool> read;
-};
-
-// `text` with each of `names` (GiNaC text) that `index_of` knows replaced by its `form`, where
-// the reader's `message` refused one of them, run together with others or not ("φ̇θ", "I₃ω₃");
-// in LaTeX, where the text reads with them declared ("\dot\phi", "I_3"), and where it then
-// still does not, what else keeps it from reading is said. nullopt where no such name is read.
-std::optional<NamesPutIn> names_put_in(
-    const Context& ctx, const std::string& text, const std::string& message,
-    const std::vector<std::string>& names,
-    const std::function<std::optional<std::size_t>(const std::string&)>& index_of,
-    const std::function<std::string(std::size_t)>& form) {
-  if (names.empty()) return std::nullopt;
-  sym::SymbolTable with_names = ctx.table;
-  for (const std::string& name : names) {
-    if (!with_names.contains(name))
-      with_names.declare(name, name_latex(name), sym::SymbolSign::real);
-  }
-  std::string ascii;
-  if (looks_like_latex(text)) {
-    try {
-      ascii = latex_as_text(text, with_names, kField);
-    } catch (const InputError& with) {
-      // Where the names make no difference to what the LaTeX reader refuses, the refusal
-      // stands as it was (that symbol, or "ẑ, ê₃ mix bases" from a later reading).
-      const std::exception_ptr with_names_refusal = std::current_exception();
-      try {
-        (void)latex_as_text(text, ctx.table, kField);
-      } catch (const InputError& without) {
-        if (!same_refusal(with.what(), without.what())) std::rethrow_exception(with_names_refusal);
-      }
-      return std::nullopt;
-    }
-  } else {
-    const auto ours = [&](const std::string& word) -> std::optional<std::string> {
-      return index_of(word) ? std::optional<std::string>(word) : std::nullopt;
-    };
-    const std::string refused = refused_name(message);
-    if (refused.empty() || !names_replaced(names_apart(refused, with_names), ours).second)
-      return std::nullopt;
-    ascii = names_apart(sym::to_ascii(text), with_names);
-  }
-  NamesPutIn put{"", std::vector<bool>(names.size(), false)};
-  const auto [replaced, found] =
-      names_replaced(ascii, [&](const std::string& word) -> std::optional<std::string> {
-        const std::optional<std::size_t> i = index_of(word);
-        if (!i) return std::nullopt;
-        put.read[*i] = true;
-        return form(*i);
-      });
-  if (!found) return std::nullopt;
-  put.text = replaced;
-  return put;
-}
-
-// `text` with the convention's names (key.hpp's ConventionName: Taylor's φ for PHY 711's α)
-// written as the parameters they are here (names_put_in), and the line that says which.
-std::optional<Referenced> convention_named(const Context& ctx, const std::string& text,
-                                           const std::string& message) {
-  const auto& names = ctx.key.convention_names;
-  std::vector<std::string> spelled;
-  for (const ConventionName& c : names) spelled.push_back(c.name);
-  const auto index_of = [&](const std::string& word) -> std::optional<std::size_t> {
-    const auto it = std::find(spelled.begin(), spelled.end(), word);
-    if (it == spelled.end()) return std::nullopt;
-    return static_cast<std::size_t>(it - spelled.begin());
-  };
-  const std::optional<NamesPutIn> put = names_put_in(
-      ctx, text, message, spelled, index_of, [&](std::size_t i) { return names[i].parameter; });
-  if (!put) return std::nullopt;
-  std::string lines;  // in the convention's order, whatever the answer's
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (put->read[i]) {
-      lines += (lines.empty() ? "" : ", ") + sym::to_unicode(names[i].name) + " = " +
-               sym::to_unicode(names[i].parameter);
-    }
-  }
-  return Referenced{put->text, fmt::format("read in {} names, as this problem's symbols: {}",
-                                           ctx.key.convention, lines)};
-}
-
 // judge_as_written, and where a wrong answer calls EllipticK or EllipticE, whether it is right
 // with their arguments read as the parameter m = k² (Mathematica's and SciPy's): then that is
 // the one line of feedback.
@@ -1009,76 +724,6 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
     break;
   }
   return v;
-}
-
-// Marks around a form put in for a name, until brackets_put_in makes them brackets.
-constexpr char kPutIn = '\x01', kPutInEnd = '\x02';
-
-// `marked` with each form put in as a bracket, joined by '*' to a bracket beside it: "I₃ (ψ̇₀)"
-// would otherwise be "(M*R^2/2) (psidot0)", which reads as a matrix's two rows.
-std::string brackets_put_in(const std::string& marked) {
-  std::string out;
-  for (std::size_t i = 0; i < marked.size(); ++i) {
-    const char c = marked[i];
-    if (c == kPutIn) {
-      const std::size_t last = out.find_last_not_of(' ');
-      if (last != std::string::npos && out[last] == ')') out += '*';
-      out += '(';
-    } else if (c == kPutInEnd) {
-      out += ')';
-      const std::size_t next = marked.find_first_not_of(' ', i + 1);
-      if (next != std::string::npos && marked[next] == '(') out += '*';
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
-// A name as the key's DefinedName spells it: "I_3" and "I3" alike, and "w3" as ω₃ ("omega3").
-std::string defined_spelling(const std::string& word) {
-  std::string plain;
-  for (const char c : word) {
-    if (c != '_') plain += c;
-  }
-  if (plain.size() > 1 && plain[0] == 'w' &&
-      std::all_of(plain.begin() + 1, plain.end(),
-                  [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }))
-    return "omega" + plain.substr(1);
-  return plain;
-}
-
-// `text` with the names the key's steps write for quantities of this problem (key.hpp's
-// DefinedName: the heavy top's I₁, I₃, ω₃) as their exact forms in brackets (names_put_in), and
-// the line that says so. Never the answer's own name: ω₃ for ω₃ is no working.
-std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
-                                        const std::string& text, const std::string& message) {
-  const auto& names = ctx.key.defined_names;
-  std::vector<std::string> spelled;
-  for (const DefinedName& d : names) spelled.push_back(d.name);
-  const auto index_of = [&](const std::string& word) -> std::optional<std::size_t> {
-    const auto it = std::find(spelled.begin(), spelled.end(), defined_spelling(word));
-    if (it == spelled.end() || *it == a.name || ctx.table.contains(*it)) return std::nullopt;
-    return static_cast<std::size_t>(it - spelled.begin());
-  };
-  const std::optional<NamesPutIn> put =
-      names_put_in(ctx, text, message, spelled, index_of,
-                   [&](std::size_t i) { return kPutIn + names[i].symbolic + kPutInEnd; });
-  if (!put) return std::nullopt;
-  std::string forms, yours;  // in the key's order, whatever the answer's
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (!put->read[i]) continue;
-    const std::string shown = sym::to_unicode(names[i].name);
-    forms += fmt::format("{}{} = {} ({})", forms.empty() ? "" : ", ", shown,
-                         sym::to_unicode(names[i].symbolic), names[i].meaning);
-    yours += (yours.empty() ? "" : ", ") + shown;
-    ++count;
-  }
-  return Referenced{
-      brackets_put_in(put->text),
-      fmt::format("read with {}, as the key's steps write {}: right as far as your {} {}", forms,
-                  count == 1 ? "it" : "them", yours, count == 1 ? "is" : "are")};
 }
 
 // judge_one for the whole answer or the value after a label: an answer in terms of an earlier

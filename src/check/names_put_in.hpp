@@ -1,0 +1,50 @@
+#pragma once
+/// @file
+/// Names in an answer that are no symbols of the problem but that its key knows, read as what
+/// they stand for, each with the line that says so: an earlier answer's name as its closed form
+/// ("I₀ diag(1, 1, 2)", "π/Ω_space_rate", "R_zyzᵀ", "π/|Ω_space|"), a convention's names as the
+/// parameters they are (PHY 711's Taylor φ, θ, ψ for its α, β, γ), and the names the key's steps
+/// write as their exact forms (the heavy top's I₁, I₃, ω₃). Each reading starts from the reader's
+/// refusal of the answer as typed (its message names the name it could not read), and each gives
+/// the text to judge in its place; the judge (judge.cpp) judges it and adds the line.
+#include <optional>
+#include <string>
+
+#include "check/judge.hpp"
+
+namespace wobble::check::detail {
+
+/// The name a reader's message quotes after `what` ("undefined symbol 'T'"), or "".
+std::string quoted_after(const std::string& message, const std::string& what);
+/// The name a reader's message says is undefined ("undefined symbol 'T'"), or "".
+std::string undefined_name(const std::string& message);
+/// undefined_name, or the text the reader took for a unit and refused: after a value it takes a
+/// word for its unit ("ψ̇₀ I₃", "2 L0_body"), where a name may be meant.
+std::string refused_name(const std::string& message);
+
+/// An answer's text with forms put in for names (plain text the reader reads), and the line of
+/// feedback that says which.
+struct Referenced {
+  std::string text, note;
+};
+
+/// `text` with another answer's name, the one the reader's `message` refused, written as the
+/// key's closed form (a number's in brackets, a vector's or matrix's in its own, a vector's
+/// magnitude in |..| or norm(..) as the root of its squares), and the line that says so; nullopt
+/// where that name is no answer `a` may be written in terms of (of a part before a's or a's own,
+/// not a itself), or the text does not spell it as a name of its own (LaTeX is left alone).
+std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
+                                            const std::string& text, const std::string& message);
+
+/// `text` with the convention's names (key.hpp's ConventionName: Taylor's φ for PHY 711's α)
+/// written as the parameters they are here, and the line that says which.
+std::optional<Referenced> convention_named(const Context& ctx, const std::string& text,
+                                           const std::string& message);
+
+/// `text` with the names the key's steps write for quantities of this problem (key.hpp's
+/// DefinedName: the heavy top's I₁, I₃, ω₃) as their exact forms, and the line that says so.
+/// Never the answer's own name: ω₃ for ω₃ is no working.
+std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
+                                        const std::string& text, const std::string& message);
+
+}  // namespace wobble::check::detail
