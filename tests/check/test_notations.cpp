@@ -3,6 +3,7 @@
 // is the key's value, and as wrong when it is not. Every value is the key's own, formatted here.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cctype>
@@ -2346,6 +2347,30 @@ TEST_CASE("a range, as the nutation's limits are written, gives each bound its e
   CHECK_FALSE(check::range_of("1 ≤ θ ≥ 2"));
   CHECK_FALSE(check::range_of("1 ≤ θ ≤ 2 ≤ 3"));
   CHECK_FALSE(check::range_of("θ ≤ 2"));
+}
+
+TEST_CASE("every closed form one part in a million off is wrong, however small its value in SI") {
+  // An expression is held to 1e-9 of the answer's size: the key's own form times (1 + 1e-6) is
+  // no identity at any size, the Earth's 2.4e-7 rad/s as the top's 150 rad/s.
+  int judged = 0;
+  double smallest = 1.0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.symbolic.empty() || a.value.shape != Value::Shape::scalar) continue;
+        if (a.value.data.at(0) == 0.0) continue;  // zero times anything is the key's zero
+        const std::string off = "(" + a.symbolic + ")*(1 + 1/1000000)";
+        INFO(p.id << " " << a.name << ": " << off);
+        REQUIRE_FALSE(f.check(a.name, off).correct);
+        REQUIRE(f.check(a.name, "(" + a.symbolic + ")*(1 + 0)").correct);
+        smallest = std::min(smallest, std::abs(a.value.data.at(0)));
+        ++judged;
+      }
+    }
+  }
+  REQUIRE(judged >= 60);
+  REQUIRE(smallest < 1e-6);  // the Earth's rates are in the catalog
 }
 
 TEST_CASE("principal moments given as the diagonal tensor are read as its diagonal") {
