@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string_view>
 #include <utility>
 
 #include "core/principal_axes.hpp"
@@ -122,11 +123,14 @@ AxesFinding judge_axes(const std::vector<double>& typed, const Mat3& key_axes,
     }
   }
   const auto spaces = eigenspaces(key_moments);
+  // Vectors the student listed or labelled are the axes as written: "as rows" would name the
+  // reader's matrix, which the student never wrote.
+  constexpr std::string_view kListed = "each of your vectors an axis";
   AxesFinding as_rows = judge_vectors(rows, key_axes, spaces, angle_tolerance);
-  as_rows.how = "as rows";
+  as_rows.how = layout == AxesLayout::rows ? kListed : "as rows";
   if (layout == AxesLayout::rows) return as_rows;
   AxesFinding as_columns = judge_vectors(columns, key_axes, spaces, angle_tolerance);
-  as_columns.how = "as columns";
+  as_columns.how = layout == AxesLayout::columns ? kListed : "as columns";
   if (layout == AxesLayout::columns || as_columns.correct) return as_columns;
   if (as_rows.correct) return as_rows;
   // Wrong either way: report the reading with fewer problems (columns, as printed, on a tie).

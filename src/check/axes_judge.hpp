@@ -19,7 +19,7 @@ namespace wobble::check {
 
 struct AxesFinding {
   bool correct = false;
-  std::string how;                    ///< "as columns" or "as rows", when correct
+  std::string how;  ///< "as columns", "as rows" or "each of your vectors an axis", when correct
   bool unit_lengths = true;           ///< each vector of unit length, within the tolerance
   std::vector<std::string> problems;  ///< one line each, when wrong
 };

@@ -278,7 +278,8 @@ TEST_CASE("components given one by one with their labels") {
                     fmt::format("I₁ = {:.6g} kg m², I₂ = {:.6g} kg m², I₃ = {:.6g} kg m²",
                                 moments[0], moments[1], moments[2]))
               .correct);
-  // Principal axes by name are the key's columns.
+  // Principal axes by name are the key's columns, and the line says each vector is an axis (not
+  // "as rows" or "as columns": the student wrote no matrix).
   const auto& axes = box.answer("principal_axes_corner").value.data;  // row-major, axes columns
   const auto column = [&](std::size_t k) {
     return fmt::format("({:.8f}, {:.8f}, {:.8f})", axes[k], axes[3 + k], axes[6 + k]);
@@ -286,7 +287,13 @@ TEST_CASE("components given one by one with their labels") {
   const check::Verdict by_name = box.check(
       "principal_axes_corner", "e1 = " + column(0) + ", e2 = " + column(1) + ", e3 = " + column(2));
   REQUIRE(by_name.correct);
-  REQUIRE_THAT(by_name.line, Catch::Contains("as columns"));
+  REQUIRE_THAT(by_name.line, Catch::Contains("(each of your vectors an axis, in any order") &&
+                                 !Catch::Contains("as columns") && !Catch::Contains("as rows"));
+  // A matrix is read either way, and which is said.
+  const std::string matrix =
+      fmt::format("[[{:.8f}, {:.8f}, {:.8f}], [{:.8f}, {:.8f}, {:.8f}], [{:.8f}, {:.8f}, {:.8f}]]",
+                  axes[0], axes[1], axes[2], axes[3], axes[4], axes[5], axes[6], axes[7], axes[8]);
+  REQUIRE_THAT(box.check("principal_axes_corner", matrix).line, Catch::Contains("(as columns,"));
 
   // A tensor by its entries' two indices: one not given is its mirror's, else zero.
   const Fixture cone("solid-cone");

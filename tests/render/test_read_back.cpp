@@ -1260,7 +1260,7 @@ TEST_CASE("principal axes by meaning: rows or columns, any order, any length, ea
   const Fixture four("four-masses");
   const Verdict rows = four.check("principal_axes", "[0, 0, 1], [1, 1, 0], [1, -1, 0]");
   REQUIRE(rows.correct);
-  REQUIRE_THAT(rows.line, Catch::Contains("as rows"));
+  REQUIRE_THAT(rows.line, Catch::Contains("each of your vectors an axis"));
   // Not unit vectors: right as directions, and the verdict says the key's are unit.
   REQUIRE_THAT(rows.line, Catch::Contains("up to sign and length; the key's axes are unit"));
   const Verdict unit_rows = four.check("principal_axes", "[0, 0, 1], [1, 1, 0]/√2, [1, -1, 0]/√2");
