@@ -238,6 +238,16 @@ std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_te
       words[0], what, product);
 }
 
+// The symbol the LaTeX reader's message says is none of the problem's, as drawn
+// ("\Omega_{space}"), or "".
+std::string latex_unknown_symbol(const std::string& message) {
+  constexpr std::string_view kUnknown = " is not one of this problem's symbols";
+  const std::size_t end = message.find(kUnknown);
+  if (end == std::string::npos) return "";
+  const std::size_t start = message.rfind(": ", end);
+  return start == std::string::npos ? "" : message.substr(start + 2, end - start - 2);
+}
+
 // The hint of the first name in `typed` that has one ("I₀ diag(1, 1, 2)", as question (a)
 // writes I), the name the reader found undefined first (in "½I₃ω₃²" the text runs I₃ and ω₃
 // together; the reader, its stars written in, names ω₃).
@@ -246,6 +256,15 @@ std::string answer_name_hint(const Context& ctx, const std::string& typed,
   if (const std::string name = undefined_name(message); !name.empty()) {
     const std::string hint = name_hint(ctx, name);
     if (!hint.empty()) return hint;
+  }
+  // The LaTeX reader names the symbol as drawn, "\Omega_{space}": its plain name is the one to
+  // hint at, not a word of it ("space" begins space_cone_half_angle).
+  if (const std::string drawn = latex_unknown_symbol(message); !drawn.empty()) {
+    std::string plain;
+    for (const char c : drawn) {
+      if (c != '\\' && c != '{' && c != '}' && c != ' ') plain += c;
+    }
+    return name_hint(ctx, plain);
   }
   const std::string ascii = sym::to_ascii(typed);
   for (std::size_t i = 0; i < ascii.size();) {

@@ -602,7 +602,14 @@ class Reader {
     ++i_;  // _
     skip_spaces();
     if (at_end()) fail("a subscript is missing at the end");
-    if (at('\\')) return "\\" + take_command();
+    if (at('\\')) {
+      // "\Omega_\mathrm{space}", as the statements write a subscript in words: the wrapper's
+      // group is the subscript.
+      const std::string cmd = take_command();
+      if (!text_wrappers().count(cmd)) return "\\" + cmd;
+      skip_spaces();
+      if (!at('{')) return "\\" + cmd;
+    }
     if (!at('{')) return std::string(1, s_[i_++]);
     int level = 0;
     std::string sub;

@@ -3,13 +3,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <exception>
 #include <functional>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
+#include "check/answer_reading.hpp"
 #include "check/brackets.hpp"
 #include "check/judge.hpp"
 #include "check/judge_internal.hpp"
@@ -112,9 +115,22 @@ std::pair<std::string, bool> names_replaced(
   return {out, found};
 }
 
+// The calls that take a vector's magnitude: norm(..) as NumPy and MATLAB write it, abs(..) as
+// LaTeX's |..| reads.
+constexpr std::array<std::string_view, 2> kMagnitudeCalls{"norm(", "abs("};
+
+// The length of the magnitude call at ascii[i] ("norm("), or 0 where none starts there.
+std::size_t magnitude_call_at(const std::string& ascii, std::size_t i) {
+  if (i > 0 && std::isalnum(static_cast<unsigned char>(ascii[i - 1]))) return 0;
+  for (const std::string_view call : kMagnitudeCalls) {
+    if (ascii.compare(i, call.size(), call) == 0) return call.size();
+  }
+  return 0;
+}
+
 // `ascii` with the magnitude of the vector answer `r` put in where the text takes it of r's
-// name, "|Omega_space|" or "norm(Omega_space)", as the flying plate's statement writes
-// t = π/|Ω_space|: sqrt of the sum of its entries' squares; and whether it was.
+// name, "|Omega_space|", "norm(Omega_space)" or "abs(Omega_space)", as the flying plate's
+// statement writes t = π/|Ω_space|: sqrt of the sum of its entries' squares; and whether it was.
 std::pair<std::string, bool> magnitudes_put_in(
     const std::string& ascii, const Answer& r,
     const std::function<bool(const std::string&)>& names_r) {
@@ -127,11 +143,11 @@ std::pair<std::string, bool> magnitudes_put_in(
   bool found = false;
   for (std::size_t i = 0; i < ascii.size();) {
     const bool bar = ascii[i] == '|';
-    const bool norm = ascii.compare(i, 5, "norm(") == 0 &&
-                      (i == 0 || !std::isalnum(static_cast<unsigned char>(ascii[i - 1])));
-    const std::size_t from = i + (bar ? 1 : norm ? 5 : 0);
-    const std::size_t to = bar ? ascii.find('|', from) : norm ? ascii.find(')', from) : 0;
-    if ((bar || norm) && to != std::string::npos && names_r(trim(ascii.substr(from, to - from)))) {
+    const std::size_t call = bar ? 0 : magnitude_call_at(ascii, i);
+    const std::size_t from = i + (bar ? 1 : call);
+    const std::size_t to = bar ? ascii.find('|', from) : call > 0 ? ascii.find(')', from) : 0;
+    if ((bar || call > 0) && to != std::string::npos &&
+        names_r(trim(ascii.substr(from, to - from)))) {
       out += magnitude;
       found = true;
       i = to + 1;
@@ -145,7 +161,7 @@ std::pair<std::string, bool> magnitudes_put_in(
 // The name inside the first |..| or norm(..) of `ascii` ("Omega_space" in "pi/|Omega_space|"),
 // or "": the reader refuses "norm" as a function before it comes to the name.
 std::string name_in_magnitude(const std::string& ascii) {
-  for (const std::string_view open : {"|", "norm("}) {
+  for (const std::string_view open : {std::string_view("|"), kMagnitudeCalls[0]}) {
     const std::size_t at = ascii.find(open);
     if (at == std::string::npos) continue;
     const std::size_t from = at + open.size();
@@ -156,50 +172,6 @@ std::string name_in_magnitude(const std::string& ascii) {
 }
 
 }  // namespace
-
-// An earlier answer's name (names_put_in.hpp).
-std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
-                                            const std::string& text, const std::string& message) {
-  // "‖Ω_space‖", a norm's double bars, as single ones.
-  std::string ascii = sym::to_ascii(text);
-  for (std::size_t at = ascii.find("‖"); at != std::string::npos; at = ascii.find("‖"))
-    ascii.replace(at, std::string_view("‖").size(), "|");
-  std::string name = refused_name(message);
-  if (name.empty()) name = name_in_magnitude(ascii);
-  const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
-  if (r == nullptr || looks_like_latex(text)) return std::nullopt;
-  const auto names_r = [&](const std::string& word) {
-    return name_in_key(ctx.key, word) == r->name || answer_begun(ctx.key, word) == r->name;
-  };
-  const auto [with_magnitudes, magnitude] = magnitudes_put_in(ascii, *r, names_r);
-  const auto [out, named] =
-      names_replaced(with_magnitudes, [&](const std::string& word) -> std::optional<std::string> {
-        if (!names_r(word)) return std::nullopt;
-        // A vector's or matrix's own brackets hold it (round ones about it would not read).
-        if (r->value.shape != Value::Shape::scalar) return r->symbolic;
-        return "(" + r->symbolic + ")";
-      });
-  if (!magnitude && !named) return std::nullopt;
-  const auto part = std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
-    return std::any_of(p.answers.begin(), p.answers.end(),
-                       [&](const Answer& x) { return &x == r; });
-  });
-  // A matrix's closed form is nine entries long, the tennis racket's period some 400 characters:
-  // there the name says which, and the form is the key's to look up. One line's worth is shown.
-  constexpr std::size_t kLongestFormShown = 80;
-  const bool shown =
-      r->value.shape == Value::Shape::scalar && r->symbolic.size() <= kLongestFormShown;
-  // Ω_body for Omega_body_rate: the name as typed, and the answer it is read as.
-  const bool begun = name_in_key(ctx.key, name) != r->name;
-  const std::string yours = begun ? sym::to_unicode(name) : r->name;
-  const std::string subject = begun ? yours + " as " + r->name : r->name;
-  const std::string read = shown   ? subject + " = " + sym::to_unicode(r->symbolic) + ","
-                           : begun ? subject + ","
-                                   : subject + " as";
-  return Referenced{out, fmt::format("read with {} the key's answer to part ({}): right as far "
-                                     "as your {} is",
-                                     read, part->id, yours)};
-}
 
 namespace {
 // A name as LaTeX draws it, as a problem file spells its own: "phidot" -> "\dot\phi", "omega3"
@@ -285,6 +257,86 @@ std::optional<NamesPutIn> names_put_in(
 }
 
 }  // namespace
+
+namespace {
+// LaTeX `text` as plain text, read with the name of every answer `a` may be written in terms of
+// declared as the LaTeX a problem file draws it with (I0 as I_0, name_latex), and the first such
+// name in it: "I_0 \mathrm{diag}(1, 1, 2)" gives "I0*diag(1, 1, 2)" and I0. nullopt where it
+// does not read so or holds no such name.
+std::optional<std::pair<std::string, std::string>> latex_with_answer_names(
+    const Context& ctx, const Answer& a, const std::string& text) {
+  sym::SymbolTable with_answers = ctx.table;
+  for (const auto& part : ctx.key.parts) {
+    for (const auto& b : part.answers) {
+      if (referable_answer(ctx, a, b.name) != nullptr && !with_answers.contains(b.name))
+        with_answers.declare(b.name, name_latex(b.name), sym::SymbolSign::real);
+    }
+  }
+  std::string ascii;
+  try {
+    ascii = latex_as_text(text, with_answers, kField);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  for (const auto& [at, length] : identifiers(ascii)) {
+    const std::string word = ascii.substr(at, length);
+    if (!ctx.table.contains(word) && referable_answer(ctx, a, word) != nullptr)
+      return std::pair{ascii, word};
+  }
+  return std::nullopt;
+}
+}  // namespace
+
+// An earlier answer's name (names_put_in.hpp).
+std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
+                                            const std::string& text, const std::string& message) {
+  std::string ascii, name;
+  if (looks_like_latex(text)) {
+    const auto plain = latex_with_answer_names(ctx, a, text);
+    if (!plain) return std::nullopt;
+    std::tie(ascii, name) = *plain;
+  } else {
+    // "‖Ω_space‖", a norm's double bars, as single ones.
+    ascii = sym::to_ascii(text);
+    for (std::size_t at = ascii.find("‖"); at != std::string::npos; at = ascii.find("‖"))
+      ascii.replace(at, std::string_view("‖").size(), "|");
+    name = refused_name(message);
+    if (name.empty()) name = name_in_magnitude(ascii);
+  }
+  const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
+  if (r == nullptr) return std::nullopt;
+  const auto names_r = [&](const std::string& word) {
+    return name_in_key(ctx.key, word) == r->name || answer_begun(ctx.key, word) == r->name;
+  };
+  const auto [with_magnitudes, magnitude] = magnitudes_put_in(ascii, *r, names_r);
+  const auto [out, named] =
+      names_replaced(with_magnitudes, [&](const std::string& word) -> std::optional<std::string> {
+        if (!names_r(word)) return std::nullopt;
+        // A vector's or matrix's own brackets hold it (round ones about it would not read).
+        if (r->value.shape != Value::Shape::scalar) return r->symbolic;
+        return "(" + r->symbolic + ")";
+      });
+  if (!magnitude && !named) return std::nullopt;
+  const auto part = std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
+    return std::any_of(p.answers.begin(), p.answers.end(),
+                       [&](const Answer& x) { return &x == r; });
+  });
+  // A matrix's closed form is nine entries long, the tennis racket's period some 400 characters:
+  // there the name says which, and the form is the key's to look up. One line's worth is shown.
+  constexpr std::size_t kLongestFormShown = 80;
+  const bool shown =
+      r->value.shape == Value::Shape::scalar && r->symbolic.size() <= kLongestFormShown;
+  // Ω_body for Omega_body_rate: the name as typed, and the answer it is read as.
+  const bool begun = name_in_key(ctx.key, name) != r->name;
+  const std::string yours = begun ? sym::to_unicode(name) : r->name;
+  const std::string subject = begun ? yours + " as " + r->name : r->name;
+  const std::string read = shown   ? subject + " = " + sym::to_unicode(r->symbolic) + ","
+                           : begun ? subject + ","
+                                   : subject + " as";
+  return Referenced{out, fmt::format("read with {} the key's answer to part ({}): right as far "
+                                     "as your {} is",
+                                     read, part->id, yours)};
+}
 
 // `text` with the convention's names (key.hpp's ConventionName: Taylor's φ for PHY 711's α)
 // written as the parameters they are here (names_put_in), and the line that says which.

@@ -830,6 +830,15 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
     REQUIRE(v.correct);
     REQUIRE(v.feedback == std::vector<std::string>{i0_note});
   }
+  // In LaTeX too, as the question draws I_0.
+  for (const char* same : {"I_0 \\mathrm{diag}(1, 1, 2)", "I_{0}\\,\\mathrm{diag}(1,1,2)",
+                           "\\begin{pmatrix} I_0 & 0 & 0 \\\\ 0 & I_0 & 0 \\\\ 0 & 0 & 2 I_0 "
+                           "\\end{pmatrix}"}) {
+    INFO(same);
+    const auto v = plate.check("I", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{i0_note});
+  }
   const auto doubled = plate.check("I", "I₀ diag(2, 2, 4)");
   REQUIRE_FALSE(doubled.correct);
   REQUIRE_THAT(doubled.feedback.back(), Catch::Equals(i0_note));
@@ -930,6 +939,19 @@ TEST_CASE("a magnitude in bars reads, of an expression or of an earlier vector a
     REQUIRE(v.feedback == std::vector<std::string>{note});
   }
   REQUIRE_FALSE(plate.check("t_max", "2π/|Ω_space|").correct);
+  // In LaTeX, with the subscript in words as the statement writes it (\mathrm, \text).
+  for (const char* same :
+       {"\\frac{\\pi}{|\\Omega_{space}|}", "\\pi/\\lvert\\Omega_\\mathrm{space}\\rvert",
+        "\\frac{\\pi}{\\left|\\Omega_\\text{space}\\right|}"}) {
+    INFO(same);
+    const auto v = plate.check("t_max", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{note});
+  }
+  // A vector's name where a number is wanted is named as the answer it is, in LaTeX as typed.
+  REQUIRE_THROWS_WITH(plate.check("t_max", "\\pi/\\Omega_\\mathrm{space}"),
+                      Catch::Contains("Omega_space is the answer to part (e)") &&
+                          !Catch::Contains("space_cone_half_angle"));
   // The magnitude of a name that is no answer is refused as that name.
   REQUIRE_THROWS_WITH(plate.check("t_max", "π/|Q|"), Catch::Contains("undefined symbol 'Q'"));
 }
