@@ -262,7 +262,7 @@ std::string answer_name_hint(const Context& ctx, const std::string& typed,
   if (const std::string drawn = latex_unknown_symbol(message); !drawn.empty()) {
     std::string plain;
     for (const char c : drawn) {
-      if (c != '\\' && c != '{' && c != '}' && c != ' ') plain += c;
+      if (c != '\\' && c != '{' && c != '}' && c != ' ') plain += c == ',' ? '_' : c;
     }
     return name_hint(ctx, plain);
   }

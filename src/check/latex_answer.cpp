@@ -695,12 +695,16 @@ class Reader {
       if (mark == "dot" || mark == "ddot") marks += mark;
       k = colon + 1;
     }
-    std::string sub;
+    // A subscript's letters and digits; and with its commas as '_', as a name joins words
+    // ("\\Omega_{space,rate}" for Omega_space_rate, "L_{0,\\mathrm{body}}" for L0_body).
+    std::string sub, sub_words;
     for (const char c : a.sub) {
       if (std::isalnum(static_cast<unsigned char>(c))) sub += c;
+      if (std::isalnum(static_cast<unsigned char>(c)) || c == ',') sub_words += c == ',' ? '_' : c;
     }
     for (const std::string& name :
-         {base + marks + sub, base + sub + marks, base + marks + "_" + sub}) {
+         {base + marks + sub, base + sub + marks, base + marks + "_" + sub,
+          base + marks + sub_words, base + marks + "_" + sub_words}) {
       if (table_.contains(name)) return {name, true};
     }
     if (base == "pi" && a.accents.empty() && a.sub.empty()) return {"Pi"};

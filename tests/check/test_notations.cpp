@@ -948,6 +948,9 @@ TEST_CASE("a magnitude in bars reads, of an expression or of an earlier vector a
     REQUIRE(v.correct);
     REQUIRE(v.feedback == std::vector<std::string>{note});
   }
+  // A subscript of words joined by commas is the name they join: Ω_space_rate, L0_body.
+  REQUIRE(plate.check("t_max", "\\frac{\\pi}{\\Omega_{space,rate}}").correct);
+  REQUIRE(plate.check("L0_space", "L_{0,\\mathrm{body}}").correct);
   // A vector's name where a number is wanted is named as the answer it is, in LaTeX as typed.
   REQUIRE_THROWS_WITH(plate.check("t_max", "\\pi/\\Omega_\\mathrm{space}"),
                       Catch::Contains("Omega_space is the answer to part (e)") &&
