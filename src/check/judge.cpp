@@ -42,6 +42,7 @@ using detail::defined_named;
 using detail::Judge;
 using detail::judge_symbolic;
 using detail::kField;
+using detail::latex_unknown_symbol;
 using detail::quoted_after;
 using detail::Referenced;
 using detail::undefined_name;
@@ -236,16 +237,6 @@ std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_te
   return fmt::format(
       "{} is also {}: after a number it reads as the unit; for the product, write the '*' ({})",
       words[0], what, product);
-}
-
-// The symbol the LaTeX reader's message says is none of the problem's, as drawn
-// ("\Omega_{space}"), or "".
-std::string latex_unknown_symbol(const std::string& message) {
-  constexpr std::string_view kUnknown = " is not one of this problem's symbols";
-  const std::size_t end = message.find(kUnknown);
-  if (end == std::string::npos) return "";
-  const std::size_t start = message.rfind(": ", end);
-  return start == std::string::npos ? "" : message.substr(start + 2, end - start - 2);
 }
 
 // The hint of the first name in `typed` that has one ("I₀ diag(1, 1, 2)", as question (a)

@@ -45,6 +45,16 @@ std::string refused_name(const std::string& message) {
   return name.empty() ? sym::to_ascii(quoted_after(message, "cannot read the unit")) : name;
 }
 
+// The symbol the LaTeX reader's message says is none of the problem's, as drawn
+// ("\Omega_{space}"), or "".
+std::string latex_unknown_symbol(const std::string& message) {
+  constexpr std::string_view kUnknown = " is not one of this problem's symbols";
+  const std::size_t end = message.find(kUnknown);
+  if (end == std::string::npos) return "";
+  const std::size_t start = message.rfind(": ", end);
+  return start == std::string::npos ? "" : message.substr(start + 2, end - start - 2);
+}
+
 namespace {
 // The one answer whose name begins with `name` and '_' ("Omega_body" for Omega_body_rate, as
 // the Earth's question (a) writes Ω_body), where `name` is no answer's own; "" otherwise (two
@@ -191,11 +201,10 @@ std::string name_latex(const std::string& name) {
 
 // Whether two refusals of the LaTeX reader name the same thing: the same text, or the same
 // symbol refused whatever the symbols they list.
-bool same_refusal(std::string_view a, std::string_view b) {
-  constexpr std::string_view kUnknown = " is not one of this problem's symbols";
-  const std::size_t at_a = a.find(kUnknown), at_b = b.find(kUnknown);
-  if (at_a == std::string_view::npos || at_b == std::string_view::npos) return a == b;
-  return a.substr(0, at_a) == b.substr(0, at_b);
+bool same_refusal(const std::string& a, const std::string& b) {
+  const std::string unknown_a = latex_unknown_symbol(a), unknown_b = latex_unknown_symbol(b);
+  if (unknown_a.empty() || unknown_b.empty()) return a == b;
+  return unknown_a == unknown_b;
 }
 
 // What names_put_in read: the text with forms put in for names, and which names it read.

@@ -21,6 +21,9 @@ std::string undefined_name(const std::string& message);
 /// undefined_name, or the text the reader took for a unit and refused: after a value it takes a
 /// word for its unit ("ψ̇₀ I₃", "2 L0_body"), where a name may be meant.
 std::string refused_name(const std::string& message);
+/// The symbol the LaTeX reader's message says is none of the problem's, as drawn
+/// ("\Omega_{space}"), or "".
+std::string latex_unknown_symbol(const std::string& message);
 
 /// An answer's text with forms put in for names (plain text the reader reads), and the line of
 /// feedback that says which.
