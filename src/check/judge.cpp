@@ -216,6 +216,13 @@ std::string name_hint(const Context& ctx, const std::string& name) {
 // height, "0.75 h ẑ" read as hours): a line naming them, with what to write for the product;
 // "" otherwise. After a number the letters are the unit (as "0.5 m" is half a metre even where
 // m is a mass); the line says so where that reading gave the wrong dimension.
+std::string symbol_described(const Context& ctx, const std::string& name) {
+  const ParameterValue* p = parameter_named(ctx.key, name);
+  return p == nullptr || p->description.empty()
+             ? "a symbol of the problem"
+             : "the problem's symbol for the " + plain_text(p->description);
+}
+
 std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_text) {
   std::vector<std::string> words;
   for (const auto& [at, length] : identifiers(unit_text)) {
@@ -230,13 +237,9 @@ std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_te
         "product, write the '*' ({})",
         fmt::join(words, ", "), product);
   }
-  const ParameterValue* p = parameter_named(ctx.key, words[0]);
-  const std::string what = p == nullptr || p->description.empty()
-                               ? "a symbol of the problem"
-                               : "the problem's symbol for the " + plain_text(p->description);
   return fmt::format(
       "{} is also {}: after a number it reads as the unit; for the product, write the '*' ({})",
-      words[0], what, product);
+      words[0], symbol_described(ctx, words[0]), product);
 }
 
 // The hint of the first name in `typed` that has one ("I₀ diag(1, 1, 2)", as question (a)
@@ -670,6 +673,71 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
   return {false, "incorrect: " + a.name, diagnose(j, key_unit, compare, a.value.data)};
 }
 
+// `text` with each of `words` that follows a number or a closing bracket written as a factor:
+// "-3/4 h ẑ" -> "-3/4*h ẑ", "(0, 0, -0.75 h)" -> "(0, 0, -0.75*h)", "-0.75h ẑ" -> "-0.75*h ẑ".
+std::string words_as_factors(const std::string& text, const std::vector<std::string>& words) {
+  const auto in_name = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  };
+  std::string out;
+  std::size_t copied = 0;
+  for (std::size_t at = 0; at < text.size();) {
+    // A letter group here: at the text's start, after no name's letter, or glued to a number.
+    const bool starts = std::isalpha(static_cast<unsigned char>(text[at])) &&
+                        (at == 0 || !in_name(text[at - 1]) ||
+                         std::isdigit(static_cast<unsigned char>(text[at - 1])));
+    if (!starts) {
+      ++at;
+      continue;
+    }
+    std::size_t end = at;
+    while (end < text.size() && in_name(text[end])) ++end;
+    if (std::find(words.begin(), words.end(), text.substr(at, end - at)) != words.end()) {
+      std::size_t before = at;
+      while (before > copied && text[before - 1] == ' ') --before;
+      const char c = before > copied ? text[before - 1] : ' ';
+      if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == ')') {
+        out += text.substr(copied, before - copied) + "*";
+        copied = at;
+      }
+    }
+    at = end;
+  }
+  return out + text.substr(copied);
+}
+
+// "-3/4 h ẑ", "(0, 0, -0.75 h)" for the cone's centre, h its height: after a number h is hours,
+// the wrong dimension here. Where every letter group of that unit is a symbol of the problem
+// and the text read with them as factors has the answer's dimension, that reading is judged,
+// and the feedback says so first. (Where the unit's dimension is right, "0.5 m" stays half a
+// metre; a unit in the wrong dimension is no reading the student can have meant.)
+std::optional<Verdict> judged_as_product(const Context& ctx, const Answer& a,
+                                         const std::string& text, const Unit& unit,
+                                         const Options& options, AxesLayout layout) {
+  if (unit_spelling_symbols(ctx, unit.text).empty()) return std::nullopt;
+  std::vector<std::string> words;
+  for (const auto& [at, length] : identifiers(unit.text))
+    words.push_back(unit.text.substr(at, length));
+  const std::string product = words_as_factors(text, words);
+  if (product == text) return std::nullopt;
+  try {
+    ReadAnswer q = read_answer(product, ctx.table, kField);
+    if (!q.as_written_error.empty()) return std::nullopt;
+    (void)moments_on_diagonal(a, q.value);
+    Verdict v = judge_read(ctx, a, product, q, options_for(a, options), layout);
+    if (v.wrong_dimension) return std::nullopt;
+    v.feedback.insert(
+        v.feedback.begin(),
+        fmt::format("read as {}, {} {}: after a number alone it would be the unit", trim(product),
+                    words.size() == 1 ? words[0] : fmt::format("{}", fmt::join(words, ", ")),
+                    words.size() == 1 ? symbol_described(ctx, words[0])
+                                      : std::string("the problem's symbols")));
+    return v;
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
 Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string& text,
                          const Options& options, AxesLayout labelled) {
   const AxesLayout layout =
@@ -695,6 +763,9 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
   // "diag(0.569, 4.209, 4.556)": the tensor in its principal axes, whose diagonal holds them.
   const bool diagonal_read = moments_on_diagonal(a, p.value);
   Verdict v = judge_read(ctx, a, text, p, options_for(a, options), layout);
+  if (v.wrong_dimension && p.unit) {
+    if (auto product = judged_as_product(ctx, a, text, *p.unit, options, layout)) return *product;
+  }
   if (diagonal_read)
     v.feedback.push_back("read as the moments on its diagonal (the tensor in its principal axes)");
   return v;

@@ -1204,25 +1204,41 @@ TEST_CASE("vectors added, each with its factor, read as their sum: ω from the E
   REQUIRE_THROWS_AS(box.check("center_of_mass", "(a, b, c)/2 + 1"), InputError);
 }
 
-TEST_CASE("a symbol after a number's '*' is a factor; spelling a unit after a space, it is said") {
+TEST_CASE("a symbol after a number is a unit where that reads, else a factor, and it is said") {
   // The cone's centre of mass, −3h/4 along z, h the height (and hours).
   const Fixture cone("solid-cone");
   REQUIRE(cone.check("center_of_mass", "-0.75*h ẑ").correct);
   REQUIRE(cone.check("center_of_mass", "-0.75*h*k̂").correct);
   REQUIRE_FALSE(cone.check("center_of_mass", "2*h k̂").correct);  // judged, not hours
   REQUIRE(cone.check("center_of_mass", "-0.225 m k̂").correct);   // a unit after a space
-  // After a space the letters are the unit, as "0.5 m" is half a metre where m is a mass: the
-  // wrong dimension, and a line saying they are the problem's symbol too.
-  const auto hours = cone.check("center_of_mass", "-0.75 h k̂");
-  REQUIRE_FALSE(hours.correct);
-  REQUIRE(hours.feedback ==
-          std::vector<std::string>{"you gave h (time); the answer is in m (length)",
-                                   "h is also the problem's symbol for the height: after a "
-                                   "number it reads as the unit; for the product, write the "
-                                   "'*' (number*h)"});
+  // After a space h reads as hours, which no length is: the height it must be, and the line
+  // says how it was read. Judged so, right or wrong.
+  const auto height = cone.check("center_of_mass", "-0.75 h k̂");
+  REQUIRE(height.correct);
+  REQUIRE(height.feedback ==
+          std::vector<std::string>{"read as -0.75*h k̂, h the problem's symbol for the height: "
+                                   "after a number alone it would be the unit"});
+  REQUIRE(cone.check("center_of_mass", "(0, 0, -3/4 h)").correct);
+  REQUIRE(cone.check("center_of_mass", "-0.75h ẑ").correct);  // glued, as "3h" is three hours
+  REQUIRE(cone.check("center_of_mass", "r_cm = -(3/4) h ẑ").correct);
+  const auto reversed = cone.check("center_of_mass", "(0, 0, 0.75 h)");
+  REQUIRE_FALSE(reversed.correct);
+  REQUIRE_THAT(reversed.feedback.at(0), Catch::StartsWith("read as (0, 0, 0.75*h), h the"));
+  REQUIRE(reversed.feedback.at(1) == "the sign is reversed");
+  // Where a unit's reading has the answer's dimension it stands: box-corner's a is a length,
+  // and "0.5 m" half a metre (not half of a mass).
+  const Fixture box("box-corner");
+  REQUIRE(box.check("center_of_mass", "(0.5 m, 1 m, 1.5 m)").correct);
+  // Where neither reading has it, the wrong dimension is said, with the symbol's line: the
+  // plate's I0 is kg m², 0.00072 m neither a length nor a mass.
   const Fixture plate("flying-plate");
-  REQUIRE_THAT(plate.check("I0", "0.00072 m").feedback.at(1),
-               Catch::StartsWith("m is also the problem's symbol for the mass"));
+  const auto neither = plate.check("I0", "0.00072 m");
+  REQUIRE_FALSE(neither.correct);
+  REQUIRE(neither.feedback ==
+          std::vector<std::string>{"you gave m (length); the answer is in kg m^2 (mass x length^2)",
+                                   "m is also the problem's symbol for the mass: after a number "
+                                   "it reads as the unit; for the product, write the '*' "
+                                   "(number*m)"});
   // A unit that is no symbol of the problem gets the dimension alone.
   REQUIRE(cone.check("center_of_mass", "-0.225 s k̂").feedback.size() == 1);
 }
