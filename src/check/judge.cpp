@@ -850,7 +850,7 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
         std::rethrow_exception(refusal);  // the name as it was refused, with its hint
       throw InputError(second.substr(0, at2) + first.substr(at1, end1 - at1) + second.substr(end2));
     }
-    v.feedback.push_back(referenced->note);
+    v.feedback.push_back(referenced->note + (v.correct ? referenced->when_right : ""));
     return v;
   }
 }

@@ -342,9 +342,8 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
   const std::string read = shown   ? subject + " = " + sym::to_unicode(r->symbolic) + ","
                            : begun ? subject + ","
                                    : subject + " as";
-  return Referenced{out, fmt::format("read with {} the key's answer to part ({}): right as far "
-                                     "as your {} is",
-                                     read, part->id, yours)};
+  return Referenced{out, fmt::format("read with {} the key's answer to part ({})", read, part->id),
+                    fmt::format(": right as far as your {} is", yours)};
 }
 
 // `text` with the convention's names (key.hpp's ConventionName: Taylor's φ for PHY 711's α)
@@ -369,8 +368,10 @@ std::optional<Referenced> convention_named(const Context& ctx, const std::string
                sym::to_unicode(names[i].parameter);
     }
   }
-  return Referenced{put->text, fmt::format("read in {} names, as this problem's symbols: {}",
-                                           ctx.key.convention, lines)};
+  return Referenced{
+      put->text,
+      fmt::format("read in {} names, as this problem's symbols: {}", ctx.key.convention, lines),
+      ""};
 }
 
 namespace {
@@ -442,8 +443,8 @@ std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
   }
   return Referenced{
       brackets_put_in(put->text),
-      fmt::format("read with {}, as the key's steps write {}: right as far as your {} {}", forms,
-                  count == 1 ? "it" : "them", yours, count == 1 ? "is" : "are")};
+      fmt::format("read with {}, as the key's steps write {}", forms, count == 1 ? "it" : "them"),
+      fmt::format(": right as far as your {} {}", yours, count == 1 ? "is" : "are")};
 }
 
 }  // namespace wobble::check::detail

@@ -26,9 +26,10 @@ std::string refused_name(const std::string& message);
 std::string latex_unknown_symbol(const std::string& message);
 
 /// An answer's text with forms put in for names (plain text the reader reads), and the line of
-/// feedback that says which.
+/// feedback that says which; `when_right` ends that line where the answer is judged right (": right
+/// as far as your I3 is"), which a wrong one is not.
 struct Referenced {
-  std::string text, note;
+  std::string text, note, when_right;
 };
 
 /// `text` with another answer's name, the one the reader's `message` refused, written as the

@@ -841,7 +841,9 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
   }
   const auto doubled = plate.check("I", "I₀ diag(2, 2, 4)");
   REQUIRE_FALSE(doubled.correct);
-  REQUIRE_THAT(doubled.feedback.back(), Catch::Equals(i0_note));
+  // Read so and wrong: the line says how, not that it is "right as far as" I0 is.
+  REQUIRE_THAT(doubled.feedback.back(),
+               Catch::Equals("read with I0 = m·R²/4, the key's answer to part (a)"));
   // t_max in terms of part (e)'s rate, as half its period.
   const auto half = plate.check("t_max", "π/Ω_space_rate");
   REQUIRE(half.correct);
@@ -938,7 +940,9 @@ TEST_CASE("a magnitude in bars reads, of an expression or of an earlier vector a
     REQUIRE(v.correct);
     REQUIRE(v.feedback == std::vector<std::string>{note});
   }
-  REQUIRE_FALSE(plate.check("t_max", "2π/|Ω_space|").correct);
+  const auto twice = plate.check("t_max", "2π/|Ω_space|");
+  REQUIRE_FALSE(twice.correct);  // read so, and not "right as far as" Ω_space is
+  REQUIRE(twice.feedback.back() == "read with Omega_space as the key's answer to part (e)");
   // In LaTeX, with the subscript in words as the statement writes it (\mathrm, \text).
   for (const char* same :
        {"\\frac{\\pi}{|\\Omega_{space}|}", "\\pi/\\lvert\\Omega_\\mathrm{space}\\rvert",
@@ -1347,14 +1351,16 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
     REQUIRE(v.feedback == std::vector<std::string>{note});
   }
   // Read so, a wrong answer is wrong: the transverse moment for the axial one, and the fast
-  // top's approximation, which is said as such.
+  // top's approximation, which is said as such. The line says how the names were read, and not
+  // that the answer is "right as far as" they are.
   const auto transverse = top.check("p_phi", "I1 ψ̇0 cos θ0");
   REQUIRE_FALSE(transverse.correct);
-  REQUIRE_THAT(transverse.feedback.back(), Catch::StartsWith("read with " + i1));
+  REQUIRE(transverse.feedback.back() == "read with " + i1 + ", as the key's steps write it");
   const auto fast_top = top.check("phidot_slow", "M g l/(I3 ω3)");
   REQUIRE_FALSE(fast_top.correct);
   REQUIRE_THAT(fast_top.feedback.front(), Catch::StartsWith("this is the fast-top approximation"));
-  REQUIRE(fast_top.feedback.back() == spin);
+  REQUIRE(fast_top.feedback.back() ==
+          "read with " + i3 + ", " + w3 + ", as the key's steps write them");
   // With an earlier answer's name too, each is said.
   const auto both = top.check("omega3", "p_ψ/I₃");
   REQUIRE(both.correct);
