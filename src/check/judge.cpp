@@ -674,7 +674,8 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
 }
 
 // `text` with each of `words` that follows a number or a closing bracket written as a factor:
-// "-3/4 h ẑ" -> "-3/4*h ẑ", "(0, 0, -0.75 h)" -> "(0, 0, -0.75*h)", "-0.75h ẑ" -> "-0.75*h ẑ".
+// "-3/4 h ẑ" -> "-3/4*h ẑ", "(0, 0, -0.75 h)" -> "(0, 0, -0.75*h)", "-0.75h ẑ" -> "-0.75*h ẑ",
+// "-\frac{3}{4} h \hat{z}" -> "-\frac{3}{4}*h \hat{z}".
 std::string words_as_factors(const std::string& text, const std::vector<std::string>& words) {
   const auto in_name = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -693,10 +694,21 @@ std::string words_as_factors(const std::string& text, const std::vector<std::str
     std::size_t end = at;
     while (end < text.size() && in_name(text[end])) ++end;
     if (std::find(words.begin(), words.end(), text.substr(at, end - at)) != words.end()) {
+      // Spaces before it, LaTeX's too ("0.75\,h"); then a number, a bracket or a LaTeX
+      // fraction's brace ("\frac{3}{4} h").
       std::size_t before = at;
-      while (before > copied && text[before - 1] == ' ') --before;
+      while (before > copied) {
+        if (text[before - 1] == ' ' || text[before - 1] == '~') {
+          --before;
+        } else if (before >= copied + 2 && text[before - 2] == '\\' &&
+                   std::string_view(",;:! ").find(text[before - 1]) != std::string_view::npos) {
+          before -= 2;
+        } else {
+          break;
+        }
+      }
       const char c = before > copied ? text[before - 1] : ' ';
-      if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == ')') {
+      if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == ')' || c == '}') {
         out += text.substr(copied, before - copied) + "*";
         copied = at;
       }

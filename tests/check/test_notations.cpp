@@ -1224,6 +1224,9 @@ TEST_CASE("a symbol after a number is a unit where that reads, else a factor, an
                                    "after a number alone it would be the unit"});
   REQUIRE(cone.check("center_of_mass", "(0, 0, -3/4 h)").correct);
   REQUIRE(cone.check("center_of_mass", "-0.75h ẑ").correct);  // glued, as "3h" is three hours
+  // In LaTeX, after a fraction or a thin space.
+  REQUIRE(cone.check("center_of_mass", "-\\frac{3}{4} h \\hat{z}").correct);
+  REQUIRE(cone.check("center_of_mass", "-0.75\\,h\\,\\hat{z}").correct);
   REQUIRE(cone.check("center_of_mass", "r_cm = -(3/4) h ẑ").correct);
   const auto reversed = cone.check("center_of_mass", "(0, 0, 0.75 h)");
   REQUIRE_FALSE(reversed.correct);
