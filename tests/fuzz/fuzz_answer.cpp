@@ -3,7 +3,8 @@
 // PHY 711 problem, whose key names Taylor's φ, θ, ψ for its α, β, γ; against the heavy top's
 // p_phi, whose key reads I₁, I₃, ω₃ as its steps write them, and its theta_max, a bound, which
 // reads an inequality, a range or an interval; and against the flying plate's t_max, which reads
-// an earlier vector's magnitude (π/|Ω_space|).
+// an earlier vector's magnitude (π/|Ω_space|); and against the cone's centre of mass, a length
+// in h, which reads "-0.75 h ẑ" as the height, no number of hours.
 #include <set>
 #include <string>
 #include <utility>
@@ -34,8 +35,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const Fixture plate("flying-plate", {"I0", "I", "L0_body", "angle_L_e3", "t_max"});
   static const Fixture phy711("euler-angles-phy711", {"R_phy711", "angles_phy711"});
   static const Fixture top("heavy-top", {"p_phi", "theta_max"});
+  // A length whose symbol h spells a unit (hours): the symbol read where the unit's dimension
+  // is wrong.
+  static const Fixture cone("solid-cone", {"center_of_mass"});
   const std::string text = wobble::fuzz::text_of(data, size);
-  for (const Fixture* f : {&plate, &phy711, &top}) {
+  for (const Fixture* f : {&plate, &phy711, &top, &cone}) {
     for (const auto& part : f->key.parts) {
       for (const auto& a : part.answers) {
         if (f->judged.count(a.name) == 0) continue;
