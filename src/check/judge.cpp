@@ -39,6 +39,7 @@ namespace wobble::check {
 using detail::answer_referenced;
 using detail::convention_named;
 using detail::defined_named;
+using detail::entry_named;
 using detail::Judge;
 using detail::judge_symbolic;
 using detail::kField;
@@ -774,7 +775,16 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
   if (number && !p.as_written_error.empty()) throw refused(p.as_written_error);
   // "diag(0.569, 4.209, 4.556)": the tensor in its principal axes, whose diagonal holds them.
   const bool diagonal_read = moments_on_diagonal(a, p.value);
-  Verdict v = judge_read(ctx, a, text, p, options_for(a, options), layout);
+  Verdict v = [&] {
+    try {
+      return judge_read(ctx, a, text, p, options_for(a, options), layout);
+    } catch (const InputError& e) {
+      // An expression that reads but is imaginary at the set values, as the root of Ω₃ Ω₁ about
+      // the unstable axis is: the same hint as for a number.
+      if (std::string_view(e.what()).find("not real") == std::string_view::npos) throw;
+      throw InputError(e.what() + imaginary_hint(a, text, e.what()));
+    }
+  }();
   if (v.wrong_dimension && p.unit) {
     if (auto product = judged_as_product(ctx, a, text, *p.unit, options, layout)) return *product;
   }
@@ -830,8 +840,9 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
   } catch (const InputError& e) {
     std::optional<Referenced> referenced = convention_named(ctx, text, e.what());
     if (!referenced) referenced = defined_named(ctx, a, text, e.what());
-    // A name the key itself reads (a convention's, its steps'), unlike an answer's name, is no
-    // longer what keeps the answer from reading.
+    if (!referenced) referenced = entry_named(ctx, a, text, e.what());
+    // A name the key itself reads (a convention's, its steps', an entry's), unlike an answer's
+    // name, is no longer what keeps the answer from reading.
     const bool key_names = referenced.has_value();
     if (!referenced) referenced = answer_referenced(ctx, a, text, e.what());
     if (!referenced) throw;

@@ -18,6 +18,7 @@
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/names_run_together.hpp"
+#include "check/typed_text.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -250,7 +251,15 @@ std::optional<NamesPutIn> names_put_in(
     const std::string refused = refused_name(message);
     if (refused.empty() || !names_replaced(names_apart(refused, with_names), ours).second)
       return std::nullopt;
-    ascii = names_apart(sym::to_ascii(text), with_names);
+    // In the reader's notation, so that a Greek letter stands apart from its neighbours as
+    // the reader sets it ("c₁ω₂ω₃": ω₂ and ω₃ may be symbols spelled so, w2 and w3).
+    std::string typed = sym::to_ascii(text);
+    try {
+      typed = prepared(text, kField);
+    } catch (const InputError&) {
+      // what the reader refuses there, it refuses again when the forms are put in
+    }
+    ascii = names_apart(typed, with_names);
   }
   NamesPutIn put{"", std::vector<bool>(names.size(), false)};
   const auto [replaced, found] =
@@ -354,7 +363,9 @@ std::optional<Referenced> convention_named(const Context& ctx, const std::string
   std::vector<std::string> spelled;
   for (const ConventionName& c : names) spelled.push_back(c.name);
   const auto index_of = [&](const std::string& word) -> std::optional<std::size_t> {
-    const auto it = std::find(spelled.begin(), spelled.end(), word);
+    std::string bare = word;  // "Omega_1" as the question's Ω₁
+    bare.erase(std::remove(bare.begin(), bare.end(), '_'), bare.end());
+    const auto it = std::find(spelled.begin(), spelled.end(), bare);
     if (it == spelled.end()) return std::nullopt;
     return static_cast<std::size_t>(it - spelled.begin());
   };
@@ -445,6 +456,85 @@ std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
       brackets_put_in(put->text),
       fmt::format("read with {}, as the key's steps write {}", forms, count == 1 ? "it" : "them"),
       fmt::format(": right as far as your {} {}", yours, count == 1 ? "is" : "are")};
+}
+
+// `text` with the names an earlier answer gives its entries (key.hpp's named_entries: the
+// asymmetric top's (Ω₂, Ω₃) about e₁, Euler's c₁, c₂, c₃) as their exact forms (names_put_in),
+// and the line that says so. A name is the entry of the last answer before `a` that gives it:
+// each axis's pair names its own Ω's, and the rate about that axis comes right after it
+// (√(Ω₂ Ω₃) for rate_axis1). Not a name that is a symbol of the problem (Taylor's φ, θ, ψ).
+std::optional<Referenced> entry_named(const Context& ctx, const Answer& a, const std::string& text,
+                                      const std::string& message) {
+  struct Entry {
+    std::string name, form, shown;
+    const Answer* of;
+  };
+  std::vector<Entry> entries;
+  bool before_a = false;
+  for (const auto& part : ctx.key.parts) {
+    for (const auto& b : part.answers) {
+      if (&b == &a) {
+        before_a = true;
+        break;
+      }
+      if (b.named_entries.empty() || b.symbolic.empty()) continue;
+      const ListItems forms = list_items(b.symbolic);
+      if (forms.items.size() != b.named_entries.size()) continue;
+      for (std::size_t i = 0; i < forms.items.size(); ++i) {
+        const std::string name = sym::to_ascii(b.named_entries[i]);
+        if (ctx.table.contains(name)) continue;
+        const auto same = std::find_if(entries.begin(), entries.end(),
+                                       [&](const Entry& e) { return e.name == name; });
+        if (same != entries.end()) entries.erase(same);  // the later answer's, in its order
+        entries.push_back({name, forms.items[i], b.named_entries[i], &b});
+      }
+    }
+    if (before_a) break;
+  }
+  std::vector<std::string> spelled;
+  for (const Entry& e : entries) spelled.push_back(e.name);
+  const auto index_of = [&](const std::string& word) -> std::optional<std::size_t> {
+    std::string bare = word;  // "Omega_1" as the question's Ω₁
+    bare.erase(std::remove(bare.begin(), bare.end(), '_'), bare.end());
+    const auto it = std::find(spelled.begin(), spelled.end(), bare);
+    if (it == spelled.end()) return std::nullopt;
+    return static_cast<std::size_t>(it - spelled.begin());
+  };
+  const std::optional<NamesPutIn> put =
+      names_put_in(ctx, text, message, spelled, index_of,
+                   [&](std::size_t i) { return kPutIn + entries[i].form + kPutInEnd; });
+  if (!put) return std::nullopt;
+  // The line: each name read with its form where the forms are one line's worth, and whose
+  // entries they are, answer by answer in the key's order.
+  constexpr std::size_t kLongestFormsShown = 80;
+  std::string forms, yours, whose;
+  std::size_t count = 0, length = 0;
+  std::vector<const Answer*> answers;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (!put->read[i]) continue;
+    length += entries[i].form.size();
+    if (std::find(answers.begin(), answers.end(), entries[i].of) == answers.end())
+      answers.push_back(entries[i].of);
+  }
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (!put->read[i]) continue;
+    forms += (forms.empty() ? "" : ", ") + entries[i].shown;
+    if (length <= kLongestFormsShown) forms += " = " + sym::to_unicode(entries[i].form);
+    yours += (yours.empty() ? "" : ", ") + entries[i].shown;
+    ++count;
+  }
+  for (const Answer* b : answers) {
+    const auto part =
+        std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
+          return std::any_of(p.answers.begin(), p.answers.end(),
+                             [&](const Answer& x) { return &x == b; });
+        });
+    whose += fmt::format("{}{} (part {})", whose.empty() ? "" : " and ", b->name, part->id);
+  }
+  return Referenced{brackets_put_in(put->text),
+                    fmt::format("read with {}, {} the key's answer {}", forms,
+                                count == 1 ? "an entry of" : "entries of", whose),
+                    fmt::format(": right as far as your {} {}", yours, count == 1 ? "is" : "are")};
 }
 
 }  // namespace wobble::check::detail

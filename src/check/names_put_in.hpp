@@ -51,4 +51,11 @@ std::optional<Referenced> convention_named(const Context& ctx, const std::string
 std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
                                         const std::string& text, const std::string& message);
 
+/// `text` with the names an earlier answer gives its entries (key.hpp's named_entries: the
+/// asymmetric top's Ω₂, Ω₃ of its spin about e₁, Euler's c₁, c₂, c₃) as their exact forms, and
+/// the line that says so. Each name is the entry of the last answer before `a` that gives it (the
+/// rate about e₁ comes after that axis's pair). Not a symbol of the problem.
+std::optional<Referenced> entry_named(const Context& ctx, const Answer& a, const std::string& text,
+                                      const std::string& message);
+
 }  // namespace wobble::check::detail

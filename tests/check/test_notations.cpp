@@ -1315,6 +1315,59 @@ TEST_CASE("a parameter's name but for its 0 is named with the parameter, not rea
                       !Catch::Contains("the problem's is"));
 }
 
+TEST_CASE(
+    "an earlier answer's named entries read as its forms: the Ω's of each axis, Euler's c's") {
+  const Fixture top("asymmetric-top");
+  // The rate about e₁ in the lecture's Ω₂, Ω₃ of the spin about e₁ (Omega_axis1, just before).
+  const std::string axis1 =
+      "read with Ω₂ = (I1 - I3)·√(w1² + w2² + w3²)/I2, Ω₃ = (I1 - I2)·√(w1² + w2² + w3²)/I3, "
+      "entries of the key's answer Omega_axis1 (part b)";
+  for (const char* same : {"√(Ω₂ Ω₃)", "sqrt(Omega2*Omega3)", "sqrt(Omega_2 Omega_3)",
+                           "\\sqrt{\\Omega_2 \\Omega_3}"}) {
+    INFO(same);
+    const auto v = top.check("rate_axis1", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{axis1 + ": right as far as your Ω₂, Ω₃ are"});
+  }
+  // Each axis's own: Ω₂ about e₃ is the negative of Ω₂ about e₁, and the rate about e₃ reads
+  // the pair just before it.
+  const auto axis3 = top.check("rate_axis3", "√(Ω₁Ω₂)");
+  REQUIRE(axis3.correct);
+  REQUIRE_THAT(axis3.feedback.at(0), Catch::EndsWith("entries of the key's answer Omega_axis3 "
+                                                     "(part b): right as far as your Ω₁, Ω₂ are"));
+  REQUIRE(top.check("rate_axis2", "√(−Ω₃Ω₁)").correct);
+  // About the unstable axis Ω₃ Ω₁ < 0: its root is refused as not real, with the growth hint, as
+  // the same root written in the symbols is.
+  for (const char* imaginary :
+       {"√(Ω₃Ω₁)", "sqrt((I1-I2)*(I3-I2)/(I1*I3)) * sqrt(w1^2+w2^2+w3^2)"}) {
+    INFO(imaginary);
+    REQUIRE_THROWS_WITH(top.check("rate_axis2", imaginary),
+                        Catch::Contains("not real (answers here are real; an imaginary frequency "
+                                        "iλ is a growth e^(λt), and its rate is λ)"));
+  }
+  // Wrong, read so: the line without its "right as far as".
+  const auto half = top.check("rate_axis1", "√(Ω₂ Ω₃)/2");
+  REQUIRE_FALSE(half.correct);
+  REQUIRE(half.feedback.back() == axis1);
+  // Euler's equations' coefficients in dω/dt at t = 0, run together as the equations write them.
+  const auto rates = top.check("dw_dt0", "(c₁ω₂ω₃, c₂ω₃ω₁, c₃ω₁ω₂)");
+  REQUIRE(rates.correct);
+  REQUIRE(rates.feedback ==
+          std::vector<std::string>{
+              "read with c₁ = (I2 - I3)/I1, c₂ = -(I1 - I3)/I2, c₃ = (I1 - I2)/I3, entries of the "
+              "key's answer euler_coefficients (part a): right as far as your c₁, c₂, c₃ are"});
+  // An answer's own entries are no working, and a later answer's none to read.
+  REQUIRE_THROWS_AS(top.check("Omega_axis1", "(Ω₂, Ω₃)"), InputError);
+  REQUIRE_THROWS_AS(top.check("euler_coefficients", "(Ω₂/w1, 1, 1)"), InputError);
+  // Forms longer than a line are named, not written out (the tennis racket's).
+  const Fixture racket("tennis-racket");
+  const auto flip = racket.check("rate_axis2", "√(−Ω₃ Ω₁)");
+  REQUIRE(flip.correct);
+  REQUIRE(flip.feedback == std::vector<std::string>{"read with Ω₃, Ω₁, entries of the key's "
+                                                    "answer Omega_axis2 (part b): right as far as "
+                                                    "your Ω₃, Ω₁ are"});
+}
+
 TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and says so") {
   // The steps write p_ψ = I₃ ω₃, ω₃ ≥ 2 √(M g l I₁)/I₃: a student writes the answers so too. The
   // names read as the key's exact forms, and the line says which, as for an earlier answer.
