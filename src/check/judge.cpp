@@ -469,7 +469,10 @@ std::string name_in_key(const Key& key, const std::string& written) {
     if (part.id == written) return written;
     for (const auto& answer : part.answers) {
       if (answer.name == written) return written;
-      if (name_spelling(answer.name) == spelling) {
+      const bool step_named =
+          std::any_of(answer.step_names.begin(), answer.step_names.end(),
+                      [&](const std::string& n) { return name_spelling(n) == spelling; });
+      if (name_spelling(answer.name) == spelling || step_named) {
         found = answer.name;
         ++matches;
       }

@@ -188,6 +188,11 @@ namespace {
 // A name as LaTeX draws it, as a problem file spells its own: "phidot" -> "\dot\phi", "omega3"
 // -> "\omega_3", "I1" -> "I_1". The LaTeX reader lists the symbols so.
 std::string name_latex(const std::string& name) {
+  // "theta_L" -> "\theta_L": a Greek stem and its subscript in letters, as the steps write θ_L.
+  if (const std::size_t under = name.find('_');
+      under != std::string::npos && under + 1 < name.size() &&
+      sym::greek_letters().count(name.substr(0, under)) != 0)
+    return "\\" + name.substr(0, under) + "_{" + name.substr(under + 1) + "}";
   std::size_t digits = name.size();
   while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
   std::string base = name.substr(0, digits);
@@ -286,8 +291,13 @@ std::optional<std::pair<std::string, std::string>> latex_with_answer_names(
   sym::SymbolTable with_answers = ctx.table;
   for (const auto& part : ctx.key.parts) {
     for (const auto& b : part.answers) {
-      if (referable_answer(ctx, a, b.name) != nullptr && !with_answers.contains(b.name))
+      if (referable_answer(ctx, a, b.name) == nullptr) continue;
+      if (!with_answers.contains(b.name))
         with_answers.declare(b.name, name_latex(b.name), sym::SymbolSign::real);
+      for (const std::string& step_name : b.step_names) {  // \theta_L for angle_L_e3
+        if (!with_answers.contains(step_name))
+          with_answers.declare(step_name, name_latex(step_name), sym::SymbolSign::real);
+      }
     }
   }
   std::string ascii;
@@ -345,8 +355,13 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
   const bool shown =
       r->value.shape == Value::Shape::scalar && r->symbolic.size() <= kLongestFormShown;
   // Ω_body for Omega_body_rate: the name as typed, and the answer it is read as.
-  const bool begun = name_in_key(ctx.key, name) != r->name;
-  const std::string yours = begun ? sym::to_unicode(name) : r->name;
+  // θ_L for angle_L_e3 alike: the name the steps write for it.
+  const bool begun = name_spelling(name) != name_spelling(r->name);
+  // As typed, its Greek stem as a letter: "Ω_body", "θ_L" (to_unicode keeps a name with an
+  // underscore whole).
+  const std::size_t stem = std::min(name.find('_'), name.size());
+  const std::string yours =
+      begun ? sym::to_unicode(name.substr(0, stem)) + name.substr(stem) : r->name;
   const std::string subject = begun ? yours + " as " + r->name : r->name;
   const std::string read = shown   ? subject + " = " + sym::to_unicode(r->symbolic) + ","
                            : begun ? subject + ","

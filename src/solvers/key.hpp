@@ -118,6 +118,10 @@ struct Answer {
   /// "Ω₂", "Ω₃" of a pair): empty for components along axes (entry_names gives those). Set by
   /// the solver; the JSON key lists them as "entries".
   std::vector<std::string> named_entries;
+  /// What the steps call this answer where that is not its name, GiNaC text ("theta_L" for the
+  /// angle of L from e₃, as tan θ_L = (I1/I3) tan α writes it): a student may write it so. Set by
+  /// the solver; not in the JSON key (the steps say it).
+  std::vector<std::string> step_names;
 };
 
 /// The entries of the coefficients c in Euler's equations dω₁/dt = c₁ ω₂ ω₃, ..: the answer

@@ -164,6 +164,7 @@ Computed angle_L(const Top& t, const std::string& q) {
   out.steps.push_back({"tan θ_L = L1/L3 = (I1/I3) tan α",
                        "\\theta_L = \\operatorname{atan2}(I_1\\sin\\alpha,\\ I_3\\cos\\alpha)",
                        "The angle of L from e3:"});
+  out.answer.step_names = {"theta_L"};
   std::string where = t.numeric.alpha_rad == 0.0 ? "α = 0: e3, w and L all lie along z."
                       : t.prolate ? "Prolate: L lies beyond w; w lies between e3 and L (θ_L > α)."
                       : t.oblate  ? "Oblate: L lies between w and e3 (θ_L < α)."

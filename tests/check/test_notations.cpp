@@ -905,9 +905,9 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
   const auto euler_period = wobble_rate.check("precession_period_body", "2π/Ω_body");
   REQUIRE(euler_period.correct);
   REQUIRE(euler_period.feedback ==
-          std::vector<std::string>{"read with Omega_body as Omega_body_rate = -H·ω·cos(α)/(H - "
+          std::vector<std::string>{"read with Ω_body as Omega_body_rate = -H·ω·cos(α)/(H - "
                                    "1), the key's answer to part (a): right as far as your "
-                                   "Omega_body is"});
+                                   "Ω_body is"});
   REQUIRE_FALSE(wobble_rate.check("precession_period_body", "π/Ω_body").correct);
   REQUIRE_THROWS_WITH(wobble_rate.check("Omega_body_rate", "Ω_body"),
                       Catch::Contains("Omega_body names the answer Omega_body_rate (part (a))"));
@@ -1366,6 +1366,32 @@ TEST_CASE(
   REQUIRE(flip.feedback == std::vector<std::string>{"read with Ω₃, Ω₁, entries of the key's "
                                                     "answer Omega_axis2 (part b): right as far as "
                                                     "your Ω₃, Ω₁ are"});
+}
+
+TEST_CASE("a name the steps write for an earlier answer reads as it: θ_L for the angle of L") {
+  // The steps write tan θ_L = (I1/I3) tan α; the space cone's half angle is θ_L − α for a prolate
+  // body (rect-solid), α − θ_L for an oblate one (the plate).
+  const Fixture solid("rect-solid");
+  const std::string note =
+      "read with θ_L as angle_L_e3 = atan2(2·sin(α),cos(α)), the key's "
+      "answer to part (c)";
+  for (const char* same :
+       {"θ_L − α", "theta_L - alpha", "\\theta_L - \\alpha", "\\theta_{L} - \\alpha"}) {
+    INFO(same);
+    const auto v = solid.check("space_cone_half_angle", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{note + ": right as far as your θ_L is"});
+  }
+  const auto reversed = solid.check("space_cone_half_angle", "α − θ_L");
+  REQUIRE_FALSE(reversed.correct);
+  REQUIRE(reversed.feedback.back() == note);
+  const Fixture plate("flying-plate");
+  REQUIRE(plate.check("space_cone_half_angle", "α − θ_L").correct);
+  // As a label it names that answer, and the answer itself is no working.
+  REQUIRE(solid.check("angle_L_e3", "θ_L = 28.19°").correct);
+  REQUIRE(solid.check("space_cone_half_angle", "θ_L = 28.19°").feedback ==
+          std::vector<std::string>{"this is angle_L_e3 (part c), not space_cone_half_angle"});
+  REQUIRE_THROWS_AS(solid.check("angle_L_e3", "θ_L"), InputError);
 }
 
 TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and says so") {
@@ -1934,7 +1960,10 @@ TEST_CASE("an answer's name as the statement or LaTeX writes it finds the answer
   REQUIRE(name_in_key(plate.key, "Ω_body_rate") == "Omega_body_rate");
   // A part's id stays itself, and a word that is neither is returned for the lookup to refuse.
   REQUIRE(name_in_key(plate.key, "a") == "a");
-  REQUIRE(name_in_key(plate.key, "θ_L") == "θ_L");
+  REQUIRE(name_in_key(plate.key, "ψ_L") == "ψ_L");
+  // A name the steps write for an answer finds it: tan θ_L = (I1/I3) tan α, the angle of L.
+  REQUIRE(name_in_key(plate.key, "θ_L") == "angle_L_e3");
+  REQUIRE(name_in_key(plate.key, "\\theta_{L}") == "angle_L_e3");
   REQUIRE(name_in_key(plate.key, "") == "");
 }
 
