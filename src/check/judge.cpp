@@ -279,6 +279,24 @@ std::string answer_name_hint(const Context& ctx, const std::string& typed,
   return "";
 }
 
+// "(0.0131, 0.1529) m" for the planar molecule's centre of mass: where a 3-vector's last entry
+// is zero in the key's exact form (a body in the plane z = 0) and `v` is a 2-vector, `v` becomes
+// (x, y, 0); whether it did. Not where another entry is the zero one ("(0, -0.225)" for the
+// cone's centre on its axis reads two ways), nor for entries the question names.
+bool in_plane_of_two(const Answer& a, sym::ValueText& v) {
+  if (a.value.shape != Value::Shape::vector || a.value.data.size() != 3 ||
+      !a.named_entries.empty() || a.kind == AnswerKind::principal_moments || !v.is_vector ||
+      v.entries.size() != 2)
+    return false;
+  const ListItems forms = list_items(a.symbolic);
+  const bool zero = a.symbolic.empty() ? a.value.data[2] == 0.0
+                                       : forms.items.size() == 3 && trim(forms.items[2]) == "0";
+  if (!zero || a.value.data[0] == 0.0 || a.value.data[1] == 0.0) return false;
+  v.entries.push_back(GiNaC::ex(0));
+  v.rows = 3;
+  return true;
+}
+
 // Where the principal moments are asked for and `v` is a 3x3 matrix with nothing off its
 // diagonal (the tensor in its principal axes, "diag(..)"), `v` becomes its diagonal; whether it
 // did.
@@ -778,6 +796,7 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
   if (number && !p.as_written_error.empty()) throw refused(p.as_written_error);
   // "diag(0.569, 4.209, 4.556)": the tensor in its principal axes, whose diagonal holds them.
   const bool diagonal_read = moments_on_diagonal(a, p.value);
+  const bool in_plane = in_plane_of_two(a, p.value);
   Verdict v = [&] {
     try {
       return judge_read(ctx, a, text, p, options_for(a, options), layout);
@@ -793,6 +812,11 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
   }
   if (diagonal_read)
     v.feedback.push_back("read as the moments on its diagonal (the tensor in its principal axes)");
+  if (in_plane) {
+    const std::vector<std::string> axes = entry_names(a);
+    v.feedback.push_back(
+        fmt::format("read with {0} = 0: the key's {0} is zero", axes.size() == 3 ? axes[2] : "z"));
+  }
   return v;
 }
 

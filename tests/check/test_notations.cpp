@@ -1368,6 +1368,27 @@ TEST_CASE(
                                                     "your Ω₃, Ω₁ are"});
 }
 
+TEST_CASE("a 2-vector for a 3-vector whose z is zero in the key's form is (x, y, 0), said") {
+  // The planar molecule's centre of mass lies in its plane z = 0.
+  const Fixture molecule("three-atom-molecule");
+  const std::string note = "read with z = 0: the key's z is zero";
+  for (const char* same : {"(0.0131, 0.1529) m", "[0.0131, 0.1529]",
+                           "((m1 d1 + m2 d2 cos α)/(M+m1+m2), m2 d2 sin α/(M+m1+m2))"}) {
+    INFO(same);
+    const auto v = molecule.check("center_of_mass", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback.back() == note);
+  }
+  const auto off = molecule.check("center_of_mass", "(0.0131, 0.15) m");
+  REQUIRE_FALSE(off.correct);
+  REQUIRE(off.feedback == std::vector<std::string>{"entry y is off by 1.87%", note});
+  // Not where another entry is the zero one: "(0, -0.225)" for the cone's centre on its axis
+  // reads two ways, and the shape is refused as before.
+  const Fixture cone("solid-cone");
+  REQUIRE_THROWS_WITH(cone.check("center_of_mass", "(0, -0.225) m"),
+                      Catch::Contains("wants a 3-vector [..], not a 2-vector"));
+}
+
 TEST_CASE("a name the steps write for an earlier answer reads as it: θ_L for the angle of L") {
   // The steps write tan θ_L = (I1/I3) tan α; the space cone's half angle is θ_L − α for a prolate
   // body (rect-solid), α − θ_L for an oblate one (the plate).
