@@ -139,17 +139,23 @@ std::size_t magnitude_call_at(const std::string& ascii, std::size_t i) {
   return 0;
 }
 
+// The magnitude of the vector answer `r` in its exact form: sqrt of the sum of its entries'
+// squares, in brackets.
+std::string magnitude_of(const Answer& r) {
+  std::string squares;
+  for (const std::string& entry : list_items(r.symbolic).items)
+    squares += (squares.empty() ? "(" : "+(") + entry + ")^2";
+  return "(sqrt(" + squares + "))";
+}
+
 // `ascii` with the magnitude of the vector answer `r` put in where the text takes it of r's
 // name, "|Omega_space|", "norm(Omega_space)" or "abs(Omega_space)", as the flying plate's
-// statement writes t = π/|Ω_space|: sqrt of the sum of its entries' squares; and whether it was.
+// statement writes t = π/|Ω_space|; and whether it was.
 std::pair<std::string, bool> magnitudes_put_in(
     const std::string& ascii, const Answer& r,
     const std::function<bool(const std::string&)>& names_r) {
   if (r.value.shape != Value::Shape::vector) return {ascii, false};
-  std::string squares;
-  for (const std::string& entry : list_items(r.symbolic).items)
-    squares += (squares.empty() ? "(" : "+(") + entry + ")^2";
-  const std::string magnitude = "(sqrt(" + squares + "))";
+  const std::string magnitude = magnitude_of(r);
   std::string out;
   bool found = false;
   for (std::size_t i = 0; i < ascii.size();) {
@@ -337,9 +343,14 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
     return name_in_key(ctx.key, word) == r->name || answer_begun(ctx.key, word) == r->name;
   };
   const auto [with_magnitudes, magnitude] = magnitudes_put_in(ascii, *r, names_r);
+  // In a number's expression a vector's name alone can only be its size, as books write Ω for
+  // the precession rate: "π/Ω_space" for t_max is π/|Ω_space|, and the line says so.
+  const bool size_of_name =
+      a.value.shape == Value::Shape::scalar && r->value.shape == Value::Shape::vector;
   const auto [out, named] =
       names_replaced(with_magnitudes, [&](const std::string& word) -> std::optional<std::string> {
         if (!names_r(word)) return std::nullopt;
+        if (size_of_name) return magnitude_of(*r);
         // A vector's or matrix's own brackets hold it (round ones about it would not read).
         if (r->value.shape != Value::Shape::scalar) return r->symbolic;
         return "(" + r->symbolic + ")";
@@ -366,6 +377,13 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
   const std::string read = shown   ? subject + " = " + sym::to_unicode(r->symbolic) + ","
                            : begun ? subject + ","
                                    : subject + " as";
+  if (named && size_of_name) {
+    return Referenced{out,
+                      fmt::format("read with {} as its size |{}| (the key's answer to part "
+                                  "({}) is a vector)",
+                                  yours, r->name, part->id),
+                      fmt::format(": right as far as your {} is", yours)};
+  }
   return Referenced{out, fmt::format("read with {} the key's answer to part ({})", read, part->id),
                     fmt::format(": right as far as your {} is", yours)};
 }

@@ -955,10 +955,23 @@ TEST_CASE("a magnitude in bars reads, of an expression or of an earlier vector a
   // A subscript of words joined by commas is the name they join: Ω_space_rate, L0_body.
   REQUIRE(plate.check("t_max", "\\frac{\\pi}{\\Omega_{space,rate}}").correct);
   REQUIRE(plate.check("L0_space", "L_{0,\\mathrm{body}}").correct);
-  // A vector's name where a number is wanted is named as the answer it is, in LaTeX as typed.
-  REQUIRE_THROWS_WITH(plate.check("t_max", "\\pi/\\Omega_\\mathrm{space}"),
-                      Catch::Contains("Omega_space is the answer to part (e)") &&
-                          !Catch::Contains("space_cone_half_angle"));
+  // A vector's name alone where a number is wanted is its size, as books write Ω for the rate:
+  // typed or in LaTeX, and the line says so. Where the vector itself is wanted it is refused.
+  const std::string size_note =
+      "read with Omega_space as its size |Omega_space| (the key's "
+      "answer to part (e) is a vector)";
+  for (const char* same : {"π/Ω_space", "pi/Omega_space", "\\pi/\\Omega_\\mathrm{space}"}) {
+    INFO(same);
+    const auto v = plate.check("t_max", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback ==
+            std::vector<std::string>{size_note + ": right as far as your Omega_space is"});
+  }
+  const auto period = plate.check("t_max", "2π/Ω_space");
+  REQUIRE_FALSE(period.correct);
+  REQUIRE(period.feedback.back() == size_note);
+  REQUIRE_THROWS_WITH(plate.check("Omega_space", "Ω_body + ω"),
+                      Catch::Contains("Omega_body is the answer to part (e)"));
   // The magnitude of a name that is no answer is refused as that name.
   REQUIRE_THROWS_WITH(plate.check("t_max", "π/|Q|"), Catch::Contains("undefined symbol 'Q'"));
 }
