@@ -983,8 +983,12 @@ std::optional<OwnItem> own_labelled_item(const Context& ctx, const Answer& a,
 bool is_own_label(const Context& ctx, const Answer& a, const std::string& side,
                   const Options& options) {
   if (!is_one_name(side)) return false;
+  // "E′", "V′": a prime marks the name (the reader refuses the character itself).
+  std::string name = side;
+  for (auto at = name.find("′"); at != std::string::npos; at = name.find("′"))
+    name.replace(at, std::string_view("′").size(), "'");
   try {
-    judge_one(ctx, a, side, options);
+    judge_one(ctx, a, name, options);
   } catch (const InputError& e) {
     return !undefined_name(e.what()).empty();
   }

@@ -1428,6 +1428,29 @@ TEST_CASE("a name the steps write for an earlier answer reads as it: θ_L for th
   REQUIRE_THROWS_AS(solid.check("angle_L_e3", "θ_L"), InputError);
 }
 
+TEST_CASE("the heavy top's E, as its steps write the energy, reads as it; E′ labels a line") {
+  // The steps: "E = T + M g l cos θ"; part (b) asks for the level E′ = E − ½ I₃ ω₃².
+  const Fixture top("heavy-top");
+  const std::string e_note =
+      "read with E as energy = M·R²·ψ̇0²/4 + M·l·g·cos(θ0), the key's "
+      "answer to part (a): right as far as your E is";
+  for (const char* same : {"E − ½ I₃ ω₃²", "E - p_psi^2/(2 I3)", "E′ = E − ½I₃ω₃² = 0.3398 J"}) {
+    INFO(same);
+    const auto v = top.check("energy_prime", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback.back() == e_note);
+  }
+  // A label with a prime, typed or Unicode, before a key's line: the line is judged.
+  for (const char* line : {"E′ = M g l cos θ₀ = 0.3398 J", "V′ = M g l cos θ₀ = 0.3398 J",
+                           "E' = M g l cos θ₀ = 0.34 J"}) {
+    INFO(line);
+    REQUIRE(top.check("energy_prime", line).correct);
+  }
+  REQUIRE_FALSE(top.check("energy_prime", "E′ = M g l = 0.3924 J").correct);
+  // E for the energy itself is no working.
+  REQUIRE_THROWS_AS(top.check("energy", "E"), InputError);
+}
+
 TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and says so") {
   // The steps write p_ψ = I₃ ω₃, ω₃ ≥ 2 √(M g l I₁)/I₃: a student writes the answers so too. The
   // names read as the key's exact forms, and the line says which, as for an earlier answer.
