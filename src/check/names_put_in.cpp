@@ -219,6 +219,17 @@ bool same_refusal(const std::string& a, const std::string& b) {
   return unknown_a == unknown_b;
 }
 
+// Where `word`, its underscores left out ("Omega_1" as the question's Ω₁, "phi_dot"), is among
+// `spelled`.
+std::optional<std::size_t> index_spelled(const std::vector<std::string>& spelled,
+                                         const std::string& word) {
+  std::string bare = word;
+  bare.erase(std::remove(bare.begin(), bare.end(), '_'), bare.end());
+  const auto it = std::find(spelled.begin(), spelled.end(), bare);
+  if (it == spelled.end()) return std::nullopt;
+  return static_cast<std::size_t>(it - spelled.begin());
+}
+
 // What names_put_in read: the text with forms put in for names, and which names it read.
 struct NamesPutIn {
   std::string text;
@@ -395,13 +406,7 @@ std::optional<Referenced> convention_named(const Context& ctx, const std::string
   const auto& names = ctx.key.convention_names;
   std::vector<std::string> spelled;
   for (const ConventionName& c : names) spelled.push_back(c.name);
-  const auto index_of = [&](const std::string& word) -> std::optional<std::size_t> {
-    std::string bare = word;  // "Omega_1" as the question's Ω₁
-    bare.erase(std::remove(bare.begin(), bare.end(), '_'), bare.end());
-    const auto it = std::find(spelled.begin(), spelled.end(), bare);
-    if (it == spelled.end()) return std::nullopt;
-    return static_cast<std::size_t>(it - spelled.begin());
-  };
+  const auto index_of = [&](const std::string& word) { return index_spelled(spelled, word); };
   const std::optional<NamesPutIn> put = names_put_in(
       ctx, text, message, spelled, index_of, [&](std::size_t i) { return names[i].parameter; });
   if (!put) return std::nullopt;
@@ -526,13 +531,7 @@ std::optional<Referenced> entry_named(const Context& ctx, const Answer& a, const
   }
   std::vector<std::string> spelled;
   for (const Entry& e : entries) spelled.push_back(e.name);
-  const auto index_of = [&](const std::string& word) -> std::optional<std::size_t> {
-    std::string bare = word;  // "Omega_1" as the question's Ω₁
-    bare.erase(std::remove(bare.begin(), bare.end(), '_'), bare.end());
-    const auto it = std::find(spelled.begin(), spelled.end(), bare);
-    if (it == spelled.end()) return std::nullopt;
-    return static_cast<std::size_t>(it - spelled.begin());
-  };
+  const auto index_of = [&](const std::string& word) { return index_spelled(spelled, word); };
   const std::optional<NamesPutIn> put =
       names_put_in(ctx, text, message, spelled, index_of,
                    [&](std::size_t i) { return kPutIn + entries[i].form + kPutInEnd; });
