@@ -213,10 +213,7 @@ std::string name_hint(const Context& ctx, const std::string& name) {
                      words);
 }
 
-// Where every letter group of a unit as read is also a symbol of the problem ("h" where h is a
-// height, "0.75 h ẑ" read as hours): a line naming them, with what to write for the product;
-// "" otherwise. After a number the letters are the unit (as "0.5 m" is half a metre even where
-// m is a mass); the line says so where that reading gave the wrong dimension.
+// A symbol as a line names it: "the problem's symbol for the height" (its description).
 std::string symbol_described(const Context& ctx, const std::string& name) {
   const ParameterValue* p = parameter_named(ctx.key, name);
   return p == nullptr || p->description.empty()
@@ -224,6 +221,12 @@ std::string symbol_described(const Context& ctx, const std::string& name) {
              : "the problem's symbol for the " + plain_text(p->description);
 }
 
+// Where every letter group of a unit as read is also a symbol of the problem ("h" where h is a
+// height, "0.75 h ẑ" read as hours): a line naming them, with what to write for the product;
+// "" otherwise. After a number the letters are the unit (as "0.5 m" is half a metre even where
+// m is a mass); the line says so where that reading gave the wrong dimension and reading them
+// as the symbols does not give the answer's either (judged_as_product, below, reads them so
+// where it does).
 std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_text) {
   std::vector<std::string> words;
   for (const auto& [at, length] : identifiers(unit_text)) {
