@@ -230,6 +230,18 @@ std::optional<std::size_t> index_spelled(const std::vector<std::string>& spelled
   return static_cast<std::size_t>(it - spelled.begin());
 }
 
+// The part of `key` that holds `answer` (one of its answers).
+const PartKey* part_holding(const Key& key, const Answer* answer) {
+  return &*std::find_if(key.parts.begin(), key.parts.end(), [&](const PartKey& p) {
+    return std::any_of(p.answers.begin(), p.answers.end(),
+                       [&](const Answer& x) { return &x == answer; });
+  });
+}
+
+// A matrix's closed form is nine entries long, the tennis racket's period some 400 characters:
+// there a line names the answer, and the form is the key's to look up. One line's worth is shown.
+constexpr std::size_t kLongestFormShown = 80;
+
 // What names_put_in read: the text with forms put in for names, and which names it read.
 struct NamesPutIn {
   std::string text;
@@ -367,13 +379,7 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
         return "(" + r->symbolic + ")";
       });
   if (!magnitude && !named) return std::nullopt;
-  const auto part = std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
-    return std::any_of(p.answers.begin(), p.answers.end(),
-                       [&](const Answer& x) { return &x == r; });
-  });
-  // A matrix's closed form is nine entries long, the tennis racket's period some 400 characters:
-  // there the name says which, and the form is the key's to look up. One line's worth is shown.
-  constexpr std::size_t kLongestFormShown = 80;
+  const PartKey* part = part_holding(ctx.key, r);
   const bool shown =
       r->value.shape == Value::Shape::scalar && r->symbolic.size() <= kLongestFormShown;
   // Ω_body for Omega_body_rate: the name as typed, and the answer it is read as.
@@ -538,7 +544,6 @@ std::optional<Referenced> entry_named(const Context& ctx, const Answer& a, const
   if (!put) return std::nullopt;
   // The line: each name read with its form where the forms are one line's worth, and whose
   // entries they are, answer by answer in the key's order.
-  constexpr std::size_t kLongestFormsShown = 80;
   std::string forms, yours, whose;
   std::size_t count = 0, length = 0;
   std::vector<const Answer*> answers;
@@ -551,17 +556,13 @@ std::optional<Referenced> entry_named(const Context& ctx, const Answer& a, const
   for (std::size_t i = 0; i < entries.size(); ++i) {
     if (!put->read[i]) continue;
     forms += (forms.empty() ? "" : ", ") + entries[i].shown;
-    if (length <= kLongestFormsShown) forms += " = " + sym::to_unicode(entries[i].form);
+    if (length <= kLongestFormShown) forms += " = " + sym::to_unicode(entries[i].form);
     yours += (yours.empty() ? "" : ", ") + entries[i].shown;
     ++count;
   }
   for (const Answer* b : answers) {
-    const auto part =
-        std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
-          return std::any_of(p.answers.begin(), p.answers.end(),
-                             [&](const Answer& x) { return &x == b; });
-        });
-    whose += fmt::format("{}{} (part {})", whose.empty() ? "" : " and ", b->name, part->id);
+    whose += fmt::format("{}{} (part {})", whose.empty() ? "" : " and ", b->name,
+                         part_holding(ctx.key, b)->id);
   }
   return Referenced{brackets_put_in(put->text),
                     fmt::format("read with {}, {} the key's answer {}", forms,
