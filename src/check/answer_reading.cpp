@@ -1365,22 +1365,24 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
     }
   }
   // "44°41′37″", "303 days 15 h": a quantity in parts, as their sum; "φ + 90°", "cos(30°)":
-  // degrees in an expression, as radians.
+  // degrees in an expression, as radians; "303.6 d", days where d is no symbol.
   const auto in_expression = [&](const std::string& name) {
     return (table.contains(name) || sym::is_function_name(name)) && !table.contains("deg");
   };
   const auto is_symbol = [&](const std::string& name) { return table.contains(name); };
-  const std::string text = compound_quantity(degrees_in_expression(
-      sexagesimal_degrees(
-          names_apart(symbols_as_spelled(
-                          lagrange_rates(leibniz_rates(elliptic_integral_named(
-                                                           prepared(source, field), is_symbol),
-                                                       table),
-                                         table),
+  const std::string text = compound_quantity(days_written_d(
+      degrees_in_expression(
+          sexagesimal_degrees(
+              names_apart(symbols_as_spelled(
+                              lagrange_rates(leibniz_rates(elliptic_integral_named(
+                                                               prepared(source, field), is_symbol),
+                                                           table),
+                                             table),
+                              table),
                           table),
-                      table),
-          field),
-      in_expression));
+              field),
+          in_expression),
+      is_symbol));
   if (text.empty()) {
     throw InputError(field +
                      ": empty; type a number (with a unit if you like), a vector [x, y, "

@@ -226,7 +226,9 @@ class Reader {
     if (depth > 0 || out.factors == 0 || !out.factor_last) return false;
     if (out.p.symbolic && !written_as_unit) return false;
     if (s_.size() - i_ > 160) return false;
-    const std::optional<std::string> unit = latex_unit_text(s_.substr(i_));
+    std::optional<std::string> unit = latex_unit_text(s_.substr(i_));
+    // "303.6\,\mathrm{d}": the SI's day, where d is no symbol (as days_written_d reads it).
+    if (unit && *unit == "d" && !table_.contains("d")) unit = "day";
     if (!unit || unit->empty() || !is_unit(*unit)) return false;
     unit_ = *unit;
     i_ = s_.size();

@@ -156,4 +156,11 @@ std::string degrees_in_expression(const std::string& ascii,
 std::string elliptic_integral_named(const std::string& ascii,
                                     const std::function<bool(const std::string&)>& is_symbol);
 
+/// "303.6 day" for "303.6 d", "3.036e2d", "(300 + 3.6) d": the SI's symbol for the day after a
+/// number, where d is no symbol of the problem (`is_symbol`); the Earth's Euler period is told
+/// in days. Where a problem names a length d (the molecule's bond), "2 d" is twice it, and units
+/// refuse d as days everywhere else. `ascii` itself where there is no such d.
+std::string days_written_d(const std::string& ascii,
+                           const std::function<bool(const std::string&)>& is_symbol);
+
 }  // namespace wobble::check

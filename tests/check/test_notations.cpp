@@ -1569,10 +1569,9 @@ TEST_CASE("a duration told in parts, 303 days 15 h, reads as their sum") {
     INFO(same);
     REQUIRE(earth.check("precession_period_body", same).correct);
   }
-  // "d" for a day is no unit wobble reads (a problem's distance is d): refused, not misread.
-  REQUIRE_THROWS_AS(
-      earth.check("precession_period_body", fmt::format("{} d {:.0f} h", whole, hours)),
-      InputError);
+  // The SI's d for the day, where the problem has no symbol d (the Earth's: C, H, ω, α).
+  REQUIRE(
+      earth.check("precession_period_body", fmt::format("{} d {:.0f} h", whole, hours)).correct);
   // A part off by a day is judged as such, not dropped.
   REQUIRE_FALSE(
       earth.check("precession_period_body", fmt::format("{} days {:.0f} h", whole + 30, hours))
@@ -1582,6 +1581,33 @@ TEST_CASE("a duration told in parts, 303 days 15 h, reads as their sum") {
                     InputError);
   REQUIRE_THROWS_AS(earth.check("precession_period_body", fmt::format("{} days 15 kg", whole)),
                     InputError);
+}
+
+TEST_CASE("a day written d reads where d is no symbol of the problem, and only there") {
+  const Fixture earth("earth-free-precession");  // Euler's period, 303.62 days; no symbol d
+  const double days = earth.answer("precession_period_body").value.data[0] / 86400;
+  // Four significant digits, within the judge's reading of a value so given.
+  const std::string four = fmt::format("{:.4g}", days);
+  for (const std::string& same :
+       {four + " d", four + "d", fmt::format("{:.3e} d", days), "(" + four + ") d",
+        four + "\\,\\mathrm{d}", four + "\\ \\text{d}", "\\SI{" + four + "}{d}"}) {
+    INFO(same);
+    REQUIRE(earth.check("precession_period_body", same).correct);
+  }
+  // Read as days, not dropped: a value off by a tenth is judged wrong, a time in seconds as
+  // days is far off, and d is refused as a rate's unit (no number is right before it).
+  REQUIRE_FALSE(earth.check("precession_period_body", fmt::format("{:.4g} d", days * 1.1)).correct);
+  REQUIRE_FALSE(
+      earth.check("precession_period_body", fmt::format("{:.4g} d", days * 86400)).correct);
+  REQUIRE_THROWS_AS(earth.check("Omega_body_rate", "0.0207 rad/d"), InputError);
+  // Where a problem's length is d (the symmetric molecule's bond), "0.068 d" is that length:
+  // right at the set d = 1 m, not where d varies (a day would be a time, no length at all).
+  const Fixture molecule("three-atom-molecule-symmetric");
+  const double x_over_d = molecule.answer("center_of_mass").value.data[0];  // d = 1 m
+  const auto bond = molecule.check("center_of_mass", fmt::format("({:.10g} d, 0, 0)", x_over_d));
+  REQUIRE_FALSE(bond.correct);
+  REQUIRE_THAT(bond.feedback.back(), Catch::Contains("the key's value at the set values"));
+  REQUIRE_THROWS_WITH(parse_unit("d", "u"), Catch::Contains("'d' is not read as days"));
 }
 
 TEST_CASE("a remark in words in brackets after an answer is no part of it") {
