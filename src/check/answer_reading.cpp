@@ -1011,6 +1011,9 @@ std::string unit_vector_sum(const std::string& typed, const sym::SymbolTable& ta
     for (auto at = sum.find(minus); at != std::string::npos; at = sum.find(minus, at))
       sum.replace(at, minus.size(), "-");
   }
+  // LaTeX's tie, "-0.75~h~\hat{z}" (here with its hat respelled, ẑ): a space. Plain text has no
+  // '~' inside a sum (an approximate answer's leading one is a relation, read before).
+  std::replace(sum.begin(), sum.end(), '~', ' ');
   // LaTeX's "\left( .. \right)": brackets, their size aside.
   for (const std::string_view sizing : {"\\left", "\\right"}) {
     for (auto at = sum.find(sizing); at != std::string::npos; at = sum.find(sizing, at)) {

@@ -1240,6 +1240,10 @@ TEST_CASE("a symbol after a number is a unit where that reads, else a factor, an
   // In LaTeX, after a fraction or a thin space.
   REQUIRE(cone.check("center_of_mass", "-\\frac{3}{4} h \\hat{z}").correct);
   REQUIRE(cone.check("center_of_mass", "-0.75\\,h\\,\\hat{z}").correct);
+  // And after a tie, LaTeX's unbreakable space; judged, right or wrong.
+  REQUIRE(cone.check("center_of_mass", "-0.75~h~\\hat{z}").correct);
+  REQUIRE(cone.check("center_of_mass", "-\\frac{3}{4}~h~\\hat{z}").correct);
+  REQUIRE_FALSE(cone.check("center_of_mass", "-0.5~h~\\hat{z}").correct);
   REQUIRE(cone.check("center_of_mass", "r_cm = -(3/4) h ẑ").correct);
   const auto reversed = cone.check("center_of_mass", "(0, 0, 0.75 h)");
   REQUIRE_FALSE(reversed.correct);
