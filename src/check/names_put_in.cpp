@@ -491,8 +491,11 @@ std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (!put->read[i]) continue;
     const std::string shown = sym::to_unicode(names[i].name);
-    forms += fmt::format("{}{} = {} ({})", forms.empty() ? "" : ", ", shown,
-                         sym::to_unicode(names[i].symbolic), names[i].meaning);
+    const std::string form = sym::to_unicode(names[i].symbolic);
+    // The racket's λ is some 150 characters: named, its form the key's to look up.
+    forms += fmt::format("{}{}{} ({})", forms.empty() ? "" : ", ", shown,
+                         names[i].symbolic.size() <= kLongestFormShown ? " = " + form : "",
+                         names[i].meaning);
     yours += (yours.empty() ? "" : ", ") + shown;
     ++count;
   }

@@ -257,6 +257,7 @@ Computed energy(const Asym& t, const std::string& q) {
   const ex T = sym::tidy(
       (I[0] * GiNaC::pow(w[0], 2) + I[1] * GiNaC::pow(w[1], 2) + I[2] * GiNaC::pow(w[2], 2)) / 2);
   Computed out{exact_scalar(q, T, "J", t.exact), {}};
+  out.answer.step_names = {"T"};  // "2TI3 − L²", as the steps write it
   check_routes_agree(out.answer.value.data[0], 0.5 * t.I_n.dot(t.w_n.cwiseAbs2()),
                      out.answer.value.data[0], kShortRouteUlps, q);
   out.steps.push_back(
@@ -272,6 +273,7 @@ Computed L_magnitude(const Asym& t, const std::string& q) {
   const ex L2 = sym::tidy(GiNaC::pow(I[0] * w[0], 2) + GiNaC::pow(I[1] * w[1], 2) +
                           GiNaC::pow(I[2] * w[2], 2));
   Computed out{exact_scalar(q, sym::simplified_sqrt(L2), "kg m^2/s", t.exact), {}};
+  out.answer.step_names = {"L"};
   check_routes_agree(out.answer.value.data[0], t.I_n.cwiseProduct(t.w_n).norm(),
                      out.answer.value.data[0], kShortRouteUlps, q);
   out.steps.push_back({"|L| = sqrt((I1 w1)² + (I2 w2)² + (I3 w3)²), conserved.",
@@ -425,8 +427,21 @@ const std::vector<QuantityRow<const Asym>>& rows() {
 
 Key solve_asymmetric_top(const Problem& problem, const sym::Values& values) {
   const Asym t(problem, values);
-  return assemble_parts(problem,
-                        [&](const std::string& q) { return compute_quantity(rows(), t, q); });
+  Key key =
+      assemble_parts(problem, [&](const std::string& q) { return compute_quantity(rows(), t, q); });
+  // The steps write the principal moments I1, I2, I3 and the rate λ of sn's argument (the period
+  // is 4 K(k) / λ); so may a student. λ only where a part needed the elliptic solution (its
+  // factoring is the solver's main cost).
+  const std::array<const char*, 3> axis{"e₁", "e₂", "e₃"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    key.defined_names.push_back({fmt::format("I{}", k + 1), sym::to_text(t.I[k], t.table),
+                                 fmt::format("the principal moment about {}", axis[k])});
+  }
+  if (t.elliptic_cache) {
+    key.defined_names.push_back({"lambda", sym::to_text(t.elliptic_cache->lambda, t.table),
+                                 "the rate of sn's argument, sn(λt, k)"});
+  }
+  return key;
 }
 
 SolverInfo asymmetric_top_solver() {

@@ -886,9 +886,9 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
                       Catch::Contains("t_max is the answer to part (h)"));
   // Where another name still keeps it from reading, that name is said, in the text as typed.
   const Fixture asymmetric("asymmetric-top");
-  REQUIRE_THROWS_WITH(asymmetric.check("period", "4K(k)/λ"),
-                      Catch::Contains("\"4*EllipticK(k)/lambda\": undefined symbol 'lambda'") &&
-                          !Catch::Contains("sqrt"));
+  REQUIRE_THROWS_WITH(
+      asymmetric.check("period", "4K(k)/μ"),
+      Catch::Contains("\"4*EllipticK(k)/mu\": undefined symbol 'mu'") && !Catch::Contains("sqrt"));
   // A Greek subscript after '_' belongs to the name: p_ψ is the heavy top's p_psi, not "p_".
   const Fixture top("heavy-top");
   for (const char* with_other_answer : {"p_ψ cos θ₀", "p_ψ·cos(θ₀)", "p_psi cos θ₀"}) {
@@ -1092,12 +1092,19 @@ TEST_CASE("where a number is asked for, a bare k is a name of the student's own,
   REQUIRE(top.check("k2", "k² = " + value("k2")).correct);
   // Which answer a labelled value is, where it is another part's.
   REQUIRE_THAT(top.check("k2", "k′² = " + kc2).feedback.at(0), Catch::Contains("this is kc2"));
-  // A formula in names the problem lacks (k, λ) labels it too; K is the complete integral.
+  // A formula in an earlier answer's name (k) and the steps' (λ) between a label and the value
+  // is judged too, and the lines say how; K is the complete integral.
   const std::string period = value("period") + " s";
   const auto labelled = top.check("period", "T = 4K(k)/λ = " + period);
   REQUIRE(labelled.correct);
-  REQUIRE(labelled.feedback ==
-          std::vector<std::string>{"the side \"4K(k)/λ\" of your '=' is taken as a label, not "
+  REQUIRE(labelled.feedback.size() == 2);
+  REQUIRE_THAT(labelled.feedback.front(), Catch::StartsWith("read with λ = √("));
+  REQUIRE_THAT(labelled.feedback.back(), Catch::StartsWith("read with k as the key's answer"));
+  // Wrong, that side is a label, not judged: k is no symbol.
+  const auto wrong_side = top.check("period", "T = 2K(k)/λ = " + period);
+  REQUIRE(wrong_side.correct);
+  REQUIRE(wrong_side.feedback ==
+          std::vector<std::string>{"the side \"2K(k)/λ\" of your '=' is taken as a label, not "
                                    "judged: k is no symbol here"});
   // K(k) as books write the complete elliptic integral of the first kind (of the modulus, as the
   // key's EllipticK): glued to its factor or not, in LaTeX, and in the problem's symbols.
@@ -1127,7 +1134,9 @@ TEST_CASE("where a number is asked for, a bare k is a name of the student's own,
   const auto wrong = top.check(
       "period", "4K(k)/λ = " + format_number(top.answer("period").value.data.at(0) * 1.1) + " s");
   REQUIRE_FALSE(wrong.correct);
-  REQUIRE_THAT(wrong.feedback.at(0), Catch::Contains("off by 10%"));
+  // The value's side is wrong (the formula's, read with the key's k and the steps' λ, is right).
+  REQUIRE_THAT(wrong.feedback.at(0), Catch::StartsWith("the side \"2.39"));
+  REQUIRE_THAT(wrong.feedback.at(1), Catch::Contains("off by 10%"));
   // Alone, such a k is part (c)'s own answer k, the key's closed form read for it (and said):
   // no "unit vectors" line, no "3-vector".
   for (const auto& [name, typed] :
@@ -1453,6 +1462,48 @@ TEST_CASE("the heavy top's E, as its steps write the energy, reads as it; E′ l
   REQUIRE_FALSE(top.check("energy_prime", "E′ = M g l = 0.3924 J").correct);
   // E for the energy itself is no working.
   REQUIRE_THROWS_AS(top.check("energy", "E"), InputError);
+}
+
+TEST_CASE("the asymmetric top reads λ, T, L and I₁, I₂, I₃ as its steps write them") {
+  // The steps write the period 4 K(k)/λ, k² in T, L² and the moments: so may a student.
+  const Fixture racket("tennis-racket");
+  const auto flip = racket.check("flip_interval", "2K(k)/λ");
+  REQUIRE(flip.correct);
+  // λ's form is some 150 characters here: named, not written out.
+  REQUIRE(flip.feedback.front() ==
+          "read with λ (the rate of sn's argument, sn(λt, k)), as the key's steps write it: right "
+          "as far as your λ is");
+  // Read so, the period for half of it is the period, and said so.
+  const auto whole = racket.check("flip_interval", "4 K(k)/λ");
+  REQUIRE_FALSE(whole.correct);
+  REQUIRE(whole.feedback.front() == "this is period (part c), not flip_interval");
+  for (const char* k2 : {"(I₂ − I₁)(2T I₃ − L²)/((I₃ − I₂)(L² − 2T I₁))",
+                         "(I2 - I1)*(2*T*I3 - L^2)/((I3 - I2)*(L^2 - 2*T*I1))"}) {
+    INFO(k2);
+    const auto v = racket.check("k2", k2);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.feedback, Catch::VectorContains(std::string(
+                                 "read with T as energy, the key's answer to part (c): right as "
+                                 "far as your T is")));
+    REQUIRE_THAT(v.feedback.back(),
+                 Catch::StartsWith("read with I1 = m·(b² + c²)/12 (the principal moment about "
+                                   "e₁), I2 = m·(a² + c²)/12"));
+  }
+  // A wrong one is judged wrong: k² upside down.
+  REQUIRE_FALSE(racket.check("k2", "(I3 - I2)*(L^2 - 2*T*I1)/((I2 - I1)*(2*T*I3 - L^2))").correct);
+  // T for the period, as some books write it: here T is the energy, and the line says so.
+  const auto energy_for_time = racket.check("flip_interval", "T/2");
+  REQUIRE(energy_for_time.wrong_dimension);
+  REQUIRE(energy_for_time.feedback.back() == "read with T as energy, the key's answer to part (c)");
+  // The energy is no working for itself.
+  REQUIRE_THROWS_AS(racket.check("energy", "T"), InputError);
+  // Where the moments are the problem's own symbols (the asymmetric top's I1, I2, I3), they stay
+  // them, and λ is the same rate in them.
+  const Fixture asymmetric("asymmetric-top");
+  const auto period = asymmetric.check("period", "4K(k)/λ");
+  REQUIRE(period.correct);
+  REQUIRE_THAT(period.feedback.front(),
+               Catch::StartsWith("read with λ = √(") && !Catch::Contains("principal moment"));
 }
 
 TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and says so") {
