@@ -7,7 +7,9 @@
 #include <cctype>
 #include <cmath>
 #include <exception>
+#include <initializer_list>
 #include <optional>
+#include <string_view>
 #include <tuple>
 #include <utility>
 
@@ -562,17 +564,33 @@ std::string approximations_as_equal(const std::string& text) {
   return s;
 }
 
-// "theta_L", "θ_L", "\theta_{L}", "E′": one name, with no operator or number that would make it
-// an expression.
+// "theta_L", "θ_L", "\theta_{L}", "E′", "ω̇(0)": one name, with no operator or number that would
+// make it an expression.
 bool is_one_name(const std::string& side) {
-  // "|L|", "‖L‖": the size of a vector, named.
+  // "|L|", "‖L‖": the size of a vector, named; in LaTeX too, as the LaTeX key writes it.
   std::string bare = trim(side);
-  for (const std::string bar : {"‖", "|"}) {
-    if (bare.size() > 2 * bar.size() && bare.compare(0, bar.size(), bar) == 0 &&
-        bare.compare(bare.size() - bar.size(), bar.size(), bar) == 0)
-      bare = bare.substr(bar.size(), bare.size() - 2 * bar.size());
+  for (const auto& [open, close] :
+       std::initializer_list<std::pair<std::string_view, std::string_view>>{{"‖", "‖"},
+                                                                            {"|", "|"},
+                                                                            {"\\lvert", "\\rvert"},
+                                                                            {"\\lVert", "\\rVert"},
+                                                                            {"\\left|", "\\right|"},
+                                                                            {"\\|", "\\|"}}) {
+    if (bare.size() > open.size() + close.size() && bare.starts_with(open) &&
+        bare.ends_with(close)) {
+      bare = trim(bare.substr(open.size(), bare.size() - open.size() - close.size()));
+      break;
+    }
   }
   std::string s = trim(sym::to_ascii(bare));
+  // "ω̇(0)", "\dot{\omega}(0)", "L(t = 0)": the name's value at t = 0, as the statements and the
+  // LaTeX key write it.
+  for (const std::string_view at_start : {"(0)", "(t=0)", "(t = 0)"}) {
+    if (s.size() > at_start.size() && s.ends_with(at_start)) {
+      s = trim(s.substr(0, s.size() - at_start.size()));
+      break;
+    }
+  }
   // E', E′: a prime marks a name (the heavy top's E′), it makes no expression.
   for (const std::string prime : {"′", "'"}) {
     for (auto at = s.find(prime); at != std::string::npos; at = s.find(prime))

@@ -28,7 +28,32 @@ bool subscript_at(const std::string& s, std::size_t i, std::size_t& length) {
 }
 }  // namespace
 
+namespace {
+// One letter as LaTeX math: "L", "w" as wobble's ASCII ω, a Greek letter's name ("Omega");
+// nullopt for anything longer.
+std::optional<std::string> name_latex_letter(const std::string& name) {
+  if (name == "w") return "\\omega";
+  if (sym::greek_letters().count(name)) return "\\" + name;
+  if (name.size() == 1 && std::isalpha(static_cast<unsigned char>(name[0]))) return name;
+  return std::nullopt;
+}
+}  // namespace
+
 std::optional<std::string> name_latex(const std::string& name) {
+  // "L_magnitude": the vector's size, as books write it, |L|.
+  if (constexpr std::string_view size = "_magnitude";
+      name.size() > size.size() && name.ends_with(size)) {
+    if (const auto vector = name_latex_letter(name.substr(0, name.size() - size.size())))
+      return "\\lvert " + *vector + "\\rvert";
+  }
+  // "dw_dt0": dω/dt at t = 0, as the question writes it, ω̇(0).
+  if (name.size() >= 5 && name[0] == 'd' && name.find("_dt") == 2) {
+    const std::string at = name.substr(5);
+    const auto letter = name_latex_letter(name.substr(1, 1));
+    if (letter && std::all_of(at.begin(), at.end(),
+                              [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+      return "\\dot{" + *letter + "}" + (at.empty() ? "" : "(" + at + ")");
+  }
   const auto us = name.find('_');
   if (us == std::string::npos || us == 0 || us + 1 >= name.size() ||
       name.find('_', us + 1) != std::string::npos) {

@@ -19,8 +19,9 @@ namespace wobble::detail {
 
 /// A quantity's name as LaTeX math when it reads as a symbol with a subscript: "Omega_body" ->
 /// "\Omega_{\mathrm{body}}", "theta_min" -> "\theta_{\mathrm{min}}", "p_phi" -> "p_{\phi}",
-/// "I_xy" -> "I_{xy}", "L0_space" -> "L_{0,\mathrm{space}}"; nullopt for a name that is words
-/// ("principal_axes", "max_angle").
+/// "I_xy" -> "I_{xy}", "L0_space" -> "L_{0,\mathrm{space}}"; a size as books write it,
+/// "L_magnitude" -> "\lvert L\rvert", and a rate at t = 0, "dw_dt0" -> "\dot{\omega}(0)"; nullopt
+/// for a name that is words ("principal_axes", "max_angle").
 std::optional<std::string> name_latex(const std::string& name);
 
 /// The names a key's prose uses, for setting it as its formulas are: the parameters' LaTeX by

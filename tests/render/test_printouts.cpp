@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cctype>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "problem/values.hpp"
 #include "render/common.hpp"
@@ -160,6 +163,30 @@ TEST_CASE("prose on a LaTeX page sets names as the formulas beside it do") {
     INFO(prose);
     REQUIRE(detail::latex_text(prose, names) == latex);
   }
+}
+
+TEST_CASE("an answer's name on a LaTeX key is the symbol books write for it") {
+  const std::vector<std::pair<std::string, std::optional<std::string>>> cases{
+      {"Omega_body", "\\Omega_{\\mathrm{body}}"},
+      {"L0_space", "L_{0,\\mathrm{space}}"},
+      {"p_phi", "p_{\\phi}"},
+      // A vector's size between bars, a rate at t = 0 with its dot (dω/dt at t = 0).
+      {"L_magnitude", "\\lvert L\\rvert"},
+      {"dw_dt0", "\\dot{\\omega}(0)"},
+      {"dw_dt", "\\dot{\\omega}"},
+      // Words stay words: no symbol.
+      {"principal_axes", std::nullopt},
+      {"energy_magnitude", std::nullopt},
+      {"max_angle", std::nullopt},
+  };
+  for (const auto& [name, latex] : cases) {
+    INFO(name);
+    REQUIRE(detail::name_latex(name) == latex);
+  }
+  const Problem racket = find_problem("tennis-racket");
+  const std::string tex = render_latex(solve(racket, parameter_values(racket, {})));
+  REQUIRE_THAT(tex, Catch::Contains("$\\lvert L\\rvert$\\quad{\\small\\texttt{L\\_magnitude}}") &&
+                        Catch::Contains("$\\dot{\\omega}(0)$\\quad{\\small\\texttt{dw\\_dt0}}"));
 }
 
 namespace {
