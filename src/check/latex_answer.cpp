@@ -797,6 +797,21 @@ class Reader {
     return name;
   }
 
+  // "\\[2ex]": a row's extra space, as the LaTeX key sets rows of fractions apart. As LaTeX
+  // reads it, spaces before the '[' too; only a length inside ("2ex", "-0.5em", "4pt").
+  void row_space() {
+    std::size_t j = i_;
+    while (j < s_.size() && s_[j] == ' ') ++j;
+    if (j >= s_.size() || s_[j] != '[') return;
+    const std::size_t close = s_.find(']', j);
+    if (close == std::string::npos) return;
+    const std::string length = s_.substr(j + 1, close - j - 1);
+    const bool is_length = !length.empty() && std::all_of(length.begin(), length.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == ' ';
+    });
+    if (is_length) i_ = close + 1;
+  }
+
   Piece matrix(int depth) {
     take_command();  // \begin
     const std::string env = environment_name();
@@ -823,6 +838,7 @@ class Reader {
         ++i_;
       } else if (at_command("\\")) {
         take_command();
+        row_space();
         rows.emplace_back();
       } else if (at_command("end")) {
         break;

@@ -42,6 +42,11 @@ std::size_t display_width(const std::string& s);
 std::pair<std::string, std::string> shown_value(
     const ParameterValue& p, const std::vector<std::pair<std::string, std::string>>& shown);
 
+/// A formula's one pmatrix as the LaTeX key sets it: its fractions at full size (\dfrac), its
+/// rows set apart (\\[2ex]); `latex` itself where no cell has a fraction (or there is no one
+/// pmatrix).
+std::string matrix_fractions_displayed(const std::string& latex);
+
 /// Text for one Markdown table cell: '|' escaped, line breaks as spaces.
 std::string markdown_cell(const std::string& s);
 

@@ -96,6 +96,9 @@ TEST_CASE("LaTeX constructs become plain text with their products written out") 
   REQUIRE(text_of(top, "M g l") == "M*g*l");
   // Matrices; a column or a row is a vector, brackets around a matrix are its own.
   REQUIRE(text("\\begin{pmatrix} 1 & 0 \\\\ 0 & m \\end{pmatrix}") == "[[1, 0], [0, m]]");
+  // Rows set apart, as the LaTeX key sets rows of fractions: the space is no entry.
+  REQUIRE(text("\\begin{pmatrix} \\dfrac{m}{2} \\\\[2ex] 0 \\\\ [-0.5em] 1 \\end{pmatrix}") ==
+          "[((m)/(2)), 0, 1]");
   REQUIRE(text("\\begin{bmatrix} 1 \\\\ 2 \\\\ 3 \\\\ \\end{bmatrix}") == "[1, 2, 3]");
   REQUIRE(text("\\left(\\begin{array}{ccc} 1 & 2 & 3 \\end{array}\\right)") == "[1, 2, 3]");
   REQUIRE(text("\\begin{pmatrix} 0.5 \\\\ 0 \\end{pmatrix}\\,\\mathrm{rad/s}") == "[0.5, 0] rad/s");

@@ -669,6 +669,9 @@ TEST_CASE("every part's hint prints in the worksheet as plain text, every proble
 std::vector<std::string> latex_forms(const Answer& a) {
   const std::string value = value_latex(a.value) + detail::unit_latex(a.unit);
   std::vector<std::string> texts{value, "$" + value + "$", a.latex};
+  // A vector or matrix of fractions as the LaTeX key displays it: \dfrac, rows set apart.
+  if (const std::string shown = detail::matrix_fractions_displayed(a.latex); shown != a.latex)
+    texts.push_back(shown);
   if (!a.symbolic.empty()) {
     texts.push_back("$$\n" + a.latex + " = " + value + "\n$$");
     if (const auto name = detail::name_latex(a.name)) texts.push_back(*name + " = " + a.latex);
