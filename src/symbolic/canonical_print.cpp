@@ -185,6 +185,9 @@ class Printer {
         {"atan", "\\arctan"}, {"asin", "\\arcsin"}, {"acos", "\\arccos"},
         {"exp", "\\exp"},     {"log", "\\ln"},      {"atan2", "\\operatorname{atan2}"}};
     if (name == "abs") return "\\left|" + args + "\\right|";
+    // K(k), the complete elliptic integral of the first kind, as books write it (and the answer
+    // reader reads it); by GiNaC's name where the problem has a symbol K.
+    if (name == "EllipticK" && !table_.contains("K")) return "K" + paren(args);
     auto it = known.find(name);
     return (it == known.end() ? "\\operatorname{" + name + "}" : it->second) + paren(args);
   }

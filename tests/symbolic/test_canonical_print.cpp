@@ -71,6 +71,14 @@ TEST_CASE("known spellings") {
   // A lone sum in a fraction needs no parentheses; a sum among other factors does.
   REQUIRE(latex("2*m*d1/(2*m + M)") == "\\frac{2 m d_1}{2 m + M}");
   REQUIRE(latex("(a + m)/(2*(m + M))") == "\\frac{a + m}{2 \\left(M + m\\right)}");
+  // The complete elliptic integral as books write it, K(k); by GiNaC's name where K is a symbol.
+  // (As a solver builds it: a problem file's expressions have no elliptic integrals.)
+  REQUIRE(to_latex(4 * GiNaC::EllipticK(t.parse("m/M", "x")), t) ==
+          "4 K\\left(\\frac{m}{M}\\right)");
+  SymbolTable with_k = table();
+  with_k.declare("K", "K", SymbolSign::positive);
+  REQUIRE(to_latex(with_k.parse("K", "x") * GiNaC::EllipticK(with_k.parse("m/M", "x")), with_k) ==
+          "K \\operatorname{EllipticK}\\left(\\frac{m}{M}\\right)");
 }
 
 TEST_CASE("ln, arcsin, arccos and arctan are read as log, asin, acos and atan") {
