@@ -887,27 +887,27 @@ std::string elliptic_integral_named(const std::string& ascii,
 std::string days_written_d(const std::string& ascii,
                            const std::function<bool(const std::string&)>& is_symbol) {
   if (ascii.find('d') == std::string::npos || is_symbol("d")) return ascii;
-  std::string out = ascii;
-  for (std::size_t i = out.size(); i-- > 0;) {
-    if (out[i] != 'd') continue;
+  const auto is_day = [&](std::size_t i) {
     // Alone after it: the end, a space, a list's or a bracket's end; not a name's next letter,
     // a call's bracket or a derivative's "d/dt".
     const std::size_t after = i + 1;
-    if (after < out.size() && (name_char(out[after]) || out[after] == '(' || out[after] == '/'))
-      continue;
+    if (after < ascii.size() &&
+        (name_char(ascii[after]) || ascii[after] == '(' || ascii[after] == '/'))
+      return false;
     // Before it (spaces apart or not): a number ("303.6", "3.036e2") or a bracket's end.
     std::size_t p = i;
-    while (p > 0 && out[p - 1] == ' ') --p;
-    if (p == 0) continue;
-    if (out[p - 1] != ')') {
-      if (p == i && !std::isdigit(static_cast<unsigned char>(out[p - 1]))) continue;
-      std::size_t start = p;
-      while (start > 0 && (name_char(out[start - 1]) || out[start - 1] == '.')) --start;
-      const char first = out[start];
-      if (!std::isdigit(static_cast<unsigned char>(first)) && first != '.') continue;
-    }
-    out.replace(i, 1, "day");
-  }
+    while (p > 0 && ascii[p - 1] == ' ') --p;
+    if (p == 0) return false;
+    if (ascii[p - 1] == ')') return true;
+    if (p == i && !std::isdigit(static_cast<unsigned char>(ascii[p - 1]))) return false;
+    std::size_t start = p;
+    while (start > 0 && (name_char(ascii[start - 1]) || ascii[start - 1] == '.')) --start;
+    return std::isdigit(static_cast<unsigned char>(ascii[start])) || ascii[start] == '.';
+  };
+  // One pass, so that a text of many d's is read in linear time.
+  std::string out;
+  for (std::size_t i = 0; i < ascii.size(); ++i)
+    out += ascii[i] == 'd' && is_day(i) ? std::string("day") : std::string(1, ascii[i]);
   return out;
 }
 
