@@ -4,7 +4,9 @@
 // p_phi, whose key reads I₁, I₃, ω₃ as its steps write them, and its theta_max, a bound, which
 // reads an inequality, a range or an interval; and against the flying plate's t_max, which reads
 // an earlier vector's magnitude (π/|Ω_space|); and against the cone's centre of mass, a length
-// in h, which reads "-0.75 h ẑ" as the height, no number of hours.
+// in h, which reads "-0.75 h ẑ" as the height, no number of hours; against the Earth's Euler
+// period, which reads d after a number as days (the problem has no symbol d); and against the
+// tennis racket's flip interval, which reads the steps' λ and the energy's T.
 #include <set>
 #include <string>
 #include <utility>
@@ -38,8 +40,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // A length whose symbol h spells a unit (hours): the symbol read where the unit's dimension
   // is wrong.
   static const Fixture cone("solid-cone", {"center_of_mass"});
+  static const Fixture earth("earth-free-precession", {"precession_period_body"});
+  static const Fixture racket("tennis-racket", {"flip_interval"});
   const std::string text = wobble::fuzz::text_of(data, size);
-  for (const Fixture* f : {&plate, &phy711, &top, &cone}) {
+  for (const Fixture* f : {&plate, &phy711, &top, &cone, &earth, &racket}) {
     for (const auto& part : f->key.parts) {
       for (const auto& a : part.answers) {
         if (f->judged.count(a.name) == 0) continue;
