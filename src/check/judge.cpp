@@ -781,9 +781,15 @@ std::optional<Verdict> judged_as_product(const Context& ctx, const Answer& a,
     (void)moments_on_diagonal(a, q.value);
     Verdict v = judge_read(ctx, a, product, q, options_for(a, options), layout);
     if (v.wrong_dimension) return std::nullopt;
+    // LaTeX's spaces (a thin space, a tie) shown as the spaces they are.
+    std::string shown = product;
+    for (const std::string space : {"\\,", "\\;", "\\:", "\\ ", "~"}) {
+      for (auto at = shown.find(space); at != std::string::npos; at = shown.find(space, at + 1))
+        shown.replace(at, space.size(), " ");
+    }
     v.feedback.insert(
         v.feedback.begin(),
-        fmt::format("read as {}, {} {}: after a number alone it would be the unit", trim(product),
+        fmt::format("read as {}, {} {}: after a number alone it would be the unit", trim(shown),
                     words.size() == 1 ? words[0] : fmt::format("{}", fmt::join(words, ", ")),
                     words.size() == 1 ? symbol_described(ctx, words[0])
                                       : std::string("the problem's symbols")));

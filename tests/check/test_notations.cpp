@@ -1250,7 +1250,12 @@ TEST_CASE("a symbol after a number is a unit where that reads, else a factor, an
   REQUIRE(cone.check("center_of_mass", "-\\frac{3}{4} h \\hat{z}").correct);
   REQUIRE(cone.check("center_of_mass", "-0.75\\,h\\,\\hat{z}").correct);
   // And after a tie, LaTeX's unbreakable space; judged, right or wrong.
-  REQUIRE(cone.check("center_of_mass", "-0.75~h~\\hat{z}").correct);
+  const auto tied = cone.check("center_of_mass", "-0.75~h~\\hat{z}");
+  REQUIRE(tied.correct);
+  // The line shows LaTeX's spaces as spaces.
+  REQUIRE(tied.feedback.front() ==
+          "read as -0.75*h \\hat{z}, h the problem's symbol for the "
+          "height: after a number alone it would be the unit");
   REQUIRE(cone.check("center_of_mass", "-\\frac{3}{4}~h~\\hat{z}").correct);
   REQUIRE_FALSE(cone.check("center_of_mass", "-0.5~h~\\hat{z}").correct);
   REQUIRE(cone.check("center_of_mass", "r_cm = -(3/4) h ẑ").correct);
