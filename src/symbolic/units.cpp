@@ -141,6 +141,10 @@ const std::map<std::string, std::string>& spellings() {
       {"revolution", "rev"},
       {"revolutions", "rev"},
       {"revs", "rev"},
+      {"turn", "rev"},  // ISO 80000-3's other name of the revolution
+      {"turns", "rev"},
+      {"cycle", "rev"},  // "cycles per second", as Hz is told
+      {"cycles", "rev"},
       {"joule", "J"},
       {"joules", "J"},
       {"newton", "N"},

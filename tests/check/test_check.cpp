@@ -70,6 +70,12 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   // Written out, singular or plural, and "per" for the '/'.
   REQUIRE_THAT(parse_unit("revolutions per minute", "u").to_si, WithinRel(2 * M_PI / 60, 1e-15));
   REQUIRE_THAT(parse_unit("degrees", "u").to_si, WithinRel(M_PI / 180, 1e-15));
+  // A turn and a cycle are revolutions: "1.2 turns per year", "cycles per second" (Hz).
+  REQUIRE_THAT(parse_unit("turns per year", "u").to_si,
+               WithinRel(2 * M_PI / (365.25 * 86400), 1e-15));
+  REQUIRE_THAT(parse_unit("cycles per second", "u").to_si,
+               WithinRel(parse_unit("Hz", "u").to_si, 1e-15));
+  REQUIRE(parse_unit("turn", "u").angle);
   REQUIRE(parse_unit("kilogram metres^2 per second", "u").dim == std::array<int, 3>{1, 2, -1});
   REQUIRE(parse_unit("radians", "u").angle);
   // Kilograms as a hurried hand writes them: a plural, capitals (there is no kelvin to mistake).
