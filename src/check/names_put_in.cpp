@@ -345,6 +345,30 @@ std::optional<std::pair<std::string, std::string>> latex_with_answer_names(
 }  // namespace
 
 // An earlier answer's name (names_put_in.hpp).
+namespace {
+// The first name in `ascii` of an answer `a` may be written in terms of, with the key's answers'
+// names set apart from the problem's symbols as the reader sets names ("I0omega" from "I₀ω"),
+// and the text so set apart; "" where there is none. For a refusal whose quote names no one
+// name: a sum along unit vectors, "I₀ω sin α ê₁ + 2I₀ω cos α ê₃", is refused as a whole.
+std::pair<std::string, std::string> referable_name_in(const Context& ctx, const Answer& a,
+                                                      const std::string& ascii) {
+  sym::SymbolTable with_answers = ctx.table;
+  for (const auto& part : ctx.key.parts) {
+    for (const auto& b : part.answers) {
+      if (!with_answers.contains(b.name))
+        with_answers.declare(b.name, name_latex(b.name), sym::SymbolSign::real);
+    }
+  }
+  const std::string apart = names_apart(ascii, with_answers);
+  for (const auto& [at, length] : identifiers(apart)) {
+    const std::string word = apart.substr(at, length);
+    if (!ctx.table.contains(word) && referable_answer(ctx, a, word) != nullptr)
+      return {word, apart};
+  }
+  return {"", ascii};
+}
+}  // namespace
+
 std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
                                             const std::string& text, const std::string& message) {
   std::string ascii, name;
@@ -357,11 +381,26 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
     ascii = sym::to_ascii(text);
     for (std::size_t at = ascii.find("‖"); at != std::string::npos; at = ascii.find("‖"))
       ascii.replace(at, std::string_view("‖").size(), "|");
+    // "ê₁" is "ê1" in ASCII, which no reader takes for a unit vector: "ê_1", which they do.
+    constexpr std::string_view kHatE = "ê";
+    for (std::size_t at = ascii.find(kHatE); at != std::string::npos;
+         at = ascii.find(kHatE, at + kHatE.size())) {
+      const std::size_t index = at + kHatE.size();
+      if (index < ascii.size() && ascii[index] >= '1' && ascii[index] <= '3')
+        ascii.insert(index, "_");
+    }
     name = refused_name(message);
     if (name.empty()) name = name_in_magnitude(ascii);
+    if (name.empty()) std::tie(name, ascii) = referable_name_in(ctx, a, ascii);
   }
   const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
   if (r == nullptr) return std::nullopt;
+  if (!looks_like_latex(text)) {
+    // "I₀ω sin α": the name run together with a symbol, set apart as the reader sets names.
+    sym::SymbolTable with_name = ctx.table;
+    if (!with_name.contains(name)) with_name.declare(name, name_latex(name), sym::SymbolSign::real);
+    ascii = names_apart(ascii, with_name);
+  }
   const auto names_r = [&](const std::string& word) {
     return name_in_key(ctx.key, word) == r->name || answer_begun(ctx.key, word) == r->name;
   };

@@ -839,6 +839,20 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
     REQUIRE(v.correct);
     REQUIRE(v.feedback == std::vector<std::string>{i0_note});
   }
+  // Run together with a symbol, "I₀ω", and in a sum along unit vectors, hatted or not: L at
+  // t = 0 as I₀ω(sin α e₁ + 2 cos α e₃).
+  for (const char* same :
+       {"(I₀ω sin α, 0, 2I₀ω cos α)", "I₀ω (sin α, 0, 2 cos α)", "I₀ω sin α ê₁ + 2I₀ω cos α ê₃",
+        "I₀ω sin α e₁ + 2I₀ω cos α e₃", "I0*omega*sin(alpha) e1 + 2*I0*omega*cos(alpha) e3"}) {
+    INFO(same);
+    const auto v = plate.check("L0_body", same);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{i0_note});
+  }
+  REQUIRE_FALSE(plate.check("L0_body", "I₀ω sin α ê₁ + I₀ω cos α ê₃").correct);
+  // Two bases stay refused so: x̂ is in space, ê₃ in the body.
+  REQUIRE_THROWS_WITH(plate.check("L0_body", "I₀ω sin α x̂ + 2I₀ω cos α ê₃"),
+                      Catch::Contains("mix bases"));
   const auto doubled = plate.check("I", "I₀ diag(2, 2, 4)");
   REQUIRE_FALSE(doubled.correct);
   // Read so and wrong: the line says how, not that it is "right as far as" I0 is.
