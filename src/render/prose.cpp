@@ -144,6 +144,35 @@ std::string letter_latex(char letter) {
   return letter == 'w' ? "\\omega" : std::string(1, letter);
 }
 
+// "s = |w(0)|", "at t = 0", "z = (..)", "K(k)": a lone Latin letter in prose (the word
+// s[i, j)) is a variable, set in italic as the formulas beside it set it. Not the article a (or
+// A); not a unit, after a number ("in 0.5 s") or a unit's '/' ("rad/s"); not a possessive's s
+// ("Euler's"), a letter of a hyphenated word ("z-y-z") or of an abbreviation ("e.g."); not a
+// part's label in brackets of its own ("(b)", "part (b)"; K(k)'s k is a variable).
+bool lone_variable(const std::string& s, std::size_t i, std::size_t j, const std::string& word) {
+  if (word.size() != 1 || !std::isalpha(static_cast<unsigned char>(word[0])) || word == "a" ||
+      word == "A")
+    return false;
+  const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+  const char prior = i > 0 ? s[i - 1] : ' ';
+  if (prior == '-' || prior == '\'' || (j < s.size() && s[j] == '-')) return false;
+  if (i >= 3 && s.compare(i - 3, 3, "’") == 0) return false;
+  if (prior == '/' && i >= 2 && letter(s[i - 2])) return false;
+  if (j + 1 < s.size() && s[j] == '.' && letter(s[j + 1])) return false;
+  // "d²ω₂/dt²": a derivative's d, upright as its dt.
+  if (word == "d" && s.compare(j, 2, "²") == 0 && j + 2 < s.size() && s[j + 2] != ' ') return false;
+  // After a number (not a name's index, "c2 d"), a unit.
+  std::size_t before = i;
+  while (before > 0 && s[before - 1] == ' ') --before;
+  std::size_t number = before;
+  while (number > 0 &&
+         (std::isdigit(static_cast<unsigned char>(s[number - 1])) || s[number - 1] == '.'))
+    --number;
+  if (number < before && (number == 0 || !ascii_word_char(s[number - 1]))) return false;
+  const bool bracketed = prior == '(' && j < s.size() && s[j] == ')';
+  return !(bracketed && (i < 2 || !std::isalnum(static_cast<unsigned char>(s[i - 2]))));
+}
+
 // A name in prose: as math (LaTeX without `$`, and the terminal's Unicode for it) or as an
 // answer's name, and the index after it.
 struct ProseWord {
@@ -213,6 +242,7 @@ std::optional<ProseWord> prose_word(const std::string& s, std::size_t i, const P
     return math("\\mathrm{d}" + symbol + "/\\mathrm{d}t", "d" + math_to_unicode(symbol) + "/dt");
   }
   if (word == "w") return math("\\omega");
+  if (lone_variable(s, i, j, word)) return math(word);
   return std::nullopt;
 }
 }  // namespace

@@ -143,16 +143,22 @@ TEST_CASE("prose on a LaTeX page sets names as the formulas beside it do") {
       // wobble's ASCII ω, indexed letters, a derivative in d/dt.
       {"dw1/dt = c1 w2 w3",
        "$\\mathrm{d}\\omega_{1}/\\mathrm{d}t$ = $c_{1}$ $\\omega_{2}$ $\\omega_{3}$"},
-      {"s = |w(0)| about e3, I1 < I2", "s = |$\\omega$(0)| about $e_{3}$, $I_{1}$ < $I_{2}$"},
+      {"s = |w(0)| about e3, I1 < I2", "$s$ = |$\\omega$(0)| about $e_{3}$, $I_{1}$ < $I_{2}$"},
+      // A lone letter is a variable, in italic; not the article a, a unit after a number or a
+      // unit's '/', a possessive's s, a hyphenated axis, a part's label or a derivative's d.
+      {"at t = 0, z = 2 s, in rad/s, Euler's, z-y-z, part (b), K(k), d²w1/dt², c2 d",
+       "at $t$ = 0, $z$ = 2 s, in rad/s, Euler's, z-y-z, part (b), $K$($k$), "
+       "d$^2$$\\omega_{1}$/dt$^2$, "
+       "$c_{2}$ $d$"},
       // Subscripted names, in ASCII or with a Greek letter (as the text key prints them).
       {"Ω_space / ω = 1.003", "$\\Omega_{\\mathrm{space}}$ / $\\omega$ = 1.003"},
       {"Ω_i Ω_j > 0: w_i, w_j", "$\\Omega_{i}$ $\\Omega_{j}$ > 0: $\\omega_{i}$, $\\omega_{j}$"},
-      {"(p_φ − p_ψ u)", "($p_{\\phi}$ $-$ $p_{\\psi}$ u)"},
+      {"(p_φ − p_ψ u)", "($p_{\\phi}$ $-$ $p_{\\psi}$ $u$)"},
       // Parameters by their LaTeX; a one-letter parameter is also the article "a".
       {"d2 sin alpha at theta0, a top", "$d_{2}$ sin $\\alpha$ at $\\theta_0$, a top"},
       // An answer's name as `check --name` takes it; one that is a word stays a word.
       {"k² is k2 below; see angles_zxz; the period",
-       "k$^2$ is \\texttt{k2} below; see \\texttt{angles\\_zxz}; the period"},
+       "$k$$^2$ is \\texttt{k2} below; see \\texttt{angles\\_zxz}; the period"},
       // A turned axis keeps its prime in math; a negative number has a minus, not a hyphen.
       {"e2' = (0, 1, 0), off by -0.03%", "$e_{2}'$ = (0, 1, 0), off by $-$0.03\\%"},
       // What is not a name stays: words, z-y-z, e-notation, the dotted Greek.
