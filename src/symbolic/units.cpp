@@ -41,6 +41,9 @@ const std::vector<std::pair<std::string, Named>>& units_in_order() {
       {"day", {86400.0, {0, 0, 1}, false, "86400"}},
       // Weeks, 604800 s: a long period as people count it (Euler's period of the Earth, 43 weeks).
       {"week", {604800.0, {0, 0, 1}, false, "604800"}},
+      // The sidereal day, one turn of the Earth against the stars (IERS: 86164.0905 s), as the
+      // Earth's Euler period is counted in turns of its spin (about 304.5 sidereal days).
+      {"sidereal day", {86164.0905, {0, 0, 1}, false, "861640905/10000"}},
       // The Julian year, 365.25 days, as astronomy's periods are given (the Chandler wobble).
       {"yr", {31557600.0, {0, 0, 1}, false, "31557600"}},
       {"rad", {1.0, {0, 0, 0}, true, "1"}},
@@ -248,6 +251,18 @@ Unit parse_unit(const std::string& text, const std::string& field) {
                                        : character_name(text, i)));
     }
     std::string name = text.substr(i, j - i);
+    // "sidereal days": two words, one unit.
+    if (ascii_lower(name) == "sidereal") {
+      std::size_t k = j;
+      while (k < text.size() && text[k] == ' ') ++k;
+      std::size_t end = k;
+      while (end < text.size() && std::isalpha(static_cast<unsigned char>(text[end]))) ++end;
+      const std::string day = ascii_lower(text.substr(k, end - k));
+      if (k == j || (day != "day" && day != "days"))
+        return fail("'sidereal' is read before day or days only");
+      name = "sidereal day";
+      j = end;
+    }
     if (name == "per") {  // "radians per second"
       if (denominator || !any) return fail("one 'per' or '/' after a unit");
       denominator = true;

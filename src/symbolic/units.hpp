@@ -6,7 +6,8 @@
 /// A unit is a product of names with integer powers, '/' putting what follows in the
 /// denominator: "kg m^2", "kg*m^2/s", "rad/s", "m/s^2", "deg", "rev/s", "1/s" (or "s^-1"), in one
 /// pair of brackets or not ("[kg m^2]", "(rad/s)", as a table's heading writes a unit).
-/// Names: kg, g; m, cm, mm; s, ms, min, h, day (days), yr (the Julian year); rad, deg, arcmin,
+/// Names: kg, g; m, cm, mm; s, ms, min, h, day (days), week, sidereal day (two words, 86164.0905
+/// s), yr (the Julian year); rad, deg, arcmin,
 /// arcsec, rev; J, N, Hz, rpm, rps; and an SI prefix (G, M, k, m, mu or u, n) on g, m, s, J, N and
 /// Hz, and m, mu or u, n on rad ("kJ", "mN", "mus" for µs, "mrad"), where the whole name is no
 /// unit of its own (min is minutes). An unknown name, a missing or non-integer power is an error.

@@ -76,6 +76,12 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   REQUIRE_THAT(parse_unit("cycles per second", "u").to_si,
                WithinRel(parse_unit("Hz", "u").to_si, 1e-15));
   REQUIRE(parse_unit("turn", "u").angle);
+  // The sidereal day, two words: one turn of the Earth against the stars.
+  REQUIRE_THAT(parse_unit("sidereal days", "u").to_si, WithinRel(86164.0905, 1e-15));
+  REQUIRE_THAT(parse_unit("rev per Sidereal Day", "u").to_si,
+               WithinRel(2 * M_PI / 86164.0905, 1e-15));
+  REQUIRE_THROWS_WITH(parse_unit("sidereal", "u"),
+                      Catch::Contains("'sidereal' is read before day or days only"));
   REQUIRE(parse_unit("kilogram metres^2 per second", "u").dim == std::array<int, 3>{1, 2, -1});
   REQUIRE(parse_unit("radians", "u").angle);
   // Kilograms as a hurried hand writes them: a plural, capitals (there is no kelvin to mistake).

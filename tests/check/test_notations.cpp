@@ -1682,6 +1682,13 @@ TEST_CASE("a day written d reads where d is no symbol of the problem, and only t
   REQUIRE_FALSE(bond.correct);
   REQUIRE_THAT(bond.feedback.back(), Catch::Contains("the key's value at the set values"));
   REQUIRE_THROWS_WITH(parse_unit("d", "u"), Catch::Contains("'d' is not read as days"));
+  // In turns of the spin, as the key's note counts it: sidereal days.
+  const double sidereal = earth.answer("precession_period_body").value.data[0] / 86164.0905;
+  REQUIRE(
+      earth.check("precession_period_body", fmt::format("{:.5g} sidereal days", sidereal)).correct);
+  REQUIRE_FALSE(
+      earth.check("precession_period_body", fmt::format("{:.5g} sidereal days", sidereal * 0.99))
+          .correct);
 }
 
 TEST_CASE("a remark in words in brackets after an answer is no part of it") {
