@@ -932,14 +932,13 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
   }
 }
 
-// judge_referring's verdict on `side`, before an '=', where it is right and refers to an
-// earlier answer (not one name alone, which is a label); else nullopt, and the side is a label.
+// judge_referring's verdict on `side`, before an '=', where it reads referring to an earlier
+// answer or the steps' names (not one name alone, which is a label); else nullopt.
 std::optional<Verdict> side_referring(const Context& ctx, const Answer& a, const std::string& side,
                                       const Options& options) {
   if (is_one_name(side)) return std::nullopt;
   try {
-    Verdict v = judge_referring(ctx, a, side, options);
-    if (v.correct) return v;
+    return judge_referring(ctx, a, side, options);
   } catch (const InputError&) {
   }
   return std::nullopt;
@@ -951,8 +950,20 @@ std::optional<Verdict> side_referring(const Context& ctx, const Answer& a, const
 // complementary modulus: the reader refuses the prime itself first).
 std::string label_reason(const Context& ctx, const Answer& a, const std::string& side,
                          const std::string& message, const Options& options) {
-  if (const std::string name = undefined_name(message); !name.empty())
+  if (const std::string name = undefined_name(message); !name.empty()) {
+    // "T/2 = 1.91 s" for the racket's flip, where the steps write T for the energy: say so.
+    if (const std::string named = name_in_key(ctx.key, name); named != name) {
+      const auto holds =
+          std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const auto& p) {
+            return std::any_of(p.answers.begin(), p.answers.end(),
+                               [&](const Answer& b) { return b.name == named; });
+          });
+      if (holds != ctx.key.parts.end())
+        return fmt::format("{} is {} here, the key's answer to part ({})", sym::to_unicode(name),
+                           named, holds->id);
+    }
     return name + " is no symbol here";
+  }
   if (const std::string name = quoted_after(message, "unknown function"); !name.empty())
     return name + " is no function here";
   std::string unprimed = side;
@@ -1347,10 +1358,20 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
       // value; that side cannot be judged, and the verdict says so.
       if (parts.size() != 2) throw;
       const std::string reason = label_reason(ctx, a, parts[k], e.what(), options);
-      if (k == 0 && !reason.empty()) {
-        // "2π/Ω_body_rate = 303.6 days": a formula in an earlier answer's name, right as the
-        // key's closed form reads in, is judged as a side (said so), not taken as a label.
-        if (const auto formula = side_referring(ctx, a, parts[0], options)) {
+      if (k == 0) {
+        // "2π/Ω_body_rate = 303.6 days", "2θ_L = 15.26°": a formula in an earlier answer's or
+        // the steps' names, right as the key's closed form reads in, is judged as a side (said
+        // so), not taken as a label; also where the name was first taken for a unit (2 θ_L).
+        std::optional<Verdict> formula = side_referring(ctx, a, parts[0], options);
+        // Wrong, it is a label where a name the problem lacks stands in it, as before the names
+        // were read ("2π/Ω_space_rate = 0.161 s": Ω_space_rate is no symbol); else, where the
+        // name was first taken for a unit ("3θ_L = 15.26°"), a wrong side, said as any other.
+        if (formula && !formula->correct && reason.empty()) {
+          formula->feedback.insert(formula->feedback.begin(),
+                                   "the side \"" + trim(parts[0]) + "\" of your '='");
+          return *formula;
+        }
+        if (formula && formula->correct) {
           Verdict value = judge_one(ctx, a, parts[1], options);
           if (!value.correct) {
             value.feedback.insert(value.feedback.begin(),
@@ -1360,6 +1381,8 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
                                 formula->feedback.end());
           return value;
         }
+      }
+      if (k == 0 && !reason.empty()) {
         Verdict label = judge_referring(ctx, a, parts[1], options);
         label.feedback.push_back(
             fmt::format("the side \"{}\" of your '=' is taken as a label, not judged: {}",

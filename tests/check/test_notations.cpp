@@ -1170,12 +1170,16 @@ TEST_CASE("where a number is asked for, a bare k is a name of the student's own,
 
 TEST_CASE(
     "a formula in names the problem lacks beside '=' labels the value, and is said unjudged") {
-  // The racket flips each half period: "T/2 = 1.91 s", T the student's own name for the period.
+  // The racket flips each half period: "T/2 = 1.91 s", T the student's own name for the period
+  // (the steps' T is the energy: as that, the side has no time's dimension, and the line says
+  // what T is here).
   const Fixture racket("tennis-racket");
+  const std::string energy_label =
+      "the side \"T/2\" of your '=' is taken as a label, not judged: T is energy here, the key's "
+      "answer to part (c)";
   const auto right = racket.check("flip_interval", "T/2 = 1.91 s");
   REQUIRE(right.correct);
-  REQUIRE(right.feedback == std::vector<std::string>{"the side \"T/2\" of your '=' is taken as a "
-                                                     "label, not judged: T is no symbol here"});
+  REQUIRE(right.feedback == std::vector<std::string>{energy_label});
   // The value is still judged, and its mistake named before the note.
   const auto wrong = racket.check("flip_interval", "T/2 = 2.5 s");
   REQUIRE_FALSE(wrong.correct);
@@ -1185,8 +1189,11 @@ TEST_CASE(
   // After the value, the same: the value judged first, the label said unjudged.
   const auto after = racket.check("flip_interval", "1.91 s = T/2");
   REQUIRE(after.correct);
-  REQUIRE(after.feedback == std::vector<std::string>{"the side \"T/2\" of your '=' is taken as a "
-                                                     "label, not judged: T is no symbol here"});
+  REQUIRE(after.feedback == std::vector<std::string>{energy_label});
+  // A name that is no symbol and none of the key's stays "no symbol".
+  REQUIRE(racket.check("flip_interval", "P/2 = 1.91 s").feedback ==
+          std::vector<std::string>{"the side \"P/2\" of your '=' is taken as a label, not judged: "
+                                   "P is no symbol here"});
   const auto wrong_after = racket.check("flip_interval", "2.5 s = T/2");
   REQUIRE_FALSE(wrong_after.correct);
   REQUIRE_THAT(wrong_after.feedback[0], Catch::Equals("the side \"2.5 s\" of your '='"));
@@ -1458,6 +1465,16 @@ TEST_CASE("a name the steps write for an earlier answer reads as it: θ_L for th
   REQUIRE(solid.check("space_cone_half_angle", "θ_L = 28.19°").feedback ==
           std::vector<std::string>{"this is angle_L_e3 (part c), not space_cone_half_angle"});
   REQUIRE_THROWS_AS(solid.check("angle_L_e3", "θ_L"), InputError);
+  // Before an '=' and the value, the formula is a side, judged, though after a number the name
+  // was first taken for a unit: right, both sides are; wrong, that side is said.
+  const std::string max_angle =
+      fmt::format("{:.4g}°", plate.answer("max_angle").value.data[0] * 180 / M_PI);
+  const auto twice = plate.check("max_angle", "2θ_L = " + max_angle);
+  REQUIRE(twice.correct);
+  REQUIRE_THAT(twice.feedback.back(), Catch::StartsWith("read with θ_L as angle_L_e3"));
+  const auto thrice = plate.check("max_angle", "3θ_L = " + max_angle);
+  REQUIRE_FALSE(thrice.correct);
+  REQUIRE(thrice.feedback.front() == "the side \"3θ_L\" of your '='");
 }
 
 TEST_CASE("the heavy top's E, as its steps write the energy, reads as it; E′ labels a line") {
