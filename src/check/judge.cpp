@@ -167,6 +167,15 @@ std::string definition_in_text(const Key& key, const std::string& name) {
 // name stand in for the working. A parameter but for its "0" is named next (not read: ψ̇ is
 // ψ̇₀ at t = 0 only), then a name the statement defines, then answers the name begins, then a
 // principal moment or a component of ω where the problem has no such symbol.
+// The part whose answers include one named `name`, or nullptr.
+const PartKey* part_answering(const Key& key, const std::string& name) {
+  const auto it = std::find_if(key.parts.begin(), key.parts.end(), [&](const PartKey& p) {
+    return std::any_of(p.answers.begin(), p.answers.end(),
+                       [&](const Answer& b) { return b.name == name; });
+  });
+  return it == key.parts.end() ? nullptr : &*it;
+}
+
 std::string name_hint(const Context& ctx, const std::string& name) {
   if (ctx.table.contains(name)) return "";
   std::vector<std::string> named;  // "Omega" for Omega_body_rate, as a book writes Ω
@@ -953,12 +962,7 @@ std::string label_reason(const Context& ctx, const Answer& a, const std::string&
   if (const std::string name = undefined_name(message); !name.empty()) {
     // "T/2 = 1.91 s" for the racket's flip, where the steps write T for the energy: say so.
     if (const std::string named = name_in_key(ctx.key, name); named != name) {
-      const auto holds =
-          std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const auto& p) {
-            return std::any_of(p.answers.begin(), p.answers.end(),
-                               [&](const Answer& b) { return b.name == named; });
-          });
-      if (holds != ctx.key.parts.end())
+      if (const PartKey* holds = part_answering(ctx.key, named))
         return fmt::format("{} is {} here, the key's answer to part ({})", sym::to_unicode(name),
                            named, holds->id);
     }
