@@ -342,10 +342,7 @@ std::optional<std::pair<std::string, std::string>> latex_with_answer_names(
   }
   return std::nullopt;
 }
-}  // namespace
 
-// An earlier answer's name (names_put_in.hpp).
-namespace {
 // The first name in `ascii` of an answer `a` may be written in terms of, with the key's answers'
 // names set apart from the problem's symbols as the reader sets names ("I0omega" from "I₀ω"),
 // and the text so set apart; "" where there is none. For a refusal whose quote names no one
@@ -369,6 +366,7 @@ std::pair<std::string, std::string> referable_name_in(const Context& ctx, const 
 }
 }  // namespace
 
+// An earlier answer's name (names_put_in.hpp).
 std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
                                             const std::string& text, const std::string& message) {
   std::string ascii, name;
