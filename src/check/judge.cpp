@@ -162,11 +162,6 @@ std::string definition_in_text(const Key& key, const std::string& name) {
   return "";
 }
 
-// " (I0 is the answer to part (a): write it in the problem's symbols)" where `name` is another
-// answer of the key, or "". An answer is no symbol: reading it as its key's value would let a
-// name stand in for the working. A parameter but for its "0" is named next (not read: ψ̇ is
-// ψ̇₀ at t = 0 only), then a name the statement defines, then answers the name begins, then a
-// principal moment or a component of ω where the problem has no such symbol.
 // The part whose answers include one named `name`, or nullptr.
 const PartKey* part_answering(const Key& key, const std::string& name) {
   const auto it = std::find_if(key.parts.begin(), key.parts.end(), [&](const PartKey& p) {
@@ -176,6 +171,11 @@ const PartKey* part_answering(const Key& key, const std::string& name) {
   return it == key.parts.end() ? nullptr : &*it;
 }
 
+// " (I0 is the answer to part (a): write it in the problem's symbols)" where `name` is another
+// answer of the key, or "". An answer is no symbol: reading it as its key's value would let a
+// name stand in for the working. A parameter but for its "0" is named next (not read: ψ̇ is
+// ψ̇₀ at t = 0 only), then a name the statement defines, then answers the name begins, then a
+// principal moment or a component of ω where the problem has no such symbol.
 std::string name_hint(const Context& ctx, const std::string& name) {
   if (ctx.table.contains(name)) return "";
   std::vector<std::string> named;  // "Omega" for Omega_body_rate, as a book writes Ω

@@ -26,9 +26,7 @@ bool subscript_at(const std::string& s, std::size_t i, std::size_t& length) {
   return length >= 1 && length <= 2 &&
          (j == s.size() || !std::isalnum(static_cast<unsigned char>(s[j])));
 }
-}  // namespace
 
-namespace {
 // One letter as LaTeX math: "L", "w" as wobble's ASCII ω, a Greek letter's name ("Omega");
 // nullopt for anything longer.
 std::optional<std::string> name_latex_letter(const std::string& name) {
