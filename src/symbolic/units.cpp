@@ -211,7 +211,9 @@ Unit parse_unit(const std::string& text, const std::string& field) {
   u.text = text;
   const auto fail = [&](const std::string& why) -> Unit {
     throw InputError(
-        field + ": cannot read the unit '" + text + "': " + why + " (units: " + unit_list() +
+        // At most a line's worth of it: a long answer's tail may be taken for its unit.
+        field + ": cannot read the unit '" + printable(text, 60) + "': " + why +
+        " (units: " + unit_list() +
         "; SI prefixes G M k m µ n on g, m, s, J, N, Hz, and m µ n on rad; e.g. 'kg m^2', "
         "'rad/s')");
   };

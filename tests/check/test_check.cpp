@@ -82,6 +82,18 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
                WithinRel(2 * M_PI / 86164.0905, 1e-15));
   REQUIRE_THROWS_WITH(parse_unit("sidereal", "u"),
                       Catch::Contains("'sidereal' is read before day or days only"));
+  // A long text refused as a unit is quoted a line's worth, not whole.
+  std::string long_unit = "theta_L";
+  for (int i = 0; i < 300; ++i) long_unit += " + 2 theta_L";
+  try {
+    (void)parse_unit(long_unit, "u");
+    FAIL("a unit of 300 terms read");
+  } catch (const InputError& e) {
+    const std::string said = e.what();
+    REQUIRE_THAT(said, Catch::StartsWith("u: cannot read the unit 'theta_L + 2 theta_L"));
+    REQUIRE_THAT(said, Catch::Contains("...': "));
+    REQUIRE(said.size() < 600);
+  }
   REQUIRE(parse_unit("kilogram metres^2 per second", "u").dim == std::array<int, 3>{1, 2, -1});
   REQUIRE(parse_unit("radians", "u").angle);
   // Kilograms as a hurried hand writes them: a plural, capitals (there is no kelvin to mistake).
