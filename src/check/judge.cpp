@@ -46,6 +46,7 @@ using detail::Judge;
 using detail::judge_symbolic;
 using detail::kField;
 using detail::latex_unknown_symbol;
+using detail::part_answering;
 using detail::quoted_after;
 using detail::Referenced;
 using detail::undefined_name;
@@ -160,15 +161,6 @@ std::string definition_in_text(const Key& key, const std::string& name) {
     }
   }
   return "";
-}
-
-// The part whose answers include one named `name`, or nullptr.
-const PartKey* part_answering(const Key& key, const std::string& name) {
-  const auto it = std::find_if(key.parts.begin(), key.parts.end(), [&](const PartKey& p) {
-    return std::any_of(p.answers.begin(), p.answers.end(),
-                       [&](const Answer& b) { return b.name == name; });
-  });
-  return it == key.parts.end() ? nullptr : &*it;
 }
 
 // " (I0 is the answer to part (a): write it in the problem's symbols)" where `name` is another

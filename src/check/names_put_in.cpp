@@ -56,6 +56,14 @@ std::string latex_unknown_symbol(const std::string& message) {
   return start == std::string::npos ? "" : message.substr(start + 2, end - start - 2);
 }
 
+const PartKey* part_answering(const Key& key, const std::string& name) {
+  const auto it = std::find_if(key.parts.begin(), key.parts.end(), [&](const PartKey& p) {
+    return std::any_of(p.answers.begin(), p.answers.end(),
+                       [&](const Answer& b) { return b.name == name; });
+  });
+  return it == key.parts.end() ? nullptr : &*it;
+}
+
 namespace {
 // The one answer whose name begins with `name` and '_' ("Omega_body" for Omega_body_rate, as
 // the Earth's question (a) writes Ω_body), where `name` is no answer's own; "" otherwise (two
@@ -230,14 +238,6 @@ std::optional<std::size_t> index_spelled(const std::vector<std::string>& spelled
   return static_cast<std::size_t>(it - spelled.begin());
 }
 
-// The part of `key` that holds `answer` (one of its answers).
-const PartKey* part_holding(const Key& key, const Answer* answer) {
-  return &*std::find_if(key.parts.begin(), key.parts.end(), [&](const PartKey& p) {
-    return std::any_of(p.answers.begin(), p.answers.end(),
-                       [&](const Answer& x) { return &x == answer; });
-  });
-}
-
 // A matrix's closed form is nine entries long, the tennis racket's period some 400 characters:
 // there a line names the answer, and the form is the key's to look up. One line's worth is shown.
 constexpr std::size_t kLongestFormShown = 80;
@@ -343,12 +343,11 @@ std::optional<std::pair<std::string, std::string>> latex_with_answer_names(
   return std::nullopt;
 }
 
-// The first name in `ascii` of an answer `a` may be written in terms of, with the key's answers'
-// names set apart from the problem's symbols as the reader sets names ("I0omega" from "I₀ω"),
-// and the text so set apart; "" where there is none. For a refusal whose quote names no one
-// name: a sum along unit vectors, "I₀ω sin α ê₁ + 2I₀ω cos α ê₃", is refused as a whole.
-std::pair<std::string, std::string> referable_name_in(const Context& ctx, const Answer& a,
-                                                      const std::string& ascii) {
+// The first name in `ascii` of an answer `a` may be written in terms of, found with the key's
+// answers' names set apart from the problem's symbols as the reader sets names ("I0omega" from
+// "I₀ω"); "" where there is none. For a refusal whose quote names no one name: a sum along unit
+// vectors, "I₀ω sin α ê₁ + 2I₀ω cos α ê₃", is refused as a whole.
+std::string referable_name_in(const Context& ctx, const Answer& a, const std::string& ascii) {
   sym::SymbolTable with_answers = ctx.table;
   for (const auto& part : ctx.key.parts) {
     for (const auto& b : part.answers) {
@@ -359,10 +358,9 @@ std::pair<std::string, std::string> referable_name_in(const Context& ctx, const 
   const std::string apart = names_apart(ascii, with_answers);
   for (const auto& [at, length] : identifiers(apart)) {
     const std::string word = apart.substr(at, length);
-    if (!ctx.table.contains(word) && referable_answer(ctx, a, word) != nullptr)
-      return {word, apart};
+    if (!ctx.table.contains(word) && referable_answer(ctx, a, word) != nullptr) return word;
   }
-  return {"", ascii};
+  return "";
 }
 }  // namespace
 
@@ -389,7 +387,7 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
     }
     name = refused_name(message);
     if (name.empty()) name = name_in_magnitude(ascii);
-    if (name.empty()) std::tie(name, ascii) = referable_name_in(ctx, a, ascii);
+    if (name.empty()) name = referable_name_in(ctx, a, ascii);
   }
   const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
   if (r == nullptr) return std::nullopt;
@@ -416,7 +414,7 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
         return "(" + r->symbolic + ")";
       });
   if (!magnitude && !named) return std::nullopt;
-  const PartKey* part = part_holding(ctx.key, r);
+  const PartKey* part = part_answering(ctx.key, r->name);
   const bool shown =
       r->value.shape == Value::Shape::scalar && r->symbolic.size() <= kLongestFormShown;
   // Ω_body for Omega_body_rate: the name as typed, and the answer it is read as.
@@ -602,7 +600,7 @@ std::optional<Referenced> entry_named(const Context& ctx, const Answer& a, const
   }
   for (const Answer* b : answers) {
     whose += fmt::format("{}{} (part {})", whose.empty() ? "" : " and ", b->name,
-                         part_holding(ctx.key, b)->id);
+                         part_answering(ctx.key, b->name)->id);
   }
   return Referenced{brackets_put_in(put->text),
                     fmt::format("read with {}, {} the key's answer {}", forms,

@@ -24,6 +24,9 @@ std::string refused_name(const std::string& message);
 /// The symbol the LaTeX reader's message says is none of the problem's, as drawn
 /// ("\Omega_{space}"), or "".
 std::string latex_unknown_symbol(const std::string& message);
+/// The part of `key` whose answers include the one named `name` (answer names are unique in a
+/// key), or nullptr.
+const PartKey* part_answering(const Key& key, const std::string& name);
 
 /// An answer's text with forms put in for names (plain text the reader reads), and the line of
 /// feedback that says which; `when_right` ends that line where the answer is judged right (": right
