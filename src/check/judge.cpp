@@ -47,6 +47,7 @@ using detail::judge_symbolic;
 using detail::kField;
 using detail::latex_unknown_symbol;
 using detail::part_answering;
+using detail::primed_named;
 using detail::quoted_after;
 using detail::Referenced;
 using detail::undefined_name;
@@ -103,6 +104,15 @@ std::string imaginary_hint(const Answer& a, const std::string& typed, const std:
                        s[k], s[k] == 'i' ? "î" : "ĵ", s[k] == 'i' ? "x" : "y", growth);
   }
   return "";
+}
+
+// `name` as a problem spells ω's components: "w1" and "omega_1" as "omega1".
+std::string textbook_spelling(const std::string& name) {
+  std::string plain;
+  for (char c : name)
+    if (c != '_') plain += c;
+  if (plain.size() == 2 && plain[0] == 'w') return "omega" + plain.substr(1);
+  return plain;
 }
 
 // What a name the textbook formulas use but the problem has no symbol for stands for: "a
@@ -209,6 +219,20 @@ std::string name_hint(const Context& ctx, const std::string& name) {
           "times the other two components, dω₁/dt = c₁ ω₂ ω₃)",
           kSubscripts[i]);
     }
+  }
+  // ω₁ where the steps write ω₁′ only (the Euler-angle top's line-of-nodes basis), or ω₁′ in
+  // the answer whose own entry it is (the reader refuses at the name, before its prime).
+  const auto defined = [&](const std::string& spelled) {
+    return std::find_if(ctx.key.defined_names.begin(), ctx.key.defined_names.end(),
+                        [&](const DefinedName& d) { return d.name == spelled; });
+  };
+  const auto primed = defined(textbook_spelling(name) + "'");
+  if (primed != ctx.key.defined_names.end() &&
+      defined(textbook_spelling(name)) == ctx.key.defined_names.end()) {
+    return fmt::format(
+        " ({} is no symbol here; the key's steps write {}′ for {}: write it in the "
+        "problem's symbols)",
+        name, sym::to_unicode(textbook_spelling(name)), primed->meaning);
   }
   const std::string words = textbook_name_words(name);
   if (words.empty()) return "";
@@ -893,7 +917,8 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
   try {
     return judge_one(ctx, a, text, options);
   } catch (const InputError& e) {
-    std::optional<Referenced> referenced = convention_named(ctx, text, e.what());
+    std::optional<Referenced> referenced = primed_named(ctx, a, text);
+    if (!referenced) referenced = convention_named(ctx, text, e.what());
     if (!referenced) referenced = defined_named(ctx, a, text, e.what());
     if (!referenced) referenced = entry_named(ctx, a, text, e.what());
     // A name the key itself reads (a convention's, its steps', an entry's), unlike an answer's
@@ -921,10 +946,13 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
       // as an expression; the refusal of the unit, as typed, says more than the forms put in.
       const bool unit_refused = !quoted_after(first, "cannot read the unit").empty();
       if (unit_refused && !other.empty()) std::rethrow_exception(refusal);
+      // "I₃ω₃''": the steps' names read, the text around them does not; said of the text as
+      // typed, not of the forms put in.
+      const bool quote_typed = key_names && same_entry && other.empty();
       // The key's names read, what still keeps the answer from reading is said: a vector for
       // a matrix or a number, or another entry's unknown name.
-      if (key_names && (other.empty() || !same_entry)) throw;
-      if (other.empty() || other == undefined_name(first) || !same_entry)
+      if (key_names && !quote_typed && (other.empty() || !same_entry)) throw;
+      if (!quote_typed && (other.empty() || other == undefined_name(first) || !same_entry))
         std::rethrow_exception(refusal);  // the name as it was refused, with its hint
       throw InputError(second.substr(0, at2) + first.substr(at1, end1 - at1) + second.substr(end2));
     }

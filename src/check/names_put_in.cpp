@@ -504,14 +504,67 @@ std::string defined_spelling(const std::string& word) {
 
 }  // namespace
 
+namespace {
+// A name's trailing prime, as typed: ASCII's ' or Unicode's ′ (U+2032): its length at `at` in
+// `s`, or 0.
+std::size_t prime_length(const std::string& s, std::size_t at) {
+  if (at < s.size() && s[at] == '\'') return 1;
+  constexpr std::string_view kPrime = "′";
+  return s.compare(at, kPrime.size(), kPrime) == 0 ? kPrime.size() : 0;
+}
+
+bool primed(const DefinedName& d) {
+  return d.name.ends_with('\'');
+}
+
+// The exact forms of `a` itself: its entries' for a vector or matrix. A defined name that is one
+// of them is no working in `a` (ω₃ for ω's third entry).
+std::vector<std::string> own_forms(const Answer& a) {
+  if (a.value.shape == Value::Shape::scalar) return {a.symbolic};
+  return list_items(a.symbolic).items;
+}
+
+// The line for the defined names `read` (in the key's order, whatever the answer's): each with
+// its form and meaning, and the text to judge with their forms put in.
+Referenced defined_read(const std::vector<const DefinedName*>& names, const std::vector<bool>& read,
+                        const std::string& marked) {
+  std::string forms, yours;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (!read[i]) continue;
+    const std::string shown =
+        primed(*names[i])
+            ? sym::to_unicode(names[i]->name.substr(0, names[i]->name.size() - 1)) + "′"
+            : sym::to_unicode(names[i]->name);
+    const std::string form = sym::to_unicode(names[i]->symbolic);
+    // The racket's λ is some 150 characters: named, its form the key's to look up.
+    forms += fmt::format("{}{}{} ({})", forms.empty() ? "" : ", ", shown,
+                         names[i]->symbolic.size() <= kLongestFormShown ? " = " + form : "",
+                         names[i]->meaning);
+    yours += (yours.empty() ? "" : ", ") + shown;
+    ++count;
+  }
+  return Referenced{
+      brackets_put_in(marked),
+      fmt::format("read with {}, as the key's steps write {}", forms, count == 1 ? "it" : "them"),
+      fmt::format(": right as far as your {} {}", yours, count == 1 ? "is" : "are")};
+}
+}  // namespace
+
 // `text` with the names the key's steps write for quantities of this problem (key.hpp's
 // DefinedName: the heavy top's I₁, I₃, ω₃) as their exact forms in brackets (names_put_in), and
-// the line that says so. Never the answer's own name: ω₃ for ω₃ is no working.
+// the line that says so. Never the answer's own name nor one of its own forms: ω₃ for ω₃ is no
+// working. Not a primed name (primed_named).
 std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
                                         const std::string& text, const std::string& message) {
-  const auto& names = ctx.key.defined_names;
+  const std::vector<std::string> own = own_forms(a);
+  std::vector<const DefinedName*> names;
   std::vector<std::string> spelled;
-  for (const DefinedName& d : names) spelled.push_back(d.name);
+  for (const DefinedName& d : ctx.key.defined_names) {
+    if (primed(d) || std::find(own.begin(), own.end(), d.symbolic) != own.end()) continue;
+    names.push_back(&d);
+    spelled.push_back(d.name);
+  }
   const auto index_of = [&](const std::string& word) -> std::optional<std::size_t> {
     const auto it = std::find(spelled.begin(), spelled.end(), defined_spelling(word));
     if (it == spelled.end() || *it == a.name || ctx.table.contains(*it)) return std::nullopt;
@@ -519,25 +572,71 @@ std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
   };
   const std::optional<NamesPutIn> put =
       names_put_in(ctx, text, message, spelled, index_of,
-                   [&](std::size_t i) { return kPutIn + names[i].symbolic + kPutInEnd; });
+                   [&](std::size_t i) { return kPutIn + names[i]->symbolic + kPutInEnd; });
   if (!put) return std::nullopt;
-  std::string forms, yours;  // in the key's order, whatever the answer's
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (!put->read[i]) continue;
-    const std::string shown = sym::to_unicode(names[i].name);
-    const std::string form = sym::to_unicode(names[i].symbolic);
-    // The racket's λ is some 150 characters: named, its form the key's to look up.
-    forms += fmt::format("{}{}{} ({})", forms.empty() ? "" : ", ", shown,
-                         names[i].symbolic.size() <= kLongestFormShown ? " = " + form : "",
-                         names[i].meaning);
-    yours += (yours.empty() ? "" : ", ") + shown;
-    ++count;
+  return defined_read(names, put->read, put->text);
+}
+
+// `text` with the primed names the key's steps write (the Euler-angle top's ω₁′, a component
+// along the line-of-nodes basis: DefinedName "omega1'") as their exact forms in brackets, and
+// the line that says so. Plain text only: the reader takes a prime after a name for no part of
+// it, so they are found here, before it reads (ω₁', ω₁′, ω_1', w1', ω'₁; run together with a
+// symbol, I₁ω₁'). Never one of the answer's own entries: (ω₁′, ω₂′, ω₃′) for ω′ is no working.
+std::optional<Referenced> primed_named(const Context& ctx, const Answer& a,
+                                       const std::string& text) {
+  std::vector<const DefinedName*> names;
+  for (const DefinedName& d : ctx.key.defined_names) {
+    if (primed(d)) names.push_back(&d);
   }
-  return Referenced{
-      brackets_put_in(put->text),
-      fmt::format("read with {}, as the key's steps write {}", forms, count == 1 ? "it" : "them"),
-      fmt::format(": right as far as your {} {}", yours, count == 1 ? "is" : "are")};
+  if (names.empty() || looks_like_latex(text)) return std::nullopt;
+  const std::vector<std::string> own = own_forms(a);
+  // The defined names, primed ones without their primes, declared so that a name run together
+  // with them comes apart (I₂ω₂′).
+  sym::SymbolTable with_bases = ctx.table;
+  for (const DefinedName& d : ctx.key.defined_names) {
+    const std::string base = primed(d) ? d.name.substr(0, d.name.size() - 1) : d.name;
+    if (!with_bases.contains(base))
+      with_bases.declare(base, name_latex(base), sym::SymbolSign::real);
+  }
+  const std::string ascii = names_apart(sym::to_ascii(text), with_bases);
+  std::string marked;
+  std::vector<bool> read(names.size(), false);
+  std::size_t from = 0;
+  for (const auto& [at, length] : identifiers(ascii)) {
+    std::size_t past = at + length;
+    const std::size_t prime = prime_length(ascii, past);
+    // ω₁'' is no name of the steps' (a second derivative, or a slip): left for the reader.
+    if (at < from || prime == 0 || prime_length(ascii, past + prime) != 0) continue;
+    past += prime;
+    std::string word = ascii.substr(at, length);
+    // ω'₁: the index after the prime.
+    std::size_t index = past < ascii.size() && ascii[past] == '_' ? past + 1 : past;
+    const std::size_t index_from = index;
+    while (index < ascii.size() && std::isdigit(static_cast<unsigned char>(ascii[index]))) ++index;
+    if (index > index_from && !std::isdigit(static_cast<unsigned char>(word.back()))) {
+      word += ascii.substr(index_from, index - index_from);
+      past = index;
+    }
+    const std::string spelled = defined_spelling(word) + "'";
+    const auto it = std::find_if(names.begin(), names.end(),
+                                 [&](const DefinedName* d) { return d->name == spelled; });
+    if (it == names.end() || std::find(own.begin(), own.end(), (*it)->symbolic) != own.end())
+      continue;
+    read[static_cast<std::size_t>(it - names.begin())] = true;
+    marked += ascii.substr(from, at - from);
+    // A product, as the name stood in one: "I1 (..)" would read as a call of I1.
+    const std::size_t last = marked.find_last_not_of(' ');
+    const auto operand = [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == ')';
+    };
+    if (last != std::string::npos && operand(marked[last])) marked += '*';
+    marked += kPutIn + (*it)->symbolic + kPutInEnd;
+    const std::size_t next = ascii.find_first_not_of(' ', past);
+    if (next != std::string::npos && operand(ascii[next]) && ascii[next] != ')') marked += '*';
+    from = past;
+  }
+  if (from == 0) return std::nullopt;
+  return defined_read(names, read, marked + ascii.substr(from));
 }
 
 // `text` with the names an earlier answer gives its entries (key.hpp's named_entries: the

@@ -54,6 +54,14 @@ std::optional<Referenced> convention_named(const Context& ctx, const std::string
 std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
                                         const std::string& text, const std::string& message);
 
+/// `text` with the primed names the key's steps write (DefinedName "omega1'": the Euler-angle
+/// top's ω₁′, along the line-of-nodes basis) as their exact forms, and the line that says so.
+/// Plain text, found before the reader reads it (it takes a prime after a name for no part of
+/// it): ω₁', ω₁′, ω_1', w1', ω'₁, and run together with a symbol (I₁ω₁'). Never one of the
+/// answer's own entries.
+std::optional<Referenced> primed_named(const Context& ctx, const Answer& a,
+                                       const std::string& text);
+
 /// `text` with the names an earlier answer gives its entries (key.hpp's named_entries: the
 /// asymmetric top's Ω₂, Ω₃ of its spin about e₁, Euler's c₁, c₂, c₃) as their exact forms, and
 /// the line that says so. Each name is the entry of the last answer before `a` that gives it (the

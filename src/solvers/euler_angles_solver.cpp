@@ -25,7 +25,7 @@ const std::array<const char*, 6> kMotionKeys{"phi", "theta", "psi", "phidot", "t
 
 struct Angles : BodyContext {
   Angles(const Problem& problem, const sym::Values& values);
-  ex phi, theta, psi, phidot, thetadot, psidot, I1, I3;  // exact
+  ex phi, theta, psi, phidot, thetadot, psidot, I1, I2, I3;  // exact
   Vec3 angles_n, rates_n;                                // at the values
   bool singular = false;                                 // sin(theta) = 0 exactly
   std::string file() const { return problem.file.string(); }
@@ -40,6 +40,7 @@ Angles::Angles(const Problem& p, const sym::Values& values) : BodyContext(p, val
   const GiNaC::matrix I = tensor_about_centre(t);
   require_symmetric_about_z(t, I, "the euler_angles solver", "about the centre of mass");
   I1 = I(0, 0);
+  I2 = I(1, 1);
   I3 = I(2, 2);
   const std::array<ex*, 6> fields{&phi, &theta, &psi, &phidot, &thetadot, &psidot};
   for (std::size_t i = 0; i < 6; ++i) {
@@ -390,6 +391,19 @@ Key solve_euler_angles(const Problem& problem, const sym::Values& values) {
       key.convention_names.push_back({name, given});
   }
   key.convention = "Taylor's";
+  // The steps write L as (I1 w1', I1 w2', I3 w3'), with I1 = I2: so may a student. A name that
+  // is the problem's own symbol (I1 here) stays the symbol (the checker reads it first).
+  const std::vector<ex> w = omega_primed(t);
+  const std::array<const char*, 3> axes{"e₁′", "e₂′", "e₃′ = e₃"};
+  key.defined_names = {{"I1", sym::to_text(t.I1, t.table), "the moment about e₁"},
+                       {"I2", sym::to_text(t.I2, t.table), "the moment about e₂, equal to I₁"},
+                       {"I3", sym::to_text(t.I3, t.table), "the moment about e₃"}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    key.defined_names.push_back({fmt::format("omega{}'", k + 1), sym::to_text(w[k], t.table),
+                                 fmt::format("ω's component along {}", axes[k])});
+  }
+  // e3' = e3: the spin about the axis is w3 in either basis, as Taylor writes it.
+  key.defined_names.push_back({"omega3", sym::to_text(w[2], t.table), "ω's component along e₃"});
   return key;
 }
 

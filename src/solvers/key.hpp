@@ -192,7 +192,7 @@ struct ConventionName {
 /// student may write an answer as the steps do; `wobble check` reads the name as that form and
 /// says so.
 struct DefinedName {
-  std::string name;      ///< as GiNaC text: "I3"
+  std::string name;      ///< as GiNaC text: "I3"; or such a name and a prime: "omega1'" (ω₁′)
   std::string symbolic;  ///< its exact form, GiNaC text: "1/2*M*R^2"
   std::string meaning;   ///< what it is, for that line: "the moment about the axle"
 };

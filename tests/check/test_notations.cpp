@@ -1618,6 +1618,56 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
                       Catch::Contains("I3, a principal moment of the body, is no symbol here"));
 }
 
+TEST_CASE("the Euler-angle top reads ω₁′, ω₂′, ω₃′, ω₃ and I₂ as its steps write them") {
+  // The steps: L = (I₁ ω₁', I₁ ω₂', I₃ ω₃'), with I₁ = I₂, the components along the line-of-nodes
+  // basis (e₃′ = e₃). A prime typed after a name is no part of it to the reader: these are found
+  // before it reads, however the prime and the index are typed.
+  const Fixture taylor("euler-angles"), phy("euler-angles-phy711");
+  const std::string primes =
+      "read with ω1′ = -α̇·sin(β) (ω's component along e₁′), ω2′ = β̇ (ω's component along "
+      "e₂′), ω3′ = α̇·cos(β) + γ̇ (ω's component along e₃′ = e₃), as the key's steps write them: "
+      "right as far as your ω1′, ω2′, ω3′ are";
+  for (const char* typed :
+       {"(I1 ω₁', I1 ω₂', I3 ω₃')", "(I₁ω₁′, I₁ω₂′, I₃ω₃′)", "(I1*w1', I1*w2', I3*w3')",
+        "(I1 ω'₁, I1 ω'₂, I3 ω'₃)", "[I1 omega_1', I1 omega_2', I3 omega_3']"}) {
+    INFO(typed);
+    const auto v = phy.check("L_primed", typed);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback == std::vector<std::string>{primes});
+  }
+  // I₂ for I₁ and ω₃ for ω₃′, said on a line of their own.
+  const auto moments = phy.check("L_primed", "(I₁ω₁′, I₂ω₂′, I₃ω₃)");
+  REQUIRE(moments.correct);
+  REQUIRE(moments.feedback.size() == 2);
+  REQUIRE_THAT(moments.feedback[0],
+               Catch::StartsWith("read with I2 = I1 (the moment about e₂, equal to I₁), ω3 = "
+                                 "α̇·cos(β) + γ̇ (ω's component along e₃)"));
+  REQUIRE_THAT(moments.feedback[1], Catch::StartsWith("read with ω1′ = -α̇·sin(β)") &&
+                                        Catch::EndsWith("right as far as your ω1′, ω2′ are"));
+  // In Taylor's angles, the energy as ½ ω · L in the primed basis.
+  REQUIRE(taylor.check("kinetic_energy", "½(I₁ω₁′² + I₂ω₂′² + I₃ω₃′²)").correct);
+  // Read so, a wrong one is wrong, and the line says how the names were read.
+  const auto wrong = phy.check("L_primed", "(I1 ω₁', I1 ω₂', I1 ω₃')");
+  REQUIRE_FALSE(wrong.correct);
+  REQUIRE(wrong.feedback.back() == primes.substr(0, primes.find(": right")));
+  // The answer's own entries are no working for it; the line names what the steps write.
+  REQUIRE_THROWS_WITH(phy.check("omega_primed", "(ω₁′, ω₂′, ω₃′)"),
+                      Catch::Contains("the key's steps write ω1′ for ω's component along e₁′"));
+  REQUIRE_THROWS_WITH(phy.check("omega_primed", "(-α̇ sin β, β̇, ω₃)"),
+                      Catch::Contains("undefined symbol 'omega3'"));
+  // An unprimed ω₁ is no name of the steps': the line names the primed one.
+  REQUIRE_THROWS_WITH(taylor.check("L_primed", "(I1 ω₁, I1 ω₂, I3 ω₃)"),
+                      Catch::Contains("the key's steps write ω1′ for ω's component along e₁′"));
+  // Two primes are no name of the steps'; where the rest then does not read, the line quotes the
+  // text as typed, not the forms put in.
+  REQUIRE_THROWS_WITH(
+      phy.check("L_primed", "[I1 omega_1', I1 w'2, I3*w3'']"),
+      Catch::Contains("cannot read expression \"I3*w3''\"") && !Catch::Contains("gammadot"));
+  // A problem whose steps write no primed names keeps its refusal of a prime after a name.
+  const Fixture top("heavy-top");
+  REQUIRE_THROWS_AS(top.check("p_psi", "I3 ω₃′"), InputError);
+}
+
 TEST_CASE("a textbook formula's principal moment or ω component is named as such") {
   // (I3 - I1)/I1 ω3 is the general rate, before this body's moments are put in.
   const Fixture plate("flying-plate");
@@ -1634,15 +1684,18 @@ TEST_CASE("a textbook formula's principal moment or ω component is named as suc
   REQUIRE_THROWS_WITH(top.check("p_psi", "I4 psidot0"), !Catch::Contains("principal moment"));
   REQUIRE_THROWS_WITH(plate.check("I0", "M R^2/4"), !Catch::Contains("principal moment"));
   // The undefined name is what is wrong, not the stars a bracket against a symbol needs, nor a
-  // unit "+ omega3"; where the text runs I₃ and ω₃ together, the reader's name gets the hint.
+  // unit "+ omega1"; where the text runs I₃ and ω₁ together, the reader's name gets the hint
+  // (here the steps write ω₁′, and ω₃, which reads).
   const Fixture euler("euler-angles");
-  for (const char* text : {"½I₁(θ̇² + φ̇² sin²θ) + ½I₃ω₃²", "I1*(thetadot^2) + omega3"}) {
+  for (const char* text : {"½I₁(θ̇² + φ̇² sin²θ) + ½I₃ω₁²", "I1*(thetadot^2) + omega1"}) {
     INFO(text);
-    REQUIRE_THROWS_WITH(euler.check("kinetic_energy", text),
-                        Catch::Contains("undefined symbol 'omega3'") &&
-                            Catch::Contains("omega3, a component of ω along the body's axes") &&
-                            !Catch::Contains("not a function") && !Catch::Contains("unit"));
+    REQUIRE_THROWS_WITH(
+        euler.check("kinetic_energy", text),
+        Catch::Contains("undefined symbol 'omega1'") &&
+            Catch::Contains("omega1 is no symbol here; the key's steps write ω1′") &&
+            !Catch::Contains("not a function") && !Catch::Contains("unit"));
   }
+  REQUIRE(euler.check("kinetic_energy", "½I₁(θ̇² + φ̇² sin²θ) + ½I₃ω₃²").correct);
   REQUIRE(euler.check("kinetic_energy", "½I₁(θ̇² + φ̇² sin²θ) + ½I₃(ψ̇ + φ̇ cos θ)²").correct);
   REQUIRE_THROWS_WITH(plate.check("I0", "0.16 parsecs"),
                       Catch::Contains("cannot read the unit 'parsecs'"));

@@ -1,6 +1,7 @@
 // Students' answers: numbers with units, vectors, matrices and expressions, judged against a
 // number, a vector and a matrix of real keys; against a rotation and a vector of angles of the
-// PHY 711 problem, whose key names Taylor's φ, θ, ψ for its α, β, γ; against the heavy top's
+// PHY 711 problem, whose key names Taylor's φ, θ, ψ for its α, β, γ, and its L in the primed basis,
+// which reads the steps' primed ω₁′, ω₂′, ω₃′ (a prime after a name); against the heavy top's
 // p_phi, whose key reads I₁, I₃, ω₃ as its steps write them, and its theta_max, a bound, which
 // reads an inequality, a range or an interval; and against the flying plate's t_max, which reads
 // an earlier vector's magnitude (π/|Ω_space|); and against the cone's centre of mass, a length
@@ -35,7 +36,7 @@ struct Fixture {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const Fixture plate("flying-plate", {"I0", "I", "L0_body", "angle_L_e3", "t_max"});
-  static const Fixture phy711("euler-angles-phy711", {"R_phy711", "angles_phy711"});
+  static const Fixture phy711("euler-angles-phy711", {"R_phy711", "angles_phy711", "L_primed"});
   static const Fixture top("heavy-top", {"p_phi", "theta_max"});
   // A length whose symbol h spells a unit (hours): the symbol read where the unit's dimension
   // is wrong.
