@@ -26,6 +26,7 @@
 #include "check/plus_minus.hpp"
 #include "check/program_notation.hpp"
 #include "check/symbol_values.hpp"
+#include "check/unit_arithmetic.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/inertia.hpp"
@@ -908,6 +909,21 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
   return v;
 }
 
+// A number worked out with its units (unit_arithmetic.hpp) judged as the number it works out
+// to, and a line that says how it was read: "read with its units worked out: 2π rad/(303.6 days)
+// = 2.395e-07 rad/s".
+Verdict judged_worked_out(const Context& ctx, const Answer& a, const UnitsWorkedOut& worked,
+                          const Options& options) {
+  Verdict v = judge_one(ctx, a, worked.text, options);
+  const bool key_unit =
+      !a.unit.empty() && parse_unit(a.unit, "key unit of " + a.name).dim ==
+                             parse_unit(worked.unit.empty() ? "1" : worked.unit, kField).dim;
+  const std::string unit = key_unit ? a.unit : worked.unit;
+  v.feedback.push_back(fmt::format("read with its units worked out: {} = {:.4g}{}{}",
+                                   worked.grouped, worked.value_si, unit.empty() ? "" : " ", unit));
+  return v;
+}
+
 // judge_one for the whole answer or the value after a label: an answer in terms of an earlier
 // one, "I₀ diag(2, 2, 1)", "π/Ω_space_rate", is read with the key's closed form for it
 // (answer_referenced), and the feedback says so. Not for a side that may be a label or an
@@ -917,6 +933,10 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
   try {
     return judge_one(ctx, a, text, options);
   } catch (const InputError& e) {
+    if (a.value.shape == Value::Shape::scalar) {
+      if (const auto worked = units_worked_out(text, ctx.table, kField))
+        return judged_worked_out(ctx, a, *worked, options);
+    }
     std::optional<Referenced> referenced = primed_named(ctx, a, text);
     if (!referenced) referenced = convention_named(ctx, text, e.what());
     if (!referenced) referenced = defined_named(ctx, a, text, e.what());

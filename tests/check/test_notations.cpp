@@ -1701,6 +1701,53 @@ TEST_CASE("a textbook formula's principal moment or ω component is named as suc
                       Catch::Contains("cannot read the unit 'parsecs'"));
 }
 
+TEST_CASE("a number worked out with its units reads as the number it works out to") {
+  // Euler's rate from its period, as a student works it on paper: each unit its SI factor.
+  const Fixture earth("earth-free-precession");  // 2.395e-07 rad/s
+  for (const auto& [typed, line] : std::vector<std::pair<std::string, std::string>>{
+           {"2π/(303.6 d)", "2π/(303.6 day) = 2.395e-07 rad/s"},
+           {"2π rad / 303.6 days", "2π rad / (303.6 days) = 2.395e-07 rad/s"},
+           {"1 rev / 304.46 sidereal days", "1 rev / (304.46 sidereal days) = 2.395e-07 rad/s"},
+           {"2π rad/(303.6 × 86400 s)", "2π rad/(303.6 * 86400 s) = 2.395e-07 rad/s"},
+           {"Ω_body = 2π/(303.6 days)", "2π/(303.6 days) = 2.395e-07 rad/s"}}) {
+    INFO(typed);
+    const auto v = earth.check("Omega_body_rate", typed);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback.back() == "read with its units worked out: " + line);
+  }
+  // Juxtaposed after a '/', a product is all of the denominator; a bracket says otherwise, and
+  // "(2π rad/303.6) days" is a duration.
+  REQUIRE(earth.check("Omega_body_rate", "(2π rad/303.6) days").wrong_dimension);
+  // A wrong sign is said as for a number.
+  const auto sign = earth.check("Omega_body_rate", "-2π/(303.6 d)");
+  REQUIRE_FALSE(sign.correct);
+  REQUIRE_THAT(sign.feedback.front(), Catch::StartsWith("the size is right but not the sign"));
+  // The period from the rate: 2π over a rate in rad/s is seconds.
+  REQUIRE(earth.check("precession_period_body", "2π/(2.395e-7 rad/s)").correct);
+  // A moment times a spin, in grams and centimetres: p_ψ = ½ M R² ψ̇₀ = 0.09375 kg m²/s.
+  const Fixture top("heavy-top");
+  for (const char* typed : {"0.5 kg × (0.05 m)² / 2 × 150 rad/s", "(0.5 kg)(5 cm)²/2 × 150/s",
+                            "0.5 kg * (50 mm)^2 / 2 * 150 s^-1"}) {
+    INFO(typed);
+    REQUIRE(top.check("p_psi", typed).correct);
+  }
+  REQUIRE_FALSE(top.check("p_psi", "0.5 kg × (5 cm)² × 150/s").correct);  // twice it
+  // Unlike quantities added are refused, one line naming the text.
+  REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "2π/(303.6 d) + 1 s"),
+                      Catch::Contains("\"2π/(303.6 day) + 1 s\" does not work out to one unit"));
+  // A name that is a symbol of the problem is never a unit here (the heavy top's g): the
+  // reader's refusal stands.
+  REQUIRE_THROWS_WITH(top.check("p_psi", "0.5 g × (5 cm)² / 2 × 150/s"),
+                      !Catch::Contains("worked out") && !Catch::Contains("work out"));
+  // A long text is quoted a line's worth.
+  std::string seconds = "1 s";
+  for (int i = 0; i < 300; ++i) seconds += " + 1 s";
+  const auto many = earth.check("precession_period_body", seconds);
+  REQUIRE_FALSE(many.correct);
+  REQUIRE_THAT(many.feedback.back(), Catch::EndsWith("... = 301 s"));
+  REQUIRE(many.feedback.back().size() < 120);
+}
+
 TEST_CASE("a duration told in parts, 303 days 15 h, reads as their sum") {
   const Fixture earth("earth-free-precession");  // Euler's period, 303.62 days
   const double days = earth.answer("precession_period_body").value.data[0] / 86400;

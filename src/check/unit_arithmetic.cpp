@@ -1,0 +1,271 @@
+#include "check/unit_arithmetic.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include "check/answer_reading.hpp"
+#include "check/latex_answer.hpp"
+#include "check/typed_text.hpp"
+#include "check/written_forms.hpp"
+#include "core/characters.hpp"
+#include "core/input_error.hpp"
+#include "symbolic/expression_guard.hpp"
+#include "symbolic/units.hpp"
+
+namespace wobble::check {
+
+namespace {
+
+// A unit's stand-in in the text the reader reads: a name no problem or unit has.
+constexpr std::string_view kStandIn = "wobbleunitstandin";
+
+std::string stand_in(std::size_t k) { return fmt::format("{}{}", kStandIn, k); }
+
+// The largest power of a unit a worked-out answer may hold (kg m^2/s has 2): past it a text is
+// no quantity of this course, and 2^p stays exact in the test below.
+constexpr int kLargestPower = 12;
+
+bool operand_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.';
+}
+
+// Where the operand after a '/' at `slash` ends, and whether it is a product written by
+// juxtaposition ("303.6 day", not "(303.6 day)" nor "s^2"): at a '*', '/', ',' or a sign (not
+// an exponent's) at its own depth, or a bracket that closes one it is inside.
+std::pair<std::size_t, bool> denominator_end(const std::string& s, std::size_t slash) {
+  int depth = 0;
+  bool seen = false, gap = false, juxtaposed = false;
+  std::size_t k = slash + 1;
+  for (; k < s.size(); ++k) {
+    const char c = s[k];
+    if (c == '(' || c == '[') {
+      juxtaposed = juxtaposed || (depth == 0 && seen && gap);
+      ++depth;
+      continue;
+    }
+    if (c == ')' || c == ']') {
+      if (depth == 0) break;
+      if (--depth == 0) seen = true, gap = false;
+      continue;
+    }
+    if (depth > 0) continue;
+    if (c == ' ') {
+      gap = seen;
+      continue;
+    }
+    if (c == '*' || c == '/' || c == ',') break;
+    if (c == '^') {  // an exponent and its sign: "s^-1"
+      if (k + 1 < s.size() && (s[k + 1] == '-' || s[k + 1] == '+')) ++k;
+      gap = false;
+      continue;
+    }
+    const bool exponent_sign =
+        k > 1 && (s[k - 1] == 'e' || s[k - 1] == 'E') && std::isdigit(static_cast<unsigned char>(s[k - 2]));
+    if ((c == '+' || c == '-') && !(exponent_sign || !seen)) break;
+    juxtaposed = juxtaposed || (seen && gap);
+    seen = true;
+    gap = false;
+  }
+  return {k, juxtaposed};
+}
+
+// "2 pi u0 / 303.6 u1" -> "2 pi u0 / (303.6 u1)": a product written by juxtaposition after a
+// '/' is all of the denominator, as "J/kg K" is J/(kg K).
+std::string denominators_grouped(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    out += s[i];
+    if (s[i] != '/') continue;
+    const auto [end, juxtaposed] = denominator_end(s, i);
+    const std::string operand = s.substr(i + 1, end - i - 1);
+    if (juxtaposed) {
+      const std::size_t first = operand.find_first_not_of(' ');
+      const std::size_t last = operand.find_last_not_of(' ');
+      out += operand.substr(0, first) + "(" + operand.substr(first, last - first + 1) + ")";
+      if (last + 1 < operand.size()) out += ' ';
+    } else {
+      out += operand;
+    }
+    i = end - 1;
+  }
+  return out;
+}
+
+// The text with each unit's name written as its stand-in, and the units in order; nullopt where
+// a name is a symbol of the problem or no unit, or there is no unit. π and functions stay.
+struct StandIns {
+  std::string text;
+  std::vector<Unit> units;
+  std::vector<std::string> typed;
+};
+std::optional<StandIns> units_stood_in(const std::string& ascii, const sym::SymbolTable& table,
+                                       const std::string& field) {
+  StandIns out;
+  std::size_t from = 0;
+  const auto ids = identifiers(ascii);
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const auto [at, length] = ids[k];
+    std::size_t end = at + length;
+    std::string word = ascii.substr(at, length);
+    if (word == "pi" || sym::is_function_name(word)) continue;
+    if (table.contains(word) || word.starts_with(kStandIn)) return std::nullopt;
+    // "sidereal days": one unit of two words.
+    if (word == "sidereal" && k + 1 < ids.size()) {
+      const auto [next, next_length] = ids[k + 1];
+      const std::string day = ascii.substr(next, next_length);
+      if ((day == "day" || day == "days") &&
+          ascii.find_first_not_of(' ', end) == next) {
+        end = next + next_length;
+        word = ascii.substr(at, end - at);
+        ++k;
+      }
+    }
+    if (!is_unit(word)) return std::nullopt;
+    // "14 deg 59 arcmin", "15 h 303 days": a quantity told in parts, no product; the reader
+    // says what is wrong with it.
+    if (const std::size_t next = ascii.find_first_not_of(' ', end);
+        next != std::string::npos && next > end &&
+        (std::isdigit(static_cast<unsigned char>(ascii[next])) || ascii[next] == '.'))
+      return std::nullopt;
+    out.units.push_back(parse_unit(word, field));
+    out.typed.push_back(word);
+    out.text += ascii.substr(from, at - from);
+    // Apart from a number glued before it or a name after it: "0.05m" is 0.05 times a metre.
+    if (at > 0 && operand_char(ascii[at - 1])) out.text += ' ';
+    out.text += stand_in(out.units.size() - 1);
+    if (end < ascii.size() && operand_char(ascii[end])) out.text += ' ';
+    from = end;
+  }
+  if (out.units.empty()) return std::nullopt;
+  out.text += ascii.substr(from);
+  return out;
+}
+
+// The SI unit of powers of kg, m and s: "kg m^2 s^-1", "" for none.
+std::string si_unit(const std::array<int, 3>& dim) {
+  constexpr std::array<const char*, 3> kNames{"kg", "m", "s"};
+  std::string out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (dim[i] == 0) continue;
+    out += (out.empty() ? "" : " ") + std::string(kNames[i]);
+    if (dim[i] != 1) out += fmt::format("^{}", dim[i]);
+  }
+  return out;
+}
+
+// The grouped text as typed, its units' names back: "2 π rad /(303.6 days)".
+std::string shown(const std::string& grouped, const StandIns& s) {
+  std::string out = grouped;
+  for (std::size_t k = s.typed.size(); k-- > 0;) {
+    const std::string name = stand_in(k);
+    for (std::size_t at = out.find(name); at != std::string::npos; at = out.find(name, at))
+      out.replace(at, name.size(), s.typed[k]);
+  }
+  std::string with_pi;
+  const auto ids = identifiers(out);
+  std::size_t from = 0;
+  for (const auto& [at, length] : ids) {
+    if (out.compare(at, length, "pi") != 0 || length != 2) continue;
+    std::string before = out.substr(from, at - from);
+    // "2 pi" as the reader sets it apart: 2π as typed.
+    if (before.size() >= 2 && before.back() == ' ' &&
+        std::isdigit(static_cast<unsigned char>(before[before.size() - 2])))
+      before.pop_back();
+    with_pi += before + "π";
+    from = at + length;
+  }
+  return with_pi + out.substr(from);
+}
+
+}  // namespace
+
+std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
+                                               const sym::SymbolTable& table,
+                                               const std::string& field) {
+  if (looks_like_latex(typed)) return std::nullopt;
+  std::string ascii;
+  try {
+    ascii = days_written_d(prepared(typed, field),
+                           [&](const std::string& name) { return table.contains(name); });
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  const std::optional<StandIns> stood = units_stood_in(ascii, table, field);
+  if (!stood) return std::nullopt;
+  const std::string grouped = denominators_grouped(stood->text);
+  sym::SymbolTable with_units = table;
+  std::vector<GiNaC::ex> symbols;
+  for (std::size_t k = 0; k < stood->units.size(); ++k)
+    symbols.push_back(with_units.declare(stand_in(k), stand_in(k), sym::SymbolSign::positive));
+  GiNaC::ex e;
+  try {
+    const ReadAnswer read = read_answer(grouped, with_units, field);
+    if (read.unit || read.value.is_vector || read.value.is_matrix) return std::nullopt;
+    e = read.value.entries.at(0);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  // Each unit its SI factor times powers of a mass, a length, a time and an angle (M, L, T, A:
+  // a unit's name that counts an angle, rad, deg, rev, Hz, rpm, holds it once); the powers of
+  // the whole read off from its values at 1, 2 and 3 along each.
+  const std::array<GiNaC::symbol, 4> axes{GiNaC::symbol("M"), GiNaC::symbol("L"),
+                                          GiNaC::symbol("T"), GiNaC::symbol("A")};
+  GiNaC::lst dimensioned;
+  for (std::size_t k = 0; k < stood->units.size(); ++k) {
+    const Unit& u = stood->units[k];
+    GiNaC::ex with_dimension = table.parse(u.to_si_exact, field);
+    for (std::size_t i = 0; i < 3; ++i) with_dimension *= GiNaC::pow(axes[i], u.dim[i]);
+    if (u.angle) with_dimension *= axes[3];
+    dimensioned.append(symbols[k] == with_dimension);
+  }
+  const GiNaC::ex whole = e.subs(dimensioned);
+  const auto at = [&](std::size_t axis, int x) -> std::optional<double> {
+    GiNaC::lst point;
+    for (std::size_t i = 0; i < axes.size(); ++i) point.append(axes[i] == (i == axis ? x : 1));
+    const GiNaC::ex v = whole.subs(point).evalf();
+    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
+      return std::nullopt;
+    const double d = GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+    return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
+  };
+  const std::optional<double> value = at(0, 1);
+  if (!value || *value == 0) return std::nullopt;
+  // A line's worth: a long text is quoted in part.
+  constexpr std::size_t kShownCharacters = 60;
+  const std::string as_read = printable(shown(grouped, *stood), kShownCharacters);
+  std::array<int, 4> power{};
+  for (std::size_t axis = 0; axis < axes.size(); ++axis) {
+    const std::optional<double> twice = at(axis, 2), thrice = at(axis, 3);
+    if (!twice || !thrice) return std::nullopt;
+    const double p = std::log2(*twice / *value);
+    const long whole_power = std::lround(p);
+    // A like sum scales as one power does, at 2 and at 3 alike; a sum of unlike ones does not.
+    constexpr double kSameScaling = 1e-9;
+    const double cubed = std::pow(3.0, static_cast<double>(whole_power));
+    const bool one_power = std::abs(p - static_cast<double>(whole_power)) < kSameScaling &&
+                           std::abs(*thrice / *value - cubed) < kSameScaling * cubed;
+    if (!one_power) {
+      throw InputError(fmt::format(
+          "{}: \"{}\" does not work out to one unit: it adds unlike quantities, or takes a "
+          "root of a unit",
+          field, as_read));
+    }
+    if (std::abs(whole_power) > kLargestPower) return std::nullopt;
+    power[axis] = static_cast<int>(whole_power);
+  }
+  UnitsWorkedOut out;
+  out.grouped = as_read;
+  out.unit = si_unit({power[0], power[1], power[2]});
+  // An angle stays one where nothing else is left (radians are pure numbers otherwise).
+  if (out.unit.empty() && power[3] != 0) out.unit = "rad";
+  out.value_si = *value;
+  out.text = fmt::format("{:.17g}{}{}", *value, out.unit.empty() ? "" : " ", out.unit);
+  return out;
+}
+
+}  // namespace wobble::check

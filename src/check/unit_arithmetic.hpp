@@ -1,0 +1,40 @@
+#pragma once
+/// @file
+/// A number worked out with its units, as on paper: "0.5 kg × (0.05 m)²/2", "2π/(303.6 d)",
+/// "1 rev / 304.46 sidereal days", "2π rad/(303.6 × 86400 s)". The reader takes one unit after
+/// the value; here each unit inside the arithmetic is its SI factor (exactly, through
+/// Unit::to_si_exact) and its dimension, and the whole is the number it works out to in the SI
+/// unit of its one dimension.
+///
+/// Conventions, as units are written by hand:
+/// - A product written by juxtaposition after a '/' is all of the denominator: "2π rad / 303.6
+///   days" is 2π rad per 303.6 days (as "J/kg K" is J/(kg K)); a '*' or '×' ends it.
+/// - Only a text every name of which is a unit, π or a function: a name that is a symbol of the
+///   problem ("0.05 m" where m is a mass) or no unit leaves the text to the reader's refusal,
+///   as does a unit with a number after it ("15 h 303 days": a quantity told in parts). d
+///   after a number is the day where the problem has no symbol d (written_forms.hpp).
+/// - An angle left over in a pure number keeps it an angle (rad), as unit_fits requires: "15°
+///   × 2" is an angle, "(2 rad/s)/(4 rad/s)" a ratio.
+/// - Plain text only; a vector or matrix is left to the reader (a unit after each entry reads).
+#include <optional>
+#include <string>
+
+#include "symbolic/expression.hpp"
+
+namespace wobble::check {
+
+struct UnitsWorkedOut {
+  std::string text;     ///< for the reader: "2.3952979e-07 1/s" (the value to 17 digits)
+  std::string grouped;  ///< as read, for the line: "2π rad / (303.6 days)" (a line's worth)
+  std::string unit;     ///< the SI unit it works out in: "1/s", "kg m^2", "" (a pure number)
+  double value_si = 0;
+};
+
+/// `typed` worked out with its units as above; nullopt where it has no unit inside arithmetic
+/// or is not read so.
+/// @throws InputError naming `field` where it adds or subtracts unlike dimensions ("2 m + 3 s").
+std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
+                                               const sym::SymbolTable& table,
+                                               const std::string& field);
+
+}  // namespace wobble::check
