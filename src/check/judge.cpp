@@ -1001,10 +1001,13 @@ std::string label_reason(const Context& ctx, const Answer& a, const std::string&
                          const std::string& message, const Options& options) {
   if (const std::string name = undefined_name(message); !name.empty()) {
     // "T/2 = 1.91 s" for the racket's flip, where the steps write T for the energy: say so.
-    if (const std::string named = name_in_key(ctx.key, name); named != name) {
-      if (const PartKey* holds = part_answering(ctx.key, named))
-        return fmt::format("{} is {} here, the key's answer to part ({})", sym::to_unicode(name),
-                           named, holds->id);
+    // "4K(k)/λ = 7.6 s" for the flip, k being part (c)'s answer: an answer is no symbol.
+    const std::string named = name_in_key(ctx.key, name);
+    if (const PartKey* holds = part_answering(ctx.key, named)) {
+      return named != name ? fmt::format("{} is {} here, the key's answer to part ({})",
+                                         sym::to_unicode(name), named, holds->id)
+                           : fmt::format("{} is the key's answer to part ({}), no symbol",
+                                         sym::to_unicode(name), holds->id);
     }
     return name + " is no symbol here";
   }

@@ -1092,7 +1092,8 @@ TEST_CASE("where a number is asked for, a bare k is a name of the student's own,
     REQUIRE(v.correct);
     REQUIRE(v.feedback == std::vector<std::string>{"the side \"" + label +
                                                    "\" of your '=' is taken as a label, not "
-                                                   "judged: k is no symbol here"});
+                                                   "judged: k is the key's answer to part (c), "
+                                                   "no symbol"});
   }
   // 1 − k², in the same part's k, is a side: judged with the key's k, and said so (by name: its
   // form is longer than a line).
@@ -1114,12 +1115,13 @@ TEST_CASE("where a number is asked for, a bare k is a name of the student's own,
   REQUIRE(labelled.feedback.size() == 2);
   REQUIRE_THAT(labelled.feedback.front(), Catch::StartsWith("read with λ = √("));
   REQUIRE_THAT(labelled.feedback.back(), Catch::StartsWith("read with k as the key's answer"));
-  // Wrong, that side is a label, not judged: k is no symbol.
+  // Wrong, that side is a label, not judged: k is an answer, no symbol, and the line says
+  // whose.
   const auto wrong_side = top.check("period", "T = 2K(k)/λ = " + period);
   REQUIRE(wrong_side.correct);
   REQUIRE(wrong_side.feedback ==
           std::vector<std::string>{"the side \"2K(k)/λ\" of your '=' is taken as a label, not "
-                                   "judged: k is no symbol here"});
+                                   "judged: k is the key's answer to part (c), no symbol"});
   // K(k) as books write the complete elliptic integral of the first kind (of the modulus, as the
   // key's EllipticK): glued to its factor or not, in LaTeX, and in the problem's symbols.
   const double lambda = 4 * std::comp_ellint_1(top.answer("k").value.data.at(0)) /
