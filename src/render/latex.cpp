@@ -137,6 +137,15 @@ std::string display(const std::string& latex) {
   }
   return "\\fitor{" + whole + "}{" + entries + "}";
 }
+
+// A step's formula: after its label, a display; without one, beside the step's number as a
+// line of text would stand (not centred on the number's line), and a vector or matrix, a
+// display of its own, on the line below the number.
+std::string step_display(const std::string& latex, bool unlabelled) {
+  if (!unlabelled) return display(latex);
+  if (split_matrix(latex)) return "\\leavevmode" + display(latex);
+  return "\\fitbeside{" + latex + "}";
+}
 }  // namespace
 
 std::string detail::matrix_fractions_displayed(const std::string& latex) {
@@ -195,6 +204,10 @@ std::string render_latex(const Key& key) {
       "\\def\\right##1{\\ifx##1.\\else\\mathclose{##1}\\fi}$\\displaystyle #1$\\end{flushleft}%\n"
       "\\else\\begin{center}\\resizebox{\\linewidth}{!}{\\usebox{\\fitbox}}\\end{center}\\fi\n"
       "\\else\\begin{center}\\usebox{\\fitbox}\\end{center}\\fi}\n"
+      "% \\fitbeside{math}: a formula where the text stands (beside a step's number) where it\n"
+      "% fits the line, else as \\fit.\n"
+      "\\newcommand{\\fitbeside}[1]{\\sbox{\\fitbox}{$\\displaystyle #1$}%\n"
+      "\\ifdim\\wd\\fitbox>\\linewidth\\fit{#1}\\else\\usebox{\\fitbox}\\fi}\n"
       "% \\fitor{whole}{entries}: a vector or matrix whole if it fits at 70% or more, else entry\n"
       "% by entry.\n"
       "\\newcommand{\\fitor}[2]{\\sbox{\\fitbox}{$\\displaystyle #1$}%\n"
@@ -235,7 +248,7 @@ std::string render_latex(const Key& key) {
         const std::string& prose = s.latex.empty() ? s.text : s.label;
         // Step prose is written for a terminal (sqrt, names): as the text key shows it.
         out += "\\item " + latex_text(detail::pretty(prose), names);
-        if (!s.latex.empty()) out += display(s.latex);
+        if (!s.latex.empty()) out += step_display(s.latex, prose.empty());
         out += "\n";
       }
       out += "\\end{enumerate}\n";

@@ -116,6 +116,28 @@ void add_point_masses(const Problem& problem, const Evaluator& ev, InertiaBody& 
        "Each mass contributes to the tensor:"});
 }
 
+// How a shape lies in its frame, as the step's label says it (shapes.hpp's table): "edges along
+// x, y, z" for a box, "axis along z" for a cone; "" for a ball, which lies any way.
+std::string placement_words(ShapeKind kind) {
+  switch (kind) {
+    case ShapeKind::box:
+      return " with its edges along x, y, z";
+    case ShapeKind::plate:
+      return " with its edges along x and y";
+    case ShapeKind::rod:
+      return " along z";
+    case ShapeKind::disc:
+    case ShapeKind::cylinder:
+    case ShapeKind::cone:
+    case ShapeKind::ring:
+      return " with its axis along z";
+    case ShapeKind::sphere:
+    case ShapeKind::shell:
+      return "";
+  }
+  return "";
+}
+
 void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
                 std::vector<sym::SymMassProperties>& exact_parts,
                 std::vector<MassProperties>& numeric_parts) {
@@ -153,12 +175,17 @@ void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
     numeric.I_O = shift_from_cm(shape_inertia_about_cm(kind, m_kg, sizes_m), m_kg, c);
     numeric_parts.push_back(numeric);
 
-    std::string size_text;  // "sides a, b, c" or "sides a = 2*L, b = L, c = L"
-    std::string size_latex = "M = " + sym::to_latex(m, t);
+    // "sides a, b, c" or "sides a = 2*L, b = L, c = L": a size the problem names as the shape
+    // does is not written again ("M = M" said nothing).
+    std::string size_text;
+    const auto named = [&](const std::string& name, const GiNaC::ex& value) {
+      return sym::to_text(value, t) == name ? name : name + " = " + sym::to_latex(value, t);
+    };
+    std::string size_latex = named("M", m);
     for (std::size_t k = 0; k < sizes.size(); ++k) {
       const std::string value = sym::to_text(sizes[k], t);
       size_text += (k ? ", " : "") + size_names[k] + (value == size_names[k] ? "" : " = " + value);
-      size_latex += ",\\quad " + size_names[k] + " = " + sym::to_latex(sizes[k], t);
+      size_latex += ",\\quad " + named(size_names[k], sizes[k]);
     }
     size_latex += ",\\quad \\text{centre } " + vec_latex(c_exact, t);
     body.steps.push_back(
@@ -166,9 +193,9 @@ void add_shapes(const Problem& problem, const Evaluator& ev, InertiaBody& body,
                      "y, z. Second moments S_ii = ∫ x_i² dm about its centre:",
                      s.shape, sym::to_text(m, t), size_text, vec_text(c_exact, t)),
          size_latex,
-         fmt::format("A uniform {} with its edges or axis along x, y, z; its mass, sizes and "
-                     "centre (the second moments S_ii = ∫ x_i² dm about the centre follow):",
-                     s.shape)});
+         fmt::format("A uniform {}{}; its mass, sizes and centre (the second moments S_ii = "
+                     "∫ x_i² dm about the centre follow):",
+                     s.shape, placement_words(kind))});
     for (const auto& st : derivation.steps) body.steps.push_back({st.text, st.latex});
     const GiNaC::matrix Ic = sym::normalized(derivation.I_cm);
     body.steps.push_back({"About its centre: I_cm = diag(" + sym::to_text(Ic(0, 0), t) + ", " +

@@ -195,6 +195,37 @@ TEST_CASE("an answer's name on a LaTeX key is the symbol books write for it") {
                         Catch::Contains("$\\dot{\\omega}(0)$\\quad{\\small\\texttt{dw\\_dt0}}"));
 }
 
+TEST_CASE("a LaTeX key's step without a label has its formula beside its number") {
+  // A centred display right after \item sets the number in the middle of the line, beside the
+  // formula: no step of the catalog's keys starts so.
+  for (const auto& problem : load_catalog()) {
+    INFO(problem.id);
+    const std::string tex = render_latex(solve(problem, parameter_values(problem, {})));
+    REQUIRE_THAT(tex, !Catch::Contains("\\item \\fit{") && !Catch::Contains("\\item \\fitor{"));
+  }
+  const Problem box = find_problem("box-corner");
+  Key key = solve(box, parameter_values(box, {}));
+  REQUIRE_THAT(render_latex(key),
+               Catch::Contains("\\item \\fitbeside{I = \\operatorname{tr}(S)\\,\\mathbf{1} - S}"));
+  // A vector or matrix is a display of its own, on the line below its number.
+  key.parts.front().steps.push_back(
+      Step{"R = [[1, 0], [0, 1]]", "R = \\begin{pmatrix} 1 & 0 \\\\ 0 & 1 \\end{pmatrix}", ""});
+  REQUIRE_THAT(render_latex(key), Catch::Contains("\\item \\leavevmode\\fitor{R = "));
+}
+
+TEST_CASE("a shape's step names its size as the problem does, not twice") {
+  // "M = M, a = a" said nothing where the problem's names are the shape's: a name alone, and
+  // "= value" where they differ (the square plate's b = a).
+  const Problem box = find_problem("box-corner"), square = find_problem("flying-square-plate");
+  const Key box_key = solve(box, parameter_values(box, {}));
+  const Key square_key = solve(square, parameter_values(square, {}));
+  REQUIRE(box_key.parts.front().steps.front().latex.rfind("M,\\quad a,\\quad b,\\quad c,", 0) == 0);
+  REQUIRE(square_key.parts.front().steps.front().latex.rfind("M = m,\\quad a,\\quad b = a,", 0) ==
+          0);
+  REQUIRE_THAT(box_key.parts.front().steps.front().label,
+               Catch::StartsWith("A uniform box with its edges along x, y, z;"));
+}
+
 namespace {
 // The text of a LaTeX page outside math ($..$, \fit{..}, \fitor{..}{..}) and typewriter type.
 std::string latex_prose(const std::string& tex) {
@@ -216,7 +247,8 @@ std::string latex_prose(const std::string& tex) {
     if (tex[i] == '$') {
       const auto close = tex.find('$', i + 1);
       i = close == std::string::npos ? tex.size() : close + 1;
-    } else if (tex.compare(i, 5, "\\fit{") == 0 || tex.compare(i, 8, "\\texttt{") == 0 ||
+    } else if (tex.compare(i, 5, "\\fit{") == 0 || tex.compare(i, 11, "\\fitbeside{") == 0 ||
+               tex.compare(i, 8, "\\texttt{") == 0 ||
                tex.compare(i, 16, "\\includegraphics") == 0) {
       i = skip_group(tex.find('{', i));
     } else if (tex.compare(i, 7, "\\fitor{") == 0) {
