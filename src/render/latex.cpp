@@ -234,7 +234,7 @@ std::string render_latex(const Key& key) {
     out += fmt::format("\n\\subsection*{{({}) {}}}\n", part.id, statement_latex(part.question));
     for (const auto& a : part.answers) {
       // The name as a symbol where it reads as one, with the name `check --name` takes.
-      const auto symbol = detail::name_latex(a.name);
+      const auto symbol = detail::answer_symbol_latex(a.name);
       out += "\\noindent" + (symbol ? "$" + *symbol + "$\\quad" : std::string()) +
              "{\\small\\texttt{" + texttt_escaped(a.name) + "}}:\n";
       if (!a.symbolic.empty()) out += display(a.latex) + "\n";

@@ -81,6 +81,20 @@ std::optional<std::string> name_latex(const std::string& name) {
   return base + "_{" + (digits.empty() ? "" : digits + ",") + subscript + "}";
 }
 
+std::optional<std::string> answer_symbol_latex(const std::string& name) {
+  if (name.find('_') != std::string::npos) return name_latex(name);
+  // "I0", "omega3", "k": a letter and at most one digit of index. A trailing 2 is a square
+  // ("k2" for k², as the catalog names it), which a subscript would misread.
+  std::string stem = name, index;
+  if (!stem.empty() && std::isdigit(static_cast<unsigned char>(stem.back()))) {
+    index = stem.substr(stem.size() - 1);
+    stem.pop_back();
+  }
+  const auto letter = name_latex_letter(stem);
+  if (!letter || index == "2") return std::nullopt;
+  return index.empty() ? *letter : *letter + "_" + index;
+}
+
 namespace {
 // The Greek letter at i, as its name ("φ" -> "phi"), or "".
 std::string greek_name_at(const std::string& s, std::size_t i) {

@@ -24,6 +24,11 @@ namespace wobble::detail {
 /// for a name that is words ("principal_axes", "max_angle").
 std::optional<std::string> name_latex(const std::string& name);
 
+/// An answer's name as the symbol a LaTeX key heads it with: name_latex's, and for a name
+/// without an underscore a letter and its index ("I0" -> "I_0", "omega3" -> "\omega_3", "I",
+/// "k"); nullopt for words and for a square's name ("k2", k²).
+std::optional<std::string> answer_symbol_latex(const std::string& name);
+
 /// The names a key's prose uses, for setting it as its formulas are: the parameters' LaTeX by
 /// name ("w1" -> "\omega_1", "alpha" -> "\alpha"), and the answers' names (a prose word that is
 /// one and reads as no symbol is the name `check --name` takes: shown as typed).

@@ -189,6 +189,20 @@ TEST_CASE("an answer's name on a LaTeX key is the symbol books write for it") {
     INFO(name);
     REQUIRE(detail::name_latex(name) == latex);
   }
+  // A heading's symbol: also a letter and its index, not a square's name (k2 is k²).
+  for (const auto& [name, latex] : std::vector<std::pair<std::string, std::optional<std::string>>>{
+           {"I0", "I_0"},
+           {"omega3", "\\omega_3"},
+           {"I", "I"},
+           {"k", "k"},
+           {"k2", std::nullopt},
+           {"kc2", std::nullopt},
+           {"energy", std::nullopt},
+           {"lagrangian0", std::nullopt},
+           {"Omega_body", "\\Omega_{\\mathrm{body}}"}}) {
+    INFO(name);
+    REQUIRE(detail::answer_symbol_latex(name) == latex);
+  }
   const Problem racket = find_problem("tennis-racket");
   const std::string tex = render_latex(solve(racket, parameter_values(racket, {})));
   REQUIRE_THAT(tex, Catch::Contains("$\\lvert L\\rvert$\\quad{\\small\\texttt{L\\_magnitude}}") &&

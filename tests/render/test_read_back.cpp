@@ -674,7 +674,8 @@ std::vector<std::string> latex_forms(const Answer& a) {
     texts.push_back(shown);
   if (!a.symbolic.empty()) {
     texts.push_back("$$\n" + a.latex + " = " + value + "\n$$");
-    if (const auto name = detail::name_latex(a.name)) texts.push_back(*name + " = " + a.latex);
+    if (const auto name = detail::answer_symbol_latex(a.name))
+      texts.push_back(*name + " = " + a.latex);
   }
   return texts;
 }
