@@ -252,7 +252,7 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
     if (!one_power) {
       throw InputError(fmt::format(
           "{}: \"{}\" does not work out to one unit: it adds unlike quantities, or takes a "
-          "root of a unit",
+          "root of a unit or a function of one",
           field, as_read));
     }
     if (std::abs(whole_power) > kLargestPower) return std::nullopt;

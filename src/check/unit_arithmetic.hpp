@@ -32,7 +32,8 @@ struct UnitsWorkedOut {
 
 /// `typed` worked out with its units as above; nullopt where it has no unit inside arithmetic
 /// or is not read so.
-/// @throws InputError naming `field` where it adds or subtracts unlike dimensions ("2 m + 3 s").
+/// @throws InputError naming `field` where it adds or subtracts unlike dimensions ("2 m + 3 s"),
+///   takes a unit's root ("(1 m)^(1/3)") or a function of one ("exp(1 m)").
 std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
                                                const sym::SymbolTable& table,
                                                const std::string& field);

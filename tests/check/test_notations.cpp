@@ -1737,6 +1737,8 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
   // Unlike quantities added are refused, one line naming the text.
   REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "2π/(303.6 d) + 1 s"),
                       Catch::Contains("\"2π/(303.6 day) + 1 s\" does not work out to one unit"));
+  REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "exp(1 m)/1 s"),
+                      Catch::Contains("a function of one"));
   // A name that is a symbol of the problem is never a unit here (the heavy top's g): the
   // reader's refusal stands.
   REQUIRE_THROWS_WITH(top.check("p_psi", "0.5 g × (5 cm)² / 2 × 150/s"),
