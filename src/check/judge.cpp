@@ -909,18 +909,34 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
   return v;
 }
 
-// A number worked out with its units (unit_arithmetic.hpp) judged as the number it works out
-// to, and a line that says how it was read: "read with its units worked out: 2π rad/(303.6 days)
-// = 2.395e-07 rad/s".
-Verdict judged_worked_out(const Context& ctx, const Answer& a, const UnitsWorkedOut& worked,
-                          const Options& options) {
-  Verdict v = judge_one(ctx, a, worked.text, options);
-  const bool key_unit =
-      !a.unit.empty() && parse_unit(a.unit, "key unit of " + a.name).dim ==
-                             parse_unit(worked.unit.empty() ? "1" : worked.unit, kField).dim;
-  const std::string unit = key_unit ? a.unit : worked.unit;
-  v.feedback.push_back(fmt::format("read with its units worked out: {} = {:.4g}{}{}",
-                                   worked.grouped, worked.value_si, unit.empty() ? "" : " ", unit));
+// How a number worked out with its units was read, for its line: "2π rad / (303.6 days) =
+// 2.395e-07 rad/s".
+std::string worked_out_line(const UnitsWorkedOut& worked) {
+  return fmt::format("{} = {:.4g}{}{}", worked.grouped, worked.value_si,
+                     worked.unit.empty() ? "" : " ", worked.unit);
+}
+
+// A number, or a vector's entries, worked out with its units (unit_arithmetic.hpp) judged as
+// the numbers they work out to, with a line that says how they were read; nullopt where the
+// text has no unit inside arithmetic.
+std::optional<Verdict> judged_worked_out(const Context& ctx, const Answer& a,
+                                         const std::string& text, const Options& options) {
+  if (a.value.shape == Value::Shape::scalar) {
+    const auto worked = units_worked_out(text, ctx.table, kField, a.unit);
+    if (!worked) return std::nullopt;
+    Verdict v = judge_one(ctx, a, worked->text, options);
+    v.feedback.push_back("read with its units worked out: " + worked_out_line(*worked));
+    return v;
+  }
+  if (a.value.shape != Value::Shape::vector) return std::nullopt;
+  const auto worked = entries_worked_out(text, ctx.table, kField, a.unit);
+  if (!worked) return std::nullopt;
+  Verdict v = judge_one(ctx, a, worked->text, options);
+  std::vector<std::string> lines;
+  for (const auto& [i, entry] : worked->worked)
+    lines.push_back(fmt::format("entry {}: {}", i + 1, worked_out_line(entry)));
+  v.feedback.push_back("read with its units worked out, " +
+                       fmt::format("{}", fmt::join(lines, "; ")));
   return v;
 }
 
@@ -933,10 +949,7 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
   try {
     return judge_one(ctx, a, text, options);
   } catch (const InputError& e) {
-    if (a.value.shape == Value::Shape::scalar) {
-      if (const auto worked = units_worked_out(text, ctx.table, kField))
-        return judged_worked_out(ctx, a, *worked, options);
-    }
+    if (auto worked = judged_worked_out(ctx, a, text, options)) return std::move(*worked);
     std::optional<Referenced> referenced = primed_named(ctx, a, text);
     if (!referenced) referenced = convention_named(ctx, text, e.what());
     if (!referenced) referenced = defined_named(ctx, a, text, e.what());

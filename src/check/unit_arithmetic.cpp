@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "check/answer_reading.hpp"
+#include "check/brackets.hpp"
 #include "check/latex_answer.hpp"
 #include "check/typed_text.hpp"
 #include "check/written_forms.hpp"
@@ -186,11 +187,17 @@ std::string shown(const std::string& grouped, const StandIns& s) {
 
 std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
                                                const sym::SymbolTable& table,
-                                               const std::string& field) {
+                                               const std::string& field,
+                                               const std::string& key_unit) {
   if (looks_like_latex(typed)) return std::nullopt;
   std::string ascii;
   try {
-    ascii = days_written_d(prepared(typed, field),
+    // "sin 30°", "cos(1 deg)": degrees in a function's argument as radians first, as the
+    // reader reads them; d after a number as the day.
+    const auto in_expression = [&](const std::string& name) {
+      return (table.contains(name) || sym::is_function_name(name)) && !table.contains("deg");
+    };
+    ascii = days_written_d(degrees_in_expression(prepared(typed, field), in_expression),
                            [&](const std::string& name) { return table.contains(name); });
   } catch (const InputError&) {
     return std::nullopt;
@@ -249,6 +256,9 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
     const double cubed = std::pow(3.0, static_cast<double>(whole_power));
     const bool one_power = std::abs(p - static_cast<double>(whole_power)) < kSameScaling &&
                            std::abs(*thrice / *value - cubed) < kSameScaling * cubed;
+    // An angle is a pure number: "cos(0.5 rad)" is no angle, and no refusal.
+    constexpr std::size_t kAngle = 3;
+    if (!one_power && axis == kAngle) continue;
     if (!one_power) {
       throw InputError(fmt::format(
           "{}: \"{}\" does not work out to one unit: it adds unlike quantities, or takes a "
@@ -263,8 +273,44 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
   out.unit = si_unit({power[0], power[1], power[2]});
   // An angle stays one where nothing else is left (radians are pure numbers otherwise).
   if (out.unit.empty() && power[3] != 0) out.unit = "rad";
+  // In the key's SI unit where it is of this dimension: rad/s as the key writes 1/s.
+  if (!key_unit.empty()) {
+    const Unit key = parse_unit(key_unit, "key unit");
+    if (key.to_si == 1.0 && key.dim == std::array<int, 3>{power[0], power[1], power[2]} &&
+        (power[3] == 0 || key.angle))
+      out.unit = key_unit;
+  }
   out.value_si = *value;
   out.text = fmt::format("{:.17g}{}{}", *value, out.unit.empty() ? "" : " ", out.unit);
+  return out;
+}
+
+std::optional<EntriesWorkedOut> entries_worked_out(const std::string& typed,
+                                                   const sym::SymbolTable& table,
+                                                   const std::string& field,
+                                                   const std::string& key_unit) {
+  if (looks_like_latex(typed)) return std::nullopt;
+  const ListItems list = list_items(trim(typed));
+  if (!list.bracketed || list.items.size() < 2) return std::nullopt;
+  EntriesWorkedOut out;
+  std::vector<std::string> entries;
+  for (std::size_t i = 0; i < list.items.size(); ++i) {
+    const std::string& entry = list.items[i];
+    const std::string entry_field = fmt::format("{}[{}]", field, i);
+    // An entry that reads as it is ("0.5 rad/s", "0") stays as typed.
+    bool reads = true;
+    try {
+      (void)read_answer(entry, table, entry_field);
+    } catch (const InputError&) {
+      reads = false;
+    }
+    const auto worked =
+        reads ? std::nullopt : units_worked_out(entry, table, entry_field, key_unit);
+    entries.push_back(worked ? worked->text : entry);
+    if (worked) out.worked.emplace_back(i, *worked);
+  }
+  if (out.worked.empty()) return std::nullopt;
+  out.text = fmt::format("({})", fmt::join(entries, ", "));
   return out;
 }
 

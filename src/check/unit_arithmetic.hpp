@@ -15,9 +15,11 @@
 ///   after a number is the day where the problem has no symbol d (written_forms.hpp).
 /// - An angle left over in a pure number keeps it an angle (rad), as unit_fits requires: "15°
 ///   × 2" is an angle, "(2 rad/s)/(4 rad/s)" a ratio.
-/// - Plain text only; a vector or matrix is left to the reader (a unit after each entry reads).
+/// - Plain text only; a vector entry by entry (entries_worked_out), a matrix not at all.
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "symbolic/expression.hpp"
 
@@ -26,16 +28,33 @@ namespace wobble::check {
 struct UnitsWorkedOut {
   std::string text;     ///< for the reader: "2.3952979e-07 1/s" (the value to 17 digits)
   std::string grouped;  ///< as read, for the line: "2π rad / (303.6 days)" (a line's worth)
-  std::string unit;     ///< the SI unit it works out in: "1/s", "kg m^2", "" (a pure number)
+  std::string unit;     ///< the unit it is written in: "rad/s", "kg m^2", "" (a pure number)
   double value_si = 0;
 };
 
-/// `typed` worked out with its units as above; nullopt where it has no unit inside arithmetic
-/// or is not read so.
+/// `typed` worked out with its units as above, in `key_unit` where that is an SI unit of its
+/// dimension ("rad/s" for 1/s; else the SI unit of powers of kg, m, s); nullopt where it has
+/// no unit inside arithmetic or is not read so.
 /// @throws InputError naming `field` where it adds or subtracts unlike dimensions ("2 m + 3 s"),
 ///   takes a unit's root ("(1 m)^(1/3)") or a function of one ("exp(1 m)").
 std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
                                                const sym::SymbolTable& table,
-                                               const std::string& field);
+                                               const std::string& field,
+                                               const std::string& key_unit = "");
+
+/// A vector's entries worked out so where one does not read as typed and holds a unit inside
+/// arithmetic ("(−2 rad/s × sin 30°, 0.5 rad/s, 2 rad/s × cos 30° + 10 rad/s)"): the vector
+/// with those entries as their numbers in `key_unit` (as units_worked_out), each other entry as
+/// typed (a unit after each entry reads, a zero may go without), and the entries so read, by
+/// index from 0; nullopt where no entry is so or `typed` is no bracketed list.
+/// @throws InputError as units_worked_out, for an entry.
+struct EntriesWorkedOut {
+  std::string text;  ///< "(-1 rad/s, 0.5 rad/s, 11.73 rad/s)"
+  std::vector<std::pair<std::size_t, UnitsWorkedOut>> worked;
+};
+std::optional<EntriesWorkedOut> entries_worked_out(const std::string& typed,
+                                                   const sym::SymbolTable& table,
+                                                   const std::string& field,
+                                                   const std::string& key_unit);
 
 }  // namespace wobble::check

@@ -1743,6 +1743,23 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
   // reader's refusal stands.
   REQUIRE_THROWS_WITH(top.check("p_psi", "0.5 g × (5 cm)² / 2 × 150/s"),
                       !Catch::Contains("worked out") && !Catch::Contains("work out"));
+  // Degrees in a function's argument are radians, as elsewhere; an angle in radians there is a
+  // pure number.
+  REQUIRE(earth.check("Omega_body_rate", "2π/(303.6 d) × cos 1°").correct);
+  REQUIRE(earth.check("Omega_body_rate", "1 rev / 304.46 sidereal days / cos(0.1 rad)").correct);
+  // A vector entry by entry: each entry that does not read as typed is worked out, in the key's
+  // unit; the others stay as typed.
+  const Fixture euler("euler-angles");  // ω in the primed basis: (-1, 0.5, 11.73) rad/s
+  const auto omega =
+      euler.check("omega_primed", "(−2 rad/s × sin 30°, 0.5 rad/s, 2 rad/s × cos 30° + 10 rad/s)");
+  REQUIRE(omega.correct);
+  REQUIRE(omega.feedback.back() ==
+          "read with its units worked out, entry 1: -2 rad/s * sin(30*π/180) = -1 rad/s; entry 3: "
+          "2 rad/s * cos(30*π/180) + 10 rad/s = 11.73 rad/s");
+  const auto zero = euler.check("omega_primed", "(−2 rad/s × sin 30°, 0, 2 rad/s × cos 30°)");
+  REQUIRE_FALSE(zero.correct);
+  REQUIRE_THROWS_WITH(euler.check("omega_primed", "(−2 rad/s × sin 30°, 0.5 rad/s, 1 kg)"),
+                      Catch::Contains("different things") || Catch::Contains("one unit"));
   // A long text is quoted a line's worth.
   std::string seconds = "1 s";
   for (int i = 0; i < 300; ++i) seconds += " + 1 s";
