@@ -945,9 +945,9 @@ std::optional<Verdict> judged_worked_out(const Context& ctx, const Answer& a,
 // (answer_referenced), and the feedback says so. Not for a side that may be a label or an
 // inequality's variable ("cos θ_min = ..", "118.8 rad/s ≤ ω₃"): there a name is the student's.
 Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& text,
-                        const Options& options) {
+                        const Options& options, AxesLayout labelled = AxesLayout::rows_or_columns) {
   try {
-    return judge_one(ctx, a, text, options);
+    return judge_one(ctx, a, text, options, labelled);
   } catch (const InputError& e) {
     if (auto worked = judged_worked_out(ctx, a, text, options)) return std::move(*worked);
     std::optional<Referenced> referenced = primed_named(ctx, a, text);
@@ -962,7 +962,7 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
     const std::exception_ptr refusal = std::current_exception();
     Verdict v;
     try {
-      v = judge_referring(ctx, a, referenced->text, options);
+      v = judge_referring(ctx, a, referenced->text, options, labelled);
     } catch (const InputError& then) {
       // "4K(k)/λ": k reads, λ does not. The name that keeps it from reading is said, in the
       // expression as typed (the refusal's quote, not the closed form put in).
@@ -1301,7 +1301,8 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
         v.feedback = equations->wrong_products;
         return v;
       }
-      Verdict v = judge_one(ctx, a, equations->coefficients, options);
+      // In the moments as the steps write them ("I₁ω̇₁ = (I₂ − I₃)ω₂ω₃"), read as the key's.
+      Verdict v = judge_referring(ctx, a, equations->coefficients, options);
       v.feedback.push_back("read as the coefficients of Euler's equations: (c₁, c₂, c₃) = " +
                            sym::to_unicode(equations->coefficients));
       return v;
@@ -1328,7 +1329,7 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // with its answer's name. This answer's is judged; the line says the others were not.
   if (a.value.shape == Value::Shape::scalar) {
     if (auto own = own_labelled_item(ctx, a, written)) {
-      Verdict v = judge_one(ctx, a, own->value, options);
+      Verdict v = judge_referring(ctx, a, own->value, options);
       v.feedback.push_back(own->note);
       return v;
     }
@@ -1338,7 +1339,7 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   if (a.value.shape == Value::Shape::vector && a.value.data.size() == 3 &&
       a.named_entries.empty() && a.kind != AnswerKind::principal_moments) {
     if (const auto some = some_components(without_others_zero(written))) {
-      Verdict v = judge_one(ctx, a, some->text, options);
+      Verdict v = judge_referring(ctx, a, some->text, options);
       const std::vector<std::string> axes = entry_names(a);  // x y z, or the body's e₁ e₂ e₃
       std::vector<std::string> missing;
       for (const std::size_t k : some->missing)
@@ -1354,8 +1355,9 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   const std::size_t entries = a.value.shape == Value::Shape::scalar ? 3 : a.value.data.size();
   if (const auto components =
           labelled_components(without_others_zero(written), kField, a.named_entries, entries)) {
-    Verdict v = judge_one(ctx, a, components->text, options,
-                          components->columns ? AxesLayout::columns : AxesLayout::rows);
+    // Each value as any answer's: in the steps' names, with units worked out, ..
+    Verdict v = judge_referring(ctx, a, components->text, options,
+                                components->columns ? AxesLayout::columns : AxesLayout::rows);
     v.feedback.insert(v.feedback.end(), components->notes.begin(), components->notes.end());
     return v;
   }
