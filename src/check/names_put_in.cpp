@@ -577,6 +577,50 @@ std::optional<Referenced> defined_named(const Context& ctx, const Answer& a,
   return defined_read(names, put->read, put->text);
 }
 
+namespace {
+// A primed name as DefinedName spells it ("omega1'" for ω₁', ω₁′, w1', ω'₁, omega_1'), and where
+// it ends in the text.
+struct PrimedWord {
+  std::string spelled;
+  std::size_t end = 0;
+};
+
+// The primed name whose identifier is at [at, at + length) of `ascii`; nullopt where no one
+// prime follows it (ω₁'' is no name of the steps': a second derivative, or a slip).
+std::optional<PrimedWord> primed_word(const std::string& ascii, std::size_t at,
+                                      std::size_t length) {
+  std::size_t past = at + length;
+  const std::size_t prime = prime_length(ascii, past);
+  if (prime == 0 || prime_length(ascii, past + prime) != 0) return std::nullopt;
+  past += prime;
+  std::string word = ascii.substr(at, length);
+  // ω'₁: the index after the prime.
+  std::size_t index = past < ascii.size() && ascii[past] == '_' ? past + 1 : past;
+  const std::size_t index_from = index;
+  while (index < ascii.size() && std::isdigit(static_cast<unsigned char>(ascii[index]))) ++index;
+  if (index > index_from && !std::isdigit(static_cast<unsigned char>(word.back()))) {
+    word += ascii.substr(index_from, index - index_from);
+    past = index;
+  }
+  return PrimedWord{defined_spelling(word) + "'", past};
+}
+
+// `marked` with `form` put in, marked, as a factor where a name stood: a '*' on each side
+// where an operand meets it ("I1 (..)" would read as a call of I1). `next` is where the text
+// after the name starts in `ascii`.
+void put_in_as_factor(std::string& marked, const std::string& form, const std::string& ascii,
+                      std::size_t next) {
+  const auto operand = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == ')';
+  };
+  const std::size_t last = marked.find_last_not_of(' ');
+  if (last != std::string::npos && operand(marked[last])) marked += '*';
+  marked += kPutIn + form + kPutInEnd;
+  const std::size_t after = ascii.find_first_not_of(' ', next);
+  if (after != std::string::npos && operand(ascii[after]) && ascii[after] != ')') marked += '*';
+}
+}  // namespace
+
 // `text` with the primed names the key's steps write (the Euler-angle top's ω₁′, a component
 // along the line-of-nodes basis: DefinedName "omega1'") as their exact forms in brackets, and
 // the line that says so. Plain text only: the reader takes a prime after a name for no part of
@@ -603,37 +647,17 @@ std::optional<Referenced> primed_named(const Context& ctx, const Answer& a,
   std::vector<bool> read(names.size(), false);
   std::size_t from = 0;
   for (const auto& [at, length] : identifiers(ascii)) {
-    std::size_t past = at + length;
-    const std::size_t prime = prime_length(ascii, past);
-    // ω₁'' is no name of the steps' (a second derivative, or a slip): left for the reader.
-    if (at < from || prime == 0 || prime_length(ascii, past + prime) != 0) continue;
-    past += prime;
-    std::string word = ascii.substr(at, length);
-    // ω'₁: the index after the prime.
-    std::size_t index = past < ascii.size() && ascii[past] == '_' ? past + 1 : past;
-    const std::size_t index_from = index;
-    while (index < ascii.size() && std::isdigit(static_cast<unsigned char>(ascii[index]))) ++index;
-    if (index > index_from && !std::isdigit(static_cast<unsigned char>(word.back()))) {
-      word += ascii.substr(index_from, index - index_from);
-      past = index;
-    }
-    const std::string spelled = defined_spelling(word) + "'";
+    if (at < from) continue;
+    const std::optional<PrimedWord> word = primed_word(ascii, at, length);
+    if (!word) continue;
     const auto it = std::find_if(names.begin(), names.end(),
-                                 [&](const DefinedName* d) { return d->name == spelled; });
+                                 [&](const DefinedName* d) { return d->name == word->spelled; });
     if (it == names.end() || std::find(own.begin(), own.end(), (*it)->symbolic) != own.end())
       continue;
     read[static_cast<std::size_t>(it - names.begin())] = true;
     marked += ascii.substr(from, at - from);
-    // A product, as the name stood in one: "I1 (..)" would read as a call of I1.
-    const std::size_t last = marked.find_last_not_of(' ');
-    const auto operand = [](char c) {
-      return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == ')';
-    };
-    if (last != std::string::npos && operand(marked[last])) marked += '*';
-    marked += kPutIn + (*it)->symbolic + kPutInEnd;
-    const std::size_t next = ascii.find_first_not_of(' ', past);
-    if (next != std::string::npos && operand(ascii[next]) && ascii[next] != ')') marked += '*';
-    from = past;
+    put_in_as_factor(marked, (*it)->symbolic, ascii, word->end);
+    from = word->end;
   }
   if (from == 0) return std::nullopt;
   return defined_read(names, read, marked + ascii.substr(from));

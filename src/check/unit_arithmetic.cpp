@@ -183,6 +183,87 @@ std::string shown(const std::string& grouped, const StandIns& s) {
   return with_pi + out.substr(from);
 }
 
+// What an expression in the units' stand-ins works out to: its value in SI, and its powers
+// of kg, m, s and of an angle; `one` false where it has no one power of some dimension (unlike
+// quantities added, a unit's root, a function of a unit). nullopt where it has no finite real
+// value, or a power past kLargestPower.
+struct Dimension {
+  double value_si = 0;
+  std::array<int, 4> power{};
+  bool one = true;
+};
+std::optional<Dimension> dimension_of(const GiNaC::ex& e, const std::vector<GiNaC::ex>& stand_ins,
+                                      const std::vector<Unit>& units, const sym::SymbolTable& table,
+                                      const std::string& field) {
+  // Each unit its SI factor times powers of a mass, a length, a time and an angle (M, L, T, A:
+  // a unit's name that counts an angle, rad, deg, rev, Hz, rpm, holds it once).
+  const std::array<GiNaC::symbol, 4> axes{GiNaC::symbol("M"), GiNaC::symbol("L"),
+                                          GiNaC::symbol("T"), GiNaC::symbol("A")};
+  GiNaC::lst dimensioned;
+  for (std::size_t k = 0; k < units.size(); ++k) {
+    GiNaC::ex with_dimension = table.parse(units[k].to_si_exact, field);
+    for (std::size_t i = 0; i < 3; ++i) with_dimension *= GiNaC::pow(axes[i], units[k].dim[i]);
+    if (units[k].angle) with_dimension *= axes[3];
+    dimensioned.append(stand_ins[k] == with_dimension);
+  }
+  const GiNaC::ex whole = e.subs(dimensioned);
+  const auto at = [&](std::size_t axis, double x) -> std::optional<double> {
+    GiNaC::lst point;
+    for (std::size_t i = 0; i < axes.size(); ++i) point.append(axes[i] == (i == axis ? x : 1.0));
+    const GiNaC::ex v = whole.subs(point).evalf();
+    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
+      return std::nullopt;
+    const double d = GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+    return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
+  };
+  Dimension out;
+  const std::optional<double> value = at(0, 1);
+  if (!value || *value == 0) return std::nullopt;
+  out.value_si = *value;
+  // The powers read off from the values at x = 2^20 and 3^13 along each axis: one power p gives
+  // x^p at both (exactly, for |p| <= kLargestPower); a sum of unlike ones gives neither unless
+  // one term outweighs the other by some 10^15. The tolerance is far above the rounding of a
+  // few operations and far below a power's step.
+  constexpr double kTwos = 20, kThrees = 13, kSameScaling = 1e-9;
+  for (std::size_t axis = 0; axis < axes.size(); ++axis) {
+    const std::optional<double> by_two = at(axis, std::exp2(kTwos));
+    const std::optional<double> by_three = at(axis, std::pow(3.0, kThrees));
+    // No value there (exp(1 m) overflows at 2^20 m): no one power of that dimension either.
+    bool one_power = by_two && by_three;
+    long whole_power = 0;
+    if (one_power) {
+      const double p = std::log2(*by_two / *value) / kTwos;
+      whole_power = std::lround(p);
+      const double scaled = std::pow(3.0, kThrees * static_cast<double>(whole_power));
+      one_power = std::abs(p - static_cast<double>(whole_power)) < kSameScaling &&
+                  std::abs(*by_three / *value - scaled) < kSameScaling * scaled;
+    }
+    // An angle is a pure number: "cos(0.5 rad)" is no angle, and no refusal.
+    constexpr std::size_t kAngle = 3;
+    if (!one_power && axis == kAngle) continue;
+    if (!one_power) {
+      out.one = false;
+      return out;
+    }
+    if (std::abs(whole_power) > kLargestPower) return std::nullopt;
+    out.power[axis] = static_cast<int>(whole_power);
+  }
+  return out;
+}
+
+// The unit a worked-out value is written in, from its powers of kg, m, s and an angle: the
+// key's SI unit where it is of that dimension (rad/s as the key writes 1/s), else the SI unit
+// of the powers; an angle left over in a pure number stays one (rad), as unit_fits requires.
+std::string unit_written(const std::array<int, 4>& power, const std::string& key_unit) {
+  const std::array<int, 3> dim{power[0], power[1], power[2]};
+  if (!key_unit.empty()) {
+    const Unit key = parse_unit(key_unit, "key unit");
+    if (key.to_si == 1.0 && key.dim == dim && (power[3] == 0 || key.angle)) return key_unit;
+  }
+  const std::string si = si_unit(dim);
+  return si.empty() && power[3] != 0 ? "rad" : si;
+}
+
 }  // namespace
 
 std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
@@ -217,71 +298,22 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
   } catch (const InputError&) {
     return std::nullopt;
   }
-  // Each unit its SI factor times powers of a mass, a length, a time and an angle (M, L, T, A:
-  // a unit's name that counts an angle, rad, deg, rev, Hz, rpm, holds it once); the powers of
-  // the whole read off from its values at 1, 2 and 3 along each.
-  const std::array<GiNaC::symbol, 4> axes{GiNaC::symbol("M"), GiNaC::symbol("L"),
-                                          GiNaC::symbol("T"), GiNaC::symbol("A")};
-  GiNaC::lst dimensioned;
-  for (std::size_t k = 0; k < stood->units.size(); ++k) {
-    const Unit& u = stood->units[k];
-    GiNaC::ex with_dimension = table.parse(u.to_si_exact, field);
-    for (std::size_t i = 0; i < 3; ++i) with_dimension *= GiNaC::pow(axes[i], u.dim[i]);
-    if (u.angle) with_dimension *= axes[3];
-    dimensioned.append(symbols[k] == with_dimension);
-  }
-  const GiNaC::ex whole = e.subs(dimensioned);
-  const auto at = [&](std::size_t axis, int x) -> std::optional<double> {
-    GiNaC::lst point;
-    for (std::size_t i = 0; i < axes.size(); ++i) point.append(axes[i] == (i == axis ? x : 1));
-    const GiNaC::ex v = whole.subs(point).evalf();
-    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real())
-      return std::nullopt;
-    const double d = GiNaC::ex_to<GiNaC::numeric>(v).to_double();
-    return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
-  };
-  const std::optional<double> value = at(0, 1);
-  if (!value || *value == 0) return std::nullopt;
   // A line's worth: a long text is quoted in part.
   constexpr std::size_t kShownCharacters = 60;
   const std::string as_read = printable(shown(grouped, *stood), kShownCharacters);
-  std::array<int, 4> power{};
-  for (std::size_t axis = 0; axis < axes.size(); ++axis) {
-    const std::optional<double> twice = at(axis, 2), thrice = at(axis, 3);
-    if (!twice || !thrice) return std::nullopt;
-    const double p = std::log2(*twice / *value);
-    const long whole_power = std::lround(p);
-    // A like sum scales as one power does, at 2 and at 3 alike; a sum of unlike ones does not.
-    constexpr double kSameScaling = 1e-9;
-    const double cubed = std::pow(3.0, static_cast<double>(whole_power));
-    const bool one_power = std::abs(p - static_cast<double>(whole_power)) < kSameScaling &&
-                           std::abs(*thrice / *value - cubed) < kSameScaling * cubed;
-    // An angle is a pure number: "cos(0.5 rad)" is no angle, and no refusal.
-    constexpr std::size_t kAngle = 3;
-    if (!one_power && axis == kAngle) continue;
-    if (!one_power) {
-      throw InputError(fmt::format(
-          "{}: \"{}\" does not work out to one unit: it adds unlike quantities, or takes a "
-          "root of a unit or a function of one",
-          field, as_read));
-    }
-    if (std::abs(whole_power) > kLargestPower) return std::nullopt;
-    power[axis] = static_cast<int>(whole_power);
+  const std::optional<Dimension> dimension = dimension_of(e, symbols, stood->units, table, field);
+  if (!dimension) return std::nullopt;
+  if (!dimension->one) {
+    throw InputError(fmt::format(
+        "{}: \"{}\" does not work out to one unit: it adds unlike quantities, or takes a "
+        "root of a unit or a function of one",
+        field, as_read));
   }
   UnitsWorkedOut out;
   out.grouped = as_read;
-  out.unit = si_unit({power[0], power[1], power[2]});
-  // An angle stays one where nothing else is left (radians are pure numbers otherwise).
-  if (out.unit.empty() && power[3] != 0) out.unit = "rad";
-  // In the key's SI unit where it is of this dimension: rad/s as the key writes 1/s.
-  if (!key_unit.empty()) {
-    const Unit key = parse_unit(key_unit, "key unit");
-    if (key.to_si == 1.0 && key.dim == std::array<int, 3>{power[0], power[1], power[2]} &&
-        (power[3] == 0 || key.angle))
-      out.unit = key_unit;
-  }
-  out.value_si = *value;
-  out.text = fmt::format("{:.17g}{}{}", *value, out.unit.empty() ? "" : " ", out.unit);
+  out.unit = unit_written(dimension->power, key_unit);
+  out.value_si = dimension->value_si;
+  out.text = fmt::format("{:.17g}{}{}", out.value_si, out.unit.empty() ? "" : " ", out.unit);
   return out;
 }
 

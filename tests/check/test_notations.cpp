@@ -1741,6 +1741,9 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
                       Catch::Contains("\"2π/(303.6 day) + 1 s\" does not work out to one unit"));
   REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "exp(1 m)/1 s"),
                       Catch::Contains("a function of one"));
+  // One term far outweighing the other is still a sum of unlike quantities.
+  REQUIRE_THROWS_WITH(earth.check("precession_period_body", "1e12 m + 1 s"),
+                      Catch::Contains("does not work out to one unit"));
   // A name that is a symbol of the problem is never a unit here (the heavy top's g): the
   // reader's refusal stands.
   REQUIRE_THROWS_WITH(top.check("p_psi", "0.5 g × (5 cm)² / 2 × 150/s"),
