@@ -264,21 +264,37 @@ std::string unit_written(const std::array<int, 4>& power, const std::string& key
   return si.empty() && power[3] != 0 ? "rad" : si;
 }
 
+// `latex` with each upright d, \mathrm{d} or \text{d}, as \mathrm{day}, where the problem has
+// no symbol d: the SI's day, as the LaTeX reader reads it after a value.
+std::string upright_days(const std::string& latex, const sym::SymbolTable& table) {
+  if (table.contains("d")) return latex;
+  std::string out = latex;
+  for (const std::string_view upright : {"\\mathrm{d}", "\\text{d}", "\\textrm{d}"}) {
+    for (std::size_t at = out.find(upright); at != std::string::npos;
+         at = out.find(upright, at + 1))
+      out.replace(at, upright.size(), "\\mathrm{day}");
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
                                                const sym::SymbolTable& table,
                                                const std::string& field,
                                                const std::string& key_unit) {
-  if (looks_like_latex(typed)) return std::nullopt;
   std::string ascii;
   try {
+    // "\frac{2\pi\,\mathrm{rad}}{303.6\,\mathrm{days}}": LaTeX as the reader sets it in text,
+    // an upright d the day where d is no symbol (as after a value).
+    const std::string text =
+        looks_like_latex(typed) ? latex_as_text(upright_days(typed, table), table, field) : typed;
     // "sin 30°", "cos(1 deg)": degrees in a function's argument as radians first, as the
     // reader reads them; d after a number as the day.
     const auto in_expression = [&](const std::string& name) {
       return (table.contains(name) || sym::is_function_name(name)) && !table.contains("deg");
     };
-    ascii = days_written_d(degrees_in_expression(prepared(typed, field), in_expression),
+    ascii = days_written_d(degrees_in_expression(prepared(text, field), in_expression),
                            [&](const std::string& name) { return table.contains(name); });
   } catch (const InputError&) {
     return std::nullopt;

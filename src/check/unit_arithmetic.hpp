@@ -15,7 +15,9 @@
 ///   after a number is the day where the problem has no symbol d (written_forms.hpp).
 /// - An angle left over in a pure number keeps it an angle (rad), as unit_fits requires: "15°
 ///   × 2" is an angle, "(2 rad/s)/(4 rad/s)" a ratio.
-/// - Plain text only; a vector entry by entry (entries_worked_out), a matrix not at all.
+/// - Plain text, or LaTeX as the reader sets it in text (units upright, "\mathrm{days}"; an
+///   upright d the day where d is no symbol); a vector entry by entry (entries_worked_out), a
+///   matrix not at all.
 #include <optional>
 #include <string>
 #include <utility>

@@ -1713,7 +1713,11 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
            {"2π rad / 303.6 days", "2π rad / (303.6 days) = 2.395e-07 rad/s"},
            {"1 rev / 304.46 sidereal days", "1 rev / (304.46 sidereal days) = 2.395e-07 rad/s"},
            {"2π rad/(303.6 × 86400 s)", "2π rad/(303.6 * 86400 s) = 2.395e-07 rad/s"},
-           {"Ω_body = 2π/(303.6 days)", "2π/(303.6 days) = 2.395e-07 rad/s"}}) {
+           {"Ω_body = 2π/(303.6 days)", "2π/(303.6 days) = 2.395e-07 rad/s"},
+           // In LaTeX, units upright; an upright d the day where d is no symbol.
+           {"\\frac{2\\pi\\,\\mathrm{rad}}{303.6\\,\\mathrm{days}}",
+            "((2*π rad)/(303.6 days)) = 2.395e-07 rad/s"},
+           {"\\frac{2\\pi}{303.6\\,\\mathrm{d}}", "((2*π)/(303.6 day)) = 2.395e-07 rad/s"}}) {
     INFO(typed);
     const auto v = earth.check("Omega_body_rate", typed);
     REQUIRE(v.correct);
