@@ -42,6 +42,7 @@ namespace wobble::check {
 using detail::answer_referenced;
 using detail::convention_named;
 using detail::defined_named;
+using detail::defined_spelling;
 using detail::entry_named;
 using detail::Judge;
 using detail::judge_symbolic;
@@ -105,15 +106,6 @@ std::string imaginary_hint(const Answer& a, const std::string& typed, const std:
                        s[k], s[k] == 'i' ? "î" : "ĵ", s[k] == 'i' ? "x" : "y", growth);
   }
   return "";
-}
-
-// `name` as a problem spells ω's components: "w1" and "omega_1" as "omega1".
-std::string textbook_spelling(const std::string& name) {
-  std::string plain;
-  for (char c : name)
-    if (c != '_') plain += c;
-  if (plain.size() == 2 && plain[0] == 'w') return "omega" + plain.substr(1);
-  return plain;
 }
 
 // What a name the textbook formulas use but the problem has no symbol for stands for: "a
@@ -227,13 +219,13 @@ std::string name_hint(const Context& ctx, const std::string& name) {
     return std::find_if(ctx.key.defined_names.begin(), ctx.key.defined_names.end(),
                         [&](const DefinedName& d) { return d.name == spelled; });
   };
-  const auto primed = defined(textbook_spelling(name) + "'");
+  const auto primed = defined(defined_spelling(name) + "'");
   if (primed != ctx.key.defined_names.end() &&
-      defined(textbook_spelling(name)) == ctx.key.defined_names.end()) {
+      defined(defined_spelling(name)) == ctx.key.defined_names.end()) {
     return fmt::format(
         " ({} is no symbol here; the key's steps write {}′ for {}: write it in the "
         "problem's symbols)",
-        name, sym::to_unicode(textbook_spelling(name)), primed->meaning);
+        name, sym::to_unicode(defined_spelling(name)), primed->meaning);
   }
   const std::string words = textbook_name_words(name);
   if (words.empty()) return "";
@@ -942,7 +934,9 @@ std::optional<Verdict> judged_worked_out(const Context& ctx, const Answer& a,
 
 // judge_one for the whole answer or the value after a label: an answer in terms of an earlier
 // one, "I₀ diag(2, 2, 1)", "π/Ω_space_rate", is read with the key's closed form for it
-// (answer_referenced), and the feedback says so. Not for a side that may be a label or an
+// (answer_referenced), and so are the names the key itself reads (the steps' I₁ and ω₁′, a
+// convention's, an entry's), and arithmetic with units is worked out (unit_arithmetic.hpp);
+// the feedback says so. Not for a side that may be a label or an
 // inequality's variable ("cos θ_min = ..", "118.8 rad/s ≤ ω₃"): there a name is the student's.
 Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& text,
                         const Options& options, AxesLayout labelled = AxesLayout::rows_or_columns) {

@@ -489,7 +489,8 @@ std::string brackets_put_in(const std::string& marked) {
   return out;
 }
 
-// A name as the key's DefinedName spells it: "I_3" and "I3" alike, and "w3" as ω₃ ("omega3").
+}  // namespace
+
 std::string defined_spelling(const std::string& word) {
   std::string plain;
   for (const char c : word) {
@@ -501,8 +502,6 @@ std::string defined_spelling(const std::string& word) {
     return "omega" + plain.substr(1);
   return plain;
 }
-
-}  // namespace
 
 namespace {
 // A name's trailing prime, as typed: ASCII's ' or Unicode's ′ (U+2032): its length at `at` in

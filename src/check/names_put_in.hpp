@@ -24,6 +24,8 @@ std::string refused_name(const std::string& message);
 /// The symbol the LaTeX reader's message says is none of the problem's, as drawn
 /// ("\Omega_{space}"), or "".
 std::string latex_unknown_symbol(const std::string& message);
+/// A name as the key's DefinedName spells it: "I_3" and "I3" alike, and "w3" as ω₃ ("omega3").
+std::string defined_spelling(const std::string& word);
 /// The part of `key` whose answers include the one named `name` (answer names are unique in a
 /// key), or nullptr.
 const PartKey* part_answering(const Key& key, const std::string& name);
