@@ -75,13 +75,24 @@ std::pair<std::size_t, bool> denominator_end(const std::string& s, std::size_t s
   return {k, juxtaposed};
 }
 
+// Whether the text before `slash` ends in a number written in digits, standing alone: the
+// "1" of "1/2 kg".
+bool number_before(const std::string& s, std::size_t slash) {
+  std::size_t k = s.find_last_not_of(' ', slash == 0 ? 0 : slash - 1);
+  if (k == std::string::npos || slash == 0 || !std::isdigit(static_cast<unsigned char>(s[k])))
+    return false;
+  while (k > 0 && (std::isdigit(static_cast<unsigned char>(s[k - 1])) || s[k - 1] == '.')) --k;
+  return k == 0 || !operand_char(s[k - 1]);
+}
+
 // "2 pi u0 / 303.6 u1" -> "2 pi u0 / (303.6 u1)": a product written by juxtaposition after a
-// '/' is all of the denominator, as "J/kg K" is J/(kg K).
-std::string denominators_grouped(const std::string& s) {
+// '/' is all of the denominator, as "J/kg K" is J/(kg K). With `after_numbers` false, not after
+// a number in digits: "1/2 kg" as a half of a kilogram.
+std::string denominators_grouped(const std::string& s, bool after_numbers) {
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
     out += s[i];
-    if (s[i] != '/') continue;
+    if (s[i] != '/' || (!after_numbers && number_before(s, i))) continue;
     const auto [end, juxtaposed] = denominator_end(s, i);
     const std::string operand = s.substr(i + 1, end - i - 1);
     if (juxtaposed) {
@@ -258,7 +269,11 @@ std::string unit_written(const std::array<int, 4>& power, const std::string& key
   const std::array<int, 3> dim{power[0], power[1], power[2]};
   if (!key_unit.empty()) {
     const Unit key = parse_unit(key_unit, "key unit");
-    if (key.to_si == 1.0 && key.dim == dim && (power[3] == 0 || key.angle)) return key_unit;
+    // rad/s for kg m²/s's 1/s is no matter (radians are pure numbers), but a pure number
+    // with an angle left over is an angle.
+    const bool pure = dim == std::array<int, 3>{0, 0, 0};
+    if (key.to_si == 1.0 && key.dim == dim && (!pure || power[3] == 0 || key.angle))
+      return key_unit;
   }
   const std::string si = si_unit(dim);
   return si.empty() && power[3] != 0 ? "rad" : si;
@@ -274,6 +289,46 @@ std::string upright_days(const std::string& latex, const sym::SymbolTable& table
          at = out.find(upright, at + 1))
       out.replace(at, upright.size(), "\\mathrm{day}");
   }
+  return out;
+}
+
+// Whether a worked-out unit ("" for a pure number) is of the key's dimension.
+bool same_dimension(const std::string& unit, const std::string& key_unit) {
+  return parse_unit(unit.empty() ? "1" : unit, "unit").dim == parse_unit(key_unit, "key unit").dim;
+}
+
+// `text`, with its units' stand-ins, worked out (units_worked_out, below).
+std::optional<UnitsWorkedOut> worked_out(const std::string& text, const StandIns& stood,
+                                         const sym::SymbolTable& table, const std::string& field,
+                                         const std::string& key_unit) {
+  sym::SymbolTable with_units = table;
+  std::vector<GiNaC::ex> symbols;
+  for (std::size_t k = 0; k < stood.units.size(); ++k)
+    symbols.push_back(with_units.declare(stand_in(k), stand_in(k), sym::SymbolSign::positive));
+  GiNaC::ex e;
+  try {
+    const ReadAnswer read = read_answer(text, with_units, field);
+    if (read.unit || read.value.is_vector || read.value.is_matrix) return std::nullopt;
+    e = read.value.entries.at(0);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  // A line's worth: a long text is quoted in part.
+  constexpr std::size_t kShownCharacters = 60;
+  const std::string as_read = printable(shown(text, stood), kShownCharacters);
+  const std::optional<Dimension> dimension = dimension_of(e, symbols, stood.units, table, field);
+  if (!dimension) return std::nullopt;
+  if (!dimension->one) {
+    throw InputError(fmt::format(
+        "{}: \"{}\" does not work out to one unit: it adds unlike quantities, or takes a "
+        "root of a unit or a function of one",
+        field, as_read));
+  }
+  UnitsWorkedOut out;
+  out.grouped = as_read;
+  out.unit = unit_written(dimension->power, key_unit);
+  out.value_si = dimension->value_si;
+  out.text = fmt::format("{:.17g}{}{}", out.value_si, out.unit.empty() ? "" : " ", out.unit);
   return out;
 }
 
@@ -301,35 +356,20 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
   }
   const std::optional<StandIns> stood = units_stood_in(ascii, table, field);
   if (!stood) return std::nullopt;
-  const std::string grouped = denominators_grouped(stood->text);
-  sym::SymbolTable with_units = table;
-  std::vector<GiNaC::ex> symbols;
-  for (std::size_t k = 0; k < stood->units.size(); ++k)
-    symbols.push_back(with_units.declare(stand_in(k), stand_in(k), sym::SymbolSign::positive));
-  GiNaC::ex e;
-  try {
-    const ReadAnswer read = read_answer(grouped, with_units, field);
-    if (read.unit || read.value.is_vector || read.value.is_matrix) return std::nullopt;
-    e = read.value.entries.at(0);
-  } catch (const InputError&) {
-    return std::nullopt;
+  const std::string grouped = denominators_grouped(stood->text, true);
+  std::optional<UnitsWorkedOut> out = worked_out(grouped, *stood, table, field, key_unit);
+  // "1/2 kg × (0.05 m)² × 150/s": a half of a kilogram, not 1/(2 kg), where only that reading
+  // has the answer's dimension; the line shows which reading was taken.
+  const std::string fraction = denominators_grouped(stood->text, false);
+  if (out && !key_unit.empty() && fraction != grouped && !same_dimension(out->unit, key_unit)) {
+    try {
+      if (auto coefficient = worked_out(fraction, *stood, table, field, key_unit);
+          coefficient && same_dimension(coefficient->unit, key_unit))
+        out = std::move(coefficient);
+    } catch (const InputError&) {
+      // the grouped reading stands
+    }
   }
-  // A line's worth: a long text is quoted in part.
-  constexpr std::size_t kShownCharacters = 60;
-  const std::string as_read = printable(shown(grouped, *stood), kShownCharacters);
-  const std::optional<Dimension> dimension = dimension_of(e, symbols, stood->units, table, field);
-  if (!dimension) return std::nullopt;
-  if (!dimension->one) {
-    throw InputError(fmt::format(
-        "{}: \"{}\" does not work out to one unit: it adds unlike quantities, or takes a "
-        "root of a unit or a function of one",
-        field, as_read));
-  }
-  UnitsWorkedOut out;
-  out.grouped = as_read;
-  out.unit = unit_written(dimension->power, key_unit);
-  out.value_si = dimension->value_si;
-  out.text = fmt::format("{:.17g}{}{}", out.value_si, out.unit.empty() ? "" : " ", out.unit);
   return out;
 }
 

@@ -8,7 +8,9 @@
 ///
 /// Conventions, as units are written by hand:
 /// - A product written by juxtaposition after a '/' is all of the denominator: "2π rad / 303.6
-///   days" is 2π rad per 303.6 days (as "J/kg K" is J/(kg K)); a '*' or '×' ends it.
+///   days" is 2π rad per 303.6 days (as "J/kg K" is J/(kg K)); a '*' or '×' ends it. After a
+///   number in digits, "1/2 kg" is half a kilogram where only that reading has the answer's
+///   dimension (units_worked_out's `key_unit`).
 /// - Only a text every name of which is a unit, π or a function: a name that is a symbol of the
 ///   problem ("0.05 m" where m is a mass) or no unit leaves the text to the reader's refusal,
 ///   as does a unit with a number after it ("15 h 303 days": a quantity told in parts). d

@@ -1740,6 +1740,16 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
     REQUIRE(top.check("p_psi", typed).correct);
   }
   REQUIRE_FALSE(top.check("p_psi", "0.5 kg × (5 cm)² × 150/s").correct);  // twice it
+  // "1/2 kg" is half a kilogram where only that reading has the answer's dimension (1/(2 kg)
+  // has not); a rate in rad/s is written in the key's unit.
+  const auto half = top.check("p_psi", "1/2 × 1/2 kg × (5 cm)² × 150 rad/s");
+  REQUIRE(half.correct);
+  REQUIRE(half.feedback.back() ==
+          "read with its units worked out: 1/2 * 1/2 kg * (5 cm)^2 * 150 "
+          "rad/s = 0.09375 kg m^2/s");
+  // After a unit the juxtaposed denominator stays whole, whatever the dimension: a rate given
+  // for Euler's period is a rate.
+  REQUIRE(earth.check("precession_period_body", "2π rad / 303.6 days").wrong_dimension);
   // Unlike quantities added are refused, one line naming the text.
   REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "2π/(303.6 d) + 1 s"),
                       Catch::Contains("\"2π/(303.6 day) + 1 s\" does not work out to one unit"));
