@@ -25,7 +25,9 @@ namespace {
 // A unit's stand-in in the text the reader reads: a name no problem or unit has.
 constexpr std::string_view kStandIn = "wobbleunitstandin";
 
-std::string stand_in(std::size_t k) { return fmt::format("{}{}", kStandIn, k); }
+std::string stand_in(std::size_t k) {
+  return fmt::format("{}{}", kStandIn, k);
+}
 
 // The largest power of a unit a worked-out answer may hold (kg m^2/s has 2): past it a text is
 // no quantity of this course, and 2^p stays exact in the test below.
@@ -65,9 +67,9 @@ std::pair<std::size_t, bool> denominator_end(const std::string& s, std::size_t s
       gap = false;
       continue;
     }
-    const bool exponent_sign =
-        k > 1 && (s[k - 1] == 'e' || s[k - 1] == 'E') && std::isdigit(static_cast<unsigned char>(s[k - 2]));
-    if ((c == '+' || c == '-') && !(exponent_sign || !seen)) break;
+    const bool exponent_sign = k > 1 && (s[k - 1] == 'e' || s[k - 1] == 'E') &&
+                               std::isdigit(static_cast<unsigned char>(s[k - 2]));
+    if ((c == '+' || c == '-') && seen && !exponent_sign) break;  // a sign first is the operand's
     juxtaposed = juxtaposed || (seen && gap);
     seen = true;
     gap = false;
@@ -78,9 +80,9 @@ std::pair<std::size_t, bool> denominator_end(const std::string& s, std::size_t s
 // Whether the text before `slash` ends in a number written in digits, standing alone: the
 // "1" of "1/2 kg".
 bool number_before(const std::string& s, std::size_t slash) {
-  std::size_t k = s.find_last_not_of(' ', slash == 0 ? 0 : slash - 1);
-  if (k == std::string::npos || slash == 0 || !std::isdigit(static_cast<unsigned char>(s[k])))
-    return false;
+  if (slash == 0) return false;
+  std::size_t k = s.find_last_not_of(' ', slash - 1);
+  if (k == std::string::npos || !std::isdigit(static_cast<unsigned char>(s[k]))) return false;
   while (k > 0 && (std::isdigit(static_cast<unsigned char>(s[k - 1])) || s[k - 1] == '.')) --k;
   return k == 0 || !operand_char(s[k - 1]);
 }
@@ -130,8 +132,7 @@ std::optional<StandIns> units_stood_in(const std::string& ascii, const sym::Symb
     if (word == "sidereal" && k + 1 < ids.size()) {
       const auto [next, next_length] = ids[k + 1];
       const std::string day = ascii.substr(next, next_length);
-      if ((day == "day" || day == "days") &&
-          ascii.find_first_not_of(' ', end) == next) {
+      if ((day == "day" || day == "days") && ascii.find_first_not_of(' ', end) == next) {
         end = next + next_length;
         word = ascii.substr(at, end - at);
         ++k;
