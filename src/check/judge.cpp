@@ -51,6 +51,7 @@ using detail::latex_unknown_symbol;
 using detail::part_answering;
 using detail::primed_named;
 using detail::quoted_after;
+using detail::referable_answer;
 using detail::Referenced;
 using detail::undefined_name;
 
@@ -166,19 +167,32 @@ std::string definition_in_text(const Key& key, const std::string& name) {
   return "";
 }
 
+// Whether the key reads `name` in `a`: an answer `a` may be written in terms of (p_ψ in the
+// heavy top's energy), a name its steps write (I₃) but `a`'s own (ω₃ for ω₃), a convention's.
+bool key_reads(const Context& ctx, const Answer& a, const std::string& name) {
+  const std::string spelled = defined_spelling(name);
+  return referable_answer(ctx, a, name) != nullptr ||
+         std::any_of(ctx.key.defined_names.begin(), ctx.key.defined_names.end(),
+                     [&](const DefinedName& d) { return d.name == spelled && d.name != a.name; }) ||
+         std::any_of(ctx.key.convention_names.begin(), ctx.key.convention_names.end(),
+                     [&](const ConventionName& c) { return c.name == name; });
+}
+
 // " (I0 is the answer to part (a): write it in the problem's symbols)" where `name` is another
 // answer of the key, or "". An answer is no symbol: reading it as its key's value would let a
 // name stand in for the working. A parameter but for its "0" is named next (not read: ψ̇ is
 // ψ̇₀ at t = 0 only), then a name the statement defines, then answers the name begins, then a
-// principal moment or a component of ω where the problem has no such symbol.
-std::string name_hint(const Context& ctx, const std::string& name) {
-  if (ctx.table.contains(name)) return "";
+// principal moment or a component of ω where the problem has no such symbol. Nothing for a
+// name the key reads in `a` (key_reads): another one keeps the text from reading.
+std::string name_hint(const Context& ctx, const Answer& a, const std::string& name) {
+  if (ctx.table.contains(name) || key_reads(ctx, a, name)) return "";
   std::vector<std::string> named;  // "Omega" for Omega_body_rate, as a book writes Ω
+  const std::string answer_named = name_in_key(ctx.key, name);  // ω₃ as \omega_3: omega_3
   for (const auto& part : ctx.key.parts) {
     for (const auto& answer : part.answers) {
-      if (answer.name == name) {
+      if (answer.name == answer_named) {
         return fmt::format(" ({} is the answer to part ({}): write it in the problem's symbols)",
-                           name, part.id);
+                           answer.name, part.id);
       }
       if (answer.name.rfind(name + "_", 0) == 0)
         named.push_back(fmt::format("{} (part ({}))", answer.name, part.id));
@@ -269,10 +283,17 @@ std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_te
 // The hint of the first name in `typed` that has one ("I₀ diag(1, 1, 2)", as question (a)
 // writes I), the name the reader found undefined first (in "½I₃ω₃²" the text runs I₃ and ω₃
 // together; the reader, its stars written in, names ω₃).
-std::string answer_name_hint(const Context& ctx, const std::string& typed,
-                             const std::string& message) {
+std::string first_name_hint(const Context& ctx, const Answer& a, const std::string& typed,
+                            const std::string& message) {
   if (const std::string name = undefined_name(message); !name.empty()) {
-    const std::string hint = name_hint(ctx, name);
+    // "Ω_body + ω" for a vector: the name reads, what is written around it does not.
+    if (key_reads(ctx, a, name)) {
+      return fmt::format(
+          " ({} reads here as the key writes it; the text around it does not read "
+          "with it)",
+          name);
+    }
+    const std::string hint = name_hint(ctx, a, name);
     if (!hint.empty()) return hint;
   }
   // The LaTeX reader names the symbol as drawn, "\Omega_{space}": its plain name is the one to
@@ -282,7 +303,7 @@ std::string answer_name_hint(const Context& ctx, const std::string& typed,
     for (const char c : drawn) {
       if (c != '\\' && c != '{' && c != '}' && c != ' ') plain += c == ',' ? '_' : c;
     }
-    return name_hint(ctx, plain);
+    return name_hint(ctx, a, plain);
   }
   const std::string ascii = sym::to_ascii(typed);
   for (std::size_t i = 0; i < ascii.size();) {
@@ -295,11 +316,41 @@ std::string answer_name_hint(const Context& ctx, const std::string& typed,
     while (end < ascii.size() &&
            (std::isalnum(static_cast<unsigned char>(ascii[end])) || ascii[end] == '_'))
       ++end;
-    const std::string hint = name_hint(ctx, ascii.substr(i, end - i));
+    const std::string hint = name_hint(ctx, a, ascii.substr(i, end - i));
     if (!hint.empty()) return hint;
     i = end;
   }
   return "";
+}
+
+// " (the key's steps' I1, I3, omega3 and its answers' names up to part (b) read too)": where a name
+// is refused and no name in `typed` has a hint, what may be written besides the problem's symbols
+// (the reader's list names those); "" where the key reads no other name in `a`.
+std::string names_read_too(const Context& ctx, const Answer& a) {
+  std::vector<std::string> steps;
+  for (const DefinedName& d : ctx.key.defined_names) {
+    if (d.name != a.name && !ctx.table.contains(d.name)) steps.push_back(d.name);
+  }
+  bool earlier = false;
+  for (const auto& part : ctx.key.parts) {
+    for (const auto& b : part.answers) earlier = earlier || referable_answer(ctx, a, b.name);
+  }
+  if (steps.empty() && !earlier) return "";
+  const std::string names =
+      steps.empty() ? "" : fmt::format("the key's steps' {}", fmt::join(steps, ", "));
+  if (!earlier) return " (" + names + " read too)";
+  const PartKey* part = part_answering(ctx.key, a.name);
+  return " (" + names + (steps.empty() ? "the key's" : " and its") + " answers' names" +
+         (part == nullptr ? "" : " up to part (" + part->id + ")") + " read too)";
+}
+
+// first_name_hint, else where the reader refused a name, the names the key reads besides the
+// problem's symbols.
+std::string answer_name_hint(const Context& ctx, const Answer& a, const std::string& typed,
+                             const std::string& message) {
+  if (std::string hint = first_name_hint(ctx, a, typed, message); !hint.empty()) return hint;
+  if (undefined_name(message).empty() && latex_unknown_symbol(message).empty()) return "";
+  return names_read_too(ctx, a);
 }
 
 // "(0.0131, 0.1529) m" for the planar molecule's centre of mass: where a 3-vector's last entry
@@ -824,7 +875,7 @@ Verdict judge_as_written(const Context& ctx, const Answer& a, const std::string&
   // "15,5deg" reads as two entries, one without a unit: say what was more likely meant.
   const auto refused = [&](const std::string& message) {
     return InputError(message + misreading_hint(a, text, std::nullopt) +
-                      answer_name_hint(ctx, text, message) + imaginary_hint(a, text, message));
+                      answer_name_hint(ctx, a, text, message) + imaginary_hint(a, text, message));
   };
   // A number wanted: bare i, j and k are names of the student's own ("k²", "k'^2", "4K(k)/λ",
   // k the elliptic modulus), no unit vectors, and the text is refused as it reads as written.
@@ -951,7 +1002,13 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
     // A name the key itself reads (a convention's, its steps', an entry's), unlike an answer's
     // name, is no longer what keeps the answer from reading.
     const bool key_names = referenced.has_value();
-    if (!referenced) referenced = answer_referenced(ctx, a, text, e.what());
+    try {
+      if (!referenced) referenced = answer_referenced(ctx, a, text, e.what());
+    } catch (const InputError& then) {
+      // "\frac{p_\psi}{Q}": the LaTeX reader, the names put in, refuses another symbol.
+      const bool symbol = !latex_unknown_symbol(then.what()).empty();
+      throw InputError(then.what() + (symbol ? names_read_too(ctx, a) : ""));
+    }
     if (!referenced) throw;
     const std::exception_ptr refusal = std::current_exception();
     Verdict v;
@@ -973,15 +1030,19 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
       // as an expression; the refusal of the unit, as typed, says more than the forms put in.
       const bool unit_refused = !quoted_after(first, "cannot read the unit").empty();
       if (unit_refused && !other.empty()) std::rethrow_exception(refusal);
-      // "I₃ω₃''": the steps' names read, the text around them does not; said of the text as
-      // typed, not of the forms put in.
-      const bool quote_typed = key_names && same_entry && other.empty();
+      // "I₃ω₃''", "Ω_body + ω" for a vector: the names read, the text around them does not;
+      // said of the text as typed, not of the forms put in.
+      const bool quote_typed = same_entry && other.empty();
       // The key's names read, what still keeps the answer from reading is said: a vector for
       // a matrix or a number, or another entry's unknown name.
       if (key_names && !quote_typed && (other.empty() || !same_entry)) throw;
       if (!quote_typed && (other.empty() || other == undefined_name(first) || !same_entry))
         std::rethrow_exception(refusal);  // the name as it was refused, with its hint
-      throw InputError(second.substr(0, at2) + first.substr(at1, end1 - at1) + second.substr(end2));
+      // "Ω_body + ω" for a vector: how the name was read, for what is then refused.
+      const std::string read_as =
+          quote_typed && referenced->note.starts_with("read with ") ? ", " + referenced->note : "";
+      throw InputError(second.substr(0, at2) + first.substr(at1, end1 - at1) + "\"" + read_as +
+                       second.substr(end2 + 1));
     }
     v.feedback.push_back(referenced->note + (v.correct ? referenced->when_right : ""));
     return v;

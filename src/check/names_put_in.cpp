@@ -82,6 +82,8 @@ std::string answer_begun(const Key& key, const std::string& name) {
   return found;
 }
 
+}  // namespace
+
 // The answer `name` names where `a` may be written in terms of it, as question (a) of the
 // rectangular solid writes I = I₀ diag(..) and t_max is π/Ω_space_rate: a number with a closed
 // form, of a part before a's or of a's own, not `a` itself; or a vector or matrix so, as PHY
@@ -105,6 +107,8 @@ const Answer* referable_answer(const Context& ctx, const Answer& a, const std::s
   }
   return nullptr;
 }
+
+namespace {
 
 // `ascii` with each name that `replacement` gives text for replaced by it, and whether any was;
 // a name starts at a letter after no letter, '_' or '.' ("2I0" is 2 times I0).
@@ -227,6 +231,15 @@ bool same_refusal(const std::string& a, const std::string& b) {
   return unknown_a == unknown_b;
 }
 
+// The refusal `with` names put in, listing the problem's symbols as `without` them does, not
+// every name put in ("lagrangian_0, p_phi, .."): the names are said where they read (judge.cpp).
+InputError problem_listed(const std::string& with, const std::string& without) {
+  constexpr std::string_view kListed = " is not one of this problem's symbols";
+  const std::size_t at_with = with.find(kListed), at_without = without.find(kListed);
+  if (at_with == std::string::npos || at_without == std::string::npos) return InputError(with);
+  return InputError(with.substr(0, at_with) + without.substr(at_without));
+}
+
 // Where `word`, its underscores left out ("Omega_1" as the question's Ω₁, "phi_dot"), is among
 // `spelled`.
 std::optional<std::size_t> index_spelled(const std::vector<std::string>& spelled,
@@ -270,11 +283,11 @@ std::optional<NamesPutIn> names_put_in(
     } catch (const InputError& with) {
       // Where the names make no difference to what the LaTeX reader refuses, the refusal
       // stands as it was (that symbol, or "ẑ, ê₃ mix bases" from a later reading).
-      const std::exception_ptr with_names_refusal = std::current_exception();
       try {
         (void)latex_as_text(text, ctx.table, kField);
       } catch (const InputError& without) {
-        if (!same_refusal(with.what(), without.what())) std::rethrow_exception(with_names_refusal);
+        if (!same_refusal(with.what(), without.what()))
+          throw problem_listed(with.what(), without.what());
       }
       return std::nullopt;
     }
@@ -329,10 +342,25 @@ std::optional<std::pair<std::string, std::string>> latex_with_answer_names(
       }
     }
   }
+  // "\frac{p_\psi}{I_3}": the steps' names as well, read in turn (defined_named) from the
+  // plain text this gives. Not a primed one (no LaTeX name) nor a's own (ω₃ for ω₃).
+  for (const DefinedName& d : ctx.key.defined_names) {
+    if (d.name != a.name && d.name.find('\'') == std::string::npos &&
+        !with_answers.contains(d.name))
+      with_answers.declare(d.name, name_latex(d.name), sym::SymbolSign::real);
+  }
   std::string ascii;
   try {
     ascii = latex_as_text(text, with_answers, kField);
-  } catch (const InputError&) {
+  } catch (const InputError& with) {
+    // "\frac{p_\psi}{Q}": where the names make a difference to what is refused, the name
+    // that still keeps the text from reading is said, not the answer's.
+    try {
+      (void)latex_as_text(text, ctx.table, kField);
+    } catch (const InputError& without) {
+      if (!same_refusal(with.what(), without.what()))
+        throw problem_listed(with.what(), without.what());
+    }
     return std::nullopt;
   }
   for (const auto& [at, length] : identifiers(ascii)) {

@@ -30,6 +30,11 @@ std::string defined_spelling(const std::string& word);
 /// key), or nullptr.
 const PartKey* part_answering(const Key& key, const std::string& name);
 
+/// The answer named `name` (or begun by it: Omega for Omega_body_rate) that `a` may be written
+/// in terms of: one with a closed form, of a part before a's or of a's own, not `a` itself; or
+/// nullptr.
+const Answer* referable_answer(const Context& ctx, const Answer& a, const std::string& name);
+
 /// An answer's text with forms put in for names (plain text the reader reads), and the line of
 /// feedback that says which; `when_right` ends that line where the answer is judged right (": right
 /// as far as your I3 is"), which a wrong one is not.

@@ -984,8 +984,13 @@ TEST_CASE("a magnitude in bars reads, of an expression or of an earlier vector a
   const auto period = plate.check("t_max", "2π/Ω_space");
   REQUIRE_FALSE(period.correct);
   REQUIRE(period.feedback.back() == size_note);
+  // A vector's name in a sum with a number: read, the text is refused with how it was read.
   REQUIRE_THROWS_WITH(plate.check("Omega_space", "Ω_body + ω"),
-                      Catch::Contains("Omega_body is the answer to part (e)"));
+                      Catch::Contains("\"Omega_body + omega\", read with Omega_body as the key's "
+                                      "answer to part (e): it is not a complete expression"));
+  REQUIRE_THROWS_WITH(plate.check("Omega_space", "Ω_body + Q"),
+                      Catch::Contains("undefined symbol 'Q'") &&
+                          Catch::Contains("(the key's answers' names up to part (e) read too)"));
   // The magnitude of a name that is no answer is refused as that name.
   REQUIRE_THROWS_WITH(plate.check("t_max", "π/|Q|"), Catch::Contains("undefined symbol 'Q'"));
 }
@@ -1599,9 +1604,31 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
   const auto both = top.check("omega3", "p_ψ/I₃");
   REQUIRE(both.correct);
   REQUIRE(both.feedback.size() == 2);
+  // In LaTeX alike: the answer's name and the steps' read together.
+  const auto both_latex = top.check("omega3", "\\frac{p_\\psi}{I_3}");
+  REQUIRE(both_latex.correct);
+  REQUIRE(both_latex.feedback == both.feedback);
   // Not the answer's own name: ω₃ for ω₃ is no working.
   REQUIRE_THROWS_WITH(top.check("omega3", "ω₃"),
                       Catch::Contains("omega3 is the answer to part (c)"));
+  REQUIRE_THROWS_WITH(top.check("omega3", "\\omega_3"),
+                      Catch::Contains("omega3 is the answer to part (c)"));
+  // A name that reads is not what the line blames where another does not: the line says what
+  // may be written besides the problem's symbols, not "p_psi .. write it in the problem's
+  // symbols"; in LaTeX, the name still refused, the problem's symbols listed.
+  for (const std::string typed : {"Q + p_psi^2/(2 I3)", "p_ψ²/(2I₃) + Q"}) {
+    INFO(typed);
+    REQUIRE_THROWS_WITH(top.check("energy", typed),
+                        Catch::Contains("undefined symbol 'Q'") &&
+                            Catch::Contains("(the key's steps' I1, I3, omega3 and its answers' "
+                                            "names up to part (a) read too)") &&
+                            !Catch::Contains("write it in"));
+  }
+  REQUIRE_THROWS_WITH(top.check("omega3", "\\frac{p_\\psi}{Q}"),
+                      Catch::EndsWith("Q is not one of this problem's symbols (M, R, l, g, "
+                                      "\\theta_0, \\dot\\theta_0, \\dot\\phi_0, "
+                                      "\\dot\\psi_0) (the key's steps' I1, I3 and its answers' "
+                                      "names up to part (c) read too)"));
   // Where another name still keeps the answer from reading, that one is said.
   REQUIRE_THROWS_WITH(top.check("omega3_min", "2√(M g l I₁)/q"),
                       Catch::Contains("undefined symbol 'q'"));
