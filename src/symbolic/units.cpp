@@ -239,9 +239,13 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       i = text.find_first_not_of(' ', i + 1) + 1;
       continue;
     }
+    // "m/s/s", as "metres per second per second" is said: each '/' after the first divides too
+    // (m/s² = m/(s s)), the only reading of it (a unit after each).
     if (c == '/') {
-      if (denominator || !any) return fail("one '/' after a unit");
+      if (!any) return fail("a unit before the '/'");
+      if (denominator && !after_denominator) return fail("a unit after the '/'");
       denominator = true;
+      after_denominator = false;
       ++i;
       continue;
     }
@@ -265,9 +269,11 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       name = "sidereal day";
       j = end;
     }
-    if (name == "per") {  // "radians per second"
-      if (denominator || !any) return fail("one 'per' or '/' after a unit");
+    if (name == "per") {  // "radians per second", "metres per second per second"
+      if (!any) return fail("a unit before 'per'");
+      if (denominator && !after_denominator) return fail("a unit after the 'per' or '/'");
       denominator = true;
+      after_denominator = false;
       i = j;
       continue;
     }

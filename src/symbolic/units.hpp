@@ -5,7 +5,9 @@
 ///
 /// A unit is a product of names with integer powers, '/' putting what follows in the
 /// denominator: "kg m^2", "kg*m^2/s", "rad/s", "m/s^2", "deg", "rev/s", "1/s" (or "s^-1"), in one
-/// pair of brackets or not ("[kg m^2]", "(rad/s)", as a table's heading writes a unit).
+/// pair of brackets or not ("[kg m^2]", "(rad/s)", as a table's heading writes a unit). A
+/// second '/' or "per" divides too: "m/s/s" and "metres per second per second" are m/s², "J/kg
+/// s" and "J/kg/s" alike J/(kg s).
 /// Names: kg, g; m, cm, mm; s, ms, min, h, day (days), week, sidereal day (two words, 86164.0905
 /// s), yr (the Julian year); rad, deg, arcmin,
 /// arcsec, rev; J, N, Hz, rpm, rps; and an SI prefix (G, M, k, m, mu or u, n) on g, m, s, J, N and

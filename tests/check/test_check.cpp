@@ -140,17 +140,31 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   REQUIRE_THAT(parse_unit("arcsec", "u").to_si, WithinRel(M_PI / 180 / 3600, 1e-15));
   REQUIRE_THAT(parse_unit("arcminutes", "u").to_si, WithinRel(M_PI / 180 / 60, 1e-15));
   REQUIRE(parse_unit("arcsec", "u").angle);
+  // Each '/' or "per" after the first divides too, as "metres per second per second" is said.
+  for (const auto& [written, same] :
+       std::vector<std::pair<std::string, std::string>>{{"m/s/s", "m/s^2"},
+                                                        {"m per s per s", "m/s^2"},
+                                                        {"m / s per s", "m/s^2"},
+                                                        {"1/s/s", "s^-2"},
+                                                        {"rad/s/s", "rad/s^2"},
+                                                        {"J/kg/s", "J/kg s"},
+                                                        {"kg m^2/s/s", "J"}}) {
+    INFO(written);
+    const Unit u = parse_unit(written, "u");
+    REQUIRE(u.dim == parse_unit(same, "u").dim);
+    REQUIRE_THAT(u.to_si, WithinULP(parse_unit(same, "u").to_si, 0));
+  }
   // Units run together are refused, with the same written apart to copy.
   REQUIRE_THROWS_WITH(parse_unit("kgm^2", "u"),
                       Catch::Contains("unknown unit 'kgm' ('kg m', with spaces?)"));
   REQUIRE_THROWS_WITH(parse_unit("Nm", "u"), Catch::Contains("('N m', with spaces?)"));
   REQUIRE_THROWS_WITH(parse_unit("furlong", "u"), !Catch::Contains("with spaces?"));
   for (const std::string bad :
-       {"furlong",       "kg^x",        "m/s/s", "/s",    "kg^123", "",
-        "kg m^2 !",      "1/",          "2/s",   "1/s/s", "s^(-1",  "s^()",
-        "s^(-)",         "s^(-1))",     "kg-",   "kg.",   ".kg",    "-kg",
-        "m22",           "kg..m",       "rad/",  "kg /",  "per s",  "rad per",
-        "m per s per s", "m / s per s", "pers",  "m-",    "m2-",    "s--1"}) {
+       {"furlong", "kg^x",  "m//s",    "/s",          "kg^123",      "",          "kg m^2 !",
+        "1/",      "2/s",   "1/s/",    "s^(-1",       "s^()",        "s^(-)",     "s^(-1))",
+        "kg-",     "kg.",   ".kg",     "-kg",         "m22",         "kg..m",     "rad/",
+        "kg /",    "per s", "rad per", "m per s per", "m per per s", "m / per s", "pers",
+        "m-",      "m2-",   "s--1"}) {
     INFO(bad);
     REQUIRE_THROWS_AS(parse_unit(bad, "--answer"), InputError);
   }
