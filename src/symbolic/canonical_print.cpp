@@ -259,10 +259,32 @@ class Printer {
     return out;
   }
 
-  // A sum whose first term is negative prints as -(...), so s and -s differ only by that sign.
+  // The terms joined as join_terms; where the first (by key) is then negative, the positive
+  // ones first (each group in key order): "b - a" for -a + b, as a book writes it.
+  static std::string join_positive_first(const std::vector<Term>& terms, bool flip) {
+    if (terms.front().negative == flip) return join_terms(terms, flip);
+    std::vector<Term> ordered;
+    for (const bool negative : {false, true}) {
+      for (const Term& t : terms) {
+        if ((t.negative != flip) == negative) ordered.push_back(t);
+      }
+    }
+    return join_terms(ordered, flip);
+  }
+
+  // Whether the sum, its signs flipped if `flip`, has a positive term: its sign can go in.
+  static bool has_positive(const std::vector<Term>& terms, bool flip) {
+    return std::any_of(terms.begin(), terms.end(),
+                       [&](const Term& t) { return t.negative == flip; });
+  }
+
+  // A sum whose first term (by key) is negative prints its positive terms first, "ψ - π/2", and
+  // as -(...) where it has none. Either way the text depends on the sum alone, not on whether
+  // GiNaC holds it as s or as -1 times -s (a number times a sum is distributed).
   std::string print_sum(const ex& e) {
     const auto& terms = sum_terms(e);
     if (!terms.front().negative) return join_terms(terms, false);
+    if (has_positive(terms, false)) return join_positive_first(terms, false);
     return "-" + paren(join_terms(terms, true));
   }
 
@@ -321,9 +343,10 @@ class Printer {
     return b + "^" + (n.is_integer() ? str(n) : "(" + print(n) + ")");
   }
 
-  // (-sum)^n for a sum whose lead is negative: the flipped sum in parentheses.
-  std::string print_flipped_power(const ex& sum, const numeric& n) {
-    const std::string body = paren(join_terms(sum_terms(sum), true));
+  // (±sum)^n, the sum's signs flipped if `flip`, in parentheses: for a sum whose lead is
+  // negative, and for one that takes a product's sign (print_product), positive terms first.
+  std::string print_signed_power(const ex& sum, const numeric& n, bool flip) {
+    const std::string body = paren(join_positive_first(sum_terms(sum), flip));
     if (n == 1) return body;
     return latex() ? body + "^{" + str(n) + "}" : body + "^" + str(n);
   }
@@ -375,6 +398,23 @@ class Printer {
         if (n.is_odd()) coeff = -coeff;
       }
     }
+    // A product's sign goes into its one sum of an odd power that then leads with a positive
+    // term: H ω/(1 - H), not -H ω/(H - 1). Not where two or more could take it: -(10 m a² -
+    // λ)(5 m a² - λ)(7 m a² - λ) keeps its factors alike.
+    std::vector<bool> absorbed(factors.size(), false);
+    if (coeff.is_negative()) {
+      std::vector<std::size_t> takers;
+      for (std::size_t i = 0; i < factors.size(); ++i) {
+        const auto& [base, n] = factors[i];
+        if (is_a<GiNaC::add>(base) && n.is_integer() && n.is_odd() &&
+            has_positive(sum_terms(base), !flipped[i]))
+          takers.push_back(i);
+      }
+      if (takers.size() == 1) {
+        absorbed[takers[0]] = true;
+        coeff = -coeff;
+      }
+    }
     const bool negative = coeff.is_negative();
     const numeric c = GiNaC::abs(coeff);
     std::vector<std::string> num, den;
@@ -383,7 +423,9 @@ class Printer {
     for (std::size_t i = 0; i < factors.size(); ++i) {
       const auto& [base, n] = factors[i];
       const numeric power = n.is_positive() ? n : -n;
-      std::string text = flipped[i] ? print_flipped_power(base, power) : print_power(base, power);
+      std::string text = absorbed[i]  ? print_signed_power(base, power, !flipped[i])
+                         : flipped[i] ? print_signed_power(base, power, true)
+                                      : print_power(base, power);
       (n.is_positive() ? num : den).push_back(std::move(text));
     }
     const std::string sep = latex() ? " " : "*";

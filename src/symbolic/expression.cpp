@@ -684,7 +684,7 @@ GiNaC::ex over_one_denominator(const GiNaC::ex& e) {
 
 GiNaC::ex simplify(const GiNaC::ex& e) {
   // normal() gives numerator and denominator, unique up to a sign; each candidate below is a
-  // canonical form of them, and the canonical printer's length does not depend on GiNaC's
+  // canonical form of them, and the canonical printer's text does not depend on GiNaC's
   // run-dependent term order and signs, so the same candidate wins in every run (and any
   // form of the same rational function, as over_one_denominator's, gives the same).
   // numer_denom() returns the numerator and denominator normal() finds; numer_denom(normal())
@@ -700,14 +700,20 @@ GiNaC::ex simplify(const GiNaC::ex& e) {
     candidates.push_back(reduced(nd.op(0), false) / reduced(nd.op(1), false));
   }
   if (!has_function(e)) candidates.push_back(tidy(e));  // factored numerator and denominator
+  // The one with fewest minus signs, then the shortest: cos²α + 1, not 2 − sin²α, and √(3
+  // sin²α + 1), not √(4 − 3 cos²α) (the printer writes a sum's positive terms first, so that
+  // length alone no longer tells them apart).
   static const SymbolTable no_table;
+  const auto rank = [](const GiNaC::ex& c) {
+    const std::string text = to_text(c, no_table);
+    return std::pair{std::count(text.begin(), text.end(), '-'), text.size()};
+  };
   GiNaC::ex best = candidates[0];
-  std::size_t best_length = to_text(best, no_table).size();
+  auto best_rank = rank(best);
   for (std::size_t i = 1; i < candidates.size(); ++i) {
-    const std::size_t l = to_text(candidates[i], no_table).size();
-    if (l < best_length) {
+    if (const auto r = rank(candidates[i]); r < best_rank) {
       best = candidates[i];
-      best_length = l;
+      best_rank = r;
     }
   }
   return best;

@@ -919,8 +919,8 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
   const auto euler_period = wobble_rate.check("precession_period_body", "2π/Ω_body");
   REQUIRE(euler_period.correct);
   REQUIRE(euler_period.feedback ==
-          std::vector<std::string>{"read with Ω_body as Omega_body_rate = -H·ω·cos(α)/(H - "
-                                   "1), the key's answer to part (a): right as far as your "
+          std::vector<std::string>{"read with Ω_body as Omega_body_rate = H·ω·cos(α)/(1 - "
+                                   "H), the key's answer to part (a): right as far as your "
                                    "Ω_body is"});
   REQUIRE_FALSE(wobble_rate.check("precession_period_body", "π/Ω_body").correct);
   REQUIRE_THROWS_WITH(wobble_rate.check("Omega_body_rate", "Ω_body"),
@@ -1415,7 +1415,7 @@ TEST_CASE(
   REQUIRE(rates.correct);
   REQUIRE(rates.feedback ==
           std::vector<std::string>{
-              "read with c₁ = (I2 - I3)/I1, c₂ = -(I1 - I3)/I2, c₃ = (I1 - I2)/I3, entries of the "
+              "read with c₁ = (I2 - I3)/I1, c₂ = (I3 - I1)/I2, c₃ = (I1 - I2)/I3, entries of the "
               "key's answer euler_coefficients (part a): right as far as your c₁, c₂, c₃ are"});
   // An answer's own entries are no working, and a later answer's none to read.
   REQUIRE_THROWS_AS(top.check("Omega_axis1", "(Ω₂, Ω₃)"), InputError);

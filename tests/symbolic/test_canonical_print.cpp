@@ -27,6 +27,10 @@ const std::vector<std::string> kExpressions = {
     "Pi*a^3/4 - 7/3",
     "m^(3/2)*a^(-2/3)",
     "-(a - d1)*(a + d1)",
+    "alpha - Pi/2",
+    "-m*a/(m - M)",
+    "-(a - d1)*(M - d1)",
+    "-m - a",
 };
 }  // namespace
 
@@ -79,6 +83,30 @@ TEST_CASE("known spellings") {
   with_k.declare("K", "K", SymbolSign::positive);
   REQUIRE(to_latex(with_k.parse("K", "x") * GiNaC::EllipticK(with_k.parse("m/M", "x")), with_k) ==
           "K \\operatorname{EllipticK}\\left(\\frac{m}{M}\\right)");
+}
+
+TEST_CASE("a sum's positive terms come first, and a product's sign goes into its one sum") {
+  const SymbolTable t = table();
+  auto text = [&](const std::string& s) { return to_text(t.parse(s, "x"), t); };
+  auto latex = [&](const std::string& s) { return to_latex(t.parse(s, "x"), t); };
+  // "Pi/2" sorts before "alpha" and is negative: the positive term leads, however it is typed.
+  REQUIRE(text("alpha - Pi/2") == "alpha - Pi/2");
+  REQUIRE(text("-(Pi/2 - alpha)") == "alpha - Pi/2");
+  REQUIRE(latex("-(Pi/2 - alpha)") == "\\alpha - \\frac{\\pi}{2}");
+  // A sum with no positive term keeps its sign outside.
+  REQUIRE(text("-m - a") == "-(a + m)");
+  // Under a root, as a function's argument.
+  REQUIRE(text("sqrt(m^2/4 - a*M)") == "sqrt(m^2/4 - a*M)");
+  REQUIRE(text("sin(M - 2*a)") == "sin(M - 2*a)");
+  // The product's sign in its one sum of odd power: m a/(M - m), typed either way.
+  REQUIRE(text("-m*a/(m - M)") == "m*a/(M - m)");
+  REQUIRE(text("m*a/(M - m)") == "m*a/(M - m)");
+  REQUIRE(text("-a*(m - M)^3") == "a*(M - m)^3");
+  REQUIRE(latex("-m*a/(m - M)") == "\\frac{m a}{M - m}");
+  // Not into an even power, nor into a sum of one sign, nor where two sums could take it.
+  REQUIRE(text("-a*(m - M)^2") == "-a*(M - m)^2");
+  REQUIRE(text("-a*(m + M)") == "-a*(M + m)");
+  REQUIRE(text("-(a - d1)*(M - d1)") == "-(M - d1)*(a - d1)");
 }
 
 TEST_CASE("ln, arcsin, arccos and arctan are read as log, asin, acos and atan") {
@@ -218,9 +246,10 @@ TEST_CASE("a sum's terms are kept sorted for the table they were sorted with, an
   const GiNaC::ex product = alpha * GiNaC::pow(sum, 3);
   SymbolTable t;
   t.declare("a", "a", SymbolSign::positive);
-  REQUIRE(to_text(sum, t) == "-(b*c - b^2)");
-  REQUIRE(to_text(product, t) == "-alpha*(b*c - b^2)^3");
-  REQUIRE(to_latex(product, t) == "-\\alpha \\left(b c - b^{2}\\right)^{3}");
+  // b*c sorts first and is negative: the positive term leads, and the product's sign goes in.
+  REQUIRE(to_text(sum, t) == "b^2 - b*c");
+  REQUIRE(to_text(product, t) == "alpha*(b^2 - b*c)^3");
+  REQUIRE(to_latex(product, t) == "\\alpha \\left(b^{2} - b c\\right)^{3}");
   t.declare("c", "c", SymbolSign::positive);
   REQUIRE(to_text(sum, t) == "b^2 - c*b");
   REQUIRE(to_text(product, t) == "alpha*(b^2 - c*b)^3");
