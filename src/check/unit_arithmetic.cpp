@@ -171,9 +171,31 @@ std::string si_unit(const std::array<int, 3>& dim) {
   return out;
 }
 
-// The grouped text as typed, its units' names back: "2 π rad /(303.6 days)".
+// `text` with each angle in degrees that degrees_in_expression wrote as radians, "(30*pi/180)",
+// in degrees again: "sin(30°)", "cos(1°)" for "cos((1*pi/180))".
+std::string degrees_shown(const std::string& text) {
+  constexpr std::string_view kRadians = "*pi/180)";
+  std::string out = text;
+  for (std::size_t at = out.find(kRadians); at != std::string::npos; at = out.find(kRadians, at)) {
+    const std::size_t open = out.rfind('(', at);
+    const std::string number = open == std::string::npos ? "" : out.substr(open + 1, at - open - 1);
+    if (number.empty() || number.find_first_not_of("0123456789.eE+-") != std::string::npos) {
+      at += kRadians.size();
+      continue;
+    }
+    // A function's own bracket ("sin(30*pi/180)" for "sin 30 deg") stays a bracket.
+    const bool called = open > 0 && operand_char(out[open - 1]);
+    const std::string degrees = called ? "(" + number + "°)" : number + "°";
+    out.replace(open, at + kRadians.size() - open, degrees);
+    at = open + degrees.size();
+  }
+  return out;
+}
+
+// The grouped text as typed, its units' names back and its degrees as degrees: "2 π rad
+// /(303.6 days)", "cos(1°) * 2π rad / (303.6 days)".
 std::string shown(const std::string& grouped, const StandIns& s) {
-  std::string out = grouped;
+  std::string out = degrees_shown(grouped);
   for (std::size_t k = s.typed.size(); k-- > 0;) {
     const std::string name = stand_in(k);
     for (std::size_t at = out.find(name); at != std::string::npos; at = out.find(name, at))

@@ -1791,7 +1791,13 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
                       !Catch::Contains("worked out") && !Catch::Contains("work out"));
   // Degrees in a function's argument are radians, as elsewhere; an angle in radians there is a
   // pure number.
-  REQUIRE(earth.check("Omega_body_rate", "2π/(303.6 d) × cos 1°").correct);
+  const auto cosine = earth.check("Omega_body_rate", "2π/(303.6 d) × cos 1°");
+  REQUIRE(cosine.correct);
+  // The line writes the degrees as typed, not as the radians read: "cos(1°)".
+  REQUIRE(cosine.feedback.back() ==
+          "read with its units worked out: 2π/(303.6 day) * cos(1°) = 2.395e-07 rad/s");
+  REQUIRE(earth.check("Omega_body_rate", "cos((1°)) × 2π/(303.6 d)").feedback.back() ==
+          "read with its units worked out: cos((1°)) * 2π/(303.6 day) = 2.395e-07 rad/s");
   REQUIRE(earth.check("Omega_body_rate", "1 rev / 304.46 sidereal days / cos(0.1 rad)").correct);
   // A vector entry by entry: each entry that does not read as typed is worked out, in the key's
   // unit; the others stay as typed.
@@ -1800,8 +1806,8 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
       euler.check("omega_primed", "(−2 rad/s × sin 30°, 0.5 rad/s, 2 rad/s × cos 30° + 10 rad/s)");
   REQUIRE(omega.correct);
   REQUIRE(omega.feedback.back() ==
-          "read with its units worked out, entry 1: -2 rad/s * sin(30*π/180) = -1 rad/s; entry 3: "
-          "2 rad/s * cos(30*π/180) + 10 rad/s = 11.73 rad/s");
+          "read with its units worked out, entry 1: -2 rad/s * sin(30°) = -1 rad/s; entry 3: "
+          "2 rad/s * cos(30°) + 10 rad/s = 11.73 rad/s");
   const auto zero = euler.check("omega_primed", "(−2 rad/s × sin 30°, 0, 2 rad/s × cos 30°)");
   REQUIRE_FALSE(zero.correct);
   REQUIRE_THROWS_WITH(euler.check("omega_primed", "(−2 rad/s × sin 30°, 0.5 rad/s, 1 kg)"),
