@@ -1618,11 +1618,12 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
   // symbols"; in LaTeX, the name still refused, the problem's symbols listed.
   for (const std::string typed : {"Q + p_psi^2/(2 I3)", "p_ψ²/(2I₃) + Q"}) {
     INFO(typed);
-    REQUIRE_THROWS_WITH(top.check("energy", typed),
-                        Catch::Contains("undefined symbol 'Q'") &&
-                            Catch::Contains("(the key's steps' I1, I3, omega3 and its answers' "
-                                            "names up to part (a) read too)") &&
-                            !Catch::Contains("write it in"));
+    REQUIRE_THROWS_WITH(
+        top.check("energy", typed),
+        Catch::Contains("undefined symbol 'Q'") &&
+            Catch::Contains("(the key's steps' I1, I3, omega3 (ω3) and its answers' "
+                            "names up to part (a) read too)") &&
+            !Catch::Contains("write it in"));
   }
   REQUIRE_THROWS_WITH(top.check("omega3", "\\frac{p_\\psi}{Q}"),
                       Catch::EndsWith("Q is not one of this problem's symbols (M, R, l, g, "
