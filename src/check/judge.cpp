@@ -347,13 +347,20 @@ std::string names_read_too(const Context& ctx, const Answer& a) {
          (part == nullptr ? "" : " up to part (" + part->id + ")") + " read too)";
 }
 
+// Whether the reader's `message` refuses a name that may have been meant for one the key reads:
+// not a unit's ("kg is not one of this problem's symbols" for a unit inside arithmetic).
+bool name_refused(const std::string& message) {
+  std::string name = undefined_name(message);
+  if (name.empty()) name = latex_unknown_symbol(message);
+  return !name.empty() && !is_unit(name);
+}
+
 // first_name_hint, else where the reader refused a name, the names the key reads besides the
 // problem's symbols.
 std::string answer_name_hint(const Context& ctx, const Answer& a, const std::string& typed,
                              const std::string& message) {
   if (std::string hint = first_name_hint(ctx, a, typed, message); !hint.empty()) return hint;
-  if (undefined_name(message).empty() && latex_unknown_symbol(message).empty()) return "";
-  return names_read_too(ctx, a);
+  return name_refused(message) ? names_read_too(ctx, a) : "";
 }
 
 // "(0.0131, 0.1529) m" for the planar molecule's centre of mass: where a 3-vector's last entry
@@ -1009,8 +1016,7 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
       if (!referenced) referenced = answer_referenced(ctx, a, text, e.what());
     } catch (const InputError& then) {
       // "\frac{p_\psi}{Q}": the LaTeX reader, the names put in, refuses another symbol.
-      const bool symbol = !latex_unknown_symbol(then.what()).empty();
-      throw InputError(then.what() + (symbol ? names_read_too(ctx, a) : ""));
+      throw InputError(then.what() + (name_refused(then.what()) ? names_read_too(ctx, a) : ""));
     }
     if (!referenced) throw;
     const std::exception_ptr refusal = std::current_exception();

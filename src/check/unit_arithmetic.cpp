@@ -11,6 +11,7 @@
 #include "check/answer_reading.hpp"
 #include "check/brackets.hpp"
 #include "check/latex_answer.hpp"
+#include "check/latex_vocabulary.hpp"
 #include "check/typed_text.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
@@ -315,6 +316,43 @@ std::string upright_days(const std::string& latex, const sym::SymbolTable& table
   return out;
 }
 
+// `table` with each unit set upright in `latex` (\mathrm{kg}, \text{days}, the words of
+// \mathrm{rad/s}) declared as a name drawn so, where it is no symbol of the problem: the LaTeX
+// reader takes an upright unit for the value's only at the end, and so reads "0.5\,\mathrm{kg}
+// \cdot (0.05\,\mathrm{m})^2 \cdot 150\,\mathrm{rad/s}" as names, each a unit here.
+sym::SymbolTable upright_units_named(const std::string& latex, const sym::SymbolTable& table) {
+  sym::SymbolTable out = table;
+  for (std::size_t at = latex.find('\\'); at != std::string::npos; at = latex.find('\\', at + 1)) {
+    std::size_t name_end = at + 1;
+    while (name_end < latex.size() && std::isalpha(static_cast<unsigned char>(latex[name_end])))
+      ++name_end;
+    if (!text_wrappers().count(latex.substr(at + 1, name_end - at - 1)) ||
+        name_end >= latex.size() || latex[name_end] != '{')
+      continue;
+    const std::size_t close = latex.find('}', name_end);
+    if (close == std::string::npos) break;
+    const std::string inside = latex.substr(name_end + 1, close - name_end - 1);
+    for (const auto& [word_at, length] : identifiers(inside)) {
+      const std::string word = inside.substr(word_at, length);
+      if (is_unit(word) && !out.contains(word))
+        out.declare(word, "\\mathrm{" + word + "}", sym::SymbolSign::positive);
+    }
+  }
+  return out;
+}
+
+// LaTeX as the reader sets it in text, upright d as the day where d is no symbol; where that
+// reading refuses it, with its upright units named (upright_units_named).
+std::string latex_units_as_text(const std::string& typed, const sym::SymbolTable& table,
+                                const std::string& field) {
+  const std::string latex = upright_days(typed, table);
+  try {
+    return latex_as_text(latex, table, field);
+  } catch (const InputError&) {
+    return latex_as_text(latex, upright_units_named(latex, table), field);
+  }
+}
+
 // Whether a worked-out unit ("" for a pure number) is of the key's dimension.
 bool same_dimension(const std::string& unit, const std::string& key_unit) {
   return parse_unit(unit.empty() ? "1" : unit, "unit").dim == parse_unit(key_unit, "key unit").dim;
@@ -366,7 +404,7 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
     // "\frac{2\pi\,\mathrm{rad}}{303.6\,\mathrm{days}}": LaTeX as the reader sets it in text,
     // an upright d the day where d is no symbol (as after a value).
     const std::string text =
-        looks_like_latex(typed) ? latex_as_text(upright_days(typed, table), table, field) : typed;
+        looks_like_latex(typed) ? latex_units_as_text(typed, table, field) : typed;
     // "sin 30°", "cos(1 deg)": degrees in a function's argument as radians first, as the
     // reader reads them; d after a number as the day.
     const auto in_expression = [&](const std::string& name) {

@@ -1768,6 +1768,26 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
     REQUIRE(top.check("p_psi", typed).correct);
   }
   REQUIRE_FALSE(top.check("p_psi", "0.5 kg × (5 cm)² × 150/s").correct);  // twice it
+  // In LaTeX, an upright unit with factors after it, which the LaTeX reader takes for the
+  // value's own only at the end.
+  for (const char* typed :
+       {"0.5 \\cdot 0.5\\,\\mathrm{kg} \\cdot (0.05\\,\\mathrm{m})^2 \\cdot 150\\,\\mathrm{rad/s}",
+        "\\tfrac12\\,0.5\\,\\mathrm{kg}\\,(0.05\\,\\mathrm{m})^2\\,150\\,\\mathrm{rad/s}",
+        "\\frac{0.5\\,\\mathrm{kg}\\,(0.05\\,\\mathrm{m})^2}{2} \\times 150\\,\\mathrm{s^{-1}}"}) {
+    INFO(typed);
+    const auto v = top.check("p_psi", typed);
+    REQUIRE(v.correct);
+    REQUIRE_THAT(v.feedback.back(), Catch::EndsWith("= 0.09375 kg m^2/s"));
+  }
+  // A unit word alone is a unit too: 1/day is 48.3 times Euler's rate.
+  const auto per_day = earth.check("Omega_body_rate", "\\frac{1}{\\mathrm{day}}");
+  REQUIRE_FALSE(per_day.correct);
+  REQUIRE(per_day.feedback.back() ==
+          "read with its units worked out: ((1)/(day)) = 1.157e-05 rad/s");
+  // Where it does not work out, the unit refused is no name the key might read instead.
+  REQUIRE_THROWS_WITH(
+      top.check("p_psi", "0.5\\,\\mathrm{kg} \\cdot (0.05\\,\\mathrm{m})^2 \\cdot Q"),
+      Catch::Contains("kg is not one of this problem's symbols") && !Catch::Contains("read too"));
   // "1/2 kg" is half a kilogram where only that reading has the answer's dimension (1/(2 kg)
   // has not); a rate in rad/s is written in the key's unit.
   const auto half = top.check("p_psi", "1/2 × 1/2 kg × (5 cm)² × 150 rad/s");
