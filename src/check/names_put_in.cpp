@@ -240,6 +240,26 @@ InputError problem_listed(const std::string& with, const std::string& without) {
   return InputError(with.substr(0, at_with) + without.substr(at_without));
 }
 
+// LaTeX `text` as plain text, read with `with_names` (the problem's symbols and names the key
+// reads); nullopt where that reading refuses it as the problem's symbols alone do (that symbol,
+// or "ẑ, ê₃ mix bases" from a later reading).
+// @throws InputError where the names make a difference to what is refused: the name that still
+//   keeps the text from reading ("\frac{p_\psi}{Q}": Q, not the answer's p_ψ).
+std::optional<std::string> latex_with_names(const Context& ctx, const std::string& text,
+                                            const sym::SymbolTable& with_names) {
+  try {
+    return latex_as_text(text, with_names, kField);
+  } catch (const InputError& with) {
+    try {
+      (void)latex_as_text(text, ctx.table, kField);
+    } catch (const InputError& without) {
+      if (!same_refusal(with.what(), without.what()))
+        throw problem_listed(with.what(), without.what());
+    }
+    return std::nullopt;
+  }
+}
+
 // Where `word`, its underscores left out ("Omega_1" as the question's Ω₁, "phi_dot"), is among
 // `spelled`.
 std::optional<std::size_t> index_spelled(const std::vector<std::string>& spelled,
@@ -278,19 +298,9 @@ std::optional<NamesPutIn> names_put_in(
   }
   std::string ascii;
   if (looks_like_latex(text)) {
-    try {
-      ascii = latex_as_text(text, with_names, kField);
-    } catch (const InputError& with) {
-      // Where the names make no difference to what the LaTeX reader refuses, the refusal
-      // stands as it was (that symbol, or "ẑ, ê₃ mix bases" from a later reading).
-      try {
-        (void)latex_as_text(text, ctx.table, kField);
-      } catch (const InputError& without) {
-        if (!same_refusal(with.what(), without.what()))
-          throw problem_listed(with.what(), without.what());
-      }
-      return std::nullopt;
-    }
+    const std::optional<std::string> plain = latex_with_names(ctx, text, with_names);
+    if (!plain) return std::nullopt;
+    ascii = *plain;
   } else {
     const auto ours = [&](const std::string& word) -> std::optional<std::string> {
       return index_of(word) ? std::optional<std::string>(word) : std::nullopt;
@@ -349,20 +359,9 @@ std::optional<std::pair<std::string, std::string>> latex_with_answer_names(
         !with_answers.contains(d.name))
       with_answers.declare(d.name, name_latex(d.name), sym::SymbolSign::real);
   }
-  std::string ascii;
-  try {
-    ascii = latex_as_text(text, with_answers, kField);
-  } catch (const InputError& with) {
-    // "\frac{p_\psi}{Q}": where the names make a difference to what is refused, the name
-    // that still keeps the text from reading is said, not the answer's.
-    try {
-      (void)latex_as_text(text, ctx.table, kField);
-    } catch (const InputError& without) {
-      if (!same_refusal(with.what(), without.what()))
-        throw problem_listed(with.what(), without.what());
-    }
-    return std::nullopt;
-  }
+  const std::optional<std::string> plain = latex_with_names(ctx, text, with_answers);
+  if (!plain) return std::nullopt;
+  const std::string& ascii = *plain;
   for (const auto& [at, length] : identifiers(ascii)) {
     const std::string word = ascii.substr(at, length);
     if (!ctx.table.contains(word) && referable_answer(ctx, a, word) != nullptr)
