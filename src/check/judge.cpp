@@ -323,14 +323,14 @@ std::string first_name_hint(const Context& ctx, const Answer& a, const std::stri
   return "";
 }
 
-// " (the key's steps' I1, I3, omega3 (ω₃) and its answers' names up to part (b) read too)": where a
-// name is refused and no name in `typed` has a hint, what may be written besides the problem's
-// symbols (the reader's list names those); "" where the key reads no other name in `a`.
+// " (the key's steps' I1, I3, omega3 (ω3) and its answers' names up to part (b) read too)":
+// where a name is refused and no name in `typed` has a hint, what may be written besides the
+// problem's symbols (the reader's list names those); "" where the key reads no other name in `a`.
 std::string names_read_too(const Context& ctx, const Answer& a) {
   std::vector<std::string> steps;
   for (const DefinedName& d : ctx.key.defined_names) {
     if (d.name == a.name || ctx.table.contains(d.name)) continue;
-    // As the reader's list of symbols writes a Greek one: "omega3 (ω₃)".
+    // As the reader's list of symbols writes a Greek one: "omega3 (ω3)".
     const std::string drawn = sym::to_unicode(d.name);
     steps.push_back(drawn == d.name ? d.name : d.name + " (" + drawn + ")");
   }
