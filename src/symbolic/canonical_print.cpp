@@ -283,7 +283,6 @@ class Printer {
   // GiNaC holds it as s or as -1 times -s (a number times a sum is distributed).
   std::string print_sum(const ex& e) {
     const auto& terms = sum_terms(e);
-    if (!terms.front().negative) return join_terms(terms, false);
     if (has_positive(terms, false)) return join_positive_first(terms, false);
     return "-" + paren(join_terms(terms, true));
   }
@@ -423,9 +422,10 @@ class Printer {
     for (std::size_t i = 0; i < factors.size(); ++i) {
       const auto& [base, n] = factors[i];
       const numeric power = n.is_positive() ? n : -n;
-      std::string text = absorbed[i]  ? print_signed_power(base, power, !flipped[i])
-                         : flipped[i] ? print_signed_power(base, power, true)
-                                      : print_power(base, power);
+      // A sum's sign flipped to lead positive, or flipped back to take the product's.
+      std::string text = flipped[i] || absorbed[i]
+                             ? print_signed_power(base, power, flipped[i] != absorbed[i])
+                             : print_power(base, power);
       (n.is_positive() ? num : den).push_back(std::move(text));
     }
     const std::string sep = latex() ? " " : "*";

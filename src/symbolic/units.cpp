@@ -218,6 +218,17 @@ Unit parse_unit(const std::string& text, const std::string& field) {
         "'rad/s')");
   };
   bool denominator = false, any = false, after_denominator = false;
+  static const std::string kUnitAfterDivision = "a unit after each '/' or 'per'";
+  // A '/' or "per" (`sign`): what follows is in the denominator. "m/s/s", as "metres per second
+  // per second" is said: each after the first divides too (m/s² = m/(s s)), the only reading of
+  // it. What is missing ("a unit before 'per'"), or "".
+  const auto divide = [&](const std::string& sign) -> std::string {
+    if (!any) return "a unit before " + sign;
+    if (denominator && !after_denominator) return kUnitAfterDivision;
+    denominator = true;
+    after_denominator = false;
+    return "";
+  };
   std::size_t i = 0;
   while (i < text.size()) {
     const char c = text[i];
@@ -239,13 +250,8 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       i = text.find_first_not_of(' ', i + 1) + 1;
       continue;
     }
-    // "m/s/s", as "metres per second per second" is said: each '/' after the first divides too
-    // (m/s² = m/(s s)), the only reading of it (a unit after each).
     if (c == '/') {
-      if (!any) return fail("a unit before the '/'");
-      if (denominator && !after_denominator) return fail("a unit after the '/'");
-      denominator = true;
-      after_denominator = false;
+      if (const std::string missing = divide("the '/'"); !missing.empty()) return fail(missing);
       ++i;
       continue;
     }
@@ -270,10 +276,7 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       j = end;
     }
     if (name == "per") {  // "radians per second", "metres per second per second"
-      if (!any) return fail("a unit before 'per'");
-      if (denominator && !after_denominator) return fail("a unit after the 'per' or '/'");
-      denominator = true;
-      after_denominator = false;
+      if (const std::string missing = divide("'per'"); !missing.empty()) return fail(missing);
       i = j;
       continue;
     }
@@ -350,7 +353,7 @@ Unit parse_unit(const std::string& text, const std::string& field) {
     i = j;
   }
   if (!any) return fail("no unit");
-  if (denominator && !after_denominator) return fail("a unit after the '/'");
+  if (denominator && !after_denominator) return fail(kUnitAfterDivision);
   return u;
 }
 
