@@ -50,6 +50,7 @@ using detail::kField;
 using detail::latex_unknown_symbol;
 using detail::part_answering;
 using detail::primed_named;
+using detail::problem_listed;
 using detail::quoted_after;
 using detail::referable_answer;
 using detail::Referenced;
@@ -361,6 +362,50 @@ std::string answer_name_hint(const Context& ctx, const Answer& a, const std::str
                              const std::string& message) {
   if (std::string hint = first_name_hint(ctx, a, typed, message); !hint.empty()) return hint;
   return name_refused(message) ? names_read_too(ctx, a) : "";
+}
+
+// "0.5\,\mathrm{kg} \cdot Q", "0.5 kg × Q": arithmetic with units, refused for a unit in it
+// ("kg is not one of this problem's symbols", "cannot read the unit 'kg × Q'"), where another
+// name keeps it from being worked out (unit_arithmetic.hpp): that name's refusal, with the names
+// the key reads; nullopt where `refusal` names no unit or no such name is there.
+std::optional<InputError> refused_beside_units(const Context& ctx, const Answer& a,
+                                               const std::string& text,
+                                               const std::string& refusal) {
+  if (name_refused(refusal)) return std::nullopt;
+  if (looks_like_latex(text)) {
+    try {
+      (void)latex_units_as_text(text, ctx.table, kField);
+    } catch (const InputError& other) {
+      const std::string name = latex_unknown_symbol(other.what());
+      if (name.empty() || is_unit(name) || !is_unit(latex_unknown_symbol(refusal)))
+        return std::nullopt;
+      // Listing the problem's symbols as the first refusal does, not the units named.
+      return InputError(problem_listed(other.what(), refusal).what() + names_read_too(ctx, a));
+    }
+    return std::nullopt;
+  }
+  const std::string name = name_beside_units(text, ctx.table, kField);
+  if (name.empty() || key_reads(ctx, a, name)) return std::nullopt;
+  // Refused for a unit: read as a symbol or a function ("kg (0.05 m)^2"), or as the value's
+  // unit with the name in it ("0.5 kg × Q": 'kg × Q').
+  const std::string unit_text = sym::to_ascii(quoted_after(refusal, "cannot read the unit"));
+  if (!is_unit(undefined_name(refusal)) && !is_unit(quoted_after(refusal, "unknown function")) &&
+      unit_text.find(name) == std::string::npos)
+    return std::nullopt;
+  try {
+    (void)ctx.table.parse(name, kField);
+  } catch (const InputError& alone) {
+    // The reader's words for the name alone ("undefined symbol 'Q'; the symbols here are ..",
+    // with what it may have meant), said of the answer as typed.
+    const std::string said = alone.what();
+    const std::size_t at = said.find("undefined symbol");
+    if (at == std::string::npos) return std::nullopt;
+    constexpr std::size_t kShownCharacters = 60;
+    return InputError(fmt::format("{}: cannot read expression \"{}\": {}{}", kField,
+                                  printable(text, kShownCharacters), said.substr(at),
+                                  names_read_too(ctx, a)));
+  }
+  return std::nullopt;
 }
 
 // "(0.0131, 0.1529) m" for the planar molecule's centre of mass: where a 3-vector's last entry
@@ -1018,7 +1063,10 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
       // "\frac{p_\psi}{Q}": the LaTeX reader, the names put in, refuses another symbol.
       throw InputError(then.what() + (name_refused(then.what()) ? names_read_too(ctx, a) : ""));
     }
-    if (!referenced) throw;
+    if (!referenced) {
+      if (auto beside = refused_beside_units(ctx, a, text, e.what())) throw *beside;
+      throw;
+    }
     const std::exception_ptr refusal = std::current_exception();
     Verdict v;
     try {

@@ -202,6 +202,14 @@ std::string name_in_magnitude(const std::string& ascii) {
 
 }  // namespace
 
+// Names put in said where they read (judge.cpp), not in the list: "lagrangian_0, p_phi, ..".
+InputError problem_listed(const std::string& with, const std::string& without) {
+  constexpr std::string_view kListed = " is not one of this problem's symbols";
+  const std::size_t at_with = with.find(kListed), at_without = without.find(kListed);
+  if (at_with == std::string::npos || at_without == std::string::npos) return InputError(with);
+  return InputError(with.substr(0, at_with) + without.substr(at_without));
+}
+
 namespace {
 // A name as LaTeX draws it, as a problem file spells its own: "phidot" -> "\dot\phi", "omega3"
 // -> "\omega_3", "I1" -> "I_1". The LaTeX reader lists the symbols so.
@@ -229,15 +237,6 @@ bool same_refusal(const std::string& a, const std::string& b) {
   const std::string unknown_a = latex_unknown_symbol(a), unknown_b = latex_unknown_symbol(b);
   if (unknown_a.empty() || unknown_b.empty()) return a == b;
   return unknown_a == unknown_b;
-}
-
-// The refusal `with` names put in, listing the problem's symbols as `without` them does, not
-// every name put in ("lagrangian_0, p_phi, .."): the names are said where they read (judge.cpp).
-InputError problem_listed(const std::string& with, const std::string& without) {
-  constexpr std::string_view kListed = " is not one of this problem's symbols";
-  const std::size_t at_with = with.find(kListed), at_without = without.find(kListed);
-  if (at_with == std::string::npos || at_without == std::string::npos) return InputError(with);
-  return InputError(with.substr(0, at_with) + without.substr(at_without));
 }
 
 // LaTeX `text` as plain text, read with `with_names` (the problem's symbols and names the key

@@ -24,6 +24,10 @@ std::string refused_name(const std::string& message);
 /// The symbol the LaTeX reader's message says is none of the problem's, as drawn
 /// ("\Omega_{space}"), or "".
 std::string latex_unknown_symbol(const std::string& message);
+/// The LaTeX reader's refusal `with` more names than the problem's symbols, listing those as its
+/// refusal `without` them does ("Q is not one of this problem's symbols (M, R, ..)"); `with` as
+/// it is where either names no symbol.
+InputError problem_listed(const std::string& with, const std::string& without);
 /// A name as the key's DefinedName spells it: "I_3" and "I3" alike, and "w3" as ω₃ ("omega3").
 std::string defined_spelling(const std::string& word);
 /// The part of `key` whose answers include the one named `name` (answer names are unique in a

@@ -341,16 +341,60 @@ sym::SymbolTable upright_units_named(const std::string& latex, const sym::Symbol
   return out;
 }
 
-// LaTeX as the reader sets it in text, upright d as the day where d is no symbol; where that
-// reading refuses it, with its upright units named (upright_units_named).
+// `latex` with each unit set upright that divides ("\mathrm{rad/s}") as one upright word a
+// piece ("\mathrm{rad}/\mathrm{s}"): where more follows, the LaTeX reader takes an upright group
+// for one name ("rads"), not for the unit it takes after a value.
+std::string upright_quotients_split(const std::string& latex) {
+  std::string out;
+  std::size_t from = 0;
+  for (std::size_t at = latex.find('\\'); at != std::string::npos; at = latex.find('\\', at + 1)) {
+    std::size_t name_end = at + 1;
+    while (name_end < latex.size() && std::isalpha(static_cast<unsigned char>(latex[name_end])))
+      ++name_end;
+    const std::string wrapper = latex.substr(at + 1, name_end - at - 1);
+    if (!text_wrappers().count(wrapper) || name_end >= latex.size() || latex[name_end] != '{')
+      continue;
+    const std::size_t close = latex.find('}', name_end);
+    if (close == std::string::npos) break;
+    const std::string inside = latex.substr(name_end + 1, close - name_end - 1);
+    if (inside.find('/') == std::string::npos) continue;
+    const std::string opened = "\\" + wrapper + "{";
+    std::string split;
+    for (const char c : inside) split += c == '/' ? "}/" + opened : std::string(1, c);
+    out += latex.substr(from, at - from) + opened + split + "}";
+    from = close + 1;
+    at = close;
+  }
+  return out + latex.substr(from);
+}
+
+}  // namespace
+
 std::string latex_units_as_text(const std::string& typed, const sym::SymbolTable& table,
                                 const std::string& field) {
   const std::string latex = upright_days(typed, table);
   try {
     return latex_as_text(latex, table, field);
   } catch (const InputError&) {
-    return latex_as_text(latex, upright_units_named(latex, table), field);
+    const std::string split = upright_quotients_split(latex);
+    return latex_as_text(split, upright_units_named(split, table), field);
   }
+}
+
+namespace {
+
+// The answer as the reader reads it for its units ("sin 30°", "cos(1 deg)" with degrees in
+// radians first, d after a number as the day where d is no symbol); LaTeX set as text
+// (latex_units_as_text). @throws InputError where the reader refuses it so.
+std::string units_read_text(const std::string& typed, const sym::SymbolTable& table,
+                            const std::string& field) {
+  const std::string text =
+      looks_like_latex(typed) ? latex_units_as_text(typed, table, field) : typed;
+  const auto in_expression = [&](const std::string& name) {
+    return (table.contains(name) || sym::is_function_name(name)) && !table.contains("deg");
+  };
+  return days_written_d(degrees_in_expression(prepared(text, field), in_expression),
+                        [&](const std::string& name) { return table.contains(name); });
 }
 
 // Whether a worked-out unit ("" for a pure number) is of the key's dimension.
@@ -401,17 +445,8 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
                                                const std::string& key_unit) {
   std::string ascii;
   try {
-    // "\frac{2\pi\,\mathrm{rad}}{303.6\,\mathrm{days}}": LaTeX as the reader sets it in text,
-    // an upright d the day where d is no symbol (as after a value).
-    const std::string text =
-        looks_like_latex(typed) ? latex_units_as_text(typed, table, field) : typed;
-    // "sin 30°", "cos(1 deg)": degrees in a function's argument as radians first, as the
-    // reader reads them; d after a number as the day.
-    const auto in_expression = [&](const std::string& name) {
-      return (table.contains(name) || sym::is_function_name(name)) && !table.contains("deg");
-    };
-    ascii = days_written_d(degrees_in_expression(prepared(text, field), in_expression),
-                           [&](const std::string& name) { return table.contains(name); });
+    // "\frac{2\pi\,\mathrm{rad}}{303.6\,\mathrm{days}}", "2π/(303.6 d)".
+    ascii = units_read_text(typed, table, field);
   } catch (const InputError&) {
     return std::nullopt;
   }
@@ -432,6 +467,30 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
     }
   }
   return out;
+}
+
+std::string name_beside_units(const std::string& typed, const sym::SymbolTable& table,
+                              const std::string& field) {
+  if (looks_like_latex(typed)) return "";
+  std::string ascii;
+  try {
+    ascii = units_read_text(typed, table, field);
+  } catch (const InputError&) {
+    return "";
+  }
+  std::string other;
+  bool unit = false;
+  const auto ids = identifiers(ascii);
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const std::string word = ascii.substr(ids[k].first, ids[k].second);
+    if (word == "pi" || sym::is_function_name(word) || table.contains(word)) continue;
+    if (is_unit(word) || (word == "sidereal" && k + 1 < ids.size())) {
+      unit = true;
+    } else if (other.empty()) {
+      other = word;
+    }
+  }
+  return unit ? other : "";
 }
 
 std::optional<EntriesWorkedOut> entries_worked_out(const std::string& typed,

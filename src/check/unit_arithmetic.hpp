@@ -46,6 +46,19 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
                                                const std::string& field,
                                                const std::string& key_unit = "");
 
+/// LaTeX as the reader sets it in text, an upright d the day where d is no symbol; where that
+/// reading refuses it, with its upright units (\mathrm{kg}, \text{days}) read as names, each a
+/// unit here: "0.5\,\mathrm{kg} \cdot (0.05\,\mathrm{m})^2" as "0.5 kg*(0.05 m)^2".
+/// @throws InputError the second reading's refusal ("Q is not one of this problem's symbols").
+std::string latex_units_as_text(const std::string& typed, const sym::SymbolTable& table,
+                                const std::string& field);
+
+/// The name that keeps plain `typed` from being worked out with its units, as the reader reads
+/// it: the first that is neither a unit, a symbol of `table`, π nor a function, where a unit is
+/// there too ("0.5 kg × Q": Q); "" where there is none, or no unit, or `typed` is LaTeX.
+std::string name_beside_units(const std::string& typed, const sym::SymbolTable& table,
+                              const std::string& field);
+
 /// A vector's entries worked out so where one does not read as typed and holds a unit inside
 /// arithmetic ("(−2 rad/s × sin 30°, 0.5 rad/s, 2 rad/s × cos 30° + 10 rad/s)"): the vector
 /// with those entries as their numbers in `key_unit` (as units_worked_out), each other entry as
