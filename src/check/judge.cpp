@@ -384,14 +384,21 @@ std::optional<InputError> refused_beside_units(const Context& ctx, const Answer&
     }
     return std::nullopt;
   }
-  const std::string name = name_beside_units(text, ctx.table, kField);
-  if (name.empty() || key_reads(ctx, a, name)) return std::nullopt;
-  // Refused for a unit: read as a symbol or a function ("kg (0.05 m)^2"), or as the value's
+  // Refused for a unit read as a symbol or a function ("kg (0.05 m)^2"), or as the value's
   // unit with the name in it ("0.5 kg × Q": 'kg × Q').
+  const bool unit_as_name =
+      is_unit(undefined_name(refusal)) || is_unit(quoted_after(refusal, "unknown function"));
   const std::string unit_text = sym::to_ascii(quoted_after(refusal, "cannot read the unit"));
-  if (!is_unit(undefined_name(refusal)) && !is_unit(quoted_after(refusal, "unknown function")) &&
-      unit_text.find(name) == std::string::npos)
-    return std::nullopt;
+  const std::string name = name_beside_units(text, ctx.table, kField);
+  if (name.empty()) {
+    // "0.5 kg (0.05 m)² 150 rad/s", "0.5 kg (0.05 m)^2 150 rad/s)": every name a unit; what
+    // keeps it from reading is said.
+    const std::optional<std::string> units =
+        unit_as_name || !unit_text.empty() ? units_refusal(text, ctx.table, kField) : std::nullopt;
+    return units ? std::optional<InputError>(InputError(*units)) : std::nullopt;
+  }
+  if (key_reads(ctx, a, name)) return std::nullopt;
+  if (!unit_as_name && unit_text.find(name) == std::string::npos) return std::nullopt;
   try {
     (void)ctx.table.parse(name, kField);
   } catch (const InputError& alone) {

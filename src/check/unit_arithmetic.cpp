@@ -193,15 +193,22 @@ std::string degrees_shown(const std::string& text) {
   return out;
 }
 
-// The grouped text as typed, its units' names back and its degrees as degrees: "2 π rad
-// /(303.6 days)", "cos(1°) * 2π rad / (303.6 days)".
-std::string shown(const std::string& grouped, const StandIns& s) {
-  std::string out = degrees_shown(grouped);
+// `text` with its units' stand-ins written as the units typed.
+std::string units_restored(const std::string& text, const StandIns& s) {
+  std::string out = text;
+  // The last first: stand_in(1) begins stand_in(10).
   for (std::size_t k = s.typed.size(); k-- > 0;) {
     const std::string name = stand_in(k);
     for (std::size_t at = out.find(name); at != std::string::npos; at = out.find(name, at))
       out.replace(at, name.size(), s.typed[k]);
   }
+  return out;
+}
+
+// The grouped text as typed, its units' names back and its degrees as degrees: "2 π rad
+// /(303.6 days)", "cos(1°) * 2π rad / (303.6 days)".
+std::string shown(const std::string& grouped, const StandIns& s) {
+  std::string out = units_restored(degrees_shown(grouped), s);
   std::string with_pi;
   const auto ids = identifiers(out);
   std::size_t from = 0;
@@ -491,6 +498,30 @@ std::string name_beside_units(const std::string& typed, const sym::SymbolTable& 
     }
   }
   return unit ? other : "";
+}
+
+std::optional<std::string> units_refusal(const std::string& typed, const sym::SymbolTable& table,
+                                         const std::string& field) {
+  if (looks_like_latex(typed)) return std::nullopt;
+  std::string ascii;
+  try {
+    ascii = units_read_text(typed, table, field);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  const std::optional<StandIns> stood = units_stood_in(ascii, table, field);
+  if (!stood) return std::nullopt;
+  sym::SymbolTable with_units = table;
+  for (std::size_t k = 0; k < stood->units.size(); ++k)
+    with_units.declare(stand_in(k), stand_in(k), sym::SymbolSign::positive);
+  try {
+    (void)read_answer(stood->text, with_units, field);
+  } catch (const InputError& e) {
+    // Not where the reader quotes the text in part, a stand-in cut short.
+    std::string restored = units_restored(e.what(), *stood);
+    if (restored.find(kStandIn.substr(0, 6)) == std::string::npos) return restored;
+  }
+  return std::nullopt;
 }
 
 std::optional<EntriesWorkedOut> entries_worked_out(const std::string& typed,

@@ -59,6 +59,13 @@ std::string latex_units_as_text(const std::string& typed, const sym::SymbolTable
 std::string name_beside_units(const std::string& typed, const sym::SymbolTable& table,
                               const std::string& field);
 
+/// The reader's refusal of plain `typed` with each unit in it read as a factor, its units
+/// written back as typed: what keeps arithmetic with units all of which are units from being
+/// worked out ("0.5 kg (0.05 m)^2 150 rad/s": "products need '*'"); nullopt where it reads so,
+/// or has a name that is no unit, or no unit, or is LaTeX.
+std::optional<std::string> units_refusal(const std::string& typed, const sym::SymbolTable& table,
+                                         const std::string& field);
+
 /// A vector's entries worked out so where one does not read as typed and holds a unit inside
 /// arithmetic ("(−2 rad/s × sin 30°, 0.5 rad/s, 2 rad/s × cos 30° + 10 rad/s)"): the vector
 /// with those entries as their numbers in `key_unit` (as units_worked_out), each other entry as
