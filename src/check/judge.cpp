@@ -1045,6 +1045,14 @@ std::optional<Verdict> judged_worked_out(const Context& ctx, const Answer& a,
   return v;
 }
 
+// Where the quote that starts at `at` in a refusal ends: its closing '"', before ": " or, where
+// a name was put in, ", read with" ("\"I3 + (1,2)\", read with I3 = M·R²/2 ..: a ','"); npos
+// where `at` is.
+std::size_t quote_end(const std::string& refusal, std::size_t at) {
+  if (at == std::string::npos) return at;
+  return std::min(refusal.find("\": ", at), refusal.find("\", read with ", at));
+}
+
 // judge_one for the whole answer or the value after a label: an answer in terms of an earlier
 // one, "I₀ diag(2, 2, 1)", "π/Ω_space_rate", is read with the key's closed form for it
 // (answer_referenced), and so are the names the key itself reads (the steps' I₁ and ω₁′, a
@@ -1085,8 +1093,7 @@ Verdict judge_referring(const Context& ctx, const Answer& a, const std::string& 
       const std::string first = e.what(), second = then.what();
       const std::string quote = "expression \"";
       const std::size_t at1 = first.find(quote), at2 = second.find(quote);
-      const std::size_t end1 = at1 == std::string::npos ? at1 : first.find("\": ", at1);
-      const std::size_t end2 = at2 == std::string::npos ? at2 : second.find("\": ", at2);
+      const std::size_t end1 = quote_end(first, at1), end2 = quote_end(second, at2);
       // The same entry refused both times ("entry 1: "), or the quote is another entry's.
       const bool same_entry = end1 != std::string::npos && end2 != std::string::npos &&
                               first.compare(0, at1, second, 0, at2) == 0;

@@ -1630,6 +1630,14 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
                                       "\\theta_0, \\dot\\theta_0, \\dot\\phi_0, "
                                       "\\dot\\psi_0) (the key's steps' I1, I3 and its answers' "
                                       "names up to part (c) read too)"));
+  // Both an answer's name and a step's read, the text around them does not: said of the text as
+  // typed, with how each name was read, not as the first name's refusal.
+  REQUIRE_THROWS_WITH(top.check("energy_prime", "p_psi^2/(2*I3) + (1,2)"),
+                      "--answer: cannot read expression \"p_psi^2/(2*I3) + (1,2)\", read with "
+                      "p_psi = M·R²·ψ̇0/2, the key's answer to part (a), read with " +
+                          i3 +
+                          ", as the key's steps write it: a ',' where one expression was expected "
+                          "(a vector is written [x, y, z])");
   // Where another name still keeps the answer from reading, that one is said.
   REQUIRE_THROWS_WITH(top.check("omega3_min", "2√(M g l I₁)/q"),
                       Catch::Contains("undefined symbol 'q'"));
