@@ -1017,8 +1017,8 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
 // How a number worked out with its units was read, for its line: "2π rad / (303.6 days) =
 // 2.395e-07 rad/s".
 std::string worked_out_line(const UnitsWorkedOut& worked) {
-  return fmt::format("{} = {:.4g}{}{}", worked.grouped, worked.value_si,
-                     worked.unit.empty() ? "" : " ", worked.unit);
+  return fmt::format("{} = {:.4g}{}{}", sym::to_unicode(worked.grouped), worked.value_si,
+                     worked.unit.empty() ? "" : " ", sym::to_unicode(worked.unit));
 }
 
 // A number, or a vector's entries, worked out with its units (unit_arithmetic.hpp) judged as

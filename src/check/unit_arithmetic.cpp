@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -205,10 +206,45 @@ std::string units_restored(const std::string& text, const StandIns& s) {
   return out;
 }
 
+// `text` without brackets about one number or name ("((1)/(day))", as LaTeX's \frac is set in
+// text, as "1/day"; not a call's, "cos(x)") nor about all of it, and with a number times π as
+// "2π" ("2*pi", from "2\pi"): how it was read, as it would be written.
+std::string brackets_tidied(const std::string& text) {
+  // A letter, digit or point; π and ° (UTF-8, bytes past ASCII) too.
+  const auto atom_char = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '.' || c == '_' ||
+           static_cast<unsigned char>(c) >= 0x80;
+  };
+  std::string out = text;
+  for (std::size_t at = out.find("*pi"); at != std::string::npos; at = out.find("*pi", at + 1)) {
+    const bool name_goes_on = at + 3 < out.size() && atom_char(out[at + 3]);
+    if (at > 0 && std::isdigit(static_cast<unsigned char>(out[at - 1])) && !name_goes_on)
+      out.replace(at, 3, "π");
+  }
+  for (std::size_t open = out.find('('); open != std::string::npos;) {
+    const std::size_t close = out.find(')', open);
+    if (close == std::string::npos) break;
+    const bool atom = close > open + 1 &&
+                      std::all_of(out.begin() + static_cast<std::ptrdiff_t>(open + 1),
+                                  out.begin() + static_cast<std::ptrdiff_t>(close), atom_char);
+    const bool call = open > 0 && atom_char(out[open - 1]) && out[open - 1] != '.';
+    if (atom && !call) {
+      out.erase(close, 1);
+      out.erase(open, 1);
+      open = out.rfind('(', open);  // "((1))": the bracket about it may hold one now
+      if (open == std::string::npos) open = out.find('(');
+    } else {
+      open = out.find('(', open + 1);
+    }
+  }
+  if (wrapped(out, '(')) out = out.substr(1, out.size() - 2);
+  return out;
+}
+
 // The grouped text as typed, its units' names back and its degrees as degrees: "2 π rad
 // /(303.6 days)", "cos(1°) * 2π rad / (303.6 days)".
 std::string shown(const std::string& grouped, const StandIns& s) {
-  std::string out = units_restored(degrees_shown(grouped), s);
+  std::string out = units_restored(brackets_tidied(degrees_shown(grouped)), s);
   std::string with_pi;
   const auto ids = identifiers(out);
   std::size_t from = 0;

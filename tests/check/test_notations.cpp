@@ -1748,12 +1748,13 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
            {"2π/(303.6 d)", "2π/(303.6 day) = 2.395e-07 rad/s"},
            {"2π rad / 303.6 days", "2π rad / (303.6 days) = 2.395e-07 rad/s"},
            {"1 rev / 304.46 sidereal days", "1 rev / (304.46 sidereal days) = 2.395e-07 rad/s"},
-           {"2π rad/(303.6 × 86400 s)", "2π rad/(303.6 * 86400 s) = 2.395e-07 rad/s"},
+           {"2π rad/(303.6 × 86400 s)", "2π rad/(303.6 · 86400 s) = 2.395e-07 rad/s"},
            {"Ω_body = 2π/(303.6 days)", "2π/(303.6 days) = 2.395e-07 rad/s"},
-           // In LaTeX, units upright; an upright d the day where d is no symbol.
+           // In LaTeX, units upright; an upright d the day where d is no symbol. The line writes
+           // what was read as it would be written, not as \frac is set in text ("((2*π)/(..))").
            {"\\frac{2\\pi\\,\\mathrm{rad}}{303.6\\,\\mathrm{days}}",
-            "((2*π rad)/(303.6 days)) = 2.395e-07 rad/s"},
-           {"\\frac{2\\pi}{303.6\\,\\mathrm{d}}", "((2*π)/(303.6 day)) = 2.395e-07 rad/s"}}) {
+            "(2π rad)/(303.6 days) = 2.395e-07 rad/s"},
+           {"\\frac{2\\pi}{303.6\\,\\mathrm{d}}", "2π/(303.6 day) = 2.395e-07 rad/s"}}) {
     INFO(typed);
     const auto v = earth.check("Omega_body_rate", typed);
     REQUIRE(v.correct);
@@ -1785,13 +1786,19 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
     INFO(typed);
     const auto v = top.check("p_psi", typed);
     REQUIRE(v.correct);
-    REQUIRE_THAT(v.feedback.back(), Catch::EndsWith("= 0.09375 kg m^2/s"));
+    REQUIRE_THAT(v.feedback.back(), Catch::EndsWith("= 0.09375 kg m²/s"));
   }
+  // The line in the key's notation (·, ²), without the brackets \frac is set in as text.
+  REQUIRE(
+      top.check("p_psi",
+                "\\tfrac12\\,0.5\\,\\mathrm{kg}\\,(0.05\\,\\mathrm{m})^2\\,150\\,\\mathrm{rad/s}")
+          .feedback.back() ==
+      "read with its units worked out: (1/2)·0.5·kg·(0.05 m)²·150 rad/s "
+      "= 0.09375 kg m²/s");
   // A unit word alone is a unit too: 1/day is 48.3 times Euler's rate.
   const auto per_day = earth.check("Omega_body_rate", "\\frac{1}{\\mathrm{day}}");
   REQUIRE_FALSE(per_day.correct);
-  REQUIRE(per_day.feedback.back() ==
-          "read with its units worked out: ((1)/(day)) = 1.157e-05 rad/s");
+  REQUIRE(per_day.feedback.back() == "read with its units worked out: 1/day = 1.157e-05 rad/s");
   // Where another name keeps it from being worked out, that name is refused, not a unit read
   // for a symbol, with the names the key reads besides the problem's symbols; in LaTeX with the
   // symbols listed as LaTeX draws them, a quotient set upright ("\mathrm{rad/s}") with more after
@@ -1832,8 +1839,8 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
   const auto half = top.check("p_psi", "1/2 × 1/2 kg × (5 cm)² × 150 rad/s");
   REQUIRE(half.correct);
   REQUIRE(half.feedback.back() ==
-          "read with its units worked out: 1/2 * 1/2 kg * (5 cm)^2 * 150 "
-          "rad/s = 0.09375 kg m^2/s");
+          "read with its units worked out: 1/2 · 1/2 kg · (5 cm)² · 150 "
+          "rad/s = 0.09375 kg m²/s");
   // After a unit the juxtaposed denominator stays whole, whatever the dimension: a rate given
   // for Euler's period is a rate.
   REQUIRE(earth.check("precession_period_body", "2π rad / 303.6 days").wrong_dimension);
@@ -1855,9 +1862,9 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
   REQUIRE(cosine.correct);
   // The line writes the degrees as typed, not as the radians read: "cos(1°)".
   REQUIRE(cosine.feedback.back() ==
-          "read with its units worked out: 2π/(303.6 day) * cos(1°) = 2.395e-07 rad/s");
+          "read with its units worked out: 2π/(303.6 day) · cos(1°) = 2.395e-07 rad/s");
   REQUIRE(earth.check("Omega_body_rate", "cos((1°)) × 2π/(303.6 d)").feedback.back() ==
-          "read with its units worked out: cos((1°)) * 2π/(303.6 day) = 2.395e-07 rad/s");
+          "read with its units worked out: cos(1°) · 2π/(303.6 day) = 2.395e-07 rad/s");
   REQUIRE(earth.check("Omega_body_rate", "1 rev / 304.46 sidereal days / cos(0.1 rad)").correct);
   // A vector entry by entry: each entry that does not read as typed is worked out, in the key's
   // unit; the others stay as typed.
@@ -1866,8 +1873,8 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
       euler.check("omega_primed", "(−2 rad/s × sin 30°, 0.5 rad/s, 2 rad/s × cos 30° + 10 rad/s)");
   REQUIRE(omega.correct);
   REQUIRE(omega.feedback.back() ==
-          "read with its units worked out, entry 1: -2 rad/s * sin(30°) = -1 rad/s; entry 3: "
-          "2 rad/s * cos(30°) + 10 rad/s = 11.73 rad/s");
+          "read with its units worked out, entry 1: -2 rad/s · sin(30°) = -1 rad/s; entry 3: "
+          "2 rad/s · cos(30°) + 10 rad/s = 11.73 rad/s");
   const auto zero = euler.check("omega_primed", "(−2 rad/s × sin 30°, 0, 2 rad/s × cos 30°)");
   REQUIRE_FALSE(zero.correct);
   REQUIRE_THROWS_WITH(euler.check("omega_primed", "(−2 rad/s × sin 30°, 0.5 rad/s, 1 kg)"),
