@@ -18,6 +18,7 @@
 #include "check/brackets.hpp"
 #include "check/diagnosis.hpp"
 #include "check/euler_equations.hpp"
+#include "check/expression_dimension.hpp"
 #include "check/inequality.hpp"
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
@@ -790,6 +791,54 @@ AxesLayout listed_layout(const std::string& text) {
   return matrix_literal ? AxesLayout::rows_or_columns : AxesLayout::rows;
 }
 
+// "M R²/2 × 150 rad/s": an expression in the problem's symbols (in SI) with a unit after it that
+// is not the whole's but a number's in it, where the symbols' dimension and the unit's make the
+// answer's and the unit's alone does not: judged as that (the number most likely a
+// parameter's value where the key has its symbol, which the feedback names), with a line that
+// says how it was read; nullopt where it is not so.
+std::optional<Verdict> unit_of_a_number_in_it(const Context& ctx, const Answer& a,
+                                              const std::string& text, const ReadAnswer& p,
+                                              const Unit& key_unit, const Options& opt,
+                                              AxesLayout layout) {
+  if (!p.symbolic || !p.unit) return std::nullopt;
+  // An angle unit where the answer is a pure number that is no angle is wrong whatever it is of.
+  if (p.unit->angle && key_unit.dim == std::array<int, 3>{0, 0, 0} && !key_unit.angle)
+    return std::nullopt;
+  for (const auto& e : p.value.entries) {
+    if (e.is_zero()) continue;
+    const auto d = expression_dimension(e, ctx.key);
+    if (!d || d->mixed || !d->dim) return std::nullopt;
+    for (std::size_t k = 0; k < 3; ++k) {
+      if ((*d->dim)[k] + p.unit->dim[k] != key_unit.dim[k]) return std::nullopt;
+    }
+  }
+  ReadAnswer inside = p;
+  const GiNaC::ex factor = ctx.table.parse(p.unit->to_si_exact, "unit " + p.unit->text);
+  for (auto& e : inside.value.entries) e = e * factor;
+  inside.unit.reset();
+  Verdict v = judge_symbolic(ctx, a, text, inside, opt, layout);
+  if (v.wrong_dimension) {
+    // Wrong at the set values, where the judge says the symbols' dimension alone is not the
+    // answer's: said instead as the numbers there are wrong ("this is 2 times the answer").
+    const GiNaC::lst at = sym::substitution(ctx.table, ctx.values);
+    std::vector<double> got;
+    for (const auto& e : inside.value.entries) got.push_back(sym::evaluate(e, at, kField));
+    const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
+    v = Verdict{false, "incorrect: " + a.name + " (your expression differs from the key's)",
+                diagnose(j, key_unit, got, a.value.data)};
+  }
+  // Its dimension is the answer's: a line that says the symbols' alone is not is no help.
+  std::erase_if(v.feedback, [](const std::string& line) {
+    return line.starts_with("your expression's dimension is") ||
+           line.starts_with("your expression is a pure number");
+  });
+  v.feedback.push_back(fmt::format(
+      "read with {} as the unit of a number in it, not of the whole (with the problem's symbols "
+      "in SI, the whole is then in {})",
+      p.unit->text, a.unit.empty() ? "no unit" : a.unit));
+  return v;
+}
+
 // An answer read, `p`, judged against `a`.
 Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
                    const ReadAnswer& p, const Options& opt, AxesLayout layout) {
@@ -801,6 +850,8 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
     // only where the key is a pure number that is no angle.
     const bool pure_number_key = key_unit.dim == std::array<int, 3>{0, 0, 0} && !key_unit.angle;
     if (!p.unit->same_dimension(key_unit) || (p.unit->angle && pure_number_key)) {
+      if (auto inside = unit_of_a_number_in_it(ctx, a, text, p, key_unit, opt, layout))
+        return std::move(*inside);
       Verdict v;
       v.line = "incorrect: " + a.name + " has the wrong dimension";
       v.wrong_dimension = true;

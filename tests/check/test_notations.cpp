@@ -1741,6 +1741,35 @@ TEST_CASE("a textbook formula's principal moment or ω component is named as suc
                       Catch::Contains("cannot read the unit 'parsecs'"));
 }
 
+TEST_CASE("a unit after an expression in the symbols is a number's in it where only so it fits") {
+  // "M R²/2 × 150 rad/s": the symbols are in SI (kg m²), the unit the 150's; the whole in rad/s
+  // would be no momentum. Judged so, the number is named as the parameter's value the key
+  // writes as its symbol, and the line says how the unit was read.
+  const Fixture top("heavy-top");
+  const std::string read_as =
+      "read with rad/s as the unit of a number in it, not of the whole "
+      "(with the problem's symbols in SI, the whole is then in kg m^2/s)";
+  const auto spin = top.check("p_psi", "M R^2/2 × 150 rad/s");
+  REQUIRE_FALSE(spin.correct);
+  REQUIRE_FALSE(spin.wrong_dimension);
+  REQUIRE(spin.feedback == std::vector<std::string>{
+                               "it gives the key's value at the set values but not at others: 150 "
+                               "is the value of ψ̇₀ (psidot0): write the symbol",
+                               read_as});
+  // Wrong at the set values too: why, as for a number, not that the symbols alone are no
+  // momentum.
+  const auto twice = top.check("p_psi", "M R² × 150 rad/s");
+  REQUIRE_FALSE(twice.correct);
+  REQUIRE_THAT(twice.feedback.front(), Catch::StartsWith("this is 2 times the answer"));
+  REQUIRE(twice.feedback.back() == read_as);
+  // Where the unit does not make the answer's dimension with the symbols, it is the whole's.
+  const auto mass = top.check("p_psi", "M × 150 rad/s");
+  REQUIRE(mass.wrong_dimension);
+  REQUIRE_THAT(mass.feedback.front(), Catch::StartsWith("you gave rad/s (1 / time)"));
+  // An expression in SI with its unit written after it stays right.
+  REQUIRE(top.check("p_psi", "M R^2 psidot0/2 kg m^2/s").correct);
+}
+
 TEST_CASE("a number worked out with its units reads as the number it works out to") {
   // Euler's rate from its period, as a student works it on paper: each unit its SI factor.
   const Fixture earth("earth-free-precession");  // 2.395e-07 rad/s
