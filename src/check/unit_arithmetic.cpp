@@ -18,6 +18,7 @@
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/expression_guard.hpp"
+#include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 
 namespace wobble::check {
@@ -445,6 +446,39 @@ bool same_dimension(const std::string& unit, const std::string& key_unit) {
   return parse_unit(unit.empty() ? "1" : unit, "unit").dim == parse_unit(key_unit, "key unit").dim;
 }
 
+// Why `e` has no one dimension: where it is a sum of terms each of one, the units they are in
+// ("it adds unlike quantities: J and a pure number", a unit left off a term); else what may
+// make it so.
+std::string why_not_one(const GiNaC::ex& e, const std::vector<GiNaC::ex>& stand_ins,
+                        const std::vector<Unit>& units, const sym::SymbolTable& table,
+                        const std::string& field, const std::string& key_unit) {
+  const std::string unknown =
+      "it adds unlike quantities, or takes a root of a unit or a function of one";
+  if (!GiNaC::is_a<GiNaC::add>(e)) return unknown;
+  std::vector<std::string> seen;
+  for (const auto& term : e) {
+    const std::optional<Dimension> d = dimension_of(term, stand_ins, units, table, field);
+    if (!d || !d->one) return unknown;
+    const std::string unit = unit_written(d->power, key_unit);
+    const std::string said = unit.empty() ? "a pure number" : sym::to_unicode(unit);
+    if (std::find(seen.begin(), seen.end(), said) == seen.end()) seen.push_back(said);
+  }
+  if (seen.size() < 2) return unknown;
+  // In an order of their own (a sum's terms come in GiNaC's, which may change from run to run):
+  // the answer's unit first, a pure number last, with what it most often is.
+  const std::string kPure = "a pure number";
+  const bool pure = std::erase(seen, kPure) != 0;
+  const std::string answers = sym::to_unicode(key_unit);
+  std::sort(seen.begin(), seen.end(), [&](const std::string& x, const std::string& y) {
+    return std::make_pair(x != answers, x) < std::make_pair(y != answers, y);
+  });
+  if (pure) seen.push_back(kPure);
+  const std::string last = seen.back();
+  seen.pop_back();
+  return fmt::format("it adds unlike quantities: {} and {}{}", fmt::join(seen, ", "), last,
+                     pure ? " (a number without its unit?)" : "");
+}
+
 // `text`, with its units' stand-ins, worked out (units_worked_out, below).
 std::optional<UnitsWorkedOut> worked_out(const std::string& text, const StandIns& stood,
                                          const sym::SymbolTable& table, const std::string& field,
@@ -467,10 +501,9 @@ std::optional<UnitsWorkedOut> worked_out(const std::string& text, const StandIns
   const std::optional<Dimension> dimension = dimension_of(e, symbols, stood.units, table, field);
   if (!dimension) return std::nullopt;
   if (!dimension->one) {
-    throw InputError(fmt::format(
-        "{}: \"{}\" does not work out to one unit: it adds unlike quantities, or takes a "
-        "root of a unit or a function of one",
-        field, as_read));
+    throw InputError(fmt::format("{}: \"{}\" does not work out to one unit: {}", field,
+                                 sym::to_unicode(as_read),  // as the line of one that does
+                                 why_not_one(e, symbols, stood.units, table, field, key_unit)));
   }
   UnitsWorkedOut out;
   out.grouped = as_read;

@@ -1878,6 +1878,15 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
                       Catch::Contains("\"2π/(303.6 day) + 1 s\" does not work out to one unit"));
   REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "exp(1 m)/1 s"),
                       Catch::Contains("a function of one"));
+  // A sum's terms each of one unit: which, and a pure number among them said for what it most
+  // often is, a unit left off; the text quoted in the key's notation, as the line is.
+  REQUIRE_THROWS_WITH(earth.check("Omega_body_rate", "2π/(303.6 d) + 1 s"),
+                      Catch::EndsWith("it adds unlike quantities: rad/s and s"));
+  REQUIRE_THROWS_WITH(
+      top.check("energy", "0.5 kg × (0.05 m)² × (150 rad/s)²/4 + 0.5 × 9.81 × 0.08 × cos 30°"),
+      "--answer: \"0.5 kg · (0.05 m)² · (150 rad/s)²/4 + 0.5 · 9.81 · 0.08 · ...\" does not work "
+      "out to one unit: it adds unlike quantities: J and a pure number (a number without its "
+      "unit?)");
   // One term far outweighing the other is still a sum of unlike quantities.
   REQUIRE_THROWS_WITH(earth.check("precession_period_body", "1e12 m + 1 s"),
                       Catch::Contains("does not work out to one unit"));
