@@ -164,6 +164,17 @@ std::string to_unicode(const std::string& s) {
       while (j < s.size() && is_digit(s[j])) ++j;
       out += superscript(s.substr(i + 1, j - i - 1));
       i = j;
+    } else if (c == '^' && s.compare(i, 3, "^(-") == 0 && i + 3 < s.size() && is_digit(s[i + 3])) {
+      // "s^(-1)" -> "s⁻¹", as to_ascii reads a signed run of superscripts back.
+      std::size_t j = i + 3;
+      while (j < s.size() && is_digit(s[j])) ++j;
+      if (j < s.size() && s[j] == ')') {
+        out += superscript("-" + s.substr(i + 3, j - i - 3));
+        i = j + 1;
+      } else {
+        out += c;
+        ++i;
+      }
     } else if (c == '*') {
       out += "·";
       ++i;

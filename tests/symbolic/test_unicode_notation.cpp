@@ -1,0 +1,26 @@
+// The terminal's notation both ways: what to_unicode prints, to_ascii reads back as the same
+// text, so that a printed form pasted into `check` is what was printed.
+#include <catch2/catch.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "symbolic/unicode_notation.hpp"
+
+using wobble::sym::to_ascii;
+using wobble::sym::to_unicode;
+
+TEST_CASE("to_unicode prints powers as superscripts, a negative whole one too, and reads back") {
+  for (const auto& [ginac, printed] :
+       std::vector<std::pair<std::string, std::string>>{{"m*R^2/4", "m·R²/4"},
+                                                        {"150 s^(-1)", "150 s⁻¹"},
+                                                        {"kg*m^2*s^(-12)", "kg·m²·s⁻¹²"},
+                                                        // Not a whole power: left as it is.
+                                                        {"x^(-a)", "x^(-a)"},
+                                                        {"x^(-1/2)", "x^(-1/2)"}}) {
+    INFO(ginac);
+    REQUIRE(to_unicode(ginac) == printed);
+  }
+  REQUIRE(to_ascii("150 s⁻¹") == "150 s^(-1)");
+  REQUIRE(to_ascii(to_unicode("kg*m^2*s^(-12)")) == "kg*m^2*s^(-12)");
+}
