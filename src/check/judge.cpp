@@ -282,6 +282,15 @@ std::string unit_spelling_symbols(const Context& ctx, const std::string& unit_te
       words[0], symbol_described(ctx, words[0]), product);
 }
 
+// "M R²/2 × 150 rad/s × cos θ₀": a unit inside an expression in the symbols (arithmetic in
+// units alone is worked out, unit_arithmetic.hpp).
+std::string unit_inside_hint(const std::string& unit) {
+  return fmt::format(
+      " ({} is a unit: an expression in the problem's symbols is in SI, its numbers without "
+      "units; write the symbol whose value a number is, or one unit after the whole)",
+      unit);
+}
+
 // The hint of the first name in `typed` that has one ("I₀ diag(1, 1, 2)", as question (a)
 // writes I), the name the reader found undefined first (in "½I₃ω₃²" the text runs I₃ and ω₃
 // together; the reader, its stars written in, names ω₃).
@@ -297,10 +306,12 @@ std::string first_name_hint(const Context& ctx, const Answer& a, const std::stri
     }
     const std::string hint = name_hint(ctx, a, name);
     if (!hint.empty()) return hint;
+    if (is_unit(name)) return unit_inside_hint(name);
   }
   // The LaTeX reader names the symbol as drawn, "\Omega_{space}": its plain name is the one to
   // hint at, not a word of it ("space" begins space_cone_half_angle).
   if (const std::string drawn = latex_unknown_symbol(message); !drawn.empty()) {
+    if (is_unit(drawn) && !ctx.table.contains(drawn)) return unit_inside_hint(drawn);
     std::string plain;
     for (const char c : drawn) {
       if (c != '\\' && c != '{' && c != '}' && c != ' ') plain += c == ',' ? '_' : c;

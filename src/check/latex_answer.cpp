@@ -503,9 +503,15 @@ class Reader {
       // \mathrm{m}: a symbol set upright, or a word that names one.
       const std::size_t start = i_;
       take_command();
+      const std::size_t open = s_.find('{', i_);
       const std::string word = braced_word();
       if (function_names().count(word)) return function(word, word, depth);
       if (table_.contains(word)) return {word, true, false};
+      // "\mathrm{rad/s}" before more: a unit, named as typed, not as the word its letters make
+      // ("rads"); at the end the value's unit, read before here.
+      if (const std::string inside = s_.substr(open + 1, i_ - open - 2);
+          inside != word && is_unit(inside))
+        unknown_symbol(inside);
       i_ = start;
       return symbol_piece(atom());
     }

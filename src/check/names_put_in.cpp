@@ -204,10 +204,16 @@ std::string name_in_magnitude(const std::string& ascii) {
 
 // Names put in said where they read (judge.cpp), not in the list: "lagrangian_0, p_phi, ..".
 InputError problem_listed(const std::string& with, const std::string& without) {
-  constexpr std::string_view kListed = " is not one of this problem's symbols";
+  constexpr std::string_view kListed = " is not one of this problem's symbols (";
   const std::size_t at_with = with.find(kListed), at_without = without.find(kListed);
   if (at_with == std::string::npos || at_without == std::string::npos) return InputError(with);
-  return InputError(with.substr(0, at_with) + without.substr(at_without));
+  // The lists alone: what follows either (a hint on `without`'s own symbol) stays with it.
+  const std::size_t end_with = matching(with, at_with + kListed.size() - 1);
+  const std::size_t end_without = matching(without, at_without + kListed.size() - 1);
+  if (end_with == std::string::npos || end_without == std::string::npos) return InputError(with);
+  return InputError(with.substr(0, at_with) +
+                    without.substr(at_without, end_without + 1 - at_without) +
+                    with.substr(end_with + 1));
 }
 
 namespace {

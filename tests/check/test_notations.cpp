@@ -1768,6 +1768,19 @@ TEST_CASE("a unit after an expression in the symbols is a number's in it where o
   REQUIRE_THAT(mass.feedback.front(), Catch::StartsWith("you gave rad/s (1 / time)"));
   // An expression in SI with its unit written after it stays right.
   REQUIRE(top.check("p_psi", "M R^2 psidot0/2 kg m^2/s").correct);
+  // A unit inside, with more after it, is refused, with what to write; in LaTeX named as typed
+  // (\mathrm{rad/s}, not the letters "rads").
+  const std::string inside =
+      " is a unit: an expression in the problem's symbols is in SI, its "
+      "numbers without units; write the symbol whose value a number is, or "
+      "one unit after the whole)";
+  REQUIRE_THROWS_WITH(
+      top.check("p_phi", "M R²/2 × 150 rad/s × cos θ₀"),
+      Catch::Contains("undefined symbol 'rad'") && Catch::EndsWith("(rad" + inside));
+  REQUIRE_THROWS_WITH(
+      top.check("p_phi", "\\frac{M R^2}{2} \\cdot 150\\,\\mathrm{rad/s} \\cdot \\cos\\theta_0"),
+      Catch::StartsWith("--answer: rad/s is not one of this problem's symbols") &&
+          Catch::EndsWith("(rad/s" + inside));
 }
 
 TEST_CASE("a number worked out with its units reads as the number it works out to") {
