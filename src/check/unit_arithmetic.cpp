@@ -446,6 +446,27 @@ bool same_dimension(const std::string& unit, const std::string& key_unit) {
   return parse_unit(unit.empty() ? "1" : unit, "unit").dim == parse_unit(key_unit, "key unit").dim;
 }
 
+// `typed` as units_read_text reads it, with its units stood in (units_stood_in); nullopt where
+// the reader refuses it so, or it is not so.
+std::optional<StandIns> typed_stood_in(const std::string& typed, const sym::SymbolTable& table,
+                                       const std::string& field) {
+  std::string ascii;
+  try {
+    ascii = units_read_text(typed, table, field);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  return units_stood_in(ascii, table, field);
+}
+
+// `table` with the units' stand-ins declared, each a positive name.
+sym::SymbolTable with_stand_ins(const sym::SymbolTable& table, const StandIns& stood) {
+  sym::SymbolTable out = table;
+  for (std::size_t k = 0; k < stood.units.size(); ++k)
+    out.declare(stand_in(k), stand_in(k), sym::SymbolSign::positive);
+  return out;
+}
+
 // Why `e` has no one dimension: where it is a sum of terms each of one, the units they are in
 // ("it adds unlike quantities: J and a pure number", a unit left off a term); else what may
 // make it so.
@@ -483,10 +504,10 @@ std::string why_not_one(const GiNaC::ex& e, const std::vector<GiNaC::ex>& stand_
 std::optional<UnitsWorkedOut> worked_out(const std::string& text, const StandIns& stood,
                                          const sym::SymbolTable& table, const std::string& field,
                                          const std::string& key_unit) {
-  sym::SymbolTable with_units = table;
+  const sym::SymbolTable with_units = with_stand_ins(table, stood);
   std::vector<GiNaC::ex> symbols;
   for (std::size_t k = 0; k < stood.units.size(); ++k)
-    symbols.push_back(with_units.declare(stand_in(k), stand_in(k), sym::SymbolSign::positive));
+    symbols.push_back(with_units.at(stand_in(k)));
   GiNaC::ex e;
   try {
     const ReadAnswer read = read_answer(text, with_units, field);
@@ -519,14 +540,8 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
                                                const sym::SymbolTable& table,
                                                const std::string& field,
                                                const std::string& key_unit) {
-  std::string ascii;
-  try {
-    // "\frac{2\pi\,\mathrm{rad}}{303.6\,\mathrm{days}}", "2π/(303.6 d)".
-    ascii = units_read_text(typed, table, field);
-  } catch (const InputError&) {
-    return std::nullopt;
-  }
-  const std::optional<StandIns> stood = units_stood_in(ascii, table, field);
+  // "\frac{2\pi\,\mathrm{rad}}{303.6\,\mathrm{days}}", "2π/(303.6 d)".
+  const std::optional<StandIns> stood = typed_stood_in(typed, table, field);
   if (!stood) return std::nullopt;
   const std::string grouped = denominators_grouped(stood->text, true);
   std::optional<UnitsWorkedOut> out = worked_out(grouped, *stood, table, field, key_unit);
@@ -572,19 +587,10 @@ std::string name_beside_units(const std::string& typed, const sym::SymbolTable& 
 std::optional<std::string> units_refusal(const std::string& typed, const sym::SymbolTable& table,
                                          const std::string& field) {
   if (looks_like_latex(typed)) return std::nullopt;
-  std::string ascii;
-  try {
-    ascii = units_read_text(typed, table, field);
-  } catch (const InputError&) {
-    return std::nullopt;
-  }
-  const std::optional<StandIns> stood = units_stood_in(ascii, table, field);
+  const std::optional<StandIns> stood = typed_stood_in(typed, table, field);
   if (!stood) return std::nullopt;
-  sym::SymbolTable with_units = table;
-  for (std::size_t k = 0; k < stood->units.size(); ++k)
-    with_units.declare(stand_in(k), stand_in(k), sym::SymbolSign::positive);
   try {
-    (void)read_answer(stood->text, with_units, field);
+    (void)read_answer(stood->text, with_stand_ins(table, *stood), field);
   } catch (const InputError& e) {
     // Not where the reader quotes the text in part, a stand-in cut short.
     std::string restored = units_restored(e.what(), *stood);
