@@ -592,8 +592,14 @@ std::optional<std::string> units_refusal(const std::string& typed, const sym::Sy
   try {
     (void)read_answer(stood->text, with_stand_ins(table, *stood), field);
   } catch (const InputError& e) {
-    // Not where the reader quotes the text in part, a stand-in cut short.
     std::string restored = units_restored(e.what(), *stood);
+    // The text it quotes is the answer as typed (the reader quotes its own reading in part,
+    // the stand-ins' length taking the room, and may cut one short).
+    constexpr std::size_t kShownCharacters = 60;
+    const std::size_t open = restored.find('"');
+    const std::size_t close = open == std::string::npos ? open : restored.find("\": ", open + 1);
+    if (close != std::string::npos)
+      restored.replace(open + 1, close - open - 1, printable(typed, kShownCharacters));
     if (restored.find(kStandIn.substr(0, 6)) == std::string::npos) return restored;
   }
   return std::nullopt;

@@ -1869,8 +1869,12 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
   // Where every name is a unit, what keeps it from reading is said of the units as typed, not
   // that a unit is no function: a number after a power needs its '*', as it does after R².
   REQUIRE_THROWS_WITH(top.check("p_psi", "0.5 kg (0.05 m)² 150 rad/s"),
-                      "--answer: cannot read \"0.5 kg (0.05 m)^2 150 rad/s\": products need '*' "
+                      "--answer: cannot read \"0.5 kg (0.05 m)² 150 rad/s\": products need '*' "
                       "(0.5*kg*(0.05*m)^2*150*rad/s, not 0.5 kg (0.05 m)^2 150 rad/s)");
+  // The answer quoted as typed, whole, not the reader's reading of it cut short.
+  REQUIRE_THROWS_WITH(top.check("p_psi", "0.5 kg (0.05 m)^2 (150 rad/s"),
+                      "--answer: cannot read expression \"0.5 kg (0.05 m)^2 (150 rad/s\": a '(' "
+                      "is not closed");
   // With the quotient set upright first, its units are read as such before the factors after.
   REQUIRE(top.check("p_psi",
                     "0.5 \\cdot 0.5\\,\\mathrm{kg} \\cdot 150\\,\\mathrm{rad/s} \\cdot "
