@@ -175,6 +175,12 @@ std::string to_unicode(const std::string& s) {
         out += c;
         ++i;
       }
+    } else if (c == '^' && s.compare(i, 2, "^-") == 0 && i + 2 < s.size() && is_digit(s[i + 2])) {
+      // "s^-1", as a unit is written (GiNaC writes no such power): "s⁻¹".
+      std::size_t j = i + 2;
+      while (j < s.size() && is_digit(s[j])) ++j;
+      out += superscript("-" + s.substr(i + 2, j - i - 2));
+      i = j;
     } else if (c == '*') {
       out += "·";
       ++i;

@@ -4,9 +4,9 @@
 /// pastes back.
 ///
 /// Printing (to_unicode) turns GiNaC text into the terminal's notation: `*` -> `·`, `sqrt(` ->
-/// `√(`, `^2` -> `²`, `^(-1)` -> `⁻¹`, Greek names -> letters (`alpha` -> `α`, `Pi` -> `π`), a name
-/// with `dot` and digits -> the letter with a combining dot above (`phidot0` -> `φ̇0`). Reading
-/// (to_ascii) undoes every one of these and accepts the common variants a student types
+/// `√(`, `^2` -> `²`, `^(-1)` and `^-1` -> `⁻¹`, Greek names -> letters (`alpha` -> `α`, `Pi` ->
+/// `π`), a name with `dot` and digits -> the letter with a combining dot above (`phidot0` -> `φ̇0`).
+/// Reading (to_ascii) undoes every one of these and accepts the common variants a student types
 /// (`×` and `⋅` for `*`, `÷` for `/`, `−` for `-`, `√2` for `sqrt(2)`, superscripts with a sign
 /// `⁻⁴`, `°` for degrees, `″` and `′` after a number for seconds and minutes of arc, `µ`/`μ`), so
 /// that whatever wobble prints reads back as what it meant. Characters it does not know are left in

@@ -15,6 +15,8 @@ TEST_CASE("to_unicode prints powers as superscripts, a negative whole one too, a
        std::vector<std::pair<std::string, std::string>>{{"m*R^2/4", "m·R²/4"},
                                                         {"150 s^(-1)", "150 s⁻¹"},
                                                         {"kg*m^2*s^(-12)", "kg·m²·s⁻¹²"},
+                                                        // A unit as the SI's powers write it.
+                                                        {"kg m^2 s^-1", "kg m² s⁻¹"},
                                                         // Not a whole power: left as it is.
                                                         {"x^(-a)", "x^(-a)"},
                                                         {"x^(-1/2)", "x^(-1/2)"}}) {
@@ -22,5 +24,6 @@ TEST_CASE("to_unicode prints powers as superscripts, a negative whole one too, a
     REQUIRE(to_unicode(ginac) == printed);
   }
   REQUIRE(to_ascii("150 s⁻¹") == "150 s^(-1)");
+  REQUIRE(to_ascii(to_unicode("kg m^2 s^-1")) == "kg m^2 s^(-1)");
   REQUIRE(to_ascii(to_unicode("kg*m^2*s^(-12)")) == "kg*m^2*s^(-12)");
 }
