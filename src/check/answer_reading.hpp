@@ -58,6 +58,9 @@ struct ReadAnswer {
   sym::ValueText value;
   std::optional<Unit> unit;
   bool symbolic = false;  ///< has the problem's symbols (then a unit, if any, is an SI one)
+  /// Its numbers carry a unit that was written after it (judge.cpp's "M R²/2 × 150 rad/s"): the
+  /// symbols' dimension alone is not the answer's, and is not to be said to be.
+  bool unit_on_numbers = false;
   /// Read along bare unit vectors i, j, k only because the text as written did not read: what
   /// reading it as written said, for a caller that wants no vector (the letters are then names
   /// of the student's own, "k²" with k an elliptic modulus); else "".

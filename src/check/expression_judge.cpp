@@ -482,7 +482,8 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
     }
     if (!got.empty() && agree(got, want, j.scale)) continue;
     const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
-    const auto dimension = dimension_verdict(ctx, a, p.value, key, key_unit);
+    const auto dimension =
+        p.unit_on_numbers ? std::nullopt : dimension_verdict(ctx, a, p.value, key, key_unit);
     const std::string differs =
         "incorrect: " + a.name + " (your expression differs from the key's)";
     if (const auto factor = factor_after_last_entry(ctx, a, typed, key, points))

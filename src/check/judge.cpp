@@ -419,9 +419,8 @@ std::optional<InputError> refused_beside_units(const Context& ctx, const Answer&
     const std::string said = alone.what();
     const std::size_t at = said.find("undefined symbol");
     if (at == std::string::npos) return std::nullopt;
-    constexpr std::size_t kShownCharacters = 60;
     return InputError(fmt::format("{}: cannot read expression \"{}\": {}{}", kField,
-                                  printable(text, kShownCharacters), said.substr(at),
+                                  printable(text, kQuotedCharacters), said.substr(at),
                                   names_read_too(ctx, a)));
   }
   return std::nullopt;
@@ -827,22 +826,8 @@ std::optional<Verdict> unit_of_a_number_in_it(const Context& ctx, const Answer& 
   const GiNaC::ex factor = ctx.table.parse(p.unit->to_si_exact, "unit " + p.unit->text);
   for (auto& e : inside.value.entries) e = e * factor;
   inside.unit.reset();
+  inside.unit_on_numbers = true;  // its dimension is the answer's, as found above
   Verdict v = judge_symbolic(ctx, a, text, inside, opt, layout);
-  if (v.wrong_dimension) {
-    // Wrong at the set values, where the judge says the symbols' dimension alone is not the
-    // answer's: said instead as the numbers there are wrong ("this is 2 times the answer").
-    const GiNaC::lst at = sym::substitution(ctx.table, ctx.values);
-    std::vector<double> got;
-    for (const auto& e : inside.value.entries) got.push_back(sym::evaluate(e, at, kField));
-    const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
-    v = Verdict{false, "incorrect: " + a.name + " (your expression differs from the key's)",
-                diagnose(j, key_unit, got, a.value.data)};
-  }
-  // Its dimension is the answer's: a line that says the symbols' alone is not is no help.
-  std::erase_if(v.feedback, [](const std::string& line) {
-    return line.starts_with("your expression's dimension is") ||
-           line.starts_with("your expression is a pure number");
-  });
   v.feedback.push_back(fmt::format(
       "read with {} as the unit of a number in it, not of the whole (with the problem's symbols "
       "in SI, the whole is then in {})",

@@ -516,9 +516,7 @@ std::optional<UnitsWorkedOut> worked_out(const std::string& text, const StandIns
   } catch (const InputError&) {
     return std::nullopt;
   }
-  // A line's worth: a long text is quoted in part.
-  constexpr std::size_t kShownCharacters = 60;
-  const std::string as_read = printable(shown(text, stood), kShownCharacters);
+  const std::string as_read = printable(shown(text, stood), kQuotedCharacters);
   const std::optional<Dimension> dimension = dimension_of(e, symbols, stood.units, table, field);
   if (!dimension) return std::nullopt;
   if (!dimension->one) {
@@ -595,11 +593,10 @@ std::optional<std::string> units_refusal(const std::string& typed, const sym::Sy
     std::string restored = units_restored(e.what(), *stood);
     // The text it quotes is the answer as typed (the reader quotes its own reading in part,
     // the stand-ins' length taking the room, and may cut one short).
-    constexpr std::size_t kShownCharacters = 60;
     const std::size_t open = restored.find('"');
     const std::size_t close = open == std::string::npos ? open : restored.find("\": ", open + 1);
     if (close != std::string::npos)
-      restored.replace(open + 1, close - open - 1, printable(typed, kShownCharacters));
+      restored.replace(open + 1, close - open - 1, printable(typed, kQuotedCharacters));
     if (restored.find(kStandIn.substr(0, 6)) == std::string::npos) return restored;
   }
   return std::nullopt;

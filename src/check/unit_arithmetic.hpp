@@ -20,6 +20,7 @@
 /// - Plain text, or LaTeX as the reader sets it in text (units upright, "\mathrm{days}"; an
 ///   upright d the day where d is no symbol); a vector entry by entry (entries_worked_out), a
 ///   matrix not at all.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <utility>
@@ -28,6 +29,9 @@
 #include "symbolic/expression.hpp"
 
 namespace wobble::check {
+
+/// A line's worth of an answer quoted in a refusal of it: a longer one is quoted in part.
+inline constexpr std::size_t kQuotedCharacters = 60;
 
 struct UnitsWorkedOut {
   std::string text;     ///< for the reader: "2.3952979e-07 1/s" (the value to 17 digits)

@@ -1762,6 +1762,16 @@ TEST_CASE("a unit after an expression in the symbols is a number's in it where o
   REQUIRE_FALSE(twice.correct);
   REQUIRE_THAT(twice.feedback.front(), Catch::StartsWith("this is 2 times the answer"));
   REQUIRE(twice.feedback.back() == read_as);
+  // A vector alike: each entry's dimension is the answer's with the unit on its numbers, and
+  // none is said to be another.
+  const Fixture plate("flying-plate");
+  const auto spin_vector =
+      plate.check("L0_body", "(m R^2/4 × sin α, 0, m R^2/2 × cos α) × 10 rad/s");
+  REQUIRE_FALSE(spin_vector.correct);
+  REQUIRE(spin_vector.feedback ==
+          std::vector<std::string>{"it gives the key's value at the set values but not at "
+                                   "others: 10 is the value of ω (omega): write the symbol",
+                                   read_as});
   // Where the unit does not make the answer's dimension with the symbols, it is the whole's.
   const auto mass = top.check("p_psi", "M × 150 rad/s");
   REQUIRE(mass.wrong_dimension);
