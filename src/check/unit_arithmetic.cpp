@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "check/answer_reading.hpp"
@@ -360,24 +361,39 @@ std::string upright_days(const std::string& latex, const sym::SymbolTable& table
   return out;
 }
 
+// A group set upright in LaTeX, "\\mathrm{rad/s}": where its '\\' is and its '}', the wrapper's
+// name ("mathrm") and what is inside ("rad/s").
+struct UprightGroup {
+  std::size_t at = 0, close = 0;
+  std::string wrapper, inside;
+};
+std::vector<UprightGroup> upright_groups(const std::string& latex) {
+  std::vector<UprightGroup> out;
+  for (std::size_t at = latex.find('\\'); at != std::string::npos; at = latex.find('\\', at + 1)) {
+    std::size_t name_end = at + 1;
+    while (name_end < latex.size() && std::isalpha(static_cast<unsigned char>(latex[name_end])))
+      ++name_end;
+    std::string wrapper = latex.substr(at + 1, name_end - at - 1);
+    if (!text_wrappers().count(wrapper) || name_end >= latex.size() || latex[name_end] != '{')
+      continue;
+    const std::size_t close = latex.find('}', name_end);
+    if (close == std::string::npos) break;
+    out.push_back(
+        {at, close, std::move(wrapper), latex.substr(name_end + 1, close - name_end - 1)});
+    at = close;
+  }
+  return out;
+}
+
 // `table` with each unit set upright in `latex` (\mathrm{kg}, \text{days}, the words of
 // \mathrm{rad/s}) declared as a name drawn so, where it is no symbol of the problem: the LaTeX
 // reader takes an upright unit for the value's only at the end, and so reads "0.5\,\mathrm{kg}
 // \cdot (0.05\,\mathrm{m})^2 \cdot 150\,\mathrm{rad/s}" as names, each a unit here.
 sym::SymbolTable upright_units_named(const std::string& latex, const sym::SymbolTable& table) {
   sym::SymbolTable out = table;
-  for (std::size_t at = latex.find('\\'); at != std::string::npos; at = latex.find('\\', at + 1)) {
-    std::size_t name_end = at + 1;
-    while (name_end < latex.size() && std::isalpha(static_cast<unsigned char>(latex[name_end])))
-      ++name_end;
-    if (!text_wrappers().count(latex.substr(at + 1, name_end - at - 1)) ||
-        name_end >= latex.size() || latex[name_end] != '{')
-      continue;
-    const std::size_t close = latex.find('}', name_end);
-    if (close == std::string::npos) break;
-    const std::string inside = latex.substr(name_end + 1, close - name_end - 1);
-    for (const auto& [word_at, length] : identifiers(inside)) {
-      const std::string word = inside.substr(word_at, length);
+  for (const UprightGroup& group : upright_groups(latex)) {
+    for (const auto& [word_at, length] : identifiers(group.inside)) {
+      const std::string word = group.inside.substr(word_at, length);
       if (is_unit(word) && !out.contains(word))
         out.declare(word, "\\mathrm{" + word + "}", sym::SymbolSign::positive);
     }
@@ -391,23 +407,13 @@ sym::SymbolTable upright_units_named(const std::string& latex, const sym::Symbol
 std::string upright_quotients_split(const std::string& latex) {
   std::string out;
   std::size_t from = 0;
-  for (std::size_t at = latex.find('\\'); at != std::string::npos; at = latex.find('\\', at + 1)) {
-    std::size_t name_end = at + 1;
-    while (name_end < latex.size() && std::isalpha(static_cast<unsigned char>(latex[name_end])))
-      ++name_end;
-    const std::string wrapper = latex.substr(at + 1, name_end - at - 1);
-    if (!text_wrappers().count(wrapper) || name_end >= latex.size() || latex[name_end] != '{')
-      continue;
-    const std::size_t close = latex.find('}', name_end);
-    if (close == std::string::npos) break;
-    const std::string inside = latex.substr(name_end + 1, close - name_end - 1);
-    if (inside.find('/') == std::string::npos) continue;
-    const std::string opened = "\\" + wrapper + "{";
+  for (const UprightGroup& group : upright_groups(latex)) {
+    if (group.inside.find('/') == std::string::npos) continue;
+    const std::string opened = "\\" + group.wrapper + "{";
     std::string split;
-    for (const char c : inside) split += c == '/' ? "}/" + opened : std::string(1, c);
-    out += latex.substr(from, at - from) + opened + split + "}";
-    from = close + 1;
-    at = close;
+    for (const char c : group.inside) split += c == '/' ? "}/" + opened : std::string(1, c);
+    out += latex.substr(from, group.at - from) + opened + split + "}";
+    from = group.close + 1;
   }
   return out + latex.substr(from);
 }
