@@ -398,8 +398,11 @@ std::optional<InputError> refused_beside_units(const Context& ctx, const Answer&
   }
   // Refused for a unit read as a symbol or a function ("kg (0.05 m)^2"), or as the value's
   // unit with the name in it ("0.5 kg × Q": 'kg × Q').
+  const auto unit_like = [](const std::string& word) {
+    return is_unit(word) || !units_apart(word).empty();  // "kgm": units run together
+  };
   const bool unit_as_name =
-      is_unit(undefined_name(refusal)) || is_unit(quoted_after(refusal, "unknown function"));
+      unit_like(undefined_name(refusal)) || unit_like(quoted_after(refusal, "unknown function"));
   const std::string unit_text = sym::to_ascii(quoted_after(refusal, "cannot read the unit"));
   const std::string name = name_beside_units(text, ctx.table, kField);
   if (name.empty()) {

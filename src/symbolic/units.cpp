@@ -168,20 +168,31 @@ const std::map<std::string, std::string>& spellings() {
   };
   return n;
 }
-// "kgm" -> "kg m", "Nm" -> "N m": unit names run together, written apart; "" if the word is no
-// such run. Tried only on a short word: the splits of "mmmm..." grow as Fibonacci's numbers.
+
+// `word` as unit names, each with its power's digits after it, the shortest name first ("ms"
+// -> "m s": "Nms" is a newton metre second more often than a newton millisecond); "" if none.
+// Tried only on a short word: the splits of "mmmm..." grow as Fibonacci's numbers.
 constexpr std::size_t kLongestRun = 16;
-std::string run_together(const std::string& word) {
-  if (word.size() > kLongestRun) return "";
-  if (names().count(word)) return word;
+std::string names_in_a_row(const std::string& word) {
   for (std::size_t i = 1; i < word.size(); ++i) {
+    std::size_t end = i;
+    while (end < word.size() && std::isdigit(static_cast<unsigned char>(word[end]))) ++end;
     if (!names().count(word.substr(0, i))) continue;
-    if (const std::string rest = run_together(word.substr(i)); !rest.empty())
-      return word.substr(0, i) + " " + rest;
+    if (end == word.size()) return word;
+    if (const std::string rest = names_in_a_row(word.substr(end)); !rest.empty())
+      return word.substr(0, end) + " " + rest;
   }
-  return "";
+  return names().count(word) ? word : "";
 }
 }  // namespace
+
+std::string units_apart(const std::string& word) {
+  if (word.size() > kLongestRun) return "";
+  // One name, with its power's digits or not ("mm", "m2"), is itself.
+  const std::size_t digits = word.find_last_not_of("0123456789") + 1;
+  if (digits > 0 && names().count(word.substr(0, digits))) return word;
+  return names_in_a_row(word);
+}
 
 std::string Unit::dimension_words() const {
   static const char* word[] = {"mass", "length", "time"};
@@ -310,7 +321,7 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       // The SI's symbol for the day, but a distance's name in problems (the molecule's bond d):
       // "2 d^2" would read as days squared where it is a length.
       if (name == "d") return fail("'d' is not read as days (problems name lengths d); write day or days");
-      const std::string apart = run_together(name);
+      const std::string apart = units_apart(name);
       return fail("unknown unit '" + name + "'" +
                   (apart.empty() ? "" : " ('" + apart + "', with spaces?)"));
     }

@@ -59,6 +59,11 @@ std::string compound_quantity(const std::string& ascii);
 /// True if `text` reads as a unit (no throw).
 bool is_unit(const std::string& text);
 
+/// A word that is unit names run together, written apart: "kgm" -> "kg m", "Nms" -> "N m s"
+/// (the shortest name first: "ms" there is m s); the word itself if it is one name; "" if it is
+/// none of these, or longer than 16 characters.
+std::string units_apart(const std::string& word);
+
 /// A value and the unit after it, "" if none: the longest tail that reads as a unit and starts
 /// a word ("0.05 m", "5cm", "9.81 m/s^2", "150 1/s", "5 [cm]", "(90 - 15)deg"; not the "i" of
 /// "2*pi"). Both trimmed; the value is not read here. ASCII text (sym::to_ascii first).

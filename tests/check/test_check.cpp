@@ -159,6 +159,24 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
                       Catch::Contains("unknown unit 'kgm' ('kg m', with spaces?)"));
   REQUIRE_THROWS_WITH(parse_unit("Nm", "u"), Catch::Contains("('N m', with spaces?)"));
   REQUIRE_THROWS_WITH(parse_unit("furlong", "u"), !Catch::Contains("with spaces?"));
+  // The split, the shortest name first, a power without its '^' kept with its name; none for a word
+  // that is no run of units.
+  for (const auto& [word, apart] :
+       std::vector<std::pair<std::string, std::string>>{{"kgm", "kg m"},
+                                                        {"Nms", "N m s"},
+                                                        {"kgms", "kg m s"},
+                                                        {"mm", "mm"},
+                                                        {"kgm2", "kg m2"},
+                                                        {"m2", "m2"},
+                                                        {"kg", "kg"},
+                                                        {"furlong", ""},
+                                                        {"Q", ""},
+                                                        {"kgQ", ""},
+                                                        {"2kg", ""},
+                                                        {"", ""}}) {
+    INFO(word);
+    REQUIRE(units_apart(word) == apart);
+  }
   for (const std::string bad :
        {"furlong", "kg^x",  "m//s",    "/s",          "kg^123",      "",          "kg m^2 !",
         "1/",      "2/s",   "1/s/",    "s^(-1",       "s^()",        "s^(-)",     "s^(-1))",

@@ -1876,6 +1876,14 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
             "(π), psidot0, theta0, thetadot0 " +
             read_too);
   }
+  // Units run together ("kgm", as "kg m") are no name beside units: the unit reader's refusal
+  // stands, with the units written apart to copy, whether the powers have their '^' or not.
+  for (const char* typed : {"0.09375 kgm^2/s", "0.09375 kgm²/s", "0.09375 kgm2/s"}) {
+    INFO(typed);
+    REQUIRE_THROWS_WITH(top.check("p_psi", typed),
+                        Catch::StartsWith("--answer: cannot read the unit 'kgm") &&
+                            Catch::Contains("unknown unit 'kgm' ('kg m', with spaces?)"));
+  }
   // Where every name is a unit, what keeps it from reading is said of the units as typed, not
   // that a unit is no function: a number after a power needs its '*', as it does after R².
   REQUIRE_THROWS_WITH(top.check("p_psi", "0.5 kg (0.05 m)² 150 rad/s"),
