@@ -374,4 +374,34 @@ std::vector<std::string> diagnose(const Finding& f) {
   return out;
 }
 
+std::optional<std::string> reciprocal_mistake(
+    const Answer& answer, double typed, const Unit& typed_unit, const Unit& key_unit,
+    const std::function<bool(double typed, double expected)>& close) {
+  constexpr std::array<int, 3> kTime{0, 0, 1};
+  constexpr std::array<int, 3> kRate{0, 0, -1};
+  const bool rate_key = key_unit.dim == kRate && typed_unit.dim == kTime;
+  const bool time_key = key_unit.dim == kTime && typed_unit.dim == kRate;
+  if (answer.value.data.size() != 1 || typed == 0.0 || !(rate_key || time_key)) return std::nullopt;
+  // Hz, rpm and rev/s have 2π in their factor to SI (symbolic/units.hpp): a revolution is 2π.
+  const bool turns = typed_unit.angle && typed_unit.to_si_exact.find("2*pi") != std::string::npos;
+  const double typed_si = typed * typed_unit.to_si;
+  for (const double factor : {1.0, 2 * M_PI}) {
+    const bool period = factor != 1.0;
+    if (!period && turns) continue;  // 1/(2π f): no quantity a student means
+    const double in_key = factor / typed_si / key_unit.to_si;
+    if (!close(in_key, answer.value.data[0])) continue;
+    // 2π over a rate in turns is one over it in turns: "1/(1.45 Hz)".
+    const std::string over = period && !turns ? "2π" : "1";
+    const std::string what = rate_key ? (period ? "the period given for the rate"
+                                                : "a time given for the rate (its reciprocal)")
+                                      : (period ? (turns ? "the frequency given for the period"
+                                                         : "the rate given for the period")
+                                                : "the rate given for the time (its reciprocal)");
+    return fmt::format("{}/({:.4g} {}) = {:.4g} {} is the answer: {}?", over, typed,
+                       sym::to_unicode(typed_unit.text), in_key, sym::to_unicode(answer.unit),
+                       what);
+  }
+  return std::nullopt;
+}
+
 }  // namespace wobble::check

@@ -17,6 +17,7 @@
 /// (not principal moments, which may come in any). Else each wrong entry of a vector or matrix is
 /// named: with the wrong sign where only its sign is wrong, else with how far off it is.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,5 +70,14 @@ std::vector<WrongAnswer> wrong_answers(const Answer& answer, const Key& key, con
 
 /// The first known mistake's message, else how far off the value (or each wrong entry) is.
 std::vector<std::string> diagnose(const Finding& finding);
+
+/// A time given for a rate or a rate for a time, where the other is right: `typed` (a number
+/// in `typed_unit`) for a one-number answer in `key_unit`, with 1/x or 2π/x (a time constant or
+/// a period, the angle a pure number) `close` to the key's value: "2π/(0.688 s) = 9.13 rad/s is
+/// the answer: the period given for the rate?". A unit counting turns (Hz, rpm, rev/s) has its
+/// 2π in it, and the period is written 1/f. nullopt otherwise (other dimensions too).
+std::optional<std::string> reciprocal_mistake(
+    const Answer& answer, double typed, const Unit& typed_unit, const Unit& key_unit,
+    const std::function<bool(double typed, double expected)>& close);
 
 }  // namespace wobble::check

@@ -859,6 +859,13 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
                            key_unit.dimension_words() + ")");
       if (const std::string symbols = unit_spelling_symbols(ctx, p.unit->text); !symbols.empty())
         v.feedback.push_back(symbols);
+      if (!p.symbolic && p.value.entries.size() == 1) {
+        const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
+        const double typed = sym::evaluate(p.value.entries[0], GiNaC::lst{}, kField);
+        if (auto reciprocal = reciprocal_mistake(a, typed, *p.unit, key_unit,
+                                                 [&](double x, double k) { return j.close(x, k); }))
+          v.feedback.push_back(*reciprocal);
+      }
       return v;
     }
     to_key = p.unit->to_si / key_unit.to_si;

@@ -2,8 +2,14 @@
 // every closed form in the catalog has the dimension of its unit (a check of the key by
 // dimensional analysis, independent of how its values were found), and a student's expression
 // of another dimension, or one that mixes dimensions, is told so.
+#include <fmt/format.h>
+
+#include <array>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "check/check_fixture.hpp"
 #include "check/expression_dimension.hpp"
@@ -157,4 +163,54 @@ TEST_CASE("what an expression's dimension says, in the plate's symbols") {
   CHECK(v.feedback[0] ==
         "entry e₃'s dimension is mass x length / time; the answer is in kg m^2/s (mass x length^2 "
         "/ time)");
+}
+
+TEST_CASE("a time given for a rate, or a rate for a time, is told what its reciprocal is") {
+  // Over the catalog: every one-number answer in a time or a rate, given as 1/x in the other
+  // (a time constant), as 2π/x (a period and an angular rate), and a period as turns per time.
+  constexpr std::array<int, 3> kTime{0, 0, 1};
+  constexpr std::array<int, 3> kRate{0, 0, -1};
+  int told = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        const auto dim = dimension_of(a.unit);
+        if (a.value.data.size() != 1 || a.value.data[0] == 0.0 || (dim != kTime && dim != kRate))
+          continue;
+        const double si = a.value.data[0] * parse_unit(a.unit, "test").to_si;
+        const std::string other = dim == kTime ? "1/s" : "s";
+        const std::string said = dim == kTime ? "the rate given for the" : "given for the rate";
+        // Eight digits: the printed number reads back within any tolerance.
+        const auto typed = [](double x, const std::string& unit) {
+          return fmt::format("{:.8g} {}", x, unit);
+        };
+        for (const auto& [text, line] : std::vector<std::pair<std::string, std::string>>{
+                 {typed(1 / si, other), "1/("},
+                 {typed(2 * M_PI / si, dim == kTime ? "rad/s" : "s"), "2π/("}}) {
+          INFO(p.id << " " << a.name << ": " << text);
+          const check::Verdict v = f.check(a.name, text);
+          REQUIRE(v.wrong_dimension);
+          REQUIRE(v.feedback.size() == 2);
+          CHECK(v.feedback.back().rfind(line, 0) == 0);
+          CHECK(v.feedback.back().find(said) != std::string::npos);
+          ++told;
+        }
+        if (dim == kTime) {
+          const check::Verdict hz = f.check(a.name, typed(1 / si, "Hz"));
+          INFO(p.id << " " << a.name << " in Hz");
+          REQUIRE(hz.feedback.size() == 2);
+          CHECK_THAT(
+              hz.feedback.back(),
+              Catch::StartsWith("1/(") && Catch::EndsWith("the frequency given for the period?"));
+        }
+        // Neither: only the dimension is told.
+        const check::Verdict off = f.check(a.name, typed(1.5 / si, other));
+        INFO(p.id << " " << a.name << " neither");
+        REQUIRE(off.wrong_dimension);
+        CHECK(off.feedback.size() == 1);
+      }
+    }
+  }
+  REQUIRE(told > 40);  // 26 answers in a time or a rate, two readings each (52 today)
 }
