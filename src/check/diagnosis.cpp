@@ -384,10 +384,13 @@ std::optional<std::string> reciprocal_mistake(
   if (answer.value.data.size() != 1 || typed == 0.0 || !(rate_key || time_key)) return std::nullopt;
   // Hz, rpm and rev/s have 2π in their factor to SI (symbolic/units.hpp): a revolution is 2π.
   const bool turns = typed_unit.angle && typed_unit.to_si_exact.find("2*pi") != std::string::npos;
+  const bool degrees =
+      typed_unit.angle && !turns && typed_unit.to_si_exact.find("pi") != std::string::npos;
   const double typed_si = typed * typed_unit.to_si;
   for (const double factor : {1.0, 2 * M_PI}) {
     const bool period = factor != 1.0;
-    if (!period && turns) continue;  // 1/(2π f): no quantity a student means
+    // 1/(2π f), and 1/x of a rate in deg/s taken in rad/s: no quantity a student means.
+    if (!period && (turns || degrees)) continue;
     const double in_key = factor / typed_si / key_unit.to_si;
     if (!close(in_key, answer.value.data[0])) continue;
     // 2π over a rate in turns is one over it in turns: "1/(1.45 Hz)".

@@ -212,5 +212,17 @@ TEST_CASE("a time given for a rate, or a rate for a time, is told what its recip
       }
     }
   }
+  // One over a rate in degrees per second is no time a student means (1/x in SI is not 1/x of
+  // the number typed): not told; two pi over it is a period, as in rad/s.
+  const Fixture earth("earth-free-precession");
+  const double period = earth.answer("precession_period_body").value.data[0];  // s
+  const check::Verdict deg_s =
+      earth.check("precession_period_body", fmt::format("{:.8g} deg/s", 180 / M_PI / period));
+  REQUIRE(deg_s.wrong_dimension);
+  CHECK(deg_s.feedback.size() == 1);
+  const check::Verdict turn_deg =
+      earth.check("precession_period_body", fmt::format("{:.8g} deg/s", 360 / period));
+  CHECK_THAT(turn_deg.feedback.back(),
+             Catch::StartsWith("2π/(") && Catch::EndsWith("the rate given for the period?"));
   REQUIRE(told > 40);  // 26 answers in a time or a rate, two readings each (52 today)
 }
