@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 
 namespace wobble::check {
@@ -110,7 +111,7 @@ bool has_symbol(const GiNaC::ex& e) {
   }
   return false;
 }
-// As Unit::dimension_words, with fractions: "mass^(1/2) x length"; "a pure number" for none.
+// As Unit::dimension_words, with fractions: "mass^(1/2) × length"; "a pure number" for none.
 std::string words(const Powers& powers) {
   static const char* word[] = {"mass", "length", "time"};
   std::string num, den;
@@ -124,11 +125,11 @@ std::string words(const Powers& powers) {
       w += p.is_integer() ? "^" + s.str() : "^(" + s.str() + ")";
     }
     std::string& side = powers[k].is_positive() ? num : den;
-    side += (side.empty() ? "" : " x ") + w;
+    side += (side.empty() ? "" : " × ") + w;
   }
   if (num.empty() && den.empty()) return "a pure number";
   if (num.empty()) num = "1";
-  return den.empty() ? num : num + " / " + den;
+  return sym::to_unicode(den.empty() ? num : num + " / " + den);
 }
 }  // namespace
 

@@ -7,8 +7,8 @@
 /// have none (atan2's two the same, abs keeps its argument's). An expression that breaks one of
 /// these (m + R, sin(omega), m^alpha) is mixed.
 ///
-/// Used to tell a student why a wrong expression is wrong ("m R/4 is a mass x length; I0 is in
-/// kg m^2") and to check that every closed form of a key has its unit's dimension. No verdict
+/// Used to tell a student why a wrong expression is wrong ("m R/4 is a mass × length; I0 is in
+/// kg m²") and to check that every closed form of a key has its unit's dimension. No verdict
 /// rests on it: an expression is right or wrong by its values (judge.hpp).
 #include <array>
 #include <optional>
@@ -24,7 +24,7 @@ struct ExpressionDimension {
   /// Powers of mass, length, time, when not mixed and each a whole number (no unit has
   /// sqrt(m)'s mass^(1/2)).
   std::optional<std::array<int, 3>> dim;
-  std::string words;  ///< "mass x length^2", "mass^(1/2) x length", "a pure number" (not mixed)
+  std::string words;  ///< "mass × length²", "mass^(1/2) × length", "a pure number" (not mixed)
 };
 
 /// The dimension of `e`, each parameter's unit as `key` lists it. Nothing when it cannot be

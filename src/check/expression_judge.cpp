@@ -136,7 +136,7 @@ Verdict judge_symbolic_axes(const Judge& j, const ReadAnswer& p) {
           {}};
 }
 
-// Why a wrong expression is wrong, where its dimension says it: "m R/4" is a mass x length, and
+// Why a wrong expression is wrong, where its dimension says it: "m R/4" is a mass × length, and
 // I0 is in kg m^2; "m + R" adds unlike quantities. Told only where the key's own entries scale
 // as its unit says (the parameters' units are then trusted), and entry by entry, the first
 // entry of another dimension named.
@@ -164,8 +164,9 @@ std::optional<Verdict> dimension_verdict(const Context& ctx, const Answer& a,
         d->dim == std::array<int, 3>{0, 0, 0} ? " is " + d->words : "'s dimension is " + d->words;
     return Verdict{false,
                    "incorrect: " + a.name + " has the wrong dimension",
-                   {what + has + "; the answer is in " + (a.unit.empty() ? "no unit" : a.unit) +
-                    " (" + key_unit.dimension_words() + ")"},
+                   {what + has + "; the answer is in " +
+                    (a.unit.empty() ? "no unit" : sym::to_unicode(a.unit)) + " (" +
+                    key_unit.dimension_words() + ")"},
                    true};
   }
   return std::nullopt;

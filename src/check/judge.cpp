@@ -838,6 +838,37 @@ std::optional<Verdict> unit_of_a_number_in_it(const Context& ctx, const Answer& 
   return v;
 }
 
+// A number in a unit of another dimension than the key's: so said, with what the student may
+// have meant where the numbers tell it ("2.177 rad/s" for a period of 2.177 s: the number right,
+// the unit another's; "0.11 s" for a rate of 9.09 1/s: its reciprocal).
+Verdict wrong_unit(const Context& ctx, const Answer& a, const ReadAnswer& p, const Unit& key_unit,
+                   const Options& opt, AxesLayout layout) {
+  Verdict v;
+  v.line = "incorrect: " + a.name + " has the wrong dimension";
+  v.wrong_dimension = true;
+  v.feedback.push_back("you gave " + sym::to_unicode(p.unit->text) + " (" +
+                       p.unit->dimension_words() + "); the answer is in " +
+                       (a.unit.empty() ? "no unit" : sym::to_unicode(a.unit)) + " (" +
+                       key_unit.dimension_words() + ")");
+  if (const std::string symbols = unit_spelling_symbols(ctx, p.unit->text); !symbols.empty())
+    v.feedback.push_back(symbols);
+  if (p.symbolic) return v;
+  const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
+  std::vector<double> typed;
+  for (const auto& e : p.value.entries) typed.push_back(sym::evaluate(e, GiNaC::lst{}, kField));
+  if (j.all_close(typed, a.value.data)) {
+    const std::string numbers = typed.size() == 1 ? "the number" : "the numbers";
+    v.feedback.push_back(a.unit.empty()
+                             ? "without a unit " + numbers + " would be right"
+                             : "in " + sym::to_unicode(a.unit) + " " + numbers + " would be right");
+  } else if (typed.size() == 1) {
+    if (auto reciprocal = reciprocal_mistake(a, typed[0], *p.unit, key_unit,
+                                             [&](double x, double k) { return j.close(x, k); }))
+      v.feedback.push_back(*reciprocal);
+  }
+  return v;
+}
+
 // An answer read, `p`, judged against `a`.
 Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
                    const ReadAnswer& p, const Options& opt, AxesLayout layout) {
@@ -851,22 +882,7 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
     if (!p.unit->same_dimension(key_unit) || (p.unit->angle && pure_number_key)) {
       if (auto inside = unit_of_a_number_in_it(ctx, a, text, p, key_unit, opt, layout))
         return std::move(*inside);
-      Verdict v;
-      v.line = "incorrect: " + a.name + " has the wrong dimension";
-      v.wrong_dimension = true;
-      v.feedback.push_back("you gave " + p.unit->text + " (" + p.unit->dimension_words() +
-                           "); the answer is in " + (a.unit.empty() ? "no unit" : a.unit) + " (" +
-                           key_unit.dimension_words() + ")");
-      if (const std::string symbols = unit_spelling_symbols(ctx, p.unit->text); !symbols.empty())
-        v.feedback.push_back(symbols);
-      if (!p.symbolic && p.value.entries.size() == 1) {
-        const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
-        const double typed = sym::evaluate(p.value.entries[0], GiNaC::lst{}, kField);
-        if (auto reciprocal = reciprocal_mistake(a, typed, *p.unit, key_unit,
-                                                 [&](double x, double k) { return j.close(x, k); }))
-          v.feedback.push_back(*reciprocal);
-      }
-      return v;
+      return wrong_unit(ctx, a, p, key_unit, opt, layout);
     }
     to_key = p.unit->to_si / key_unit.to_si;
   }
@@ -1328,10 +1344,11 @@ Verdict square_in_odd_unit(const Context& ctx, const Answer& a, const std::strin
   Verdict v;
   v.line = "incorrect: the square of " + a.name + " has the wrong dimension";
   v.wrong_dimension = true;
+  const std::string key_squared =
+      a.unit.empty() ? "no unit" : sym::to_unicode("(" + a.unit + ")^2");
   v.feedback.push_back(fmt::format("you gave {} in {} ({}); the square of {} is in {} ({})", label,
-                                   unit.text, unit.dimension_words(), a.name,
-                                   a.unit.empty() ? "no unit" : "(" + a.unit + ")^2",
-                                   squared.dimension_words()));
+                                   sym::to_unicode(unit.text), unit.dimension_words(), a.name,
+                                   key_squared, squared.dimension_words()));
   const std::string root = "sqrt(" + square.number + ")" + (a.unit.empty() ? "" : " " + a.unit);
   const auto right = [&](const std::string& sign) {
     try {
@@ -1341,8 +1358,7 @@ Verdict square_in_odd_unit(const Context& ctx, const Answer& a, const std::strin
     }
   };
   if (right("") || right("-")) {
-    v.feedback.push_back(fmt::format("in {} the number would be right",
-                                     a.unit.empty() ? "no unit" : "(" + a.unit + ")^2"));
+    v.feedback.push_back(fmt::format("in {} the number would be right", key_squared));
   }
   return v;
 }

@@ -14,6 +14,7 @@
 
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
+#include "symbolic/unicode_notation.hpp"
 
 namespace wobble {
 
@@ -203,11 +204,12 @@ std::string Unit::dimension_words() const {
     const int p = std::abs(dim[i]);
     if (p != 1) w += "^" + std::to_string(p);
     std::string& side = dim[i] > 0 ? num : den;
-    side += (side.empty() ? "" : " x ") + w;
+    side += (side.empty() ? "" : " × ") + w;
   }
   if (num.empty() && den.empty()) return angle ? "an angle" : "a pure number";
   if (num.empty()) num = "1";
-  return den.empty() ? num : num + " / " + den;
+  // In the key's notation, as its units are printed: "mass × length² / time".
+  return sym::to_unicode(den.empty() ? num : num + " / " + den);
 }
 
 Unit parse_unit(const std::string& text, const std::string& field) {

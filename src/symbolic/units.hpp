@@ -35,7 +35,7 @@ struct Unit {
   bool angle = false;               ///< contains rad, deg, rev, Hz or rpm
   std::string text;                 ///< as read, without a pair of brackets around it
   bool same_dimension(const Unit& o) const { return dim == o.dim; }
-  /// "mass x length^2", for messages.
+  /// "mass × length² / time", for messages (in the key's notation, as its units are printed).
   std::string dimension_words() const;
 };
 

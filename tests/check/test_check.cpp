@@ -219,7 +219,7 @@ TEST_CASE("known mistakes are named") {
               .correct);  // columns up to sign
   const Verdict dim = taylor.check("principal_moments", "[5, 7, 10] kg m");
   REQUIRE_THAT(dim.feedback.at(0),
-               Catch::Contains("kg m (mass x length)") && Catch::Contains("mass x length^2"));
+               Catch::Contains("kg m (mass × length)") && Catch::Contains("mass × length²"));
   REQUIRE(taylor.check("principal_moments", "[5e7, 7e7, 1e8] g cm^2").correct);
 
   const Fixture plate("flying-plate");

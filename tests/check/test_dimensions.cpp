@@ -4,6 +4,7 @@
 // of another dimension, or one that mixes dimensions, is told so.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -15,6 +16,7 @@
 #include "check/expression_dimension.hpp"
 #include "check/judge.hpp"
 #include "solvers/catalog.hpp"
+#include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 #include "symbolic/value_text.hpp"
 
@@ -123,11 +125,11 @@ TEST_CASE("what an expression's dimension says, in the plate's symbols") {
     return v.line + " | " + v.feedback[0];
   };
   CHECK(said("m R/4") ==
-        "incorrect: I0 has the wrong dimension | your expression's dimension is mass x length; "
-        "the answer is in kg m^2 (mass x length^2)");
+        "incorrect: I0 has the wrong dimension | your expression's dimension is mass × length; "
+        "the answer is in kg m² (mass × length²)");
   CHECK(said("sin(α)") ==
         "incorrect: I0 has the wrong dimension | your expression is a pure number; the answer "
-        "is in kg m^2 (mass x length^2)");
+        "is in kg m² (mass × length²)");
   CHECK(said("m R^2 sin(ω)") ==
         "incorrect: I0 (your expression differs from the key's) | your expression mixes "
         "dimensions: it adds unlike quantities, or takes a function such as sin or exp of a "
@@ -138,11 +140,11 @@ TEST_CASE("what an expression's dimension says, in the plate's symbols") {
         "factor 2 is off (a 1/12 or 1/3 in a moment of inertia, a 1/2 in an energy?)");
   // Right at the set values by chance (m = 1 kg would hide it; m² R²/4 is another dimension).
   CHECK(said("m^2 R^2/4") ==
-        "incorrect: I0 has the wrong dimension | your expression's dimension is mass^2 x "
-        "length^2; the answer is in kg m^2 (mass x length^2)");
+        "incorrect: I0 has the wrong dimension | your expression's dimension is mass² × "
+        "length²; the answer is in kg m² (mass × length²)");
   CHECK(said("sqrt(m) R") ==
-        "incorrect: I0 has the wrong dimension | your expression's dimension is mass^(1/2) x "
-        "length; the answer is in kg m^2 (mass x length^2)");
+        "incorrect: I0 has the wrong dimension | your expression's dimension is mass^(1/2) × "
+        "length; the answer is in kg m² (mass × length²)");
   CHECK(said("m + R") ==
         "incorrect: I0 (your expression differs from the key's) | your expression mixes "
         "dimensions: it adds unlike quantities, or takes a function such as sin or exp of a "
@@ -151,7 +153,7 @@ TEST_CASE("what an expression's dimension says, in the plate's symbols") {
   const check::Verdict number = f.check("I0", "m 0.12^2/4");
   REQUIRE(number.feedback.size() == 2);
   CHECK(number.feedback[1] ==
-        "your expression's dimension is mass; the answer is in kg m^2 (mass x length^2)");
+        "your expression's dimension is mass; the answer is in kg m² (mass × length²)");
   // A plain number's unit is not written: its size is what is wrong, not its dimension.
   const check::Verdict number_entry = f.check("L0_body", "[m R² ω sin α/4, 0, 0.02]");
   REQUIRE_FALSE(number_entry.correct);
@@ -161,7 +163,7 @@ TEST_CASE("what an expression's dimension says, in the plate's symbols") {
   REQUIRE_FALSE(v.correct);
   REQUIRE(v.feedback.size() == 1);
   CHECK(v.feedback[0] ==
-        "entry e₃'s dimension is mass x length / time; the answer is in kg m^2/s (mass x length^2 "
+        "entry e₃'s dimension is mass × length / time; the answer is in kg m²/s (mass × length² "
         "/ time)");
 }
 
@@ -225,4 +227,42 @@ TEST_CASE("a time given for a rate, or a rate for a time, is told what its recip
   CHECK_THAT(turn_deg.feedback.back(),
              Catch::StartsWith("2π/(") && Catch::EndsWith("the rate given for the period?"));
   REQUIRE(told > 40);  // 26 answers in a time or a rate, two readings each (52 today)
+}
+
+TEST_CASE("a right number in a unit of another dimension is told that the number is right") {
+  // Over the catalog: every answer with a unit, its key's numbers typed in a unit of another
+  // dimension (kg, or m where the key is a mass), said to be right in the key's unit; ten times
+  // them is not.
+  int told = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.unit.empty() || a.kind == AnswerKind::principal_axes) continue;
+        const std::string other = dimension_of(a.unit) == dimension_of("kg") ? "m" : "kg";
+        const auto typed = [&](double scale) {
+          std::string entries;
+          for (const double x : a.value.data)
+            entries += fmt::format("{}{:.10g}", entries.empty() ? "" : ", ", scale * x);
+          return (a.value.data.size() == 1 ? entries : "[" + entries + "]") + " " + other;
+        };
+        if (a.value.shape == Value::Shape::matrix) continue;  // rows, not one list
+        INFO(p.id << " " << a.name << ": " << typed(1));
+        const check::Verdict v = f.check(a.name, typed(1));
+        REQUIRE(v.wrong_dimension);
+        CHECK(v.feedback.back() == "in " + sym::to_unicode(a.unit) +
+                                       (a.value.data.size() == 1 ? " the number" : " the numbers") +
+                                       " would be right");
+        ++told;
+        // Ten times zero is zero: only where some number is not.
+        if (std::all_of(a.value.data.begin(), a.value.data.end(),
+                        [](double x) { return x == 0.0; }))
+          continue;
+        const check::Verdict ten = f.check(a.name, typed(10));
+        REQUIRE(ten.wrong_dimension);
+        CHECK(ten.feedback.back().find("would be right") == std::string::npos);
+      }
+    }
+  }
+  REQUIRE(told > 100);
 }

@@ -1298,17 +1298,21 @@ TEST_CASE("a symbol after a number is a unit where that reads, else a factor, an
   const Fixture box("box-corner");
   REQUIRE(box.check("center_of_mass", "(0.5 m, 1 m, 1.5 m)").correct);
   // Where neither reading has it, the wrong dimension is said, with the symbol's line: the
-  // plate's I0 is kg m², 0.00072 m neither a length nor a mass.
+  // plate's I0 is kg m², 0.00072 m neither a length nor a mass (the number is right in kg m²).
   const Fixture plate("flying-plate");
   const auto neither = plate.check("I0", "0.00072 m");
   REQUIRE_FALSE(neither.correct);
   REQUIRE(neither.feedback ==
-          std::vector<std::string>{"you gave m (length); the answer is in kg m^2 (mass x length^2)",
+          std::vector<std::string>{"you gave m (length); the answer is in kg m² (mass × length²)",
                                    "m is also the problem's symbol for the mass: after a number "
                                    "it reads as the unit; for the product, write the '*' "
-                                   "(number*m)"});
-  // A unit that is no symbol of the problem gets the dimension alone.
-  REQUIRE(cone.check("center_of_mass", "-0.225 s k̂").feedback.size() == 1);
+                                   "(number*m)",
+                                   "in kg m² the number would be right"});
+  // A unit that is no symbol of the problem gets the dimension alone, and here that the number
+  // is right in the key's unit.
+  REQUIRE(cone.check("center_of_mass", "-0.225 s k̂").feedback ==
+          std::vector<std::string>{"you gave s (time); the answer is in m (length)",
+                                   "in m the numbers would be right"});
 }
 
 TEST_CASE("a name the statement defines is named with its definition, to be written in") {
@@ -2668,8 +2672,8 @@ TEST_CASE("a square given in its root's unit is wrong, and says which unit the s
   REQUIRE(v.line == "incorrect: the square of rate_axis2 has the wrong dimension");
   REQUIRE(v.feedback ==
           std::vector<std::string>{"you gave λ² in 1/s (1 / time); the square of rate_axis2 is "
-                                   "in (1/s)^2 (1 / time^2)",
-                                   "in (1/s)^2 the number would be right"});
+                                   "in (1/s)² (1 / time²)",
+                                   "in (1/s)² the number would be right"});
   // A wrong number as well: only the unit is named.
   const auto both = racket.check("rate_axis2", fmt::format("λ² = {:.6g} 1/s", square * 1.1));
   REQUIRE_FALSE(both.correct);
@@ -2683,7 +2687,7 @@ TEST_CASE("a square given in its root's unit is wrong, and says which unit the s
   REQUIRE_FALSE(negative.correct);
   REQUIRE_THAT(negative.feedback.front(), Catch::StartsWith("you gave Ω_b² in kg (mass); "));
   REQUIRE(negative.feedback.back() ==
-          "in (" + solid.answer("Omega_body_rate").unit + ")^2 the number would be right");
+          "in (" + solid.answer("Omega_body_rate").unit + ")² the number would be right");
 }
 
 TEST_CASE("Euler's equations written out are read as their coefficients, as the key prints them") {

@@ -143,7 +143,7 @@ TEST_CASE("values: each kind of bad value is named") {
   REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "30° = 0.5235987756 rad = 1", "--set alpha"),
                       Catch::Contains("more than two sides"));
   REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "2 kg m", "--set m"),
-                      Catch::Contains("mass x length"));
+                      Catch::Contains("mass × length"));
   REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "90deg", "--set alpha"),
                       Catch::Contains("outside its range [0, pi/2)"));
   REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "", "--set alpha"),
