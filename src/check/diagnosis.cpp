@@ -375,10 +375,16 @@ std::vector<std::string> diagnose(const Finding& f) {
 }
 
 std::optional<std::string> reciprocal_mistake(
-    const Answer& answer, double typed, const Unit& typed_unit, const Unit& key_unit,
+    const Answer& answer, double typed, const Unit* unit, const Unit& key_unit,
     const std::function<bool(double typed, double expected)>& close) {
   constexpr std::array<int, 3> kTime{0, 0, 1};
   constexpr std::array<int, 3> kRate{0, 0, -1};
+  // A number without its unit is in the key's unit; only where that is SI is it the SI
+  // reciprocal's.
+  if (unit == nullptr && key_unit.to_si != 1.0) return std::nullopt;
+  Unit si;
+  for (std::size_t i = 0; i < 3; ++i) si.dim[i] = -key_unit.dim[i];
+  const Unit& typed_unit = unit != nullptr ? *unit : si;
   const bool rate_key = key_unit.dim == kRate && typed_unit.dim == kTime;
   const bool time_key = key_unit.dim == kTime && typed_unit.dim == kRate;
   if (answer.value.data.size() != 1 || typed == 0.0 || !(rate_key || time_key)) return std::nullopt;
@@ -399,10 +405,13 @@ std::optional<std::string> reciprocal_mistake(
                                                 : "a time given for the rate (its reciprocal)")
                                       : (period ? (turns ? "the frequency given for the period"
                                                          : "the rate given for the period")
-                                                : "the rate given for the time (its reciprocal)");
-    return fmt::format("{}/({:.4g} {}) = {:.4g} {} is the answer: {}?", over, typed,
-                       sym::to_unicode(typed_unit.text), in_key, sym::to_unicode(answer.unit),
-                       what);
+                                                : "a rate or frequency given for the time (its "
+                                                  "reciprocal)");
+    const std::string given = unit != nullptr
+                                  ? fmt::format("({:.4g} {})", typed, sym::to_unicode(unit->text))
+                                  : fmt::format("{:.4g}", typed);
+    return fmt::format("{}/{} = {:.4g} {} is the answer: {}?", over, given, in_key,
+                       sym::to_unicode(answer.unit), what);
   }
   return std::nullopt;
 }

@@ -72,12 +72,13 @@ std::vector<WrongAnswer> wrong_answers(const Answer& answer, const Key& key, con
 std::vector<std::string> diagnose(const Finding& finding);
 
 /// A time given for a rate or a rate for a time, where the other is right: `typed` (a number
-/// in `typed_unit`) for a one-number answer in `key_unit`, with 1/x or 2π/x (a time constant or
-/// a period, the angle a pure number) `close` to the key's value: "2π/(0.688 s) = 9.13 rad/s is
-/// the answer: the period given for the rate?". A unit counting turns (Hz, rpm, rev/s) has its
-/// 2π in it, and the period is written 1/f. nullopt otherwise (other dimensions too).
+/// in `unit`; null for none, the key's unit, where that is SI) for a one-number answer in
+/// `key_unit`, with 1/x or 2π/x (a time constant or a period, the angle a pure number) `close`
+/// to the key's value: "2π/(0.688 s) = 9.13 rad/s is the answer: the period given for the
+/// rate?", "1/0.4593 = 2.177 s ..". A unit counting turns (Hz, rpm, rev/s) has its 2π in it, and
+/// the period is written 1/f. nullopt otherwise (other dimensions too).
 std::optional<std::string> reciprocal_mistake(
-    const Answer& answer, double typed, const Unit& typed_unit, const Unit& key_unit,
+    const Answer& answer, double typed, const Unit* unit, const Unit& key_unit,
     const std::function<bool(double typed, double expected)>& close);
 
 }  // namespace wobble::check

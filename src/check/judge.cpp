@@ -862,7 +862,7 @@ Verdict wrong_unit(const Context& ctx, const Answer& a, const ReadAnswer& p, con
                              ? "without a unit " + numbers + " would be right"
                              : "in " + sym::to_unicode(a.unit) + " " + numbers + " would be right");
   } else if (typed.size() == 1) {
-    if (auto reciprocal = reciprocal_mistake(a, typed[0], *p.unit, key_unit,
+    if (auto reciprocal = reciprocal_mistake(a, typed[0], &*p.unit, key_unit,
                                              [&](double x, double k) { return j.close(x, k); }))
       v.feedback.push_back(*reciprocal);
   }
@@ -917,6 +917,12 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
   }
   if (const auto degrees = detail::degrees_in_numbers(j, text, to_key))
     return {false, "incorrect: " + a.name, {*degrees}};
+  // "0.4593" for a period of 2.177 s: a frequency, its unit left off.
+  if (!p.unit && got.size() == 1) {
+    if (auto reciprocal = reciprocal_mistake(a, got[0], nullptr, key_unit,
+                                             [&](double x, double k) { return j.close(x, k); }))
+      return {false, "incorrect: " + a.name, {*reciprocal}};
+  }
   return {false, "incorrect: " + a.name, diagnose(j, key_unit, compare, a.value.data)};
 }
 

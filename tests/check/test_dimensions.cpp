@@ -182,21 +182,39 @@ TEST_CASE("a time given for a rate, or a rate for a time, is told what its recip
           continue;
         const double si = a.value.data[0] * parse_unit(a.unit, "test").to_si;
         const std::string other = dim == kTime ? "1/s" : "s";
-        const std::string said = dim == kTime ? "the rate given for the" : "given for the rate";
+        // What each reading is said to be, 1/x first, then 2π/x.
+        const std::array<std::string, 2> said =
+            dim == kTime ? std::array<std::string, 2>{"a rate or frequency given for the time (its "
+                                                      "reciprocal)?",
+                                                      "the rate given for the period?"}
+                         : std::array<std::string, 2>{"a time given for the rate (its reciprocal)?",
+                                                      "the period given for the rate?"};
         // Eight digits: the printed number reads back within any tolerance.
         const auto typed = [](double x, const std::string& unit) {
           return fmt::format("{:.8g} {}", x, unit);
         };
-        for (const auto& [text, line] : std::vector<std::pair<std::string, std::string>>{
-                 {typed(1 / si, other), "1/("},
-                 {typed(2 * M_PI / si, dim == kTime ? "rad/s" : "s"), "2π/("}}) {
-          INFO(p.id << " " << a.name << ": " << text);
-          const check::Verdict v = f.check(a.name, text);
+        const std::array<std::string, 2> texts{typed(1 / si, other),
+                                               typed(2 * M_PI / si, dim == kTime ? "rad/s" : "s")};
+        for (std::size_t r = 0; r < 2; ++r) {
+          INFO(p.id << " " << a.name << ": " << texts[r]);
+          const check::Verdict v = f.check(a.name, texts[r]);
           REQUIRE(v.wrong_dimension);
           REQUIRE(v.feedback.size() == 2);
-          CHECK(v.feedback.back().rfind(line, 0) == 0);
-          CHECK(v.feedback.back().find(said) != std::string::npos);
+          CHECK_THAT(v.feedback.back(),
+                     Catch::StartsWith(r == 0 ? "1/(" : "2π/(") && Catch::EndsWith(said[r]));
           ++told;
+        }
+        // Without a unit, the number is in the key's unit, here SI: the same lines without one.
+        if (parse_unit(a.unit, "test").to_si == 1.0) {
+          for (std::size_t r = 0; r < 2; ++r) {
+            const double number = (r == 0 ? 1.0 : 2 * M_PI) / si;
+            const check::Verdict bare = f.check(a.name, fmt::format("{:.8g}", number));
+            INFO(p.id << " " << a.name << ": " << number << " without a unit");
+            REQUIRE(bare.feedback.size() == 1);
+            CHECK_THAT(bare.feedback[0], Catch::StartsWith((r == 0 ? "1/" : "2π/") +
+                                                           fmt::format("{:.4g} = ", number)) &&
+                                             Catch::EndsWith(said[r]));
+          }
         }
         if (dim == kTime) {
           const check::Verdict hz = f.check(a.name, typed(1 / si, "Hz"));
