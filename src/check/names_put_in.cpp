@@ -131,6 +131,15 @@ std::pair<std::string, bool> names_replaced(
       ++end;
     const std::string word = ascii.substr(i, end - i);
     const std::optional<std::string> put = replacement(word);
+    // After a number or a bracket, the form put in is its factor, as the name was ("2 I3" is
+    // 2*(M*R^2/2)), so that what else keeps the text from reading is what the reader says.
+    const std::size_t last = out.find_last_not_of(' ');
+    if (put && last != std::string::npos &&
+        (std::isdigit(static_cast<unsigned char>(out[last])) || out[last] == '.' ||
+         out[last] == ')')) {
+      out.erase(last + 1);
+      out += '*';
+    }
     out += put ? *put : word;
     found = found || put.has_value();
     i = end;

@@ -1636,12 +1636,20 @@ TEST_CASE("the heavy top reads I₁, I₃ and ω₃ as its steps write them, and
                                       "names up to part (c) read too)"));
   // Both an answer's name and a step's read, the text around them does not: said of the text as
   // typed, with how each name was read, not as the first name's refusal.
+  // A name beside a number ("2 I3", "2I3") is its factor, its form put in too: the same words.
+  for (const char* typed :
+       {"p_psi^2/(2*I3) + (1,2)", "p_psi^2/(2 I3) + (1,2)", "p_psi^2/(2I3) + (1,2)"}) {
+    INFO(typed);
+    REQUIRE_THROWS_WITH(top.check("energy_prime", typed),
+                        Catch::EndsWith("\", read with p_psi = M·R²·ψ̇0/2, the key's answer to "
+                                        "part (a), read with " +
+                                        i3 +
+                                        ", as the key's steps write it: a ',' where one "
+                                        "expression was expected (a vector is written [x, y, z])"));
+  }
   REQUIRE_THROWS_WITH(top.check("energy_prime", "p_psi^2/(2*I3) + (1,2)"),
-                      "--answer: cannot read expression \"p_psi^2/(2*I3) + (1,2)\", read with "
-                      "p_psi = M·R²·ψ̇0/2, the key's answer to part (a), read with " +
-                          i3 +
-                          ", as the key's steps write it: a ',' where one expression was expected "
-                          "(a vector is written [x, y, z])");
+                      Catch::StartsWith("--answer: cannot read expression \"p_psi^2/(2*I3) + "
+                                        "(1,2)\", read with"));
   // Where another name still keeps the answer from reading, that one is said.
   REQUIRE_THROWS_WITH(top.check("omega3_min", "2√(M g l I₁)/q"),
                       Catch::Contains("undefined symbol 'q'"));
