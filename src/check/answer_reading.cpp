@@ -1499,16 +1499,30 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
                          });
       const bool refused = std::string(e.what()).find("is refused") != std::string::npos;
       std::string hint;
-      if (glued && !refused) {
-        // "0.16m" where m is a mass: a unit's letters the problem also uses as a symbol.
-        const std::size_t letters = value.find_first_not_of("0123456789.");
+      const std::size_t letters = value.find_first_not_of("0123456789.");
+      if (!refused && letters != std::string::npos && letters > 0 &&
+          std::isdigit(static_cast<unsigned char>(value[0])) &&
+          std::isalpha(static_cast<unsigned char>(value[letters])) &&
+          value.find(' ') == std::string::npos) {
+        const std::string number = value.substr(0, letters);
         const std::string tail = value.substr(letters);
-        hint = is_unit(tail) && table.contains(tail)
-                   ? " (" + tail +
-                         " is one of the problem's symbols here: " + value.substr(0, letters) +
-                         "*" + tail + " for it, " + value.substr(0, letters) + " " + tail +
-                         " for the unit)"
-                   : " (put a space between a number and its unit: '0.21 kg m^2')";
+        std::size_t word_end = letters;
+        while (word_end < value.size() && std::isalnum(static_cast<unsigned char>(value[word_end])))
+          ++word_end;
+        const std::string word = value.substr(letters, word_end - letters);
+        const std::string apart = units_apart(word);
+        if (glued && is_unit(tail) && table.contains(tail)) {
+          // "0.16m" where m is a mass: a unit's letters the problem also uses as a symbol.
+          hint = " (" + tail + " is one of the problem's symbols here: " + number + "*" + tail +
+                 " for it, " + number + " " + tail + " for the unit)";
+        } else if (!apart.empty() && apart != word && !table.contains(word)) {
+          // "0.094kgm^2/s", "5Nms": units run together, and against the number.
+          hint = " (a number and its units are written apart: '" + number + " " + apart +
+                 value.substr(word_end) + "')";
+        } else if (glued && tail != "i" && tail != "j" && tail != "k") {
+          // (not "9.13i": the i is no unit, and what it reads as is said after)
+          hint = " (put a space between a number and its unit: '0.21 kg m^2')";
+        }
       }
       throw InputError(std::string(e.what()) + hint);
     }

@@ -1896,6 +1896,20 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
                         Catch::StartsWith("--answer: cannot read the unit 'kgm") &&
                             Catch::Contains("unknown unit 'kgm' ('kg m', with spaces?)"));
   }
+  // Against the number too ("0.094kgm^2/s", "5Nms"), the units are written apart to copy; a
+  // unit vector's letter against a number ("9.13i") is no unit, and gets no such line.
+  for (const auto& [typed, apart] :
+       std::vector<std::pair<std::string, std::string>>{{"0.094kgm^2/s", "'0.094 kg m^2/s'"},
+                                                        {"0.094kgm2/s", "'0.094 kg m2/s'"},
+                                                        {"5Nms", "'5 N m s'"}}) {
+    INFO(typed);
+    REQUIRE_THROWS_WITH(
+        top.check("p_psi", typed),
+        Catch::Contains("(a number and its units are written apart: " + apart + ")"));
+  }
+  REQUIRE_THROWS_WITH(Fixture("tennis-racket").check("rate_axis2", "9.13i"),
+                      Catch::Contains("unit vector î") && !Catch::Contains("put a space"));
+  REQUIRE_THROWS_WITH(top.check("p_psi", "0.16parsecs"), Catch::Contains("put a space"));
   // Where every name is a unit, what keeps it from reading is said of the units as typed, not
   // that a unit is no function: a number after a power needs its '*', as it does after R².
   REQUIRE_THROWS_WITH(top.check("p_psi", "0.5 kg (0.05 m)² 150 rad/s"),
