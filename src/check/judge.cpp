@@ -527,6 +527,20 @@ std::string whole_turns_note(const std::vector<std::string>& moved) {
          " from the key's by whole turns: the same angle" + (one ? ")" : "s)");
 }
 
+std::optional<std::string> other_branch(const Judge& j, const std::vector<double>& got) {
+  // At θ = 0 or π only φ ± ψ is defined, and any branch is another reading.
+  if (!angles_up_to_turns(j.a) || got.size() != 3 || !(j.a.value.data[1] > 0.0) ||
+      !(j.a.value.data[1] < M_PI) || j.close(0.0, j.a.value.data[1]))
+    return std::nullopt;
+  const std::vector<double> other{got[0] + M_PI, -got[1], got[2] + M_PI};
+  if (!j.all_close(other, j.a.value.data) && !on_keys_turns(j, other).right) return std::nullopt;
+  const std::string middle = entry_name(j.a, 1);
+  return fmt::format(
+      "these angles turn the body as the key's do, on the other branch, with {} negative: {} = "
+      "arccos R₃₃ lies in [0, π], and then {} and {} are each half a turn from yours",
+      middle, middle, entry_name(j.a, 0), entry_name(j.a, 2));
+}
+
 // Principal axes by meaning (axes_judge.hpp): the sine of the angle within the tolerance.
 Verdict judge_axes_answer(const Judge& j, const std::vector<double>& got) {
   const auto& moments = j.a.axis_moments;
@@ -915,6 +929,8 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
                      [&](const WrongAnswer& w) { return j.all_close(compare, w.values); }))
       compare = turned.for_diagnosis;
   }
+  if (const auto branch = detail::other_branch(j, got))
+    return {false, "incorrect: " + a.name, {*branch}};
   if (const auto degrees = detail::degrees_in_numbers(j, text, to_key))
     return {false, "incorrect: " + a.name, {*degrees}};
   // "0.4593" for a period of 2.177 s: a frequency, its unit left off.

@@ -68,6 +68,13 @@ OnKeysTurns on_keys_turns(const Judge& j, const std::vector<double>& got);
 /// " (ψ differs from the key's by whole turns: the same angle)", for the entries `moved`.
 std::string whole_turns_note(const std::vector<std::string>& moved);
 
+/// Proper Euler angles (the first and the last turn about one axis, as every vector of angles
+/// in the catalog is) on the other branch: "(220°, −30°, 250°)" for the key's (40°, 30°, 70°)
+/// is the same rotation, R_z(φ + π) R_y(−θ) R_z(ψ + π) = R_z(φ) R_y(θ) R_z(ψ), but wrong in the
+/// key's convention (θ = arccos R₃₃, in [0, π]). The line that says so; nullopt where `got`
+/// (radians) is not so, up to whole turns, or `a` is no vector of angles.
+std::optional<std::string> other_branch(const Judge& j, const std::vector<double>& got);
+
 /// Why values `v` are not the key's `k` (diagnosis.hpp), each line one finding.
 std::vector<std::string> diagnose(const Judge& j, const Unit& key_unit,
                                   const std::vector<double>& v, const std::vector<double>& k);

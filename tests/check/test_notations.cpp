@@ -15,6 +15,7 @@
 
 #include "check/answer_choice.hpp"
 #include "check/check_fixture.hpp"
+#include "check/diagnosis.hpp"
 #include "check/inequality.hpp"
 #include "check/judge.hpp"
 #include "check/written_forms.hpp"
@@ -2152,6 +2153,44 @@ TEST_CASE("Euler angles are the same up to whole turns, and named as the questio
   REQUIRE(euler.check("angles_zxz", "(2.27, 0.600, 5.93)", three).feedback ==
           std::vector<std::string>{"θ is off by 14.6%"});
   REQUIRE_FALSE(euler.check("angles_zxz", "(2.269, 0.5236, 5.94)").correct);
+}
+
+TEST_CASE("Euler angles on the other branch, the middle one negative, are told so") {
+  // Over the catalog's vectors of angles (all proper Euler angles): (φ + π, −θ, ψ + π) is the
+  // key's rotation, and wrong in its convention (θ in [0, π]); the line names the angles as the
+  // question does. θ's sign alone turned is another rotation, and told as a wrong sign.
+  int told = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (!check::angles_up_to_turns(a)) continue;
+        const auto& k = a.value.data;
+        const std::string middle = check::entry_name(a, 1);
+        for (const double turns : {0.0, 1.0}) {
+          const std::string typed = fmt::format("({:.9g}, {:.9g}, {:.9g})", k[0] + M_PI, -k[1],
+                                                k[2] + M_PI - 2 * M_PI * turns);
+          INFO(p.id << " " << a.name << ": " << typed);
+          const check::Verdict v = f.check(a.name, typed);
+          REQUIRE_FALSE(v.correct);
+          REQUIRE(v.feedback.size() == 1);
+          CHECK_THAT(
+              v.feedback[0],
+              Catch::StartsWith("these angles turn the body as the key's do, on the other "
+                                "branch, with " +
+                                middle + " negative: " + middle + " = arccos R₃₃") &&
+                  Catch::EndsWith(check::entry_name(a, 0) + " and " + check::entry_name(a, 2) +
+                                  " are each half a turn from yours"));
+          ++told;
+        }
+        const std::string sign_only = fmt::format("({:.9g}, {:.9g}, {:.9g})", k[0], -k[1], k[2]);
+        INFO(sign_only);
+        CHECK(f.check(a.name, sign_only).feedback ==
+              std::vector<std::string>{middle + " has the wrong sign"});
+      }
+    }
+  }
+  REQUIRE(told == 16);  // four vectors of angles in each of the two Euler-angle problems
 }
 
 TEST_CASE("degrees in an expression in the symbols are radians: φ + 90°") {
