@@ -532,6 +532,8 @@ Verdict judge_symbolic(const Context& ctx, const Answer& a, const std::string& t
     // symbol makes the key's expression.
     if (const auto named = numbers_named(ctx, a, typed, key, points))
       return {false, differs, {*named}};
+    // "[φ + π, −θ, ψ + π]": Euler angles on the other branch.
+    if (const auto branch = other_branch(j, got)) return {false, differs, {*branch}};
     return {false, differs, diagnose(j, key_unit, got, a.value.data)};
   }
   return {true,

@@ -2191,6 +2191,15 @@ TEST_CASE("Euler angles on the other branch, the middle one negative, are told s
     }
   }
   REQUIRE(told == 16);  // four vectors of angles in each of the two Euler-angle problems
+  // An expression so, at the set values.
+  const Fixture euler("euler-angles");
+  for (const char* typed : {"[φ + π, −θ, ψ + π]", "[φ + 180°, −θ, ψ − 180°]"}) {
+    INFO(typed);
+    const check::Verdict v = euler.check("angles_back_zyz", typed);
+    REQUIRE_FALSE(v.correct);
+    REQUIRE(v.feedback.size() == 1);
+    CHECK_THAT(v.feedback[0], Catch::StartsWith("these angles turn the body as the key's do"));
+  }
 }
 
 TEST_CASE("degrees in an expression in the symbols are radians: φ + 90°") {
