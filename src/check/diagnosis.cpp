@@ -89,13 +89,13 @@ Wrong degrees_for_radians(const Answer& a, const Key&, const Unit& key_unit) {
 Wrong turns_per_second(const Answer& a, const Key&, const Unit& key_unit) {
   if (!per_second(key_unit)) return {};
   return {{"", times(a.value.data, 1.0 / (2 * M_PI)),
-           "this is revolutions per second: multiply by 2 pi for rad/s, or write rev/s"}};
+           "this is revolutions per second: multiply by 2π for rad/s, or write rev/s"}};
 }
 
 Wrong hertz_as_radians(const Answer& a, const Key&, const Unit& key_unit) {
   if (!per_second(key_unit)) return {};
   return {{"", times(a.value.data, 2 * M_PI),
-           "this is 2 pi times the answer: Hz, rev/s and rpm count turns, so 1 Hz = 2 pi rad/s "
+           "this is 2π times the answer: Hz, rev/s and rpm count turns, so 1 Hz = 2π rad/s "
            "(the number in rad/s labelled Hz?)"}};
 }
 

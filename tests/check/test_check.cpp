@@ -895,7 +895,7 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
                  Catch::Contains("against the spin"));
   CHECK_THAT(first(key.parts[0].answers[0], {-2.0 / (2 * M_PI)}, "rad/s"),
              Catch::Contains("revolutions per second"));
-  CHECK_THAT(first(key.parts[0].answers[0], {-4 * M_PI}, "rad/s"), Catch::Contains("2 pi times"));
+  CHECK_THAT(first(key.parts[0].answers[0], {-4 * M_PI}, "rad/s"), Catch::Contains("2π times"));
   CHECK_THAT(first(key.parts[0].answers[0], {3.0}, "rad/s"),
              Catch::Contains("this is Omega_space_rate (part a), not Omega_body_rate"));
   CHECK_THAT(first(key.parts[0].answers[2], {1.0, 0.0, 3.0}, "kg m^2/s"),

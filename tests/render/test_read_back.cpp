@@ -1160,7 +1160,7 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
                                    Catch::Contains("omega (ω)") && Catch::Contains("alpha (α)"));
 }
 
-TEST_CASE("Hz, rev/s and rpm on an angular rate count turns: 1 Hz = 2 pi rad/s, every rate") {
+TEST_CASE("Hz, rev/s and rpm on an angular rate count turns: 1 Hz = 2π rad/s, every rate") {
   int rates = 0;
   for (const auto& p : load_catalog()) {
     const Fixture f(p.id);
@@ -1179,7 +1179,7 @@ TEST_CASE("Hz, rev/s and rpm on an angular rate count turns: 1 Hz = 2 pi rad/s, 
         // The number in rad/s labelled Hz: wrong, and said why.
         const Verdict v = f.check(a.name, fmt::format("{:.10g} Hz", w));
         REQUIRE_FALSE(v.correct);
-        REQUIRE_THAT(v.feedback.at(0), Catch::Contains("1 Hz = 2 pi rad/s"));
+        REQUIRE_THAT(v.feedback.at(0), Catch::Contains("1 Hz = 2π rad/s"));
         ++rates;
       }
     }
