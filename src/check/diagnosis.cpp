@@ -86,6 +86,24 @@ Wrong degrees_for_radians(const Answer& a, const Key&, const Unit& key_unit) {
            "this is the angle in degrees: give radians, or write the unit (12 deg)"}};
 }
 
+// An angular rate in SI (rad/s), not a growth rate (1/s): what an instrument's degrees per
+// second or a motor's revolutions per minute measure.
+bool angular_rate(const Unit& u) {
+  return per_second(u) && u.angle && u.to_si == 1.0;
+}
+
+Wrong degrees_per_second(const Answer& a, const Key&, const Unit& key_unit) {
+  if (!angular_rate(key_unit)) return {};
+  return {{"", times(a.value.data, 180.0 / M_PI),
+           "this is the rate in degrees per second: give rad/s, or write the unit (12 deg/s)"}};
+}
+
+Wrong revolutions_per_minute(const Answer& a, const Key&, const Unit& key_unit) {
+  if (!angular_rate(key_unit)) return {};
+  return {{"", times(a.value.data, 60.0 / (2 * M_PI)),
+           "this is revolutions per minute: multiply by 2π/60 for rad/s, or write rpm"}};
+}
+
 Wrong turns_per_second(const Answer& a, const Key&, const Unit& key_unit) {
   if (!per_second(key_unit)) return {};
   return {{"", times(a.value.data, 1.0 / (2 * M_PI)),
@@ -222,7 +240,9 @@ const std::vector<Mistake>& known_mistakes() {
       {"products of inertia with the wrong sign", products_of_inertia_sign},
       {"a reversed sign", reversed_sign},
       {"degrees for radians", degrees_for_radians},
+      {"degrees per second for rad/s", degrees_per_second},
       {"turns per second for rad/s", turns_per_second},
+      {"revolutions per minute for rad/s", revolutions_per_minute},
       {"Hz taken as rad/s", hertz_as_radians},
       {"the components in another frame", other_frame},
       {"another answer of the key", other_answer},

@@ -9,7 +9,8 @@
 ///
 /// The mistakes, tried in this order (the first that matches is named): products of inertia
 /// with the wrong sign; a reversed sign (for a signed precession rate: what its sign means);
-/// degrees for radians; turns per second for rad/s; 2π times a rate (Hz taken as rad/s); the
+/// degrees for radians; degrees per second for rad/s; turns per second for rad/s; revolutions
+/// per minute for rad/s; 2π times a rate (Hz taken as rad/s); the
 /// components in another frame (answer kind and frame, solvers/key.hpp); another answer of the
 /// key; a rotation's turns each taken the other way or in reverse order (from the key's exact
 /// form at its angles negated); a factor 2, 1/2, 4, 1/4, 12, 1/12, 3 or 1/3. Then, by rule, every

@@ -896,6 +896,15 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
   CHECK_THAT(first(key.parts[0].answers[0], {-2.0 / (2 * M_PI)}, "rad/s"),
              Catch::Contains("revolutions per second"));
   CHECK_THAT(first(key.parts[0].answers[0], {-4 * M_PI}, "rad/s"), Catch::Contains("2π times"));
+  CHECK_THAT(first(key.parts[0].answers[0], {-2.0 * 180 / M_PI}, "rad/s"),
+             Catch::StartsWith("this is the rate in degrees per second"));
+  CHECK_THAT(first(key.parts[0].answers[0], {-2.0 * 60 / (2 * M_PI)}, "rad/s"),
+             Catch::StartsWith("this is revolutions per minute"));
+  // A growth rate (1/s) turns no degrees: 57.3 times it is only that.
+  Answer growth = rate;
+  growth.unit = "1/s";
+  growth.sign = SignConvention::none;
+  CHECK_THAT(first(growth, {-2.0 * 180 / M_PI}, "1/s"), Catch::Equals("57.3 times the answer"));
   CHECK_THAT(first(key.parts[0].answers[0], {3.0}, "rad/s"),
              Catch::Contains("this is Omega_space_rate (part a), not Omega_body_rate"));
   CHECK_THAT(first(key.parts[0].answers[2], {1.0, 0.0, 3.0}, "kg m^2/s"),
@@ -970,7 +979,7 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
              Catch::Equals("this is the approximation A, 20% below the exact value here: the rate "
                            "is B"));
   CHECK_THAT(first(slow, {4.5}, "rad/s"), Catch::Equals("off by 10% of the answer"));
-  REQUIRE(wobble::check::known_mistakes().size() == 10);
+  REQUIRE(wobble::check::known_mistakes().size() == 12);
 }
 
 TEST_CASE("the heavy top's fast-top approximations are named where given for the exact rates") {
