@@ -82,7 +82,7 @@ int check_submission(const CheckOptions& opt, const check::Options& o) {
   }
   if (!variant) variant = opt.variant;
   const sym::Values values = parameter_values(problem, with_variant(problem, variant, opt.sets));
-  const Key key = solve(problem, values);
+  const Key key = solve_at(problem, values, opt.sets);
   const sym::SymbolTable table = problem.symbol_table();
   const auto result = check::judge_submission({key, table, values}, text, o);
   if (opt.format == "gradescope") {
@@ -179,7 +179,7 @@ int run_check(const CheckOptions& opt) {
   const Problem problem = find_problem(opt.problem);
   const sym::Values values =
       parameter_values(problem, with_variant(problem, opt.variant, opt.sets));
-  const Key key = solve(problem, values);
+  const Key key = solve_at(problem, values, opt.sets);
   if (opt.part.empty() && opt.name.empty()) {
     // What there is to check, so that the next command can be typed from this line.
     const auto part = std::find_if(key.parts.begin(), key.parts.end(),

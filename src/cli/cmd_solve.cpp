@@ -46,7 +46,7 @@ int run_solve(const SolveOptions& opt) {
   const std::vector<std::string> assignments = with_variant(problem, opt.variant, opt.sets);
   const sym::Values values = parameter_values(problem, assignments);
   const auto start = std::chrono::steady_clock::now();
-  Key key = solve(problem, values);
+  Key key = solve_at(problem, values, opt.sets);
   key.variant = opt.variant;
   const double key_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -27,7 +27,7 @@ int run_worksheet(const WorksheetOptions& opt) {
   const Problem problem = find_problem(opt.problem);
   const std::vector<std::string> assignments = with_variant(problem, opt.variant, opt.sets);
   const sym::Values values = parameter_values(problem, assignments);
-  const Key key = solve(problem, values);
+  const Key key = solve_at(problem, values, opt.sets);
   const auto shown = shown_values(problem, assignments);
   // The handout without its list of questions: the worksheet asks them one by one.
   const std::string intro = render_handout_text(key, shown, opt.variant, false);

@@ -17,6 +17,12 @@ namespace wobble::cli {
 std::vector<std::string> with_variant(const Problem& problem, std::optional<long> variant,
                                       const std::vector<std::string>& sets);
 
+/// The key of `problem` at `values`; where solving refuses them ("lagrangian0: its value, about
+/// 3.1e+596, is outside the range of double precision"), the refusal with the user's --set
+/// values, which are what to change: ".. (at --set psidot0=1e300)".
+Key solve_at(const Problem& problem, const sym::Values& values,
+             const std::vector<std::string>& sets);
+
 /// "A-B" or "N" as a range of variant numbers (at most 1000 of them), for `option`.
 /// @throws InputError naming `option` and the text.
 std::pair<long, long> variant_range(const std::string& text, const std::string& option);

@@ -2,6 +2,7 @@
 
 #include "check/latex_answer.hpp"
 #include "cli/commands.hpp"
+#include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
@@ -23,6 +24,18 @@ std::vector<std::string> with_variant(const Problem& problem, std::optional<long
   if (variant) out = variant_for(problem, *variant);
   out.insert(out.end(), plain.begin(), plain.end());
   return out;
+}
+
+Key solve_at(const Problem& problem, const sym::Values& values,
+             const std::vector<std::string>& sets) {
+  try {
+    return solve(problem, values);
+  } catch (const InputError& e) {
+    if (sets.empty()) throw;
+    std::string typed;
+    for (const auto& s : sets) typed += (typed.empty() ? "" : ", ") + printable(s, 60);
+    throw InputError(std::string(e.what()) + " (at --set " + typed + ")");
+  }
 }
 
 std::pair<long, long> variant_range(const std::string& text, const std::string& option) {
