@@ -405,6 +405,19 @@ std::optional<InputError> refused_beside_units(const Context& ctx, const Answer&
       unit_like(undefined_name(refusal)) || unit_like(quoted_after(refusal, "unknown function"));
   const std::string unit_text = sym::to_ascii(quoted_after(refusal, "cannot read the unit"));
   const std::string name = name_beside_units(text, ctx.table, kField);
+  if (name.empty() && unit_text.empty()) {
+    // "0.5 kgm (0.05 m) 150 rad/s": units run together, refused as the unit reader refuses them
+    // after a number, not as an unknown function.
+    for (const auto& [at, length] : identifiers(text)) {
+      const std::string word = text.substr(at, length);
+      if (is_unit(word) || units_apart(word).empty() || ctx.table.contains(word)) continue;
+      try {
+        (void)parse_unit(word, kField);
+      } catch (const InputError& run_together) {
+        return run_together;
+      }
+    }
+  }
   if (name.empty()) {
     // "0.5 kg (0.05 m)² 150 rad/s", "0.5 kg (0.05 m)^2 150 rad/s)": every name a unit; what
     // keeps it from reading is said.

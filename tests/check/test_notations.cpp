@@ -1908,6 +1908,11 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
         top.check("p_psi", typed),
         Catch::Contains("(a number and its units are written apart: " + apart + ")"));
   }
+  // Among units worked out, as after a number: not "unknown function 'kgm'".
+  REQUIRE_THROWS_WITH(
+      top.check("p_psi", "0.5 kgm (0.05 m) 150 rad/s"),
+      Catch::StartsWith("--answer: cannot read the unit 'kgm': unknown unit 'kgm' ('kg m', "
+                        "with spaces?)"));
   REQUIRE_THROWS_WITH(Fixture("tennis-racket").check("rate_axis2", "9.13i"),
                       Catch::Contains("unit vector î") && !Catch::Contains("put a space"));
   REQUIRE_THROWS_WITH(top.check("p_psi", "0.16parsecs"), Catch::Contains("put a space"));
