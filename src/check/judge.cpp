@@ -882,7 +882,11 @@ Verdict wrong_unit(const Context& ctx, const Answer& a, const ReadAnswer& p, con
   if (p.symbolic) return v;
   const Judge j{ctx, a, opt, zero_scale(ctx.key, a), layout};
   std::vector<double> typed;
-  for (const auto& e : p.value.entries) typed.push_back(sym::evaluate(e, GiNaC::lst{}, kField));
+  try {
+    for (const auto& e : p.value.entries) typed.push_back(sym::evaluate(e, GiNaC::lst{}, kField));
+  } catch (const InputError&) {
+    return v;  // "sqrt(-83.4) kg": no number to say more of; the dimension is what is wrong
+  }
   if (j.all_close(typed, a.value.data)) {
     const std::string numbers = typed.size() == 1 ? "the number" : "the numbers";
     v.feedback.push_back(a.unit.empty()

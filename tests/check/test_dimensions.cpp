@@ -283,4 +283,9 @@ TEST_CASE("a right number in a unit of another dimension is told that the number
     }
   }
   REQUIRE(told > 100);
+  // A number with no value (not real) in a wrong unit is told its dimension, as before.
+  const Fixture racket("tennis-racket");
+  const check::Verdict root = racket.check("rate_axis2", "sqrt(-83.4) kg");
+  REQUIRE(root.wrong_dimension);
+  CHECK(root.feedback.size() == 1);
 }
