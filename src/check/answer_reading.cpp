@@ -1510,15 +1510,14 @@ ReadAnswer read_as_written(const std::string& typed, const sym::SymbolTable& tab
         while (word_end < value.size() && std::isalnum(static_cast<unsigned char>(value[word_end])))
           ++word_end;
         const std::string word = value.substr(letters, word_end - letters);
-        const std::string apart = units_apart(word);
         if (glued && is_unit(tail) && table.contains(tail)) {
           // "0.16m" where m is a mass: a unit's letters the problem also uses as a symbol.
           hint = " (" + tail + " is one of the problem's symbols here: " + number + "*" + tail +
                  " for it, " + number + " " + tail + " for the unit)";
-        } else if (!apart.empty() && apart != word && !table.contains(word)) {
+        } else if (units_run_together(word) && !table.contains(word)) {
           // "0.094kgm^2/s", "5Nms": units run together, and against the number.
-          hint = " (a number and its units are written apart: '" + number + " " + apart +
-                 value.substr(word_end) + "')";
+          hint = " (a number and its units are written apart: '" + number + " " +
+                 units_apart(word) + value.substr(word_end) + "')";
         } else if (glued && tail != "i" && tail != "j" && tail != "k") {
           // (not "9.13i": the i is no unit, and what it reads as is said after)
           hint = " (put a space between a number and its unit: '0.21 kg m^2')";

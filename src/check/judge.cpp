@@ -399,7 +399,7 @@ std::optional<InputError> refused_beside_units(const Context& ctx, const Answer&
   // Refused for a unit read as a symbol or a function ("kg (0.05 m)^2"), or as the value's
   // unit with the name in it ("0.5 kg × Q": 'kg × Q').
   const auto unit_like = [](const std::string& word) {
-    return is_unit(word) || !units_apart(word).empty();  // "kgm": units run together
+    return is_unit(word) || units_run_together(word);  // "kgm"
   };
   const bool unit_as_name =
       unit_like(undefined_name(refusal)) || unit_like(quoted_after(refusal, "unknown function"));
@@ -410,7 +410,7 @@ std::optional<InputError> refused_beside_units(const Context& ctx, const Answer&
     // after a number, not as an unknown function.
     for (const auto& [at, length] : identifiers(text)) {
       const std::string word = text.substr(at, length);
-      if (is_unit(word) || units_apart(word).empty() || ctx.table.contains(word)) continue;
+      if (!units_run_together(word) || ctx.table.contains(word)) continue;
       try {
         (void)parse_unit(word, kField);
       } catch (const InputError& run_together) {

@@ -580,7 +580,7 @@ std::string name_beside_units(const std::string& typed, const sym::SymbolTable& 
     const std::string word = ascii.substr(ids[k].first, ids[k].second);
     if (word == "pi" || sym::is_function_name(word) || table.contains(word)) continue;
     // "kgm" in "0.09375 kgm^2/s" is units run together (the unit reader says so), not a name.
-    if (is_unit(word) || !units_apart(word).empty() || (word == "sidereal" && k + 1 < ids.size())) {
+    if (is_unit(word) || units_run_together(word) || (word == "sidereal" && k + 1 < ids.size())) {
       unit = true;
     } else if (other.empty()) {
       other = word;

@@ -195,6 +195,10 @@ std::string units_apart(const std::string& word) {
   return names_in_a_row(word);
 }
 
+bool units_run_together(const std::string& word) {
+  return !units_apart(word).empty() && !is_unit(word);
+}
+
 std::string Unit::dimension_words() const {
   static const char* word[] = {"mass", "length", "time"};
   std::string num, den;

@@ -64,6 +64,10 @@ bool is_unit(const std::string& text);
 /// none of these, or longer than 16 characters.
 std::string units_apart(const std::string& word);
 
+/// Whether `word` is no unit but unit names run together, which units_apart writes apart
+/// ("kgm", "Nms", "kgm2"; not "kg", "m2" or "mN", which are units).
+bool units_run_together(const std::string& word);
+
 /// A value and the unit after it, "" if none: the longest tail that reads as a unit and starts
 /// a word ("0.05 m", "5cm", "9.81 m/s^2", "150 1/s", "5 [cm]", "(90 - 15)deg"; not the "i" of
 /// "2*pi"). Both trimmed; the value is not read here. ASCII text (sym::to_ascii first).

@@ -176,7 +176,10 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
                                                         {"", ""}}) {
     INFO(word);
     REQUIRE(units_apart(word) == apart);
+    // Run together: split into more than one name, and no unit as written.
+    CHECK(units_run_together(word) == (!apart.empty() && apart.find(' ') != std::string::npos));
   }
+  CHECK_FALSE(units_run_together("mN"));  // a millinewton, though m and N are names too
   for (const std::string bad :
        {"furlong", "kg^x",  "m//s",    "/s",          "kg^123",      "",          "kg m^2 !",
         "1/",      "2/s",   "1/s/",    "s^(-1",       "s^()",        "s^(-)",     "s^(-1))",
