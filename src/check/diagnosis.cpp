@@ -136,8 +136,8 @@ Wrong other_frame(const Answer& a, const Key& key, const Unit&) {
   return out;
 }
 
-// Another answer of the key: more specific than a factor (max_angle is exactly twice
-// angle_L_e3, L0_space is L0_body turned). Not one that is zero (the flying plate's
+// Another answer of the key, or its approximation: more specific than a factor (max_angle is
+// exactly twice angle_L_e3, L0_space is L0_body turned). Not one that is zero (the flying plate's
 // identity_residual): any value small beside its unit's scale would be named as it.
 Wrong other_answer(const Answer& a, const Key& key, const Unit&) {
   Wrong out;
@@ -152,6 +152,19 @@ Wrong other_answer(const Answer& a, const Key& key, const Unit&) {
         continue;
       }
       out.push_back({"", b.value.data, "this is " + b.name + " (part " + part.id + "), not " + a.name});
+    }
+  }
+  // The other answer's textbook approximation: I3 ω3 / (I1 cos θ), the fast top's fast rate,
+  // given for the slow one. After the exact values, which name it more surely.
+  for (const auto& part : key.parts) {
+    for (const auto& b : part.answers) {
+      if (&b == &a || b.name == a.name || b.unit != a.unit) continue;
+      for (const auto& approximation : b.approximations) {
+        if (approximation.values.size() != a.value.data.size()) continue;
+        out.push_back({"", approximation.values,
+                       fmt::format("this is {} of {} (part {}), not {}", approximation.name, b.name,
+                                   part.id, a.name)});
+      }
     }
   }
   return out;

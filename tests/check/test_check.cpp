@@ -1022,6 +1022,17 @@ TEST_CASE("the heavy top's fast-top approximations are named where given for the
                Catch::Contains(fmt::format("{:.4g} rad/s, 16.2% below", slow)));
   REQUIRE_THAT(notes("phidot_fast"),
                Catch::Contains(fmt::format("{:.4g} rad/s, 19.3% above", fast)));
+  // Each rate's approximation given for the other rate: the one it approximates is named.
+  const Verdict fast_for_slow = top.check("phidot_slow", fmt::format("{:.4g} rad/s", fast));
+  REQUIRE_FALSE(fast_for_slow.correct);
+  CHECK(fast_for_slow.feedback.at(0) ==
+        "this is the fast-top approximation I3 ω3 / (I1 cos θ) of phidot_fast (part d), not "
+        "phidot_slow");
+  const Verdict slow_for_fast = top.check("phidot_fast", "M g l/(I3 omega3)");
+  REQUIRE_FALSE(slow_for_fast.correct);
+  CHECK(slow_for_fast.feedback.at(0) ==
+        "this is the fast-top approximation M g l / (I3 ω3) of phidot_slow (part d), not "
+        "phidot_fast");
 }
 
 TEST_CASE(
