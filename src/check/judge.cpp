@@ -6,6 +6,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <initializer_list>
 #include <optional>
@@ -475,7 +476,39 @@ bool moments_on_diagonal(const Answer& a, sym::ValueText& v) {
   return true;
 }
 
-void check_shape(const Answer& a, const sym::ValueText& v, const std::string& typed) {
+// Where a diagonal tensor is asked for and three entries are given (its diagonal, as a table
+// lists the moments): how to write them as the tensor, "diag(0.111, 0.111, 0.006) kg m^2".
+std::string diagonal_hint(const Answer& a, const sym::ValueText& v, const std::string& typed,
+                          bool numbers_with_unit) {
+  if (a.value.shape != Value::Shape::matrix || a.value.rows != 3 || a.value.cols != 3 ||
+      !v.is_vector || v.entries.size() != 3)
+    return "";
+  for (std::size_t i = 0; i < 9; ++i) {
+    if (i / 3 != i % 3 && a.value.data[i] != 0.0) return "";
+  }
+  std::string text = trim(typed);
+  if (!text.empty() && opens(text[0])) {
+    const std::size_t close = matching(text, 0);
+    if (close == std::string::npos) return "";
+    text = text.substr(1, close - 1) + ")" + text.substr(close + 1);
+  } else if (const std::size_t comma = text.rfind(',');
+             numbers_with_unit && comma != std::string::npos) {
+    // "0.111, 0.111, 0.006 kg m^2": the unit is the whole's, after the bracket.
+    const std::string last = trim(text.substr(comma + 1));
+    char* end = nullptr;
+    (void)std::strtod(last.c_str(), &end);
+    const std::size_t digits = static_cast<std::size_t>(end - last.c_str());
+    text = text.substr(0, comma + 1) + " " + last.substr(0, digits) + ")" +
+           (digits < last.size() && last[digits] != ' ' ? " " : "") + last.substr(digits);
+  } else {
+    text += ")";
+  }
+  return " (for the tensor with this diagonal write diag(" + printable(text, kQuotedCharacters) +
+         "; three entries alone are a vector)";
+}
+
+void check_shape(const Answer& a, const ReadAnswer& p, const std::string& typed) {
+  const sym::ValueText& v = p.value;
   const bool key_vec = a.value.shape == Value::Shape::vector;
   const bool key_mat = a.value.shape == Value::Shape::matrix;
   if (key_vec != v.is_vector || key_mat != v.is_matrix || a.value.data.size() != v.entries.size()) {
@@ -488,6 +521,7 @@ void check_shape(const Answer& a, const sym::ValueText& v, const std::string& ty
       hint +=
           " (the principal moments are this matrix's eigenvalues; one with nothing off its "
           "diagonal is read as its diagonal)";
+    hint += diagonal_hint(a, v, typed, p.unit && !p.symbolic);
     throw InputError(fmt::format("{}: {} wants {}, not {}{}", kField, a.name,
                                  shape_words(a.value.rows, a.value.cols, key_vec, key_mat),
                                  shape_words(v.rows, v.cols, v.is_vector, v.is_matrix), hint));
@@ -903,7 +937,7 @@ Verdict wrong_unit(const Context& ctx, const Answer& a, const ReadAnswer& p, con
 // An answer read, `p`, judged against `a`.
 Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
                    const ReadAnswer& p, const Options& opt, AxesLayout layout) {
-  check_shape(a, p.value, text);
+  check_shape(a, p, text);
   const Unit key_unit = a.unit.empty() ? Unit{} : parse_unit(a.unit, "key unit of " + a.name);
   double to_key = 1.0;
   if (p.unit) {

@@ -3137,6 +3137,47 @@ TEST_CASE("principal moments given as the diagonal tensor are read as its diagon
                           !Catch::Contains("decimal comma"));
 }
 
+TEST_CASE("a diagonal tensor given as its three diagonal entries is told how to write it") {
+  int judged = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        const auto& m = a.value.data;
+        if (a.value.shape != wobble::Value::Shape::matrix || m.size() != 9) continue;
+        bool diagonal = true;
+        for (std::size_t i = 0; i < 9; ++i) diagonal = diagonal && (i % 4 == 0 || m[i] == 0.0);
+        const std::string entries = fmt::format("{:.6g}, {:.6g}, {:.6g}", m[0], m[4], m[8]);
+        const std::string unit = a.unit.empty() ? "" : " " + a.unit;
+        for (const std::string& typed :
+             {entries, "(" + entries + ")" + unit, entries + unit, "[" + entries + "]"}) {
+          INFO(p.id << " " << a.name << ": " << typed);
+          std::string said;
+          try {
+            (void)f.check(a.name, typed);
+          } catch (const wobble::InputError& e) {
+            said = e.what();
+          }
+          REQUIRE_THAT(said, Catch::Contains("wants a 3x3 matrix"));
+          const std::size_t from = said.find("write diag("), to = said.find("; three entries");
+          if (!diagonal) {  // the tensor has products of inertia: its diagonal is not it
+            REQUIRE(from == std::string::npos);
+            continue;
+          }
+          REQUIRE(from != std::string::npos);
+          REQUIRE(to != std::string::npos);
+          // What it says to write is read back and judged right.
+          const std::string suggested = said.substr(from + 6, to - from - 6);
+          INFO(suggested);
+          REQUIRE(f.check(a.name, suggested).correct);
+          ++judged;
+        }
+      }
+    }
+  }
+  REQUIRE(judged >= 8);  // the cone's two tensors at least, four ways each
+}
+
 TEST_CASE(
     "an answer restated in a bracket after it is judged twice, the bracket a remark only "
     "where no value reads from it") {
