@@ -226,9 +226,9 @@ Wrong approximation_given(const Answer& a, const Key&, const Unit&) {
     if (approximation.values.size() != 1) continue;
     const double off_percent = 100 * (approximation.values[0] - exact) / exact;
     out.push_back({"", approximation.values,
-                   fmt::format("this is {}, {:.3g}% {} the exact value here: {}",
-                               approximation.name, std::abs(off_percent),
-                               off_percent < 0 ? "below" : "above", approximation.remedy)});
+                   fmt::format("this is {}, {:.3g}% {} {} here: {}", approximation.name,
+                               std::abs(off_percent), off_percent < 0 ? "below" : "above",
+                               approximation.beside, approximation.remedy)});
   }
   return out;
 }

@@ -20,6 +20,33 @@ namespace {
 using detail::Reader;
 using namespace detail;
 
+// An answer's `mistakes`: [{ value, what, remedy }, ..], each of the three a string that says
+// something. The value is read when the problem is solved, against the answer's unit.
+std::vector<MistakeSpec> read_mistakes(const Reader& r, const toml::node* n,
+                                       const std::string& af) {
+  const std::string f = af + ".mistakes";
+  const toml::array* list = n->as_array();
+  if (list == nullptr) r.fail(n, f, "expected a list of { value, what, remedy } tables");
+  std::vector<MistakeSpec> out;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string mf = f + "[" + std::to_string(i) + "]";
+    const toml::table* t = list->get(i)->as_table();
+    if (t == nullptr) r.fail(list->get(i), mf, "expected a { value, what, remedy } table");
+    r.only_keys(*t, mf, {"value", "what", "remedy"});
+    MistakeSpec m;
+    m.value = r.expression(t->get("value"), mf + ".value", t);
+    m.what = r.string(*t, "what", mf + ".");
+    m.remedy = r.string(*t, "remedy", mf + ".");
+    for (const auto& [key, text] : {std::pair{"value", &m.value}, std::pair{"what", &m.what},
+                                    std::pair{"remedy", &m.remedy}}) {
+      if (trim(*text).empty()) r.fail(t->get(key), mf + "." + key, "is empty");
+    }
+    m.field = mf;
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
 PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) {
   r.only_keys(t, f, {"id", "question", "answers", "hint"});
   PartSpec p;
@@ -35,7 +62,7 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
       const std::string name = r.text(n, af);
       p.answers.push_back({name, name, std::nullopt});
     } else if (const toml::table* at = n->as_table()) {
-      r.only_keys(*at, af, {"name", "quantity", "tolerance"});
+      r.only_keys(*at, af, {"name", "quantity", "tolerance", "mistakes"});
       AnswerSpec a;
       a.name = r.string(*at, "name", af + ".");
       a.quantity = r.string(*at, "quantity", af + ".", false, a.name);
@@ -46,9 +73,10 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
                  "expected a relative tolerance between 0 and 1 (0.05 is 5%)");
         a.tolerance = *v;
       }
+      if (const toml::node* mn = at->get("mistakes")) a.mistakes = read_mistakes(r, mn, af);
       p.answers.push_back(a);
     } else {
-      r.fail(n, af, "expected an answer name or a { name, quantity, tolerance } table");
+      r.fail(n, af, "expected an answer name or a { name, quantity, tolerance, mistakes } table");
     }
   }
   return p;

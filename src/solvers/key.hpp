@@ -84,12 +84,16 @@ const char* sign_name(SignConvention s);
 /// "scalar", "vector" or "matrix": how a value is typed (the exports and the page's inputs).
 const char* shape_name(Value::Shape s);
 
-/// A textbook approximation of an answer, evaluated at the key's values: the judge names it when
-/// a student gives it for the answer ("the fast-top approximation M g l / (I3 ω3)").
+/// A textbook approximation of an answer, evaluated at the key's values, or a value the problem
+/// file names (an observation beside the model's answer): the judge names it when a student
+/// gives it for the answer ("the fast-top approximation M g l / (I3 ω3)").
 struct Approximation {
   std::string name;  ///< what it is, with its formula: "the fast-top approximation M g l / (I3 ω3)"
   std::string remedy;  ///< what the answer is instead: "the slow rate is the smaller root of .."
   std::vector<double> values;  ///< in the answer's unit, as Value::data
+  /// What it is measured against in the judge's line ("16.2% below the exact value here"): an
+  /// observation is off from the answer, not from an exact value it approximates.
+  std::string beside = "the exact value";
 };
 
 struct Answer {

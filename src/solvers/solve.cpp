@@ -9,6 +9,28 @@
 
 namespace wobble {
 
+namespace {
+// The problem file's named mistakes of one answer, read in the answer's unit as the solver
+// computed it ("433 day" for a period in s).
+void add_mistakes(const Problem& problem, const AnswerSpec& spec, Answer& answer) {
+  for (const auto& m : spec.mistakes) {
+    const std::string field = problem.file.string() + ": " + m.field + ".value";
+    if (answer.value.shape != Value::Shape::scalar) {
+      throw InputError(
+          fmt::format("{}: '{}' is a number, but {} is a {}; a named mistake is "
+                      "one number",
+                      field, m.value, spec.name, shape_name(answer.value.shape)));
+    }
+    Parameter as_answer;
+    as_answer.name = spec.name;
+    as_answer.unit = answer.unit;
+    as_answer.range = parse_interval("(-inf, inf)", field);
+    const double value = parse_parameter_value(as_answer, m.value, field);
+    answer.approximations.push_back({m.what, m.remedy, {value}, "the answer"});
+  }
+}
+}  // namespace
+
 Key assemble_parts(const Problem& problem,
                    const std::function<Computed(const std::string& quantity)>& compute) {
   Key key;
@@ -24,6 +46,7 @@ Key assemble_parts(const Problem& problem,
       }
       c.answer.name = spec.name;
       c.answer.check_tolerance = spec.tolerance;
+      add_mistakes(problem, spec, c.answer);
       pk.answers.push_back(std::move(c.answer));
     }
     key.parts.push_back(std::move(pk));

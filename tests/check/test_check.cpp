@@ -1035,6 +1035,35 @@ TEST_CASE("the heavy top's fast-top approximations are named where given for the
         "phidot_fast");
 }
 
+TEST_CASE("a value the problem file names as a mistake is named when given as the file writes it") {
+  int named = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : p.parts) {
+      for (const auto& spec : part.answers) {
+        for (const auto& m : spec.mistakes) {
+          // As the file writes it, and as a student may: "433 days" for "433 day".
+          for (const std::string& typed : {m.value, m.value + "s"}) {
+            INFO(p.id << " " << spec.name << ": " << typed);
+            const Verdict v = f.check(spec.name, typed);
+            REQUIRE_FALSE(v.correct);
+            REQUIRE_THAT(v.feedback.at(0), Catch::StartsWith("this is " + m.what + ", ") &&
+                                               Catch::Contains("the answer here: " + m.remedy));
+            ++named;
+          }
+        }
+      }
+    }
+  }
+  REQUIRE(named >= 4);  // the Earth's observed wobble, as a period and as a rate
+  // The Earth's: 433 days against the rigid Earth's 303.6 days is 42.6% above, read in days.
+  const Fixture earth("earth-free-precession");
+  const double days = earth.answer("precession_period_body").value.data.at(0) / 86400;
+  const Verdict chandler = earth.check("precession_period_body", "433 d");
+  REQUIRE_THAT(chandler.feedback.at(0),
+               Catch::Contains(fmt::format("{:.3g}% above the answer", 100 * (433 / days - 1))));
+}
+
 TEST_CASE(
     "a submission names answers as written, in LaTeX too; a second line and a stray name are "
     "reported") {

@@ -100,6 +100,38 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
       Contains("cannot be combined"));
 }
 
+TEST_CASE("an answer's named mistakes are read as written and refused with their field") {
+  using Catch::Contains;
+  const auto with = [](const std::string& mistakes) {
+    return replaced(kGood, "{ name = \"I_about_O\", quantity = \"I\" }",
+                    "{ name = \"I_about_O\", quantity = \"I\", mistakes = " + mistakes + " }");
+  };
+  const Problem p = load_problem(test::write_file(
+      "load/mistakes.toml",
+      with("[{ value = \"2 kg m^2\", what = \"one mass's\", remedy = \"sum both\" }, "
+           "{ value = 0.5, what = \"half\", remedy = \"all\" }]")));
+  const auto& mistakes = p.parts[0].answers[1].mistakes;
+  REQUIRE(mistakes.size() == 2);
+  CHECK(mistakes[0].value == "2 kg m^2");
+  CHECK(mistakes[0].what == "one mass's");
+  CHECK(mistakes[0].remedy == "sum both");
+  CHECK(mistakes[0].field == "parts[0].answers[1].mistakes[0]");
+  CHECK(mistakes[1].value == "0.5");
+  CHECK(p.parts[0].answers[0].mistakes.empty());
+  CHECK_THAT(load_error(with("3")),
+             Contains("bad.toml:25: parts[0].answers[1].mistakes: expected a list"));
+  CHECK_THAT(load_error(with("[3]")), Contains("parts[0].answers[1].mistakes[0]: expected a "
+                                               "{ value, what, remedy } table"));
+  CHECK_THAT(load_error(with("[{ value = \"1\", what = \"x\" }]")),
+             Contains("parts[0].answers[1].mistakes[0].remedy: missing"));
+  CHECK_THAT(load_error(with("[{ value = \"1\", what = \" \", remedy = \"y\" }]")),
+             Contains("parts[0].answers[1].mistakes[0].what: is empty"));
+  CHECK_THAT(load_error(with("[{ value = \"1\", what = \"x\", remedy = \"y\", why = 1 }]")),
+             Contains("mistakes[0].why: unknown key (expected one of: remedy, value, what)"));
+  CHECK_THAT(load_error(with("[{ value = [1], what = \"x\", remedy = \"y\" }]")),
+             Contains("mistakes[0].value: expected an expression"));
+}
+
 TEST_CASE("the solver, its motion keys and each quantity are checked when the file loads") {
   using Catch::Contains;
   // A schema of the loader's own (problem/solver_schema.hpp), not the program's registry.

@@ -377,6 +377,43 @@ TEST_CASE("problem lookup: by id, by file, and unknown ids list the known ones")
   REQUIRE_THROWS_WITH(find_problem("/nonexistent/x.toml"), Catch::Contains("no such problem file"));
 }
 
+TEST_CASE("a problem file's named mistakes are read in the answer's unit when it is solved") {
+  const auto with_mistake = [](const std::string& answer, const std::string& value) {
+    std::string text = kTwoMasses;
+    const std::string answers = "answers = [\"I\"]";
+    REQUIRE(text.find(answers) != std::string::npos);
+    return text.replace(text.find(answers), answers.size(),
+                        "answers = [{ name = \"" + answer + "\", mistakes = [{ value = " + value +
+                            ", what = \"the mass of one\", remedy = \"add both\" }] }]");
+  };
+  const auto solved = [](const std::string& text) {
+    const Problem p = load_problem(test::write_file("mistakes/two.toml", text));
+    return solve(p, parameter_values(p, {}));
+  };
+  // Masses m and 2m at m = 1 kg: the total is 3 kg; 2000 g is read as 2 kg, as a number as 1 kg.
+  for (const auto& [typed, kg] : {std::pair{"\"2000 g\"", 2.0}, std::pair{"1", 1.0}}) {
+    INFO(typed);
+    const Key key = solved(with_mistake("mass", typed));
+    const Answer& total = key.parts.at(0).answers.at(0);
+    REQUIRE(total.value.data == std::vector<double>{3.0});
+    REQUIRE(total.approximations.size() == 1);
+    CHECK(total.approximations[0].values == std::vector<double>{kg});
+    CHECK(total.approximations[0].name == "the mass of one");
+    CHECK(total.approximations[0].remedy == "add both");
+    CHECK(total.approximations[0].beside == "the answer");
+  }
+  // Refused, naming the file and the field: another dimension, no number, a tensor's.
+  CHECK_THROWS_WITH(solved(with_mistake("mass", "\"2 m\"")),
+                    Catch::Contains("two.toml: parts[0].answers[0].mistakes[0].value: '2 m' is in "
+                                    "m (length), but mass is in kg (mass)"));
+  CHECK_THROWS_WITH(
+      solved(with_mistake("mass", "\"two kg\"")),
+      Catch::Contains("parts[0].answers[0].mistakes[0].value") && Catch::Contains("'two kg'"));
+  CHECK_THROWS_WITH(
+      solved(with_mistake("I", "\"2 kg m^2\"")),
+      Catch::Contains("mistakes[0].value: '2 kg m^2' is a number, but I is a matrix"));
+}
+
 TEST_CASE("one parameter per --set: several in one are refused with the options to type") {
   const Problem& plate = find_problem("flying-plate");
   for (const std::string several : {"m=0.5,R=0.1", "m=0.5; R=0.1", "m=0.5 R=0.1"}) {
