@@ -40,7 +40,11 @@ std::string two_digits(double x) {
   if (x == 0.0) return "0";
   const int e = static_cast<int>(std::floor(std::log10(std::abs(x))));
   const double place = std::pow(10.0, e - 1);
-  return fmt::format("{:.{}g}", std::round(x / place) * place, 2);
+  const double rounded = std::round(x / place) * place;
+  // "260", as a handout writes a spin, not "2.6e+02": from 10 to a million the two digits are
+  // whole tens or more; beyond, and below 1e-4, the exponent is clearer.
+  if (e >= 1 && e < 6) return fmt::format("{:.0f}", rounded);
+  return fmt::format("{:.{}g}", rounded, 2);
 }
 }  // namespace
 

@@ -1,11 +1,13 @@
 // Variants: reproducible, inside every range, rounded as shown, and different from each other.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <set>
 
-#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "problem/variants.hpp"
+#include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
 
 using namespace wobble;
@@ -18,6 +20,32 @@ TEST_CASE("variant values are pinned: the same N gives the same numbers everywhe
           std::vector<std::string>{"m=0.12", "R=0.062", "omega=17", "alpha=24deg"});
   REQUIRE(variant_assignments(plate, 2) ==
           std::vector<std::string>{"m=0.11", "R=0.11", "omega=19", "alpha=11deg"});
+  // Two digits of a value past 10 are written whole, as a handout writes a spin.
+  REQUIRE(variant_assignments(find_problem("heavy-top"), 4) ==
+          std::vector<std::string>{"M=0.52", "R=0.039", "l=0.078", "theta0=20deg", "thetadot0=0",
+                                   "phidot0=0", "psidot0=260"});
+}
+
+TEST_CASE("a variant's values are written as a handout writes them: no exponent from 10 up") {
+  int whole = 0;
+  for (const auto& p : load_catalog()) {
+    for (long n = 1; n <= 200; ++n) {
+      for (const auto& a : variant_assignments(p, n)) {
+        const std::string text = a.substr(a.find('=') + 1);
+        if (text.find("deg") != std::string::npos) continue;
+        INFO(p.id << " variant " << n << ": " << a);
+        const double x = std::stod(text);
+        if (std::abs(x) >= 10 && std::abs(x) < 1e6) {
+          REQUIRE(text.find_first_not_of("-0123456789") == std::string::npos);
+          ++whole;
+        }
+        // Two significant digits whatever the notation.
+        const std::string digits = fmt::format("{:.2g}", x);
+        REQUIRE(std::stod(digits) == x);
+      }
+    }
+  }
+  REQUIRE(whole > 100);  // the heavy top's spins and the flying plate's rates at least
 }
 
 TEST_CASE("every variant of every problem is inside the ranges and differs from the others") {
