@@ -7,6 +7,7 @@
 #include <ostream>
 
 #include "check/brackets.hpp"
+#include "check/word_wrap.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/plain_text.hpp"
@@ -40,6 +41,46 @@ std::string shown(const Answer& a) {
   return a.symbolic.empty() ? v : sym::to_unicode(a.symbolic) + " = " + v;
 }
 
+// Whether a line of the intro begins a paragraph of its own however it follows another: a
+// Markdown list's item or a table's row, which a statement could hold.
+bool starts_own_line(const std::string& line) {
+  return line.rfind("- ", 0) == 0 || line.rfind("* ", 0) == 0 || line.rfind("|", 0) == 0 ||
+         (!line.empty() && is_digit(line[0]) && line.find(". ") != std::string::npos &&
+          line.find_first_not_of("0123456789") == line.find(". "));
+}
+
+// The intro at `width` columns: its paragraphs (runs of lines at the margin, the statement as
+// the file breaks them, which Markdown reads as one) joined and broken again at spaces, its
+// indented lines (the values) each broken after their indent and two spaces more. As it is
+// where no width is known.
+std::string reflowed(const std::string& intro, std::size_t width) {
+  if (width == 0) return intro;
+  std::string out, paragraph;
+  const auto flush = [&] {
+    if (!paragraph.empty()) out += word_wrapped(paragraph, width, "", "");
+    paragraph.clear();
+  };
+  std::size_t at = 0;
+  while (at < intro.size()) {
+    std::size_t end = intro.find('\n', at);
+    if (end == std::string::npos) end = intro.size();
+    const std::string line = intro.substr(at, end - at);
+    at = end + 1;
+    if (line.empty() || line[0] == ' ') {
+      flush();
+      const std::size_t indent = line.find_first_not_of(' ');
+      out += line.empty() ? "\n"
+                          : word_wrapped(line.substr(indent), width, line.substr(0, indent),
+                                         std::string(indent + 2, ' '));
+      continue;
+    }
+    if (starts_own_line(line)) flush();
+    paragraph += (paragraph.empty() ? "" : " ") + line;
+  }
+  flush();
+  return out;
+}
+
 enum class Outcome { right, revealed, skipped, quit, nothing };
 
 // What a line asks for besides an answer: the symbol or the word, in any case ("Quit", "HINT").
@@ -66,8 +107,15 @@ struct Session {
   std::ostream& out;
   const Context& ctx;
   const Options& opt;
+  std::size_t width;  ///< the terminal's columns, 0 if none is known
   bool quit_after_reveal = false;
   int answered_before_quit = 0;  ///< answers of the part quit in that were right or revealed
+
+  // One line of the worksheet's own, broken at spaces to the width: after `first`, each further
+  // line after `rest`.
+  void say(const std::string& text, const std::string& first, const std::string& rest) {
+    out << word_wrapped(text, width, first, rest);
+  }
 
   bool read(const std::string& prompt, std::string& line) {
     if (!read_line(prompt, line)) {
@@ -84,9 +132,9 @@ struct Session {
   // what is open).
   bool read_answer(const std::string& prompt, std::string& line) {
     if (!read(prompt, line)) return false;
-    std::size_t width = 0;  // the prompt's characters (its unit may have a '²')
-    for (const char c : prompt) width += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
-    const std::string dots = fmt::format("{:>{}} ", "...", width > 1 ? width - 1 : 3);
+    const std::size_t prompt_columns = columns(prompt);  // its unit may have a '²'
+    const std::string dots =
+        fmt::format("{:>{}} ", "...", prompt_columns > 1 ? prompt_columns - 1 : 3);
     for (int lines = 1; list_left_open(line) && lines < kMostAnswerLines; ++lines) {
       std::string more;
       if (!read_line(dots, more) || trim(more).empty()) break;
@@ -96,21 +144,25 @@ struct Session {
   }
 
   Outcome part(const PartKey& part, const std::string& hint) {
-    out << fmt::format("\n({}) {}\n", part.id, plain_text(part.question));
+    out << "\n";
+    say(plain_text(part.question), "(" + part.id + ") ", "    ");
     if (part.answers.empty()) {
       // Nothing exists to answer at these values (no steady precession): say why, move on.
-      out << "  nothing to answer at these values: " +
-                 (part.steps.empty() ? std::string("see `wobble solve`") : part.steps.back().text) +
-                 "\n";
+      say("nothing to answer at these values: " +
+              (part.steps.empty() ? std::string("see `wobble solve`") : part.steps.back().text),
+          "  ", "    ");
       return Outcome::nothing;
     }
     // An answer the question asks for that does not exist here (a horizontal top's fast
     // precession): said before the others are asked.
-    for (std::size_t i = 0; i < part.absent.size(); ++i) out << "  " << part.absent_line(i) << "\n";
+    for (std::size_t i = 0; i < part.absent.size(); ++i) say(part.absent_line(i), "  ", "    ");
     bool revealed = false, hint_shown = false;
     const auto give_hint = [&] {
-      out << (hint.empty() ? "  no hint for this part; '!' reveals the answer\n"
-                           : "  hint: " + plain_text(hint) + "\n");
+      if (hint.empty()) {
+        say("no hint for this part; '!' reveals the answer", "  ", "    ");
+      } else {
+        say(plain_text(hint), "  hint: ", "    ");
+      }
       hint_shown = true;
     };
     int answered = 0;
@@ -130,7 +182,7 @@ struct Session {
         }
         if (command == Command::skip) return Outcome::skipped;
         if (command == Command::help) {
-          out << "  " << kCommandWords << "\n";
+          say(kCommandWords, "  ", "    ");
           continue;
         }
         if (command == Command::hint) {
@@ -146,15 +198,15 @@ struct Session {
         if (line.empty()) continue;
         try {
           const Verdict v = judge(ctx, a, line, opt);
-          out << "  " << v.line << "\n";
-          for (const auto& f : v.feedback) out << "    " << f << "\n";
+          say(v.line, "  ", "    ");
+          for (const auto& f : v.feedback) say(f, "    ", "      ");
           if (v.correct) {
             ++answered;
             break;
           }
           if (++wrong == 2 && !hint_shown) give_hint();
         } catch (const InputError& e) {
-          out << "  cannot read that: " << without_option(e.what()) << "\n";
+          say("cannot read that: " + without_option(e.what()), "  ", "    ");
         }
       }
     }
@@ -173,10 +225,11 @@ ReadLine stream_lines(std::istream& in, std::ostream& out, bool echo) {
 }
 
 WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const std::string& intro,
-                               const Problem& problem, const Context& ctx, const Options& opt) {
-  out << intro;
-  out << "\nAnswer each part (units optional; SI if none). " << kCommands << "\n";
-  Session session{read, out, ctx, opt};
+                               const Problem& problem, const Context& ctx, const Options& opt,
+                               std::size_t width) {
+  out << reflowed(intro, width) << "\n";
+  Session session{read, out, ctx, opt, width};
+  session.say(std::string("Answer each part (units optional; SI if none). ") + kCommands, "", "");
   WorksheetSummary sum;
   bool quit = false;
   for (const auto& part : ctx.key.parts) {
@@ -211,11 +264,14 @@ WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const st
         break;
     }
   }
-  out << fmt::format(
-      "\nsummary: {} right, {} revealed, {} skipped, {} not reached (of {} parts{}{})\n", sum.right,
-      sum.revealed, sum.skipped, sum.not_reached, ctx.key.parts.size(),
-      sum.nothing > 0 ? fmt::format("; {} with nothing to answer", sum.nothing) : std::string(),
-      sum.unfinished.empty() ? "" : "; " + sum.unfinished);
+  out << "\n";
+  session.say(
+      fmt::format(
+          "summary: {} right, {} revealed, {} skipped, {} not reached (of {} parts{}{})", sum.right,
+          sum.revealed, sum.skipped, sum.not_reached, ctx.key.parts.size(),
+          sum.nothing > 0 ? fmt::format("; {} with nothing to answer", sum.nothing) : std::string(),
+          sum.unfinished.empty() ? "" : "; " + sum.unfinished),
+      "", "  ");
   return sum;
 }
 

@@ -5,6 +5,7 @@
 /// part, `q` to quit, or the words (hint, reveal, skip, quit or exit, help for the list; any
 /// case): they take precedence over a symbol of the same name. After a second wrong try the hint
 /// comes by itself. End of input quits, so piped input never waits.
+#include <cstddef>
 #include <functional>
 #include <iosfwd>
 #include <string>
@@ -31,8 +32,11 @@ using ReadLine = std::function<bool(const std::string& prompt, std::string& line
 /// input, which a terminal does not show).
 ReadLine stream_lines(std::istream& in, std::ostream& out, bool echo);
 
-/// Prints `intro` (the statement with its numbers), then runs the parts, then the summary.
+/// Prints `intro` (the statement with its numbers), then runs the parts, then the summary. Its
+/// own lines (questions, verdicts, feedback, hints) are broken at spaces to `width` columns, a
+/// terminal's (check/word_wrap.hpp); 0 for none. A revealed answer stays one line, to be copied.
 WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const std::string& intro,
-                               const Problem& problem, const Context& ctx, const Options& opt);
+                               const Problem& problem, const Context& ctx, const Options& opt,
+                               std::size_t width = 0);
 
 }  // namespace wobble::check

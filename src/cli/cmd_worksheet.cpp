@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <iostream>
@@ -6,9 +7,9 @@
 #include "check/worksheet.hpp"
 #include "cli/commands.hpp"
 #include "cli/line_editor.hpp"
-#include "solvers/catalog.hpp"
 #include "problem/values.hpp"
 #include "render/handout.hpp"
+#include "solvers/catalog.hpp"
 #include "solvers/solve.hpp"
 
 namespace wobble::cli {
@@ -23,6 +24,16 @@ void setup_worksheet(CLI::App& app, WorksheetOptions& opt) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
+namespace {
+// The columns of the terminal the worksheet writes to, for its lines to break at spaces; 0
+// where it writes to no terminal (a transcript piped to a file keeps its lines whole).
+std::size_t terminal_columns() {
+  winsize size{};
+  if (::isatty(STDOUT_FILENO) == 0 || ::ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) != 0) return 0;
+  return size.ws_col;
+}
+}  // namespace
+
 int run_worksheet(const WorksheetOptions& opt) {
   const Problem problem = find_problem(opt.problem);
   const std::vector<std::string> assignments = with_variant(problem, opt.variant, opt.sets);
@@ -36,7 +47,8 @@ int run_worksheet(const WorksheetOptions& opt) {
   const bool terminal = ::isatty(STDIN_FILENO) != 0;
   const check::ReadLine read =
       terminal ? terminal_lines() : check::stream_lines(std::cin, std::cout, true);
-  (void)check::run_worksheet(read, std::cout, intro + "\n", problem, {key, table, values}, {});
+  (void)check::run_worksheet(read, std::cout, intro + "\n", problem, {key, table, values}, {},
+                             terminal_columns());
   return kExitOk;
 }
 

@@ -36,7 +36,24 @@ std::string code_text(code_point c) {
 bool is_valid(code_point c) {
   return c != boost::locale::utf::illegal && c != boost::locale::utf::incomplete;
 }
+// The combining marks a key or an answer puts on a letter: the diacritics (the dot of ψ̇, the
+// hat of x̂) and those for symbols (the arrow of v⃗). They take no column of their own.
+bool is_combining(code_point c) {
+  return (c >= 0x0300 && c <= 0x036F) || (c >= 0x1AB0 && c <= 0x1AFF) ||
+         (c >= 0x1DC0 && c <= 0x1DFF) || (c >= 0x20D0 && c <= 0x20FF) ||
+         (c >= 0xFE20 && c <= 0xFE2F);
+}
 }  // namespace
+
+std::size_t columns(const std::string& text) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < text.size();) {
+    const Decoded d = decode(text, i);
+    if (!is_valid(d.code) || !is_combining(d.code)) ++n;
+    i += d.bytes;
+  }
+  return n;
+}
 
 bool is_letter(char c) {
   return std::isalpha(static_cast<unsigned char>(c)) != 0;

@@ -26,6 +26,10 @@ std::string ascii_lower(std::string s);
 /// Whether a control character (C0, DEL or C1) starts at byte i: what a terminal may obey.
 bool is_control_at(const std::string& text, std::size_t i);
 
+/// The columns `text` takes in a terminal: its characters less the combining marks, so "ψ̇" (ψ
+/// and U+0307) is one and "kg m²" five; a byte that is no UTF-8 is one ('?' where shown).
+std::size_t columns(const std::string& text);
+
 /// `text` for a one-line message: each control character and each byte that is no UTF-8 as '?',
 /// at most `max_characters` characters, then "...".
 std::string printable(const std::string& text, std::size_t max_characters);

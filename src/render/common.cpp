@@ -42,18 +42,6 @@ std::string parameter_value_latex(const ParameterValue& p) {
   return number_latex(p.value) + unit_latex(p.unit);
 }
 
-std::size_t display_width(const std::string& s) {
-  std::size_t width = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const auto b = static_cast<unsigned char>(s[i]);
-    if ((b & 0xC0) == 0x80) continue;  // a continuation byte
-    // Combining diacritical marks U+0300..U+036F: bytes CC 80..CD AF.
-    if ((b == 0xCC || b == 0xCD) && i + 1 < s.size()) continue;
-    ++width;
-  }
-  return width;
-}
-
 std::pair<std::string, std::string> shown_value(
     const ParameterValue& p, const std::vector<std::pair<std::string, std::string>>& shown) {
   for (const auto& [name, text] : shown) {

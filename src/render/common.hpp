@@ -33,9 +33,6 @@ std::optional<std::string> whole_degrees(const ParameterValue& p);
 std::string parameter_value_text(const ParameterValue& p);
 std::string parameter_value_latex(const ParameterValue& p);
 
-/// Columns a UTF-8 string takes in a terminal: code points, less combining marks (θ̇ is one).
-std::size_t display_width(const std::string& s);
-
 /// A parameter's value and unit as a handout shows them: as typed, a variant's or --set's own
 /// text with its unit ("22deg" -> {"22", "°"}, "5 cm" -> {"5", "cm"}), else the key's value (an
 /// angle at whole degrees in degrees, unit "°"). `shown` names parameters by identifier.

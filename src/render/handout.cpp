@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "core/characters.hpp"
 #include "render/common.hpp"
 #include "symbolic/plain_text.hpp"
 #include "symbolic/unicode_notation.hpp"
@@ -65,13 +66,12 @@ std::string render_handout_text(const Key& key,
   };
   std::size_t width = 0;
   for (const auto& p : key.parameters) {
-    width = std::max(width, detail::display_width(shown_name(p)));
+    width = std::max(width, columns(shown_name(p)));
   }
   for (const auto& p : key.parameters) {
     const auto [value, unit] = detail::shown_value(p, shown);
     const std::string name = shown_name(p);
-    out += fmt::format("  {}{} = {}{}{}\n", name,
-                       std::string(width - detail::display_width(name), ' '), value,
+    out += fmt::format("  {}{} = {}{}{}\n", name, std::string(width - columns(name), ' '), value,
                        unit == "°" ? "°" : detail::unit_text(unit),
                        p.description.empty() ? "" : "   (" + plain_text(p.description) + ")");
   }

@@ -67,3 +67,12 @@ TEST_CASE("digits grouped by threes are found and written without their separato
     REQUIRE(digits_ungrouped(other).empty());
   }
 }
+
+TEST_CASE("columns count what a terminal shows: a combining mark takes none") {
+  CHECK(columns("") == 0);
+  CHECK(columns("kg m²") == 5);
+  CHECK(columns("ψ̇0") == 2);     // ψ and the combining dot above, then 0
+  CHECK(columns("x̂ + v⃗") == 5);  // a hat (U+0302) and an arrow (U+20D7) on their letters
+  CHECK(columns("a\xC3"
+                "b") == 3);  // a byte that is no UTF-8 shows as one '?'
+}

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <boost/locale/utf.hpp>
 #include <catch2/catch.hpp>
 #include <cctype>
@@ -19,9 +20,12 @@
 #include "check/check_fixture.hpp"
 #include "check/judge.hpp"
 #include "check/latex_answer.hpp"
+#include "check/word_wrap.hpp"
 #include "check/worksheet.hpp"
+#include "core/characters.hpp"
 #include "problem/values.hpp"
 #include "render/common.hpp"
+#include "render/handout.hpp"
 #include "render/prose.hpp"
 #include "render/render.hpp"
 #include "solvers/catalog.hpp"
@@ -625,6 +629,57 @@ TEST_CASE("every answer the worksheet reveals reads back as correct, every probl
     }
   }
   REQUIRE(revealed > 100);  // every answer the catalog asks for in a worksheet
+}
+
+TEST_CASE("a line is broken at its spaces to the width, after its indents") {
+  CHECK(word_wrapped("one two three", 0, "  ", "    ") == "  one two three\n");
+  CHECK(word_wrapped("one two three", 11, "  ", "    ") == "  one two\n    three\n");
+  // Exactly the width fits; a word wider than a line stays whole on its own.
+  CHECK(word_wrapped("abc def", 7, "", "") == "abc def\n");
+  CHECK(word_wrapped("a abcdefghij b", 5, "", "  ") == "a\n  abcdefghij\n  b\n");
+  // Columns, not bytes: "ψ̇ = 2" is five columns in nine bytes.
+  CHECK(word_wrapped("ψ̇ = 2 rad/s", 5, "", "") == "ψ̇ = 2\nrad/s\n");
+  // A text of several lines: each broken, the later ones after `rest`.
+  CHECK(word_wrapped("a b\nc d", 3, "> ", "  ") == "> a\n  b\n  c\n  d\n");
+}
+
+TEST_CASE("the worksheet at a terminal's width breaks its lines at spaces, losing no word") {
+  constexpr std::size_t kWidth = 64;  // narrower than any statement's lines in the catalog
+  const auto words = [](const std::string& text) {
+    std::istringstream in(text);
+    return std::vector<std::string>(std::istream_iterator<std::string>(in), {});
+  };
+  int broken = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    const std::string intro = render_handout_text(f.key, {}, std::nullopt, false);
+    // At each prompt a wrong number, the hint, then the answer: verdicts, feedback, hints.
+    const auto run = [&](std::size_t width) {
+      std::size_t asked = 0;
+      const ReadLine tries = [&](const std::string&, std::string& line) {
+        line = std::array<const char*, 4>{"1", "1e9", "?", "!"}[asked % 4];
+        return asked++ < 400;
+      };
+      std::ostringstream out;
+      (void)run_worksheet(tries, out, intro, f.problem, {f.key, f.table, f.values}, {}, width);
+      return out.str();
+    };
+    const std::string whole = run(0), wrapped = run(kWidth);
+    INFO(p.id << ":\n" << wrapped);
+    REQUIRE(words(wrapped) == words(whole));
+    std::istringstream lines(wrapped);
+    for (std::string line; std::getline(lines, line);) {
+      if (columns(line) <= kWidth) continue;
+      INFO(line);
+      // Only a revealed answer (kept whole, to be copied) or one word too wide for any line.
+      const std::size_t indent = line.find_first_not_of(' ');
+      REQUIRE((line.rfind("  answer: ", 0) == 0 ||
+               line.find(' ', indent == std::string::npos ? 0 : indent) == std::string::npos));
+    }
+    broken += static_cast<int>(std::count(wrapped.begin(), wrapped.end(), '\n') -
+                               std::count(whole.begin(), whole.end(), '\n'));
+  }
+  REQUIRE(broken > 100);  // the catalog's statements, verdicts and hints do break
 }
 
 TEST_CASE("every part's hint prints in the worksheet as plain text, every problem") {
