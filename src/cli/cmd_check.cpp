@@ -7,7 +7,9 @@
 #include "check/answer_choice.hpp"
 #include "check/judge.hpp"
 #include "check/submission.hpp"
+#include "check/word_wrap.hpp"
 #include "cli/commands.hpp"
+#include "cli/terminal_width.hpp"
 #include "core/input_error.hpp"
 #include "export/gradescope.hpp"
 #include "problem/values.hpp"
@@ -103,9 +105,11 @@ int check_submission(const CheckOptions& opt, const check::Options& o) {
                                       {"problems", result.problems}}
                            .dump(2));
   } else {
+    const std::size_t width = terminal_columns();
     for (const auto& a : result.answers) {
-      fmt::print("({}) {}\n", a.part, a.verdict.line);
-      for (const auto& f : a.verdict.feedback) fmt::print("  {}\n", f);
+      fmt::print("{}", check::word_wrapped(a.verdict.line, width, "(" + a.part + ") ", "    "));
+      for (const auto& f : a.verdict.feedback)
+        fmt::print("{}", check::word_wrapped(f, width, "  ", "    "));
     }
     for (const auto& p : result.problems) fmt::print("{}\n", p);
   }
@@ -198,8 +202,9 @@ int run_check(const CheckOptions& opt) {
   // for, or the only one it reads as a value of (check/answer_choice.hpp).
   const Answer& answer = check::answer_for(ctx, part, opt.name, typed, o, "part", "--name");
   const check::Verdict v = check::judge(ctx, answer, typed, o);
-  fmt::print("{}\n", v.line);
-  for (const auto& f : v.feedback) fmt::print("  {}\n", f);
+  const std::size_t width = terminal_columns();
+  fmt::print("{}", check::word_wrapped(v.line, width, "", "  "));
+  for (const auto& f : v.feedback) fmt::print("{}", check::word_wrapped(f, width, "  ", "    "));
   return v.correct ? kExitOk : kExitDifference;
 }
 

@@ -1,5 +1,4 @@
 #include <fmt/format.h>
-#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <iostream>
@@ -7,6 +6,7 @@
 #include "check/worksheet.hpp"
 #include "cli/commands.hpp"
 #include "cli/line_editor.hpp"
+#include "cli/terminal_width.hpp"
 #include "problem/values.hpp"
 #include "render/handout.hpp"
 #include "solvers/catalog.hpp"
@@ -23,16 +23,6 @@ void setup_worksheet(CLI::App& app, WorksheetOptions& opt) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
-
-namespace {
-// The columns of the terminal the worksheet writes to, for its lines to break at spaces; 0
-// where it writes to no terminal (a transcript piped to a file keeps its lines whole).
-std::size_t terminal_columns() {
-  winsize size{};
-  if (::isatty(STDOUT_FILENO) == 0 || ::ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) != 0) return 0;
-  return size.ws_col;
-}
-}  // namespace
 
 int run_worksheet(const WorksheetOptions& opt) {
   const Problem problem = find_problem(opt.problem);
