@@ -7,9 +7,9 @@
 #include <ostream>
 
 #include "check/brackets.hpp"
-#include "check/word_wrap.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
+#include "core/word_wrap.hpp"
 #include "symbolic/plain_text.hpp"
 #include "symbolic/unicode_notation.hpp"
 
@@ -39,46 +39,6 @@ std::string shown(const Answer& a) {
   // ("m·R²/4 = 0.00072 kg m²"): what a student copies reads back in check.
   if (!a.unit.empty()) v += " " + sym::to_unicode(a.unit);
   return a.symbolic.empty() ? v : sym::to_unicode(a.symbolic) + " = " + v;
-}
-
-// Whether a line of the intro begins a paragraph of its own however it follows another: a
-// Markdown list's item or a table's row, which a statement could hold.
-bool starts_own_line(const std::string& line) {
-  return line.rfind("- ", 0) == 0 || line.rfind("* ", 0) == 0 || line.rfind("|", 0) == 0 ||
-         (!line.empty() && is_digit(line[0]) && line.find(". ") != std::string::npos &&
-          line.find_first_not_of("0123456789") == line.find(". "));
-}
-
-// The intro at `width` columns: its paragraphs (runs of lines at the margin, the statement as
-// the file breaks them, which Markdown reads as one) joined and broken again at spaces, its
-// indented lines (the values) each broken after their indent and two spaces more. As it is
-// where no width is known.
-std::string reflowed(const std::string& intro, std::size_t width) {
-  if (width == 0) return intro;
-  std::string out, paragraph;
-  const auto flush = [&] {
-    if (!paragraph.empty()) out += word_wrapped(paragraph, width, "", "");
-    paragraph.clear();
-  };
-  std::size_t at = 0;
-  while (at < intro.size()) {
-    std::size_t end = intro.find('\n', at);
-    if (end == std::string::npos) end = intro.size();
-    const std::string line = intro.substr(at, end - at);
-    at = end + 1;
-    if (line.empty() || line[0] == ' ') {
-      flush();
-      const std::size_t indent = line.find_first_not_of(' ');
-      out += line.empty() ? "\n"
-                          : word_wrapped(line.substr(indent), width, line.substr(0, indent),
-                                         std::string(indent + 2, ' '));
-      continue;
-    }
-    if (starts_own_line(line)) flush();
-    paragraph += (paragraph.empty() ? "" : " ") + line;
-  }
-  flush();
-  return out;
 }
 
 enum class Outcome { right, revealed, skipped, quit, nothing };

@@ -34,7 +34,7 @@ ReadLine stream_lines(std::istream& in, std::ostream& out, bool echo);
 
 /// Prints `intro` (the statement with its numbers), then runs the parts, then the summary. Its
 /// own lines (questions, verdicts, feedback, hints) are broken at spaces to `width` columns, a
-/// terminal's (check/word_wrap.hpp); 0 for none. A revealed answer stays one line, to be copied.
+/// terminal's (core/word_wrap.hpp); 0 for none. A revealed answer stays one line, to be copied.
 WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const std::string& intro,
                                const Problem& problem, const Context& ctx, const Options& opt,
                                std::size_t width = 0);

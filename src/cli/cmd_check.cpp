@@ -7,10 +7,10 @@
 #include "check/answer_choice.hpp"
 #include "check/judge.hpp"
 #include "check/submission.hpp"
-#include "check/word_wrap.hpp"
 #include "cli/commands.hpp"
 #include "cli/terminal_width.hpp"
 #include "core/input_error.hpp"
+#include "core/word_wrap.hpp"
 #include "export/gradescope.hpp"
 #include "problem/values.hpp"
 #include "solvers/catalog.hpp"
@@ -107,9 +107,9 @@ int check_submission(const CheckOptions& opt, const check::Options& o) {
   } else {
     const std::size_t width = terminal_columns();
     for (const auto& a : result.answers) {
-      fmt::print("{}", check::word_wrapped(a.verdict.line, width, "(" + a.part + ") ", "    "));
+      fmt::print("{}", word_wrapped(a.verdict.line, width, "(" + a.part + ") ", "    "));
       for (const auto& f : a.verdict.feedback)
-        fmt::print("{}", check::word_wrapped(f, width, "  ", "    "));
+        fmt::print("{}", word_wrapped(f, width, "  ", "    "));
     }
     for (const auto& p : result.problems) fmt::print("{}\n", p);
   }
@@ -203,8 +203,8 @@ int run_check(const CheckOptions& opt) {
   const Answer& answer = check::answer_for(ctx, part, opt.name, typed, o, "part", "--name");
   const check::Verdict v = check::judge(ctx, answer, typed, o);
   const std::size_t width = terminal_columns();
-  fmt::print("{}", check::word_wrapped(v.line, width, "", "  "));
-  for (const auto& f : v.feedback) fmt::print("{}", check::word_wrapped(f, width, "  ", "    "));
+  fmt::print("{}", word_wrapped(v.line, width, "", "  "));
+  for (const auto& f : v.feedback) fmt::print("{}", word_wrapped(f, width, "  ", "    "));
   return v.correct ? kExitOk : kExitDifference;
 }
 

@@ -5,16 +5,18 @@
 #include <optional>
 
 #include "cli/commands.hpp"
-#include "solvers/catalog.hpp"
-#include "problem/values.hpp"
+#include "cli/terminal_width.hpp"
+#include "core/word_wrap.hpp"
 #include "io/atomic_write.hpp"
+#include "problem/values.hpp"
 #include "render/figure.hpp"
 #include "render/handout.hpp"
 #include "render/render.hpp"
 #include "render/simulation_output.hpp"
 #include "simulate/cross_check.hpp"
-#include "solvers/solve.hpp"
+#include "solvers/catalog.hpp"
 #include "solvers/registry.hpp"
+#include "solvers/solve.hpp"
 
 namespace wobble::cli {
 
@@ -97,9 +99,11 @@ int run_solve(const SolveOptions& opt) {
   if (opt.handout) {
     const auto shown = shown_values(problem, assignments);
     if (opt.format == "json") throw InputError("--handout: text, markdown or latex; not json");
-    fmt::print("{}", opt.format == "latex"      ? render_handout_latex(key, shown, opt.variant)
-                     : opt.format == "markdown" ? render_handout(key, shown, opt.variant)
-                                                : render_handout_text(key, shown, opt.variant, true));
+    fmt::print("{}", opt.format == "latex" ? render_handout_latex(key, shown, opt.variant)
+                     : opt.format == "markdown"
+                         ? render_handout(key, shown, opt.variant)
+                         : reflowed(render_handout_text(key, shown, opt.variant, true),
+                                    terminal_columns()));
     return kExitOk;
   }
   if (check) {
@@ -110,7 +114,8 @@ int run_solve(const SolveOptions& opt) {
                cross_check_text(*check, key_time));
     return kExitOk;
   }
-  fmt::print("{}", render(key, format_from_name(opt.format)));
+  // At a terminal the text key's prose breaks at spaces; to a file or a pipe it is as stored.
+  fmt::print("{}", render(key, format_from_name(opt.format), terminal_columns()));
   return kExitOk;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// The width of the terminal a command writes its verdicts to, for their lines to break at
-/// spaces (check/word_wrap.hpp) rather than where the terminal folds them, inside a word.
+/// spaces (core/word_wrap.hpp) rather than where the terminal folds them, inside a word.
 #include <cstddef>
 
 namespace wobble::cli {

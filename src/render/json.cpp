@@ -80,10 +80,10 @@ std::string render_json(const Key& key) {
   return key_to_json(key).dump(2) + "\n";
 }
 
-std::string render(const Key& key, Format format) {
+std::string render(const Key& key, Format format, std::size_t width) {
   switch (format) {
     case Format::text:
-      return render_text(key);
+      return render_text(key, width);
     case Format::markdown:
       return render_markdown(key);
     case Format::latex:

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/characters.hpp"
+#include "core/word_wrap.hpp"
 
 using namespace wobble;
 
@@ -75,4 +76,42 @@ TEST_CASE("columns count what a terminal shows: a combining mark takes none") {
   CHECK(columns("x̂ + v⃗") == 5);  // a hat (U+0302) and an arrow (U+20D7) on their letters
   CHECK(columns("a\xC3"
                 "b") == 3);  // a byte that is no UTF-8 shows as one '?'
+}
+
+TEST_CASE("a line is broken at its spaces to the width, after its indents") {
+  CHECK(word_wrapped("one two three", 0, "  ", "    ") == "  one two three\n");
+  CHECK(word_wrapped("one two three", 11, "  ", "    ") == "  one two\n    three\n");
+  // Exactly the width fits; a word wider than a line stays whole on its own.
+  CHECK(word_wrapped("abc def", 7, "", "") == "abc def\n");
+  CHECK(word_wrapped("a abcdefghij b", 5, "", "  ") == "a\n  abcdefghij\n  b\n");
+  // Columns, not bytes: "ψ̇ = 2" is five columns in nine bytes.
+  CHECK(word_wrapped("ψ̇ = 2 rad/s", 5, "", "") == "ψ̇ = 2\nrad/s\n");
+  // A text of several lines: each broken, the later ones after `rest`.
+  CHECK(word_wrapped("a b\nc d", 3, "> ", "  ") == "> a\n  b\n  c\n  d\n");
+}
+
+TEST_CASE("a document is reflowed: paragraphs joined and broken again, indented lines kept apart") {
+  const std::string text =
+      "Title line\n"
+      "\n"
+      "A statement broken\n"
+      "where the file broke it.\n"
+      "- an item\n"
+      "\n"
+      "Values:\n"
+      "  m = 1 kg   (the mass of it)\n"
+      "   \n";
+  CHECK(reflowed(text, 0) == text);
+  CHECK(reflowed(text, 20) ==
+        "Title line\n"
+        "\n"
+        "A statement broken\n"
+        "where the file broke\n"
+        "it.\n"
+        "- an item\n"
+        "\n"
+        "Values:\n"
+        "  m = 1 kg   (the\n"
+        "    mass of it)\n"
+        "\n");
 }

@@ -20,7 +20,6 @@
 #include "check/check_fixture.hpp"
 #include "check/judge.hpp"
 #include "check/latex_answer.hpp"
-#include "check/word_wrap.hpp"
 #include "check/worksheet.hpp"
 #include "core/characters.hpp"
 #include "problem/values.hpp"
@@ -631,18 +630,6 @@ TEST_CASE("every answer the worksheet reveals reads back as correct, every probl
   REQUIRE(revealed > 100);  // every answer the catalog asks for in a worksheet
 }
 
-TEST_CASE("a line is broken at its spaces to the width, after its indents") {
-  CHECK(word_wrapped("one two three", 0, "  ", "    ") == "  one two three\n");
-  CHECK(word_wrapped("one two three", 11, "  ", "    ") == "  one two\n    three\n");
-  // Exactly the width fits; a word wider than a line stays whole on its own.
-  CHECK(word_wrapped("abc def", 7, "", "") == "abc def\n");
-  CHECK(word_wrapped("a abcdefghij b", 5, "", "  ") == "a\n  abcdefghij\n  b\n");
-  // Columns, not bytes: "ψ̇ = 2" is five columns in nine bytes.
-  CHECK(word_wrapped("ψ̇ = 2 rad/s", 5, "", "") == "ψ̇ = 2\nrad/s\n");
-  // A text of several lines: each broken, the later ones after `rest`.
-  CHECK(word_wrapped("a b\nc d", 3, "> ", "  ") == "> a\n  b\n  c\n  d\n");
-}
-
 TEST_CASE("the worksheet at a terminal's width breaks its lines at spaces, losing no word") {
   constexpr std::size_t kWidth = 64;  // narrower than any statement's lines in the catalog
   const auto words = [](const std::string& text) {
@@ -680,6 +667,46 @@ TEST_CASE("the worksheet at a terminal's width breaks its lines at spaces, losin
                                std::count(whole.begin(), whole.end(), '\n'));
   }
   REQUIRE(broken > 100);  // the catalog's statements, verdicts and hints do break
+}
+
+TEST_CASE("the text key at a terminal's width breaks its prose, never an answer's line") {
+  constexpr std::size_t kWidth = 72;
+  const auto words = [](const std::string& text) {
+    std::istringstream in(text);
+    return std::vector<std::string>(std::istream_iterator<std::string>(in), {});
+  };
+  int long_answers = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    const std::string whole = render_text(f.key), wrapped = render_text(f.key, kWidth);
+    INFO(p.id << ":\n" << wrapped);
+    REQUIRE(words(wrapped) == words(whole));
+    std::set<std::string> whole_lines;
+    std::istringstream in(whole);
+    for (std::string line; std::getline(in, line);) whole_lines.insert(line);
+    // Every answer's lines as they were: what a student copies into check.
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.symbolic.empty()) continue;
+        REQUIRE(wrapped.find("    " + a.name + " = " + detail::pretty(a.symbolic) + "\n") !=
+                std::string::npos);
+      }
+    }
+    std::istringstream lines(wrapped);
+    for (std::string line; std::getline(lines, line);) {
+      if (columns(line) <= kWidth) continue;
+      INFO(line);
+      // Wider only where it is an answer's line, kept whole (a step, a note or a question
+      // would have been broken), or a word wider than any line.
+      const std::size_t indent = line.find_first_not_of(' ');
+      const bool one_word = line.find(' ', indent) == std::string::npos;
+      REQUIRE((one_word ||
+               (whole_lines.count(line) == 1 && line.rfind("      note: ", 0) != 0 &&
+                line.find(". ") != 4 && line.rfind("  - ", 0) != 0 && line.rfind("(", 0) != 0)));
+      long_answers += one_word ? 0 : 1;
+    }
+  }
+  REQUIRE(long_answers > 5);  // the heavy top's nutation limit and steady rates at least
 }
 
 TEST_CASE("every part's hint prints in the worksheet as plain text, every problem") {
