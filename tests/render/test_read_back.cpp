@@ -630,12 +630,17 @@ TEST_CASE("every answer the worksheet reveals reads back as correct, every probl
   REQUIRE(revealed > 100);  // every answer the catalog asks for in a worksheet
 }
 
+namespace {
+// The words of a text, whatever spaces and line ends lie between them: what breaking its lines
+// at spaces must keep.
+std::vector<std::string> words(const std::string& text) {
+  std::istringstream in(text);
+  return std::vector<std::string>(std::istream_iterator<std::string>(in), {});
+}
+}  // namespace
+
 TEST_CASE("the worksheet at a terminal's width breaks its lines at spaces, losing no word") {
   constexpr std::size_t kWidth = 64;  // narrower than any statement's lines in the catalog
-  const auto words = [](const std::string& text) {
-    std::istringstream in(text);
-    return std::vector<std::string>(std::istream_iterator<std::string>(in), {});
-  };
   int broken = 0;
   for (const auto& p : load_catalog()) {
     const Fixture f(p.id);
@@ -671,10 +676,6 @@ TEST_CASE("the worksheet at a terminal's width breaks its lines at spaces, losin
 
 TEST_CASE("the text key at a terminal's width breaks its prose, never an answer's line") {
   constexpr std::size_t kWidth = 72;
-  const auto words = [](const std::string& text) {
-    std::istringstream in(text);
-    return std::vector<std::string>(std::istream_iterator<std::string>(in), {});
-  };
   int long_answers = 0;
   for (const auto& p : load_catalog()) {
     const Fixture f(p.id);
