@@ -43,6 +43,18 @@ bool starts_own_line(const std::string& line) {
          (!line.empty() && is_digit(line[0]) && line.find(". ") != std::string::npos &&
           line.find_first_not_of("0123456789") == line.find(". "));
 }
+
+// The length of the label "(a) " or "(12) " that `paragraph` begins with, or 0.
+std::size_t labelled(const std::string& paragraph) {
+  const std::size_t close = paragraph.find(") ");
+  if (paragraph.empty() || paragraph[0] != '(' || close == std::string::npos || close < 2 ||
+      close > 4)
+    return 0;
+  for (std::size_t i = 1; i < close; ++i) {
+    if (!is_letter(paragraph[i]) && !is_digit(paragraph[i])) return 0;
+  }
+  return close + 2;
+}
 }  // namespace
 
 std::string word_wrapped(const std::string& text, std::size_t width, const std::string& first,
@@ -65,7 +77,12 @@ std::string reflowed(const std::string& text, std::size_t width) {
   if (width == 0) return text;
   std::string out, paragraph;
   const auto flush = [&] {
-    if (!paragraph.empty()) out += word_wrapped(paragraph, width, "", "");
+    if (!paragraph.empty()) {
+      // A question's label, "(a) ", hangs: its text is indented under the text, not the label.
+      const std::size_t label = labelled(paragraph);
+      out += word_wrapped(paragraph.substr(label), width, paragraph.substr(0, label),
+                          std::string(label, ' '));
+    }
     paragraph.clear();
   };
   std::size_t at = 0;

@@ -98,6 +98,8 @@ TEST_CASE("a document is reflowed: paragraphs joined and broken again, indented 
       "where the file broke it.\n"
       "- an item\n"
       "\n"
+      "(b) A question that is long\n"
+      "\n"
       "Values:\n"
       "  m = 1 kg   (the mass of it)\n"
       "   \n";
@@ -109,6 +111,9 @@ TEST_CASE("a document is reflowed: paragraphs joined and broken again, indented 
         "where the file broke\n"
         "it.\n"
         "- an item\n"
+        "\n"
+        "(b) A question that\n"
+        "    is long\n"
         "\n"
         "Values:\n"
         "  m = 1 kg   (the\n"
