@@ -1555,6 +1555,14 @@ bool written_as_euler_equations(const Context& ctx, const std::string& text) {
 
 Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
               const Options& options) {
+  // "1.772 1/s (unstable)": the number judged; the word is the student's claim, said unjudged
+  // rather than taken for right.
+  if (const auto remark = word_remark(text)) {
+    Verdict v = judge(ctx, a, remark->answer, options);
+    v.feedback.push_back("your bracket \"" + remark->bracket +
+                         "\" is taken as a remark, not judged (the value is)");
+    return v;
+  }
   const std::string written = written_answer(ctx, text);
   // "118.8 rad/s (about 1134 rpm)": the answer and the same again, each judged.
   if (const auto r = restatement_of(written)) return judge_restated(ctx, a, *r, options);

@@ -695,6 +695,23 @@ std::string without_remark(const std::string& typed,
   return trim(t.substr(0, open));
 }
 
+std::optional<WordRemark> word_remark(const std::string& typed) {
+  const std::string t = trim(typed);
+  if (t.size() < 3 || t.back() != ')') return std::nullopt;
+  const std::size_t open = t.rfind('(');
+  if (open == std::string::npos || open == 0 || t[open - 1] != ' ') return std::nullopt;
+  static const std::set<std::string> kWords{
+      "stable",   "unstable",   "oscillating", "oscillates",       "oscillatory",
+      "growing",  "grows",      "exponential", "prolate",          "oblate",
+      "prograde", "retrograde", "clockwise",   "counterclockwise", "anticlockwise",
+      "approx",   "approx.",    "approximate", "approximately",    "exact",
+      "exactly",  "rounded",    "estimate",    "estimated"};
+  const std::string word = ascii_lower(trim(t.substr(open + 1, t.size() - open - 2)));
+  const std::string answer = trim(t.substr(0, open));
+  if (kWords.count(word) == 0 || answer.empty()) return std::nullopt;
+  return WordRemark{answer, t.substr(open)};
+}
+
 std::optional<Restatement> restatement_of(const std::string& typed) {
   const std::string t = trim(typed);
   if (t.size() < 3 || t.back() != ')') return std::nullopt;

@@ -111,6 +111,17 @@ std::string in_units_of_written(const std::string& typed);
 std::string without_remark(const std::string& typed,
                            const std::function<bool(const std::string&)>& is_known);
 
+/// An answer with one word after it in brackets that says what the motion does, "1.772 1/s
+/// (unstable)", "2.047 rad/s (stable)", "4.995 rad/s (prograde)": the answer and the bracket as
+/// typed. Only words of a short list (stable, unstable, oscillating, growing, prolate, oblate,
+/// prograde, retrograde, approx, exact, rounded and their like), none a symbol of any problem,
+/// so that "m R^2 (omegs)" is still refused as the misspelt name it is, never dropped.
+struct WordRemark {
+  std::string answer;   ///< "1.772 1/s"
+  std::string bracket;  ///< "(unstable)"
+};
+std::optional<WordRemark> word_remark(const std::string& typed);
+
 /// The text after a program's label of its result: "0.00072" for "Out[3]= 0.00072",
 /// "Out[3]//N= 0.00072" or "Out[3]: 0.00072"; `typed` itself when it has no such label.
 std::string without_output_label(const std::string& typed);

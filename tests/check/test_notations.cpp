@@ -2070,6 +2070,35 @@ TEST_CASE("a remark in words in brackets after an answer is no part of it") {
   REQUIRE_THROWS_WITH(plate.check("I0", "0.5 (I theta)"), Catch::Contains("undefined symbol"));
 }
 
+TEST_CASE("one word on the motion in brackets after an answer is said to be unjudged") {
+  const std::string unjudged = "is taken as a remark, not judged (the value is)";
+  int judged = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.value.shape != wobble::Value::Shape::scalar || a.unit.empty()) continue;
+        const std::string value = fmt::format("{:.6g} {}", a.value.data[0], a.unit);
+        for (const char* word : {"(unstable)", "(Stable)", "(approx)"}) {
+          INFO(p.id << " " << a.name << ": " << value << " " << word);
+          const auto v = f.check(a.name, value + " " + word);
+          REQUIRE(v.correct);
+          REQUIRE(v.feedback.back() == "your bracket \"" + std::string(word) + "\" " + unjudged);
+          ++judged;
+        }
+      }
+    }
+  }
+  REQUIRE(judged > 100);
+  // The asymmetric top's intermediate axis: the value judged, whatever the word claims.
+  const Fixture top("asymmetric-top");
+  const double growth = top.answer("rate_axis2").value.data[0];
+  REQUIRE_FALSE(top.check("rate_axis2", fmt::format("{:.4g} 1/s (stable)", 2 * growth)).correct);
+  // A word of no such list stays what it is: an unknown name.
+  REQUIRE_THROWS_WITH(top.check("rate_axis2", fmt::format("{:.4g} 1/s (unstabel)", growth)),
+                      Catch::Contains("undefined symbol 'unstabel'"));
+}
+
 TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied out") {
   // The key derives R = Rz(φ) Ry(θ) Rz(ψ); a student may answer with that product. Its entries,
   // multiplied out here from the turns' own matrices, are judged against the key's R, which the
