@@ -488,8 +488,9 @@ std::string diagonal_hint(const Answer& a, const sym::ValueText& v, const std::s
   }
   std::string text = trim(typed);
   if (!text.empty() && opens(text[0])) {
+    // One bracket around the entries, a unit at most after it: "(0.1), 0.2, 0.3" has none.
     const std::size_t close = matching(text, 0);
-    if (close == std::string::npos) return "";
+    if (close == std::string::npos || text.find(',', close) != std::string::npos) return "";
     text = text.substr(1, close - 1) + ")" + text.substr(close + 1);
   } else if (const std::size_t comma = text.rfind(',');
              numbers_with_unit && comma != std::string::npos) {

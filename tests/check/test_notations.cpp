@@ -3205,6 +3205,10 @@ TEST_CASE("a diagonal tensor given as its three diagonal entries is told how to 
     }
   }
   REQUIRE(judged >= 8);  // the cone's two tensors at least, four ways each
+  // A bracket around one entry only is no bracket around the diagonal: no line to write.
+  const Fixture cone("solid-cone");
+  REQUIRE_THROWS_WITH(cone.check("I_apex", "(0.111), 0.111, 0.006"),
+                      Catch::Contains("wants a 3x3 matrix") && !Catch::Contains("diag("));
 }
 
 TEST_CASE(
