@@ -136,6 +136,12 @@ Wrong other_frame(const Answer& a, const Key& key, const Unit&) {
   return out;
 }
 
+// Whether one answer may be taken for the other: the same unit, or the same units asked (the
+// asymmetric top's rates about its three axes, a frequency in rad/s or a growth rate in 1/s).
+bool alike_units(const Answer& a, const Answer& b) {
+  return a.unit == b.unit || asked_unit(a) == asked_unit(b);
+}
+
 // Another answer of the key, or its approximation: more specific than a factor (max_angle is
 // exactly twice angle_L_e3, L0_space is L0_body turned). Not one that is zero (the flying plate's
 // identity_residual): any value small beside its unit's scale would be named as it.
@@ -147,7 +153,7 @@ Wrong other_answer(const Answer& a, const Key& key, const Unit&) {
                                     [](double x) { return x == 0; });
       // Nor one equal to this answer (the Euler angles read back are the angles): a value
       // close to it is no mistake of taking the other.
-      if (&b == &a || b.name == a.name || b.unit != a.unit ||
+      if (&b == &a || b.name == a.name || !alike_units(a, b) ||
           b.value.data.size() != a.value.data.size() || zero || b.value.data == a.value.data) {
         continue;
       }
@@ -158,7 +164,7 @@ Wrong other_answer(const Answer& a, const Key& key, const Unit&) {
   // given for the slow one. After the exact values, which name it more surely.
   for (const auto& part : key.parts) {
     for (const auto& b : part.answers) {
-      if (&b == &a || b.name == a.name || b.unit != a.unit) continue;
+      if (&b == &a || b.name == a.name || !alike_units(a, b)) continue;
       for (const auto& approximation : b.approximations) {
         if (approximation.values.size() != a.value.data.size()) continue;
         out.push_back({"", approximation.values,

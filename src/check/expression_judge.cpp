@@ -165,7 +165,7 @@ std::optional<Verdict> dimension_verdict(const Context& ctx, const Answer& a,
     return Verdict{false,
                    "incorrect: " + a.name + " has the wrong dimension",
                    {what + has + "; the answer is in " +
-                    (a.unit.empty() ? "no unit" : sym::to_unicode(a.unit)) + " (" +
+                    (asked_unit(a).empty() ? "no unit" : sym::to_unicode(asked_unit(a))) + " (" +
                     key_unit.dimension_words() + ")"},
                    true};
   }

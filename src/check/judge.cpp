@@ -896,7 +896,7 @@ std::optional<Verdict> unit_of_a_number_in_it(const Context& ctx, const Answer& 
   v.feedback.push_back(fmt::format(
       "read with {} as the unit of a number in it, not of the whole (with the problem's symbols "
       "in SI, the whole is then in {})",
-      p.unit->text, a.unit.empty() ? "no unit" : a.unit));
+      p.unit->text, asked_unit(a).empty() ? "no unit" : asked_unit(a)));
   return v;
 }
 
@@ -910,7 +910,7 @@ Verdict wrong_unit(const Context& ctx, const Answer& a, const ReadAnswer& p, con
   v.wrong_dimension = true;
   v.feedback.push_back("you gave " + sym::to_unicode(p.unit->text) + " (" +
                        p.unit->dimension_words() + "); the answer is in " +
-                       (a.unit.empty() ? "no unit" : sym::to_unicode(a.unit)) + " (" +
+                       (asked_unit(a).empty() ? "no unit" : sym::to_unicode(asked_unit(a))) + " (" +
                        key_unit.dimension_words() + ")");
   if (const std::string symbols = unit_spelling_symbols(ctx, p.unit->text); !symbols.empty())
     v.feedback.push_back(symbols);
@@ -924,9 +924,9 @@ Verdict wrong_unit(const Context& ctx, const Answer& a, const ReadAnswer& p, con
   }
   if (j.all_close(typed, a.value.data)) {
     const std::string numbers = typed.size() == 1 ? "the number" : "the numbers";
-    v.feedback.push_back(a.unit.empty()
-                             ? "without a unit " + numbers + " would be right"
-                             : "in " + sym::to_unicode(a.unit) + " " + numbers + " would be right");
+    v.feedback.push_back(a.unit.empty() ? "without a unit " + numbers + " would be right"
+                                        : "in " + sym::to_unicode(asked_unit(a)) + " " + numbers +
+                                              " would be right");
   } else if (typed.size() == 1) {
     if (auto reciprocal = reciprocal_mistake(a, typed[0], &*p.unit, key_unit,
                                              [&](double x, double k) { return j.close(x, k); }))

@@ -130,10 +130,10 @@ struct Session {
       int wrong = 0;
       while (true) {
         std::string line;
-        const bool more =
-            read_answer(fmt::format("  {}{} = ", a.name,
-                             a.unit.empty() ? "" : " [" + sym::to_unicode(a.unit) + "]"),
-                 line);
+        const bool more = read_answer(
+            fmt::format("  {}{} = ", a.name,
+                        asked_unit(a).empty() ? "" : " [" + sym::to_unicode(asked_unit(a)) + "]"),
+            line);
         const Command command = more ? command_of(line) : Command::quit;
         if (command == Command::quit) {
           quit_after_reveal = revealed;  // a part quit after a reveal counts as revealed

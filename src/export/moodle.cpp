@@ -145,7 +145,7 @@ std::string question_text(const Question& q) {
   }
   html += fmt::format("<p>Give <code>{}</code>{}{}.</p>\n", html_escape(g.answer.name),
                       entry_words(g.answer, q.entry),
-                      g.answer.unit.empty() ? "" : " in " + unit_html(g.answer.unit));
+                      asked_unit(g.answer).empty() ? "" : " in " + unit_html(asked_unit(g.answer)));
   return html;
 }
 

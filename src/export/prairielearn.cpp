@@ -50,7 +50,7 @@ json answer_json(const GradedAnswer& g) {
 std::string answer_input(const GradedAnswer& g) {
   const Answer& a = g.answer;
   const std::string name = input_name(g);
-  const std::string unit = a.unit.empty() ? "" : unit_html(a.unit);
+  const std::string unit = asked_unit(a).empty() ? "" : unit_html(asked_unit(a));
   std::string html;
   if (a.value.shape == Value::Shape::scalar) {
     html = fmt::format(

@@ -19,7 +19,7 @@ std::string answer_names(const PartKey& part, bool markdown) {
   for (const auto& a : part.answers) {
     if (!out.empty()) out += ", ";
     out += markdown ? "`" + a.name + "`" : a.name;
-    if (!a.unit.empty()) out += " [" + detail::pretty(a.unit) + "]";
+    if (!asked_unit(a).empty()) out += " [" + detail::pretty(asked_unit(a)) + "]";
   }
   return out;
 }

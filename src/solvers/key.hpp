@@ -110,6 +110,11 @@ struct Answer {
   std::string latex;     ///< LaTeX of the symbolic form (or of the value if numeric only)
   Value value;
   std::string unit;  ///< SI unit, "" for dimensionless
+  /// The unit a question shows beside the answer's name (the handout, the worksheet's prompt,
+  /// the page's label, the exports): `unit`, or the solver's registered alternatives where the
+  /// unit would give the answer away ("rad/s or 1/s": a growth rate's 1/s says the axis is
+  /// unstable, which the question asks). Set from the quantity's row; "" means `unit`.
+  std::string asked_unit;
   std::vector<std::string> notes;
   /// Approximations a course teaches for this answer, at these values (not in the JSON key: the
   /// notes say them).
@@ -127,6 +132,11 @@ struct Answer {
   /// the solver; not in the JSON key (the steps say it).
   std::vector<std::string> step_names;
 };
+
+/// The unit to show where an answer is asked for: its asked_unit, else its unit.
+inline const std::string& asked_unit(const Answer& a) {
+  return a.asked_unit.empty() ? a.unit : a.asked_unit;
+}
 
 /// The entries of the coefficients c in Euler's equations dω₁/dt = c₁ ω₂ ω₃, ..: the answer
 /// that bears these names is the one Euler's equations written out answer (check/answer_choice).

@@ -41,7 +41,8 @@ std::vector<QuantityInfo> quantity_infos(const std::vector<QuantityRow<Context>>
   return out;
 }
 
-/// Computes `quantity` by its row and stamps the row's kind, frame and sign on the answer.
+/// Computes `quantity` by its row and stamps the row's kind, frame, sign and unit (as asked: with
+/// its alternatives) on the answer.
 /// @throws std::logic_error for a quantity without a row (the loader refuses those, so this is a
 ///         bug), an answer whose unit is not the row's, or names for entries it does not have.
 template <class Context>
@@ -65,6 +66,7 @@ Computed compute_quantity(const std::vector<QuantityRow<Context>>& rows, Context
     c.answer.kind = r.info.kind;
     c.answer.frame = r.info.frame;
     c.answer.sign = r.info.sign;
+    c.answer.asked_unit = r.info.unit;
     return c;
   }
   throw std::logic_error("no quantity row for '" + quantity + "'");

@@ -37,6 +37,7 @@ std::string student_view_json(const Problem& problem, const Key& key, std::optio
     for (const auto& a : part.answers) {
       answers.push_back({{"name", a.name},
                          {"unit", a.unit},
+                         {"asked_unit", asked_unit(a)},
                          {"kind", kind_name(a.kind)},
                          {"frame", frame_name(a.frame)},
                          {"shape", shape_name(a.value.shape)},

@@ -268,7 +268,8 @@ TEST_CASE("a right number in a unit of another dimension is told that the number
         INFO(p.id << " " << a.name << ": " << typed(1));
         const check::Verdict v = f.check(a.name, typed(1));
         REQUIRE(v.wrong_dimension);
-        CHECK(v.feedback.back() == "in " + sym::to_unicode(a.unit) +
+        // In the units the question asks in ("rad/s or 1/s" for a rate that is either).
+        CHECK(v.feedback.back() == "in " + sym::to_unicode(asked_unit(a)) +
                                        (a.value.data.size() == 1 ? " the number" : " the numbers") +
                                        " would be right");
         ++told;

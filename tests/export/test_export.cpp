@@ -5,6 +5,7 @@
 
 #include "export/graded_variants.hpp"
 #include "export/html_text.hpp"
+#include "export/moodle.hpp"
 #include "export/prairielearn.hpp"
 #include "problem/values.hpp"
 #include "solvers/catalog.hpp"
@@ -129,4 +130,24 @@ TEST_CASE("a problem's double braces never reach PrairieLearn's Mustache as a ta
   plate.parts.at(0).question += " $x^{{2}}$";
   plate.parts.at(0).hint += " $y_{{1}}$";
   CHECK(tags(plate) == template_tags);
+}
+
+TEST_CASE("Moodle and PrairieLearn ask for a rate in both units where its unit would tell it") {
+  // The asymmetric top's growth rate is in 1/s, its frequencies in rad/s; the question asks which
+  // axis is unstable, so each rate is asked for "in rad/s or 1/s".
+  const Problem p = find_problem("asymmetric-top");
+  const auto set = exports::graded_variants(p, 1, 2, check::Options{});
+  const std::string xml = exports::moodle_quiz(p, set, check::Options{}).xml;
+  std::string html;
+  for (const auto& f : exports::prairielearn_question(p, set, check::Options{})) {
+    if (f.path == "question.html") html = f.content;
+  }
+  REQUIRE_FALSE(html.empty());
+  for (const std::string name : {"rate_axis1", "rate_axis2", "rate_axis3"}) {
+    INFO(name);
+    CHECK_THAT(xml, Contains("Give <code>" + name + "</code> in rad/s or 1/s."));
+    CHECK_THAT(html, Contains("label=\"<code>" + name + "</code> =\" suffix=\"rad/s or 1/s\""));
+  }
+  CHECK_THAT(xml, !Contains("</code> in 1/s."));
+  CHECK_THAT(html, !Contains("suffix=\"1/s\""));
 }

@@ -259,3 +259,19 @@ TEST_CASE("the view carries a part's hint only when asked (the page file), never
   }
   CHECK_THAT(filed["parts"][0]["hint"].get<std::string>(), StartsWith("Use $\\omega$"));
 }
+
+TEST_CASE("the page labels a rate with both units where its unit would tell the answer") {
+  // The growth rate about e2 is in 1/s, the frequencies in rad/s: the label says both for all.
+  const Problem p = find_problem("asymmetric-top");
+  const auto view = json::parse(web::student_view_json(p, key_of(p), std::nullopt, {}));
+  int rates = 0;
+  for (const auto& part : view["parts"]) {
+    for (const auto& a : part["answers"]) {
+      if (a["name"].get<std::string>().rfind("rate_axis", 0) != 0) continue;
+      INFO(a["name"]);
+      CHECK(a["asked_unit"] == "rad/s or 1/s");
+      ++rates;
+    }
+  }
+  CHECK(rates == 3);
+}

@@ -45,6 +45,10 @@ function prettyUnit(unit) {
   return unit.replace(/\^(-?\d+)/g, (m, p) => [...p].map(c => sup[c]).join(''));
 }
 
+// The unit beside an answer's name, " [rad/s]": as the question asks for it, so where the
+// unit would tell the answer (a growth rate's 1/s) the alternatives ("rad/s or 1/s").
+function askedUnit(a) { return a.asked_unit ? ' [' + prettyUnit(a.asked_unit) + ']' : ''; }
+
 // Text with `code` spans as <code> and **strong** spans as <strong>, the rest as text (never
 // parsed as HTML).
 function withCode(text) {
@@ -166,8 +170,9 @@ function partView(id, variant, part, state, partKey, update) {
     const keyed = partKey && partKey.answers.find(k => k.name === a.name);
     if (offline) {
       // No judge without the server: the answer's name and unit, and the key if it was asked for.
-      div.append(el('div', {class: 'answer'}, el('label', {}, a.name + (a.unit ? ' [' + prettyUnit(a.unit) + ']' : '')),
-                    ...(keyed ? [keyLine(keyed)] : [])));
+      div.append(
+          el('div', {class: 'answer'}, el('label', {}, a.name + askedUnit(a)),
+             ...(keyed ? [keyLine(keyed)] : [])));
       continue;
     }
     state.total += 1;
@@ -194,7 +199,11 @@ function partView(id, variant, part, state, partKey, update) {
                                 variant: variant ? Number(variant) : null})});
         verdict.className = 'verdict ' + (v.correct ? 'right' : 'wrong');
         verdict.textContent = [v.verdict, ...v.feedback].join(' — ');
-        if (v.correct && !counted) { counted = true; state.right += 1; update(); }
+        if (v.correct && !counted) {
+          counted = true;
+          state.right += 1;
+          update();
+        }
         if (!v.correct) await wrongTry();
         if (v.correct) {
           const inputs = [...main.querySelectorAll('.answer textarea')];
@@ -207,12 +216,12 @@ function partView(id, variant, part, state, partKey, update) {
         await wrongTry();  // an answer the judge cannot read is a try too
       }
     });
-    const unit = a.unit ? ' [' + prettyUnit(a.unit) + ']' : '';
     const shape = a.kind === 'principal_moments' ? ' (three moments [.., .., ..], in any order)' :
                   a.shape === 'vector' ? ' (a vector ' + vectorForm(a) + ')' :
                   a.shape === 'matrix' ? ' (a matrix [' + Array(a.rows).fill('[..]').join(', ') + '])' : '';
-    div.append(el('div', {class: 'answer'}, el('label', {}, a.name + unit + shape), input, verdict,
-                  ...(keyed ? [keyLine(keyed)] : [])));
+    div.append(
+        el('div', {class: 'answer'}, el('label', {}, a.name + askedUnit(a) + shape), input, verdict,
+           ...(keyed ? [keyLine(keyed)] : [])));
   }
   for (const absent of part.absent) div.append(el('p', {class: 'unit'}, absent + ' does not exist at these values'));
   if (!offline) div.append(hint);

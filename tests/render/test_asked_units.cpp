@@ -1,0 +1,128 @@
+// The unit a question shows beside an answer's name: where the key's unit would tell the answer
+// (the asymmetric top's growth rate is in 1/s, its frequencies in rad/s, and the question asks
+// which axis is unstable), every surface that asks shows the units it may be in, and the judge
+// takes each of them.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "check/check_fixture.hpp"
+#include "check/worksheet.hpp"
+#include "render/handout.hpp"
+#include "solvers/catalog.hpp"
+#include "solvers/quantity_table.hpp"
+
+using namespace wobble;
+using Catch::Matchers::Contains;
+using Fixture = wobble::test::CheckFixture;
+
+namespace {
+// The problems that ask which principal axis is stable, and the unit they show for the rates.
+const std::vector<std::string> kStabilityProblems{"asymmetric-top", "tennis-racket"};
+const std::string kRateUnits = "rad/s or 1/s";
+const std::vector<std::string> kRates{"rate_axis1", "rate_axis2", "rate_axis3"};
+
+// The units " or " separates in an asked unit ("rad/s or 1/s"), or the one unit.
+std::vector<std::string> alternatives(const std::string& asked) {
+  std::vector<std::string> out;
+  const std::string sep = " or ";
+  for (std::size_t from = 0;;) {
+    const std::size_t to = asked.find(sep, from);
+    out.push_back(asked.substr(from, to == std::string::npos ? to : to - from));
+    if (to == std::string::npos) return out;
+    from = to + sep.size();
+  }
+}
+}  // namespace
+
+TEST_CASE("the stable and unstable axes' rates are in two units, asked in the same words") {
+  for (const auto& id : kStabilityProblems) {
+    INFO(id);
+    const Fixture f(id);
+    std::set<std::string> units, asked;
+    for (const auto& name : kRates) {
+      units.insert(f.answer(name).unit);
+      asked.insert(asked_unit(f.answer(name)));
+    }
+    // The keys differ (so a label in the key's unit would tell which axis is unstable) ..
+    REQUIRE(units == std::set<std::string>{"rad/s", "1/s"});
+    // .. and the question's words do not.
+    REQUIRE(asked == std::set<std::string>{kRateUnits});
+  }
+}
+
+TEST_CASE("the handout, its Markdown and the worksheet's prompts show a rate's units as asked") {
+  for (const auto& id : kStabilityProblems) {
+    INFO(id);
+    const Fixture f(id);
+    const std::string text = render_handout_text(f.key, {}, std::nullopt, true);
+    const std::string markdown = render_handout(f.key, {}, std::nullopt);
+    for (const auto& name : kRates) {
+      CHECK_THAT(text, Contains(name + " [" + kRateUnits + "]"));
+      CHECK_THAT(markdown, Contains("`" + name + "` [" + kRateUnits + "]"));
+    }
+    CHECK_THAT(text + markdown, !Contains("[1/s]"));
+    std::vector<std::string> prompts;
+    // '!' at every prompt: each answer revealed in turn, and the next one asked.
+    const check::ReadLine reveal_all = [&](const std::string& prompt, std::string& line) {
+      prompts.push_back(prompt);
+      line = "!";
+      return prompts.size() < 100;
+    };
+    std::ostringstream out;
+    (void)check::run_worksheet(reveal_all, out, "", f.problem, {f.key, f.table, f.values}, {});
+    for (const auto& name : kRates) {
+      INFO(name);
+      CHECK(std::count(prompts.begin(), prompts.end(), "  " + name + " [" + kRateUnits + "] = ") ==
+            1);
+    }
+  }
+}
+
+TEST_CASE(
+    "every answer's unit is among those asked, and each asked reads back right, every "
+    "problem") {
+  int alternatives_read = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        INFO(p.id << " " << a.name << " asked in '" << asked_unit(a) << "'");
+        REQUIRE(registered_unit(asked_unit(a), a.unit));
+        const auto units = alternatives(asked_unit(a));
+        if (units.size() < 2 || a.value.shape != Value::Shape::scalar) continue;
+        for (const auto& unit : units) {
+          const std::string typed = format_number(a.value.data[0]) + " " + unit;
+          INFO(typed);
+          CHECK(f.check(a.name, typed).correct);
+          ++alternatives_read;
+        }
+      }
+    }
+  }
+  // Two units for each of three rates in two problems.
+  REQUIRE(alternatives_read >= 12);
+}
+
+TEST_CASE("the judge's words on a rate's unit are the same for a stable and an unstable axis") {
+  const Fixture f("asymmetric-top");
+  for (const auto& name : kRates) {
+    INFO(name);
+    const auto v = f.check(name, format_number(f.answer(name).value.data[0]) + " s");
+    REQUIRE_FALSE(v.correct);
+    REQUIRE(v.feedback.size() >= 2);
+    CHECK(v.feedback[0] == "you gave s (time); the answer is in " + kRateUnits + " (1 / time)");
+    CHECK(v.feedback[1] == "in " + kRateUnits + " the number would be right");
+  }
+  // The growth rate given for a frequency, in its own unit: the other axis's answer, named.
+  const Answer& growth = f.answer("rate_axis2");
+  REQUIRE(growth.unit == "1/s");
+  const auto v = f.check("rate_axis1", format_number(growth.value.data[0]) + " 1/s");
+  REQUIRE_FALSE(v.correct);
+  REQUIRE(v.feedback.size() == 1);
+  CHECK(v.feedback[0] == "this is rate_axis2 (part b), not rate_axis1");
+}
