@@ -9,6 +9,7 @@
 #include "check/submission.hpp"
 #include "cli/commands.hpp"
 #include "cli/terminal_width.hpp"
+#include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "core/word_wrap.hpp"
 #include "export/gradescope.hpp"
@@ -126,11 +127,35 @@ bool names_part_or_answer(const Problem& problem, const std::string& word) {
   return false;
 }
 
+// The answer's name where one word is a key's line, "rate_axis2 = 1.772 1/s" (as the worksheet
+// prompts and a submission file is written): the left of its first '=', as the key writes it
+// where it names an answer as the key writes or prints it ("I₀"); a name of no answer as typed,
+// to be refused as one ("J0 = .."); "" where there is no '=', or the left is a part's id or not
+// one word.
+std::string named_line(const Key& key, const std::string& word) {
+  const std::size_t eq = word.find('=');
+  if (eq == std::string::npos) return "";
+  const std::string left = trim(word.substr(0, eq));
+  const std::string name = check::name_in_key(key, left);
+  for (const auto& part : key.parts) {
+    if (part.id == left) return "";
+    for (const auto& answer : part.answers) {
+      if (answer.name == name) return name;
+    }
+  }
+  return left.find_first_of(" \t") == std::string::npos ? left : "";
+}
+
 // The part and the answer typed. "wobble check P --name N ANSWER": --name lets the part go,
 // so the one word after the problem is the answer unless it names a part or an answer.
-std::pair<std::string, std::string> part_and_answer(const CheckOptions& opt,
-                                                    const Problem& problem) {
+// "wobble check P 'N = ANSWER'": one word, a key's line, names the answer and is judged whole
+// (the judge drops its own name on the left).
+std::pair<std::string, std::string> part_and_answer(const CheckOptions& opt, const Problem& problem,
+                                                    const Key& key) {
   const std::string& typed = opt.answer_after_part.empty() ? opt.answer : opt.answer_after_part;
+  if (typed.empty() && opt.name.empty() && !names_part_or_answer(problem, opt.part)) {
+    if (const std::string name = named_line(key, opt.part); !name.empty()) return {name, opt.part};
+  }
   if (opt.name.empty() || opt.part.empty() || !typed.empty() ||
       names_part_or_answer(problem, opt.part)) {
     return {opt.part, typed};
@@ -164,6 +189,12 @@ std::string answer_quoted(const std::vector<std::string>& args, const CheckOptio
   if (end == at + 1) return "";
   std::string answer = first;
   for (std::size_t i = at + 1; i < end; ++i) answer += " " + args[i];
+  // "rate_axis2 = 1.772 1/s": the name and its '=' go in the quotes too, one word that is a key's
+  // line (part_and_answer reads it so).
+  if (first == "=" && opt.answer.empty() && at >= 2 && args[at - 1] == opt.part) {
+    --at;
+    answer = opt.part + " " + answer;
+  }
   std::string line = "wobble";
   for (std::size_t i = 1; i < args.size(); ++i) {
     const bool plain = args[i].find_first_of(" '\"*?$&|;<>()[]{}\\") == std::string::npos;
@@ -194,7 +225,7 @@ int run_check(const CheckOptions& opt) {
         opt.problem, part == key.parts.end() ? "NAME" : part->answers.front().name, opt.problem,
         answers_by_part(key)));
   }
-  const auto [part, typed] = part_and_answer(opt, problem);
+  const auto [part, typed] = part_and_answer(opt, problem, key);
   const sym::SymbolTable table = problem.symbol_table();
   const check::Context ctx{key, table, values};
   // "I₀", "I_0": an answer's name as the statement or a LaTeX handout writes it. A part of

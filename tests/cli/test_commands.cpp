@@ -345,6 +345,39 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
   REQUIRE(run_wobble({"check", "flying-plate"}).exit_code == 2);
 }
 
+TEST_CASE("check: one word that is a key's line, NAME = ANSWER, names its answer") {
+  // As the worksheet prompts and a submission file is written; the name as the key prints it.
+  for (const auto& [args, out] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"check", "asymmetric-top", "rate_axis2 = 1.772 1/s"}, "correct: rate_axis2\n"},
+           {{"check", "asymmetric-top", "rate_axis2=1.772"}, "correct: rate_axis2\n"},
+           {{"check", "flying-plate", "I₀ = m·R²/4 = 0.00072 kg m²"},
+            "correct: I0 (your expression simplifies to the key's)\n"},
+           {{"check", "asymmetric-top", "rate_axis2 = 2.894 1/s"},
+            "incorrect: rate_axis2\n  this is rate_axis3 (part b), not rate_axis2\n"}}) {
+    const RunResult r = run_wobble(args);
+    INFO(args.back() << "\n" << r.err);
+    REQUIRE(r.exit_code == (out.rfind("correct", 0) == 0 ? 0 : 1));
+    REQUIRE(r.out == out);
+  }
+  // A name of no answer is refused as that name, not as the whole line.
+  const RunResult unknown = run_wobble({"check", "flying-plate", "J0 = m R^2/2"});
+  REQUIRE(unknown.exit_code == 2);
+  REQUIRE(unknown.out.empty());
+  REQUIRE_THAT(unknown.err, Catch::StartsWith("wobble: part: problem flying-plate has no part or "
+                                              "answer 'J0' (answers by part: (a) I0, I;"));
+  // The line split by the shell: quoted whole, and what is suggested is judged.
+  const RunResult split =
+      run_wobble({"check", "asymmetric-top", "rate_axis2", "=", "1.772", "1/s"});
+  REQUIRE(split.exit_code == 2);
+  REQUIRE(split.out.empty());
+  const std::string suggested = "wobble check asymmetric-top 'rate_axis2 = 1.772 1/s'";
+  REQUIRE_THAT(split.err, Catch::EndsWith("put it in quotes: " + suggested + "\n"));
+  const std::size_t quote = suggested.find('\'');
+  const RunResult pasted = run_wobble(
+      {"check", "asymmetric-top", suggested.substr(quote + 1, suggested.size() - quote - 2)});
+  REQUIRE(pasted.exit_code == 0);
+}
+
 TEST_CASE("check: the answer's name where the part goes, the answer as the third word") {
   // As a student types it after reading the key: the name the key prints, then the answer.
   const RunResult named = run_wobble({"check", "flying-plate", "I0", "m·R²/4"});
