@@ -1542,6 +1542,23 @@ Verdict judge_restated(const Context& ctx, const Answer& a, const Restatement& r
   return v;
 }
 
+// The number's verdict with the word after it weighed against the key's stability: a right
+// number with the wrong word is wrong (the part asks which axes are stable); the word is said
+// right or wrong either way.
+Verdict with_stability_word(Verdict v, const Answer& a, const WordRemark& remark) {
+  const Answer::Stability& key = *a.stability;
+  if (*remark.says_stable == key.stable) {
+    v.feedback.push_back("your bracket \"" + remark.bracket + "\" is right: " + key.why);
+    return v;
+  }
+  if (v.correct) {
+    v.correct = false;
+    v.line = "incorrect: " + a.name + " (the number is right, the word after it is not)";
+  }
+  v.feedback.push_back("your bracket \"" + remark.bracket + "\" is wrong: " + key.why);
+  return v;
+}
+
 }  // namespace
 
 bool written_as_euler_equations(const Context& ctx, const std::string& text) {
@@ -1556,10 +1573,12 @@ bool written_as_euler_equations(const Context& ctx, const std::string& text) {
 
 Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
               const Options& options) {
-  // "1.772 1/s (unstable)": the number judged; the word is the student's claim, said unjudged
-  // rather than taken for right.
+  // "1.772 1/s (unstable)": the number judged; the word is the student's claim, weighed where
+  // the key says what it claims (the stability of a spin about a principal axis, which the
+  // question asks), else said unjudged rather than taken for right.
   if (const auto remark = word_remark(text)) {
     Verdict v = judge(ctx, a, remark->answer, options);
+    if (remark->says_stable && a.stability) return with_stability_word(v, a, *remark);
     v.feedback.push_back("your bracket \"" + remark->bracket +
                          "\" is taken as a remark, not judged (the value is)");
     return v;

@@ -709,7 +709,12 @@ std::optional<WordRemark> word_remark(const std::string& typed) {
   const std::string word = ascii_lower(trim(t.substr(open + 1, t.size() - open - 2)));
   const std::string answer = trim(t.substr(0, open));
   if (kWords.count(word) == 0 || answer.empty()) return std::nullopt;
-  return WordRemark{answer, t.substr(open)};
+  static const std::set<std::string> kStable{"stable", "oscillating", "oscillates", "oscillatory"},
+      kUnstable{"unstable", "growing", "grows", "exponential"};
+  std::optional<bool> says_stable;
+  if (kStable.count(word)) says_stable = true;
+  if (kUnstable.count(word)) says_stable = false;
+  return WordRemark{answer, t.substr(open), says_stable};
 }
 
 std::optional<Restatement> restatement_of(const std::string& typed) {

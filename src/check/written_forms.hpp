@@ -119,6 +119,9 @@ std::string without_remark(const std::string& typed,
 struct WordRemark {
   std::string answer;   ///< "1.772 1/s"
   std::string bracket;  ///< "(unstable)"
+  /// What the word says of a spin's stability: true for stable, oscillating (and their like),
+  /// false for unstable, growing, exponential; empty for a word on something else ("prograde").
+  std::optional<bool> says_stable;
 };
 std::optional<WordRemark> word_remark(const std::string& typed);
 

@@ -234,6 +234,12 @@ Computed spin_rate(const Asym& t, const std::string& q) {
   const ex rate = sym::simplified_sqrt(a.stable ? a.product : sym::tidy(-a.product));
   Computed out{exact_scalar(q, rate, a.stable ? "rad/s" : "1/s", t.exact),
                {{axis_steps_text(a), ""}}};
+  constexpr std::array<const char*, 3> kOmega{"Ω₁", "Ω₂", "Ω₃"}, kAxis{"e₁", "e₂", "e₃"};
+  out.answer.stability = Answer::Stability{
+      a.stable,
+      fmt::format("the spin about {} is {} ({} {} {} 0)", kAxis[static_cast<std::size_t>(a.k)],
+                  a.stable ? "stable" : "unstable", kOmega[static_cast<std::size_t>(a.i)],
+                  kOmega[static_cast<std::size_t>(a.j)], a.stable ? ">" : "<")};
   const double Pn = value(t, a.product, "Omega_i Omega_j");
   check_routes_agree(out.answer.value.data[0], std::sqrt(std::abs(Pn)), out.answer.value.data[0],
                      kShortRouteUlps, q);

@@ -127,6 +127,15 @@ struct Answer {
   /// "Ω₂", "Ω₃" of a pair): empty for components along axes (entry_names gives those). Set by
   /// the solver; the JSON key lists them as "entries".
   std::vector<std::string> named_entries;
+  /// A rate about a principal axis: whether the spin about it is stable (the rate is a
+  /// frequency) or not (a growth rate), and why, "the spin about e₂ is unstable (Ω₃ Ω₁ < 0)".
+  /// The judge weighs a student's word on it after the number, "1.772 1/s (unstable)". Set by
+  /// the solver; not in the JSON key (the notes say it).
+  struct Stability {
+    bool stable = false;
+    std::string why;
+  };
+  std::optional<Stability> stability;
   /// What the steps call this answer where that is not its name, GiNaC text ("theta_L" for the
   /// angle of L from e₃, as tan θ_L = (I1/I3) tan α writes it): a student may write it so. Set by
   /// the solver; not in the JSON key (the steps say it).

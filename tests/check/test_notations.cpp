@@ -2079,11 +2079,13 @@ TEST_CASE("one word on the motion in brackets after an answer is said to be unju
       for (const auto& a : part.answers) {
         if (a.value.shape != wobble::Value::Shape::scalar || a.unit.empty()) continue;
         const std::string value = fmt::format("{:.6g} {}", a.value.data[0], a.unit);
-        for (const char* word : {"(unstable)", "(Stable)", "(approx)"}) {
+        for (const std::string word : {"(unstable)", "(Stable)", "(approx)"}) {
+          // A rate about a principal axis has its stability weighed (the next case).
+          if (a.stability && word != "(approx)") continue;
           INFO(p.id << " " << a.name << ": " << value << " " << word);
           const auto v = f.check(a.name, value + " " + word);
           REQUIRE(v.correct);
-          REQUIRE(v.feedback.back() == "your bracket \"" + std::string(word) + "\" " + unjudged);
+          REQUIRE(v.feedback.back() == "your bracket \"" + word + "\" " + unjudged);
           ++judged;
         }
       }
@@ -2097,6 +2099,50 @@ TEST_CASE("one word on the motion in brackets after an answer is said to be unju
   // A word of no such list stays what it is: an unknown name.
   REQUIRE_THROWS_WITH(top.check("rate_axis2", fmt::format("{:.4g} 1/s (unstabel)", growth)),
                       Catch::Contains("undefined symbol 'unstabel'"));
+}
+
+TEST_CASE("a word on a rate's stability after it is weighed against the key's, every such rate") {
+  int weighed = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (!a.stability) continue;
+        const bool stable = a.stability->stable;
+        // The solver's verdict against the pair of the lecture's Ω about the same axis, an answer
+        // of its own: stable exactly where their product is positive.
+        const Answer& pair = f.answer("Omega_axis" + a.name.substr(a.name.size() - 1));
+        REQUIRE((pair.value.data.at(0) * pair.value.data.at(1) > 0) == stable);
+        REQUIRE_THAT(a.stability->why, Catch::Contains(stable ? "is stable (" : "is unstable ("));
+        const std::string value = fmt::format("{:.6g} {}", a.value.data[0], a.unit);
+        for (const auto& [word, says_stable] :
+             std::vector<std::pair<std::string, bool>>{{"stable", true},
+                                                       {"Oscillating", true},
+                                                       {"oscillatory", true},
+                                                       {"unstable", false},
+                                                       {"growing", false},
+                                                       {"exponential", false}}) {
+          const bool right = says_stable == stable;
+          const std::string bracket = "(" + word + ")";
+          INFO(p.id << " " << a.name << ": " << value << " " << bracket);
+          const auto v = f.check(a.name, value + " " + bracket);
+          CHECK(v.correct == right);
+          CHECK(v.line == (right ? "correct: " + a.name
+                                 : "incorrect: " + a.name +
+                                       " (the number is right, the word after it is not)"));
+          CHECK(v.feedback.back() == "your bracket \"" + bracket + "\" is " +
+                                         (right ? "right: " : "wrong: ") + a.stability->why);
+          // A wrong number is wrong whatever the word; the word is still weighed.
+          const auto off =
+              f.check(a.name, fmt::format("{:.6g} {} {}", 2 * a.value.data[0], a.unit, bracket));
+          CHECK_FALSE(off.correct);
+          CHECK(off.feedback.back() == v.feedback.back());
+          ++weighed;
+        }
+      }
+    }
+  }
+  REQUIRE(weighed == 2 * 3 * 6);  // two problems ask, three axes each, six words
 }
 
 TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied out") {
