@@ -1542,12 +1542,35 @@ Verdict judge_restated(const Context& ctx, const Answer& a, const Restatement& r
   return v;
 }
 
-// The number's verdict with the word after it weighed against the key's stability: a right
-// number with the wrong word is wrong (the part asks which axes are stable); the word is said
-// right or wrong either way.
-Verdict with_stability_word(Verdict v, const Answer& a, const WordRemark& remark) {
-  const Answer::Stability& key = *a.stability;
-  if (*remark.says_stable == key.stable) {
+// What the key says of the claim a word after an answer makes: whether it holds, and why.
+struct KeyOnWord {
+  bool holds;
+  std::string why;
+};
+
+// The stability of a spin about a principal axis, where the solver gives it; the sense of a
+// precession, where the answer is signed so (+ with the spin: an oblate body); none where the
+// key says nothing of what the word claims (a precession of zero has no sense).
+std::optional<KeyOnWord> key_on_word(const Answer& a, const WordRemark& remark) {
+  if (remark.says_stable && a.stability)
+    return KeyOnWord{*remark.says_stable == a.stability->stable, a.stability->why};
+  if (!remark.says_with_spin || a.sign != SignConvention::sense_of_precession ||
+      a.value.shape != Value::Shape::scalar || a.value.data.at(0) == 0.0) {
+    return std::nullopt;
+  }
+  const bool with_spin = a.value.data[0] > 0;
+  return KeyOnWord{*remark.says_with_spin == with_spin,
+                   with_spin
+                       ? a.name + " is along +e₃, with the spin: the body is oblate (I₃ > I₁)"
+                       : a.name + " is along −e₃, against the spin: the body is prolate (I₃ < I₁)"};
+}
+
+// The number's verdict with the word after it weighed against the key: a right number with the
+// wrong word is wrong (the word answers what the part asks: which axes are stable, which way the
+// axis precesses); the word is said right or wrong either way.
+Verdict with_word_weighed(Verdict v, const Answer& a, const WordRemark& remark,
+                          const KeyOnWord& key) {
+  if (key.holds) {
     v.feedback.push_back("your bracket \"" + remark.bracket + "\" is right: " + key.why);
     return v;
   }
@@ -1578,7 +1601,7 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   // question asks), else said unjudged rather than taken for right.
   if (const auto remark = word_remark(text)) {
     Verdict v = judge(ctx, a, remark->answer, options);
-    if (remark->says_stable && a.stability) return with_stability_word(v, a, *remark);
+    if (const auto claim = key_on_word(a, *remark)) return with_word_weighed(v, a, *remark, *claim);
     v.feedback.push_back("your bracket \"" + remark->bracket +
                          "\" is taken as a remark, not judged (the value is)");
     return v;

@@ -711,10 +711,12 @@ std::optional<WordRemark> word_remark(const std::string& typed) {
   if (kWords.count(word) == 0 || answer.empty()) return std::nullopt;
   static const std::set<std::string> kStable{"stable", "oscillating", "oscillates", "oscillatory"},
       kUnstable{"unstable", "growing", "grows", "exponential"};
-  std::optional<bool> says_stable;
+  std::optional<bool> says_stable, says_with_spin;
   if (kStable.count(word)) says_stable = true;
   if (kUnstable.count(word)) says_stable = false;
-  return WordRemark{answer, t.substr(open), says_stable};
+  if (word == "prograde" || word == "oblate") says_with_spin = true;
+  if (word == "retrograde" || word == "prolate") says_with_spin = false;
+  return WordRemark{answer, t.substr(open), says_stable, says_with_spin};
 }
 
 std::optional<Restatement> restatement_of(const std::string& typed) {

@@ -122,6 +122,9 @@ struct WordRemark {
   /// What the word says of a spin's stability: true for stable, oscillating (and their like),
   /// false for unstable, growing, exponential; empty for a word on something else ("prograde").
   std::optional<bool> says_stable;
+  /// What the word says of a precession's sense: true for prograde or oblate (with the spin),
+  /// false for retrograde or prolate (against it); empty for a word on something else.
+  std::optional<bool> says_with_spin;
 };
 std::optional<WordRemark> word_remark(const std::string& typed);
 

@@ -2145,6 +2145,45 @@ TEST_CASE("a word on a rate's stability after it is weighed against the key's, e
   REQUIRE(weighed == 2 * 3 * 6);  // two problems ask, three axes each, six words
 }
 
+TEST_CASE("a word on a precession's sense after its rate is weighed against the key's sign") {
+  int weighed = 0, against = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.sign != SignConvention::sense_of_precession ||
+            a.value.shape != wobble::Value::Shape::scalar || a.value.data[0] == 0.0) {
+          continue;
+        }
+        const bool with_spin = a.value.data[0] > 0;
+        against += with_spin ? 0 : 1;
+        // As the key's note states it.
+        REQUIRE_THAT(a.notes.at(0), Catch::Contains(with_spin ? "with the spin (oblate body)"
+                                                              : "against the spin (prolate body)"));
+        const std::string value = fmt::format("{:.6g} {}", a.value.data[0], a.unit);
+        for (const auto& [word, says_with_spin] : std::vector<std::pair<std::string, bool>>{
+                 {"prograde", true}, {"Oblate", true}, {"retrograde", false}, {"prolate", false}}) {
+          const bool right = says_with_spin == with_spin;
+          const std::string bracket = "(" + word + ")";
+          INFO(p.id << " " << a.name << ": " << value << " " << bracket);
+          const auto v = f.check(a.name, value + " " + bracket);
+          CHECK(v.correct == right);
+          CHECK(v.line == (right ? "correct: " + a.name
+                                 : "incorrect: " + a.name +
+                                       " (the number is right, the word after it is not)"));
+          CHECK(v.feedback.back() ==
+                "your bracket \"" + bracket + "\" is " + (right ? "right: " : "wrong: ") + a.name +
+                    (with_spin ? " is along +e₃, with the spin: the body is oblate (I₃ > I₁)"
+                               : " is along −e₃, against the spin: the body is prolate (I₃ < I₁)"));
+          ++weighed;
+        }
+      }
+    }
+  }
+  REQUIRE(weighed >= 4 * 4);  // four words on each signed rate of the catalog's free tops
+  REQUIRE(against >= 1);      // a prolate body among them: both senses weighed
+}
+
 TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied out") {
   // The key derives R = Rz(φ) Ry(θ) Rz(ψ); a student may answer with that product. Its entries,
   // multiplied out here from the turns' own matrices, are judged against the key's R, which the
