@@ -128,6 +128,10 @@ struct Session {
     int answered = 0;
     for (const auto& a : part.answers) {
       int wrong = 0;
+      // How a vector or a matrix is typed, above its prompt (beside it, the answer would start
+      // near the terminal's edge): "(a vector [.., .., ..] along e₁, e₂, e₃)".
+      if (const std::string form = answer_form(a); !form.empty())
+        say("(" + form + ")", "  ", "   ");
       while (true) {
         std::string line;
         const bool more = read_answer(

@@ -20,6 +20,7 @@ std::string answer_names(const PartKey& part, bool markdown) {
     if (!out.empty()) out += ", ";
     out += markdown ? "`" + a.name + "`" : a.name;
     if (!asked_unit(a).empty()) out += " [" + detail::pretty(asked_unit(a)) + "]";
+    if (const std::string form = answer_form(a); !form.empty()) out += " (" + form + ")";
   }
   return out;
 }

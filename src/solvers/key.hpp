@@ -142,6 +142,12 @@ struct Answer {
   std::vector<std::string> step_names;
 };
 
+/// How an answer is typed, as a question shows it beside the name and unit: "a vector [Ω₂, Ω₃]"
+/// (entries the question names), "a vector [x, y, z]" (along the fixed axes), "a vector [.., ..,
+/// ..] along e₁, e₂, e₃" (a body's components are no x, y, z), "a matrix [[..], [..], [..]]",
+/// "three moments [.., .., ..], in any order"; "" for a number.
+std::string answer_form(const Answer& a);
+
 /// The unit to show where an answer is asked for: its asked_unit, else its unit.
 inline const std::string& asked_unit(const Answer& a) {
   return a.asked_unit.empty() ? a.unit : a.asked_unit;

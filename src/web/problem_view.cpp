@@ -38,6 +38,7 @@ std::string student_view_json(const Problem& problem, const Key& key, std::optio
       answers.push_back({{"name", a.name},
                          {"unit", a.unit},
                          {"asked_unit", asked_unit(a)},
+                         {"form", answer_form(a)},
                          {"kind", kind_name(a.kind)},
                          {"frame", frame_name(a.frame)},
                          {"shape", shape_name(a.value.shape)},

@@ -275,3 +275,23 @@ TEST_CASE("the page labels a rate with both units where its unit would tell the 
   }
   CHECK(rates == 3);
 }
+
+TEST_CASE(
+    "the page has each answer's form from the key, as the handout and the worksheet word it") {
+  const Problem p = find_problem("tennis-racket");
+  const Key key = key_of(p);
+  const auto view = json::parse(web::student_view_json(p, key, std::nullopt, {}));
+  REQUIRE(view["parts"].size() == key.parts.size());
+  int vectors = 0;
+  for (std::size_t i = 0; i < key.parts.size(); ++i) {
+    const auto& answers = view["parts"][i]["answers"];
+    REQUIRE(answers.size() == key.parts[i].answers.size());
+    for (std::size_t j = 0; j < answers.size(); ++j) {
+      const Answer& a = key.parts[i].answers[j];
+      INFO(a.name);
+      CHECK(answers[j]["form"] == answer_form(a));
+      vectors += a.value.shape == Value::Shape::vector ? 1 : 0;
+    }
+  }
+  CHECK(vectors >= 5);  // the coefficients, dω/dt and the three pairs of Ω
+}

@@ -28,17 +28,6 @@ function el(tag, attrs, ...children) {
 }
 
 // Units as a reader writes them: kg m^2/s -> kg m²/s.
-// How a vector is typed, its entries as the question names them (the server's `entries`):
-// "[c₁, c₂, c₃]" where it names them; along the fixed axes "[x, y, z]"; along other axes
-// "[.., .., ..] along e₁, e₂, e₃" (the body's components are no x, y, z); unnamed, "[.., ..]".
-function vectorForm(a) {
-  const names = a.entries || [];
-  const dots = '[' + Array(a.rows).fill('..').join(', ') + ']';
-  if (names.length !== a.rows) return dots;
-  if (a.frame === 'body' || a.frame === 'primed') return dots + ' along ' + names.join(', ');
-  return '[' + names.join(', ') + ']';
-}
-
 function prettyUnit(unit) {
   const sup = {'-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶',
                '7': '⁷', '8': '⁸', '9': '⁹'};
@@ -48,6 +37,10 @@ function prettyUnit(unit) {
 // The unit beside an answer's name, " [rad/s]": as the question asks for it, so where the
 // unit would tell the answer (a growth rate's 1/s) the alternatives ("rad/s or 1/s").
 function askedUnit(a) { return a.asked_unit ? ' [' + prettyUnit(a.asked_unit) + ']' : ''; }
+
+// An answer's label: its name, its unit as asked, and how it is typed as the server words it
+// ("a vector [.., .., ..] along e₁, e₂, e₃"; nothing for a number), as the handout has it.
+function answerLabel(a) { return a.name + askedUnit(a) + (a.form ? ' (' + a.form + ')' : ''); }
 
 // Text with `code` spans as <code> and **strong** spans as <strong>, the rest as text (never
 // parsed as HTML).
@@ -171,7 +164,7 @@ function partView(id, variant, part, state, partKey, update) {
     if (offline) {
       // No judge without the server: the answer's name and unit, and the key if it was asked for.
       div.append(
-          el('div', {class: 'answer'}, el('label', {}, a.name + askedUnit(a)),
+          el('div', {class: 'answer'}, el('label', {}, answerLabel(a)),
              ...(keyed ? [keyLine(keyed)] : [])));
       continue;
     }
@@ -216,11 +209,8 @@ function partView(id, variant, part, state, partKey, update) {
         await wrongTry();  // an answer the judge cannot read is a try too
       }
     });
-    const shape = a.kind === 'principal_moments' ? ' (three moments [.., .., ..], in any order)' :
-                  a.shape === 'vector' ? ' (a vector ' + vectorForm(a) + ')' :
-                  a.shape === 'matrix' ? ' (a matrix [' + Array(a.rows).fill('[..]').join(', ') + '])' : '';
     div.append(
-        el('div', {class: 'answer'}, el('label', {}, a.name + askedUnit(a) + shape), input, verdict,
+        el('div', {class: 'answer'}, el('label', {}, answerLabel(a)), input, verdict,
            ...(keyed ? [keyLine(keyed)] : [])));
   }
   for (const absent of part.absent) div.append(el('p', {class: 'unit'}, absent + ' does not exist at these values'));
