@@ -2101,6 +2101,26 @@ TEST_CASE("one word on the motion in brackets after an answer is said to be unju
                       Catch::Contains("undefined symbol 'unstabel'"));
 }
 
+namespace {
+// `a`'s key number with "(word)" after it, and twice that number: the word said right or wrong
+// with `why`; a right number with a wrong word is wrong, a wrong number wrong whatever the word.
+void check_word_weighed(const Fixture& f, const wobble::Answer& a, const std::string& word,
+                        bool right, const std::string& why) {
+  const std::string bracket = "(" + word + ")";
+  const auto v = f.check(a.name, fmt::format("{:.6g} {} {}", a.value.data[0], a.unit, bracket));
+  CHECK(v.correct == right);
+  CHECK(v.line ==
+        (right ? "correct: " + a.name
+               : "incorrect: " + a.name + " (the number is right, the word after it is not)"));
+  CHECK(v.feedback.back() ==
+        "your bracket \"" + bracket + "\" is " + (right ? "right: " : "wrong: ") + why);
+  const auto off =
+      f.check(a.name, fmt::format("{:.6g} {} {}", 2 * a.value.data[0], a.unit, bracket));
+  CHECK_FALSE(off.correct);
+  CHECK(off.feedback.back() == v.feedback.back());
+}
+}  // namespace
+
 TEST_CASE("a word on a rate's stability after it is weighed against the key's, every such rate") {
   int weighed = 0;
   for (const auto& p : load_catalog()) {
@@ -2122,21 +2142,8 @@ TEST_CASE("a word on a rate's stability after it is weighed against the key's, e
                                                        {"unstable", false},
                                                        {"growing", false},
                                                        {"exponential", false}}) {
-          const bool right = says_stable == stable;
-          const std::string bracket = "(" + word + ")";
-          INFO(p.id << " " << a.name << ": " << value << " " << bracket);
-          const auto v = f.check(a.name, value + " " + bracket);
-          CHECK(v.correct == right);
-          CHECK(v.line == (right ? "correct: " + a.name
-                                 : "incorrect: " + a.name +
-                                       " (the number is right, the word after it is not)"));
-          CHECK(v.feedback.back() == "your bracket \"" + bracket + "\" is " +
-                                         (right ? "right: " : "wrong: ") + a.stability->why);
-          // A wrong number is wrong whatever the word; the word is still weighed.
-          const auto off =
-              f.check(a.name, fmt::format("{:.6g} {} {}", 2 * a.value.data[0], a.unit, bracket));
-          CHECK_FALSE(off.correct);
-          CHECK(off.feedback.back() == v.feedback.back());
+          INFO(p.id << " " << a.name << ": " << value << " (" << word << ")");
+          check_word_weighed(f, a, word, says_stable == stable, a.stability->why);
           ++weighed;
         }
       }
@@ -2163,18 +2170,12 @@ TEST_CASE("a word on a precession's sense after its rate is weighed against the 
         const std::string value = fmt::format("{:.6g} {}", a.value.data[0], a.unit);
         for (const auto& [word, says_with_spin] : std::vector<std::pair<std::string, bool>>{
                  {"prograde", true}, {"Oblate", true}, {"retrograde", false}, {"prolate", false}}) {
-          const bool right = says_with_spin == with_spin;
-          const std::string bracket = "(" + word + ")";
-          INFO(p.id << " " << a.name << ": " << value << " " << bracket);
-          const auto v = f.check(a.name, value + " " + bracket);
-          CHECK(v.correct == right);
-          CHECK(v.line == (right ? "correct: " + a.name
-                                 : "incorrect: " + a.name +
-                                       " (the number is right, the word after it is not)"));
-          CHECK(v.feedback.back() ==
-                "your bracket \"" + bracket + "\" is " + (right ? "right: " : "wrong: ") + a.name +
-                    (with_spin ? " is along +e₃, with the spin: the body is oblate (I₃ > I₁)"
-                               : " is along −e₃, against the spin: the body is prolate (I₃ < I₁)"));
+          INFO(p.id << " " << a.name << ": " << value << " (" << word << ")");
+          check_word_weighed(
+              f, a, word, says_with_spin == with_spin,
+              a.name + (with_spin
+                            ? " is along +e₃, with the spin: the body is oblate (I₃ > I₁)"
+                            : " is along −e₃, against the spin: the body is prolate (I₃ < I₁)"));
           ++weighed;
         }
       }
