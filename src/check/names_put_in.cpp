@@ -430,6 +430,9 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
     if (name.empty()) name = name_in_magnitude(ascii);
     if (name.empty()) name = referable_name_in(ctx, a, ascii);
   }
+  // What stands between bars or in norm(..) may be no name at all ("norm(Omega_sp~ace)"): not
+  // one to put in, nor to declare.
+  if (!sym::is_identifier(name)) return std::nullopt;
   const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
   if (r == nullptr) return std::nullopt;
   if (!looks_like_latex(text)) {

@@ -19,7 +19,6 @@
 
 namespace wobble::sym {
 
-namespace {
 bool is_identifier(const std::string& s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
   for (char c : s) {
@@ -28,6 +27,7 @@ bool is_identifier(const std::string& s) {
   return true;
 }
 
+namespace {
 // GiNaC's parse errors carry a source location on following lines; keep the first line.
 std::string first_line(const std::string& s) {
   auto pos = s.find('\n');

@@ -39,6 +39,9 @@ inline constexpr int kMaxExpressionDepth = 100;
 inline constexpr std::array<std::pair<std::string_view, std::string_view>, 4> kFunctionAliases{
     {{"ln", "log"}, {"arcsin", "asin"}, {"arccos", "acos"}, {"arctan", "atan"}}};
 
+/// Whether `s` can name a symbol: ASCII letters, digits and '_', not starting with a digit.
+bool is_identifier(const std::string& s);
+
 class SymbolTable {
  public:
   /// Declares a symbol. @throws std::invalid_argument if the name is taken or not an identifier.
