@@ -432,8 +432,8 @@ std::optional<Referenced> answer_referenced(const Context& ctx, const Answer& a,
   }
   // What stands between bars or in norm(..) may be no name at all ("norm(Omega_sp~ace)"): not
   // one to put in, nor to declare.
-  if (!sym::is_identifier(name)) return std::nullopt;
-  const Answer* r = name.empty() ? nullptr : referable_answer(ctx, a, name);
+  if (!sym::is_identifier(name)) return std::nullopt;  // nor is "" one
+  const Answer* r = referable_answer(ctx, a, name);
   if (r == nullptr) return std::nullopt;
   if (!looks_like_latex(text)) {
     // "I₀ω sin α": the name run together with a symbol, set apart as the reader sets names.

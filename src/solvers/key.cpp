@@ -150,18 +150,15 @@ std::vector<std::string> entry_names(const Answer& a) {
 }
 
 std::string answer_form(const Answer& a) {
-  const auto dots = [](std::size_t n, const std::string& entry) {
-    std::string out;
-    for (std::size_t i = 0; i < n; ++i) out += (i ? ", " : "") + entry;
-    return "[" + out + "]";
+  const auto dots = [](std::size_t n, const char* entry) {
+    return fmt::format("[{}]", fmt::join(std::vector<std::string>(n, entry), ", "));
   };
   if (a.kind == AnswerKind::principal_moments) return "three moments [.., .., ..], in any order";
   if (a.value.shape == Value::Shape::matrix) return "a matrix " + dots(a.value.rows, "[..]");
   if (a.value.shape != Value::Shape::vector) return "";
   const std::vector<std::string> names = entry_names(a);
   if (names.size() != a.value.data.size()) return "a vector " + dots(a.value.data.size(), "..");
-  std::string list;
-  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  const std::string list = fmt::format("{}", fmt::join(names, ", "));
   if (a.frame == AnswerFrame::body || a.frame == AnswerFrame::primed)
     return "a vector " + dots(names.size(), "..") + " along " + list;
   return "a vector [" + list + "]";

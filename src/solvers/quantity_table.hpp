@@ -4,6 +4,7 @@
 /// description) and the small function that computes it from the solver's context. The solver
 /// builds its SolverInfo from the rows, and computes an answer by looking its row up, so the
 /// registry and the computation cannot drift apart.
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -13,17 +14,23 @@
 
 namespace wobble {
 
-/// Whether `unit` is the registered one, or one of its alternatives ("rad/s or 1/s": a rate
-/// that is a frequency or a growth rate, by the values).
-inline bool registered_unit(const std::string& registered, const std::string& unit) {
-  if (registered == unit) return true;
+/// The units a registered unit allows: itself, or its alternatives ("rad/s or 1/s": a rate that
+/// is a frequency or a growth rate, by the values).
+inline std::vector<std::string> unit_alternatives(const std::string& registered) {
+  std::vector<std::string> out;
   const std::string sep = " or ";
   for (std::size_t from = 0;;) {
     const std::size_t to = registered.find(sep, from);
-    if (registered.substr(from, to == std::string::npos ? to : to - from) == unit) return true;
-    if (to == std::string::npos) return false;
+    out.push_back(registered.substr(from, to == std::string::npos ? to : to - from));
+    if (to == std::string::npos) return out;
     from = to + sep.size();
   }
+}
+
+/// Whether `unit` is the registered one, or one of its alternatives.
+inline bool registered_unit(const std::string& registered, const std::string& unit) {
+  const auto units = unit_alternatives(registered);
+  return std::find(units.begin(), units.end(), unit) != units.end();
 }
 
 template <class Context>

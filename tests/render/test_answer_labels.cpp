@@ -28,18 +28,6 @@ namespace {
 const std::vector<std::string> kStabilityProblems{"asymmetric-top", "tennis-racket"};
 const std::string kRateUnits = "rad/s or 1/s";
 const std::vector<std::string> kRates{"rate_axis1", "rate_axis2", "rate_axis3"};
-
-// The units " or " separates in an asked unit ("rad/s or 1/s"), or the one unit.
-std::vector<std::string> alternatives(const std::string& asked) {
-  std::vector<std::string> out;
-  const std::string sep = " or ";
-  for (std::size_t from = 0;;) {
-    const std::size_t to = asked.find(sep, from);
-    out.push_back(asked.substr(from, to == std::string::npos ? to : to - from));
-    if (to == std::string::npos) return out;
-    from = to + sep.size();
-  }
-}
 }  // namespace
 
 TEST_CASE("the stable and unstable axes' rates are in two units, asked in the same words") {
@@ -96,7 +84,7 @@ TEST_CASE(
       for (const auto& a : part.answers) {
         INFO(p.id << " " << a.name << " asked in '" << asked_unit(a) << "'");
         REQUIRE(registered_unit(asked_unit(a), a.unit));
-        const auto units = alternatives(asked_unit(a));
+        const auto units = unit_alternatives(asked_unit(a));
         if (units.size() < 2 || a.value.shape != Value::Shape::scalar) continue;
         for (const auto& unit : units) {
           const std::string typed = format_number(a.value.data[0]) + " " + unit;
