@@ -1607,6 +1607,11 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
     return v;
   }
   const std::string written = written_answer(ctx, text);
+  // "rate_axis2 =": a prompt's line pasted with its answer left out.
+  if (const std::string line = trim(written); !line.empty() && line.back() == '=') {
+    throw InputError(
+        fmt::format("{}: nothing after the '=' in \"{}\"; the answer goes after it", kField, line));
+  }
   // "118.8 rad/s (about 1134 rpm)": the answer and the same again, each judged.
   if (const auto r = restatement_of(written)) return judge_restated(ctx, a, *r, options);
   // "±9.131 1/s", "(I3ω3 ± √(..))/(2 I1 cos θ)": the roots of a quadratic, two answers.

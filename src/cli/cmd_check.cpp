@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "check/answer_choice.hpp"
 #include "check/judge.hpp"
@@ -33,7 +34,7 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
       "--answer", opt.answer,
       "Your answer: 0.21 kg m^2, 3.1 rad/s, 12 deg, [1, 0, 2], [[..],[..],[..]], m*a^2/6, "
       "m·a²/6 or \\frac{m a^2}{6}");
-  answer->excludes(answer_word);
+  answer->excludes(answer_word)->each([&opt](const std::string&) { opt.answer_by_option = true; });
   auto* answers = app.add_option(
       "--answers", opt.answers,
       "A file with every answer, one per line (NAME = ANSWER; `variant = N` for your values)");
@@ -127,40 +128,55 @@ bool names_part_or_answer(const Problem& problem, const std::string& word) {
   return false;
 }
 
-// The answer's name where one word is a key's line, "rate_axis2 = 1.772 1/s" (as the worksheet
-// prompts and a submission file is written): the left of its first '=', as the key writes it
-// where it names an answer as the key writes or prints it ("I₀"); a name of no answer as typed,
-// to be refused as one ("J0 = .."); "" where there is no '=', or the left is a part's id or not
-// one word.
-std::string named_line(const Key& key, const std::string& word) {
+// Where one word is a line "NAME = ANSWER" (as the worksheet prompts and a submission file
+// is written), what it names and the answer: an answer's name, as the key writes or prints it
+// ("I₀"), with the whole line (the judge drops its own name on the left); a part's id ("b =
+// 1.772 1/s"), with what follows the '=' (the id may be a symbol too: box-corner's part a); a
+// name of no answer as typed, to be refused as one ("J0 = .."). Nothing where there is no '='
+// or the left is not one word.
+std::optional<std::pair<std::string, std::string>> named_line(const Key& key,
+                                                              const std::string& word) {
   const std::size_t eq = word.find('=');
-  if (eq == std::string::npos) return "";
+  if (eq == std::string::npos) return std::nullopt;
   const std::string left = trim(word.substr(0, eq));
   const std::string name = check::name_in_key(key, left);
   for (const auto& part : key.parts) {
-    if (part.id == left) return "";
+    if (part.id == left) return std::pair{left, trim(word.substr(eq + 1))};
     for (const auto& answer : part.answers) {
-      if (answer.name == name) return name;
+      if (answer.name == name) return std::pair{name, word};
     }
   }
-  return left.find_first_of(" \t") == std::string::npos ? left : "";
+  if (left.empty() || left.find_first_of(" \t") != std::string::npos) return std::nullopt;
+  return std::pair{left, word};
 }
 
 // The part and the answer typed. "wobble check P --name N ANSWER": --name lets the part go,
 // so the one word after the problem is the answer unless it names a part or an answer.
-// "wobble check P 'N = ANSWER'": one word, a key's line, names the answer and is judged whole
-// (the judge drops its own name on the left).
+// "wobble check P 'N = ANSWER'": one word, a key's line, names the answer or the part
+// (named_line).
 std::pair<std::string, std::string> part_and_answer(const CheckOptions& opt, const Problem& problem,
                                                     const Key& key) {
   const std::string& typed = opt.answer_after_part.empty() ? opt.answer : opt.answer_after_part;
   if (typed.empty() && opt.name.empty() && !names_part_or_answer(problem, opt.part)) {
-    if (const std::string name = named_line(key, opt.part); !name.empty()) return {name, opt.part};
+    if (auto named = named_line(key, opt.part)) return *named;
   }
   if (opt.name.empty() || opt.part.empty() || !typed.empty() ||
       names_part_or_answer(problem, opt.part)) {
     return {opt.part, typed};
   }
   return {"", opt.part};
+}
+
+// The judge's refusals name --answer; an answer typed in its own place (after the part, or as
+// "NAME = ANSWER") is named by the answer's name instead: "rate_axis2: empty; ..".
+check::Verdict judged_as_typed(const check::Context& ctx, const Answer& answer,
+                               const std::string& typed, const check::Options& o, bool by_option) {
+  try {
+    return check::judge(ctx, answer, typed, o);
+  } catch (const InputError& e) {
+    if (by_option) throw;
+    throw InputError(answer.name + ": " + check::without_option(e.what()));
+  }
 }
 }  // namespace
 
@@ -232,7 +248,7 @@ int run_check(const CheckOptions& opt) {
   // several answers with none named: the one the answer's label names, the only one it is right
   // for, or the only one it reads as a value of (check/answer_choice.hpp).
   const Answer& answer = check::answer_for(ctx, part, opt.name, typed, o, "part", "--name");
-  const check::Verdict v = check::judge(ctx, answer, typed, o);
+  const check::Verdict v = judged_as_typed(ctx, answer, typed, o, opt.answer_by_option);
   const std::size_t width = terminal_columns();
   fmt::print("{}", word_wrapped(v.line, width, "", "  "));
   for (const auto& f : v.feedback) fmt::print("{}", word_wrapped(f, width, "  ", "    "));

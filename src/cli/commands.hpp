@@ -89,6 +89,7 @@ int run_simulate(const SimulateOptions& opt);
 struct CheckOptions {
   std::string problem, part, answer, name;
   std::string answer_after_part;  ///< the answer as a third word, for --answer
+  bool answer_by_option = false;  ///< --answer given (maybe empty): refusals name it
   std::string answers;        ///< a submission file: every answer at once (check/submission.hpp)
   std::string format = "text";  ///< with --answers: text, json or gradescope
   std::vector<std::string> sets;

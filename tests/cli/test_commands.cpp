@@ -365,6 +365,28 @@ TEST_CASE("check: one word that is a key's line, NAME = ANSWER, names its answer
   REQUIRE(unknown.out.empty());
   REQUIRE_THAT(unknown.err, Catch::StartsWith("wobble: part: problem flying-plate has no part or "
                                               "answer 'J0' (answers by part: (a) I0, I;"));
+  // A part's id on the left: the answer after the '=' is judged as if typed after the part,
+  // also where the id is a symbol of the problem (box-corner's side a and part a).
+  const RunResult part_id = run_wobble({"check", "asymmetric-top", "b = 1.772 1/s"});
+  INFO(part_id.err);
+  REQUIRE(part_id.exit_code == 0);
+  REQUIRE(part_id.out == run_wobble({"check", "asymmetric-top", "b", "1.772 1/s"}).out);
+  REQUIRE(part_id.out == "correct: rate_axis2\n");
+  const RunResult symbol_id = run_wobble({"check", "box-corner",
+                                          "a = [[M(b^2+c^2)/3, -M a b/4, -M a c/4], [-M a b/4, "
+                                          "M(a^2+c^2)/3, -M b c/4], [-M a c/4, -M b c/4, "
+                                          "M(a^2+b^2)/3]]"});
+  INFO(symbol_id.err);
+  REQUIRE(symbol_id.exit_code == 0);
+  REQUIRE_THAT(symbol_id.out, Catch::StartsWith("correct: I_corner"));
+  // The prompt's line with the answer left out: refused as that, named by the answer's name
+  // (no --answer was typed).
+  const RunResult left_out = run_wobble({"check", "asymmetric-top", "rate_axis2 ="});
+  REQUIRE(left_out.exit_code == 2);
+  REQUIRE(left_out.out.empty());
+  REQUIRE(left_out.err ==
+          "wobble: rate_axis2: nothing after the '=' in \"rate_axis2 =\"; the "
+          "answer goes after it\n");
   // The line split by the shell: quoted whole, and what is suggested is judged.
   const RunResult split =
       run_wobble({"check", "asymmetric-top", "rate_axis2", "=", "1.772", "1/s"});
