@@ -369,11 +369,32 @@ bool name_refused(const std::string& message) {
   return !name.empty() && !is_unit(name);
 }
 
+// Where norm(..) is refused ("norm(x~y)", "norm(omega)", a name mistyped in it): it is read
+// only around a vector answer's name, as NumPy writes a vector's size; which names those are
+// here, and abs(..) for a number's size.
+std::string norm_hint(const Context& ctx, const Answer& a, const std::string& message) {
+  if (quoted_after(message, "unknown function") != "norm") return "";
+  std::vector<std::string> vectors;
+  for (const auto& part : ctx.key.parts) {
+    for (const auto& b : part.answers) {
+      const Answer* r = referable_answer(ctx, a, b.name);
+      if (r != nullptr && r->value.shape == Value::Shape::vector)
+        vectors.push_back("norm(" + b.name + ")");
+    }
+  }
+  const std::string around = vectors.empty() ? "no earlier answer here is a vector"
+                                             : fmt::format("here {}", fmt::join(vectors, ", "));
+  return fmt::format(
+      " (norm(..) reads only around a vector answer's name: {}; a number's size is abs(..))",
+      around);
+}
+
 // first_name_hint, else where the reader refused a name, the names the key reads besides the
 // problem's symbols.
 std::string answer_name_hint(const Context& ctx, const Answer& a, const std::string& typed,
                              const std::string& message) {
   if (std::string hint = first_name_hint(ctx, a, typed, message); !hint.empty()) return hint;
+  if (std::string hint = norm_hint(ctx, a, message); !hint.empty()) return hint;
   return name_refused(message) ? names_read_too(ctx, a) : "";
 }
 

@@ -935,6 +935,40 @@ TEST_CASE("an earlier answer's name in an answer is its closed form, said; other
           !Catch::Contains("unit"));
 }
 
+TEST_CASE("a refused norm(..) names the norms that read here, over the catalog") {
+  // norm(..) reads only around an earlier vector answer's name; where it is refused (a typo, a
+  // number's name), the line lists those it reads around, and each listed one reads.
+  constexpr std::string_view kSaid = "(norm(..) reads only around a vector answer's name: ";
+  std::size_t listed = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.value.shape != Value::Shape::scalar || a.symbolic.empty()) continue;
+        INFO(p.id << " " << a.name);
+        std::string message;
+        try {
+          (void)f.check(a.name, "1/norm(x~y)");
+        } catch (const InputError& e) {
+          message = e.what();
+        }
+        const std::size_t at = message.find(kSaid);
+        REQUIRE(at != std::string::npos);
+        REQUIRE_THAT(message, Catch::EndsWith("; a number's size is abs(..))"));
+        // "here norm(L0_body), norm(Omega_space)", or that there is none.
+        for (std::size_t open = message.find("norm(", at + kSaid.size()); open != std::string::npos;
+             open = message.find("norm(", open + 1)) {
+          const std::string call = message.substr(open, message.find(')', open) + 1 - open);
+          INFO(call);
+          REQUIRE_NOTHROW(f.check(a.name, "1/" + call));
+          ++listed;
+        }
+      }
+    }
+  }
+  REQUIRE(listed > 0);
+}
+
 TEST_CASE("a magnitude in bars reads, of an expression or of an earlier vector answer") {
   // |x| as a student writes it, with a bar after an operand closing the one open.
   const Fixture plate("flying-plate");
