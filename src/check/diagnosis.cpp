@@ -9,6 +9,7 @@
 #include <optional>
 #include <utility>
 
+#include "check/judge.hpp"
 #include "symbolic/expression.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/value_text.hpp"
@@ -39,6 +40,10 @@ std::string entry_name(const Answer& a, std::size_t i) {
 
 namespace {
 using Wrong = std::vector<WrongAnswer>;
+
+// A value this small beside its unit's largest in the key (zero_scale, judge.hpp) is a zero left
+// by rounding, as an identity's residual is (printed 0).
+constexpr double kRoundingZero = 1e-9;
 
 std::vector<double> times(const std::vector<double>& v, double factor) {
   std::vector<double> out = v;
@@ -115,6 +120,24 @@ Wrong hertz_as_radians(const Answer& a, const Key&, const Unit& key_unit) {
   return {{"", times(a.value.data, 2 * M_PI),
            "this is 2π times the answer: Hz, rev/s and rpm count turns, so 1 Hz = 2π rad/s "
            "(the number in rad/s labelled Hz?)"}};
+}
+
+// A period given for a rate, or a rate for a time (1/x, 2π/x): the other quantity's number,
+// typed in the key's unit as a quiz takes a number. The line is the one the judge says of such
+// a number (reciprocal_mistake), so that an export's feedback is the judge's. Only where the
+// key's unit is SI, as there alone a bare number is the SI reciprocal's.
+Wrong reciprocal_given(const Answer& a, const Key& key, const Unit& key_unit) {
+  Wrong out;
+  if (a.value.data.size() != 1 || key_unit.to_si != 1.0) return out;
+  // The wrong number is the key's turned exactly: only rounding between them.
+  constexpr double kRounding = 1e-12;
+  const auto same = [](double x, double k) { return std::abs(x - k) <= kRounding * std::abs(k); };
+  for (const double factor : {1.0, 2 * M_PI}) {
+    const double typed = factor / a.value.data[0];
+    if (auto message = reciprocal_mistake(a, typed, nullptr, key_unit, zero_scale(key, a), same))
+      out.push_back({"", {typed}, std::move(*message)});
+  }
+  return out;
 }
 
 // The same vector in another frame: L0_body answered for L0_space and the like.
@@ -263,6 +286,7 @@ const std::vector<Mistake>& known_mistakes() {
       {"turns per second for rad/s", turns_per_second},
       {"revolutions per minute for rad/s", revolutions_per_minute},
       {"Hz taken as rad/s", hertz_as_radians},
+      {"a period for a rate, a rate for a time", reciprocal_given},
       {"the components in another frame", other_frame},
       {"another answer of the key", other_answer},
       {"a rotation's turns reversed", turns_reversed},
@@ -386,6 +410,8 @@ std::vector<std::string> diagnose(const Finding& f) {
   const auto& k = f.expected;
   std::vector<std::string> out;
   if (v.size() == 1) {
+    // A zero (an identity's residual) has no size to be off by a percentage of.
+    if (!(std::abs(k[0]) > kRoundingZero * f.zero_scale)) return {"the answer is zero"};
     if (const auto ratio = far_off_ratio(v[0], k[0])) {
       out.push_back(fmt::format("{:.3g} times the answer", *ratio));
     } else {
@@ -414,8 +440,12 @@ std::vector<std::string> diagnose(const Finding& f) {
 }
 
 std::optional<std::string> reciprocal_mistake(
-    const Answer& answer, double typed, const Unit* unit, const Unit& key_unit,
+    const Answer& answer, double typed, const Unit* unit, const Unit& key_unit, double zero_scale,
     const std::function<bool(double typed, double expected)>& close) {
+  // A zero left by rounding: its reciprocal is no quantity anyone computes.
+  if (answer.value.data.size() != 1 ||
+      !(std::abs(answer.value.data[0]) > kRoundingZero * zero_scale))
+    return std::nullopt;
   constexpr std::array<int, 3> kTime{0, 0, 1};
   constexpr std::array<int, 3> kRate{0, 0, -1};
   // A number without its unit is in the key's unit; only where that is SI is it the SI

@@ -77,9 +77,10 @@ std::vector<std::string> diagnose(const Finding& finding);
 /// `key_unit`, with 1/x or 2π/x (a time constant or a period, the angle a pure number) `close`
 /// to the key's value: "2π/(0.688 s) = 9.13 rad/s is the answer: the period given for the
 /// rate?", "1/0.4593 = 2.177 s ..". A unit counting turns (Hz, rpm, rev/s) has its 2π in it, and
-/// the period is written 1/f. nullopt otherwise (other dimensions too).
+/// the period is written 1/f. nullopt otherwise (other dimensions too), and where the key's
+/// value is a zero left by rounding beside `zero_scale` (judge.hpp), an identity's residual.
 std::optional<std::string> reciprocal_mistake(
-    const Answer& answer, double typed, const Unit* unit, const Unit& key_unit,
+    const Answer& answer, double typed, const Unit* unit, const Unit& key_unit, double zero_scale,
     const std::function<bool(double typed, double expected)>& close);
 
 }  // namespace wobble::check

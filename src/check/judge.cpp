@@ -949,7 +949,7 @@ Verdict wrong_unit(const Context& ctx, const Answer& a, const ReadAnswer& p, con
                                         : "in " + sym::to_unicode(asked_unit(a)) + " " + numbers +
                                               " would be right");
   } else if (typed.size() == 1) {
-    if (auto reciprocal = reciprocal_mistake(a, typed[0], &*p.unit, key_unit,
+    if (auto reciprocal = reciprocal_mistake(a, typed[0], &*p.unit, key_unit, j.scale,
                                              [&](double x, double k) { return j.close(x, k); }))
       v.feedback.push_back(*reciprocal);
   }
@@ -1008,7 +1008,7 @@ Verdict judge_read(const Context& ctx, const Answer& a, const std::string& text,
     return {false, "incorrect: " + a.name, {*degrees}};
   // "0.4593" for a period of 2.177 s: a frequency, its unit left off.
   if (!p.unit && got.size() == 1) {
-    if (auto reciprocal = reciprocal_mistake(a, got[0], nullptr, key_unit,
+    if (auto reciprocal = reciprocal_mistake(a, got[0], nullptr, key_unit, j.scale,
                                              [&](double x, double k) { return j.close(x, k); }))
       return {false, "incorrect: " + a.name, {*reciprocal}};
   }

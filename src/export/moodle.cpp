@@ -10,6 +10,7 @@
 #include "check/judge.hpp"
 #include "core/input_error.hpp"
 #include "export/html_text.hpp"
+#include "export/message_numbers.hpp"
 
 namespace wobble::exports {
 
@@ -158,6 +159,77 @@ std::string hint_xml(const Question& q) {
              : text_element("hint", no_wildcards(inline_html(hint, "\\(", "\\)")), true) + "\n";
 }
 
+// A mistake as one 0% answer: its wrong value per variant, and its message with each number
+// that differs between variants as a wildcard of its own, which Moodle substitutes in an
+// answer's feedback as in the text (one answer for "16.2% below" in one variant and "41.2%
+// below" in another, not one per variant).
+struct MistakeAnswer {
+  Dataset values;                ///< "m1": the wrong value in each variant
+  std::vector<Dataset> numbers;  ///< "m1_1", ..: the message's numbers that differ
+  std::string feedback;          ///< the message, with {m1_1}, .. in those numbers' places
+};
+
+// The mistakes of the question's entry in wobble's order, the k-th of one message but for its
+// numbers in each variant together (a factor 2 off and a factor 4 off are one message so: the
+// first and the second of it). Where a variant does not have one (equal to the key there, or
+// named as an earlier mistake), its value is the right one, which the right answer, tried
+// first, takes, and its numbers the first variant's that has it (never shown).
+std::vector<MistakeAnswer> mistake_answers(const Question& q, const Dataset& right) {
+  struct Seen {
+    MessageNumbers words;
+    std::size_t ordinal;  // the k-th of its words in a variant
+    std::vector<double> values;
+    std::vector<std::vector<std::string>> numbers;  // per variant; empty where it has none
+    std::vector<bool> has;
+  };
+  const auto& variants = q.set.variants;
+  std::vector<Seen> seen;
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    std::vector<std::vector<std::string>> before;  // this variant's messages' words so far
+    for (const auto& m : variants[i].answers[q.answer].mistakes) {
+      MessageNumbers words = message_numbers(m.message);
+      const auto ordinal =
+          static_cast<std::size_t>(std::count(before.begin(), before.end(), words.words));
+      before.push_back(words.words);
+      auto it = std::find_if(seen.begin(), seen.end(), [&](const Seen& s) {
+        return s.words.words == words.words && s.ordinal == ordinal;
+      });
+      if (it == seen.end()) {
+        seen.push_back({words, ordinal, right.items,
+                        std::vector<std::vector<std::string>>(variants.size()),
+                        std::vector<bool>(variants.size(), false)});
+        it = seen.end() - 1;
+      }
+      it->values[i] = m.values[q.entry];
+      it->numbers[i] = words.numbers;
+      it->has[i] = true;
+    }
+  }
+  std::vector<MistakeAnswer> out;
+  for (const Seen& s : seen) {
+    MistakeAnswer a{{fmt::format("m{}", out.size() + 1), s.values, {}}, {}, {}};
+    const std::size_t first =
+        static_cast<std::size_t>(std::find(s.has.begin(), s.has.end(), true) - s.has.begin());
+    std::vector<std::string> in_place = s.numbers[first];
+    for (std::size_t k = 0; k < in_place.size(); ++k) {
+      Dataset d{fmt::format("{}_{}", a.values.name, k + 1), {}, {}};
+      bool differs = false;
+      for (std::size_t i = 0; i < variants.size(); ++i) {
+        const std::string& n = s.has[i] ? s.numbers[i][k] : s.numbers[first][k];
+        differs = differs || n != s.numbers[first][k];
+        d.shown.push_back(n);
+        d.items.push_back(std::stod(n));
+      }
+      if (!differs) continue;
+      in_place[k] = "{" + d.name + "}";
+      a.numbers.push_back(std::move(d));
+    }
+    a.feedback = with_numbers(s.words, in_place);
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
 std::string question_xml(const Question& q) {
   const auto& variants = q.set.variants;
   const GradedAnswer& g0 = variants.front().answers[q.answer];
@@ -183,22 +255,7 @@ std::string question_xml(const Question& q) {
     datasets.push_back(d);
   }
   datasets.push_back(right);
-  // The mistakes, one answer each, in wobble's order: where a variant does not have one (equal
-  // to the key there, or named as an earlier mistake), its item is the right value, which the
-  // right answer, tried first, takes.
-  std::vector<std::pair<std::string, Dataset>> mistakes;  // message, values
-  for (std::size_t i = 0; i < variants.size(); ++i) {
-    for (const auto& m : variants[i].answers[q.answer].mistakes) {
-      auto it = std::find_if(mistakes.begin(), mistakes.end(),
-                             [&](const auto& s) { return s.first == m.message; });
-      if (it == mistakes.end()) {
-        mistakes.push_back(
-            {m.message, {fmt::format("m{}", mistakes.size() + 1), right.items, {}}});
-        it = mistakes.end() - 1;
-      }
-      it->second.items[i] = m.values[q.entry];
-    }
-  }
+  const std::vector<MistakeAnswer> mistakes = mistake_answers(q, right);
   // wobble judges a zero against the largest value of its unit: Moodle's relative tolerance
   // cannot, so a question with a zero in some variant takes the nominal tolerance of its
   // smallest scale.
@@ -212,12 +269,14 @@ std::string question_xml(const Question& q) {
       answers += answer_xml(100, turn, tolerance, type,
                             "correct (a whole turn from the key's: the same angle)");
   }
-  for (const auto& [message, d] : mistakes) {
+  for (const auto& m : mistakes) {
     // A mistake that leaves this entry right in every variant (the reversed sign of a zero
     // entry) is no answer of its own here.
-    if (d.items == right.items) continue;
-    answers += answer_xml(0, "{" + d.name + "}", tolerance, type, "incorrect: " + message);
-    datasets.push_back(d);
+    if (m.values.items == right.items) continue;
+    answers +=
+        answer_xml(0, "{" + m.values.name + "}", tolerance, type, "incorrect: " + m.feedback);
+    datasets.push_back(m.values);
+    datasets.insert(datasets.end(), m.numbers.begin(), m.numbers.end());
   }
   std::string defs;
   for (const auto& d : datasets) defs += dataset_xml(d);

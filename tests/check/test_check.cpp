@@ -982,7 +982,13 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
              Catch::Equals("this is the approximation A, 20% below the exact value here: the rate "
                            "is B"));
   CHECK_THAT(first(slow, {4.5}, "rad/s"), Catch::Equals("off by 10% of the answer"));
-  REQUIRE(wobble::check::known_mistakes().size() == 12);
+  // The other quantity's number in the key's unit, as a quiz takes it: 1/x or 2π/x is right.
+  CHECK_THAT(first(space_rate, {1.0 / 3}, "rad/s"),
+             Catch::Equals("1/0.3333 = 3 rad/s is the answer: a time given for the rate (its "
+                           "reciprocal)?"));
+  CHECK_THAT(first(space_rate, {2 * M_PI / 3}, "rad/s"),
+             Catch::Equals("2π/2.094 = 3 rad/s is the answer: the period given for the rate?"));
+  REQUIRE(wobble::check::known_mistakes().size() == 13);
 }
 
 TEST_CASE("the heavy top's fast-top approximations are named where given for the exact rates") {
@@ -1157,4 +1163,20 @@ TEST_CASE("a submission's matrix over several lines, as NumPy prints one, is one
   REQUIRE(open.problems.empty());
   REQUIRE_THAT(open.answers.at(0).verdict.line, Catch::StartsWith("unreadable: I_corner"));
   REQUIRE(open.answers.at(1).verdict.correct);
+}
+
+TEST_CASE("a zero left by rounding has no reciprocal and no percentage to be off by") {
+  // The flying plate's identity residual is 0 rad/s in the key, a few eps in some variants.
+  const Fixture plate("flying-plate");
+  const auto wrong = plate.check("identity_residual", "0.5");
+  REQUIRE_FALSE(wrong.correct);
+  CHECK(wrong.feedback == std::vector<std::string>{"the answer is zero"});
+  Answer residual = plate.answer("identity_residual");
+  residual.value = Value::scalar(3.552713678800501e-15);  // a variant's value
+  const Unit rad_s = parse_unit("rad/s", "test");
+  CHECK_FALSE(wobble::check::reciprocal_mistake(
+      residual, 1 / residual.value.data[0], nullptr, rad_s,
+      wobble::check::zero_scale(plate.key, residual), [](double, double) { return true; }));
+  for (const auto& w : wobble::check::wrong_answers(residual, plate.key, rad_s))
+    CHECK_THAT(w.message, !Catch::Contains("reciprocal") && !Catch::Contains("period"));
 }

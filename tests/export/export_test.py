@@ -9,7 +9,10 @@
   XML import reads (question/format/xml/format.php, import_calculated); every dataset's item
   count matches its items; every answer's formula names a dataset.
 - Round trip: for every exported variant, the values in both exports equal
-  `wobble solve ID --variant N --format json`, bit for bit.
+  `wobble solve ID --variant N --format json`, bit for bit. Each Moodle mistake's feedback, its
+  wildcards put in as Moodle puts them in, is in every variant that has the mistake what
+  `wobble check` says of that value (checked in the first and the last such variant; every
+  variant's wildcards have a value).
 """
 import json
 import os
@@ -53,6 +56,8 @@ def flat(value):
 KEYS = {}
 ENTRIES = {}  # answer name -> the key's names of its entries
 ANGLES = set()  # names of the answers that are Euler angles (a vector in rad): up to whole turns
+UNITS = {}  # answer name -> the key's unit
+FEEDBACK_JUDGED = [0]  # mistakes' feedbacks compared with wobble check's
 
 
 def key_values(wobble, problem, number):
@@ -63,6 +68,7 @@ def key_values(wobble, problem, number):
         ENTRIES.update({a["name"]: a.get("entries", []) for p in key["parts"] for a in p["answers"]})
         ANGLES.update(a["name"] for p in key["parts"] for a in p["answers"]
                       if a["kind"] == "vector" and a.get("unit") == "rad")
+        UNITS.update({a["name"]: a.get("unit", "") for p in key["parts"] for a in p["answers"]})
     return KEYS[number]
 
 
@@ -180,6 +186,7 @@ def check_moodle(wobble, problem, quiz_file):
                     "unitpenalty", "showunits", "unitsleft"):
             text(q, tag)
         datasets = {}
+        raw = {}  # the items as written, as Moodle shows them in a feedback
         for d in q.findall("dataset_definitions/dataset_definition"):
             for tag in ("status/text", "name/text", "type", "distribution/text", "minimum/text",
                         "maximum/text", "decimals/text", "itemcount", "number_of_items"):
@@ -189,6 +196,7 @@ def check_moodle(wobble, problem, quiz_file):
             if numbers != list(range(1, len(items) + 1)) or int(text(d, "itemcount")) != len(items):
                 fail("moodle: %s: dataset %s items %s" % (name, text(d, "name/text"), numbers))
             datasets[text(d, "name/text")] = [float(text(i, "value")) for i in items]
+            raw[text(d, "name/text")] = [text(i, "value") for i in items]
         # Moodle substitutes every {name} it has a dataset for: the text's only braces are
         # wobble's wildcards, the problem's own (LaTeX's) are entities.
         for word in re.findall(r"\{([^{}]*)\}", text(q, "questiontext/text") + "".join(
@@ -196,6 +204,7 @@ def check_moodle(wobble, problem, quiz_file):
             if word not in datasets:
                 fail("moodle: %s: {%s} in the text is no wildcard" % (name, word))
         answers = q.findall("answer")
+        mistakes = []
         turns = 0
         if not answers or answers[0].get("fraction") != "100":
             fail("moodle: %s: the right answer is not first" % name)
@@ -213,6 +222,8 @@ def check_moodle(wobble, problem, quiz_file):
             wildcard = formula.strip("{}")
             if wildcard not in datasets:
                 fail("moodle: %s: answer {%s} has no dataset" % (name, wildcard))
+            elif a.get("fraction") == "0":
+                mistakes.append(a)
         # Round trip: "NAME" or "NAME, entry ..." against solve's values of that variant.
         parts = re.match(r"^\S+ \((\w+)\) (\w+)(.*)$", name)
         answer = parts.group(2)
@@ -221,12 +232,55 @@ def check_moodle(wobble, problem, quiz_file):
         if (answer in ANGLES) != (turns == 2):
             fail("moodle: %s: %d answers a whole turn on, for %s" % (
                 name, turns, "an Euler angle" if answer in ANGLES else "no angle"))
+        for a in mistakes:
+            check_mistake_feedback(wobble, problem, name, answer, not parts.group(3), a, raw,
+                                   datasets)
         for number, value in zip(datasets["variant"], datasets["ans"]):
             want = key_values(wobble, problem, int(number))[answer][entry]
             if value != want:
                 fail("moodle: %s variant %d: %r, solve gives %r" % (name, number, value, want))
             checked += 1
     return len(questions) - 1, checked
+
+
+def judged(wobble, problem, number, answer, typed):
+    """What `wobble check` says of `typed` for `answer` in variant `number`: its feedback."""
+    with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as f:
+        f.write("variant = %d\n%s = %s\n" % (number, answer, typed))
+    try:
+        out = subprocess.run([wobble, "check", problem, "--answers", f.name, "--format", "json"],
+                             capture_output=True, text=True)
+    finally:
+        os.unlink(f.name)
+    for a in json.loads(out.stdout)["answers"]:
+        if a["name"] == answer:
+            return a["verdict"], a["feedback"]
+    return None, []
+
+
+def check_mistake_feedback(wobble, problem, name, answer, whole, a, raw, datasets):
+    """A mistake's feedback with Moodle's wildcards put in, in each variant that has the mistake
+    (its value is not the right one there); for a one-number answer, in the first and the last
+    such variant, the line `wobble check` says of that value."""
+    feedback = text(a, "feedback/text")
+    values = raw[text(a, "text").strip("{}")]
+    having = [i for i in range(len(values)) if float(values[i]) != datasets["ans"][i]]
+    for i in having:
+        number = datasets["variant"][i]
+        said = re.sub(r"\{(\w+)\}", lambda m: raw.get(m.group(1), [m.group(0)] * (i + 1))[i],
+                      feedback)
+        if "{" in said:
+            fail("moodle: %s variant %d: feedback %r has a wildcard without a dataset" % (
+                name, number, said))
+        # The first and the last that have it: a feedback of one variant's numbers fails one.
+        if not whole or i not in (having[0], having[-1]):
+            continue
+        FEEDBACK_JUDGED[0] += 1
+        typed = values[i] + (" " + UNITS[answer] if UNITS.get(answer) else "")
+        verdict, lines = judged(wobble, problem, int(number), answer, typed)
+        if verdict != "incorrect: " + answer or not lines or "incorrect: " + lines[0] != said:
+            fail("moodle: %s variant %d: %r says %r; wobble check says %r %r" % (
+                name, number, typed, said, verdict, lines[:1]))
 
 
 def entry_index(words, names):
@@ -261,8 +315,9 @@ def main():
         quiz = os.path.join(tmp, "quiz.xml")
         run([wobble, "export", "moodle", problem, "--variants", VARIANTS, "--out", quiz])
         questions, items = check_moodle(wobble, problem, quiz)
-    print("%s: PrairieLearn %d variants, Moodle %d questions (%d dataset items against solve)" % (
-        problem, variants, questions, items))
+    print("%s: PrairieLearn %d variants, Moodle %d questions (%d dataset items against solve, "
+          "%d mistakes' feedback against check)" % (
+              problem, variants, questions, items, FEEDBACK_JUDGED[0]))
     if failures:
         print("\n".join(failures[:30]))
         sys.exit(1)
