@@ -478,7 +478,8 @@ std::optional<std::string> reciprocal_mistake(
                                                   "reciprocal)");
     const std::string given = unit != nullptr
                                   ? fmt::format("({:.4g} {})", typed, sym::to_unicode(unit->text))
-                                  : fmt::format("{:.4g}", typed);
+                              : typed < 0 ? fmt::format("({:.4g})", typed)  // "2π/(-2.519)"
+                                          : fmt::format("{:.4g}", typed);
     return fmt::format("{}/{} = {:.4g} {} is the answer: {}?", over, given, in_key,
                        sym::to_unicode(answer.unit), what);
   }

@@ -77,8 +77,9 @@ void print_report(const Problem& p, const exports::VariantSet& set, long first) 
     if (it == kinds.end()) it = kinds.insert(kinds.end(), {r.kind, {}});
     it->second.push_back(r.number);
   }
-  for (const auto& u : set.unlisted) {
-    fmt::print("  not listed in any variant: {} (in every variant drawn)\n", u);
+  for (const auto& u : set.untold) {
+    fmt::print("  no variant refused for: {} (in {} of the first {} variants drawn)\n", u.kind,
+               u.within, u.drawn);
   }
   for (const auto& [kind, numbers] : kinds) {
     fmt::print("  {}: {} (variant{} {})\n", numbers.size(), kind, numbers.size() == 1 ? "" : "s",

@@ -211,9 +211,12 @@ TEST_CASE("a time given for a rate, or a rate for a time, is told what its recip
             const check::Verdict bare = f.check(a.name, fmt::format("{:.8g}", number));
             INFO(p.id << " " << a.name << ": " << number << " without a unit");
             REQUIRE(bare.feedback.size() == 1);
-            CHECK_THAT(bare.feedback[0], Catch::StartsWith((r == 0 ? "1/" : "2π/") +
-                                                           fmt::format("{:.4g} = ", number)) &&
-                                             Catch::EndsWith(said[r]));
+            // A negative number in brackets: "2π/(-1.301) = -4.83 rad/s".
+            const std::string shown =
+                number < 0 ? fmt::format("({:.4g})", number) : fmt::format("{:.4g}", number);
+            CHECK_THAT(bare.feedback[0],
+                       Catch::StartsWith((r == 0 ? "1/" : "2π/") + shown + " = ") &&
+                           Catch::EndsWith(said[r]));
           }
         }
         if (dim == kTime) {
