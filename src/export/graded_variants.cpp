@@ -12,6 +12,7 @@
 #include "check/axes_judge.hpp"
 #include "core/inertia.hpp"
 #include "core/input_error.hpp"
+#include "export/message_numbers.hpp"
 #include "problem/values.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/units.hpp"
@@ -54,6 +55,13 @@ double relative_distance(const std::vector<double>& wrong, const Answer& a, doub
     d = std::max(d, std::abs(wrong[i] - k) / (k != 0.0 ? std::abs(k) : zero));
   }
   return d;
+}
+
+// A mistake's line with its numbers as "…", the same in every variant: "this is the fast-top
+// approximation M g l / (I3 ω3), …% below the exact value here", "1/… = … rad/s is the answer".
+std::string numbers_elided(const std::string& line) {
+  const MessageNumbers split = message_numbers(line);
+  return with_numbers(split, std::vector<std::string>(split.numbers.size(), "…"));
 }
 
 std::string tolerance_words(const check::Options& o) {
@@ -136,15 +144,17 @@ std::pair<std::vector<GradedAnswer>, std::vector<Rejection>> grade_rules(
         if (same_as_key(wrong.values, a, g.zero_scale)) continue;
         const check::Verdict v = check::judge(ctx, a, answer_text(a, wrong.values), options);
         if (v.correct) {
-          const std::string what =
-              fmt::format("{} (part {}): {} (\"{}\")", a.name, part.id, wrong.mistake,
-                          wrong.message.substr(0, wrong.message.find_first_of(":;")));
+          const std::string clause = wrong.message.substr(0, wrong.message.find_first_of(":;"));
+          const auto what = [&](const std::string& said) {
+            return fmt::format("{} (part {}): {} (\"{}\")", a.name, part.id, wrong.mistake, said);
+          };
           refusals.push_back(
               {0,
                fmt::format("{} gives a value {:.2g}% from the answer, which the judge accepts ({})",
-                           what, 100 * relative_distance(wrong.values, a, g.zero_scale),
+                           what(clause), 100 * relative_distance(wrong.values, a, g.zero_scale),
                            tolerance_words(opt)),
-               fmt::format("{} lies within the {}", what, tolerance_words(opt))});
+               fmt::format("{} lies within the {}", what(numbers_elided(clause)),
+                           tolerance_words(opt))});
           continue;
         }
         // Named as an earlier mistake: that one covers it.
