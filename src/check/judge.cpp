@@ -1185,8 +1185,14 @@ Verdict judge_one(const Context& ctx, const Answer& a, const std::string& text,
 // How a number worked out with its units was read, for its line: "2π rad / (303.6 days) =
 // 2.395e-07 rad/s".
 std::string worked_out_line(const UnitsWorkedOut& worked) {
-  return fmt::format("{} = {:.4g}{}{}", sym::to_unicode(worked.grouped), worked.value_si,
-                     worked.unit.empty() ? "" : " ", sym::to_unicode(worked.unit));
+  std::string line =
+      fmt::format("{} = {:.4g}{}{}", sym::to_unicode(worked.grouped), worked.value_si,
+                  worked.unit.empty() ? "" : " ", sym::to_unicode(worked.unit));
+  // "(m after a number as the unit m, not the problem's symbol m)".
+  for (const std::string& name : worked.symbols_as_units)
+    line +=
+        fmt::format(" ({0} after a number as the unit {0}, not the problem's symbol {0})", name);
+  return line;
 }
 
 // A number, or a vector's entries, worked out with its units (unit_arithmetic.hpp) judged as

@@ -19,6 +19,7 @@
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/expression_guard.hpp"
+#include "symbolic/glued_numbers.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 
@@ -114,15 +115,24 @@ std::string denominators_grouped(const std::string& s, bool after_numbers) {
   return out;
 }
 
+// Whether the name at ascii[at] follows a number: "0.12 m", "0.12m".
+bool after_number(const std::string& ascii, std::size_t at) {
+  const std::size_t before = ascii.find_last_not_of(' ', at == 0 ? 0 : at - 1);
+  return at > 0 && before != std::string::npos &&
+         (std::isdigit(static_cast<unsigned char>(ascii[before])) || ascii[before] == '.');
+}
+
 // The text with each unit's name written as its stand-in, and the units in order; nullopt where
-// a name is a symbol of the problem or no unit, or there is no unit. π and functions stay.
+// a name is a symbol of the problem (but one of `as_units` after a number) or no unit, or there
+// is no unit. π and functions stay.
 struct StandIns {
   std::string text;
   std::vector<Unit> units;
   std::vector<std::string> typed;
 };
 std::optional<StandIns> units_stood_in(const std::string& ascii, const sym::SymbolTable& table,
-                                       const std::string& field) {
+                                       const std::string& field,
+                                       const std::vector<std::string>& as_units = {}) {
   StandIns out;
   std::size_t from = 0;
   const auto ids = identifiers(ascii);
@@ -131,7 +141,9 @@ std::optional<StandIns> units_stood_in(const std::string& ascii, const sym::Symb
     std::size_t end = at + length;
     std::string word = ascii.substr(at, length);
     if (word == "pi" || sym::is_function_name(word)) continue;
-    if (table.contains(word) || word.starts_with(kStandIn)) return std::nullopt;
+    const bool as_unit = std::find(as_units.begin(), as_units.end(), word) != as_units.end() &&
+                         after_number(ascii, at);
+    if ((table.contains(word) && !as_unit) || word.starts_with(kStandIn)) return std::nullopt;
     // "sidereal days": one unit of two words.
     if (word == "sidereal" && k + 1 < ids.size()) {
       const auto [next, next_length] = ids[k + 1];
@@ -433,18 +445,52 @@ std::string latex_units_as_text(const std::string& typed, const sym::SymbolTable
 
 namespace {
 
+// "0.5kg*(5cm)^2": each unit's name glued after a number set apart from it, "0.5 kg*(5 cm)^2",
+// as identifiers() takes a number whole with what is glued to it. Not a problem's symbol (where
+// m is a mass, "2m" is the reader's to decide) unless `symbols_too`; not an exponent ("2e5").
+std::string units_apart(const std::string& ascii, const sym::SymbolTable& table, bool symbols_too) {
+  const auto digit = [&](std::size_t i) {
+    return i < ascii.size() && std::isdigit(static_cast<unsigned char>(ascii[i]));
+  };
+  std::string out;
+  for (std::size_t i = 0; i < ascii.size();) {
+    const bool in_name = i > 0 && (std::isalnum(static_cast<unsigned char>(ascii[i - 1])) ||
+                                   ascii[i - 1] == '_' || ascii[i - 1] == '.');
+    if (in_name || !(digit(i) || (ascii[i] == '.' && digit(i + 1)))) {
+      out += ascii[i++];
+      continue;
+    }
+    std::size_t end = i;
+    while (digit(end) || (end < ascii.size() && ascii[end] == '.')) ++end;
+    if (end < ascii.size() && sym::starts_exponent(ascii, end)) {
+      end += (ascii[end + 1] == '+' || ascii[end + 1] == '-') ? 2 : 1;
+      while (digit(end)) ++end;
+    }
+    out += ascii.substr(i, end - i);
+    if (end < ascii.size() && std::isalpha(static_cast<unsigned char>(ascii[end]))) {
+      const std::string name = sym::name_at(ascii, end);
+      if (is_unit(name) && (symbols_too || !table.contains(name))) out += ' ';
+    }
+    i = end;
+  }
+  return out;
+}
+
 // The answer as the reader reads it for its units ("sin 30°", "cos(1 deg)" with degrees in
-// radians first, d after a number as the day where d is no symbol); LaTeX set as text
-// (latex_units_as_text). @throws InputError where the reader refuses it so.
+// radians first, d after a number as the day where d is no symbol, a unit glued to a number set
+// apart: units_apart); LaTeX set as text (latex_units_as_text). @throws InputError where the
+// reader refuses it so.
 std::string units_read_text(const std::string& typed, const sym::SymbolTable& table,
-                            const std::string& field) {
+                            const std::string& field, bool symbols_too = false) {
   const std::string text =
       looks_like_latex(typed) ? latex_units_as_text(typed, table, field) : typed;
   const auto in_expression = [&](const std::string& name) {
     return (table.contains(name) || sym::is_function_name(name)) && !table.contains("deg");
   };
-  return days_written_d(degrees_in_expression(prepared(text, field), in_expression),
-                        [&](const std::string& name) { return table.contains(name); });
+  const auto is_symbol = [&](const std::string& name) { return table.contains(name); };
+  return units_apart(
+      days_written_d(degrees_in_expression(prepared(text, field), in_expression), is_symbol), table,
+      symbols_too);
 }
 
 // Whether a worked-out unit ("" for a pure number) is of the key's dimension.
@@ -455,14 +501,36 @@ bool same_dimension(const std::string& unit, const std::string& key_unit) {
 // `typed` as units_read_text reads it, with its units stood in (units_stood_in); nullopt where
 // the reader refuses it so, or it is not so.
 std::optional<StandIns> typed_stood_in(const std::string& typed, const sym::SymbolTable& table,
-                                       const std::string& field) {
+                                       const std::string& field,
+                                       const std::vector<std::string>& as_units = {}) {
   std::string ascii;
   try {
-    ascii = units_read_text(typed, table, field);
+    ascii = units_read_text(typed, table, field, !as_units.empty());
   } catch (const InputError&) {
     return std::nullopt;
   }
-  return units_stood_in(ascii, table, field);
+  return units_stood_in(ascii, table, field, as_units);
+}
+
+// The problem's symbols that are also units' names and follow a number in `typed`: the flying
+// plate's m (its mass) in "(0.2 kg)(0.12 m)²/4", written as the metre.
+std::vector<std::string> symbols_after_numbers(const std::string& typed,
+                                               const sym::SymbolTable& table,
+                                               const std::string& field) {
+  std::string ascii;
+  try {
+    ascii = units_read_text(typed, table, field, /*symbols_too=*/true);
+  } catch (const InputError&) {
+    return {};
+  }
+  std::vector<std::string> out;
+  for (const auto& [at, length] : identifiers(ascii)) {
+    const std::string word = ascii.substr(at, length);
+    if (table.contains(word) && is_unit(word) && after_number(ascii, at) &&
+        std::find(out.begin(), out.end(), word) == out.end())
+      out.push_back(word);
+  }
+  return out;
 }
 
 // `table` with the units' stand-ins declared, each a positive name.
@@ -540,13 +608,21 @@ std::optional<UnitsWorkedOut> worked_out(const std::string& text, const StandIns
 
 }  // namespace
 
-std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
-                                               const sym::SymbolTable& table,
-                                               const std::string& field,
-                                               const std::string& key_unit) {
-  // "\frac{2\pi\,\mathrm{rad}}{303.6\,\mathrm{days}}", "2π/(303.6 d)".
-  const std::optional<StandIns> stood = typed_stood_in(typed, table, field);
+namespace {
+// units_worked_out with `as_units` read as units after a number (units_stood_in).
+std::optional<UnitsWorkedOut> read_worked_out(const std::string& typed,
+                                              const sym::SymbolTable& table,
+                                              const std::string& field, const std::string& key_unit,
+                                              const std::vector<std::string>& as_units) {
+  const std::optional<StandIns> stood = typed_stood_in(typed, table, field, as_units);
   if (!stood) return std::nullopt;
+  // A symbol is read as a unit only beside a unit that is no symbol: "2m" alone is two masses
+  // or two metres, and refused.
+  if (!as_units.empty() &&
+      std::all_of(stood->typed.begin(), stood->typed.end(), [&](const auto& w) {
+        return std::find(as_units.begin(), as_units.end(), w) != as_units.end();
+      }))
+    return std::nullopt;
   const std::string grouped = denominators_grouped(stood->text, true);
   std::optional<UnitsWorkedOut> out = worked_out(grouped, *stood, table, field, key_unit);
   // "1/2 kg × (0.05 m)² × 150/s": a half of a kilogram, not 1/(2 kg), where only that reading
@@ -561,6 +637,40 @@ std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
       // the grouped reading stands
     }
   }
+  return out;
+}
+}  // namespace
+
+std::optional<UnitsWorkedOut> units_worked_out(const std::string& typed,
+                                               const sym::SymbolTable& table,
+                                               const std::string& field,
+                                               const std::string& key_unit) {
+  // "\frac{2\pi\,\mathrm{rad}}{303.6\,\mathrm{days}}", "2π/(303.6 d)".
+  std::optional<UnitsWorkedOut> out;
+  std::optional<InputError> refused;
+  try {
+    out = read_worked_out(typed, table, field, key_unit, {});
+  } catch (const InputError& e) {
+    refused = e;
+  }
+  // "(0.2 kg)(0.12 m)²/4", "0.2kg*(0.12m)^2/4" where m is the problem's mass: beside a unit
+  // that is no symbol, a symbol that names a unit after a number is read as that unit where
+  // the text reads no other way, or only that reading gives the answer's dimension (a symbol is
+  // otherwise never a unit here), and the line says so.
+  if (!key_unit.empty() && (!out || !same_dimension(out->unit, key_unit))) {
+    if (const auto as_units = symbols_after_numbers(typed, table, field); !as_units.empty()) {
+      try {
+        if (auto as_read = read_worked_out(typed, table, field, key_unit, as_units);
+            as_read && (!out || same_dimension(as_read->unit, key_unit))) {
+          as_read->symbols_as_units = as_units;
+          return as_read;
+        }
+      } catch (const InputError&) {
+        // the symbols' reading stands, or its refusal
+      }
+    }
+  }
+  if (refused) throw *refused;
   return out;
 }
 

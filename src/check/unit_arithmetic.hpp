@@ -38,6 +38,10 @@ struct UnitsWorkedOut {
   std::string grouped;  ///< as read, for the line: "2π rad / (303.6 days)" (a line's worth)
   std::string unit;     ///< the unit it is written in: "rad/s", "kg m^2", "" (a pure number)
   double value_si = 0;
+  /// The problem's symbols read as the units they name after a number ("m" for the metre where
+  /// m is a mass): only beside a unit that is no symbol, where the text reads no other way or
+  /// only that reading has the answer's dimension.
+  std::vector<std::string> symbols_as_units;
 };
 
 /// `typed` worked out with its units as above, in `key_unit` where that is an SI unit of its

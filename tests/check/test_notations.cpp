@@ -1991,10 +1991,40 @@ TEST_CASE("a number worked out with its units reads as the number it works out t
   // One term far outweighing the other is still a sum of unlike quantities.
   REQUIRE_THROWS_WITH(earth.check("precession_period_body", "1e12 m + 1 s"),
                       Catch::Contains("does not work out to one unit"));
-  // A name that is a symbol of the problem is never a unit here (the heavy top's g): the
-  // reader's refusal stands.
-  REQUIRE_THROWS_WITH(top.check("p_psi", "0.5 g × (5 cm)² / 2 × 150/s"),
-                      !Catch::Contains("worked out") && !Catch::Contains("work out"));
+  // A symbol of the problem that names a unit (the heavy top's g, the flying plate's mass m) is
+  // that unit after a number, beside a unit that is no symbol, only where the text reads no
+  // other way or only that reading has the answer's dimension; the line says so.
+  const auto grams = top.check("p_psi", "0.5 g × (5 cm)² / 2 × 150/s");
+  REQUIRE_FALSE(grams.correct);
+  CHECK_THAT(grams.feedback.front(), Catch::StartsWith("this is 1/1000 of the answer"));
+  CHECK(grams.feedback.back() ==
+        "read with its units worked out: 0.5 g · (5 cm)² / 2 · 150/s = 9.375e-05 kg m²/s (g "
+        "after a number as the unit g, not the problem's symbol g)");
+  const Fixture plate("flying-plate");
+  const std::string metres = " (m after a number as the unit m, not the problem's symbol m)";
+  for (const auto& [typed, line] : std::vector<std::pair<std::string, std::string>>{
+           {"(0.2 kg)(0.12 m)²/4", "(0.2 kg)(0.12 m)²/4 = 0.00072 kg m²"},
+           {"0.2kg*(0.12m)^2/4", "0.2 kg·(0.12 m)²/4 = 0.00072 kg m²"},
+           {"1/4 * 0.2kg * 0.12m * 0.12m", "1/4 · 0.2 kg · 0.12 m · 0.12 m = 0.00072 kg m²"}}) {
+    INFO(typed);
+    const auto v = plate.check("I0", typed);
+    REQUIRE(v.correct);
+    CHECK(v.feedback ==
+          std::vector<std::string>{"read with its units worked out: " + line + metres});
+  }
+  // Where that reading has another dimension and the symbols' none, it is judged so.
+  const auto linear = plate.check("I0", "(0.2 kg)(0.12 m)/4");
+  REQUIRE(linear.wrong_dimension);
+  CHECK(linear.feedback.back() ==
+        "read with its units worked out: (0.2 kg)(0.12 m)/4 = 0.006 kg m" + metres);
+  // A symbol and no other unit is two masses or two metres: refused as before.
+  REQUIRE_THROWS_WITH(plate.check("I0", "2m"), Catch::Contains("one of the problem's symbols"));
+  REQUIRE_THROWS_AS(plate.check("t_max", "0.16m"), InputError);
+  // A unit glued to its number reads as spaced apart: "0.5kg", "5cm".
+  const auto glued = top.check("p_psi", "0.5kg*(5cm)^2/2*150/s");
+  REQUIRE(glued.correct);
+  CHECK(glued.feedback.back() ==
+        "read with its units worked out: 0.5 kg·(5 cm)²/2·150/s = 0.09375 kg m²/s");
   // Degrees in a function's argument are radians, as elsewhere; an angle in radians there is a
   // pure number.
   const auto cosine = earth.check("Omega_body_rate", "2π/(303.6 d) × cos 1°");
