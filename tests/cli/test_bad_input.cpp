@@ -1,5 +1,6 @@
 // The catalog of bad input: every kind the program knows, with its exit code and the words its
 // one-line message must contain. Adding a validation means adding a row.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <fstream>
@@ -946,6 +947,14 @@ TEST_CASE("hostile answers are answered within seconds and bounded memory (check
   for (int k = 0; k < 5000; ++k) greek += "mω";
   // And a run of digits: each digit once walked back over the whole run before it (13 s).
   answers.insert(answers.end(), {diagonal + ")", diagonals + "0", greek, std::string(89000, '7')});
+  // Fractions nested 97 deep under runs of minus signs (fuzzing's input, its symbol a as R):
+  // normal() took 4.7 s proving what it could not (41 s under the sanitizers).
+  std::ifstream fuzzed(std::string(WOBBLE_SOURCE_DIR) +
+                       "/tests/fuzz/corpus/expression/deep_nested_fractions");
+  std::string nested{std::istreambuf_iterator<char>(fuzzed), std::istreambuf_iterator<char>()};
+  REQUIRE(nested.size() > 1000);
+  std::replace(nested.begin(), nested.end(), 'a', 'R');
+  answers.push_back(nested);
   // Passes that rewrite as they go: NumPy's scalars unwrapped, rates in Leibniz's notation,
   // styled letters set apart, calls unspaced, unit vectors respelled (in a sum the reader
   // splits term by term), thousands of times each.

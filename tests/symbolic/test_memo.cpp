@@ -2,8 +2,9 @@
 // a repeated call returns the first result without computing it again, a call that throws is
 // never kept, a value depends on the values it was evaluated at, not only the expression, and a
 // zero test is kept for an expression and its negation.
+#include <algorithm>
 #include <catch2/catch.hpp>
-
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -116,4 +117,33 @@ TEST_CASE("normal_kept is GiNaC's normal, exactly, however often it is asked") {
       REQUIRE(wobble::sym::normal_kept(e).is_equal(GiNaC::normal(e)));
     }
   }
+}
+
+TEST_CASE("a zero test nested too deep for normal() in time is not proved; shallow, it is") {
+  // A continued fraction of depth n, its innermost term written two equal ways: m (1 + a) and
+  // m + m a. normal() proves the difference zero when shallow; nested past the guard (fuzzing
+  // found 97 levels taking normal() 1.5 s) it is not tried, and the evaluation at points
+  // decides, as for any expression not proved zero.
+  const GiNaC::possymbol m("m"), a("a");
+  const auto continued = [](GiNaC::ex x, int n) {
+    for (int k = 0; k < n; ++k) x = 1 + 1 / (2 + x);
+    return x;
+  };
+  const auto difference = [&](int n) {
+    return continued(m * (1 + a), n) - continued(m + m * a, n);
+  };
+  const auto depth = [](const GiNaC::ex& e) {
+    const std::function<int(const GiNaC::ex&)> down = [&](const GiNaC::ex& x) {
+      int d = 0;
+      for (std::size_t i = 0; i < x.nops(); ++i) d = std::max(d, down(x.op(i)));
+      return d + 1;
+    };
+    return down(e);
+  };
+  const GiNaC::ex shallow = difference(3), deep = difference(20);
+  REQUIRE_FALSE(shallow.is_zero());  // not equal as written: normal() has a zero to prove
+  REQUIRE(depth(shallow) < 32);
+  REQUIRE(depth(deep) > 32);
+  CHECK(wobble::sym::is_identically_zero(shallow));
+  CHECK_FALSE(wobble::sym::is_identically_zero(deep));
 }
