@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <utility>
 
@@ -218,7 +219,7 @@ std::vector<MistakeAnswer> mistake_answers(const Question& q, const Dataset& rig
         const std::string& n = s.has[i] ? s.numbers[i][k] : s.numbers[first][k];
         differs = differs || n != s.numbers[first][k];
         d.shown.push_back(n);
-        d.items.push_back(std::stod(n));
+        d.items.push_back(std::strtod(n.c_str(), nullptr));  // digits as the judge printed them
       }
       if (!differs) continue;
       in_place[k] = "{" + d.name + "}";
