@@ -55,10 +55,8 @@ bool is_part_heading(const std::string& text) {
 std::optional<Line> read_line(const std::string& raw, int number) {
   const std::string text = trim(without_comments(raw));
   if (text.empty() || is_part_heading(text)) return {};
-  const auto eq = text.find('='), colon = text.find(':');
-  const auto at = std::min(eq, colon);
-  if (at == std::string::npos) return Line{number, without_part_mark(text), ""};
-  return Line{number, without_part_mark(trim(text.substr(0, at))), trim(text.substr(at + 1))};
+  if (const auto named = answer_line(text)) return Line{number, named->name, named->answer};
+  return Line{number, without_part_mark(text), ""};
 }
 
 std::vector<Line> read_lines(const std::string& text) {
@@ -88,6 +86,17 @@ std::vector<Line> read_lines(const std::string& text) {
   return out;
 }
 }  // namespace
+
+std::optional<NamedAnswer> answer_line(const std::string& line) {
+  const std::string text = trim(line);
+  const auto at = std::min(text.find('='), text.find(':'));
+  if (at == std::string::npos) return std::nullopt;
+  std::string name = without_part_mark(trim(text.substr(0, at)));
+  // "rate_axis2 [rad/s or 1/s] = ..": the worksheet's prompt pasted with its unit.
+  if (const std::size_t open = name.rfind(" ["); open != std::string::npos && name.back() == ']')
+    name = trim(name.substr(0, open));
+  return NamedAnswer{name, trim(text.substr(at + 1)), text[at]};
+}
 
 bool SubmissionResult::all_correct() const {
   return problems.empty() && std::all_of(answers.begin(), answers.end(),

@@ -33,6 +33,17 @@ struct SubmissionResult {
   bool all_correct() const;
 };
 
+/// One line's name and answer: NAME = ANSWER or NAME: ANSWER (split at the first '=' or ':'),
+/// a part's mark before the name dropped ("(b) rate_axis2 = 1.772 1/s"), and the unit the
+/// worksheet's prompt shows after it ("rate_axis2 [rad/s or 1/s] = .."), both trimmed; as a
+/// submission's line, and one word `wobble check` is given.
+struct NamedAnswer {
+  std::string name, answer;
+  char separator = '=';  ///< '=' or ':'
+};
+/// nullopt where the line has neither '=' nor ':'.
+std::optional<NamedAnswer> answer_line(const std::string& line);
+
 /// The submission's "variant = N" line, if it has one.
 /// @throws InputError naming the line for a variant that is not a whole number.
 std::optional<long> submission_variant(const std::string& text);

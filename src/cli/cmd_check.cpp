@@ -128,26 +128,33 @@ bool names_part_or_answer(const Problem& problem, const std::string& word) {
   return false;
 }
 
-// Where one word is a line "NAME = ANSWER" (as the worksheet prompts and a submission file
-// is written), what it names and the answer: an answer's name, as the key writes or prints it
-// ("I₀"), with the whole line (the judge drops its own name on the left); a part's id ("b =
-// 1.772 1/s"), with what follows the '=' (the id may be a symbol too: box-corner's part a); a
-// name of no answer as typed, to be refused as one ("J0 = .."). Nothing where there is no '='
-// or the left is not one word.
+// Where one word is a line "NAME = ANSWER" or "NAME: ANSWER" (as the worksheet prompts and a
+// submission file is written, read as a submission's line: check/submission.hpp), what it
+// names and the answer after the '=': an answer's name, as the key writes or prints it ("I₀");
+// a part's id ("b = 1.772 1/s"; the id may be a symbol too: box-corner's part a); a name of no
+// answer as typed, to be refused as one ("J0 = .."). Nothing where there is no '=' or ':', or
+// the left is not one word.
+// @throws InputError for a part or answer with nothing after its '=' ("rate_axis2 =").
 std::optional<std::pair<std::string, std::string>> named_line(const Key& key,
                                                               const std::string& word) {
-  const std::size_t eq = word.find('=');
-  if (eq == std::string::npos) return std::nullopt;
-  const std::string left = trim(word.substr(0, eq));
-  const std::string name = check::name_in_key(key, left);
+  const auto line = check::answer_line(word);
+  if (!line || line->name.empty() || line->name.find_first_of(" \t") != std::string::npos)
+    return std::nullopt;
+  std::string named = line->name;
+  bool known = false;  // a part's id or an answer's name
+  const std::string name = check::name_in_key(key, line->name);
   for (const auto& part : key.parts) {
-    if (part.id == left) return std::pair{left, trim(word.substr(eq + 1))};
+    known = known || part.id == named;
     for (const auto& answer : part.answers) {
-      if (answer.name == name) return std::pair{name, word};
+      if (answer.name == name) named = name;
+      known = known || answer.name == name;
     }
   }
-  if (left.empty() || left.find_first_of(" \t") != std::string::npos) return std::nullopt;
-  return std::pair{left, word};
+  if (line->answer.empty() && known) {
+    throw InputError(fmt::format("{}: nothing after the '{}' in \"{}\"; the answer goes after it",
+                                 named, line->separator, trim(word)));
+  }
+  return std::pair{named, line->answer};
 }
 
 // The part and the answer typed. "wobble check P --name N ANSWER": --name lets the part go,

@@ -1117,7 +1117,8 @@ TEST_CASE("a submission's comments, part headings and part marks name no answer"
       fmt::format("{:.6g}", angle) +
       " deg; % read\n"
       "c) angle_L_e3 = 3 rad\n"
-      "part (d).\n";
+      "part (d).\n"
+      "Omega_body_rate [rad/s] = 1\n";  // the worksheet's prompt pasted, its unit shown
   const SubmissionResult r = judge_submission({plate.key, plate.table, plate.values}, text, {});
   const auto verdict = [&](const std::string& name) {
     for (const auto& s : r.answers) {
@@ -1132,6 +1133,7 @@ TEST_CASE("a submission's comments, part headings and part marks name no answer"
   REQUIRE(verdict("angle_L_e3").answered);
   REQUIRE_FALSE(verdict("angle_L_e3").verdict.correct);  // 3 rad is not the key's
   REQUIRE_FALSE(verdict("L0_body").answered);
+  REQUIRE(verdict("Omega_body_rate").answered);
   // A '%' right after a number is no comment: "5%" is read, and refused.
   const SubmissionResult percent =
       judge_submission({plate.key, plate.table, plate.values}, "I0 = 5%\n", {});
@@ -1179,4 +1181,25 @@ TEST_CASE("a zero left by rounding has no reciprocal and no percentage to be off
       wobble::check::zero_scale(plate.key, residual), [](double, double) { return true; }));
   for (const auto& w : wobble::check::wrong_answers(residual, plate.key, rad_s))
     CHECK_THAT(w.message, !Catch::Contains("reciprocal") && !Catch::Contains("period"));
+}
+
+TEST_CASE("one line's name and answer, as a submission and one word to check read it") {
+  using wobble::check::answer_line;
+  for (const auto& [line, name, answer, separator] :
+       std::vector<std::tuple<std::string, std::string, std::string, char>>{
+           {"rate_axis2 = 1.772 1/s", "rate_axis2", "1.772 1/s", '='},
+           {"rate_axis2: 1.772 1/s", "rate_axis2", "1.772 1/s", ':'},
+           {"(b) rate_axis2 = 1.772", "rate_axis2", "1.772", '='},
+           {"b) rate_axis2=1.772", "rate_axis2", "1.772", '='},
+           {"rate_axis2 [rad/s or 1/s] = 1.772 1/s", "rate_axis2", "1.772 1/s", '='},
+           {"I₀ = m·R²/4 = 0.00072 kg m²", "I₀", "m·R²/4 = 0.00072 kg m²", '='},
+           {"rate_axis2 =", "rate_axis2", "", '='}}) {
+    INFO(line);
+    const auto read = answer_line(line);
+    REQUIRE(read.has_value());
+    CHECK(read->name == name);
+    CHECK(read->answer == answer);
+    CHECK(read->separator == separator);
+  }
+  CHECK_FALSE(answer_line("1.772 1/s").has_value());
 }

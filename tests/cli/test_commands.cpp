@@ -350,6 +350,12 @@ TEST_CASE("check: one word that is a key's line, NAME = ANSWER, names its answer
   for (const auto& [args, out] : std::vector<std::pair<std::vector<std::string>, std::string>>{
            {{"check", "asymmetric-top", "rate_axis2 = 1.772 1/s"}, "correct: rate_axis2\n"},
            {{"check", "asymmetric-top", "rate_axis2=1.772"}, "correct: rate_axis2\n"},
+           // As a submission's line reads: NAME: ANSWER, a part's mark before it, the
+           // worksheet's prompt with its unit.
+           {{"check", "asymmetric-top", "rate_axis2: 1.772 1/s"}, "correct: rate_axis2\n"},
+           {{"check", "asymmetric-top", "(b) rate_axis2 = 1.772 1/s"}, "correct: rate_axis2\n"},
+           {{"check", "asymmetric-top", "rate_axis2 [rad/s or 1/s] = 1.772 1/s"},
+            "correct: rate_axis2\n"},
            {{"check", "flying-plate", "I₀ = m·R²/4 = 0.00072 kg m²"},
             "correct: I0 (your expression simplifies to the key's)\n"},
            {{"check", "asymmetric-top", "rate_axis2 = 2.894 1/s"},
@@ -387,6 +393,13 @@ TEST_CASE("check: one word that is a key's line, NAME = ANSWER, names its answer
   REQUIRE(left_out.err ==
           "wobble: rate_axis2: nothing after the '=' in \"rate_axis2 =\"; the "
           "answer goes after it\n");
+  const RunResult colon = run_wobble({"check", "asymmetric-top", "rate_axis2:"});
+  REQUIRE(colon.exit_code == 2);
+  REQUIRE_THAT(colon.err, Catch::StartsWith("wobble: rate_axis2: nothing after the ':'"));
+  // A name of no answer with nothing after it is refused as that name.
+  REQUIRE_THAT(run_wobble({"check", "asymmetric-top", "J0 ="}).err,
+               Catch::StartsWith("wobble: part: problem asymmetric-top has no part or answer "
+                                 "'J0'"));
   // The line split by the shell: quoted whole, and what is suggested is judged.
   const RunResult split =
       run_wobble({"check", "asymmetric-top", "rate_axis2", "=", "1.772", "1/s"});
