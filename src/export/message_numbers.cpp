@@ -48,6 +48,12 @@ MessageNumbers message_numbers(const std::string& message) {
     }
     // "2π/2.094": 2 is a number, π a word after it.
     const std::size_t end = number_end(message, at);
+    // "1/s", "1/day": a unit's 1 is a word of the unit.
+    if (end == at + 1 && message[at] == '1' && end + 1 < message.size() && message[end] == '/' &&
+        std::isalpha(static_cast<unsigned char>(message[end + 1]))) {
+      words += message[at++];
+      continue;
+    }
     out.words.push_back(std::move(words));
     words.clear();
     out.numbers.push_back(message.substr(at, end - at));

@@ -8,7 +8,8 @@
 ///
 /// A number is ASCII digits with an optional decimal part and exponent ("0.3333", "1e+10",
 /// "2.623e+07") that follows no letter, digit, '_', '.' or non-ASCII byte: a name's digits
-/// (rate_axis2, I3, ω3) are words. A sign is a word ("-308" is "-" and 308).
+/// (rate_axis2, I3, ω3) are words, and so is a unit's 1 ("1/s"). A sign is a word ("-308" is "-"
+/// and 308).
 #include <string>
 #include <vector>
 

@@ -166,7 +166,8 @@ TEST_CASE("a message's numbers apart from its words, names' digits kept as words
            {"entry (1, 2) is off by 12%", {"1", "2", "12"}},
            {"-308 times the answer; 1e+10 times; 2e a word", {"308", "1e+10", "2"}},
            {"θ0 = 90°: the axle is horizontal", {"90"}},
-           {"10⁻⁷ kg m², 1 g cm²", {"10", "1"}}}) {
+           {"10⁻⁷ kg m², 1 g cm²", {"10", "1"}},
+           {"1/1.001 = 0.9985 1/s is the answer, 1/day", {"1", "1.001", "0.9985"}}}) {
     INFO(message);
     const exports::MessageNumbers split = exports::message_numbers(message);
     CHECK(split.numbers == numbers);
