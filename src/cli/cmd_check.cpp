@@ -25,8 +25,9 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
       ->required();
   auto* part =
       app.add_option("part", opt.part,
-                     "Part id (a, b, ...), or the answer's name (I0); may be left out with --name "
-                     "(the answer in its place)");
+                     "Part id (a, b, ...), or the answer's name (I0), or both with the answer as "
+                     "one line, 'I0 = 0.00072 kg m^2'; may be left out with --name (the answer in "
+                     "its place)");
   auto* answer_word =
       app.add_option("answer", opt.answer_after_part,
                      "Your answer, as with --answer (an expression that starts with '-' after --)");
