@@ -128,7 +128,7 @@ Wrong hertz_as_radians(const Answer& a, const Key&, const Unit& key_unit) {
 // key's unit is SI, as there alone a bare number is the SI reciprocal's.
 Wrong reciprocal_given(const Answer& a, const Key& key, const Unit& key_unit) {
   Wrong out;
-  if (a.value.data.size() != 1 || key_unit.to_si != 1.0) return out;
+  if (a.value.data.size() != 1) return out;  // the rest reciprocal_mistake decides
   // The wrong number is the key's turned exactly: only rounding between them.
   constexpr double kRounding = 1e-12;
   const auto same = [](double x, double k) { return std::abs(x - k) <= kRounding * std::abs(k); };
@@ -442,10 +442,6 @@ std::vector<std::string> diagnose(const Finding& f) {
 std::optional<std::string> reciprocal_mistake(
     const Answer& answer, double typed, const Unit* unit, const Unit& key_unit, double zero_scale,
     const std::function<bool(double typed, double expected)>& close) {
-  // A zero left by rounding: its reciprocal is no quantity anyone computes.
-  if (answer.value.data.size() != 1 ||
-      !(std::abs(answer.value.data[0]) > kRoundingZero * zero_scale))
-    return std::nullopt;
   constexpr std::array<int, 3> kTime{0, 0, 1};
   constexpr std::array<int, 3> kRate{0, 0, -1};
   // A number without its unit is in the key's unit; only where that is SI is it the SI
@@ -457,6 +453,8 @@ std::optional<std::string> reciprocal_mistake(
   const bool rate_key = key_unit.dim == kRate && typed_unit.dim == kTime;
   const bool time_key = key_unit.dim == kTime && typed_unit.dim == kRate;
   if (answer.value.data.size() != 1 || typed == 0.0 || !(rate_key || time_key)) return std::nullopt;
+  // A zero left by rounding: its reciprocal is no quantity anyone computes.
+  if (!(std::abs(answer.value.data[0]) > kRoundingZero * zero_scale)) return std::nullopt;
   // Hz, rpm and rev/s have 2π in their factor to SI (symbolic/units.hpp): a revolution is 2π.
   const bool turns = typed_unit.angle && typed_unit.to_si_exact.find("2*pi") != std::string::npos;
   const bool degrees =
