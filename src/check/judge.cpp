@@ -672,6 +672,11 @@ Options options_for(const Answer& a, const Options& options) {
   return opt;
 }
 
+std::string nothing_after(const std::string& field, char separator, const std::string& line) {
+  return fmt::format("{}: nothing after the '{}' in \"{}\"; the answer goes after it", field,
+                     separator, line);
+}
+
 std::string without_option(const std::string& message) {
   const std::string prefix = kField + ": ";
   if (message.rfind(prefix, 0) == 0) return message.substr(prefix.size());
@@ -1636,8 +1641,7 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   const std::string written = written_answer(ctx, text);
   // "rate_axis2 =": a prompt's line pasted with its answer left out.
   if (const std::string line = trim(written); !line.empty() && line.back() == '=') {
-    throw InputError(
-        fmt::format("{}: nothing after the '=' in \"{}\"; the answer goes after it", kField, line));
+    throw InputError(nothing_after(kField, '=', line));
   }
   // "118.8 rad/s (about 1134 rpm)": the answer and the same again, each judged.
   if (const auto r = restatement_of(written)) return judge_restated(ctx, a, *r, options);

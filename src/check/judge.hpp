@@ -93,6 +93,10 @@ std::string name_spelling(const std::string& written);
 /// names neither). `written` itself otherwise, for the lookup to refuse with the key's names.
 std::string name_in_key(const Key& key, const std::string& written);
 
+/// The refusal of a line with its answer left out after the '=' or ':' ("rate_axis2 =", a
+/// prompt's line pasted), naming `field`: the option, or the answer the line names.
+std::string nothing_after(const std::string& field, char separator, const std::string& line);
+
 /// A refusal from judge() without the command-line option it names ("--answer: "), for the
 /// surfaces where the student typed no option (a submission file, the worksheet, the browser);
 /// one about an entry names it counted from 1: "entry 1: .." for "--answer[0]: ..", "entry (1,

@@ -95,7 +95,10 @@ std::optional<NamedAnswer> answer_line(const std::string& line) {
   // "rate_axis2 [rad/s or 1/s] = ..": the worksheet's prompt pasted with its unit.
   if (const std::size_t open = name.rfind(" ["); open != std::string::npos && name.back() == ']')
     name = trim(name.substr(0, open));
-  return NamedAnswer{name, trim(text.substr(at + 1)), text[at]};
+  // "rate_axis2 == 1.772", "k := 0.8": a separator typed twice (as a program's comparison or
+  // assignment is written) is one; the answer starts after the last.
+  const std::size_t answer_at = text.find_first_not_of("=: \t", at + 1);
+  return NamedAnswer{name, answer_at == std::string::npos ? "" : text.substr(answer_at), text[at]};
 }
 
 bool SubmissionResult::all_correct() const {

@@ -33,7 +33,8 @@ struct SubmissionResult {
   bool all_correct() const;
 };
 
-/// One line's name and answer: NAME = ANSWER or NAME: ANSWER (split at the first '=' or ':'),
+/// One line's name and answer: NAME = ANSWER or NAME: ANSWER (split at the first '=' or ':'; a
+/// separator typed twice, "NAME == ANSWER" or "NAME := ANSWER", is one),
 /// a part's mark before the name dropped ("(b) rate_axis2 = 1.772 1/s"), and the unit the
 /// worksheet's prompt shows after it ("rate_axis2 [rad/s or 1/s] = .."), both trimmed; as a
 /// submission's line, and one word `wobble check` is given.

@@ -152,8 +152,7 @@ std::optional<std::pair<std::string, std::string>> named_line(const Key& key,
     }
   }
   if (line->answer.empty() && known) {
-    throw InputError(fmt::format("{}: nothing after the '{}' in \"{}\"; the answer goes after it",
-                                 named, line->separator, trim(word)));
+    throw InputError(check::nothing_after(named, line->separator, trim(word)));
   }
   return std::pair{named, line->answer};
 }

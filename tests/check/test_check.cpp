@@ -1193,7 +1193,11 @@ TEST_CASE("one line's name and answer, as a submission and one word to check rea
            {"b) rate_axis2=1.772", "rate_axis2", "1.772", '='},
            {"rate_axis2 [rad/s or 1/s] = 1.772 1/s", "rate_axis2", "1.772 1/s", '='},
            {"I₀ = m·R²/4 = 0.00072 kg m²", "I₀", "m·R²/4 = 0.00072 kg m²", '='},
-           {"rate_axis2 =", "rate_axis2", "", '='}}) {
+           {"rate_axis2 =", "rate_axis2", "", '='},
+           {"rate_axis2 == 1.772 1/s", "rate_axis2", "1.772 1/s", '='},
+           {"k := 0.8", "k", "0.8", ':'},
+           {"rate_axis2 : = -1.772", "rate_axis2", "-1.772", ':'},
+           {"rate_axis2 ==", "rate_axis2", "", '='}}) {
     INFO(line);
     const auto read = answer_line(line);
     REQUIRE(read.has_value());

@@ -396,6 +396,13 @@ TEST_CASE("check: one word that is a key's line, NAME = ANSWER, names its answer
   const RunResult colon = run_wobble({"check", "asymmetric-top", "rate_axis2:"});
   REQUIRE(colon.exit_code == 2);
   REQUIRE_THAT(colon.err, Catch::StartsWith("wobble: rate_axis2: nothing after the ':'"));
+  // The separator typed twice, as a program's comparison: the line quoted as typed, not the
+  // second '=' alone.
+  const RunResult doubled = run_wobble({"check", "asymmetric-top", "rate_axis2 =="});
+  REQUIRE(doubled.exit_code == 2);
+  REQUIRE(doubled.err ==
+          "wobble: rate_axis2: nothing after the '=' in \"rate_axis2 ==\"; the "
+          "answer goes after it\n");
   // A name of no answer with nothing after it is refused as that name.
   REQUIRE_THAT(run_wobble({"check", "asymmetric-top", "J0 ="}).err,
                Catch::StartsWith("wobble: part: problem asymmetric-top has no part or answer "
