@@ -59,9 +59,14 @@ double relative_distance(const std::vector<double>& wrong, const Answer& a, doub
 
 // A mistake's line with its numbers as "…", the same in every variant: "this is the fast-top
 // approximation M g l / (I3 ω3), …% below the exact value here", "1/… = … rad/s is the answer".
+// A multiple of π is kept: "2π/… = … s", the 2 of a period is no variant's number.
 std::string numbers_elided(const std::string& line) {
   const MessageNumbers split = message_numbers(line);
-  return with_numbers(split, std::vector<std::string>(split.numbers.size(), "…"));
+  std::vector<std::string> elided(split.numbers.size(), "…");
+  for (std::size_t i = 0; i < elided.size(); ++i) {
+    if (split.words[i + 1].rfind("π", 0) == 0) elided[i] = split.numbers[i];
+  }
+  return with_numbers(split, elided);
 }
 
 std::string tolerance_words(const check::Options& o) {

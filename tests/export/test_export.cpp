@@ -244,3 +244,15 @@ TEST_CASE("a refusal's kind is the same in every variant: its numbers are elided
   CHECK_THAT(approximations[0]->kind, Contains("(I3 ω3), …% below the exact value here"));
   CHECK_THAT(approximations[0]->reason, Contains("(I3 ω3), 0.85% below the exact value here"));
 }
+
+TEST_CASE("a refusal's kind keeps a multiple of π: a period's 2 is no variant's number") {
+  // The tennis racket's period is within 1% of 2π over another of its numbers in variant 92 (of
+  // the first 100 drawn): "2π/… = … s is the answer", not "…π/…".
+  const auto set = exports::graded_variants(find_problem("tennis-racket"), 1, 60, check::Options{});
+  const auto reciprocal = std::find_if(set.rejected.begin(), set.rejected.end(), [](const auto& r) {
+    return r.kind.find("a period for a rate") != std::string::npos;
+  });
+  REQUIRE(reciprocal != set.rejected.end());
+  CHECK_THAT(reciprocal->kind, Contains("(\"2π/… = … s is the answer\")"));
+  CHECK_THAT(reciprocal->reason, Contains("2π/") && !Contains("…"));
+}
