@@ -24,6 +24,7 @@
 #include "check/judge_internal.hpp"
 #include "check/latex_answer.hpp"
 #include "check/latex_vocabulary.hpp"
+#include "check/lost_power.hpp"
 #include "check/names_put_in.hpp"
 #include "check/plus_minus.hpp"
 #include "check/program_notation.hpp"
@@ -738,6 +739,9 @@ std::string name_in_key(const Key& key, const std::string& written) {
 }
 
 namespace {
+Verdict judge_text(const Context& ctx, const Answer& a, const std::string& text,
+                   const Options& options);
+
 // The sides of an answer as a key line shows it, "I0 = m·R²/4 = 0.00072 kg m²": split at each
 // '=' outside brackets, the answer's own name (or nothing) on the left dropped.
 std::vector<std::string> sides(const std::string& text, const std::string& name) {
@@ -1406,7 +1410,7 @@ Verdict judge_signs(const Context& ctx, const Answer& a, const SignReadings& sig
   std::exception_ptr refused;  // why the reader refused the first sign refused
   const auto read = [&](const std::string& text) -> std::optional<Verdict> {
     try {
-      return judge(ctx, a, text, options);
+      return judge_text(ctx, a, text, options);
     } catch (const InputError&) {
       if (!refused) refused = std::current_exception();
       return std::nullopt;  // "sqrt(-x)": that sign gives no answer
@@ -1559,7 +1563,7 @@ Verdict judge_restated(const Context& ctx, const Answer& a, const Restatement& r
     throw InputError(fmt::format("{}: {} and {}: the answer again in one bracket, not two", kField,
                                  twice->bracket, r.bracket));
   }
-  Verdict v = judge(ctx, a, r.answer, options);
+  Verdict v = judge_text(ctx, a, r.answer, options);
   if (!v.correct) return v;
   try {
     Verdict again = judge_one(ctx, a, r.again, options);
@@ -1626,13 +1630,15 @@ bool written_as_euler_equations(const Context& ctx, const std::string& text) {
   }
 }
 
-Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
-              const Options& options) {
+namespace {
+// The judge of judge(), which adds what a lost power of ten reads as.
+Verdict judge_text(const Context& ctx, const Answer& a, const std::string& text,
+                   const Options& options) {
   // "1.772 1/s (unstable)": the number judged; the word is the student's claim, weighed where
   // the key says what it claims (the stability of a spin about a principal axis, which the
   // question asks), else said unjudged rather than taken for right.
   if (const auto remark = word_remark(text)) {
-    Verdict v = judge(ctx, a, remark->answer, options);
+    Verdict v = judge_text(ctx, a, remark->answer, options);
     if (const auto claim = key_on_word(a, *remark)) return with_word_weighed(v, a, *remark, *claim);
     v.feedback.push_back("your bracket \"" + remark->bracket +
                          "\" is taken as a remark, not judged (the value is)");
@@ -1829,6 +1835,45 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
     if (k == 0) first = std::move(v);
   }
   return first;
+}
+}  // namespace
+
+Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
+              const Options& options) {
+  // "7.2 × 10−4 kg m2": read as written, 7.2 × 6; the verdict says so, and whether the power
+  // of ten it lost would be right. Where the text reads only with the power, the refusal says
+  // how to write it.
+  const auto lost = lost_powers_of_ten(text);
+  if (!lost) return judge_text(ctx, a, text, options);
+  const auto as_powers = [&]() -> std::optional<Verdict> {
+    try {
+      return judge_text(ctx, a, lost->as_powers, options);
+    } catch (const InputError&) {
+      return std::nullopt;
+    }
+  };
+  const std::string power = "10^-" + lost->exponent;
+  const std::string read_as =
+      fmt::format("\"{}\" reads as 10 − {} = {}, not {}", lost->written, lost->exponent,
+                  10 - std::stoi(lost->exponent), sym::to_unicode(power));
+  Verdict v;
+  try {
+    v = judge_text(ctx, a, text, options);
+  } catch (const InputError&) {
+    if (!as_powers()) throw;
+    throw InputError(
+        fmt::format("{}: {}: write {}, as in \"{}\"", kField, read_as, power, lost->as_powers));
+  }
+  if (v.correct) return v;
+  // Right with the power: how far off the difference is ("9.44e+04 times the answer") says
+  // nothing more.
+  if (const auto powers = as_powers(); powers && powers->correct) {
+    v.feedback = {fmt::format("{}; written {}, your answer is right", read_as, power)};
+    return v;
+  }
+  v.feedback.insert(v.feedback.begin(),
+                    fmt::format("{}; a power of ten is written {}", read_as, power));
+  return v;
 }
 
 }  // namespace wobble::check

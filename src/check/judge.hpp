@@ -78,6 +78,8 @@ Options options_for(const Answer& a, const Options& options);
 /// (check/euler_equations.hpp): an answer for the coefficients c₁, c₂, c₃.
 bool written_as_euler_equations(const Context& ctx, const std::string& text);
 
+/// A power of ten whose superscript was lost ("7.2 × 10−4", check/lost_power.hpp) is judged as
+/// written; the verdict, or the refusal where only the power reads, says how it was read.
 /// @throws InputError for an empty or unreadable answer, a wrong shape (a vector for a number),
 ///   or an unreadable unit.
 Verdict judge(const Context& ctx, const Answer& expected, const std::string& text,

@@ -18,6 +18,7 @@
 #include "check/diagnosis.hpp"
 #include "check/inequality.hpp"
 #include "check/judge.hpp"
+#include "check/lost_power.hpp"
 #include "check/written_forms.hpp"
 #include "core/input_error.hpp"
 #include "solvers/catalog.hpp"
@@ -3412,4 +3413,81 @@ TEST_CASE("a derivative on a right side of Euler's equations is named, not anoth
                                         "components, dω₁/dt = c₁ ω₂ ω₃)") &&
                             !Catch::Contains("omega3"));
   }
+}
+
+TEST_CASE(
+    "a power of ten whose superscript was lost is read as written, and said, over the catalog") {
+  // "7.2 × 10−4" as a PDF copies 10⁻⁴, "7.2*10-4" as typed: 7.2 × (10 − 4) to the reader. The
+  // verdict stays what was written, and says what the power would give: every scalar answer
+  // below 1 (its value in SI, the key's unit), at 10 significant figures, right, and 5% off.
+  std::size_t tried = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        if (a.value.shape != Value::Shape::scalar) continue;
+        const double v = a.value.data[0];
+        if (v == 0.0 || std::abs(v) >= 1.0) continue;
+        const int exponent = static_cast<int>(std::floor(std::log10(std::abs(v))));
+        const double mantissa = v / std::pow(10.0, exponent);
+        for (const char* times : {" × ", "*", " x ", "·"}) {
+          for (const char* minus : {"−", "-"}) {
+            const std::string lost = fmt::format("10{}{}", minus, -exponent);
+            const std::string typed = fmt::format("{:.10g}{}{} {}", mantissa, times, lost, a.unit);
+            INFO(p.id << " " << a.name << ": " << typed);
+            const auto said =
+                fmt::format("\"{}\" reads as 10 − {} = {}, not 10", lost, -exponent, 10 + exponent);
+            // The letter x reads as times only before a power ("x 10^-4"): refused, with how
+            // the power is written.
+            if (std::string_view(times) == " x ") {
+              REQUIRE_THROWS_WITH(
+                  f.check(a.name, typed),
+                  Catch::Contains(said) &&
+                      Catch::Contains(fmt::format(": write 10^-{}, as in \"", -exponent)));
+              ++tried;
+              continue;
+            }
+            const auto v_typed = f.check(a.name, typed);
+            REQUIRE_FALSE(v_typed.correct);
+            REQUIRE(v_typed.feedback.size() == 1);
+            REQUIRE_THAT(v_typed.feedback[0],
+                         Catch::StartsWith(said) &&
+                             Catch::EndsWith(
+                                 fmt::format("; written 10^-{}, your answer is right", -exponent)));
+            // 5% off: the power said, how far off the number as written is after it.
+            const auto wrong = f.check(
+                a.name, fmt::format("{:.10g}{}{} {}", 1.05 * mantissa, times, lost, a.unit));
+            REQUIRE_FALSE(wrong.correct);
+            REQUIRE(wrong.feedback.size() >= 2);
+            REQUIRE_THAT(wrong.feedback[0], Catch::EndsWith(fmt::format(
+                                                "; a power of ten is written 10^-{}", -exponent)));
+            ++tried;
+          }
+        }
+      }
+    }
+  }
+  REQUIRE(tried > 100);
+}
+
+TEST_CASE("a lost power of ten only after a number's times sign, whole and then an exponent") {
+  using check::lost_powers_of_ten;
+  const auto flying = lost_powers_of_ten("[1.86*10-3, 0, 1.39 × 10−2] kg m^2/s");
+  REQUIRE(flying.has_value());
+  CHECK(flying->as_powers == "[1.86*10^-3, 0, 1.39 × 10^-2] kg m^2/s");
+  CHECK(flying->written == "10-3");
+  CHECK(flying->exponent == "3");
+  CHECK(lost_powers_of_ten("7.2 x 10–4")->as_powers == "7.2 x 10^-4");
+  // Each reads as the difference it writes, or is no power of ten at all.
+  for (const char* difference :
+       {"7.2 × 10 − 4", "7.2*710-4", "7.2*1.10-4", "7.2*10-4.5", "7.2*10-4^2", "m*10-4", "10-4",
+        "7.2*10-1234", "7.2e-4", "7.2*10^-4", "x*10-4"}) {
+    INFO(difference);
+    CHECK_FALSE(lost_powers_of_ten(difference).has_value());
+  }
+  // A refusal that the power would read names it, and how to write it.
+  const Fixture plate("flying-plate");
+  REQUIRE_THROWS_WITH(plate.check("I0", "7.2 x 10-4 kg m^2"),
+                      "--answer: \"10-4\" reads as 10 − 4 = 6, not 10⁻⁴: write 10^-4, as in "
+                      "\"7.2 x 10^-4 kg m^2\"");
 }
