@@ -470,6 +470,15 @@ TEST_CASE("bad answers: empty, unreadable, wrong shape, absurd unit") {
            {"t_max", "1 600.5 s", "(digits grouped? write 1600.5)"},
            {"t_max", "1\u2009600,5 s", "(digits grouped? write 1600.5)"},
            {"t_max", "1,600,000 s", "(digits grouped? write 1600000)"},
+           // One comma before three digits: a decimal comma, or a thousands' separator.
+           {"t_max", "437,200 min",
+            "(a decimal comma, or digits grouped? write 437.200 or 437200)"},
+           {"t_max", "-1,600s", "(a decimal comma, or digits grouped? write -1.600 or -1600)"},
+           // Not where no group could stand so: a leading 0, four digits before the comma.
+           {"t_max", "0,160 s", "(a decimal comma? write the point: 0.5, not 0,5)"},
+           {"t_max", "1600,500 s", "(a decimal comma? write the point: 0.5, not 0,5)"},
+           {"t_max", "1,6000 s", "(a decimal comma? write the point: 0.5, not 0,5)"},
+           {"t_max", "1,600e-3 s", "(a decimal comma? write the point: 0.5, not 0,5)"},
            {"L0_body", "(0,5, 1,5, 2,5) kg m^2/s", "not a 6-vector [..] (a decimal comma?"},
            {"I", "[[0,5, 0, 0], [0, 0,5, 0], [0, 0, 1,5]]",
             "not a 3x4 matrix [[..], ..] (a decimal comma?"}}) {
