@@ -65,11 +65,12 @@ struct MotionSpec {
 
 /// A value students give for an answer that is not it, named by the problem file so that the
 /// judge can say what it is: an observation beside a model's answer ("433 day", the Earth's
-/// observed wobble, for a rigid Earth's 304 days). A constant with its unit; read against the
-/// answer's unit when the problem is solved (a solver computes the unit), so a value of another
-/// dimension is refused there, naming `field`.
+/// observed wobble, for a rigid Earth's 304 days), or a formula for another quantity ("m*R^2/2",
+/// the moment about the other axis). Read against the answer's unit when the problem is solved
+/// (a solver computes the unit; solvers/named_mistakes.hpp), so a value of another dimension is
+/// refused there, naming `field`.
 struct MistakeSpec {
-  std::string value;   ///< "433 day": a constant expression, with a unit of the answer's dimension
+  std::string value;   ///< a constant with its unit ("433 day") or an expression in the parameters
   std::string what;    ///< what it is: "the observed period of the pole's free wobble"
   std::string remedy;  ///< what the answer is instead, or why it differs
   std::string field;   ///< "parts[1].answers[0].mistakes[0]", for messages

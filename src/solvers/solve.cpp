@@ -5,31 +5,10 @@
 #include "problem/values.hpp"
 #include "problem/variants.hpp"
 #include "solvers/exact_answer.hpp"
+#include "solvers/named_mistakes.hpp"
 #include "solvers/registry.hpp"
 
 namespace wobble {
-
-namespace {
-// The problem file's named mistakes of one answer, read in the answer's unit as the solver
-// computed it ("433 day" for a period in s).
-void add_mistakes(const Problem& problem, const AnswerSpec& spec, Answer& answer) {
-  for (const auto& m : spec.mistakes) {
-    const std::string field = problem.file.string() + ": " + m.field + ".value";
-    if (answer.value.shape != Value::Shape::scalar) {
-      throw InputError(
-          fmt::format("{}: '{}' is a number, but {} is a {}; a named mistake is "
-                      "one number",
-                      field, m.value, spec.name, shape_name(answer.value.shape)));
-    }
-    Parameter as_answer;
-    as_answer.name = spec.name;
-    as_answer.unit = answer.unit;
-    as_answer.range = parse_interval("(-inf, inf)", field);
-    const double value = parse_parameter_value(as_answer, m.value, field);
-    answer.approximations.push_back({m.what, m.remedy, {value}, "the answer"});
-  }
-}
-}  // namespace
 
 Key assemble_parts(const Problem& problem,
                    const std::function<Computed(const std::string& quantity)>& compute) {
@@ -46,7 +25,6 @@ Key assemble_parts(const Problem& problem,
       }
       c.answer.name = spec.name;
       c.answer.check_tolerance = spec.tolerance;
-      add_mistakes(problem, spec, c.answer);
       pk.answers.push_back(std::move(c.answer));
     }
     key.parts.push_back(std::move(pk));
@@ -74,6 +52,7 @@ Key solve(const Problem& problem, const sym::Values& values) {
   const SolverInfo& solver = solver_info(problem.solver);
   begin_route_checks();
   Key key = solver.solve(problem, values);
+  add_named_mistakes(problem, values, key);
   key.problem = problem.id;
   key.title = problem.title;
   key.source = problem.source;

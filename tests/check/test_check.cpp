@@ -244,7 +244,8 @@ TEST_CASE("known mistakes are named") {
   REQUIRE_THAT(
       plate.check("Omega_body_rate", fmt::format("{}", -value("Omega_body_rate"))).feedback.at(0),
       Catch::Contains("prolate"));
-  REQUIRE_THAT(plate.check("I0", "m*R^2/2").feedback.at(0), Catch::Contains("factor 2"));
+  // (m R²/2, twice it, is named by the problem file: the moment about the symmetry axis.)
+  REQUIRE_THAT(plate.check("I0", "m*R^2/8").feedback.at(0), Catch::Contains("factor 2"));
   REQUIRE_THAT(plate.check("I0", fmt::format("{}", value("I0") * 12)).feedback.at(0),
                Catch::Contains("factor 12"));
   // Another answer of the key: the wobble angle for the cone's half angle.
@@ -346,11 +347,18 @@ TEST_CASE("each known mistake is named, on every answer of every problem where i
           REQUIRE_FALSE(v.feedback.empty());
           // A wrong value that is exactly another answer of the key is named as that answer
           // (max_angle is twice angle_L_e3): the more specific diagnosis.
+          // One the problem file names (the plate's I₃ = m R²/2 for I₀) is named as the file
+          // says: tried before the factors.
           bool other = false;
           for (const auto& q : f.key.parts) {
             for (const auto& b : q.answers) {
               other = other || (&b != &a && b.unit == a.unit && b.value.data == wrong.data);
             }
+          }
+          for (const auto& named : a.approximations) {
+            other = other || (named.beside == "the answer" && named.values.size() == 1 &&
+                              std::abs(named.values[0] - wrong.data.at(0)) <=
+                                  check::Options{}.rel_tol * std::abs(named.values[0]));
           }
           REQUIRE_THAT(v.feedback[0], Catch::Contains(other ? "this is" : mistake.words));
           ++seen[mistake.kind];
@@ -1057,8 +1065,21 @@ TEST_CASE("a value the problem file names as a mistake is named when given as th
     for (const auto& part : p.parts) {
       for (const auto& spec : part.answers) {
         for (const auto& m : spec.mistakes) {
-          // As the file writes it, and as a student may: "433 days" for "433 day".
-          for (const std::string& typed : {m.value, m.value + "s"}) {
+          // As the file writes it, and as a student may: "433 days" for "433 day"; one in the
+          // problem's parameters (the flying plate's "m*R^2/2") as an expression and as its
+          // value, in the answer's unit.
+          const Answer& a = f.answer(spec.name);
+          REQUIRE(a.approximations.size() == spec.mistakes.size());
+          bool constant = false;  // a value with its unit, which reads as no expression
+          try {
+            (void)p.symbol_table().parse(m.value, "value");
+          } catch (const InputError&) {
+            constant = true;
+          }
+          const std::string value = fmt::format(
+              "{:.10g} {}", a.approximations[&m - spec.mistakes.data()].values.at(0), a.unit);
+          for (const std::string& typed :
+               constant ? std::vector{m.value, m.value + "s"} : std::vector{m.value, value}) {
             INFO(p.id << " " << spec.name << ": " << typed);
             const Verdict v = f.check(spec.name, typed);
             REQUIRE_FALSE(v.correct);
@@ -1070,7 +1091,7 @@ TEST_CASE("a value the problem file names as a mistake is named when given as th
       }
     }
   }
-  REQUIRE(named >= 4);  // the Earth's observed wobble, as a period and as a rate
+  REQUIRE(named >= 6);  // the Earth's observed wobble (a period, a rate); the plate's I₃ for I₀
   // The Earth's: 433 days against the rigid Earth's 303.6 days is 42.6% above, read in days.
   const Fixture earth("earth-free-precession");
   const double days = earth.answer("precession_period_body").value.data.at(0) / 86400;

@@ -135,9 +135,13 @@ TEST_CASE("what an expression's dimension says, in the plate's symbols") {
         "dimensions: it adds unlike quantities, or takes a function such as sin or exp of a "
         "quantity with a unit");
   // Of the right dimension but wrong: the likely mistake, as for a number.
-  CHECK(said("m R^2/2") ==
-        "incorrect: I0 (your expression differs from the key's) | this is 2 times the answer: a "
+  CHECK(said("m R^2/8") ==
+        "incorrect: I0 (your expression differs from the key's) | this is 1/2 of the answer: a "
         "factor 2 is off (a 1/12 or 1/3 in a moment of inertia, a 1/2 in an energy?)");
+  // One the problem file names: the moment about the symmetry axis.
+  CHECK_THAT(said("m R^2/2"), Catch::StartsWith("incorrect: I0 (your expression differs from the "
+                                                "key's) | this is the moment about the symmetry "
+                                                "axis, I₃ = m R²/2, 100% above the answer here"));
   // Right at the set values by chance (m = 1 kg would hide it; m² R²/4 is another dimension).
   CHECK(said("m^2 R^2/4") ==
         "incorrect: I0 has the wrong dimension | your expression's dimension is mass² × "

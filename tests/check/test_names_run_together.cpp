@@ -71,9 +71,9 @@ TEST_CASE("a product written by hand, its factors run together, is judged as the
     INFO(right);
     REQUIRE(plate.check("I0", right).correct);
   }
-  const auto doubled = plate.check("I0", "mR²/2");
-  REQUIRE_FALSE(doubled.correct);
-  REQUIRE_THAT(doubled.feedback.at(0), Catch::Contains("factor 2 is off"));
+  const auto halved = plate.check("I0", "mR²/8");
+  REQUIRE_FALSE(halved.correct);
+  REQUIRE_THAT(halved.feedback.at(0), Catch::Contains("factor 2 is off"));
   REQUIRE(plate.check("L0_body", "[mR²ω sin α/4, 0, mR²ω cos α/2]").correct);
   // The letters of a unit stay a unit: "g m^2" is grams times square metres.
   REQUIRE(plate.check("I0", "0.72 g m^2").correct);

@@ -2549,7 +2549,7 @@ TEST_CASE("an expression right at the set values only is told so, not named anot
   const auto thirty = euler.check("angles_phy711", "(φ, 30°, ψ)");
   REQUIRE_FALSE(thirty.correct);
   REQUIRE_THAT(thirty.feedback.at(0), !Catch::Contains("angles_back_zyz"));
-  REQUIRE_THAT(plate.check("I0", "m R^2/2").feedback.at(0), Catch::Contains("factor 2 is off"));
+  REQUIRE_THAT(plate.check("I0", "m R^2/8").feedback.at(0), Catch::Contains("factor 2 is off"));
 }
 
 TEST_CASE("every closed form with a parameter's value for its symbol is told which symbol") {

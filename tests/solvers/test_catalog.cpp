@@ -414,6 +414,52 @@ TEST_CASE("a problem file's named mistakes are read in the answer's unit when it
       Catch::Contains("mistakes[0].value: '2 kg m^2' is a number, but I is a matrix"));
 }
 
+TEST_CASE("a named mistake in the problem's parameters follows each variant's values") {
+  const auto with_mistake = [](const std::string& value) {
+    std::string t = kTwoMasses;
+    const std::string answers = "answers = [\"I\"]";
+    return t.replace(t.find(answers), answers.size(),
+                     "answers = [{ name = \"mass\", mistakes = [{ value = \"" + value +
+                         "\", what = \"the heavier mass alone\", remedy = \"add both\" }] }]");
+  };
+  const auto solved = [](const std::string& file, const std::vector<std::string>& sets) {
+    const Problem p = load_problem(test::write_file("mistakes/two.toml", file));
+    return solve(p, parameter_values(p, sets));
+  };
+  // Masses m and 2m: the heavier alone is 2m, at m = 1 kg and at m = 0.25 kg alike. (As in
+  // every quantity of a file, "2 m" would be two metres: symbolic/quantity.hpp.)
+  for (const std::string value : {"2*m", "m·2"}) {
+    for (const auto& [sets, kg] : {std::pair{std::vector<std::string>{}, 2.0},
+                                   std::pair{std::vector<std::string>{"m=250 g"}, 0.5}}) {
+      INFO(value << " at " << kg / 2 << " kg");
+      const Key key = solved(with_mistake(value), sets);
+      const Answer& total = key.parts.at(0).answers.at(0);
+      REQUIRE(total.approximations.size() == 1);
+      CHECK(total.approximations[0].values == std::vector<double>{kg});
+    }
+  }
+  // Refused, naming the file and the field: another dimension (a power off, a sum of unlike
+  // terms, a function of a mass), and no real value.
+  for (const std::string bad : {"m^2", "m + 1", "exp(m)", "sqrt(m)"}) {
+    INFO(bad);
+    CHECK_THROWS_WITH(
+        solved(with_mistake(bad), {}),
+        Catch::Contains("two.toml: parts[0].answers[0].mistakes[0].value: '" + bad +
+                        "' is not of mass's dimension, mass (kg): its value does not scale as the "
+                        "answer's when the units of mass, length and time do"));
+  }
+  CHECK_THROWS_WITH(solved(with_mistake("sqrt(-m)"), {}),
+                    Catch::Contains("two.toml: parts[0].answers[0].mistakes[0].value"));
+  // With no value at some values (a pure number k = 0 here), it names nothing there; its value
+  // at the defaults is what is tested.
+  std::string with_k = with_mistake("2*m/k");
+  const std::string body = "[body]";
+  with_k.insert(with_k.find(body),
+                "[[parameters]]\nname = \"k\"\nunit = \"\"\ndefault = 1\nrange = \"[0, 2]\"\n\n");
+  CHECK(solved(with_k, {}).parts.at(0).answers.at(0).approximations.size() == 1);
+  CHECK(solved(with_k, {"k=0"}).parts.at(0).answers.at(0).approximations.empty());
+}
+
 TEST_CASE("one parameter per --set: several in one are refused with the options to type") {
   const Problem& plate = find_problem("flying-plate");
   for (const std::string several : {"m=0.5,R=0.1", "m=0.5; R=0.1", "m=0.5 R=0.1"}) {
