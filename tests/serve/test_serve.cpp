@@ -170,7 +170,10 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
   const json twice = post_check(c, "flying-plate", {{"part", "a"}, {"name", "I0"},
                                                     {"answer", doubled}, {"variant", 5}});
   CHECK(twice["correct"] == false);
-  CHECK_THAT(twice["feedback"][0].get<std::string>(), Contains("2 times the answer"));
+  // Twice I₀ is the moment about the axis, m R²/2, which the problem file names: at variant
+  // 5's values, not the defaults'.
+  CHECK_THAT(twice["feedback"][0].get<std::string>(),
+             Contains("this is the moment about the symmetry axis, I₃ = m R²/2, 100% above"));
   // A name alone finds its part, as `wobble check --name` does; an unknown one is a 404.
   CHECK(post_check(c, "flying-plate",
                    {{"name", "I0"}, {"answer", right}, {"variant", 5}})["correct"] == true);
