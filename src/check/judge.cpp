@@ -81,22 +81,13 @@ std::string misreading_hint(const Answer& a, const std::string& typed,
     const bool commas = entries_read && split > 0 && *entries_read == a.value.data.size() + split;
     return commas ? fmt::format(" ({})", kDecimalCommaHint) : "";
   }
-  if (looks_like_decimal_comma(typed)) {
-    // "437,200 min": one comma between one to three digits (no leading 0) and three (no
-    // exponent) may be either.
-    const std::size_t start = typed.find_first_not_of(" "), comma = typed.find(',');
-    const std::size_t end =
-        std::min(typed.find_first_not_of("0123456789", comma + 1), typed.size());
-    const std::size_t lead = typed.find_first_not_of("+-", start);
-    if (end - comma == 4 && (end == typed.size() || (typed[end] != 'e' && typed[end] != 'E')) &&
-        comma - lead <= 3 && typed[lead] != '0') {
-      const std::string whole = typed.substr(start, comma - start),
-                        part = typed.substr(comma + 1, 3);
-      return fmt::format(" (a decimal comma, or digits grouped? write {}.{} or {}{})", whole, part,
-                         whole, part);
-    }
-    return fmt::format(" ({})", kDecimalCommaHint);
+  // "437,200 min": a lone comma before three digits may be either.
+  if (const std::string grouped = decimal_comma_or_grouping(typed); !grouped.empty()) {
+    const std::size_t point = grouped.size() - 3;
+    return fmt::format(" (a decimal comma, or digits grouped? write {}.{} or {})",
+                       grouped.substr(0, point), grouped.substr(point), grouped);
   }
+  if (looks_like_decimal_comma(typed)) return fmt::format(" ({})", kDecimalCommaHint);
   const std::string ungrouped = digits_ungrouped(typed);
   return ungrouped.empty() ? "" : fmt::format(" (digits grouped? write {})", ungrouped);
 }

@@ -157,6 +157,17 @@ std::string digits_ungrouped(const std::string& typed) {
   return std::isalpha(c) != 0 || (c >= 0x80 && separator_at(i).second == 0) ? out : "";
 }
 
+std::string decimal_comma_or_grouping(const std::string& typed) {
+  if (!looks_like_decimal_comma(typed)) return "";
+  const std::size_t lead = typed.find_first_not_of("-+ "), comma = typed.find(',');
+  std::size_t end = comma + 1;
+  while (end < typed.size() && is_digit(typed[end])) ++end;
+  const bool exponent = end < typed.size() && (typed[end] == 'e' || typed[end] == 'E');
+  if (comma - lead > 3 || typed[lead] == '0' || end - comma != 4 || exponent) return "";
+  return typed.substr(typed.find_first_not_of(' '), comma - typed.find_first_not_of(' ')) +
+         typed.substr(comma + 1, 3);
+}
+
 bool looks_like_decimal_comma(const std::string& typed) {
   const std::size_t comma = typed.find(',');
   if (comma == std::string::npos || typed.find(',', comma + 1) != std::string::npos) return false;

@@ -47,6 +47,10 @@ std::size_t commas_between_digits(const std::string& typed);
 /// 128,66" and "26,233,128.66" all give "26233128.66"); "" otherwise. One comma alone ("1,234")
 /// is left to looks_like_decimal_comma: it may be either. What follows the number may be a unit.
 std::string digits_ungrouped(const std::string& typed);
+/// Where looks_like_decimal_comma holds and the comma may as well group thousands (one to three
+/// digits, no leading 0, before it; three and no exponent after it: "437,200 min"), the digits
+/// without it ("437200"); "" otherwise ("0,160", "1600,500", "1,6000", "1,600e-3").
+std::string decimal_comma_or_grouping(const std::string& typed);
 /// What a message adds in parentheses where looks_like_decimal_comma holds.
 inline constexpr const char* kDecimalCommaHint = "a decimal comma? write the point: 0.5, not 0,5";
 

@@ -1,7 +1,5 @@
 #include "solvers/solve.hpp"
 
-#include <fmt/format.h>
-
 #include "problem/values.hpp"
 #include "problem/variants.hpp"
 #include "solvers/exact_answer.hpp"

@@ -69,6 +69,18 @@ TEST_CASE("digits grouped by threes are found and written without their separato
   }
 }
 
+TEST_CASE("a lone comma before three digits may be a decimal comma or group thousands") {
+  CHECK(decimal_comma_or_grouping("437,200 min") == "437200");
+  CHECK(decimal_comma_or_grouping("-1,600s") == "-1600");
+  CHECK(decimal_comma_or_grouping(" 12,500") == "12500");
+  // A decimal comma only: a leading 0, four digits before or after, an exponent; no number.
+  for (const char* decimal : {"0,160 s", "1600,500 s", "1,6000 s", "1,600e-3 s", "1,60 s",
+                              "1,600,000 s", "1.600 s", ""}) {
+    INFO(decimal);
+    CHECK(decimal_comma_or_grouping(decimal).empty());
+  }
+}
+
 TEST_CASE("columns count what a terminal shows: a combining mark takes none") {
   CHECK(columns("") == 0);
   CHECK(columns("kg m²") == 5);
