@@ -56,10 +56,27 @@ bool names_a_parameter(const GiNaC::ex& e, const sym::SymbolTable& table) {
   return false;
 }
 
+void require_dimension(const GiNaC::ex& e, const Problem& problem, const sym::SymbolTable& table,
+                       const sym::Values& values, const Answer& answer, const MistakeSpec& m,
+                       const std::string& field, const std::string& where) {
+  if (scales_as(e, problem, table, values, dimension_of(answer.unit, answer.name), field + where))
+    return;
+  throw InputError(fmt::format(
+      "{}: '{}' is not of {}'s dimension, {}: its value does not scale as the answer's when the "
+      "units of mass, length and time do",
+      field, m.value, answer.name,
+      answer.unit.empty()
+          ? "a pure number"
+          : fmt::format("{} ({})", parse_unit(answer.unit, answer.name).dimension_words(),
+                        answer.unit)));
+}
+
 // The mistake's value in the answer's unit (SI): an expression in the parameters at `values`,
-// else a constant with its unit, read as a parameter's value is. An expression is tested at the
-// problem's defaults, where it must have a value; at other values it may have none (m R²/α at
-// α = 0): nullopt, nothing to name there.
+// else a constant with its unit, read as a parameter's value is. An expression must have a value
+// at the problem's defaults, where its dimension is tested, so that the key refuses a wrong one;
+// at other values it may have none (m R²/α at α = 0): nullopt, nothing to name there. Its
+// dimension is tested again where it is used, since a value of zero scales as anything
+// (m² k at k = 0 by default would pass for a mass).
 std::optional<double> mistake_value(const Problem& problem, const sym::Values& values,
                                     const Answer& answer, const MistakeSpec& m,
                                     const std::string& field) {
@@ -76,22 +93,19 @@ std::optional<double> mistake_value(const Problem& problem, const sym::Values& v
     as_answer.range = parse_interval("(-inf, inf)", field);
     return parse_parameter_value(as_answer, m.value, field);
   }
-  if (!scales_as(*expression, problem, table, parameter_values(problem, {}),
-                 dimension_of(answer.unit, answer.name), field + " (at the problem's defaults)")) {
-    throw InputError(fmt::format(
-        "{}: '{}' is not of {}'s dimension, {}: its value does not scale as the answer's when "
-        "the units of mass, length and time do",
-        field, m.value, answer.name,
-        answer.unit.empty()
-            ? "a pure number"
-            : fmt::format("{} ({})", parse_unit(answer.unit, answer.name).dimension_words(),
-                          answer.unit)));
-  }
-  try {
+  const sym::Values defaults = parameter_values(problem, {});
+  require_dimension(*expression, problem, table, defaults, answer, m, field,
+                    " (at the problem's defaults)");
+  if (values == defaults)
     return sym::evaluate(*expression, sym::substitution(table, values), field);
+  double value = 0.0;
+  try {
+    value = sym::evaluate(*expression, sym::substitution(table, values), field);
   } catch (const InputError&) {
     return std::nullopt;
   }
+  if (value != 0.0) require_dimension(*expression, problem, table, values, answer, m, field, "");
+  return value;
 }
 
 Answer* find_answer(Key& key, const std::string& name) {

@@ -17,7 +17,7 @@ namespace wobble {
 ///   number, a constant of another dimension, an expression that does not read or has no value
 ///   at the problem's defaults, or one whose dimension is not the answer's (it does not scale as
 ///   the answer's unit when the units of mass, length and time do: `m*R` for a moment of
-///   inertia).
+///   inertia), tested at the defaults and again at `values` where its value there is not zero.
 void add_named_mistakes(const Problem& problem, const sym::Values& values, Key& key);
 
 }  // namespace wobble

@@ -458,6 +458,21 @@ TEST_CASE("a named mistake in the problem's parameters follows each variant's va
                 "[[parameters]]\nname = \"k\"\nunit = \"\"\ndefault = 1\nrange = \"[0, 2]\"\n\n");
   CHECK(solved(with_k, {}).parts.at(0).answers.at(0).approximations.size() == 1);
   CHECK(solved(with_k, {"k=0"}).parts.at(0).answers.at(0).approximations.empty());
+  // Zero at the defaults scales as anything: the dimension is tested again where it is used. A
+  // mass's square times k = 0 is refused at k = 1; twice a mass times k is 2 kg there.
+  const auto with_zero_k = [&](const std::string& value) {
+    std::string t = with_mistake(value);
+    return t.insert(
+        t.find(body),
+        "[[parameters]]\nname = \"k\"\nunit = \"\"\ndefault = 0\nrange = \"[0, 2]\"\n\n");
+  };
+  CHECK(solved(with_zero_k("m^2*k"), {}).parts.at(0).answers.at(0).approximations.at(0).values ==
+        std::vector<double>{0.0});
+  CHECK_THROWS_WITH(solved(with_zero_k("m^2*k"), {"k=1"}),
+                    Catch::Contains("mistakes[0].value: 'm^2*k' is not of mass's dimension"));
+  CHECK(
+      solved(with_zero_k("2*m*k"), {"k=1"}).parts.at(0).answers.at(0).approximations.at(0).values ==
+      std::vector<double>{2.0});
 }
 
 TEST_CASE("one parameter per --set: several in one are refused with the options to type") {
