@@ -108,10 +108,10 @@ const std::string kPrairieLearnVariants = "1-200", kMoodleVariants = "1-100";
 
 int export_prairielearn(const ExportOptions& opt, const check::Options& judge_opt) {
   const fs::path out = opt.out;
-  std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
-    throw InputError("--out: " + out.string() + " is a file, not a folder");
-  }
+  // Question folders are created with it; a quiz's or an autograder's folder must exist, as for
+  // every file wobble writes (a mistyped folder is no new one). Either is found before the work,
+  // which for a hundred variants takes seconds.
+  require_folder_can_be_made(out, "--out");
   std::vector<Problem> problems;
   std::vector<fs::path> targets;
   for (const auto& id : opt.problems) {
@@ -140,6 +140,7 @@ int export_prairielearn(const ExportOptions& opt, const check::Options& judge_op
 int export_moodle(const ExportOptions& opt, const check::Options& judge_opt) {
   const Problem p = single_problem(opt);
   refuse_to_replace_any({opt.out}, opt.force);
+  require_writable(opt.out);
   const auto set = draw(p, opt, kMoodleVariants, judge_opt);
   const auto quiz = exports::moodle_quiz(p, set, judge_opt);
   write_files({{opt.out, quiz.xml}}, opt.force);
@@ -152,6 +153,7 @@ int export_moodle(const ExportOptions& opt, const check::Options& judge_opt) {
 int export_gradescope(const ExportOptions& opt) {
   const Problem p = single_problem(opt);
   refuse_to_replace_any({opt.out}, opt.force);
+  require_writable(opt.out);
   const std::string check_options =
       opt.tolerance ? fmt::format("--tolerance {}", *opt.tolerance) : std::string();
   const auto files = exports::gradescope_autograder(p, opt.deb, check_options);
@@ -169,18 +171,21 @@ ExportCommands setup_export(CLI::App& app, ExportOptions& opt) {
       "prairielearn", "A PrairieLearn question folder per problem, graded by wobble's rules");
   add_common(*c.prairielearn, opt, true);
   add_variants(*c.prairielearn, opt, kPrairieLearnVariants);
-  c.prairielearn->add_option("--out", opt.out, "Folder for the questions (ID/ inside it)")
+  c.prairielearn
+      ->add_option("--out", opt.out, "Folder for the questions (ID/ inside it; created if missing)")
       ->required();
   c.prairielearn->add_option("--sigfigs", opt.sigfigs,
                              "Grade by N significant figures instead of a tolerance");
   c.moodle = app.add_subcommand("moodle", "A Moodle XML quiz of calculated questions");
   add_common(*c.moodle, opt, false);
   add_variants(*c.moodle, opt, kMoodleVariants);
-  c.moodle->add_option("--out", opt.out, "The quiz file (quiz.xml)")->required();
+  c.moodle->add_option("--out", opt.out, "The quiz file (quiz.xml), in a folder that exists")
+      ->required();
   c.gradescope = app.add_subcommand(
       "gradescope", "A Gradescope autograder zip grading answer files with `wobble check`");
   add_common(*c.gradescope, opt, false);
-  c.gradescope->add_option("--out", opt.out, "The autograder zip")->required();
+  c.gradescope->add_option("--out", opt.out, "The autograder zip, in a folder that exists")
+      ->required();
   c.gradescope->add_option("--deb", opt.deb, "The wobble Debian package it installs")
       ->required();
   return c;

@@ -45,10 +45,7 @@ int write_variants(const KeysOptions& opt, const std::vector<Problem>& problems)
   if (opt.out.empty()) throw InputError("--variants: give the folder with --out DIR");
   const auto [first, last] = variant_range(opt.variants, "--variants");
   const std::filesystem::path dir = opt.out;
-  std::error_code ec;
-  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
-    throw InputError("--out: " + dir.string() + " is a file, not a folder");
-  }
+  require_folder_can_be_made(dir, "--out");
   // Refuse before writing anything, so a refusal leaves the folder as it was.
   std::vector<std::pair<std::filesystem::path, std::string>> files;
   for (const auto& p : problems) {

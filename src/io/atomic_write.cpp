@@ -9,6 +9,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/input_error.hpp"
+
 namespace wobble {
 
 bool write_fully(int fd, std::string_view data) {
@@ -36,17 +38,38 @@ void require_regular_or_absent(const std::filesystem::path& target) {
   }
 }
 
-void require_writable(const std::filesystem::path& target) {
-  require_regular_or_absent(target);
-  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
+void require_can_create_in(const std::filesystem::path& dir, const std::string& what) {
   std::string tmpl = (dir / ".wobble-probe.XXXXXX").string();
   const int fd = ::mkstemp(tmpl.data());
   if (fd < 0) {
-    throw std::runtime_error(target.string() + ": cannot be written here (" +
-                             std::strerror(errno) + "); nothing was computed");
+    throw std::runtime_error(what + ": cannot be written here (" + std::strerror(errno) +
+                             "); nothing was computed");
   }
   ::close(fd);
   ::unlink(tmpl.c_str());
+}
+
+void require_folder_can_be_made(const std::filesystem::path& dir, const std::string& option) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
+    throw InputError(option + ": " + dir.string() + " is a file, not a folder");
+  }
+  fs::path existing = fs::absolute(dir, ec);
+  while (!fs::exists(existing, ec) && existing.has_relative_path())
+    existing = existing.parent_path();
+  if (!fs::is_directory(existing, ec)) {
+    throw InputError(option + ": " + dir.string() + ": " + existing.string() +
+                     " is a file, not a folder");
+  }
+  require_can_create_in(existing,
+                        option + ": " + dir.string() +
+                            (fs::exists(dir, ec) ? "" : " (in " + existing.string() + ")"));
+}
+
+void require_writable(const std::filesystem::path& target) {
+  require_regular_or_absent(target);
+  require_can_create_in(target.has_parent_path() ? target.parent_path() : ".", target.string());
 }
 
 namespace {

@@ -19,6 +19,18 @@ bool write_fully(int fd, std::string_view data);
 ///         /dev/null, a folder, a symbolic link): wobble replaces regular files only.
 void require_regular_or_absent(const std::filesystem::path& target);
 
+/// Fails before any work if no file can be created in the folder `dir` (a temporary is created
+/// there exclusively and removed again).
+/// @throws std::runtime_error "`what`: cannot be written here (why); nothing was computed".
+void require_can_create_in(const std::filesystem::path& dir, const std::string& what);
+
+/// Fails before any work if the folder `dir` (given as option `option`) is a file, or is missing
+/// and could not be created with its parents, or exists and takes no file: the nearest folder on
+/// its path that exists must take one.
+/// @throws InputError "`option`: `dir` is a file, not a folder" (or an ancestor is);
+///         std::runtime_error "`option`: `dir` (in that folder): cannot be written here (why)".
+void require_folder_can_be_made(const std::filesystem::path& dir, const std::string& option);
+
 /// Fails before any work if `target` could not be written: not a regular file, or its folder
 /// missing or not writable (a temporary is created there exclusively and removed again).
 /// @throws std::runtime_error naming the file and why.
