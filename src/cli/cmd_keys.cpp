@@ -25,7 +25,7 @@ void setup_keys(CLI::App& app, KeysOptions& opt) {
   app.add_option("--out", opt.out, "Folder for --variants")->needs(variants);
   app.add_flag("--force", opt.force, "Overwrite existing files in --out")->needs(variants);
   app.add_option("--problem", opt.problems,
-                 "Only this problem (an id from `wobble list`); repeatable")
+                 "Only this problem (an id from `wobble list`, or a problem file); repeatable")
       ->needs(variants)
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -70,24 +70,39 @@ int write_variants(const KeysOptions& opt, const std::vector<Problem>& problems)
              last, problems.size(), problems.size() == 1 ? "" : "s", dir.string());
   return kExitOk;
 }
+// The problems --problem names, each an id from the catalog or a problem file anywhere (as for
+// `solve`), each once: one named twice is one; two files of one id would share the keys' names.
+std::vector<Problem> chosen_problems(const std::vector<std::string>& named) {
+  std::vector<Problem> chosen;
+  for (const auto& id_or_file : named) {
+    Problem p = [&] {
+      try {
+        return find_problem(id_or_file);
+      } catch (const InputError& e) {
+        const std::string what = e.what();
+        // An unknown id names the option; a file's own errors name the file and its field.
+        if (what.rfind("unknown problem", 0) == 0) throw InputError("--problem: " + what);
+        throw;
+      }
+    }();
+    std::error_code ec;
+    const auto same =
+        std::find_if(chosen.begin(), chosen.end(), [&](const Problem& q) { return q.id == p.id; });
+    if (same == chosen.end()) {
+      chosen.push_back(std::move(p));
+    } else if (!std::filesystem::equivalent(same->file, p.file, ec)) {
+      throw InputError(fmt::format(
+          "--problem: '{}' and '{}' are both problem '{}'; their keys would share file names",
+          same->file.string(), p.file.string(), p.id));
+    }
+  }
+  return chosen;
+}
+
 }  // namespace
 
 int run_keys(const KeysOptions& opt) {
-  auto problems = load_catalog();
-  if (!opt.problems.empty()) {
-    std::vector<Problem> chosen;
-    for (const auto& id : opt.problems) {
-      const auto it = std::find_if(problems.begin(), problems.end(),
-                                   [&](const Problem& p) { return p.id == id; });
-      if (it == problems.end()) {
-        std::string known;
-        for (const auto& p : problems) known += (known.empty() ? "" : ", ") + p.id;
-        throw InputError("--problem: unknown problem '" + id + "' (known: " + known + ")");
-      }
-      chosen.push_back(*it);
-    }
-    problems = chosen;
-  }
+  const auto problems = opt.problems.empty() ? load_catalog() : chosen_problems(opt.problems);
   if (!opt.variants.empty()) return write_variants(opt, problems);
   if (!opt.check && !opt.update) throw InputError("keys: give --check, --update or --variants");
   const auto dir = solutions_dir();

@@ -560,6 +560,30 @@ TEST_CASE(
               .exit_code == 0);
   REQUIRE(std::distance(fs::directory_iterator(one), fs::directory_iterator()) == 6);
   REQUIRE(fs::exists(one / "rect-solid-v3.json"));
+  // A problem file anywhere, as for solve; one named twice (by its id and its path) is one, and
+  // two files of one id, whose keys would share names, are refused before anything is written.
+  const fs::path catalog_file = fs::path(WOBBLE_SOURCE_DIR) / "problems" / "rect-solid.toml";
+  const fs::path by_file = scratch_dir() / "variants-file";
+  fs::remove_all(by_file);
+  const RunResult twice =
+      run_wobble({"keys", "--variants", "1-3", "--problem", "rect-solid", "--problem",
+                  catalog_file.string(), "--out", by_file.string()});
+  INFO(twice.err);
+  REQUIRE(twice.exit_code == 0);
+  REQUIRE(std::distance(fs::directory_iterator(by_file), fs::directory_iterator()) == 6);
+  REQUIRE(slurp(by_file / "rect-solid-v2.json") == slurp(one / "rect-solid-v2.json"));
+  const fs::path copy = scratch_dir() / "variants-copy" / "rect-solid.toml";
+  fs::create_directories(copy.parent_path());
+  fs::copy_file(catalog_file, copy, fs::copy_options::overwrite_existing);
+  const fs::path never = scratch_dir() / "variants-never";
+  fs::remove_all(never);
+  const RunResult clash = run_wobble({"keys", "--variants", "1-3", "--problem", "rect-solid",
+                                      "--problem", copy.string(), "--out", never.string()});
+  REQUIRE(clash.exit_code == 2);
+  REQUIRE_THAT(clash.err, Catch::Contains("--problem: '") &&
+                              Catch::Contains("are both problem 'rect-solid'; their keys would "
+                                              "share file names"));
+  REQUIRE_FALSE(fs::exists(never));
   const RunResult refused = run_wobble({"keys", "--variants", "1-2", "--out", dir.string()});
   REQUIRE(refused.exit_code == 2);
   REQUIRE_THAT(refused.err, Catch::Contains("exists; use --force to overwrite it"));
