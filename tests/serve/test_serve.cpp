@@ -379,19 +379,28 @@ TEST_CASE("a class at work: 200 students, 20 checks each, no error, memory flat"
   const long after_first = resident_bytes();
   const LoadResult second = class_at_work(r, kStudents, kChecksEach);
   const long after_second = resident_bytes();
+  const LoadResult third = class_at_work(r, kStudents, kChecksEach);
+  const long after_third = resident_bytes();
   // Every request answered (4xx for the unreadable answers is an answer), none failed.
   CHECK(first.latency_ms.size() == kStudents * (kChecksEach + 1));
   CHECK(first.errors == 0);
   CHECK(second.errors == 0);
-  // The keys are cached after the first round: the second holds no more memory than the first
-  // left, give or take the allocator's pools and the sanitizer's quarantine.
-  CHECK(after_second <= after_first + after_first / 10 + kQuarantineBytes);
+  CHECK(third.errors == 0);
+  // The keys are cached after the first round: the third holds no more memory than the second
+  // left, give or take the allocator's pools and the sanitizer's quarantine. The second is the
+  // baseline, not the first: the allocator's per-thread arenas are still being taken up by the
+  // server's workers in the second round (6-10% more resident on the 2-core machine). A leak of
+  // two kilobytes a request (8.4 MB a round) is over the tenth of the 70-80 MB held.
+  CHECK(after_third <= after_second + after_second / 10 + kQuarantineBytes);
   // Measured, not asserted (timings on a shared machine are noise for a test): reported here
   // and in the README.
-  std::printf("load: %zu requests; first round (keys computed) p50 %.1f ms, p99 %.1f ms; "
-              "second round (keys cached) p50 %.1f ms, p99 %.1f ms; resident %.0f MB -> %.0f MB\n",
-              first.latency_ms.size() + second.latency_ms.size(), percentile(first.latency_ms, 0.5),
-              percentile(first.latency_ms, 0.99), percentile(second.latency_ms, 0.5),
-              percentile(second.latency_ms, 0.99), static_cast<double>(after_first) / 1e6,
-              static_cast<double>(after_second) / 1e6);
+  std::printf(
+      "load: %zu requests; first round (keys computed) p50 %.1f ms, p99 %.1f ms; "
+      "later rounds (keys cached) p50 %.1f ms, p99 %.1f ms; resident %.0f MB -> %.0f MB "
+      "-> %.0f MB\n",
+      first.latency_ms.size() + second.latency_ms.size() + third.latency_ms.size(),
+      percentile(first.latency_ms, 0.5), percentile(first.latency_ms, 0.99),
+      percentile(third.latency_ms, 0.5), percentile(third.latency_ms, 0.99),
+      static_cast<double>(after_first) / 1e6, static_cast<double>(after_second) / 1e6,
+      static_cast<double>(after_third) / 1e6);
 }
