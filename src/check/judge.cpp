@@ -14,6 +14,7 @@
 #include <tuple>
 #include <utility>
 
+#include "check/absent_answer.hpp"
 #include "check/answer_reading.hpp"
 #include "check/axes_judge.hpp"
 #include "check/brackets.hpp"
@@ -28,6 +29,7 @@
 #include "check/names_put_in.hpp"
 #include "check/plus_minus.hpp"
 #include "check/program_notation.hpp"
+#include "check/submission.hpp"
 #include "check/symbol_values.hpp"
 #include "check/unit_arithmetic.hpp"
 #include "check/written_forms.hpp"
@@ -1846,6 +1848,10 @@ Verdict judge_text(const Context& ctx, const Answer& a, const std::string& text,
 
 Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
               const Options& options) {
+  // "none" for an answer that exists (where it does not, absent_answer.hpp judges it right).
+  const auto labelled = answer_line(text);
+  if (says_none(text) || (labelled && says_none(labelled->answer)))
+    return {false, "incorrect: " + a.name + " exists at these values", {}};
   // "7.2 × 10−4 kg m2": read as written, 7.2 × 6; the verdict says so, and whether the power
   // of ten it lost would be right. Where the text reads only with the power, the refusal says
   // how to write it.

@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "check/absent_answer.hpp"
 #include "check/brackets.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
@@ -179,6 +180,23 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
       }
       if (it != given.end()) given.erase(it);
       result.answers.push_back(std::move(s));
+    }
+    // An answer that does not exist at these values is judged where a line answers it ("none"
+    // is right: absent_answer.hpp); unanswered, it is asked of no one. Without the key's reason,
+    // as an autograder's verdicts are shown before a resubmission: a slow top's gives ω3, part
+    // (c)'s answer.
+    for (const auto& name : part.absent) {
+      auto it = given.end();
+      for (auto g = given.begin(); g != given.end(); ++g) {
+        if ((g->first == name || spelling.at(g->first) == name_spelling(name)) &&
+            (it == given.end() || g->second.number < it->second.number))
+          it = g;
+      }
+      if (it == given.end()) continue;
+      auto verdict = judge_absent(ctx.key, part.id, name, it->second.answer);
+      verdict->feedback.clear();
+      result.answers.push_back({part.id, name, true, it->second.answer, *verdict});
+      given.erase(it);
     }
   }
   for (const auto& [name, line] : given) {

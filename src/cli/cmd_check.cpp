@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "check/absent_answer.hpp"
 #include "check/answer_choice.hpp"
 #include "check/judge.hpp"
 #include "check/submission.hpp"
@@ -254,8 +255,13 @@ int run_check(const CheckOptions& opt) {
   // "I₀", "I_0": an answer's name as the statement or a LaTeX handout writes it. A part of
   // several answers with none named: the one the answer's label names, the only one it is right
   // for, or the only one it reads as a value of (check/answer_choice.hpp).
-  const Answer& answer = check::answer_for(ctx, part, opt.name, typed, o, "part", "--name");
-  const check::Verdict v = judged_as_typed(ctx, answer, typed, o, opt.answer_by_option);
+  // An answer that does not exist at these values: "none" is right (check/absent_answer.hpp).
+  const auto absent = check::judge_absent(key, part, opt.name, typed);
+  const check::Verdict v =
+      absent
+          ? *absent
+          : judged_as_typed(ctx, check::answer_for(ctx, part, opt.name, typed, o, "part", "--name"),
+                            typed, o, opt.answer_by_option);
   const std::size_t width = terminal_columns();
   fmt::print("{}", word_wrapped(v.line, width, "", "  "));
   for (const auto& f : v.feedback) fmt::print("{}", word_wrapped(f, width, "  ", "    "));

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "check/absent_answer.hpp"
 #include "check/answer_choice.hpp"
 #include "check/judge.hpp"
 #include "core/input_error.hpp"
@@ -258,6 +259,12 @@ struct Server::Impl {
     const auto e = entry(p, variant);
     const Answer* a = nullptr;
     const check::Context ctx{e->key, e->table, e->values};
+    // An answer that does not exist at these values: "none" is right (check/absent_answer.hpp).
+    // Without the key's reason, as the page names it: a slow top's gives ω3, part (c)'s answer.
+    if (auto absent = check::judge_absent(e->key, part_id, name, answer)) {
+      absent->feedback.clear();
+      return send_verdict(res, *absent);
+    }
     try {
       // No name for a part of several answers: the one the answer's label names, the only one
       // it is right for, or the only one it reads as a value of (check/answer_choice.hpp).
@@ -275,6 +282,10 @@ struct Server::Impl {
                        : bare.rfind("entry ", 0) == 0 ? "answer, " + bare
                                                       : "answer: " + bare);
     }
+    send_verdict(res, v);
+  }
+
+  static void send_verdict(httplib::Response& res, const check::Verdict& v) {
     send_json(res, json{{"correct", v.correct}, {"verdict", v.line}, {"feedback", v.feedback}}.dump());
   }
 };

@@ -321,18 +321,31 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
                Catch::StartsWith(
                    "wobble: --name: problem flying-plate has no answer 'Omega' (answers: I0, ") &&
                    Catch::Contains("Omega_space_rate"));
-  // An answer that does not exist at these values names its part and says so.
+  // An answer that does not exist at these values: a number is wrong, "none" is right, and
+  // either verdict names its part and says why (a spin too slow for steady precession).
   const RunResult absent = run_wobble(
       {"check", "heavy-top", "--name", "phidot_slow", "--set", "psidot0=10", "--answer", "1"});
-  REQUIRE(absent.exit_code == 2);
-  REQUIRE_THAT(absent.err, Catch::Contains("part d of heavy-top has nothing to check"));
-  // One absent beside others (a horizontal axle has no fast precession): the line says why.
-  const RunResult horizontal = run_wobble(
-      {"check", "heavy-top", "--name", "phidot_fast", "--set", "theta0=90deg", "--answer", "1"});
-  REQUIRE(horizontal.exit_code == 2);
-  REQUIRE_THAT(horizontal.err,
-               Catch::Contains("phidot_fast (part d) does not exist at these values: θ0 = 90°: "
-                               "the axle is horizontal"));
+  REQUIRE(absent.exit_code == 1);
+  REQUIRE_THAT(absent.out,
+               Catch::StartsWith("incorrect: phidot_slow (part d) does not exist at these values\n"
+                                 "  No steady precession at θ0 = 0.5235987756 rad"));
+  const RunResult none =
+      run_wobble({"check", "heavy-top", "d", "--set", "psidot0=10", "--answer", "none"});
+  REQUIRE(none.exit_code == 0);
+  REQUIRE_THAT(none.out, Catch::StartsWith("correct: phidot_slow, phidot_fast (part d) do not "
+                                           "exist at these values\n  No steady precession"));
+  // One absent beside others (a horizontal axle has no fast precession): the line says why;
+  // "none" for the one that exists is wrong.
+  const RunResult horizontal =
+      run_wobble({"check", "heavy-top", "--set", "theta0=90deg", "phidot_fast = does not exist"});
+  REQUIRE(horizontal.exit_code == 0);
+  REQUIRE_THAT(horizontal.out,
+               Catch::StartsWith("correct: phidot_fast (part d) does not exist at these values\n"
+                                 "  θ0 = 90°: the axle is horizontal"));
+  const RunResult exists =
+      run_wobble({"check", "heavy-top", "--set", "theta0=90deg", "phidot_slow = none"});
+  REQUIRE(exists.exit_code == 1);
+  REQUIRE(exists.out == "incorrect: phidot_slow exists at these values\n");
   const RunResult neither = run_wobble({"check", "flying-plate", "--answer", "1"});
   REQUIRE(neither.exit_code == 2);
   // Neither a part nor a name: the line says how, with this problem's answers by part.

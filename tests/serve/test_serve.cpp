@@ -217,6 +217,25 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
   CHECK_THAT(post_check(c, "flying-plate", {{"answer", right}}, 400)["error"].get<std::string>(),
              StartsWith("part or name: neither is given") &&
                  Contains("(answers: (a) I0, I; (b) L0_body, L0_space; "));
+  // A variant whose top spins too slowly for steady precession: part d has no answer, and
+  // "none" is right for it over HTTP too (a number wrong), without the key's reason, which
+  // gives ω3 (part c's answer) away, as the page does.
+  int slow = 0;
+  for (int n = 1; n <= 20 && slow == 0; ++n) {
+    const json view = get_json(c, "/api/problems/heavy-top?variant=" + std::to_string(n));
+    if (view["parts"][3].contains("absent") && view["parts"][3]["answers"].empty()) slow = n;
+  }
+  REQUIRE(slow > 0);
+  const json none =
+      post_check(c, "heavy-top", {{"part", "d"}, {"answer", "none"}, {"variant", slow}});
+  CHECK(none["correct"] == true);
+  CHECK(none["verdict"] ==
+        "correct: phidot_slow, phidot_fast (part d) do not exist at these values");
+  CHECK(none["feedback"] == json::array());
+  CHECK(
+      post_check(c, "heavy-top",
+                 {{"name", "phidot_fast"}, {"answer", "12 rad/s"}, {"variant", slow}})["verdict"] ==
+      "incorrect: phidot_fast (part d) does not exist at these values");
   // The hint as the problem file writes it: its math in $...$, for the page to typeset.
   CHECK_THAT(get_json(c, "/api/problems/flying-plate/hint?part=a")["hint"].get<std::string>(),
              StartsWith("A thin disc: $I_3 = m R^2/2$ about its axis"));
