@@ -62,10 +62,12 @@ constexpr std::array kNone{"none",
                            "no steady precession",
                            "there is no steady precession"};
 
-// What may follow a phrase: a reason after a separator or a conjunction.
+// What may follow a phrase: "at these values" (as a key prints it), then a reason after a
+// separator or a conjunction.
 bool is_reason(const std::string& rest) {
-  if (rest.empty()) return true;
-  const std::string r = rest.front() == ' ' ? rest.substr(1) : rest;
+  std::string r = rest.rfind(" at these values", 0) == 0 ? rest.substr(16) : rest;
+  if (r.empty()) return true;
+  if (r.front() == ' ') r.erase(0, 1);
   for (const std::string start :
        {",", ";", ":", "(", "-", "\u2013", "\u2014", "because ", "since ", "as "}) {
     if (r.rfind(start, 0) == 0) return true;

@@ -9,7 +9,8 @@
 /// exist", "doesn't exist", "there is none", "there are none", "no solution", "no real root",
 /// "no steady precession", "impossible", "undefined" (with "it"/"they" before a verb, any case,
 /// a final '.'), alone or followed by a reason after a ',', ';', ':', '(' or a dash ("none: the
-/// spin is below 688 rad/s"). A bare "no" is not: it answers no question asked here.
+/// spin is below 688 rad/s"), "at these values" between them as a key prints it ("none at these
+/// values (step 2 says why)"). A bare "no" is not: it answers no question asked here.
 #include <optional>
 #include <string>
 

@@ -1,5 +1,7 @@
 #include "render/common.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -119,6 +121,15 @@ std::string value_text(const Value& v, const std::string& indent) {
     s += " ]";
   }
   return s;
+}
+
+std::string absent_answer_text(const PartKey& part, std::size_t i) {
+  const std::string why = i < part.absent_why.size() ? part.absent_why[i] : "";
+  for (std::size_t k = 0; k < part.steps.size() && !why.empty(); ++k) {
+    if (part.steps[k].text == why)
+      return fmt::format("none at these values (step {} says why)", k + 1);
+  }
+  return "none at these values (the steps say why)";
 }
 
 }  // namespace wobble::detail

@@ -21,6 +21,11 @@ std::string pretty(const std::string& ginac_text);
 std::string unit_text(const std::string& unit);
 std::string unit_latex(const std::string& unit);
 
+/// What a key says for its part's `i`-th answer that does not exist at these values, after the
+/// answer's name: "none at these values (step 2 says why)", the step the one that says why
+/// (PartKey::absent_why), else "(the steps say why)". `check` reads it back as "none".
+std::string absent_answer_text(const PartKey& part, std::size_t i);
+
 /// Numbers of a value: "3.5", "(1, 0, 0)", or matrix rows, one per line with the given indent.
 std::string value_text(const Value& v, const std::string& indent);
 

@@ -242,6 +242,12 @@ std::string render_latex(const Key& key) {
              detail::unit_latex(a.unit) + "}\n";
       for (const auto& n : a.notes) out += "\\emph{Note:} " + latex_text(n, names) + "\n\n";
     }
+    for (std::size_t i = 0; i < part.absent.size(); ++i) {
+      const auto symbol = detail::answer_symbol_latex(part.absent[i]);
+      out += "\\noindent" + (symbol ? "$" + *symbol + "$\\quad" : std::string()) +
+             "{\\small\\texttt{" + texttt_escaped(part.absent[i]) +
+             "}}: " + detail::absent_answer_text(part, i) + "\n\n";
+    }
     if (!part.steps.empty()) {
       out += "\\paragraph{Steps}\n\\begin{enumerate}\n";
       for (const auto& s : part.steps) {

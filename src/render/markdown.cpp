@@ -37,6 +37,9 @@ std::string render_markdown(const Key& key) {
       for (const auto& n : a.notes) out += "> " + prose(n) + "\n>\n";
       if (!a.notes.empty()) out.resize(out.size() - 2), out += "\n";
     }
+    for (std::size_t i = 0; i < part.absent.size(); ++i) {
+      out += fmt::format("**`{}`** = {}\n\n", part.absent[i], detail::absent_answer_text(part, i));
+    }
     if (!part.steps.empty()) {
       out += "Steps:\n\n";
       for (std::size_t i = 0; i < part.steps.size(); ++i) {

@@ -58,6 +58,8 @@ std::string render_text(const Key& key, std::size_t width) {
       for (const auto& n : a.notes)
         out += word_wrapped(prose(n), width, "      note: ", std::string(12, ' '));
     }
+    for (std::size_t i = 0; i < part.absent.size(); ++i)
+      out += "    " + part.absent[i] + " = " + detail::absent_answer_text(part, i) + "\n";
     if (!part.steps.empty()) {
       out += "  Steps:\n";
       for (std::size_t i = 0; i < part.steps.size(); ++i) {
