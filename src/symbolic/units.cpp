@@ -293,6 +293,11 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       j = end;
     }
     if (name == "per") {  // "radians per second", "metres per second per second"
+      if (!any && !denominator) {  // "4 per second", as "4/s" is said: a reciprocal unit
+        denominator = true;
+        i = j;
+        continue;
+      }
       if (const std::string missing = divide("'per'"); !missing.empty()) return fail(missing);
       i = j;
       continue;

@@ -148,12 +148,16 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
                                                         {"1/s/s", "s^-2"},
                                                         {"rad/s/s", "rad/s^2"},
                                                         {"J/kg/s", "J/kg s"},
-                                                        {"kg m^2/s/s", "J"}}) {
+                                                        {"kg m^2/s/s", "J"},
+                                                        {"per second", "1/s"},
+                                                        {"per minute per s", "1/min s"}}) {
     INFO(written);
     const Unit u = parse_unit(written, "u");
     REQUIRE(u.dim == parse_unit(same, "u").dim);
     REQUIRE_THAT(u.to_si, WithinULP(parse_unit(same, "u").to_si, 0));
   }
+  // "4 per second", as a rate is said: a leading "per" is "1/"; "per" with nothing after is not.
+  REQUIRE_THROWS_WITH(parse_unit("per", "u"), Catch::Contains("cannot read the unit 'per'"));
   // Units run together are refused, with the same written apart to copy.
   REQUIRE_THROWS_WITH(parse_unit("kgm^2", "u"),
                       Catch::Contains("unknown unit 'kgm' ('kg m', with spaces?)"));
@@ -181,11 +185,11 @@ TEST_CASE("units: SI factors, dimensions and the grammar's errors") {
   }
   CHECK_FALSE(units_run_together("mN"));  // a millinewton, though m and N are names too
   for (const std::string bad :
-       {"furlong", "kg^x",  "m//s",    "/s",          "kg^123",      "",          "kg m^2 !",
-        "1/",      "2/s",   "1/s/",    "s^(-1",       "s^()",        "s^(-)",     "s^(-1))",
-        "kg-",     "kg.",   ".kg",     "-kg",         "m22",         "kg..m",     "rad/",
-        "kg /",    "per s", "rad per", "m per s per", "m per per s", "m / per s", "pers",
-        "m-",      "m2-",   "s--1"}) {
+       {"furlong", "kg^x", "m//s",    "/s",          "kg^123",      "",          "kg m^2 !",
+        "1/",      "2/s",  "1/s/",    "s^(-1",       "s^()",        "s^(-)",     "s^(-1))",
+        "kg-",     "kg.",  ".kg",     "-kg",         "m22",         "kg..m",     "rad/",
+        "kg /",    "per",  "rad per", "m per s per", "m per per s", "m / per s", "pers",
+        "m-",      "m2-",  "s--1"}) {
     INFO(bad);
     REQUIRE_THROWS_AS(parse_unit(bad, "--answer"), InputError);
   }

@@ -961,6 +961,8 @@ TEST_CASE("units written out, and degree signs from keyboards without one") {
   }
   REQUIRE_FALSE(top.check("theta_max", fmt::format("{:.6g} degrees", theta)).correct);
   REQUIRE(top.check("omega3_min", fmt::format("{:.6g} radians per second", w3)).correct);
+  REQUIRE(top.check("omega3_min", fmt::format("{:.6g} per second", w3)).correct);
+  REQUIRE_FALSE(top.check("omega3_min", fmt::format("{:.6g} per minute", w3)).correct);
   // Glued to the number, as --set takes an angle: where no symbol has the unit's letters.
   REQUIRE(top.check("theta_max", degrees + "deg").correct);
   REQUIRE(top.check("omega3_min", fmt::format("{:.6g}rad/s", w3)).correct);
