@@ -141,6 +141,7 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
   std::map<std::string, std::string> spelling;  // of each answer's name and each line's
   for (const auto& part : ctx.key.parts) {
     for (const auto& a : part.answers) spelling.emplace(a.name, name_spelling(a.name));
+    for (const auto& name : part.absent) spelling.emplace(name, name_spelling(name));
   }
   const std::map<std::string, std::string> answer_spelling = spelling;
   for (const auto& [name, line] : given) spelling.emplace(name, name_spelling(name));
@@ -181,22 +182,21 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
       if (it != given.end()) given.erase(it);
       result.answers.push_back(std::move(s));
     }
-    // An answer that does not exist at these values is judged where a line answers it ("none"
-    // is right: absent_answer.hpp); unanswered, it is asked of no one. Without the key's reason,
-    // as an autograder's verdicts are shown before a resubmission: a slow top's gives ω3, part
-    // (c)'s answer.
+    // An answer that does not exist at these values is asked as the others are ("none" is right:
+    // absent_answer.hpp), so that every variant's submission has the same answers to give.
+    // Without the key's reason, as an autograder's verdicts are shown before a resubmission: a
+    // slow top's gives ω3, part (c)'s answer.
     for (const auto& name : part.absent) {
-      auto it = given.end();
-      for (auto g = given.begin(); g != given.end(); ++g) {
-        if ((g->first == name || spelling.at(g->first) == name_spelling(name)) &&
-            (it == given.end() || g->second.number < it->second.number))
-          it = g;
+      const auto it = line_for(name);
+      if (it == given.end() || it->second.answer.empty()) {
+        result.answers.push_back(
+            {part.id, name, false, "", {false, "incorrect: " + name + " is not answered", {}}});
+      } else {
+        auto verdict = judge_absent(ctx.key, part.id, name, it->second.answer);
+        verdict->feedback.clear();
+        result.answers.push_back({part.id, name, true, it->second.answer, *verdict});
       }
-      if (it == given.end()) continue;
-      auto verdict = judge_absent(ctx.key, part.id, name, it->second.answer);
-      verdict->feedback.clear();
-      result.answers.push_back({part.id, name, true, it->second.answer, *verdict});
-      given.erase(it);
+      if (it != given.end()) given.erase(it);
     }
   }
   for (const auto& [name, line] : given) {

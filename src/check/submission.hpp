@@ -28,7 +28,9 @@ struct SubmittedAnswer {
 };
 
 struct SubmissionResult {
-  std::vector<SubmittedAnswer> answers;  ///< every answer of the key, in the key's order
+  /// Every answer of the key, in the key's order, each part's answers that do not exist at
+  /// these values after the others ("none" is right for them: absent_answer.hpp).
+  std::vector<SubmittedAnswer> answers;
   std::vector<std::string> problems;     ///< lines that name no answer, or name one twice
   bool all_correct() const;
 };

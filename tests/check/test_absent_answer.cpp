@@ -107,26 +107,38 @@ TEST_CASE("a part with one answer absent: the part alone names the one that exis
         "incorrect: phidot_slow exists at these values");
 }
 
-TEST_CASE("a submission's line for an answer that does not exist is judged, not refused") {
+TEST_CASE("a submission asks for an answer that does not exist as for any other") {
   const Fixture slow("heavy-top", {"psidot0=10"});
-  const auto result = check::judge_submission({slow.key, slow.table, slow.values},
-                                              "omega3 = 10 rad/s\n"
-                                              "phidot_slow = none\n"
-                                              "phidot_fast = 12 rad/s\n",
-                                              {});
-  CHECK(result.problems.empty());
-  std::vector<std::string> lines;
-  for (const auto& a : result.answers) {
-    if (a.part == "d") lines.push_back(a.verdict.line);
-  }
-  CHECK(lines ==
+  const auto part_d = [](const check::SubmissionResult& result) {
+    std::vector<std::string> lines;
+    for (const auto& a : result.answers) {
+      if (a.part != "d") continue;
+      // Without the reason, which gives ω3 (part c's answer) away before a resubmission.
+      CHECK(a.verdict.feedback.empty());
+      lines.push_back(a.verdict.line);
+    }
+    return lines;
+  };
+  const check::Context ctx{slow.key, slow.table, slow.values};
+  const auto given = check::judge_submission(ctx,
+                                             "omega3 = 10 rad/s\n"
+                                             "phidot_slow = none\n"
+                                             "φ̇_fast = 12 rad/s\n",
+                                             {});
+  CHECK(given.problems.empty());
+  CHECK(part_d(given) ==
         std::vector<std::string>{"correct: phidot_slow (part d) does not exist at these values",
                                  "incorrect: phidot_fast (part d) does not exist at these values"});
-  CHECK_FALSE(result.all_correct());
-  // Without the reason, which gives ω3 (part c's answer) away before a resubmission.
-  for (const auto& a : result.answers) {
-    if (a.part == "d") CHECK(a.verdict.feedback.empty());
-  }
+  CHECK_FALSE(given.all_correct());
+  // Unanswered, it is not answered, as any other: every variant has the same answers to give.
+  const auto left = check::judge_submission(ctx, "omega3 = 10 rad/s\n", {});
+  CHECK(part_d(left) == std::vector<std::string>{"incorrect: phidot_slow is not answered",
+                                                 "incorrect: phidot_fast is not answered"});
+  // Answered twice in two spellings: the first is judged, the second reported.
+  const auto twice = check::judge_submission(ctx, "phidot_slow = none\nφ̇_slow = 3 rad/s\n", {});
+  CHECK(part_d(twice).at(0) == "correct: phidot_slow (part d) does not exist at these values");
+  REQUIRE(twice.problems.size() == 1);
+  CHECK_THAT(twice.problems[0], Catch::Contains("answers phidot_slow again"));
 }
 
 TEST_CASE(

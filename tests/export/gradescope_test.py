@@ -4,8 +4,8 @@
     gradescope_test.py WOBBLE PROBLEM_ID
 
 The zip is unpacked into ROOT/source (scripts must be executable); run_autograder runs with
-AUTOGRADER_ROOT=ROOT and WOBBLE=the built program on: the key's answers of variant 3 (full
-score), the same with one answer doubled, one left out and a line naming no answer (the
+AUTOGRADER_ROOT=ROOT and WOBBLE=the built program on: the key's answers of variant 3, "none"
+for those that do not exist there (full score, one test each), the same with one answer doubled, one left out and a line naming no answer (the
 doubled one fails with wobble's "2 times" message, the missing one "not answered", the stray
 line reported), and no answers file at all (score 0 with a message). The package carried is a
 stand-in with the Debian magic (the real one is installed by the package test).
@@ -73,26 +73,36 @@ def main():
                                          "json"], check=True, capture_output=True,
                                         text=True).stdout)
         answers = [a for p in key["parts"] for a in p["answers"]]
-        right = ["variant = 3"] + [answer_line(a) for a in answers]
+        # An answer that does not exist at the variant's values (a heavy top too slow for steady
+        # precession) is asked too, and "none", as the key prints it, is right for it.
+        absent = [name for p in key["parts"] for name in p.get("absent", [])]
+        right = (["variant = 3"] + [answer_line(a) for a in answers] +
+                 ["%s = none at these values" % name for name in absent])
         results = grade(root, wobble, right)
-        expect(results["score"] == len(answers), "the key scores %s of %d: %s" % (
-            results["score"], len(answers), json.dumps(results)[:400]))
+        expect(results["score"] == len(answers) + len(absent), "the key scores %s of %d: %s" % (
+            results["score"], len(answers) + len(absent), json.dumps(results)[:400]))
+        expect(len(results["tests"]) == len(answers) + len(absent),
+               "%d tests for %d answers" % (len(results["tests"]), len(answers) + len(absent)))
         expect(all(t["max_score"] == 1 and t["status"] == "passed" for t in results["tests"]),
                "a test of the key failed")
         doubled = dict(answers[0])
         doubled["value"] = json.loads(json.dumps(doubled["value"]), parse_float=lambda x: 2 * float(x))
-        wrong = ["variant = 3", answer_line(doubled)] + [answer_line(a) for a in answers[2:]]
+        wrong = (["variant = 3", answer_line(doubled)] + [answer_line(a) for a in answers[2:]] +
+                 ["%s = none" % name for name in absent])
         wrong.append("no_such_answer = 1")
         results = grade(root, wobble, wrong)
         tests = results["tests"]
-        expect(results["score"] == len(answers) - 2, "wrong submission scores %s" % results["score"])
+        expect(results["score"] == len(answers) + len(absent) - 2,
+               "wrong submission scores %s" % results["score"])
         expect("2 times the answer" in tests[0]["output"], "doubled: %s" % tests[0]["output"])
         expect("not answered" in tests[1]["output"], "missing: %s" % tests[1]["output"])
         expect("no_such_answer" in results.get("output", ""), "stray line not reported")
         results = grade(root, wobble, None)
         expect(results["score"] == 0 and "No answers file" in results["output"], "no file: %s" % results)
-        print("%s: autograder of %d files; key %d/%d, wrong submission %d/%d" % (
-            problem, len(names), len(answers), len(answers), len(answers) - 2, len(answers)))
+        total = len(answers) + len(absent)
+        print("%s: autograder of %d files; key %d/%d (%d of them none at these values), wrong "
+              "submission %d/%d" % (problem, len(names), total, total, len(absent), total - 2,
+                                    total))
     if failures:
         print("\n".join(failures))
         sys.exit(1)
