@@ -110,7 +110,8 @@ bool says_none(const std::string& typed) {
 }
 
 std::optional<Verdict> judge_absent(const Key& key, const std::string& part_id,
-                                    const std::string& name, const std::string& typed) {
+                                    const std::string& name, const std::string& typed,
+                                    bool with_reason) {
   const auto p = pointed(key, part_id, name);
   if (!p) return std::nullopt;
   std::vector<std::string> names, reasons;
@@ -121,6 +122,7 @@ std::optional<Verdict> judge_absent(const Key& key, const std::string& part_id,
       reasons.push_back(why);
   }
   if (reasons.empty()) reasons.push_back("the key says why");
+  if (!with_reason) reasons.clear();
   const bool right = says_none(typed);
   return Verdict{
       right,

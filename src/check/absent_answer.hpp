@@ -26,9 +26,11 @@ bool says_none(const std::string& typed);
 /// name_in_key reads them) point at answers that do not exist at these values: right where it
 /// says none ("correct: phidot_slow (part d) does not exist at these values"), wrong otherwise
 /// ("incorrect: phidot_slow (part d) does not exist at these values"), the key's reason after
-/// either. nullopt where they point at no absent answer (the usual lookup then finds the answer
+/// either where `with_reason` (a graded surface withholds it: a slow top's gives ω3, part (c)'s
+/// answer). nullopt where they point at no absent answer (the usual lookup then finds the answer
 /// or says why not); a part with answers and absent ones, named by its id alone, is not one.
 std::optional<Verdict> judge_absent(const Key& key, const std::string& part_id,
-                                    const std::string& name, const std::string& typed);
+                                    const std::string& name, const std::string& typed,
+                                    bool with_reason);
 
 }  // namespace wobble::check

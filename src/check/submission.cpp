@@ -192,8 +192,8 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
         result.answers.push_back(
             {part.id, name, false, "", {false, "incorrect: " + name + " is not answered", {}}});
       } else {
-        auto verdict = judge_absent(ctx.key, part.id, name, it->second.answer);
-        verdict->feedback.clear();
+        const auto verdict =
+            judge_absent(ctx.key, part.id, name, it->second.answer, /*with_reason=*/false);
         result.answers.push_back({part.id, name, true, it->second.answer, *verdict});
       }
       if (it != given.end()) given.erase(it);

@@ -256,7 +256,7 @@ int run_check(const CheckOptions& opt) {
   // several answers with none named: the one the answer's label names, the only one it is right
   // for, or the only one it reads as a value of (check/answer_choice.hpp).
   // An answer that does not exist at these values: "none" is right (check/absent_answer.hpp).
-  const auto absent = check::judge_absent(key, part, opt.name, typed);
+  const auto absent = check::judge_absent(key, part, opt.name, typed, /*with_reason=*/true);
   const check::Verdict v =
       absent
           ? *absent

@@ -261,8 +261,8 @@ struct Server::Impl {
     const check::Context ctx{e->key, e->table, e->values};
     // An answer that does not exist at these values: "none" is right (check/absent_answer.hpp).
     // Without the key's reason, as the page names it: a slow top's gives ω3, part (c)'s answer.
-    if (auto absent = check::judge_absent(e->key, part_id, name, answer)) {
-      absent->feedback.clear();
+    if (const auto absent =
+            check::judge_absent(e->key, part_id, name, answer, /*with_reason=*/false)) {
       return send_verdict(res, *absent);
     }
     try {

@@ -65,29 +65,34 @@ TEST_CASE("an answer that does not exist: none is right, a number wrong, the key
   REQUIRE_THAT(why, Catch::StartsWith("No steady precession at θ0 = "));
   // By the part, by a name (as typed or as the text key prints it), by a line's name given as
   // the part.
-  const auto both = check::judge_absent(slow.key, "d", "", "none");
+  const auto both = check::judge_absent(slow.key, "d", "", "none", true);
   REQUIRE(both);
   CHECK(both->correct);
   CHECK(both->line == "correct: phidot_slow, phidot_fast (part d) do not exist at these values");
   CHECK(both->feedback == std::vector<std::string>{why});
+  // A graded surface (a submission, the browser's server) withholds the reason, which gives ω3.
+  const auto withheld = check::judge_absent(slow.key, "d", "", "none", false);
+  REQUIRE(withheld);
+  CHECK(withheld->line == both->line);
+  CHECK(withheld->feedback.empty());
   for (const auto& [part, name] : {std::pair{"", "phidot_slow"}, std::pair{"d", "phidot_slow"},
                                    std::pair{"phidot_slow", ""}, std::pair{"", "φ̇_slow"}}) {
     INFO(part << " / " << name);
-    const auto one = check::judge_absent(slow.key, part, name, "does not exist");
+    const auto one = check::judge_absent(slow.key, part, name, "does not exist", true);
     REQUIRE(one);
     CHECK(one->correct);
     CHECK(one->line == "correct: phidot_slow (part d) does not exist at these values");
-    const auto number = check::judge_absent(slow.key, part, name, "4.76 rad/s");
+    const auto number = check::judge_absent(slow.key, part, name, "4.76 rad/s", true);
     REQUIRE(number);
     CHECK_FALSE(number->correct);
     CHECK(number->line == "incorrect: phidot_slow (part d) does not exist at these values");
     CHECK(number->feedback == std::vector<std::string>{why});
   }
   // Answers that exist are the usual lookup's: nothing here.
-  CHECK_FALSE(check::judge_absent(slow.key, "c", "", "none"));
-  CHECK_FALSE(check::judge_absent(slow.key, "", "omega3", "none"));
-  CHECK_FALSE(check::judge_absent(slow.key, "c", "phidot_slow", "none"));  // not part c's
-  CHECK_FALSE(check::judge_absent(slow.key, "", "phidot_slower", "none"));
+  CHECK_FALSE(check::judge_absent(slow.key, "c", "", "none", true));
+  CHECK_FALSE(check::judge_absent(slow.key, "", "omega3", "none", true));
+  CHECK_FALSE(check::judge_absent(slow.key, "c", "phidot_slow", "none", true));  // not part c's
+  CHECK_FALSE(check::judge_absent(slow.key, "", "phidot_slower", "none", true));
 }
 
 TEST_CASE("a part with one answer absent: the part alone names the one that exists") {
@@ -96,8 +101,8 @@ TEST_CASE("a part with one answer absent: the part alone names the one that exis
   const PartKey& d = horizontal.key.parts.at(3);
   REQUIRE(d.absent == std::vector<std::string>{"phidot_fast"});
   REQUIRE(d.answers.size() == 1);
-  CHECK_FALSE(check::judge_absent(horizontal.key, "d", "", "none"));
-  const auto fast = check::judge_absent(horizontal.key, "d", "phidot_fast", "none");
+  CHECK_FALSE(check::judge_absent(horizontal.key, "d", "", "none", true));
+  const auto fast = check::judge_absent(horizontal.key, "d", "phidot_fast", "none", true);
   REQUIRE(fast);
   CHECK(fast->correct);
   const check::Verdict slow = horizontal.check("phidot_slow", "none");
@@ -162,10 +167,10 @@ TEST_CASE(
         for (const auto& name : part.absent) {
           INFO(p.id << " variant " << n << " " << name);
           ++absent_seen;
-          const auto none = check::judge_absent(key, part.id, name, "DNE");
+          const auto none = check::judge_absent(key, part.id, name, "DNE", true);
           REQUIRE(none);
           CHECK(none->correct);
-          const auto number = check::judge_absent(key, "", name, "1");
+          const auto number = check::judge_absent(key, "", name, "1", true);
           REQUIRE(number);
           CHECK_FALSE(number->correct);
         }

@@ -1474,7 +1474,7 @@ TEST_CASE("every answer a key prints as none at these values reads back as right
             INFO(line);
             const auto read = answer_line(line);
             REQUIRE(read);
-            const auto v = judge_absent(key, "", read->name, read->answer);
+            const auto v = judge_absent(key, "", read->name, read->answer, true);
             REQUIRE(v);
             CHECK(v->correct);
             ++lines;
