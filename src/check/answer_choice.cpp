@@ -1,6 +1,11 @@
 #include "check/answer_choice.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
+#include <cctype>
+#include <vector>
 
 #include "check/inequality.hpp"
 #include "core/characters.hpp"
@@ -14,6 +19,33 @@ namespace {
 std::string label_of(const std::string& text) {
   const auto at = text.find_first_of("=:");
   return at == std::string::npos ? "" : trim(text.substr(0, at));
+}
+
+// Where `text`'s label (a plain word: "phidot = 3") names no answer of part `part` of several,
+// a refusal saying so, and naming the part whose answer it is where it is another's
+// ("omega3 is part c's"): else the lookup would ask for a name the line has given. A label of
+// other characters naming no answer (Euler's equations solved for ω̇₁) may be the answer
+// itself, and is left to the judge.
+void refuse_label_of_no_answer(const Key& key, const PartKey& part, const std::string& text,
+                               const std::string& part_field) {
+  const std::string label = label_of(text);
+  const bool word = !label.empty() &&
+                    !(std::isdigit(static_cast<unsigned char>(label.front())) != 0) &&
+                    std::all_of(label.begin(), label.end(), [](char c) {
+                      return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+                    });
+  const std::string named = label.empty() ? "" : name_in_key(key, label);
+  std::string elsewhere;
+  for (const auto& p : key.parts) {
+    for (const auto& a : p.answers) {
+      if (a.name == named) elsewhere = fmt::format("; {} is part {}'s", a.name, p.id);
+    }
+  }
+  if (!word && elsewhere.empty()) return;
+  std::vector<std::string> names;
+  for (const auto& a : part.answers) names.push_back(a.name);
+  throw AnswerNotFound(fmt::format("{}: part {} has no answer '{}' (answers: {}){}", part_field,
+                                   part.id, label, fmt::join(names, ", "), elsewhere));
 }
 
 }  // namespace
@@ -70,8 +102,13 @@ const Answer& answer_for(const Context& ctx, const std::string& part, const std:
                          const std::string& part_field, const std::string& name_field) {
   const std::string part_id = name_in_key(ctx.key, part);
   std::string answer_name = name_in_key(ctx.key, name);
-  if (answer_name.empty() && !part_id.empty())
+  if (answer_name.empty() && !part_id.empty()) {
     answer_name = answer_meant(ctx, part_id, text, options);
+    const auto asked = std::find_if(ctx.key.parts.begin(), ctx.key.parts.end(),
+                                    [&](const PartKey& p) { return p.id == part_id; });
+    if (answer_name.empty() && asked != ctx.key.parts.end() && asked->answers.size() > 1)
+      refuse_label_of_no_answer(ctx.key, *asked, text, part_field);
+  }
   return find_answer(ctx.key, part_id, answer_name, part_field, name_field);
 }
 

@@ -22,7 +22,9 @@ std::string answer_meant(const Context& ctx, const std::string& part_id, const s
 /// The answer `text` is to be judged as: find_answer's, with the part and the name read as
 /// name_in_key reads them ("I₀", "I_0"), and for a part of several answers with no name, the one
 /// answer_meant finds. `part_field` and `name_field` name them in a refusal.
-/// @throws AnswerNotFound, InputError as find_answer does.
+/// @throws AnswerNotFound, InputError as find_answer does, and AnswerNotFound where such a part's
+/// answer is labelled with a plain word that names none of its answers ("part: part d has no
+/// answer 'phidot' (answers: phidot_slow, phidot_fast)").
 const Answer& answer_for(const Context& ctx, const std::string& part, const std::string& name,
                          const std::string& text, const Options& options,
                          const std::string& part_field, const std::string& name_field);

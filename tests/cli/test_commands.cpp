@@ -303,6 +303,19 @@ TEST_CASE(
   REQUIRE_THAT(
       neither.err,
       Catch::Contains("part a has several answers; name one (euler_coefficients, dw_dt0)"));
+  // The same, labelled with a word that names none of them: that word is refused, not a name
+  // asked for that the line has given; another part's answer is named as that part's.
+  const RunResult unknown_label = judged("w_dot = [1, 2, 3]");
+  REQUIRE(unknown_label.exit_code == 2);
+  REQUIRE(unknown_label.out.empty());
+  REQUIRE(unknown_label.err ==
+          "wobble: part: part a has no answer 'w_dot' (answers: euler_coefficients, dw_dt0)\n");
+  const RunResult other_part =
+      run_wobble({"check", "heavy-top", "d", "--answer", "ω₃ = 700 rad/s"});
+  REQUIRE(other_part.exit_code == 2);
+  REQUIRE(other_part.err ==
+          "wobble: part: part d has no answer 'ω₃' (answers: phidot_slow, "
+          "phidot_fast); omega3 is part c's\n");
 }
 
 TEST_CASE("check: --name alone finds its part; neither part nor name says what to give") {
