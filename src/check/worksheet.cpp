@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <functional>
 #include <istream>
 #include <ostream>
 
+#include "check/absent_answer.hpp"
 #include "check/brackets.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
@@ -41,7 +43,7 @@ std::string shown(const Answer& a) {
   return a.symbolic.empty() ? v : sym::to_unicode(a.symbolic) + " = " + v;
 }
 
-enum class Outcome { right, revealed, skipped, quit, nothing };
+enum class Outcome { right, revealed, skipped, quit };
 
 // What a line asks for besides an answer: the symbol or the word, in any case ("Quit", "HINT").
 enum class Command { none, hint, reveal, skip, quit, help };
@@ -103,19 +105,74 @@ struct Session {
     return true;
   }
 
+  // One answer asked until it is right, revealed, skipped or quit: `judged` gives the verdict
+  // on a line, `revealed_as` is what '!' shows (one line, to be copied), `why` a line under it.
+  enum class Asked { right, revealed, skipped, quit };
+  struct Asking {
+    std::string prompt, revealed_as, why;
+    std::function<Verdict(const std::string&)> judged;
+  };
+  Asked ask(const Asking& asking, const std::function<void()>& give_hint, const bool& hint_shown) {
+    int wrong = 0;
+    while (true) {
+      std::string line;
+      const bool more = read_answer(asking.prompt, line);
+      const Command command = more ? command_of(line) : Command::quit;
+      if (command == Command::quit) return Asked::quit;
+      if (command == Command::skip) return Asked::skipped;
+      if (command == Command::help) {
+        say(kCommandWords, "  ", "    ");
+        continue;
+      }
+      if (command == Command::hint) {
+        give_hint();
+        continue;
+      }
+      if (command == Command::reveal) {
+        out << "  answer: " << asking.revealed_as << "\n";
+        if (!asking.why.empty()) say(asking.why, "    ", "      ");
+        return Asked::revealed;
+      }
+      if (line.empty()) continue;
+      try {
+        const Verdict v = asking.judged(line);
+        say(v.line, "  ", "    ");
+        for (const auto& f : v.feedback) say(f, "    ", "      ");
+        if (v.correct) return Asked::right;
+        if (++wrong == 2 && !hint_shown) give_hint();
+      } catch (const InputError& e) {
+        say("cannot read that: " + without_option(e.what()), "  ", "    ");
+      }
+    }
+  }
+
+  // The questions of a part: each answer, then each answer that does not exist at these values
+  // (a slow top's steady precession), whose answer is "none" (absent_answer.hpp): asked as the
+  // others are, since saying so outright would give the answer away.
+  std::vector<Asking> questions(const PartKey& part) const {
+    std::vector<Asking> asked;
+    for (const auto& a : part.answers) {
+      const std::string unit =
+          asked_unit(a).empty() ? "" : " [" + sym::to_unicode(asked_unit(a)) + "]";
+      asked.push_back({fmt::format("  {}{} = ", a.name, unit), shown(a), "",
+                       [this, &a](const std::string& line) { return judge(ctx, a, line, opt); }});
+    }
+    for (std::size_t i = 0; i < part.absent.size(); ++i) {
+      const std::string& name = part.absent[i];
+      const std::string unit = i < part.absent_unit.size() && !part.absent_unit[i].empty()
+                                   ? " [" + sym::to_unicode(part.absent_unit[i]) + "]"
+                                   : "";
+      asked.push_back({fmt::format("  {}{} = ", name, unit), "none at these values",
+                       part.absent_line(i), [this, &part, &name](const std::string& line) {
+                         return *judge_absent(ctx.key, part.id, name, line, /*with_reason=*/true);
+                       }});
+    }
+    return asked;
+  }
+
   Outcome part(const PartKey& part, const std::string& hint) {
     out << "\n";
     say(plain_text(part.question), "(" + part.id + ") ", "    ");
-    if (part.answers.empty()) {
-      // Nothing exists to answer at these values (no steady precession): say why, move on.
-      say("nothing to answer at these values: " +
-              (part.steps.empty() ? std::string("see `wobble solve`") : part.steps.back().text),
-          "  ", "    ");
-      return Outcome::nothing;
-    }
-    // An answer the question asks for that does not exist here (a horizontal top's fast
-    // precession): said before the others are asked.
-    for (std::size_t i = 0; i < part.absent.size(); ++i) say(part.absent_line(i), "  ", "    ");
     bool revealed = false, hint_shown = false;
     const auto give_hint = [&] {
       if (hint.empty()) {
@@ -126,52 +183,27 @@ struct Session {
       hint_shown = true;
     };
     int answered = 0;
-    for (const auto& a : part.answers) {
-      int wrong = 0;
+    const std::vector<Asking> asked = questions(part);
+    for (std::size_t i = 0; i < asked.size(); ++i) {
       // How a vector or a matrix is typed, above its prompt (beside it, the answer would start
       // near the terminal's edge): "(a vector [.., .., ..] along e₁, e₂, e₃)".
-      if (const std::string form = answer_form(a); !form.empty())
-        say("(" + form + ")", "  ", "   ");
-      while (true) {
-        std::string line;
-        const bool more = read_answer(
-            fmt::format("  {}{} = ", a.name,
-                        asked_unit(a).empty() ? "" : " [" + sym::to_unicode(asked_unit(a)) + "]"),
-            line);
-        const Command command = more ? command_of(line) : Command::quit;
-        if (command == Command::quit) {
+      if (i < part.answers.size()) {
+        if (const std::string form = answer_form(part.answers[i]); !form.empty())
+          say("(" + form + ")", "  ", "   ");
+      }
+      switch (ask(asked[i], give_hint, hint_shown)) {
+        case Asked::quit:
           quit_after_reveal = revealed;  // a part quit after a reveal counts as revealed
           answered_before_quit = answered;
           return Outcome::quit;
-        }
-        if (command == Command::skip) return Outcome::skipped;
-        if (command == Command::help) {
-          say(kCommandWords, "  ", "    ");
-          continue;
-        }
-        if (command == Command::hint) {
-          give_hint();
-          continue;
-        }
-        if (command == Command::reveal) {
-          out << "  answer: " << shown(a) << "\n";
+        case Asked::skipped:
+          return Outcome::skipped;
+        case Asked::revealed:
           revealed = true;
+          [[fallthrough]];
+        case Asked::right:
           ++answered;
           break;
-        }
-        if (line.empty()) continue;
-        try {
-          const Verdict v = judge(ctx, a, line, opt);
-          say(v.line, "  ", "    ");
-          for (const auto& f : v.feedback) say(f, "    ", "      ");
-          if (v.correct) {
-            ++answered;
-            break;
-          }
-          if (++wrong == 2 && !hint_shown) give_hint();
-        } catch (const InputError& e) {
-          say("cannot read that: " + without_option(e.what()), "  ", "    ");
-        }
       }
     }
     return revealed ? Outcome::revealed : Outcome::right;
@@ -208,9 +240,6 @@ WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const st
       case Outcome::revealed:
         ++sum.revealed;
         break;
-      case Outcome::nothing:
-        ++sum.nothing;
-        break;
       case Outcome::skipped:
         ++sum.skipped;
         break;
@@ -220,8 +249,9 @@ WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const st
           ++sum.revealed;
         } else if (session.answered_before_quit > 0) {
           // Begun, some answers right, then left: neither right nor untouched.
-          sum.unfinished = fmt::format("({}) left unfinished, {} of its {} answers right", part.id,
-                                       session.answered_before_quit, part.answers.size());
+          sum.unfinished =
+              fmt::format("({}) left unfinished, {} of its {} answers right", part.id,
+                          session.answered_before_quit, part.answers.size() + part.absent.size());
         } else {
           ++sum.not_reached;
         }
@@ -230,11 +260,9 @@ WorksheetSummary run_worksheet(const ReadLine& read, std::ostream& out, const st
   }
   out << "\n";
   session.say(
-      fmt::format(
-          "summary: {} right, {} revealed, {} skipped, {} not reached (of {} parts{}{})", sum.right,
-          sum.revealed, sum.skipped, sum.not_reached, ctx.key.parts.size(),
-          sum.nothing > 0 ? fmt::format("; {} with nothing to answer", sum.nothing) : std::string(),
-          sum.unfinished.empty() ? "" : "; " + sum.unfinished),
+      fmt::format("summary: {} right, {} revealed, {} skipped, {} not reached (of {} parts{})",
+                  sum.right, sum.revealed, sum.skipped, sum.not_reached, ctx.key.parts.size(),
+                  sum.unfinished.empty() ? "" : "; " + sum.unfinished),
       "", "  ");
   return sum;
 }

@@ -4,7 +4,9 @@
 /// does. At a prompt: an answer, or `?` for the hint, `!` to reveal the answer, `s` to skip the
 /// part, `q` to quit, or the words (hint, reveal, skip, quit or exit, help for the list; any
 /// case): they take precedence over a symbol of the same name. After a second wrong try the hint
-/// comes by itself. End of input quits, so piped input never waits.
+/// comes by itself. End of input quits, so piped input never waits. An answer that does not exist
+/// at these values (a slow top's steady precession) is asked as the others are: "none" is right
+/// (absent_answer.hpp).
 #include <cstddef>
 #include <functional>
 #include <iosfwd>
@@ -17,7 +19,6 @@ namespace wobble::check {
 
 struct WorksheetSummary {
   int right = 0, revealed = 0, skipped = 0, not_reached = 0;
-  int nothing = 0;  ///< parts with no answer at these values
   /// The part quit in after some of its answers were right (none revealed), said as
   /// "(a) left unfinished, 1 of its 2 answers right"; empty if none. Counted in no number.
   std::string unfinished;

@@ -183,6 +183,9 @@ struct PartKey {
   std::vector<std::string> absent;
   /// For each absent answer, the text of the step that says why ("" where none does).
   std::vector<std::string> absent_why;
+  /// For each absent answer, the unit it would be asked in were it to exist ("rad/s"; "" for a
+  /// pure number), so that it is asked as the others are: a prompt without a unit would tell.
+  std::vector<std::string> absent_unit;
 
   /// "phidot_fast does not exist at these values: θ0 = 90°: the axle is horizontal, ..": the
   /// `i`-th absent answer as every surface names it, with its reason where there is one;

@@ -58,7 +58,11 @@ Computed compute_quantity(const std::vector<QuantityRow<Context>>& rows, Context
   for (const auto& r : rows) {
     if (r.info.name != quantity) continue;
     Computed c = r.compute(context, quantity);
-    if (!c.exists) return c;
+    if (!c.exists) {
+      // Asked for all the same ("none" is its answer): in its unit, as where it exists.
+      c.answer.asked_unit = r.info.unit;
+      return c;
+    }
     if (!registered_unit(r.info.unit, c.answer.unit)) {
       throw std::logic_error(quantity + ": computed in '" + c.answer.unit + "', registered in '" +
                              r.info.unit + "'");

@@ -12,13 +12,14 @@ Key assemble_parts(const Problem& problem,
                    const std::function<Computed(const std::string& quantity)>& compute) {
   Key key;
   for (const auto& part : problem.parts) {
-    PartKey pk{part.id, part.question, {}, {}, {}, {}};
+    PartKey pk{part.id, part.question, {}, {}, {}, {}, {}};
     for (const auto& spec : part.answers) {
       Computed c = compute(spec.quantity);
       append_steps(pk, c.steps);
       if (!c.exists) {
         pk.absent.push_back(spec.name);
         pk.absent_why.push_back(c.steps.empty() ? "" : c.steps.back().text);
+        pk.absent_unit.push_back(asked_unit(c.answer));
         continue;
       }
       c.answer.name = spec.name;

@@ -53,6 +53,7 @@ std::string student_view_json(const Problem& problem, const Key& key, std::optio
                      // Names only: why one is absent is a step of the key, and may hold
                      // its numbers (a slow top's reason gives ω3, part c's answer).
                      {"absent", part.absent},
+                     {"absent_units", part.absent_unit},
                      {"has_hint", !hint.empty()}});
     if (with_hints && !hint.empty()) parts.back()["hint"] = hint;
   }

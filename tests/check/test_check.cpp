@@ -905,7 +905,7 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
   space_rate.unit = "rad/s";
   space_rate.value = Value::scalar(3.0);
   Key key;
-  key.parts.push_back({"a", "?", {rate, L_body, L_space, I, space_rate}, {}, {}, {}});
+  key.parts.push_back({"a", "?", {rate, L_body, L_space, I, space_rate}, {}, {}, {}, {}});
   const auto close = [](double v, double k) { return std::abs(v - k) <= 0.01 * std::abs(k) + 1e-12; };
   const auto first = [&](const Answer& a, std::vector<double> typed, const std::string& unit) {
     const Unit u = unit.empty() ? Unit{} : parse_unit(unit, "unit");  // "": a pure number

@@ -676,15 +676,33 @@ TEST_CASE("worksheet driven end to end by piped input: feedback, hint, reveal, s
                           Catch::Contains("\"[0.5,\": it is not a complete expression") &&
                           Catch::Contains("a '(' is not closed") &&
                           Catch::Contains("correct: center_of_mass"));
-  // A part whose question asks for an answer that does not exist here says so, then asks for
-  // the others.
-  const RunResult h = run_shell("printf 's\\ns\\ns\\nM g l/(M R^2/2 psidot0)\\n' | " + exe +
-                                " worksheet heavy-top --set theta0=90deg");
+  // An answer that does not exist at these values is asked as the others are (its unit in the
+  // prompt), "none" right with the key's reason (a horizontal axle's fast precession), a number
+  // wrong; '!' shows "none", which pasted back is right.
+  const RunResult h = run_shell("printf 's\\ns\\ns\\nM g l/(M R^2/2 psidot0)\\n3\\nDNE\\n' | " +
+                                exe + " worksheet heavy-top --set theta0=90deg");
   INFO(h.out << h.err);
   REQUIRE(h.exit_code == 0);
-  REQUIRE_THAT(h.out, Catch::Contains("  phidot_fast does not exist at these values: θ0 = 90°: "
-                                      "the axle is horizontal") &&
-                          Catch::Contains("correct: phidot_slow"));
+  REQUIRE_THAT(
+      h.out, Catch::Contains("correct: phidot_slow (your expression") &&
+                 Catch::Contains("  phidot_fast [rad/s] = 3\n  incorrect: phidot_fast (part d) "
+                                 "does not exist at these values\n    θ0 = 90°: the axle "
+                                 "is horizontal") &&
+                 Catch::Contains("  phidot_fast [rad/s] = DNE\n  correct: phidot_fast (part d)") &&
+                 Catch::Contains("summary: 1 right, 0 revealed, 3 skipped"));
+  // A part of only such answers (a spin too slow to precess steadily) is asked too; revealed,
+  // "none at these values" with why under it.
+  const RunResult slow = run_shell("printf 's\\ns\\ns\\n!\\nnone at these values\\n' | " + exe +
+                                   " worksheet heavy-top --set psidot0=10");
+  INFO(slow.out << slow.err);
+  REQUIRE(slow.exit_code == 0);
+  REQUIRE_THAT(
+      slow.out,
+      Catch::Contains("  phidot_slow [rad/s] = !\n  answer: none at these values\n    phidot_slow "
+                      "does not exist at these values: ") &&
+          Catch::Contains("  phidot_fast [rad/s] = none at these values\n  correct: phidot_fast") &&
+          Catch::Contains("summary: 0 right, 1 revealed, 3 skipped, 0 not reached (of 4 "
+                          "parts)\n"));
   // End of input at once: no wait, a summary.
   const RunResult c = run_shell(exe + " worksheet flying-plate < /dev/null");
   REQUIRE(c.exit_code == 0);

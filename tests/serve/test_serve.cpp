@@ -221,11 +221,18 @@ TEST_CASE("the judge over HTTP: a right answer, a named mistake, a variant's own
   // "none" is right for it over HTTP too (a number wrong), without the key's reason, which
   // gives ω3 (part c's answer) away, as the page does.
   int slow = 0;
+  json slow_part;
   for (int n = 1; n <= 20 && slow == 0; ++n) {
     const json view = get_json(c, "/api/problems/heavy-top?variant=" + std::to_string(n));
-    if (view["parts"][3].contains("absent") && view["parts"][3]["answers"].empty()) slow = n;
+    if (view["parts"][3].contains("absent") && view["parts"][3]["answers"].empty()) {
+      slow = n;
+      slow_part = view["parts"][3];
+    }
   }
   REQUIRE(slow > 0);
+  // The page asks for them as for answers that exist: by name, in their unit.
+  CHECK(slow_part["absent"] == json{"phidot_slow", "phidot_fast"});
+  CHECK(slow_part["absent_units"] == json{"rad/s", "rad/s"});
   const json none =
       post_check(c, "heavy-top", {{"part", "d"}, {"answer", "none"}, {"variant", slow}});
   CHECK(none["correct"] == true);

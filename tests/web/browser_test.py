@@ -349,6 +349,27 @@ def main():
             copied_forms += 1
         expect(copied_forms > 5, "only %d typeset forms copied" % copied_forms)
         d3.save_screenshot(os.path.join(shots, "instructor-flying-plate-5.png"))
+        # A top too slow to precess steadily: part (d)'s answers do not exist, and are asked all
+        # the same, in their unit; the key's "none at these values" pasted back is right.
+        slow = next(n for n in range(1, 21)
+                    if not fetch(base + "api/problems/heavy-top/key?variant=%d&token=%s"
+                                 % (n, token))["parts"][3]["answers"])
+        d3.get(base + "?token=" + token + "#/heavy-top/%d" % slow)
+        d3.refresh()
+        wait_for(d3, ".key-value")
+        d3.execute_script("window.wobbleView.pause()")
+        for name in ("phidot_slow", "phidot_fast"):
+            box = answer_input(d3, name)
+            answer = box.find_element(By.XPATH, "..")
+            label = answer.find_element(By.TAG_NAME, "label").text
+            expect(label == name + " [rad/s]", "an answer that does not exist: label %r" % label)
+            value = answer.find_element(By.CSS_SELECTOR, ".key-value").text
+            expect(value == "none at these values", "%s's key: %r" % (name, value))
+            box.send_keys(value, Keys.ENTER)
+            v = verdict_of(d3, name)
+            expect(v.text.startswith("correct: %s (part d) does not exist" % name),
+                   "%s's key pasted back: %r" % (name, v.text))
+        d3.save_screenshot(os.path.join(shots, "instructor-heavy-top-slow.png"))
         expect(not d.find_elements(By.CSS_SELECTOR, ".key-value"), "a student sees the key")
         stage("instructor's page done")
         # The page as one file, opened from disk: no server, no network.

@@ -104,6 +104,11 @@ function keyNumber(x) {
 }
 
 function keyLine(answer) {
+  if (answer.absent) {
+    return el(
+        'div', {class: 'key-answer'},
+        'Key: ', el('span', {class: 'key-value'}, 'none at these values'));
+  }
   const value = keyNumber(answer.value);
   return el('div', {class: 'key-answer'}, 'Key: ', answer.latex ? '$' + answer.latex + '$ = ' : '',
             el('span', {class: 'key-value'}, value + (answer.unit ? ' ' + prettyUnit(answer.unit) : '')));
@@ -159,8 +164,16 @@ function partView(id, variant, part, state, partKey, update) {
     hint.hidden = false;
     typeset(hint);
   }
-  for (const a of part.answers) {
-    const keyed = partKey && partKey.answers.find(k => k.name === a.name);
+  // An answer that does not exist at these values (a slow top's steady precession) is asked as
+  // the others are, "none" right: saying so beside it would give the answer away.
+  const asked = [
+    ...part.answers,
+    ...part.absent.map((name, i) => ({name, absent: true, asked_unit: part.absent_units[i]}))
+  ];
+  for (const a of asked) {
+    const keyed = partKey &&
+        (a.absent ? (partKey.absent || []).includes(a.name) && a :
+                    partKey.answers.find(k => k.name === a.name));
     if (offline) {
       // No judge without the server: the answer's name and unit, and the key if it was asked for.
       div.append(
@@ -213,7 +226,6 @@ function partView(id, variant, part, state, partKey, update) {
         el('div', {class: 'answer'}, el('label', {}, answerLabel(a)), input, verdict,
            ...(keyed ? [keyLine(keyed)] : [])));
   }
-  for (const absent of part.absent) div.append(el('p', {class: 'unit'}, absent + ' does not exist at these values'));
   if (!offline) div.append(hint);
   // No judge to count tries from a file: the hint folded, for the student to open.
   if (offline && part.hint) {
