@@ -124,11 +124,12 @@ std::optional<Verdict> judge_absent(const Key& key, const std::string& part_id,
   if (reasons.empty()) reasons.push_back("the key says why");
   if (!with_reason) reasons.clear();
   const bool right = says_none(typed);
-  return Verdict{
-      right,
-      fmt::format("{}: {} (part {}) {} not exist at these values", right ? "correct" : "incorrect",
-                  fmt::join(names, ", "), p->part->id, names.size() == 1 ? "does" : "do"),
-      reasons};
+  return Verdict{right,
+                 // The names alone, as any verdict's line has them: the part is beside it on every
+                 // surface (a submission's "(d) correct: .."), or was typed.
+                 fmt::format("{}: {} {} not exist at these values", right ? "correct" : "incorrect",
+                             fmt::join(names, ", "), names.size() == 1 ? "does" : "do"),
+                 reasons};
 }
 
 }  // namespace wobble::check

@@ -24,8 +24,8 @@ bool says_none(const std::string& typed);
 /// The verdict on `typed` where part `part_id` and answer `name` (either may be empty; a part's
 /// id may be an absent answer's name, as a line "phidot_slow = none" gives it; names spelt as
 /// name_in_key reads them) point at answers that do not exist at these values: right where it
-/// says none ("correct: phidot_slow (part d) does not exist at these values"), wrong otherwise
-/// ("incorrect: phidot_slow (part d) does not exist at these values"), the key's reason after
+/// says none ("correct: phidot_slow does not exist at these values"), wrong otherwise
+/// ("incorrect: phidot_slow does not exist at these values"), the key's reason after
 /// either where `with_reason` (a graded surface withholds it: a slow top's gives ω3, part (c)'s
 /// answer). nullopt where they point at no absent answer (the usual lookup then finds the answer
 /// or says why not); a part with answers and absent ones, named by its id alone, is not one.

@@ -68,7 +68,7 @@ TEST_CASE("an answer that does not exist: none is right, a number wrong, the key
   const auto both = check::judge_absent(slow.key, "d", "", "none", true);
   REQUIRE(both);
   CHECK(both->correct);
-  CHECK(both->line == "correct: phidot_slow, phidot_fast (part d) do not exist at these values");
+  CHECK(both->line == "correct: phidot_slow, phidot_fast do not exist at these values");
   CHECK(both->feedback == std::vector<std::string>{why});
   // A graded surface (a submission, the browser's server) withholds the reason, which gives ω3.
   const auto withheld = check::judge_absent(slow.key, "d", "", "none", false);
@@ -81,11 +81,11 @@ TEST_CASE("an answer that does not exist: none is right, a number wrong, the key
     const auto one = check::judge_absent(slow.key, part, name, "does not exist", true);
     REQUIRE(one);
     CHECK(one->correct);
-    CHECK(one->line == "correct: phidot_slow (part d) does not exist at these values");
+    CHECK(one->line == "correct: phidot_slow does not exist at these values");
     const auto number = check::judge_absent(slow.key, part, name, "4.76 rad/s", true);
     REQUIRE(number);
     CHECK_FALSE(number->correct);
-    CHECK(number->line == "incorrect: phidot_slow (part d) does not exist at these values");
+    CHECK(number->line == "incorrect: phidot_slow does not exist at these values");
     CHECK(number->feedback == std::vector<std::string>{why});
   }
   // Answers that exist are the usual lookup's: nothing here.
@@ -132,8 +132,8 @@ TEST_CASE("a submission asks for an answer that does not exist as for any other"
                                              {});
   CHECK(given.problems.empty());
   CHECK(part_d(given) ==
-        std::vector<std::string>{"correct: phidot_slow (part d) does not exist at these values",
-                                 "incorrect: phidot_fast (part d) does not exist at these values"});
+        std::vector<std::string>{"correct: phidot_slow does not exist at these values",
+                                 "incorrect: phidot_fast does not exist at these values"});
   CHECK_FALSE(given.all_correct());
   // Unanswered, it is not answered, as any other: every variant has the same answers to give.
   const auto left = check::judge_submission(ctx, "omega3 = 10 rad/s\n", {});
@@ -141,7 +141,7 @@ TEST_CASE("a submission asks for an answer that does not exist as for any other"
                                                  "incorrect: phidot_fast is not answered"});
   // Answered twice in two spellings: the first is judged, the second reported.
   const auto twice = check::judge_submission(ctx, "phidot_slow = none\nφ̇_slow = 3 rad/s\n", {});
-  CHECK(part_d(twice).at(0) == "correct: phidot_slow (part d) does not exist at these values");
+  CHECK(part_d(twice).at(0) == "correct: phidot_slow does not exist at these values");
   REQUIRE(twice.problems.size() == 1);
   CHECK_THAT(twice.problems[0], Catch::Contains("answers phidot_slow again"));
 }

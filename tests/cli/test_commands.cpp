@@ -340,12 +340,12 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
       {"check", "heavy-top", "--name", "phidot_slow", "--set", "psidot0=10", "--answer", "1"});
   REQUIRE(absent.exit_code == 1);
   REQUIRE_THAT(absent.out,
-               Catch::StartsWith("incorrect: phidot_slow (part d) does not exist at these values\n"
+               Catch::StartsWith("incorrect: phidot_slow does not exist at these values\n"
                                  "  No steady precession at θ0 = 0.5235987756 rad"));
   const RunResult none =
       run_wobble({"check", "heavy-top", "d", "--set", "psidot0=10", "--answer", "none"});
   REQUIRE(none.exit_code == 0);
-  REQUIRE_THAT(none.out, Catch::StartsWith("correct: phidot_slow, phidot_fast (part d) do not "
+  REQUIRE_THAT(none.out, Catch::StartsWith("correct: phidot_slow, phidot_fast do not "
                                            "exist at these values\n  No steady precession"));
   // One absent beside others (a horizontal axle has no fast precession): the line says why;
   // "none" for the one that exists is wrong.
@@ -353,7 +353,7 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
       run_wobble({"check", "heavy-top", "--set", "theta0=90deg", "phidot_fast = does not exist"});
   REQUIRE(horizontal.exit_code == 0);
   REQUIRE_THAT(horizontal.out,
-               Catch::StartsWith("correct: phidot_fast (part d) does not exist at these values\n"
+               Catch::StartsWith("correct: phidot_fast does not exist at these values\n"
                                  "  θ0 = 90°: the axle is horizontal"));
   const RunResult exists =
       run_wobble({"check", "heavy-top", "--set", "theta0=90deg", "phidot_slow = none"});
@@ -685,10 +685,10 @@ TEST_CASE("worksheet driven end to end by piped input: feedback, hint, reveal, s
   REQUIRE(h.exit_code == 0);
   REQUIRE_THAT(
       h.out, Catch::Contains("correct: phidot_slow (your expression") &&
-                 Catch::Contains("  phidot_fast [rad/s] = 3\n  incorrect: phidot_fast (part d) "
+                 Catch::Contains("  phidot_fast [rad/s] = 3\n  incorrect: phidot_fast "
                                  "does not exist at these values\n    θ0 = 90°: the axle "
                                  "is horizontal") &&
-                 Catch::Contains("  phidot_fast [rad/s] = DNE\n  correct: phidot_fast (part d)") &&
+                 Catch::Contains("  phidot_fast [rad/s] = DNE\n  correct: phidot_fast does not") &&
                  Catch::Contains("summary: 1 right, 0 revealed, 3 skipped"));
   // A part of only such answers (a spin too slow to precess steadily) is asked too; revealed,
   // "none at these values" with why under it.

@@ -367,7 +367,7 @@ def main():
             expect(value == "none at these values", "%s's key: %r" % (name, value))
             box.send_keys(value, Keys.ENTER)
             v = verdict_of(d3, name)
-            expect(v.text.startswith("correct: %s (part d) does not exist" % name),
+            expect(v.text.startswith("correct: %s does not exist" % name),
                    "%s's key pasted back: %r" % (name, v.text))
         d3.save_screenshot(os.path.join(shots, "instructor-heavy-top-slow.png"))
         expect(not d.find_elements(By.CSS_SELECTOR, ".key-value"), "a student sees the key")
