@@ -42,10 +42,8 @@ void refuse_label_of_no_answer(const Key& key, const PartKey& part, const std::s
     }
   }
   if (!word && elsewhere.empty()) return;
-  std::vector<std::string> names;
-  for (const auto& a : part.answers) names.push_back(a.name);
   throw AnswerNotFound(fmt::format("{}: part {} has no answer '{}' (answers: {}){}", part_field,
-                                   part.id, label, fmt::join(names, ", "), elsewhere));
+                                   part.id, label, fmt::join(part.asked_names(), ", "), elsewhere));
 }
 
 }  // namespace

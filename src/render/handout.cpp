@@ -22,6 +22,13 @@ std::string answer_names(const PartKey& part, bool markdown) {
     if (!asked_unit(a).empty()) out += " [" + detail::pretty(asked_unit(a)) + "]";
     if (const std::string form = answer_form(a); !form.empty()) out += " (" + form + ")";
   }
+  // Those that do not exist at these values are given too ("none"), in their units.
+  for (std::size_t i = 0; i < part.absent.size(); ++i) {
+    if (!out.empty()) out += ", ";
+    out += markdown ? "`" + part.absent[i] + "`" : part.absent[i];
+    const std::string unit = i < part.absent_unit.size() ? part.absent_unit[i] : "";
+    if (!unit.empty()) out += " [" + detail::pretty(unit) + "]";
+  }
   return out;
 }
 
@@ -44,7 +51,7 @@ std::string render_handout(const Key& key,
   }
   for (const auto& part : key.parts) {
     out += fmt::format("\n**({})** {}\n", part.id, part.question);
-    if (!part.answers.empty()) {
+    if (!part.asked_names().empty()) {
       out += "\n*Answers to give (`wobble check` names):* " + answer_names(part, true) + "\n";
     }
   }
@@ -79,7 +86,8 @@ std::string render_handout_text(const Key& key,
   if (with_questions) {
     for (const auto& part : key.parts) {
       out += fmt::format("\n({}) {}\n", part.id, plain_text(part.question));
-      if (!part.answers.empty()) out += "    answers to give: " + answer_names(part, false) + "\n";
+      if (!part.asked_names().empty())
+        out += "    answers to give: " + answer_names(part, false) + "\n";
     }
   }
   return out;

@@ -27,20 +27,13 @@ const PartKey* find_part(const std::vector<PartKey>& parts, const std::string& p
   }
   return nullptr;
 }
-
-// The names of answers, for a message.
-std::vector<std::string> names_of(const std::vector<Answer>& answers) {
-  std::vector<std::string> out;
-  for (const auto& a : answers) out.push_back(a.name);
-  return out;
-}
 }  // namespace
 
 std::string answers_by_part(const Key& key) {
   std::vector<std::string> parts;
   for (const auto& p : key.parts) {
-    if (!p.answers.empty())
-      parts.push_back(fmt::format("({}) {}", p.id, fmt::join(names_of(p.answers), ", ")));
+    if (!p.asked_names().empty())
+      parts.push_back(fmt::format("({}) {}", p.id, fmt::join(p.asked_names(), ", ")));
   }
   return parts.empty() ? "none" : fmt::format("{}", fmt::join(parts, "; "));
 }
@@ -66,7 +59,7 @@ const Answer& find_answer(const Key& key, const std::string& part_id, const std:
   if (part == nullptr && part_id.empty()) {
     std::vector<std::string> names;
     for (const auto& p : key.parts) {
-      for (const auto& n : names_of(p.answers)) names.push_back(n);
+      for (const auto& n : p.asked_names()) names.push_back(n);
     }
     throw AnswerNotFound(fmt::format("{}: problem {} has no answer '{}' (answers: {})", name_field,
                                      key.problem, shown(name), fmt::join(names, ", ")));
@@ -87,7 +80,7 @@ const Answer& find_answer(const Key& key, const std::string& part_id, const std:
   for (const auto& a : part->answers) {
     if (a.name == name || (name.empty() && part->answers.size() == 1)) return a;
   }
-  const std::string names = fmt::format("{}", fmt::join(names_of(part->answers), ", "));
+  const std::string names = fmt::format("{}", fmt::join(part->asked_names(), ", "));
   if (name.empty()) {
     throw AnswerNotFound(
         fmt::format("{}: part {} has several answers; name one ({})", name_field, part->id, names));
@@ -171,6 +164,13 @@ const char* shape_name(Value::Shape s) {
     case Value::Shape::matrix: return "matrix";
   }
   return "?";
+}
+
+std::vector<std::string> PartKey::asked_names() const {
+  std::vector<std::string> names;
+  for (const auto& a : answers) names.push_back(a.name);
+  names.insert(names.end(), absent.begin(), absent.end());
+  return names;
 }
 
 std::string PartKey::absent_line(std::size_t i, bool name_part) const {

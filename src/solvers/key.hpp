@@ -191,6 +191,11 @@ struct PartKey {
   /// `i`-th absent answer as every surface names it, with its reason where there is one;
   /// "phidot_fast (part d) does not .." with `name_part`, for a line outside the part's own.
   std::string absent_line(std::size_t i, bool name_part = false) const;
+
+  /// Every answer the part asks for, by name: its answers, then those absent at these values,
+  /// which are asked for all the same ("none" is their answer): a list of what to give that left
+  /// them out would tell a student that they do not exist.
+  std::vector<std::string> asked_names() const;
 };
 
 /// Appends `steps` to the part, skipping any whose text the part already has (two answers of a

@@ -95,6 +95,21 @@ TEST_CASE("an answer that does not exist: none is right, a number wrong, the key
   CHECK_FALSE(check::judge_absent(slow.key, "", "phidot_slower", "none", true));
 }
 
+TEST_CASE("an answer that does not exist is asked for as where it exists: by name, in its unit") {
+  // Every list of what to give (a handout's, check's), every prompt (the worksheet's, the
+  // page's) has it: one without would tell a student that it does not exist.
+  const Fixture slow("heavy-top", {"psidot0=10"});
+  const Fixture fast("heavy-top", {});
+  const PartKey& d = slow.key.parts.at(3);
+  const PartKey& exists = fast.key.parts.at(3);
+  REQUIRE(exists.answers.size() == 2);
+  CHECK(d.asked_names() == exists.asked_names());
+  CHECK(d.absent_unit ==
+        std::vector<std::string>{asked_unit(exists.answers[0]), asked_unit(exists.answers[1])});
+  CHECK_THAT(answers_by_part(slow.key), Catch::EndsWith("(d) phidot_slow, phidot_fast"));
+  CHECK(answers_by_part(slow.key) == answers_by_part(fast.key));
+}
+
 TEST_CASE("a part with one answer absent: the part alone names the one that exists") {
   // A horizontal axle has the slow (gyroscopic) precession only.
   const Fixture horizontal("heavy-top", {"theta0=90deg"});

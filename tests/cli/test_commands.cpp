@@ -563,6 +563,17 @@ TEST_CASE(
                                 Catch::Contains("| 24 | ° |") && Catch::Contains("**(h)**"));
   // The names of the answers to give (for `check --name`), never the answers.
   REQUIRE_THAT(handout.out, Catch::Contains("`t_max` [s]") && !Catch::Contains("Steps"));
+  // An answer that does not exist at a variant's values is one to give all the same (its answer
+  // is "none"), in its unit: a handout without it would give that away.
+  for (const std::string format : {"text", "markdown"}) {
+    const RunResult slow =
+        run_wobble({"solve", "heavy-top", "--set", "psidot0=10", "--handout", "--format", format});
+    REQUIRE(slow.exit_code == 0);
+    REQUIRE_THAT(slow.out, format == "text"
+                               ? Catch::EndsWith("answers to give: phidot_slow [rad/s], "
+                                                 "phidot_fast [rad/s]\n")
+                               : Catch::EndsWith("`phidot_slow` [rad/s], `phidot_fast` [rad/s]\n"));
+  }
   // At a terminal (the default format): plain text, the angle as the handout gives it.
   const RunResult text = run_wobble({"solve", "flying-plate", "--variant", "1", "--handout"});
   REQUIRE_THAT(text.out, Catch::Contains("(variant 1)") && Catch::Contains("α = 24°") &&
