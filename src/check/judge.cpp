@@ -742,6 +742,14 @@ std::string name_in_key(const Key& key, const std::string& written) {
         ++matches;
       }
     }
+    // An answer that does not exist at these values is named as where it exists ("φ̇_slow").
+    for (const auto& absent : part.absent) {
+      if (absent == written) return written;
+      if (name_spelling(absent) == spelling) {
+        found = absent;
+        ++matches;
+      }
+    }
   }
   return matches == 1 ? found : written;
 }

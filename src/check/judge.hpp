@@ -92,7 +92,8 @@ std::string name_spelling(const std::string& written);
 /// `written` as the key names it, where it names a part or an answer however it is written:
 /// "I₀" and "I_0" are I0, "L_{0,\mathrm{body}}" is L0_body, "Ω_body_rate" is Omega_body_rate
 /// (a part's id or an answer's name as printed stays itself; one spelling that two answers share
-/// names neither). `written` itself otherwise, for the lookup to refuse with the key's names.
+/// names neither; an answer that does not exist at these values is one too). `written` itself
+/// otherwise, for the lookup to refuse with the key's names.
 std::string name_in_key(const Key& key, const std::string& written);
 
 /// The refusal of a line with its answer left out after the '=' or ':' ("rate_axis2 =", a

@@ -147,9 +147,10 @@ std::optional<std::pair<std::string, std::string>> named_line(const Key& key,
   const std::string name = check::name_in_key(key, line->name);
   for (const auto& part : key.parts) {
     known = known || part.id == named;
-    for (const auto& answer : part.answers) {
-      if (answer.name == name) named = name;
-      known = known || answer.name == name;
+    // Those that do not exist at these values too: "phidot_slow =" is as empty there.
+    for (const auto& asked : part.asked_names()) {
+      if (asked == name) named = name;
+      known = known || asked == name;
     }
   }
   if (line->answer.empty() && known) {

@@ -359,6 +359,11 @@ TEST_CASE("check: --name alone finds its part; neither part nor name says what t
       run_wobble({"check", "heavy-top", "--set", "theta0=90deg", "phidot_slow = none"});
   REQUIRE(exists.exit_code == 1);
   REQUIRE(exists.out == "incorrect: phidot_slow exists at these values\n");
+  // Its line with nothing after the '=' is refused as any answer's is, not judged wrong.
+  const RunResult empty = run_wobble({"check", "heavy-top", "--set", "psidot0=10", "φ̇_slow ="});
+  REQUIRE(empty.exit_code == 2);
+  REQUIRE(empty.out.empty());
+  REQUIRE_THAT(empty.err, Catch::StartsWith("wobble: phidot_slow: nothing after the '='"));
   const RunResult neither = run_wobble({"check", "flying-plate", "--answer", "1"});
   REQUIRE(neither.exit_code == 2);
   // Neither a part nor a name: the line says how, with this problem's answers by part.
