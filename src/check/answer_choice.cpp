@@ -30,7 +30,7 @@ void refuse_label_of_no_answer(const Key& key, const PartKey& part, const std::s
                                const std::string& part_field) {
   const std::string label = label_of(text);
   const bool word = !label.empty() &&
-                    !(std::isdigit(static_cast<unsigned char>(label.front())) != 0) &&
+                    std::isdigit(static_cast<unsigned char>(label.front())) == 0 &&
                     std::all_of(label.begin(), label.end(), [](char c) {
                       return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
                     });

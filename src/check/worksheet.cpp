@@ -151,19 +151,19 @@ struct Session {
   // others are, since saying so outright would give the answer away.
   std::vector<Asking> questions(const PartKey& part) const {
     std::vector<Asking> asked;
+    // "  omega3 [rad/s] = ": the answer's name and the unit it is asked in, if any.
+    const auto prompt = [](const std::string& name, const std::string& unit) {
+      return fmt::format("  {}{} = ", name, unit.empty() ? "" : " [" + sym::to_unicode(unit) + "]");
+    };
     for (const auto& a : part.answers) {
-      const std::string unit =
-          asked_unit(a).empty() ? "" : " [" + sym::to_unicode(asked_unit(a)) + "]";
-      asked.push_back({fmt::format("  {}{} = ", a.name, unit), shown(a), "",
+      asked.push_back({prompt(a.name, asked_unit(a)), shown(a), "",
                        [this, &a](const std::string& line) { return judge(ctx, a, line, opt); }});
     }
     for (std::size_t i = 0; i < part.absent.size(); ++i) {
       const std::string& name = part.absent[i];
-      const std::string unit = i < part.absent_unit.size() && !part.absent_unit[i].empty()
-                                   ? " [" + sym::to_unicode(part.absent_unit[i]) + "]"
-                                   : "";
-      asked.push_back({fmt::format("  {}{} = ", name, unit), "none at these values",
-                       part.absent_line(i), [this, &part, &name](const std::string& line) {
+      const std::string unit = i < part.absent_unit.size() ? part.absent_unit[i] : "";
+      asked.push_back({prompt(name, unit), "none at these values", part.absent_line(i),
+                       [this, &part, &name](const std::string& line) {
                          return *judge_absent(ctx.key, part.id, name, line, /*with_reason=*/true);
                        }});
     }

@@ -16,19 +16,18 @@ namespace {
 // their values.
 std::string answer_names(const PartKey& part, bool markdown) {
   std::string out;
-  for (const auto& a : part.answers) {
+  const auto add = [&](const std::string& name, const std::string& unit) {
     if (!out.empty()) out += ", ";
-    out += markdown ? "`" + a.name + "`" : a.name;
-    if (!asked_unit(a).empty()) out += " [" + detail::pretty(asked_unit(a)) + "]";
+    out += markdown ? "`" + name + "`" : name;
+    if (!unit.empty()) out += " [" + detail::pretty(unit) + "]";
+  };
+  for (const auto& a : part.answers) {
+    add(a.name, asked_unit(a));
     if (const std::string form = answer_form(a); !form.empty()) out += " (" + form + ")";
   }
   // Those that do not exist at these values are given too ("none"), in their units.
-  for (std::size_t i = 0; i < part.absent.size(); ++i) {
-    if (!out.empty()) out += ", ";
-    out += markdown ? "`" + part.absent[i] + "`" : part.absent[i];
-    const std::string unit = i < part.absent_unit.size() ? part.absent_unit[i] : "";
-    if (!unit.empty()) out += " [" + detail::pretty(unit) + "]";
-  }
+  for (std::size_t i = 0; i < part.absent.size(); ++i)
+    add(part.absent[i], i < part.absent_unit.size() ? part.absent_unit[i] : "");
   return out;
 }
 
