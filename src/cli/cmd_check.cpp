@@ -159,6 +159,20 @@ std::optional<std::pair<std::string, std::string>> named_line(const Key& key,
   return std::pair{named, line->answer};
 }
 
+// Whether one word typed where the part goes, with nothing after it and no name before an '=',
+// is an answer rather than a misspelt name: a number, an expression or a list ("[[13/3, -1/2,
+// ..]]", "4.33 kg m^2", "m*a^2/6"). Not a LaTeX name ("\\dot{\\phi}") nor a part in
+// parentheses ("(a)").
+bool reads_as_value(const Key& key, const std::string& word) {
+  if (word.empty()) return false;
+  for (const auto& part : key.parts) {
+    if (word == "(" + part.id + ")") return false;
+  }
+  const char first = word.front();
+  return is_digit(first) || first == '-' || first == '.' ||
+         word.find_first_of(" []()=,;+*/") != std::string::npos;
+}
+
 // The part and the answer typed. "wobble check P --name N ANSWER": --name lets the part go,
 // so the one word after the problem is the answer unless it names a part or an answer.
 // "wobble check P 'N = ANSWER'": one word, a key's line, names the answer or the part
@@ -251,6 +265,14 @@ int run_check(const CheckOptions& opt) {
         answers_by_part(key)));
   }
   const auto [part, typed] = part_and_answer(opt, problem, key);
+  if (typed.empty() && opt.name.empty() && !names_part_or_answer(problem, part) &&
+      check::name_in_key(key, part) == part && reads_as_value(key, part)) {
+    // An answer alone: which of the problem's it is for is the student's to say.
+    throw InputError(fmt::format(
+        "part: '{}' has no name; say whose answer it is, as wobble check {} 'NAME = ANSWER' or "
+        "wobble check {} PART ANSWER (answers by part: {})",
+        printable(part, 40), opt.problem, opt.problem, answers_by_part(key)));
+  }
   const sym::SymbolTable table = problem.symbol_table();
   const check::Context ctx{key, table, values};
   // "I₀", "I_0": an answer's name as the statement or a LaTeX handout writes it. A part of

@@ -97,6 +97,7 @@ Computed center_of_mass(Context& c, const std::string& quantity) {
   require_mass(c, quantity);
   const auto& r = c.body.exact.r_cm;
   Computed out{exact_vector(quantity, {r[0], r[1], r[2]}, "m", c.exact), {}};
+  out.answer.step_names = {"r_cm"};  // as the step below writes it
   out.steps.push_back(
       {"r_cm = Σ m r / Σ m = " + out.answer.symbolic,
        "r_{\\mathrm{cm}} = \\frac{\\sum_p m_p r_p}{\\sum_p m_p} = " + out.answer.latex,

@@ -2718,6 +2718,20 @@ TEST_CASE("an answer's name as the statement or LaTeX writes it finds the answer
   REQUIRE(name_in_key(plate.key, "θ_L") == "angle_L_e3");
   REQUIRE(name_in_key(plate.key, "\\theta_{L}") == "angle_L_e3");
   REQUIRE(name_in_key(plate.key, "") == "");
+  // The centre of mass as its step writes it, r_cm = Σ m r / Σ m, in every problem that asks it.
+  for (const char* id :
+       {"box-corner", "solid-cone", "three-atom-molecule", "three-atom-molecule-symmetric"}) {
+    INFO(id);
+    const Fixture body(id);
+    for (const char* r_cm : {"r_cm", "r_{cm}", "r_{\\mathrm{cm}}"})
+      REQUIRE(name_in_key(body.key, r_cm) == "center_of_mass");
+  }
+}
+
+TEST_CASE("a label the steps write for the centre of mass names it") {
+  const Fixture box("box-corner");
+  REQUIRE(box.check("center_of_mass", "r_cm = (0.5, 1, 1.5) m").correct);
+  REQUIRE_FALSE(box.check("center_of_mass", "r_cm = (1, 2, 3) m").correct);
 }
 
 TEST_CASE("a refusal shown where no option was typed names an entry counted from 1") {

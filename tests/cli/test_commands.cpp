@@ -438,6 +438,34 @@ TEST_CASE("check: one word that is a key's line, NAME = ANSWER, names its answer
   REQUIRE_THAT(run_wobble({"check", "asymmetric-top", "J0 ="}).err,
                Catch::StartsWith("wobble: part: problem asymmetric-top has no part or answer "
                                  "'J0'"));
+  // An answer alone, with neither its part nor its name: which answer it is for is asked, not
+  // guessed (box-corner has two 3x3 tensors), and a misspelt name is still refused as a name.
+  for (const char* alone : {"[[13/3, -1/2, -3/4], [-1/2, 10/3, -3/2], [-3/4, -3/2, 5/3]]",
+                            "{{13/3, -1/2, -3/4}, {-1/2, 10/3, -3/2}, {-3/4, -3/2, 5/3}}",
+                            "4.33 kg m^2", "m*a^2/6", "0.5"}) {
+    INFO(alone);
+    const RunResult unnamed = run_wobble({"check", "box-corner", alone});
+    REQUIRE(unnamed.exit_code == 2);
+    REQUIRE(unnamed.out.empty());
+    REQUIRE_THAT(unnamed.err,
+                 Catch::StartsWith("wobble: part: '") &&
+                     Catch::Contains("' has no name; say whose answer it is, as wobble check "
+                                     "box-corner 'NAME = ANSWER' or wobble check box-corner PART "
+                                     "ANSWER (answers by part: (a) I_corner; (b) center_of_mass"));
+  }
+  // Named as the steps write it (r_cm = Σ m r / Σ m), with or without its part of two answers.
+  for (const auto& words : std::vector<std::vector<std::string>>{
+           {"check", "box-corner", "r_cm = (0.5, 1, 1.5) m"},
+           {"check", "box-corner", "b", "r_cm = (0.5, 1, 1.5) m"}}) {
+    const RunResult named = run_wobble(words);
+    REQUIRE(named.exit_code == 0);
+    REQUIRE(named.out == "correct: center_of_mass\n");
+  }
+  for (const char* name : {"I_corners", "(a)", "\\dot{\\phi}"}) {
+    INFO(name);
+    REQUIRE_THAT(run_wobble({"check", "box-corner", name}).err,
+                 Catch::StartsWith("wobble: part: problem box-corner has no part or answer"));
+  }
   // The line split by the shell: quoted whole, and what is suggested is judged.
   const RunResult split =
       run_wobble({"check", "asymmetric-top", "rate_axis2", "=", "1.772", "1/s"});
