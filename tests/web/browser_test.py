@@ -244,6 +244,13 @@ def main():
         expect(hint and hint[0].find_elements(By.CSS_SELECTOR, ".katex") and
                not hint[0].find_elements(By.CSS_SELECTOR, ".katex-error"),
                "the hint's math is not typeset")
+        # A refusal under its box names no request field ("answer: .."): the box is the answer.
+        target.clear()
+        target.send_keys("[[1, 2], [3, 4]]", Keys.ENTER)
+        WebDriverWait(d, 20).until(lambda dr: "2x2" in verdict_of(dr, name).text)
+        refused = verdict_of(d, name).text
+        expect(refused.startswith(name + " wants a 3x3 matrix"),
+               "the refusal under %s: %r" % (name, refused))
         # The matrix pasted as MATLAB prints it, a row on each line: the box keeps the lines (an
         # input strips them, and "-0.75⏎-0.5" became the difference -0.75-0.5) and grows to
         # show them; Enter judges it.

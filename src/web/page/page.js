@@ -218,7 +218,8 @@ function partView(id, variant, part, state, partKey, update) {
         }
       } catch (e) {
         verdict.className = 'verdict wrong';
-        verdict.textContent = e.message;
+        // The server names the request's field, "answer: .."; under its box the box is that.
+        verdict.textContent = e.message.replace(/^answer(: |, )/, '');
         await wrongTry();  // an answer the judge cannot read is a try too
       }
     });
