@@ -681,7 +681,8 @@ Options options_for(const Answer& a, const Options& options) {
   return opt;
 }
 
-std::string nothing_after(const std::string& field, char separator, const std::string& line) {
+std::string nothing_after(const std::string& field, const std::string& separator,
+                          const std::string& line) {
   return fmt::format("{}: nothing after the '{}' in \"{}\"; the answer goes after it", field,
                      separator, line);
 }
@@ -725,33 +726,43 @@ std::string name_spelling(const std::string& written) {
   return out;
 }
 
-std::string name_in_key(const Key& key, const std::string& written) {
-  if (written.empty()) return written;
-  const std::string spelling = name_spelling(written);
-  std::string found;
-  int matches = 0;
+namespace {
+// The prime as typed, "'", as set, "′" (U+2032), or as a word processor turns "'", "’". A
+// spelling drops it, yet it makes another name (E′, the heavy top's level, is not its energy E):
+// names are alike only if both have a prime or neither has.
+bool primed(const std::string& name) {
+  return name.find('\'') != std::string::npos || name.find("′") != std::string::npos ||
+         name.find("’") != std::string::npos;
+}
+}  // namespace
+
+NamesInKey::NamesInKey(const Key& key) {
+  const auto add = [&](const std::string& written, const std::string& answer) {
+    spelt_[{name_spelling(written), primed(written)}].insert(answer);
+  };
   for (const auto& part : key.parts) {
-    if (part.id == written) return written;
+    exact_.insert(part.id);
     for (const auto& answer : part.answers) {
-      if (answer.name == written) return written;
-      const bool step_named =
-          std::any_of(answer.step_names.begin(), answer.step_names.end(),
-                      [&](const std::string& n) { return name_spelling(n) == spelling; });
-      if (name_spelling(answer.name) == spelling || step_named) {
-        found = answer.name;
-        ++matches;
-      }
+      exact_.insert(answer.name);
+      add(answer.name, answer.name);
+      for (const std::string& step_name : answer.step_names) add(step_name, answer.name);
     }
     // An answer that does not exist at these values is named as where it exists ("φ̇_slow").
     for (const auto& absent : part.absent) {
-      if (absent == written) return written;
-      if (name_spelling(absent) == spelling) {
-        found = absent;
-        ++matches;
-      }
+      exact_.insert(absent);
+      add(absent, absent);
     }
   }
-  return matches == 1 ? found : written;
+}
+
+std::string NamesInKey::operator()(const std::string& written) const {
+  if (written.empty() || exact_.count(written) != 0) return written;
+  const auto found = spelt_.find({name_spelling(written), primed(written)});
+  return found != spelt_.end() && found->second.size() == 1 ? *found->second.begin() : written;
+}
+
+std::string name_in_key(const Key& key, const std::string& written) {
+  return NamesInKey(key)(written);
 }
 
 namespace {
@@ -1663,7 +1674,7 @@ Verdict judge_text(const Context& ctx, const Answer& a, const std::string& text,
   const std::string written = written_answer(ctx, text);
   // "rate_axis2 =": a prompt's line pasted with its answer left out.
   if (const std::string line = trim(written); !line.empty() && line.back() == '=') {
-    throw InputError(nothing_after(kField, '=', line));
+    throw InputError(nothing_after(kField, "=", line));
   }
   // "118.8 rad/s (about 1134 rpm)": the answer and the same again, each judged.
   if (const auto r = restatement_of(written)) return judge_restated(ctx, a, *r, options);

@@ -24,8 +24,11 @@
 /// A line of a key may be pasted with its '=' ("I0 = m·R²/4 = 0.00072 kg m²"): every side is
 /// judged. '≈' (and '≃', '∼', a leading '~') reads as '='; components one by one with their
 /// labels ("x = 0.5, y = 1, z = 1.5") are one vector (written_forms.hpp).
+#include <map>
 #include <optional>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solvers/key.hpp"
@@ -92,13 +95,27 @@ std::string name_spelling(const std::string& written);
 /// `written` as the key names it, where it names a part or an answer however it is written:
 /// "I₀" and "I_0" are I0, "L_{0,\mathrm{body}}" is L0_body, "Ω_body_rate" is Omega_body_rate
 /// (a part's id or an answer's name as printed stays itself; one spelling that two answers share
-/// names neither; an answer that does not exist at these values is one too). `written` itself
-/// otherwise, for the lookup to refuse with the key's names.
+/// names neither; an answer that does not exist at these values is one too; a name the steps
+/// write for an answer is that answer, θ_L and r_cm; a prime makes another name, E′ is not E).
+/// `written` itself otherwise, for the lookup to refuse with the key's names.
 std::string name_in_key(const Key& key, const std::string& written);
+
+/// name_in_key for many names of one key (a submission's lines): the key's names spelt once.
+class NamesInKey {
+ public:
+  explicit NamesInKey(const Key& key);
+  std::string operator()(const std::string& written) const;
+
+ private:
+  std::set<std::string> exact_;  ///< part ids and answer names, as printed
+  /// Each spelling, primed or not, and the answers it names.
+  std::map<std::pair<std::string, bool>, std::set<std::string>> spelt_;
+};
 
 /// The refusal of a line with its answer left out after the '=' or ':' ("rate_axis2 =", a
 /// prompt's line pasted), naming `field`: the option, or the answer the line names.
-std::string nothing_after(const std::string& field, char separator, const std::string& line);
+std::string nothing_after(const std::string& field, const std::string& separator,
+                          const std::string& line);
 
 /// A refusal from judge() without the command-line option it names ("--answer: "), for the
 /// surfaces where the student typed no option (a submission file, the worksheet, the browser);

@@ -361,7 +361,8 @@ std::optional<std::pair<std::string, std::string>> latex_with_answer_names(
       if (!with_answers.contains(b.name))
         with_answers.declare(b.name, name_latex(b.name), sym::SymbolSign::real);
       for (const std::string& step_name : b.step_names) {  // \theta_L for angle_L_e3
-        if (!with_answers.contains(step_name))
+        // Not a primed one (E′ for the heavy top's level): it has no LaTeX name.
+        if (!with_answers.contains(step_name) && step_name.find('\'') == std::string::npos)
           with_answers.declare(step_name, name_latex(step_name), sym::SymbolSign::real);
       }
     }

@@ -90,7 +90,13 @@ std::vector<Line> read_lines(const std::string& text) {
 
 std::optional<NamedAnswer> answer_line(const std::string& line) {
   const std::string text = trim(line);
-  const auto at = std::min(text.find('='), text.find(':'));
+  std::size_t at = std::string::npos, length = 1;
+  for (const char* separator : {"=", ":", "≈", "≃", "∼"}) {
+    if (const std::size_t found = text.find(separator); found < at) {
+      at = found;
+      length = std::char_traits<char>::length(separator);
+    }
+  }
   if (at == std::string::npos) return std::nullopt;
   std::string name = without_part_mark(trim(text.substr(0, at)));
   // "rate_axis2 [rad/s or 1/s] = ..": the worksheet's prompt pasted with its unit.
@@ -98,8 +104,9 @@ std::optional<NamedAnswer> answer_line(const std::string& line) {
     name = trim(name.substr(0, open));
   // "rate_axis2 == 1.772", "k := 0.8": a separator typed twice (as a program's comparison or
   // assignment is written) is one; the answer starts after the last.
-  const std::size_t answer_at = text.find_first_not_of("=: \t", at + 1);
-  return NamedAnswer{name, answer_at == std::string::npos ? "" : text.substr(answer_at), text[at]};
+  const std::size_t answer_at = text.find_first_not_of("=: \t", at + length);
+  return NamedAnswer{name, answer_at == std::string::npos ? "" : text.substr(answer_at),
+                     text.substr(at, length)};
 }
 
 bool SubmissionResult::all_correct() const {
@@ -124,30 +131,28 @@ std::optional<long> submission_variant(const std::string& text) {
 
 SubmissionResult judge_submission(const Context& ctx, const std::string& text, const Options& opt) {
   SubmissionResult result;
+  std::vector<std::pair<int, std::string>> problems;  // each with its line, said in line order
   std::map<std::string, Line> given;
   for (const auto& line : read_lines(text)) {
     if (line.name == "variant") continue;
     if (line.answer.empty() && line.name.find_first_of(" \t") != std::string::npos) {
-      result.problems.push_back(
-          fmt::format("line {}: '{}' is not NAME = ANSWER", line.number, line.name));
+      problems.emplace_back(
+          line.number, fmt::format("line {}: '{}' is not NAME = ANSWER", line.number, line.name));
     } else if (!given.emplace(line.name, line).second) {
-      result.problems.push_back(fmt::format("line {}: {} is answered twice (the first is judged)",
-                                            line.number, line.name));
+      problems.emplace_back(line.number,
+                            fmt::format("line {}: {} is answered twice (the first is judged)",
+                                        line.number, line.name));
     }
   }
-  // A line names an answer by its name, or, if that is no answer's name, by its spelling:
-  // "I_0 = ..." or "L_{0,\mathrm{body}} = ..." as a LaTeX handout sets the names. Each name is
-  // spelt once (a submission may have thousands of lines).
-  std::map<std::string, std::string> spelling;  // of each answer's name and each line's
-  for (const auto& part : ctx.key.parts) {
-    for (const auto& a : part.answers) spelling.emplace(a.name, name_spelling(a.name));
-    for (const auto& name : part.absent) spelling.emplace(name, name_spelling(name));
-  }
-  const std::map<std::string, std::string> answer_spelling = spelling;
-  for (const auto& [name, line] : given) spelling.emplace(name, name_spelling(name));
+  // A line names an answer as `wobble check` takes its name (name_in_key): by its name, or by
+  // its spelling, "I_0 = ..." or "L_{0,\mathrm{body}} = ..." as a LaTeX handout sets the names,
+  // or by a name the steps write for it, "E = .." for the heavy top's energy. Each line's name is
+  // looked up once (a submission may have thousands of lines).
+  const NamesInKey in_key(ctx.key);
+  std::map<std::string, std::string> named;  // each line's name -> the answer's, or itself
+  for (const auto& [name, line] : given) named.emplace(name, in_key(name));
   const auto names = [&](const std::string& line_name, const std::string& answer) {
-    return line_name == answer || (answer_spelling.count(line_name) == 0 &&
-                                   spelling.at(line_name) == answer_spelling.at(answer));
+    return named.at(line_name) == answer;
   };
   // The first line naming the answer.
   const auto line_for = [&](const std::string& answer) {
@@ -206,12 +211,16 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
       all += (all.empty() ? "" : ", ") + s.name;
       if (names(name, s.name)) again = &s;
     }
-    result.problems.push_back(
-        again != nullptr ? fmt::format("line {}: '{}' answers {} again (the first is judged)",
+    problems.emplace_back(
+        line.number, again != nullptr
+                         ? fmt::format("line {}: '{}' answers {} again (the first is judged)",
                                        line.number, name, again->name)
                          : fmt::format("line {}: '{}' is no answer of this problem (answers: {})",
                                        line.number, name, all));
   }
+  std::stable_sort(problems.begin(), problems.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (auto& [number, problem] : problems) result.problems.push_back(std::move(problem));
   return result;
 }
 

@@ -35,16 +35,17 @@ struct SubmissionResult {
   bool all_correct() const;
 };
 
-/// One line's name and answer: NAME = ANSWER or NAME: ANSWER (split at the first '=' or ':'; a
-/// separator typed twice, "NAME == ANSWER" or "NAME := ANSWER", is one),
+/// One line's name and answer: NAME = ANSWER or NAME: ANSWER (split at the first '=' or ':', or
+/// '≈', '≃' or '∼', which the judge reads as '=': "φ̇_slow ≈ 4.995 rad/s"; a separator typed
+/// twice, "NAME == ANSWER" or "NAME := ANSWER", is one),
 /// a part's mark before the name dropped ("(b) rate_axis2 = 1.772 1/s"), and the unit the
 /// worksheet's prompt shows after it ("rate_axis2 [rad/s or 1/s] = .."), both trimmed; as a
 /// submission's line, and one word `wobble check` is given.
 struct NamedAnswer {
   std::string name, answer;
-  char separator = '=';  ///< '=' or ':'
+  std::string separator = "=";  ///< as typed: "=", ":", "≈", ..
 };
-/// nullopt where the line has neither '=' nor ':'.
+/// nullopt where the line has no separator.
 std::optional<NamedAnswer> answer_line(const std::string& line);
 
 /// The submission's "variant = N" line, if it has one.

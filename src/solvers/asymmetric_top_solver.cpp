@@ -316,6 +316,7 @@ Computed modulus_squared(const Asym& t, const std::string& q) {
   require_period(t, q);
   const Elliptic& e = elliptic(t);
   Computed out{exact_scalar(q, q == "k2" ? e.k2 : e.kc2, "", t.exact), elliptic_steps(t)};
+  if (q == "kc2") out.answer.step_names = {"k'^2"};  // as its note writes it, k'² = 1 − k²
   if (const auto numeric = elliptic_route(t); numeric && q == "kc2")
     check_routes_agree(out.answer.value.data[0], numeric->kc2(), 1.0, kRouteUlps, q);
   // k^2 > 1/2: the turning points of w are nearer the separatrix than the axis.

@@ -388,7 +388,8 @@ Computed energy(const Top& t, const std::string& q) {
   const ex E = q == "energy" ? t.energy_prime + t.I3 / 2 * GiNaC::pow(t.w3, 2) : t.energy_prime;
   Computed out{exact_scalar(q, E, "J", t.exact), {lagrangian_step(), momenta_step()}};
   if (q == "energy_prime") out.steps.push_back(potential_step());
-  if (q == "energy") out.answer.step_names = {"E"};  // "E = T + M g l cos θ", as the steps write
+  // "E = T + M g l cos θ", as the steps write; the level E′, as the question does.
+  out.answer.step_names = {q == "energy" ? "E" : "E'"};
   const double Vn = t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m;
   check_routes_agree(out.answer.value.data[0], q == "energy" ? k.energy : k.energy_prime,
                      std::abs(k.energy) + Vn, kRouteUlps, q);

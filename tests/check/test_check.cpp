@@ -1136,6 +1136,39 @@ TEST_CASE(
                Catch::Contains("line 5: 'Omega' is no answer of this problem (answers: I0, I, "));
 }
 
+TEST_CASE(
+    "a submission names answers as check does: by the steps' names, a prime apart, '≈' for '='; "
+    "its problems in line order") {
+  const Fixture top("heavy-top");
+  const Context ctx{top.key, top.table, top.values};
+  const auto value = [&](const std::string& name) {
+    return fmt::format("{:.10g}", top.answer(name).value.data.at(0));
+  };
+  const std::string text =
+      "zz = 1\n"
+      "E = " +
+      value("energy") + " J\n" +                  // the steps' E
+      "E′ = " + value("energy_prime") + " J\n" +  // the question's E′
+      "energy = 1 J\n"                            // E's answer again
+      "aa = 2\n"
+      "φ̇_slow ≈ " +
+      value("phidot_slow") + " rad/s\n";
+  const SubmissionResult r = judge_submission(ctx, text, {});
+  const auto verdict = [&](const std::string& name) {
+    for (const auto& s : r.answers) {
+      if (s.name == name) return s.verdict;
+    }
+    throw std::logic_error("no answer " + name);
+  };
+  REQUIRE(verdict("energy").correct);
+  REQUIRE(verdict("energy_prime").correct);
+  REQUIRE(verdict("phidot_slow").correct);
+  REQUIRE(r.problems.size() == 3);
+  REQUIRE_THAT(r.problems[0], Catch::StartsWith("line 1: 'zz' is no answer"));
+  REQUIRE(r.problems[1] == "line 4: 'energy' answers energy again (the first is judged)");
+  REQUIRE_THAT(r.problems[2], Catch::StartsWith("line 5: 'aa' is no answer"));
+}
+
 TEST_CASE("a submission's comments, part headings and part marks name no answer") {
   const Fixture plate("flying-plate");
   const std::string i0 = fmt::format("{:.6g}", plate.answer("I0").value.data[0]);
@@ -1220,18 +1253,24 @@ TEST_CASE("a zero left by rounding has no reciprocal and no percentage to be off
 TEST_CASE("one line's name and answer, as a submission and one word to check read it") {
   using wobble::check::answer_line;
   for (const auto& [line, name, answer, separator] :
-       std::vector<std::tuple<std::string, std::string, std::string, char>>{
-           {"rate_axis2 = 1.772 1/s", "rate_axis2", "1.772 1/s", '='},
-           {"rate_axis2: 1.772 1/s", "rate_axis2", "1.772 1/s", ':'},
-           {"(b) rate_axis2 = 1.772", "rate_axis2", "1.772", '='},
-           {"b) rate_axis2=1.772", "rate_axis2", "1.772", '='},
-           {"rate_axis2 [rad/s or 1/s] = 1.772 1/s", "rate_axis2", "1.772 1/s", '='},
-           {"I₀ = m·R²/4 = 0.00072 kg m²", "I₀", "m·R²/4 = 0.00072 kg m²", '='},
-           {"rate_axis2 =", "rate_axis2", "", '='},
-           {"rate_axis2 == 1.772 1/s", "rate_axis2", "1.772 1/s", '='},
-           {"k := 0.8", "k", "0.8", ':'},
-           {"rate_axis2 : = -1.772", "rate_axis2", "-1.772", ':'},
-           {"rate_axis2 ==", "rate_axis2", "", '='}}) {
+       std::vector<std::tuple<std::string, std::string, std::string, std::string>>{
+           {"rate_axis2 = 1.772 1/s", "rate_axis2", "1.772 1/s", "="},
+           {"rate_axis2: 1.772 1/s", "rate_axis2", "1.772 1/s", ":"},
+           {"(b) rate_axis2 = 1.772", "rate_axis2", "1.772", "="},
+           {"b) rate_axis2=1.772", "rate_axis2", "1.772", "="},
+           {"rate_axis2 [rad/s or 1/s] = 1.772 1/s", "rate_axis2", "1.772 1/s", "="},
+           {"I₀ = m·R²/4 = 0.00072 kg m²", "I₀", "m·R²/4 = 0.00072 kg m²", "="},
+           {"rate_axis2 =", "rate_axis2", "", "="},
+           {"rate_axis2 == 1.772 1/s", "rate_axis2", "1.772 1/s", "="},
+           {"k := 0.8", "k", "0.8", ":"},
+           {"rate_axis2 : = -1.772", "rate_axis2", "-1.772", ":"},
+           {"rate_axis2 ==", "rate_axis2", "", "="},
+           // As the judge reads them, '≈', '≃' and '∼' stand for '='.
+           {"φ̇_slow ≈ 4.995 rad/s", "φ̇_slow", "4.995 rad/s", "≈"},
+           {"phidot_fast ≃ 25.8", "phidot_fast", "25.8", "≃"},
+           {"k ∼ 0.8", "k", "0.8", "∼"},
+           {"k ≈", "k", "", "≈"},
+           {"I₀ = m·R²/4 ≈ 0.00072 kg m²", "I₀", "m·R²/4 ≈ 0.00072 kg m²", "="}}) {
     INFO(line);
     const auto read = answer_line(line);
     REQUIRE(read.has_value());

@@ -2726,6 +2726,18 @@ TEST_CASE("an answer's name as the statement or LaTeX writes it finds the answer
     for (const char* r_cm : {"r_cm", "r_{cm}", "r_{\\mathrm{cm}}"})
       REQUIRE(name_in_key(body.key, r_cm) == "center_of_mass");
   }
+  // A prime makes another name: the heavy top's level E′ (as the question writes it) is not its
+  // energy E (as the steps do), however the prime is typed.
+  const Fixture top("heavy-top");
+  REQUIRE(name_in_key(top.key, "E") == "energy");
+  for (const char* level : {"E'", "E′", "E’"})
+    REQUIRE(name_in_key(top.key, level) == "energy_prime");
+  REQUIRE(name_in_key(plate.key, "θ_L'") == "θ_L'");
+  // The asymmetric top's k′² = 1 − k² (kc2, as its note writes it) is not k² (k2).
+  const Fixture asymmetric("asymmetric-top");
+  for (const char* kc2 : {"k'^2", "k′²", "k’^2"})
+    REQUIRE(name_in_key(asymmetric.key, kc2) == "kc2");
+  for (const char* k2 : {"k^2", "k²"}) REQUIRE(name_in_key(asymmetric.key, k2) == "k2");
 }
 
 TEST_CASE("a label the steps write for the centre of mass names it") {

@@ -461,6 +461,19 @@ TEST_CASE("check: one word that is a key's line, NAME = ANSWER, names its answer
     REQUIRE(named.exit_code == 0);
     REQUIRE(named.out == "correct: center_of_mass\n");
   }
+  // A line with '≈' for '=', as the judge reads it, and a primed name, the heavy top's level E′.
+  for (const auto& [line, verdict] : std::vector<std::pair<std::string, std::string>>{
+           {"φ̇_slow ≈ 4.995 rad/s", "correct: phidot_slow\n"},
+           {"E′ = 0.3398 J", "correct: energy_prime\n"},
+           {"E = 7.371 J", "correct: energy\n"}}) {
+    INFO(line);
+    const RunResult named = run_wobble({"check", "heavy-top", line});
+    REQUIRE(named.exit_code == 0);
+    REQUIRE(named.out == verdict);
+  }
+  REQUIRE(run_wobble({"check", "heavy-top", "phidot_fast ≈"}).err ==
+          "wobble: phidot_fast: nothing after the '≈' in \"phidot_fast ≈\"; the answer goes after "
+          "it\n");
   for (const char* name : {"I_corners", "(a)", "\\dot{\\phi}"}) {
     INFO(name);
     REQUIRE_THAT(run_wobble({"check", "box-corner", name}).err,
