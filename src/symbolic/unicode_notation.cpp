@@ -207,11 +207,56 @@ bool ends_in_arc_count(const std::string& out) {
 }
 }  // namespace
 
+namespace {
+// What to_ascii's first pass writes for a √.
+constexpr char kRoot = '\x01';
+
+// The second pass: √( -> sqrt(, √x -> sqrt(x) for a number or a name, √√x -> sqrt(sqrt(x)) and
+// √√(..) -> sqrt(sqrt(..)). Without recursion: a typed answer may hold thousands of roots.
+std::string roots_spelt(const std::string& text) {
+  std::string result;
+  int depth = 0;  // of the brackets
+  // The brackets opened after roots of roots, by their depth, and the closes each owes after its
+  // own: "√√(" owes one.
+  std::vector<std::pair<int, std::size_t>> owed;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != kRoot) {
+      result += text[i];
+      if (text[i] == '(') {
+        ++depth;
+      } else if (text[i] == ')') {
+        --depth;
+        if (!owed.empty() && owed.back().first == depth) {
+          result.append(owed.back().second, ')');
+          owed.pop_back();
+        }
+      }
+      continue;
+    }
+    std::size_t roots = 0;
+    for (; i < text.size() && text[i] == kRoot; ++i) ++roots;
+    if (i < text.size() && text[i] == '(') {
+      for (std::size_t k = 1; k < roots; ++k) result += "sqrt(";
+      result += "sqrt(";
+      if (roots > 1) owed.emplace_back(depth, roots - 1);
+      ++depth;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && (is_name_char(text[end]) || text[end] == '.')) ++end;
+    for (std::size_t k = 0; k < roots; ++k) result += "sqrt(";
+    result += text.substr(i, end - i);
+    result.append(roots, ')');
+    i = end - 1;
+  }
+  return result;
+}
+}  // namespace
+
 std::string to_ascii(const std::string& typed) {
   const std::string text = letters_folded(typed);
   // First pass: everything but √, which becomes a marker (its operand is only known after the
   // letters around it are read).
-  constexpr char kRoot = '\x01';
   std::string out;
   for (std::size_t i = 0; i < text.size();) {
     if (static_cast<unsigned char>(text[i]) < 0x80) {
@@ -270,23 +315,7 @@ std::string to_ascii(const std::string& typed) {
     }
     if (!replaced) out += text[i++];  // unknown: left for the expression guard to name
   }
-  // Second pass: √( -> sqrt(, √x -> sqrt(x) for a number or a name.
-  std::string result;
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    if (out[i] != kRoot) {
-      result += out[i];
-      continue;
-    }
-    std::size_t j = i + 1;
-    if (j < out.size() && out[j] == '(') {
-      result += "sqrt";
-      continue;
-    }
-    while (j < out.size() && (is_name_char(out[j]) || out[j] == '.')) ++j;
-    result += "sqrt(" + out.substr(i + 1, j - i - 1) + ")";
-    i = j - 1;
-  }
-  return result;
+  return roots_spelt(out);
 }
 
 std::string letters_folded(const std::string& text) {

@@ -27,3 +27,29 @@ TEST_CASE("to_unicode prints powers as superscripts, a negative whole one too, a
   REQUIRE(to_ascii(to_unicode("kg m^2 s^-1")) == "kg m^2 s^(-1)");
   REQUIRE(to_ascii(to_unicode("kg*m^2*s^(-12)")) == "kg*m^2*s^(-12)");
 }
+
+TEST_CASE("a root's operand is a bracket, a number, a name or another root's operand") {
+  for (const auto& [typed, read] : std::vector<std::pair<std::string, std::string>>{
+           {"√2", "sqrt(2)"},
+           {"√(m R)", "sqrt(m R)"},
+           {"2√3/2", "2sqrt(3)/2"},
+           {"√√2", "sqrt(sqrt(2))"},
+           {"√√(a+b)/4", "sqrt(sqrt(a+b))/4"},
+           {"√(√(a))·√√√x", "sqrt(sqrt(a))*sqrt(sqrt(sqrt(x)))"},
+           // Closes owed to roots of roots come after their own bracket's, nested too.
+           {"√√(√√(a)+1)", "sqrt(sqrt(sqrt(sqrt(a))+1))"},
+           // Nothing to take the root of: an empty call, for the guard to refuse.
+           {"√", "sqrt()"},
+           {"√√", "sqrt(sqrt())"}}) {
+    INFO(typed);
+    REQUIRE(to_ascii(typed) == read);
+  }
+  // Thousands of roots of roots read without a deep recursion.
+  constexpr int kRoots = 20000;
+  std::string many, read;
+  for (int k = 0; k < kRoots; ++k) {
+    many += "√";
+    read += "sqrt(";
+  }
+  REQUIRE(to_ascii(many + "2") == read + "2" + std::string(kRoots, ')'));
+}
