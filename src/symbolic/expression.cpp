@@ -126,6 +126,14 @@ std::string plain_parse_error(const std::string& text, const std::string& ginac_
   if (ginac_message.find("division by zero") != std::string::npos) {
     return "it divides by zero";
   }
+  // "2^3^2": GiNaC's parser takes no power of a power, which reads either way; the guard takes
+  // no power inside an exponent.
+  if (ginac_message.find("power should have exactly 2 operands") != std::string::npos) {
+    return "a power of a power needs brackets, (a^b)^c, or its exponent worked out";
+  }
+  if (ginac_message.find("pow(0,0) is undefined") != std::string::npos) {
+    return "it raises zero to the power zero";
+  }
   if (ginac_message.find("got: \",\"") != std::string::npos) {
     return "a ',' where one expression was expected (a vector is written [x, y, z])";
   }

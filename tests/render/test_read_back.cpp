@@ -1197,6 +1197,13 @@ TEST_CASE("messages speak to a student: no parser jargon, the symbols that exist
   // Where the stars would not make it read either, what is wrong is named instead.
   REQUIRE_THAT(top_message("M R^2 (psidot0 + 1/2"), Catch::Contains("a '(' is not closed"));
   REQUIRE_THAT(top_message("M R^2 psidot0/2 + q"), Catch::Contains("undefined symbol 'q'"));
+  // A power of a power reads two ways; zero to the power zero is no number.
+  REQUIRE_THAT(top_message("M R^2^1 psidot0/2"),
+               Catch::EndsWith("a power of a power needs brackets, (a^b)^c, or its exponent "
+                               "worked out"));
+  REQUIRE(top.check("p_psi", "M (R^2)^1 psidot0/2").correct);
+  REQUIRE_THAT(top_message("0^0 M R^2 psidot0/2"),
+               Catch::EndsWith("it raises zero to the power zero"));
   // A function's one-factor argument without parentheses, as books write it; not with a power,
   // which books read two ways.
   REQUIRE(top.check("energy_prime", "M l g cos θ0").correct);
