@@ -26,7 +26,10 @@ class Reader {
     if (node != nullptr && node->source().begin.line > 0) {
       where += ":" + std::to_string(node->source().begin.line);
     }
-    throw InputError(where + ": " + field + ": " + what);
+    // A message that names the field already (a value's reader was told it) names it once.
+    const std::string named = field + ": ";
+    const bool said = what.compare(0, named.size(), named) == 0;
+    throw InputError(where + ": " + named + (said ? what.substr(named.size()) : what));
   }
 
   void only_keys(const toml::table& t, const std::string& field,

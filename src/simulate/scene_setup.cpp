@@ -146,9 +146,16 @@ void check_ranges(const SceneSetup& s) {
   const double E_max = L_max / I_min * L_max / 2 + 2 * pull;
   // |L|^2 is taken too (|L| conserved, the error norm): L itself must stay below 1e150.
   if (!(E_max < kMaxEnergyJ) || !(L_max < kMaxMomentum)) {
-    const std::string field = m.torque    ? "effects.torque.value"
-                              : m.gravity ? "effects.gravity"
-                                          : "initial.omega";
+    // Beyond already at the start: the spin's doing (or the body's size), whatever the effects.
+    const double L0 = s.m0_P.stableNorm(), E0 = L0 / I_min * L0 / 2;
+    if (!(E0 < kMaxEnergyJ) || !(L0 < kMaxMomentum)) {
+      throw InputError(fmt::format(
+          "initial.omega: at the start the angular momentum is {} kg m^2/s and the energy {} J, "
+          "beyond what double precision holds (about 1e308 for the squares taken); scale the "
+          "values down",
+          size_text(L0), size_text(E0)));
+    }
+    const std::string field = m.torque ? "effects.torque.value" : "effects.gravity";
     throw InputError(fmt::format(
         "{}: over the run (t_end = {:.6g} s) the angular momentum reaches {} kg m^2/s and the "
         "energy {} J, beyond what double precision holds (about 1e308 for the squares "
