@@ -1605,6 +1605,11 @@ Verdict judge_restated(const Context& ctx, const Answer& a, const Restatement& r
   return v;
 }
 
+// "your bracket "(unstable)"", "your word "stable"": the student's word as they wrote it.
+std::string your_word(const WordRemark& remark) {
+  return (remark.bracketed ? "your bracket \"" : "your word \"") + remark.bracket + "\"";
+}
+
 // What the key says of the claim a word after an answer makes: whether it holds, and why.
 struct KeyOnWord {
   bool holds;
@@ -1634,14 +1639,14 @@ std::optional<KeyOnWord> key_on_word(const Answer& a, const WordRemark& remark) 
 Verdict with_word_weighed(Verdict v, const Answer& a, const WordRemark& remark,
                           const KeyOnWord& key) {
   if (key.holds) {
-    v.feedback.push_back("your bracket \"" + remark.bracket + "\" is right: " + key.why);
+    v.feedback.push_back(your_word(remark) + " is right: " + key.why);
     return v;
   }
   if (v.correct) {
     v.correct = false;
     v.line = "incorrect: " + a.name + " (the number is right, the word after it is not)";
   }
-  v.feedback.push_back("your bracket \"" + remark.bracket + "\" is wrong: " + key.why);
+  v.feedback.push_back(your_word(remark) + " is wrong: " + key.why);
   return v;
 }
 
@@ -1667,8 +1672,7 @@ Verdict judge_text(const Context& ctx, const Answer& a, const std::string& text,
   if (const auto remark = word_remark(text)) {
     Verdict v = judge_text(ctx, a, remark->answer, options);
     if (const auto claim = key_on_word(a, *remark)) return with_word_weighed(v, a, *remark, *claim);
-    v.feedback.push_back("your bracket \"" + remark->bracket +
-                         "\" is taken as a remark, not judged (the value is)");
+    v.feedback.push_back(your_word(*remark) + " is taken as a remark, not judged (the value is)");
     return v;
   }
   const std::string written = written_answer(ctx, text);

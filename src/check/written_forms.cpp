@@ -8,6 +8,8 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "check/brackets.hpp"
@@ -695,19 +697,50 @@ std::string without_remark(const std::string& typed,
   return trim(t.substr(0, open));
 }
 
+namespace {
+// "2.047 rad/s, stable", "1.772 1/s; unstable", "1.772 1/s unstable": the last word and the
+// answer before it, a comma, a semicolon or a dash between taken off; nullopt where the text
+// does not end in a word after a space or one of those.
+std::optional<std::pair<std::string, std::string>> last_word(const std::string& t) {
+  std::size_t start = t.size();
+  while (start > 0 && (is_letter(t[start - 1]) || t[start - 1] == '.')) --start;
+  if (start == 0 || start == t.size()) return std::nullopt;
+  std::string answer = t.substr(0, start);
+  const std::size_t before_separator = answer.size();
+  while (!answer.empty() && (answer.back() == ' ' || answer.back() == ',' || answer.back() == ';' ||
+                             answer.back() == '-'))
+    answer.pop_back();
+  for (const char* dash : {"—", "–"}) {  // an em or en dash, spaced
+    const std::string d(dash);
+    if (answer.size() >= d.size() && answer.compare(answer.size() - d.size(), d.size(), d) == 0)
+      answer = trim(answer.substr(0, answer.size() - d.size()));
+  }
+  if (answer.size() == before_separator) return std::nullopt;  // glued on: "2.05stable"
+  return std::pair{answer, t.substr(start)};
+}
+}  // namespace
+
 std::optional<WordRemark> word_remark(const std::string& typed) {
   const std::string t = trim(typed);
-  if (t.size() < 3 || t.back() != ')') return std::nullopt;
-  const std::size_t open = t.rfind('(');
-  if (open == std::string::npos || open == 0 || t[open - 1] != ' ') return std::nullopt;
+  if (t.size() < 3) return std::nullopt;
   static const std::set<std::string> kWords{
       "stable",   "unstable",   "oscillating", "oscillates",       "oscillatory",
       "growing",  "grows",      "exponential", "prolate",          "oblate",
       "prograde", "retrograde", "clockwise",   "counterclockwise", "anticlockwise",
       "approx",   "approx.",    "approximate", "approximately",    "exact",
       "exactly",  "rounded",    "estimate",    "estimated"};
-  const std::string word = ascii_lower(trim(t.substr(open + 1, t.size() - open - 2)));
-  const std::string answer = trim(t.substr(0, open));
+  std::string word, answer, said;
+  bool bracketed = false;
+  if (const std::size_t open = t.rfind('(');
+      t.back() == ')' && open != std::string::npos && open > 0 && t[open - 1] == ' ') {
+    word = ascii_lower(trim(t.substr(open + 1, t.size() - open - 2)));
+    answer = trim(t.substr(0, open));
+    said = t.substr(open);
+    bracketed = true;
+  } else if (const auto last = last_word(t)) {
+    std::tie(answer, said) = *last;
+    word = ascii_lower(said);
+  }
   if (kWords.count(word) == 0 || answer.empty()) return std::nullopt;
   static const std::set<std::string> kStable{"stable", "oscillating", "oscillates", "oscillatory"},
       kUnstable{"unstable", "growing", "grows", "exponential"};
@@ -716,7 +749,7 @@ std::optional<WordRemark> word_remark(const std::string& typed) {
   if (kUnstable.count(word)) says_stable = false;
   if (word == "prograde" || word == "oblate") says_with_spin = true;
   if (word == "retrograde" || word == "prolate") says_with_spin = false;
-  return WordRemark{answer, t.substr(open), says_stable, says_with_spin};
+  return WordRemark{answer, said, bracketed, says_stable, says_with_spin};
 }
 
 std::optional<Restatement> restatement_of(const std::string& typed) {

@@ -112,13 +112,15 @@ std::string without_remark(const std::string& typed,
                            const std::function<bool(const std::string&)>& is_known);
 
 /// An answer with one word after it in brackets that says what the motion does, "1.772 1/s
-/// (unstable)", "2.047 rad/s (stable)", "4.995 rad/s (prograde)": the answer and the bracket as
-/// typed. Only words of a short list (stable, unstable, oscillating, growing, prolate, oblate,
+/// (unstable)", "2.047 rad/s (stable)", "4.995 rad/s (prograde)", or last after a comma, a
+/// semicolon, a dash or a space, "2.047 rad/s, stable": the answer and the word as typed. Only
+/// words of a short list (stable, unstable, oscillating, growing, prolate, oblate,
 /// prograde, retrograde, approx, exact, rounded and their like), none a symbol of any problem,
 /// so that "m R^2 (omegs)" is still refused as the misspelt name it is, never dropped.
 struct WordRemark {
   std::string answer;   ///< "1.772 1/s"
-  std::string bracket;  ///< "(unstable)"
+  std::string bracket;  ///< "(unstable)", or the word alone where it has no bracket: "stable"
+  bool bracketed = true;
   /// What the word says of a spin's stability: true for stable, oscillating (and their like),
   /// false for unstable, growing, exponential; empty for a word on something else ("prograde").
   std::optional<bool> says_stable;

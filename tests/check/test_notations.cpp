@@ -2161,28 +2161,43 @@ TEST_CASE("one word on the motion in brackets after an answer is said to be unju
   const Fixture top("asymmetric-top");
   const double growth = top.answer("rate_axis2").value.data[0];
   REQUIRE_FALSE(top.check("rate_axis2", fmt::format("{:.4g} 1/s (stable)", 2 * growth)).correct);
-  // A word of no such list stays what it is: an unknown name.
+  // A word of no such list stays what it is: an unknown name; so does one glued on.
   REQUIRE_THROWS_WITH(top.check("rate_axis2", fmt::format("{:.4g} 1/s (unstabel)", growth)),
                       Catch::Contains("undefined symbol 'unstabel'"));
+  REQUIRE_THROWS_WITH(top.check("rate_axis2", fmt::format("{:.4g} 1/s, unstabel", growth)),
+                      Catch::Contains("unstabel"));
+  REQUIRE_THROWS_WITH(top.check("rate_axis2", fmt::format("{:.4g}unstable", growth)),
+                      Catch::Contains("undefined symbol 'unstable'"));
+  // Unjudged words last after a comma are said so too, without a bracket.
+  REQUIRE(top.check("rate_axis2", fmt::format("{:.6g} 1/s, approx", growth)).feedback.back() ==
+          "your word \"approx\" " + unjudged);
 }
 
 namespace {
-// `a`'s key number with "(word)" after it, and twice that number: the word said right or wrong
-// with `why`; a right number with a wrong word is wrong, a wrong number wrong whatever the word.
+// `a`'s key number with "(word)" after it, or the word last after a comma, a semicolon, a dash
+// or a space, and twice that number: the word said right or wrong with `why`; a right number
+// with a wrong word is wrong, a wrong number wrong whatever the word.
 void check_word_weighed(const Fixture& f, const wobble::Answer& a, const std::string& word,
                         bool right, const std::string& why) {
-  const std::string bracket = "(" + word + ")";
-  const auto v = f.check(a.name, fmt::format("{:.6g} {} {}", a.value.data[0], a.unit, bracket));
-  CHECK(v.correct == right);
-  CHECK(v.line ==
-        (right ? "correct: " + a.name
-               : "incorrect: " + a.name + " (the number is right, the word after it is not)"));
-  CHECK(v.feedback.back() ==
-        "your bracket \"" + bracket + "\" is " + (right ? "right: " : "wrong: ") + why);
-  const auto off =
-      f.check(a.name, fmt::format("{:.6g} {} {}", 2 * a.value.data[0], a.unit, bracket));
-  CHECK_FALSE(off.correct);
-  CHECK(off.feedback.back() == v.feedback.back());
+  const std::string bracket = "(" + word + ")", plain = "your word \"" + word + "\"";
+  for (const auto& [after, said] : std::vector<std::pair<std::string, std::string>>{
+           {" " + bracket, "your bracket \"" + bracket + "\""},
+           {", " + word, plain},
+           {"; " + word, plain},
+           {" — " + word, plain},
+           {" " + word, plain}}) {
+    INFO(after);
+    const auto v = f.check(a.name, fmt::format("{:.6g} {}{}", a.value.data[0], a.unit, after));
+    CHECK(v.correct == right);
+    CHECK(v.line ==
+          (right ? "correct: " + a.name
+                 : "incorrect: " + a.name + " (the number is right, the word after it is not)"));
+    CHECK(v.feedback.back() == said + " is " + (right ? "right: " : "wrong: ") + why);
+    const auto off =
+        f.check(a.name, fmt::format("{:.6g} {}{}", 2 * a.value.data[0], a.unit, after));
+    CHECK_FALSE(off.correct);
+    CHECK(off.feedback.back() == v.feedback.back());
+  }
 }
 }  // namespace
 
