@@ -95,6 +95,21 @@ std::string answer_meant(const Context& ctx, const std::string& part_id, const s
   return rights == 0 && readables == 1 ? readable : "";
 }
 
+std::string part_of_euler_equations(const Context& ctx, const std::string& text) {
+  std::string found;
+  int parts = 0;
+  for (const auto& part : ctx.key.parts) {
+    const bool asks = std::any_of(part.answers.begin(), part.answers.end(), [](const Answer& a) {
+      return a.named_entries == kEulerCoefficients;
+    });
+    if (asks) {
+      found = part.id;
+      ++parts;
+    }
+  }
+  return parts == 1 && written_as_euler_equations(ctx, text) ? found : "";
+}
+
 const Answer& answer_for(const Context& ctx, const std::string& part, const std::string& name,
                          const std::string& text, const Options& options,
                          const std::string& part_field, const std::string& name_field) {

@@ -361,8 +361,12 @@ std::optional<std::pair<std::string, std::string>> latex_with_answer_names(
       if (!with_answers.contains(b.name))
         with_answers.declare(b.name, name_latex(b.name), sym::SymbolSign::real);
       for (const std::string& step_name : b.step_names) {  // \theta_L for angle_L_e3
-        // Not a primed one (E′ for the heavy top's level): it has no LaTeX name.
-        if (!with_answers.contains(step_name) && step_name.find('\'') == std::string::npos)
+        // Only a name a symbol can have: not a primed one (E′ for the heavy top's level) nor a
+        // derivative's (dω/dt); they have no LaTeX name.
+        const bool symbol_name = std::all_of(step_name.begin(), step_name.end(), [](char c) {
+          return is_letter(c) || is_digit(c) || c == '_';
+        });
+        if (!with_answers.contains(step_name) && symbol_name)
           with_answers.declare(step_name, name_latex(step_name), sym::SymbolSign::real);
       }
     }

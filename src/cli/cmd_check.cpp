@@ -264,7 +264,18 @@ int run_check(const CheckOptions& opt) {
         opt.problem, part == key.parts.end() ? "NAME" : part->answers.front().name, opt.problem,
         answers_by_part(key)));
   }
-  const auto [part, typed] = part_and_answer(opt, problem, key);
+  auto [part, typed] = part_and_answer(opt, problem, key);
+  const sym::SymbolTable table = problem.symbol_table();
+  const check::Context ctx{key, table, values};
+  // "dω₁/dt = -0.5 ω₂ω₃, ..": one word that is Euler's equations names no answer by its label
+  // (the first equation's); it is the whole answer, for the part that asks for them.
+  if (opt.name.empty() && opt.answer.empty() && opt.answer_after_part.empty() &&
+      !names_part_or_answer(problem, part) && check::name_in_key(key, part) == part) {
+    if (const std::string p = check::part_of_euler_equations(ctx, opt.part); !p.empty()) {
+      part = p;
+      typed = opt.part;
+    }
+  }
   if (typed.empty() && opt.name.empty() && !names_part_or_answer(problem, part) &&
       check::name_in_key(key, part) == part && reads_as_value(key, part)) {
     // An answer alone: which of the problem's it is for is the student's to say.
@@ -273,8 +284,6 @@ int run_check(const CheckOptions& opt) {
         "wobble check {} PART ANSWER (answers by part: {})",
         printable(part, 40), opt.problem, opt.problem, answers_by_part(key)));
   }
-  const sym::SymbolTable table = problem.symbol_table();
-  const check::Context ctx{key, table, values};
   // "I₀", "I_0": an answer's name as the statement or a LaTeX handout writes it. A part of
   // several answers with none named: the one the answer's label names, the only one it is right
   // for, or the only one it reads as a value of (check/answer_choice.hpp).

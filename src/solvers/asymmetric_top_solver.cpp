@@ -211,7 +211,10 @@ Computed dw_dt0(const Asym& t, const std::string& q) {
   const auto& w = t.w;
   const std::vector<ex> d{sym::tidy(c[0] * w[1] * w[2]), sym::tidy(c[1] * w[2] * w[0]),
                           sym::tidy(c[2] * w[0] * w[1])};
-  return {exact_vector(q, d, "rad/s^2", t.exact), euler_steps(t, c)};
+  Computed out{exact_vector(q, d, "rad/s^2", t.exact), euler_steps(t, c)};
+  // As the question writes it, dω/dt (ω̇), and so a student: "dω/dt = ..", "ω̇(0) = ..".
+  out.answer.step_names = {"dw/dt", "domega/dt", "wdot", "omegadot", "wdot0", "omegadot0"};
+  return out;
 }
 
 // "Omega_axis2" -> 1: the axis a spin quantity is about.

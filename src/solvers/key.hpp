@@ -136,9 +136,10 @@ struct Answer {
     std::string why;
   };
   std::optional<Stability> stability;
-  /// What the steps call this answer where that is not its name, GiNaC text ("theta_L" for the
-  /// angle of L from e₃, as tan θ_L = (I1/I3) tan α writes it): a student may write it so. Set by
-  /// the solver; not in the JSON key (the steps say it).
+  /// What the steps (or the question) call this answer where that is not its name, GiNaC text
+  /// ("theta_L" for the angle of L from e₃, as tan θ_L = (I1/I3) tan α writes it), or a label
+  /// no symbol has ("E'", "dw/dt"): a student may write it so. Set by the solver; not in the
+  /// JSON key (the steps say it).
   std::vector<std::string> step_names;
 };
 

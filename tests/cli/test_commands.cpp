@@ -304,12 +304,14 @@ TEST_CASE(
       neither.err,
       Catch::Contains("part a has several answers; name one (euler_coefficients, dw_dt0)"));
   // The same, labelled with a word that names none of them: that word is refused, not a name
-  // asked for that the line has given; another part's answer is named as that part's.
-  const RunResult unknown_label = judged("w_dot = [1, 2, 3]");
+  // asked for that the line has given; another part's answer is named as that part's. (ω̇ as
+  // w_dot names dw_dt0, as the question writes dω/dt: judged, and wrong.)
+  REQUIRE_THAT(judged("w_dot = [1, 2, 3]").out, Catch::StartsWith("incorrect: dw_dt0\n"));
+  const RunResult unknown_label = judged("accel = [1, 2, 3]");
   REQUIRE(unknown_label.exit_code == 2);
   REQUIRE(unknown_label.out.empty());
   REQUIRE(unknown_label.err ==
-          "wobble: part: part a has no answer 'w_dot' (answers: euler_coefficients, dw_dt0)\n");
+          "wobble: part: part a has no answer 'accel' (answers: euler_coefficients, dw_dt0)\n");
   const RunResult other_part =
       run_wobble({"check", "heavy-top", "d", "--answer", "ω₃ = 700 rad/s"});
   REQUIRE(other_part.exit_code == 2);
@@ -471,6 +473,18 @@ TEST_CASE("check: one word that is a key's line, NAME = ANSWER, names its answer
     REQUIRE(named.exit_code == 0);
     REQUIRE(named.out == verdict);
   }
+  // dω/dt as the question writes it names dw_dt0; Euler's equations written out, whose first
+  // label names no answer, are the coefficients' answer, right or wrong.
+  for (const char* line : {"dω/dt = (-0.5, 1, -0.015) rad/s²", "ω̇(0) = (-0.5, 1, -0.015) rad/s²",
+                           "dw/dt = [-0.5, 1, -0.015]"}) {
+    INFO(line);
+    REQUIRE(run_wobble({"check", "asymmetric-top", line}).out == "correct: dw_dt0\n");
+  }
+  const RunResult equations = run_wobble(
+      {"check", "asymmetric-top", "dω₁/dt = -0.5 ω₂ω₃, dω₂/dt = 0.7 ω₃ω₁, dω₃/dt = -0.25 ω₁ω₂"});
+  REQUIRE(equations.exit_code == 1);
+  REQUIRE_THAT(equations.out,
+               Catch::StartsWith("incorrect: euler_coefficients\n  c₂ is off by 5%"));
   REQUIRE(run_wobble({"check", "heavy-top", "phidot_fast ≈"}).err ==
           "wobble: phidot_fast: nothing after the '≈' in \"phidot_fast ≈\"; the answer goes after "
           "it\n");
