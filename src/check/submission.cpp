@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "check/absent_answer.hpp"
+#include "check/answer_choice.hpp"
 #include "check/brackets.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
@@ -129,6 +130,25 @@ std::optional<long> submission_variant(const std::string& text) {
   return {};
 }
 
+namespace {
+bool is_answer_name(const Key& key, const std::string& name) {
+  return std::any_of(key.parts.begin(), key.parts.end(), [&](const PartKey& p) {
+    return std::any_of(p.answers.begin(), p.answers.end(),
+                       [&](const Answer& a) { return a.name == name; });
+  });
+}
+
+// The name of part `part_id`'s answer whose entries are Euler's coefficients c₁, c₂, c₃.
+std::string euler_coefficients_name(const Key& key, const std::string& part_id) {
+  for (const auto& p : key.parts) {
+    for (const auto& a : p.answers) {
+      if (p.id == part_id && a.named_entries == kEulerCoefficients) return a.name;
+    }
+  }
+  return "";
+}
+}  // namespace
+
 SubmissionResult judge_submission(const Context& ctx, const std::string& text, const Options& opt) {
   SubmissionResult result;
   std::vector<std::pair<int, std::string>> problems;  // each with its line, said in line order
@@ -150,7 +170,19 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
   // looked up once (a submission may have thousands of lines).
   const NamesInKey in_key(ctx.key);
   std::map<std::string, std::string> named;  // each line's name -> the answer's, or itself
-  for (const auto& [name, line] : given) named.emplace(name, in_key(name));
+  for (auto& [name, line] : given) {
+    std::string answer = in_key(name);
+    // "dω₁/dt = -0.5 ω₂ω₃, dω₂/dt = ..": Euler's equations, whose first label names no answer,
+    // are the whole line's answer, for their coefficients.
+    if (answer == name && !is_answer_name(ctx.key, name)) {
+      const std::string whole = name + " = " + line.answer;
+      if (const std::string part = part_of_euler_equations(ctx, whole); !part.empty()) {
+        answer = euler_coefficients_name(ctx.key, part);
+        line.answer = whole;
+      }
+    }
+    named.emplace(name, answer);
+  }
   const auto names = [&](const std::string& line_name, const std::string& answer) {
     return named.at(line_name) == answer;
   };

@@ -1169,6 +1169,21 @@ TEST_CASE(
   REQUIRE_THAT(r.problems[2], Catch::StartsWith("line 5: 'aa' is no answer"));
 }
 
+TEST_CASE("a submission's line of Euler's equations answers their coefficients") {
+  const Fixture top("asymmetric-top");
+  const SubmissionResult r =
+      judge_submission({top.key, top.table, top.values},
+                       "dω₁/dt = -0.5 ω₂ω₃, dω₂/dt = 0.7 ω₃ω₁, dω₃/dt = -0.25 ω₁ω₂\n"
+                       "dω/dt = (-0.5, 1, -0.015) rad/s²\n",
+                       {});
+  REQUIRE(r.problems.empty());
+  REQUIRE(r.answers.at(0).name == "euler_coefficients");
+  REQUIRE(r.answers[0].verdict.line == "incorrect: euler_coefficients");
+  REQUIRE(r.answers[0].verdict.feedback.at(0) == "c₂ is off by 5%");
+  REQUIRE(r.answers.at(1).name == "dw_dt0");
+  REQUIRE(r.answers[1].verdict.correct);
+}
+
 TEST_CASE("a submission's comments, part headings and part marks name no answer") {
   const Fixture plate("flying-plate");
   const std::string i0 = fmt::format("{:.6g}", plate.answer("I0").value.data[0]);
