@@ -1807,9 +1807,11 @@ Verdict judge_text(const Context& ctx, const Answer& a, const std::string& text,
       v = judge_one(ctx, a, parts[k], options);
     } catch (const InputError& e) {
       // "θ_L = 7.63°", "L = (..)": a label of the student's own before the '=' (a name that is
-      // no symbol of the problem), where a pasted key line has the answer's name. The answer is
-      // what follows it.
-      if (k == 0 && parts.size() == 2 && is_one_name(parts[0])) {
+      // no symbol of the problem), where a pasted key line has the answer's name; or one that
+      // names this answer as the question does ("dω/dt = .." for dw_dt0). The answer is what
+      // follows it.
+      if (k == 0 && parts.size() == 2 &&
+          (is_one_name(parts[0]) || name_in_key(ctx.key, trim(parts[0])) == a.name)) {
         return judge_referring(ctx, a, parts[1], options);
       }
       // "T/2 = 1.91 s": a formula of the student's own in names the problem lacks labels the

@@ -1129,15 +1129,19 @@ TEST_CASE("where a number is asked for, a bare k is a name of the student's own,
     return format_number(top.answer(name).value.data.at(0));
   };
   const std::string kc2 = value("kc2");
+  // k′² names kc2 itself, as its note writes it (k'² = 1 − k²): the label of its own answer,
+  // nothing to say; another answer's, k², is said to be taken as a label.
   for (const std::string label : {"k'^2", "k′²"}) {
     INFO(label);
     const auto v = top.check("kc2", label + " = " + kc2);
     REQUIRE(v.correct);
-    REQUIRE(v.feedback == std::vector<std::string>{"the side \"" + label +
-                                                   "\" of your '=' is taken as a label, not "
-                                                   "judged: k is the key's answer to part (c), "
-                                                   "no symbol"});
+    REQUIRE(v.feedback.empty());
   }
+  const auto other = top.check("kc2", "k^2 = " + kc2);
+  REQUIRE(other.correct);
+  REQUIRE(other.feedback == std::vector<std::string>{"the side \"k^2\" of your '=' is taken as a "
+                                                     "label, not judged: k is the key's answer to "
+                                                     "part (c), no symbol"});
   // 1 − k², in the same part's k, is a side: judged with the key's k, and said so (by name: its
   // form is longer than a line).
   for (const std::string side : {"1 − k²", "1 - k^2"}) {
@@ -2759,6 +2763,17 @@ TEST_CASE("a label the steps write for the centre of mass names it") {
   const Fixture box("box-corner");
   REQUIRE(box.check("center_of_mass", "r_cm = (0.5, 1, 1.5) m").correct);
   REQUIRE_FALSE(box.check("center_of_mass", "r_cm = (1, 2, 3) m").correct);
+  // A label no symbol could be, dω/dt as the question writes dw_dt0, is that answer's own:
+  // nothing said of it.
+  const Fixture top("asymmetric-top");
+  const auto& d = top.answer("dw_dt0").value.data;
+  const std::string rates = fmt::format("({:.6g}, {:.6g}, {:.6g}) rad/s²", d[0], d[1], d[2]);
+  for (const std::string label : {"dω/dt", "ω̇(0)", "dw/dt"}) {
+    INFO(label);
+    const auto v = top.check("dw_dt0", label + " = " + rates);
+    REQUIRE(v.correct);
+    REQUIRE(v.feedback.empty());
+  }
 }
 
 TEST_CASE("a refusal shown where no option was typed names an entry counted from 1") {
