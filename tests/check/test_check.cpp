@@ -1104,6 +1104,16 @@ TEST_CASE("a value the problem file names as a mistake is named when given as th
                Catch::Contains(fmt::format("{:.3g}% above the answer", 100 * (433 / days - 1))));
 }
 
+namespace {
+// A submission's answer by its name.
+const SubmittedAnswer& submitted(const SubmissionResult& r, const std::string& name) {
+  for (const auto& s : r.answers) {
+    if (s.name == name) return s;
+  }
+  throw std::logic_error("no answer " + name);
+}
+}  // namespace
+
 TEST_CASE(
     "a submission names answers as written, in LaTeX too; a second line and a stray name are "
     "reported") {
@@ -1116,12 +1126,7 @@ TEST_CASE(
       "Omega: 3\n"
       "t_max = [1, 2\n";
   const SubmissionResult r = judge_submission({plate.key, plate.table, plate.values}, text, {});
-  const auto verdict = [&](const std::string& name) {
-    for (const auto& s : r.answers) {
-      if (s.name == name) return s.verdict;
-    }
-    throw std::logic_error("no answer " + name);
-  };
+  const auto verdict = [&](const std::string& name) { return submitted(r, name).verdict; };
   REQUIRE(verdict("I0").correct);
   REQUIRE(verdict("L0_body").correct);
   REQUIRE_FALSE(verdict("I").correct);  // not answered
@@ -1154,12 +1159,7 @@ TEST_CASE(
       "φ̇_slow ≈ " +
       value("phidot_slow") + " rad/s\n";
   const SubmissionResult r = judge_submission(ctx, text, {});
-  const auto verdict = [&](const std::string& name) {
-    for (const auto& s : r.answers) {
-      if (s.name == name) return s.verdict;
-    }
-    throw std::logic_error("no answer " + name);
-  };
+  const auto verdict = [&](const std::string& name) { return submitted(r, name).verdict; };
   REQUIRE(verdict("energy").correct);
   REQUIRE(verdict("energy_prime").correct);
   REQUIRE(verdict("phidot_slow").correct);
@@ -1202,12 +1202,7 @@ TEST_CASE("a submission's comments, part headings and part marks name no answer"
       "part (d).\n"
       "Omega_body_rate [rad/s] = 1\n";  // the worksheet's prompt pasted, its unit shown
   const SubmissionResult r = judge_submission({plate.key, plate.table, plate.values}, text, {});
-  const auto verdict = [&](const std::string& name) {
-    for (const auto& s : r.answers) {
-      if (s.name == name) return s;
-    }
-    throw std::logic_error("no answer " + name);
-  };
+  const auto verdict = [&](const std::string& name) { return submitted(r, name); };
   INFO(fmt::format("{}", fmt::join(r.problems, "; ")));
   REQUIRE(r.problems.empty());  // no heading or comment taken for a name
   REQUIRE(verdict("I0").verdict.correct);
