@@ -367,6 +367,9 @@ Computed lagrangian0(const Top& t, const std::string& q) {
   const ex L = t.I1 / 2 * (GiNaC::pow(t.phidot * s, 2) + GiNaC::pow(t.thetadot, 2)) +
                t.I3 / 2 * GiNaC::pow(t.w3, 2) - t.M * t.g * t.l * c;
   Computed out{exact_scalar(q, L, "J", t.exact), {lagrangian_step()}};
+  // Its value at t = 0 as a student writes it, L(0) or L₀. Not "L" alone: in the expression of
+  // another answer that is more likely l (the pivot's distance) typed in the wrong case.
+  out.answer.step_names = {"L0"};
   const double Vn = t.numeric.M_kg * t.numeric.g_m_s2 * t.numeric.l_m * std::cos(t.start.theta);
   check_routes_agree(out.answer.value.data[0], k.energy - 2 * Vn, k.energy + std::abs(Vn),
                      kRouteUlps, q);

@@ -2751,6 +2751,11 @@ TEST_CASE("an answer's name as the statement or LaTeX writes it finds the answer
   REQUIRE(name_in_key(top.key, "E") == "energy");
   for (const char* level : {"E'", "E′", "E’"})
     REQUIRE(name_in_key(top.key, level) == "energy_prime");
+  // The Lagrangian's value at t = 0 as the question asks it, L(0) or L₀; L alone names nothing
+  // (in an expression it is more likely the pivot's l in the wrong case).
+  for (const char* at_start : {"L(0)", "L₀", "L_0"})
+    REQUIRE(name_in_key(top.key, at_start) == "lagrangian0");
+  REQUIRE(name_in_key(top.key, "L") == "L");
   REQUIRE(name_in_key(plate.key, "θ_L'") == "θ_L'");
   // The asymmetric top's k′² = 1 − k² (kc2, as its note writes it) is not k² (k2).
   const Fixture asymmetric("asymmetric-top");
