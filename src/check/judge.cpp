@@ -761,8 +761,41 @@ std::string NamesInKey::operator()(const std::string& written) const {
   return found != spelt_.end() && found->second.size() == 1 ? *found->second.begin() : written;
 }
 
+// As NamesInKey does, without building its maps: one name is looked up many times a check.
 std::string name_in_key(const Key& key, const std::string& written) {
-  return NamesInKey(key)(written);
+  if (written.empty()) return written;
+  for (const auto& part : key.parts) {
+    if (part.id == written) return written;
+    for (const auto& answer : part.answers) {
+      if (answer.name == written) return written;
+    }
+    for (const auto& absent : part.absent) {
+      if (absent == written) return written;
+    }
+  }
+  const std::string spelling = name_spelling(written);
+  const bool written_primed = primed(written);
+  const auto alike = [&](const std::string& name) {
+    return primed(name) == written_primed && name_spelling(name) == spelling;
+  };
+  std::string found;
+  int matches = 0;
+  for (const auto& part : key.parts) {
+    for (const auto& answer : part.answers) {
+      if (alike(answer.name) ||
+          std::any_of(answer.step_names.begin(), answer.step_names.end(), alike)) {
+        found = answer.name;
+        ++matches;
+      }
+    }
+    for (const auto& absent : part.absent) {
+      if (alike(absent)) {
+        found = absent;
+        ++matches;
+      }
+    }
+  }
+  return matches == 1 ? found : written;
 }
 
 namespace {

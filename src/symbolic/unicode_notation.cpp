@@ -315,7 +315,7 @@ std::string to_ascii(const std::string& typed) {
     }
     if (!replaced) out += text[i++];  // unknown: left for the expression guard to name
   }
-  return roots_spelt(out);
+  return out.find(kRoot) == std::string::npos ? out : roots_spelt(out);
 }
 
 std::string letters_folded(const std::string& text) {
