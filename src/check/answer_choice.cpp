@@ -95,19 +95,17 @@ std::string answer_meant(const Context& ctx, const std::string& part_id, const s
   return rights == 0 && readables == 1 ? readable : "";
 }
 
-std::string part_of_euler_equations(const Context& ctx, const std::string& text) {
+std::string euler_equations_answer(const Context& ctx, const std::string& text) {
   std::string found;
-  int parts = 0;
+  int answers = 0;
   for (const auto& part : ctx.key.parts) {
-    const bool asks = std::any_of(part.answers.begin(), part.answers.end(), [](const Answer& a) {
-      return a.named_entries == kEulerCoefficients;
-    });
-    if (asks) {
-      found = part.id;
-      ++parts;
+    for (const auto& a : part.answers) {
+      if (a.named_entries != kEulerCoefficients) continue;
+      found = a.name;
+      ++answers;
     }
   }
-  return parts == 1 && written_as_euler_equations(ctx, text) ? found : "";
+  return answers == 1 && written_as_euler_equations(ctx, text) ? found : "";
 }
 
 const Answer& answer_for(const Context& ctx, const std::string& part, const std::string& name,

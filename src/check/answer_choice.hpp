@@ -19,11 +19,11 @@ namespace wobble::check {
 std::string answer_meant(const Context& ctx, const std::string& part_id, const std::string& text,
                          const Options& options);
 
-/// The part Euler's equations written out are meant for where a line names neither part nor
-/// answer ("dω₁/dt = -0.5 ω₂ω₃, dω₂/dt = .."; the label of one equation names none): the only
-/// part with an answer whose entries are c₁, c₂, c₃. "" where `text` is no such equations or no
-/// one part asks for them.
-std::string part_of_euler_equations(const Context& ctx, const std::string& text);
+/// The answer Euler's equations written out are meant for where a line names neither part nor
+/// answer ("dω₁/dt = -0.5 ω₂ω₃, dω₂/dt = .."; the label of one equation names none): the key's
+/// only answer whose entries are c₁, c₂, c₃. "" where `text` is no such equations or no one
+/// answer is of them.
+std::string euler_equations_answer(const Context& ctx, const std::string& text);
 
 /// The answer `text` is to be judged as: find_answer's, with the part and the name read as
 /// name_in_key reads them ("I₀", "I_0"), and for a part of several answers with no name, the one

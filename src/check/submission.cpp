@@ -138,15 +138,6 @@ bool is_answer_name(const Key& key, const std::string& name) {
   });
 }
 
-// The name of part `part_id`'s answer whose entries are Euler's coefficients c₁, c₂, c₃.
-std::string euler_coefficients_name(const Key& key, const std::string& part_id) {
-  for (const auto& p : key.parts) {
-    for (const auto& a : p.answers) {
-      if (p.id == part_id && a.named_entries == kEulerCoefficients) return a.name;
-    }
-  }
-  return "";
-}
 }  // namespace
 
 SubmissionResult judge_submission(const Context& ctx, const std::string& text, const Options& opt) {
@@ -176,8 +167,8 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
     // are the whole line's answer, for their coefficients.
     if (answer == name && !is_answer_name(ctx.key, name)) {
       const std::string whole = name + " = " + line.answer;
-      if (const std::string part = part_of_euler_equations(ctx, whole); !part.empty()) {
-        answer = euler_coefficients_name(ctx.key, part);
+      if (const std::string euler = euler_equations_answer(ctx, whole); !euler.empty()) {
+        answer = euler;
         line.answer = whole;
       }
     }

@@ -268,11 +268,11 @@ int run_check(const CheckOptions& opt) {
   const sym::SymbolTable table = problem.symbol_table();
   const check::Context ctx{key, table, values};
   // "dω₁/dt = -0.5 ω₂ω₃, ..": one word that is Euler's equations names no answer by its label
-  // (the first equation's); it is the whole answer, for the part that asks for them.
+  // (the first equation's); it is the whole answer, to the answer of their coefficients.
   if (opt.name.empty() && opt.answer.empty() && opt.answer_after_part.empty() &&
       !names_part_or_answer(problem, part) && check::name_in_key(key, part) == part) {
-    if (const std::string p = check::part_of_euler_equations(ctx, opt.part); !p.empty()) {
-      part = p;
+    if (const std::string name = check::euler_equations_answer(ctx, opt.part); !name.empty()) {
+      part = name;  // an answer's name where the part goes names the answer
       typed = opt.part;
     }
   }
