@@ -37,6 +37,14 @@ CLI::Validator whole_number();
 std::string value_split_message(const std::vector<std::string>& args,
                                 const std::vector<std::string>& extras);
 
+/// An option given the empty value ("--part ''", or "--out $FILE" with FILE unset) would be taken
+/// as left out and the command run without it; this refuses it instead, naming the option.
+/// @throws InputError for the first such option of `app` or of its parsed subcommands.
+void refuse_empty_values(const CLI::App& app);
+/// CLI11's "--part: 1 required TEXT missing" (an option last on the line, or "--part=") as
+/// "--part: no value given; give one (see wobble solve --help)"; "" for another message.
+std::string missing_value_message(const std::string& what, const CLI::App& app);
+
 /// "NAME=VALUE" assignments as (identifier, value text) pairs, for a handout: the last given for
 /// a parameter first (a --set after a variant's value).
 std::vector<std::pair<std::string, std::string>> shown_values(

@@ -159,8 +159,11 @@ int main(int argc, char** argv) {
     const bool excludes =
         check->parsed() && std::string_view(e.what()).find("excludes") != std::string_view::npos;
     const std::string quoted = excludes ? answer_quoted({argv, argv + argc}, check_opt) : "";
+    const std::string missing = missing_value_message(e.what(), app);
     if (!quoted.empty()) {
       fmt::print(stderr, "wobble: check: {}\n", split_answer_message(quoted));
+    } else if (!missing.empty()) {
+      fmt::print(stderr, "wobble: {}\n", missing);
     } else {
       fmt::print(stderr, "wobble: {}\n", e.what());
     }
@@ -172,6 +175,7 @@ int main(int argc, char** argv) {
   if (simulate->parsed() || keys->parsed() || bench->parsed() || exporter->parsed() ||
       server->parsed()) wobble::stop_on_signals();
   try {
+    refuse_empty_values(app);
     if (!data_dir.empty()) wobble::set_data_dir(data_dir);
     if (list->parsed()) return run_list(list_opt);
     if (solve->parsed()) return run_solve(solve_opt);
