@@ -1,12 +1,36 @@
 #include "problem/toml_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <iterator>
 
 #include "problem/values.hpp"
+#include "symbolic/units.hpp"
 
 namespace wobble::detail {
+
+namespace {
+// A parameter's unit, which must be SI: its value is used in the file's expressions, and the
+// answers' units assumed, as it is ("200" for unit = "g" would be taken as 200 kg). An angle's
+// unit is spelt "rad", as Parameter::is_angle tests it ("radians" is read as rad).
+std::string si_parameter_unit(const Reader& r, const toml::node* node, const std::string& text,
+                              const std::string& default_text, const std::string& field) {
+  Unit unit;
+  try {
+    unit = parse_unit(text, field);
+  } catch (const InputError& e) {
+    r.fail(node, field, e.what());
+  }
+  if (unit.to_si != 1.0) {
+    r.fail(node, field,
+           "'" + text + "' is not SI; a parameter is in SI units, here unit = \"" +
+               si_unit_text(unit) + "\", and its default may carry its own unit: default = \"" +
+               default_text + " " + text + "\"");
+  }
+  return unit.angle && unit.dim == std::array{0, 0, 0} ? "rad" : text;
+}
+}  // namespace
 
 Parameter read_parameter(const Reader& r, const toml::table& t, const std::string& f) {
   r.only_keys(t, f, {"name", "latex", "unit", "description", "default", "range", "fixed"});
@@ -27,6 +51,7 @@ Parameter read_parameter(const Reader& r, const toml::table& t, const std::strin
   }
   const toml::node* d = t.get("default");
   const std::string text = r.expression(d, f + ".default", &t);
+  if (!p.unit.empty()) p.unit = si_parameter_unit(r, t.get("unit"), p.unit, text, f + ".unit");
   try {
     p.default_value = parse_parameter_value(p, text, f + ".default");
   } catch (const InputError& e) {

@@ -469,11 +469,9 @@ std::string sexagesimal_degrees(const std::string& ascii, const std::string& fie
          (seconds.empty() ? "" : " + " + seconds + "/3600") + ") deg";
 }
 
-namespace {
-// The SI unit of a dimension (powers of kg, m, s), as the grammar reads it: "kg m^2 s^-1".
 std::string si_unit_text(const Unit& unit) {
   static const std::array<const char*, 3> names{"kg", "m", "s"};
-  std::string text;
+  std::string text = unit.angle ? "rad" : "";
   for (std::size_t k = 0; k < 3; ++k) {
     if (unit.dim[k] == 0) continue;
     text += (text.empty() ? "" : " ") + std::string(names[k]) +
@@ -481,7 +479,6 @@ std::string si_unit_text(const Unit& unit) {
   }
   return text;
 }
-}  // namespace
 
 std::string compound_quantity(const std::string& ascii) {
   std::size_t i = 0;

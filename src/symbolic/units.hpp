@@ -56,6 +56,10 @@ std::string sexagesimal_degrees(const std::string& ascii, const std::string& fie
 /// part, or parts that are not as above). Angles in degrees and minutes: sexagesimal_degrees.
 std::string compound_quantity(const std::string& ascii);
 
+/// The SI unit of `unit`'s dimension as the grammar reads it: "kg m^2 s^-1"; "rad" first for an
+/// angle or a rate of one ("rad s^-1" for rpm); "" for a pure number.
+std::string si_unit_text(const Unit& unit);
+
 /// True if `text` reads as a unit (no throw).
 bool is_unit(const std::string& text);
 

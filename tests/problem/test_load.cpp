@@ -74,6 +74,19 @@ TEST_CASE("a good file loads with every field") {
   REQUIRE(p.parts[0].answers[1].quantity == "I");
 }
 
+TEST_CASE("a parameter's unit is SI however spelt; an angle's is rad") {
+  // is_angle() tests the unit "rad": spelt "radians", the angle would read 30deg as a number.
+  const Problem p = load_problem(test::write_file(
+      "load/radians.toml", replaced(kGood, "unit = \"rad\"", "unit = \"radians\"")));
+  REQUIRE(p.parameters[1].unit == "rad");
+  REQUIRE(p.parameters[1].is_angle());
+  REQUIRE_THAT(p.parameters[1].default_value, Catch::Matchers::WithinULP(M_PI / 6, 1));
+  // Another coherent SI unit is kept as written.
+  const Problem q = load_problem(
+      test::write_file("load/kgm.toml", replaced(kGood, "unit = \"kg\"", "unit = \"kg m^2/m^2\"")));
+  REQUIRE(q.parameters[0].unit == "kg m^2/m^2");
+}
+
 TEST_CASE("bad files: the message names the file, the line and the field") {
   using Catch::Contains;
   CHECK_THAT(load_error("id = \"x\"\ntitle = \n"),
