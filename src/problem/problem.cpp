@@ -1,8 +1,10 @@
 #include "problem/problem.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "symbolic/unicode_notation.hpp"
+#include "symbolic/units.hpp"
 
 namespace wobble {
 
@@ -59,6 +61,11 @@ sym::SymbolTable Problem::symbol_table() const {
   for (const auto& p : parameters) {
     const bool positive = p.range.lo > 0.0 || (p.range.lo == 0.0 && p.range.lo_open);
     table.declare(p.name, p.latex, positive ? sym::SymbolSign::positive : sym::SymbolSign::real);
+    // The unit was read when the file loaded (SI, toml_reader.cpp); the default is a value in
+    // the parameter's range, where the file's expressions have values.
+    const std::array<int, 3> powers =
+        p.unit.empty() ? std::array<int, 3>{0, 0, 0} : parse_unit(p.unit, p.name).dim;
+    table.set_dimension(p.name, {powers, p.default_value});
   }
   return table;
 }

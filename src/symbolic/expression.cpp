@@ -188,6 +188,15 @@ GiNaC::ex SymbolTable::declare(const std::string& name, const std::string& latex
   return s;
 }
 
+void SymbolTable::set_dimension(const std::string& name, const Dimension& dimension) {
+  (void)index_.at(name);
+  dimensions_[name] = dimension;
+}
+
+std::map<std::string, SymbolTable::Dimension> SymbolTable::dimensions() const {
+  return dimensions_.size() == names_.size() ? dimensions_ : std::map<std::string, Dimension>{};
+}
+
 const GiNaC::ex& SymbolTable::at(const std::string& name) const {
   return symbols_.at(index_.at(name));
 }

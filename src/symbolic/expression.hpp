@@ -65,11 +65,23 @@ class SymbolTable {
   /// @throws ExpressionError "FIELD: ..." naming the field, the text and what is wrong.
   GiNaC::ex parse(const std::string& text, const std::string& field) const;
 
+  /// A symbol's dimension, as powers of kg, m and s, and a value of it (SI) at which a
+  /// quantity's dimension is tested (parse_quantity, quantity.hpp).
+  struct Dimension {
+    std::array<int, 3> powers{0, 0, 0};
+    double probe = 1.0;
+  };
+  /// @throws std::out_of_range for an undeclared name.
+  void set_dimension(const std::string& name, const Dimension& dimension);
+  /// Each symbol's dimension, by name; empty unless every symbol has one.
+  std::map<std::string, Dimension> dimensions() const;
+
  private:
   std::vector<std::string> names_;
   std::vector<GiNaC::ex> symbols_;
   std::vector<std::string> latex_;
   std::map<std::string, std::size_t> index_;
+  std::map<std::string, Dimension> dimensions_;
   std::uint64_t version_ = next_version();
   static std::uint64_t next_version();
 };

@@ -21,8 +21,9 @@ struct Row {
 };
 
 std::vector<Row> catalog() {
+  // In kg m^2: the one parameter, m, is a mass.
   const std::string tensor_body =
-      "[body]\ntensor = [[\"m\", \"0\", \"0\"], [\"0\", \"m\", \"0\"], [\"0\", \"0\", \"3*m\"]]\n";
+      "[body]\ntensor = [[\"1\", \"0\", \"0\"], [\"0\", \"1\", \"0\"], [\"0\", \"0\", \"3\"]]\n";
   std::string fractions;  // \frac\frac...11..1: nested with no brace to count
   for (int k = 0; k < 14000; ++k) fractions += "\\frac";
   fractions += std::string(14001, '1');
@@ -184,6 +185,17 @@ std::vector<Row> catalog() {
        {"solve", file("furlong_param", with("unit = \"kg\"", "unit = \"furlong\""))},
        2,
        {"parameters[0].unit", "cannot read the unit 'furlong'"}},
+      {"a mass whose parameters make it a mass squared",
+       {"solve",
+        file("masssquared", with("mass = \"m\", at = [\"1\"", "mass = \"m^2\", at = [\"1\""))},
+       2,
+       {"body.masses[0].mass: 'm^2' is in kg^2 (mass²) by its parameters' units; it must be in kg "
+        "(mass)"}},
+      {"a position with a term that is a mass",
+       {"solve",
+        file("posmass", with("at = [\"1\", \"0\", \"0\"]", "at = [\"1 + m\", \"0\", \"0\"]"))},
+       2,
+       {"body.masses[0].at[0]: '1 + m' has a term, m, in kg (mass)", "it must be in m (length)"}},
       {"position in an unknown unit",
        {"solve",
         file("posunit", with("at = [\"1\", \"0\", \"0\"]", "at = [\"1 parsecs\", \"0\", \"0\"]"))},

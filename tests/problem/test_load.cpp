@@ -2,6 +2,7 @@
 
 #include "problem/load.hpp"
 #include "problem/values.hpp"
+#include "symbolic/quantity.hpp"
 #include "temp_files.hpp"
 
 using namespace wobble;
@@ -85,6 +86,40 @@ TEST_CASE("a parameter's unit is SI however spelt; an angle's is rad") {
   const Problem q = load_problem(
       test::write_file("load/kgm.toml", replaced(kGood, "unit = \"kg\"", "unit = \"kg m^2/m^2\"")));
   REQUIRE(q.parameters[0].unit == "kg m^2/m^2");
+}
+
+TEST_CASE("a quantity's dimension follows from its parameters' units, and another is refused") {
+  using Catch::Contains;
+  const Problem p = load_problem(test::write_file("load/dims.toml", kGood));
+  const sym::SymbolTable table = p.symbol_table();
+  const auto error = [&](const std::string& text, const std::string& si_unit) -> std::string {
+    try {
+      (void)sym::parse_quantity(table, text, "body.masses[0].mass", si_unit);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  // alpha is an angle, a pure number: m cos(alpha) is a mass; 200 g, 0.05 and 2 pi name no
+  // parameter, so their unit, not written, is not told.
+  for (const std::string mass :
+       {"2*m", "m*cos(alpha)", "m/alpha", "200 g", "0.05", "m + 0.05", "2*pi", "m + sqrt(2)"})
+    CHECK(error(mass, "kg").empty());
+  CHECK(error("m*alpha", "kg m^2")
+            .find("is in kg (mass) by its parameters' units; it must be in "
+                  "kg m^2 (mass × length²)") != std::string::npos);
+  CHECK_THAT(error("cos(alpha)", "kg"),
+             Contains("body.masses[0].mass: 'cos(alpha)' is a pure number by its parameters' "
+                      "units; it must be in kg (mass)"));
+  CHECK_THAT(error("m", "m"), Contains("'m' is in kg (mass)") && Contains("must be in m (length)"));
+  // A sum: each term that has a dimension must have the quantity's; a bare number has none told.
+  CHECK_THAT(error("m + m*m", "kg"),
+             Contains("'m + m*m' has a term, m^2, in kg^2 (mass²)") && Contains("must be in kg"));
+  CHECK_THAT(error("m + 0.05 + m^2", "kg"), Contains("has a term, m^2"));
+  // A table that does not know its symbols' units tells nothing.
+  sym::SymbolTable plain;
+  plain.declare("m", "m", sym::SymbolSign::positive);
+  CHECK_NOTHROW(sym::parse_quantity(plain, "m", "body.masses[0].at[0]", "m"));
 }
 
 TEST_CASE("bad files: the message names the file, the line and the field") {
