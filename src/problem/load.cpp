@@ -51,8 +51,8 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
   r.only_keys(t, f, {"id", "question", "answers", "hint"});
   PartSpec p;
   p.id = r.string(t, "id", f + ".");
-  p.question = r.string(t, "question", f + ".");
-  p.hint = r.string(t, "hint", f + ".", false, "");
+  p.question = r.prose(t, "question", f + ".");
+  p.hint = r.prose(t, "hint", f + ".", false, "");
   const toml::array& answers = r.array(t, "answers", f + ".answers");
   if (answers.empty()) r.fail(&t, f + ".answers", "a part needs at least one answer");
   for (std::size_t i = 0; i < answers.size(); ++i) {
@@ -153,7 +153,7 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
   p.id = r.string(root, "id", "");
   p.title = r.string(root, "title", "");
   p.source = r.string(root, "source", "", false, "");
-  p.statement = r.string(root, "statement", "");
+  p.statement = r.prose(root, "statement", "");
   p.solver = r.string(root, "solver", "");
   const SolverSchema& solver = schema_for(r, root, p.solver, schemas);
   if (const toml::node* n = root.get("notes")) {

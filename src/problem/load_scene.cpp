@@ -185,7 +185,7 @@ Scene load_scene_table(const toml::table& root, const std::filesystem::path& fil
   p.solver = "scene";
   p.id = r.string(root, "id", "");
   p.title = r.string(root, "title", "");
-  p.statement = r.string(root, "description", "", false, "");
+  p.statement = r.prose(root, "description", "", false, "");
   if (root.get("parameters")) p.parameters = detail::read_parameters(r, root);
   const toml::node* body = root.get("body");
   if (body == nullptr || !body->is_table()) r.fail(&root, "body", "missing (a table)");

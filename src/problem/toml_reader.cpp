@@ -32,13 +32,38 @@ std::string si_parameter_unit(const Reader& r, const toml::node* node, const std
 }
 }  // namespace
 
+std::string math_problem(const std::string& markdown) {
+  std::size_t open = std::string::npos;  // where the math being read began
+  int depth = 0;
+  for (std::size_t i = 0; i < markdown.size(); ++i) {
+    const char c = markdown[i];
+    if (c == '$') {
+      if (open != std::string::npos && depth > 0)
+        return "the math \"" + printable(markdown.substr(open, i + 1 - open), 40) +
+               "\" leaves a '{' unclosed";
+      open = open == std::string::npos ? i : std::string::npos;
+      depth = 0;
+    } else if (open != std::string::npos && c == '\\') {
+      ++i;  // \{ \} \\ \$: a character to show, not a group
+    } else if (open != std::string::npos && (c == '{' || c == '}')) {
+      depth += c == '{' ? 1 : -1;
+      if (depth < 0)
+        return "the math \"" + printable(markdown.substr(open, i + 1 - open), 40) +
+               "\" closes a '}' that no '{' opened";
+    }
+  }
+  if (open == std::string::npos) return "";
+  return "a '$' opens math that no '$' closes: \"" + printable(markdown.substr(open), 40) +
+         "\" (math is written $...$)";
+}
+
 Parameter read_parameter(const Reader& r, const toml::table& t, const std::string& f) {
   r.only_keys(t, f, {"name", "latex", "unit", "description", "default", "range", "fixed"});
   Parameter p;
   p.name = r.string(t, "name", f + ".");
   p.latex = r.string(t, "latex", f + ".", false, p.name);
   p.unit = r.string(t, "unit", f + ".", false, "");
-  p.description = r.string(t, "description", f + ".", false, "");
+  p.description = r.prose(t, "description", f + ".", false, "");
   if (const toml::node* fixed = t.get("fixed")) {
     if (!fixed->is_boolean()) r.fail(fixed, f + ".fixed", "must be true or false");
     p.fixed = fixed->as_boolean()->get();

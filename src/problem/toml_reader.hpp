@@ -16,6 +16,10 @@
 namespace wobble::detail {
 
 // Builds messages "FILE:LINE: FIELD: what".
+/// What stops `markdown`'s $...$ math from typesetting: a '$' that opens math never closed, or
+/// a brace unbalanced inside one span ('\{' and '\}' are braces to show); "" if none.
+std::string math_problem(const std::string& markdown);
+
 class Reader {
  public:
   explicit Reader(std::filesystem::path file) : file_(std::move(file)) {}
@@ -64,6 +68,16 @@ class Reader {
     }
     if (n->is_string()) return text(n, field + key);
     fail(n, field + key, "expected a string");
+  }
+
+  // Markdown with $...$ math (a statement, a question, a hint, a description): every LaTeX
+  // renderer would stop at math left open or a brace left unclosed ("$\frac{1}{2$"), pdflatex
+  // with no PDF and KaTeX with red text; refused here, naming the field and the math.
+  std::string prose(const toml::table& t, const std::string& key, const std::string& field,
+                    bool required = true, const std::string& fallback = "") const {
+    const std::string s = string(t, key, field, required, fallback);
+    if (const std::string why = math_problem(s); !why.empty()) fail(t.get(key), field + key, why);
+    return s;
   }
 
   // An expression: a string, or a number written as its shortest round-trip text.

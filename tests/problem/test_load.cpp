@@ -122,6 +122,29 @@ TEST_CASE("a quantity's dimension follows from its parameters' units, and anothe
   CHECK_NOTHROW(sym::parse_quantity(plain, "m", "body.masses[0].at[0]", "m"));
 }
 
+TEST_CASE("math that no renderer could typeset is refused with its field") {
+  using Catch::Contains;
+  // pdflatex stops with no PDF at an unclosed brace, and the rest of the text turns to math at
+  // an unclosed '$'.
+  CHECK_THAT(load_error(replaced(kGood, "statement = \"Two masses.\"",
+                                 "statement = \"Two masses, $\\\\frac{1}{2$ apart.\"")),
+             Contains("bad.toml:4: statement: the math \"$\\frac{1}{2$\" leaves a '{' unclosed"));
+  CHECK_THAT(load_error(replaced(kGood, "question = \"Tensor?\"", "question = \"$I}$?\"")),
+             Contains("parts[0].question: the math \"$I}\" closes a '}' that no '{' opened"));
+  CHECK_THAT(load_error(replaced(kGood, "question = \"Tensor?\"",
+                                 "question = \"Tensor?\"\nhint = \"It costs $5.\"")),
+             Contains("parts[0].hint: a '$' opens math that no '$' closes: \"$5.\""));
+  CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"",
+                                 "name = \"alpha\"\ndescription = \"angle $\\\\alpha_{0\"")),
+             Contains("parameters[1].description: a '$' opens math"));
+  // Braces to show, \{ and \}, are no group; closed math is fine, however it nests.
+  const Problem p = load_problem(test::write_file(
+      "load/braces.toml",
+      replaced(kGood, "statement = \"Two masses.\"",
+               "statement = \"A set $\\\\{m, 2m\\\\}$ at $\\\\frac{a}{b_{1}}$.\"")));
+  REQUIRE(p.statement == "A set $\\{m, 2m\\}$ at $\\frac{a}{b_{1}}$.");
+}
+
 TEST_CASE("bad files: the message names the file, the line and the field") {
   using Catch::Contains;
   CHECK_THAT(load_error("id = \"x\"\ntitle = \n"),
