@@ -11,6 +11,19 @@
 namespace wobble::detail {
 
 namespace {
+// Why a formula could not use `name` for a parameter; "" if it can.
+std::string unusable_name(const std::string& name) {
+  if (!sym::is_identifier(name))
+    return "'" + printable(name, 40) +
+           "' is no name a formula can use: ASCII letters, digits and '_', not starting with a "
+           "digit (the key sets it in Greek by its latex, as latex = \"\\\\alpha\")";
+  // GiNaC's reader takes I for the imaginary unit whatever the table says: every formula with
+  // the parameter would have a complex value.
+  if (name == "I") return "'I' is the imaginary unit in a formula; name it otherwise, as I0 or I_1";
+  if (name == "pi" || name == "Pi") return "'" + name + "' is the constant π in a formula";
+  return "";
+}
+
 // A parameter's unit, which must be SI: its value is used in the file's expressions, and the
 // answers' units assumed, as it is ("200" for unit = "g" would be taken as 200 kg). An angle's
 // unit is spelt "rad", as Parameter::is_angle tests it ("radians" is read as rad).
@@ -61,6 +74,8 @@ Parameter read_parameter(const Reader& r, const toml::table& t, const std::strin
   r.only_keys(t, f, {"name", "latex", "unit", "description", "default", "range", "fixed"});
   Parameter p;
   p.name = r.string(t, "name", f + ".");
+  if (const std::string why = unusable_name(p.name); !why.empty())
+    r.fail(t.get("name"), f + ".name", why);
   p.latex = r.string(t, "latex", f + ".", false, p.name);
   p.unit = r.string(t, "unit", f + ".", false, "");
   p.description = r.prose(t, "description", f + ".", false, "");

@@ -164,6 +164,13 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
              Contains("body.masses[0].at") && Contains("3 expressions"));
   CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"m\"")),
              Contains("declared twice"));
+  // A name no formula can use is refused at its own field, I (GiNaC's imaginary unit) too.
+  CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"I\"")),
+             Contains("parameters[1].name: 'I' is the imaginary unit in a formula"));
+  CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"α\"")),
+             Contains("parameters[1].name: 'α' is no name a formula can use"));
+  CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"pi\"")),
+             Contains("parameters[1].name: 'pi' is the constant π"));
   CHECK_THAT(load_error(replaced(kGood, "answers = [\"I\", ", "answers = [3, ")),
              Contains("parts[0].answers[0]"));
   CHECK_THAT(
