@@ -83,15 +83,15 @@ Parameter read_parameter(const Reader& r, const toml::table& t, const std::strin
     if (!fixed->is_boolean()) r.fail(fixed, f + ".fixed", "must be true or false");
     p.fixed = fixed->as_boolean()->get();
   }
-  const std::string range = r.string(t, "range", f + ".");
-  try {
-    p.range = parse_interval(range, f + ".range");
-  } catch (const InputError& e) {
-    r.fail(t.get("range"), f + ".range", e.what());
-  }
   const toml::node* d = t.get("default");
   const std::string text = r.expression(d, f + ".default", &t);
   if (!p.unit.empty()) p.unit = si_parameter_unit(r, t.get("unit"), p.unit, text, f + ".unit");
+  const std::string range = r.string(t, "range", f + ".");
+  try {
+    p.range = parse_interval(range, f + ".range", p);
+  } catch (const InputError& e) {
+    r.fail(t.get("range"), f + ".range", e.what());
+  }
   try {
     p.default_value = parse_parameter_value(p, text, f + ".default");
   } catch (const InputError& e) {

@@ -37,7 +37,10 @@ double constant_value(const std::string& text, const std::string& field,
 }
 }  // namespace
 
-Interval parse_interval(const std::string& text, const std::string& field) {
+namespace {
+// "(lo, hi)" with each bound read by `bound`.
+template <typename ReadBound>
+Interval interval_of(const std::string& text, const std::string& field, ReadBound bound) {
   const std::string t = trim(text);
   const auto comma = t.find(',');
   if (t.size() < 5 || (t.front() != '(' && t.front() != '[') ||
@@ -50,10 +53,16 @@ Interval parse_interval(const std::string& text, const std::string& field) {
   r.text = t;
   r.lo_open = t.front() == '(';
   r.hi_open = t.back() == ')';
-  r.lo = constant_value(t.substr(1, comma - 1), field);
-  r.hi = constant_value(t.substr(comma + 1, t.size() - comma - 2), field);
+  r.lo = bound(t.substr(1, comma - 1));
+  r.hi = bound(t.substr(comma + 1, t.size() - comma - 2));
   if (!(r.lo < r.hi)) throw InputError(field + ": empty interval \"" + text + "\"");
   return r;
+}
+}  // namespace
+
+Interval parse_interval(const std::string& text, const std::string& field) {
+  return interval_of(text, field,
+                     [&](const std::string& bound) { return constant_value(bound, field); });
 }
 
 namespace {
@@ -121,6 +130,14 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
   }
 }
 }  // namespace
+
+Interval parse_interval(const std::string& text, const std::string& field, const Parameter& p) {
+  return interval_of(text, field, [&](const std::string& bound) {
+    const std::string b = trim(bound);
+    if (b == "inf" || b == "+inf" || b == "-inf") return constant_value(b, field);
+    return one_value(p, b, b, field);
+  });
+}
 
 std::pair<std::string, std::string> typed_value_parts(const std::string& text) {
   const std::string t = sym::numbers_times_constants(sym::to_ascii(text));

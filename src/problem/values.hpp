@@ -47,6 +47,9 @@ sym::Values parameter_values(const Problem& problem, const std::vector<std::stri
 /// Reads an interval "(lo, hi)", "[lo, hi]", half-open either way; bounds are constant
 /// expressions, `inf` or `-inf`. @throws InputError naming the field.
 Interval parse_interval(const std::string& text, const std::string& field);
+/// The same for a parameter's range, whose bounds may carry a unit as its default does
+/// ("[0, 90deg]" for an angle in rad), converted exactly to the parameter's (SI) unit.
+Interval parse_interval(const std::string& text, const std::string& field, const Parameter& p);
 
 /// The user's --set assignments name each parameter once, however spelt (a variant's values may
 /// be overridden by them, but "--set m=1 --set m=2" is a slip, not a choice).

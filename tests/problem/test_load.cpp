@@ -122,6 +122,18 @@ TEST_CASE("a quantity's dimension follows from its parameters' units, and anothe
   CHECK_NOTHROW(sym::parse_quantity(plain, "m", "body.masses[0].at[0]", "m"));
 }
 
+TEST_CASE("a range's bounds may carry a unit, as the default does") {
+  const Problem p = load_problem(test::write_file(
+      "load/range_units.toml", replaced(kGood, "range = \"[0, pi/2)\"", "range = \"[0, 90deg)\"")));
+  REQUIRE_THAT(p.parameters[1].range.hi, Catch::Matchers::WithinULP(M_PI / 2, 1));
+  REQUIRE(p.parameters[1].range.hi_open);
+  const Problem q = load_problem(test::write_file(
+      "load/range_grams.toml", replaced(kGood, "range = \"(0, inf)\"", "range = \"(0, 1500 g]\"")));
+  REQUIRE_THAT(q.parameters[0].range.hi, Catch::Matchers::WithinULP(1.5, 0));
+  CHECK_THAT(load_error(replaced(kGood, "range = \"[0, pi/2)\"", "range = \"[0, 1 kg)\"")),
+             Catch::Contains("parameters[1].range: '1 kg' is in kg (mass), but alpha is in rad"));
+}
+
 TEST_CASE("math that no renderer could typeset is refused with its field") {
   using Catch::Contains;
   // pdflatex stops with no PDF at an unclosed brace, and the rest of the text turns to math at
