@@ -71,6 +71,11 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
         if (!v || !(*v > 0.0 && *v < 1.0))
           r.fail(tn, af + ".tolerance",
                  "expected a relative tolerance between 0 and 1 (0.05 is 5%)");
+        if (*v < kMinRelativeTolerance)
+          r.fail(tn, af + ".tolerance",
+                 fmt::format("{:g} is below {:g}, where the key's own answers, printed to ten "
+                             "significant digits, would be judged wrong",
+                             *v, kMinRelativeTolerance));
         a.tolerance = *v;
       }
       if (const toml::node* mn = at->get("mistakes")) a.mistakes = read_mistakes(r, mn, af);

@@ -76,6 +76,11 @@ struct MistakeSpec {
   std::string field;   ///< "parts[1].answers[0].mistakes[0]", for messages
 };
 
+/// The smallest relative tolerance an answer may be judged with: a key prints ten significant
+/// digits, within 5e-10 of the value, so below this its own printed answers would be judged
+/// wrong.
+inline constexpr double kMinRelativeTolerance = 1e-9;
+
 struct AnswerSpec {
   std::string name;                 ///< the name in the key (JSON)
   std::string quantity;             ///< what the solver computes for it (defaults to name)

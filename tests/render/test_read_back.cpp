@@ -252,6 +252,32 @@ TEST_CASE("every printed form of every answer of every problem reads back as cor
   REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to eight forms
 }
 
+TEST_CASE("every printed answer reads back as correct at the tightest tolerance allowed") {
+  // kMinRelativeTolerance is the floor of a problem file's and --tolerance's tolerance: the ten
+  // digits a key prints must pass there, each entry of a vector or matrix too.
+  check::Options tightest;
+  tightest.rel_tol = kMinRelativeTolerance;
+  tightest.rel_tol_given = true;
+  int judged = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        std::vector<std::string> texts{printed_value(a)};
+        if (a.value.shape != Value::Shape::scalar) texts.push_back(matlab_rows(a));
+        for (const std::string& text : texts) {
+          INFO(p.id << " " << a.name << ": " << text);
+          const check::Verdict v = f.check(a.name, text, tightest);
+          INFO(v.line);
+          CHECK(v.correct);
+          ++judged;
+        }
+      }
+    }
+  }
+  REQUIRE(judged > 200);
+}
+
 namespace {
 // GiNaC text with each of the problem's symbols spelled by `spelling` (its name in, the
 // replacement out); functions and numbers as they were.
