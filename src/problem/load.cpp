@@ -5,6 +5,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdlib>
 #include <set>
@@ -51,7 +52,17 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
   r.only_keys(t, f, {"id", "question", "answers", "hint"});
   PartSpec p;
   p.id = r.string(t, "id", f + ".");
+  // Typed after the problem's id (wobble check ID a ANSWER, --part a): one word.
+  const bool word = !p.id.empty() && std::all_of(p.id.begin(), p.id.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  });
+  if (!word)
+    r.fail(t.get("id"), f + ".id",
+           "'" + printable(p.id, 40) +
+               "' is no part id: ASCII letters, digits and '_', as students type it (a, b, 2c)");
   p.question = r.prose(t, "question", f + ".");
+  if (p.question.find_first_not_of(" \t\n") == std::string::npos)
+    r.fail(t.get("question"), f + ".question", "empty; it is shown to students");
   p.hint = r.prose(t, "hint", f + ".", false, "");
   const toml::array& answers = r.array(t, "answers", f + ".answers");
   if (answers.empty()) r.fail(&t, f + ".answers", "a part needs at least one answer");
@@ -156,7 +167,7 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
   Problem p;
   p.file = file;
   p.id = r.string(root, "id", "");
-  p.title = r.string(root, "title", "");
+  p.title = r.words(root, "title", "");
   p.source = r.string(root, "source", "", false, "");
   p.statement = r.prose(root, "statement", "");
   p.solver = r.string(root, "solver", "");

@@ -184,7 +184,7 @@ Scene load_scene_table(const toml::table& root, const std::filesystem::path& fil
   p.file = file;
   p.solver = "scene";
   p.id = r.string(root, "id", "");
-  p.title = r.string(root, "title", "");
+  p.title = r.words(root, "title", "");
   p.statement = r.prose(root, "description", "", false, "");
   if (root.get("parameters")) p.parameters = detail::read_parameters(r, root);
   const toml::node* body = root.get("body");

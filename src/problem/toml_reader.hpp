@@ -70,6 +70,14 @@ class Reader {
     fail(n, field + key, "expected a string");
   }
 
+  // Text a reader must see (a title, a question): a blank one is refused as missing would be.
+  std::string words(const toml::table& t, const std::string& key, const std::string& field) const {
+    const std::string s = string(t, key, field);
+    if (s.find_first_not_of(" \t\n") == std::string::npos)
+      fail(t.get(key), field + key, "empty; it is shown to students");
+    return s;
+  }
+
   // Markdown with $...$ math (a statement, a question, a hint, a description): every LaTeX
   // renderer would stop at math left open or a brace left unclosed ("$\frac{1}{2$"), pdflatex
   // with no PDF and KaTeX with red text; refused here, naming the field and the math.

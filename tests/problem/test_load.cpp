@@ -176,6 +176,15 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
              Contains("body.masses[0].at") && Contains("3 expressions"));
   CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"m\"")),
              Contains("declared twice"));
+  // What a student types or reads: a part id is one word; a title or question is not blank.
+  CHECK_THAT(load_error(replaced(kGood, "id = \"a\"", "id = \"a b\"")),
+             Contains("parts[0].id: 'a b' is no part id"));
+  CHECK_THAT(load_error(replaced(kGood, "id = \"a\"", "id = \"\"")),
+             Contains("parts[0].id: '' is no part id"));
+  CHECK_THAT(load_error(replaced(kGood, "question = \"Tensor?\"", "question = \" \"")),
+             Contains("parts[0].question: empty"));
+  CHECK_THAT(load_error(replaced(kGood, "title = \"Two masses\"", "title = \"\"")),
+             Contains("bad.toml:2: title: empty"));
   // A name no formula can use is refused at its own field, I (GiNaC's imaginary unit) too.
   CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"I\"")),
              Contains("parameters[1].name: 'I' is the imaginary unit in a formula"));
