@@ -1,0 +1,23 @@
+#pragma once
+/// @file
+/// A file's quantity against the dimension its field wants, from its parameters' units: with
+/// `mass = "R"` and R a length, the key would be computed from so many kg. The dimension is
+/// found from the value alone: at the table's probe values (a problem's defaults) the units of
+/// mass, length and time are resized (1.7, 0.6, 2.3 times), all at once to test, one at a time to
+/// name what it is. A sum is judged term by term, and a term that is a bare number has no unit
+/// to tell (`m + 0.05` is a mass and 50 g more, in SI); so has a value that is zero or has none
+/// at the probe. A table without dimensions (SymbolTable::set_dimension) tells nothing.
+#include <ginac/ginac.h>
+
+#include <string>
+
+#include "symbolic/expression.hpp"
+
+namespace wobble::sym {
+
+/// @throws ExpressionError naming `field` and `text` (the quantity as written) where `e`, or a
+///   term of its sum, has a dimension other than `si_unit`'s ("kg", "rad/s"; "" a pure number).
+void refuse_other_dimension(const SymbolTable& table, const GiNaC::ex& e, const std::string& text,
+                            const std::string& field, const std::string& si_unit);
+
+}  // namespace wobble::sym
