@@ -65,12 +65,8 @@ check::Options judge_options(std::optional<double> tolerance, std::optional<int>
     throw InputError(
         fmt::format("--tolerance: {} must be between 0 and 1 (0.01 is 1%)", *tolerance));
   }
-  if (tolerance && *tolerance < kMinRelativeTolerance) {
-    throw InputError(fmt::format(
-        "--tolerance: {:g} is below {:g}, where the key's own answers, printed to ten significant "
-        "digits, would be judged wrong",
-        *tolerance, kMinRelativeTolerance));
-  }
+  if (const std::string why = tolerance ? tolerance_too_fine(*tolerance) : ""; !why.empty())
+    throw InputError("--tolerance: " + why);
   if (sigfigs && (*sigfigs < 1 || *sigfigs > 15)) {
     throw InputError(fmt::format("--sigfigs: {} must be from 1 to 15", *sigfigs));
   }

@@ -61,8 +61,6 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
            "'" + printable(p.id, 40) +
                "' is no part id: ASCII letters, digits and '_', as students type it (a, b, 2c)");
   p.question = r.prose(t, "question", f + ".");
-  if (p.question.find_first_not_of(" \t\n") == std::string::npos)
-    r.fail(t.get("question"), f + ".question", "empty; it is shown to students");
   p.hint = r.prose(t, "hint", f + ".", false, "");
   const toml::array& answers = r.array(t, "answers", f + ".answers");
   if (answers.empty()) r.fail(&t, f + ".answers", "a part needs at least one answer");
@@ -82,11 +80,8 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
         if (!v || !(*v > 0.0 && *v < 1.0))
           r.fail(tn, af + ".tolerance",
                  "expected a relative tolerance between 0 and 1 (0.05 is 5%)");
-        if (*v < kMinRelativeTolerance)
-          r.fail(tn, af + ".tolerance",
-                 fmt::format("{:g} is below {:g}, where the key's own answers, printed to ten "
-                             "significant digits, would be judged wrong",
-                             *v, kMinRelativeTolerance));
+        if (const std::string why = tolerance_too_fine(*v); !why.empty())
+          r.fail(tn, af + ".tolerance", why);
         a.tolerance = *v;
       }
       if (const toml::node* mn = at->get("mistakes")) a.mistakes = read_mistakes(r, mn, af);

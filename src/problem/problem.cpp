@@ -1,5 +1,7 @@
 #include "problem/problem.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 
@@ -54,6 +56,14 @@ const Parameter& Problem::parameter(const std::string& name) const {
   }
   // "of heavy-top": a scene's parameters are a problem's too (scene.hpp), so no kind is named.
   throw InputError("unknown parameter '" + name + "' of " + id + " (known: " + known + ")");
+}
+
+std::string tolerance_too_fine(double tolerance) {
+  if (tolerance >= kMinRelativeTolerance) return "";
+  return fmt::format(
+      "{:g} is below {:g}, where the key's own answers, printed to ten significant digits, would "
+      "be judged wrong",
+      tolerance, kMinRelativeTolerance);
 }
 
 sym::SymbolTable Problem::symbol_table() const {

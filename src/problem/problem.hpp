@@ -80,6 +80,8 @@ struct MistakeSpec {
 /// digits, within 5e-10 of the value, so below this its own printed answers would be judged
 /// wrong.
 inline constexpr double kMinRelativeTolerance = 1e-9;
+/// Why a relative tolerance is too fine to judge with (below kMinRelativeTolerance); "" if not.
+std::string tolerance_too_fine(double tolerance);
 
 struct AnswerSpec {
   std::string name;                 ///< the name in the key (JSON)

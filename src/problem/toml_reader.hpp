@@ -15,11 +15,11 @@
 
 namespace wobble::detail {
 
-// Builds messages "FILE:LINE: FIELD: what".
 /// What stops `markdown`'s $...$ math from typesetting: a '$' that opens math never closed, or
 /// a brace unbalanced inside one span ('\{' and '\}' are braces to show); "" if none.
 std::string math_problem(const std::string& markdown);
 
+// Builds messages "FILE:LINE: FIELD: what".
 class Reader {
  public:
   explicit Reader(std::filesystem::path file) : file_(std::move(file)) {}
@@ -70,10 +70,12 @@ class Reader {
     fail(n, field + key, "expected a string");
   }
 
-  // Text a reader must see (a title, a question): a blank one is refused as missing would be.
-  std::string words(const toml::table& t, const std::string& key, const std::string& field) const {
-    const std::string s = string(t, key, field);
-    if (s.find_first_not_of(" \t\n") == std::string::npos)
+  // Text shown to students (a title, a question, a statement): where required, a blank one is
+  // refused as a missing one is.
+  std::string words(const toml::table& t, const std::string& key, const std::string& field,
+                    bool required = true, const std::string& fallback = "") const {
+    const std::string s = string(t, key, field, required, fallback);
+    if (required && s.find_first_not_of(" \t\n") == std::string::npos)
       fail(t.get(key), field + key, "empty; it is shown to students");
     return s;
   }
@@ -83,7 +85,7 @@ class Reader {
   // with no PDF and KaTeX with red text; refused here, naming the field and the math.
   std::string prose(const toml::table& t, const std::string& key, const std::string& field,
                     bool required = true, const std::string& fallback = "") const {
-    const std::string s = string(t, key, field, required, fallback);
+    const std::string s = words(t, key, field, required, fallback);
     if (const std::string why = math_problem(s); !why.empty()) fail(t.get(key), field + key, why);
     return s;
   }

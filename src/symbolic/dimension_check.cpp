@@ -13,6 +13,8 @@
 namespace wobble::sym {
 
 namespace {
+using Dimensions = std::map<std::string, SymbolTable::Dimension>;
+
 // New sizes of the units of mass, length and time for the dimension test: no product of small
 // powers of one is another's, so a wrong power of any shows when all three change at once, and
 // when one changes at a time, a quantity of one dimension changes by an integer power of it.
@@ -31,15 +33,14 @@ bool names_a_symbol(const SymbolTable& table, const GiNaC::ex& e) {
   return false;
 }
 
-Values probe_values(const std::map<std::string, SymbolTable::Dimension>& dims) {
+Values probe_values(const Dimensions& dims) {
   Values probe;
   for (const auto& [name, d] : dims) probe[name] = d.probe;
   return probe;
 }
 
 // `e` at the probe values with the units' sizes changed by `scale` (powers of kg, m, s).
-double scaled_value(const SymbolTable& table, const GiNaC::ex& e,
-                    const std::map<std::string, SymbolTable::Dimension>& dims,
+double scaled_value(const SymbolTable& table, const GiNaC::ex& e, const Dimensions& dims,
                     const std::array<double, 3>& scale, const std::string& field) {
   Values scaled = probe_values(dims);
   for (const auto& [name, d] : dims) {
@@ -51,10 +52,9 @@ double scaled_value(const SymbolTable& table, const GiNaC::ex& e,
 // Whether `e` has the dimension `powers` as far as its value tells, with every unit's size
 // changed at once: one evaluation besides the probe's (which the solver takes too, at the
 // defaults). True where nothing can be told: no symbol, a value of zero or none there.
-bool scales_as(const SymbolTable& table, const GiNaC::ex& e, const std::array<int, 3>& powers,
-               const std::string& field) {
-  const auto dims = table.dimensions();
-  if (dims.empty() || !names_a_symbol(table, e)) return true;
+bool scales_as(const SymbolTable& table, const Dimensions& dims, const GiNaC::ex& e,
+               const std::array<int, 3>& powers, const std::string& field) {
+  if (!names_a_symbol(table, e)) return true;
   try {
     const double here = evaluate(e, substitution(table, probe_values(dims)), field);
     if (here == 0.0) return true;
@@ -71,10 +71,9 @@ bool scales_as(const SymbolTable& table, const GiNaC::ex& e, const std::array<in
 // changes as each unit's size does; nullopt where it has none to find: no symbol, a value of
 // zero or none there, a sum of unlike terms, or one with a number (m + 0.05, a mass in kg and a
 // grams' worth: a number's unit is not written, so the sum is not refused).
-std::optional<std::array<int, 3>> dimension_of(const SymbolTable& table, const GiNaC::ex& e,
-                                               const std::string& field) {
-  const auto dims = table.dimensions();
-  if (dims.empty() || !names_a_symbol(table, e)) return std::nullopt;
+std::optional<std::array<int, 3>> dimension_of(const SymbolTable& table, const Dimensions& dims,
+                                               const GiNaC::ex& e, const std::string& field) {
+  if (!names_a_symbol(table, e)) return std::nullopt;
   std::array<int, 3> powers{0, 0, 0};
   try {
     const double here = evaluate(e, substitution(table, probe_values(dims)), field);
@@ -106,10 +105,11 @@ std::string dimension_text(const std::array<int, 3>& powers) {
 
 void refuse_other_dimension(const SymbolTable& table, const GiNaC::ex& e, const std::string& text,
                             const std::string& field, const std::string& si_unit) {
+  const Dimensions dims = table.dimensions();
+  if (dims.empty()) return;
   const Unit wanted = si_unit.empty() ? Unit{} : parse_unit(si_unit, field);
   // A file's quantity is read again for each variant and each solve of it (an export solves
   // hundreds): one that passed at these probe values passes again, unevaluated.
-  const auto dims = table.dimensions();
   std::ostringstream key;
   key.precision(17);
   key << si_unit << '|' << e;
@@ -117,21 +117,21 @@ void refuse_other_dimension(const SymbolTable& table, const GiNaC::ex& e, const 
     key << '|' << name << d.powers[0] << ',' << d.powers[1] << ',' << d.powers[2] << '@' << d.probe;
   thread_local std::set<std::string> passed;
   if (passed.count(key.str()) != 0) return;
-  if (scales_as(table, e, wanted.dim, field)) {
+  if (scales_as(table, dims, e, wanted.dim, field)) {
     passed.insert(key.str());
     return;
   }
   const std::string must = wanted.dim == std::array{0, 0, 0}
                                ? "a pure number" + std::string(wanted.angle ? " (an angle)" : "")
                                : "in " + si_unit + " (" + wanted.dimension_words() + ")";
-  const auto found = dimension_of(table, e, field);
+  const auto found = dimension_of(table, dims, e, field);
   if (found && *found != wanted.dim) {
     throw ExpressionError(field + ": '" + printable(text, 40) + "' is " + dimension_text(*found) +
                           " by its parameters' units; it must be " + must);
   }
   if (found || !GiNaC::is_a<GiNaC::add>(e)) return;  // mixed: not told apart from m + 0.05
   for (const GiNaC::ex& term : e) {
-    const auto term_found = dimension_of(table, term, field);
+    const auto term_found = dimension_of(table, dims, term, field);
     if (!term_found || *term_found == wanted.dim) continue;
     std::ostringstream term_text;
     term_text << term;

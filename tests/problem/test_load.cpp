@@ -185,6 +185,8 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
              Contains("parts[0].question: empty"));
   CHECK_THAT(load_error(replaced(kGood, "title = \"Two masses\"", "title = \"\"")),
              Contains("bad.toml:2: title: empty"));
+  CHECK_THAT(load_error(replaced(kGood, "statement = \"Two masses.\"", "statement = \" \"")),
+             Contains("bad.toml:4: statement: empty"));
   // A name no formula can use is refused at its own field, I (GiNaC's imaginary unit) too.
   CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"I\"")),
              Contains("parameters[1].name: 'I' is the imaginary unit in a formula"));
