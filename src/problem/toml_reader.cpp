@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "problem/values.hpp"
+#include "symbolic/expression_guard.hpp"
 #include "symbolic/units.hpp"
 
 namespace wobble::detail {
@@ -21,6 +22,10 @@ std::string unusable_name(const std::string& name) {
   // the parameter would have a complex value.
   if (name == "I") return "'I' is the imaginary unit in a formula; name it otherwise, as I0 or I_1";
   if (name == "pi" || name == "Pi") return "'" + name + "' is the constant π in a formula";
+  // A symbol named sqrt would print as "√" in the key, which reads back as the function.
+  if (sym::is_function_name(name))
+    return "'" + name + "' is a function in a formula (" + name +
+           "(x)); name the parameter otherwise";
   return "";
 }
 

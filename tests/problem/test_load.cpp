@@ -194,6 +194,10 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
              Contains("parameters[1].name: 'α' is no name a formula can use"));
   CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"pi\"")),
              Contains("parameters[1].name: 'pi' is the constant π"));
+  CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"sqrt\"")),
+             Contains("parameters[1].name: 'sqrt' is a function in a formula (sqrt(x))"));
+  CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"ln\"")),
+             Contains("parameters[1].name: 'ln' is a function in a formula"));
   CHECK_THAT(load_error(replaced(kGood, "answers = [\"I\", ", "answers = [3, ")),
              Contains("parts[0].answers[0]"));
   CHECK_THAT(
