@@ -6,7 +6,10 @@
 /// mass, length and time are resized (1.7, 0.6, 2.3 times), all at once to test, one at a time to
 /// name what it is. A sum is judged term by term, and a term that is a bare number has no unit
 /// to tell (`m + 0.05` is a mass and 50 g more, in SI); so has a value that is zero or has none
-/// at the probe. A table without dimensions (SymbolTable::set_dimension) tells nothing.
+/// at the probe. Inside the quantity a bare number takes the unit of the terms it is added to
+/// (`m*(1 + R)` is in kg m), and a sum of unlike terms, a function's argument with a unit (but
+/// abs's; atan2's two of one unit) and an exponent with one are refused wherever they stand.
+/// A table without dimensions (SymbolTable::set_dimension) tells nothing.
 #include <ginac/ginac.h>
 
 #include <string>
@@ -16,7 +19,8 @@
 namespace wobble::sym {
 
 /// @throws ExpressionError naming `field` and `text` (the quantity as written) where `e`, or a
-///   term of its sum, has a dimension other than `si_unit`'s ("kg", "rad/s"; "" a pure number).
+///   term of its sum, has a dimension other than `si_unit`'s ("kg", "rad/s"; "" a pure number),
+///   or a part of it has none that can be right (above).
 void refuse_other_dimension(const SymbolTable& table, const GiNaC::ex& e, const std::string& text,
                             const std::string& field, const std::string& si_unit);
 

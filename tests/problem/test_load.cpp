@@ -116,6 +116,23 @@ TEST_CASE("a quantity's dimension follows from its parameters' units, and anothe
   CHECK_THAT(error("m + m*m", "kg"),
              Contains("'m + m*m' has a term, m^2, in kg^2 (mass²)") && Contains("must be in kg"));
   CHECK_THAT(error("m + 0.05 + m^2", "kg"), Contains("has a term, m^2"));
+  // A bare number inside takes the unit of the terms it is added to: m (1 + m) is m + m^2 in
+  // kg and kg^2, whatever the 1 was meant to be.
+  CHECK(error("m*(1 + m)", "kg^2").empty());
+  CHECK(error("m*(alpha + 1)", "kg").empty());
+  CHECK(error("m*abs(m - 1)", "kg^2").empty());
+  CHECK_THAT(error("m*(1 + m)", "kg"),
+             Contains("'m*(1 + m)' is in kg^2 (mass²) by its parameters' units; it must be in kg"));
+  // A term shown in the refusal is as written, without the unit its number was given.
+  CHECK_THAT(error("m + m*(m + 1)", "kg"), Contains("has a term, m*(m + 1), in kg^2"));
+  // Inside the quantity: a sum of unlike terms, a function of a quantity with a unit, a unit in
+  // an exponent.
+  CHECK_THAT(error("m*(alpha + m)", "kg"),
+             Contains("has a sum, alpha + m, of terms a pure number and in kg (mass)"));
+  CHECK_THAT(error("m*exp(m)", "kg"),
+             Contains("takes exp(m) of m, in kg (mass) by its parameters' units; its argument "
+                      "must be a pure number"));
+  CHECK_THAT(error("2^m", "kg"), Contains("has an exponent, m, in kg (mass)"));
   // A table that does not know its symbols' units tells nothing.
   sym::SymbolTable plain;
   plain.declare("m", "m", sym::SymbolSign::positive);
