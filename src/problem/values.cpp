@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <utility>
@@ -175,8 +176,16 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
     const std::string shown = typed.find('=') != std::string::npos  ? typed
                               : typed == si || typed == shortest(v) ? si
                                                                     : typed + " = " + si;
-    throw InputError(field + ": " + p.name + " = " + shown + " is outside its range " +
-                     p.range.text);
+    // "theta0=30" for 30 degrees: a bare number is in radians.
+    char* end = nullptr;
+    const bool bare = !typed.empty() && (std::strtod(typed.c_str(), &end), *end == '\0');
+    const bool degrees_meant = p.is_angle() && bare && p.range.contains(v * M_PI / 180.0);
+    throw InputError(
+        field + ": " + p.name + " = " + shown + " is outside its range " + p.range.text +
+        (degrees_meant
+             ? "; a bare number is in radians: for degrees write " +
+                   (field.starts_with("--") ? p.name + "=" + typed + "deg" : "\"" + typed + "deg\"")
+             : ""));
   }
   return v;
 }

@@ -323,6 +323,11 @@ std::vector<Row> catalog() {
        {"solve", "flying-plate", "--set", "alpha=90deg"},
        2,
        {"--set alpha: alpha = 90deg = 1.570796327 rad is outside its range [0, pi/2)"}},
+      {"an angle in degrees written as a bare number",
+       {"solve", "heavy-top", "--set", "theta0=30"},
+       2,
+       {"--set theta0: theta0 = 30 rad is outside its range (0, pi); a bare number is in "
+        "radians: for degrees write theta0=30deg"}},
       {"top without motion",
        {"solve", file("nomotion", top_with("[motion]\nomega = \"3\"\nalpha = \"alpha\"\n", ""))},
        2,

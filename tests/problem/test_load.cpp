@@ -211,6 +211,12 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
              Contains("parameters[1].name: 'α' is no name a formula can use"));
   CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"pi\"")),
              Contains("parameters[1].name: 'pi' is the constant π"));
+  // Degrees written as a bare number are radians; said where the degrees would be in range.
+  CHECK_THAT(load_error(replaced(kGood, "default = \"30deg\"", "default = 30")),
+             Contains("parameters[1].default: alpha = 30 rad is outside its range [0, pi/2); a "
+                      "bare number is in radians: for degrees write \"30deg\""));
+  CHECK_THAT(load_error(replaced(kGood, "default = \"30deg\"", "default = 300")),
+             Contains("alpha = 300 rad is outside its range [0, pi/2)") && !Contains("degrees"));
   CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"sqrt\"")),
              Contains("parameters[1].name: 'sqrt' is a function in a formula (sqrt(x))"));
   CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"ln\"")),
