@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "core/euler_angles.hpp"
@@ -43,6 +44,20 @@ struct Eval {
 // rounded entries (a quaternion (0.7071067811865476, ...) ) and refuses mistakes.
 constexpr double kUnitTolerance = 1e-12;
 
+// An orientation's angle beyond a whole turn is no orientation anyone writes on purpose; it is
+// nearly always degrees written as a bare number, which is radians ("30" is 30 rad, and the body
+// would start at 1.42 rad to the vertical with no word said).
+void refuse_more_than_a_turn(const std::string& text, double angle_rad, const std::string& field) {
+  constexpr double kTurn = 2.0 * M_PI * (1.0 + 1e-12);  // 2 pi as written, rounded, is a turn
+  if (std::abs(angle_rad) <= kTurn) return;
+  char* end = nullptr;
+  const bool bare = !text.empty() && (std::strtod(text.c_str(), &end), *end == '\0');
+  throw InputError(
+      fmt::format("{}: \"{}\" is {:.10g} rad, more than a turn{}", field, text, angle_rad,
+                  bare ? "; a bare number is in radians: for degrees write \"" + text + "deg\""
+                       : "; give the angle within one"));
+}
+
 Quat initial_orientation(const Scene& scene, const Eval& ev) {
   const OrientationSpec& o = scene.orientation;
   switch (o.kind) {
@@ -75,8 +90,11 @@ Quat initial_orientation(const Scene& scene, const Eval& ev) {
     }
     case OrientationSpec::Kind::euler: {
       Vec3 a;
-      for (int i = 0; i < 3; ++i)
-        a[i] = ev.quantity(o.euler[i], "initial.euler[" + std::to_string(i) + "]", "rad");
+      for (int i = 0; i < 3; ++i) {
+        const std::string field = "initial.euler[" + std::to_string(i) + "]";
+        a[i] = ev.quantity(o.euler[i], field, "rad");
+        refuse_more_than_a_turn(o.euler[i], a[i], field);
+      }
       return Quat(rotation_from_euler(a, euler_convention(o.convention))).normalized();
     }
   }

@@ -86,6 +86,18 @@ TEST_CASE("a scene's unit of the wrong dimension, or a word that is no unit, is 
                s.orientation.euler = {"0", "2 s", "0"};
              }),
              Contains("initial.euler[1]: '2 s' is in s (time); it must be an angle"));
+  // Beyond a turn: degrees written as a bare number, which is radians.
+  CHECK_THAT(refusal([](Scene& s) {
+               s.orientation.euler = {"0", "30", "0"};
+             }),
+             Contains("initial.euler[1]: \"30\" is 30 rad, more than a turn; a bare number is in "
+                      "radians: for degrees write \"30deg\""));
+  CHECK_THAT(refusal([](Scene& s) {
+               s.orientation.euler = {"0", "0", "-370 deg"};
+             }),
+             Contains("initial.euler[2]: \"-370 deg\" is -6.457718232 rad, more than a turn; "
+                      "give the angle within one"));
+  CHECK_NOTHROW(heavy_top_with([](Scene& s) { s.orientation.euler = {"2*pi", "1", "-2*pi"}; }));
   CHECK_THAT(refusal([](Scene& s) {
                s.gravity->pivot = {"0", "0", "5 kg"};
              }),
