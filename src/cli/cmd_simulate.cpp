@@ -52,6 +52,31 @@ void setup_simulate(CLI::App& app, SimulateOptions& opt) {
   app.add_flag("--force", opt.force, "Overwrite existing --out and --plot files");
 }
 
+namespace {
+// The text table prints only the digits the run's estimated error supports; where not one would
+// be right (dopri5 at tolerance 1e-2 over 1000 s of the tennis racket: error 1.2 of each
+// column's largest value), it is refused, naming what set the run's accuracy. --out writes the
+// samples as computed, at full precision, for a look at how a run goes wrong.
+void refuse_table_without_a_right_digit(const SimulateOptions& opt, const SceneSetup& setup,
+                                        const MethodChoice& choice,
+                                        const SimulationResult& result) {
+  if (!opt.out.empty() || printed_digits(setup, result) >= 1) return;
+  std::string field;
+  if (choice.step_s > 0.0 && setup.step) {
+    field = fmt::format("run.step: {:.6g} s", *setup.step);
+  } else {
+    field =
+        fmt::format("{}: {:.0e}", opt.tolerance ? "--tolerance" : "run.tolerance", setup.tolerance);
+  }
+  throw InputError(fmt::format(
+      "{} leaves not one digit of the table right: the samples' estimated error is {:.2g} of "
+      "each column's largest value (against {}); {} it, or write the samples as computed with "
+      "--out",
+      field, result.error_estimate, result.error_reference,
+      choice.step_s > 0.0 && setup.step ? "shorten" : "tighten"));
+}
+}  // namespace
+
 int run_simulate(const SimulateOptions& opt) {
   if (!opt.out.empty()) {
     const std::string ext = std::filesystem::path(opt.out).extension().string();
@@ -139,6 +164,7 @@ int run_simulate(const SimulateOptions& opt) {
     }
   }();
   if (shown) fmt::print(stderr, "\r{:40}\r", "");
+  refuse_table_without_a_right_digit(opt, setup, choice, result);
 
   // Files first, then stdout: a run that fails to write prints nothing. Samples are written as
   // they are read back, never held whole (a million of them would be gigabytes of text).

@@ -74,7 +74,7 @@ int printed_digits(const SceneSetup& s, const SimulationResult& r) {
   if (r.error_estimate >= 0.0) {
     // Digits whose place value exceeds the estimated error of the column's largest value.
     const double e = std::max(r.error_estimate, std::numeric_limits<double>::epsilon());
-    return std::clamp(static_cast<int>(std::floor(-std::log10(e))), 2, 10);
+    return std::min(static_cast<int>(std::floor(-std::log10(e))), 10);  // < 1: none is right
   }
   return std::clamp(static_cast<int>(std::floor(-std::log10(s.tolerance))) - 1, 2, 10);
 }
@@ -107,7 +107,7 @@ std::string simulation_header(const SceneSetup& s, const SimulationResult& r) {
 }
 
 void emit_simulation_table(const SceneSetup& s, const SimulationResult& r, const Emit& emit) {
-  const int d = printed_digits(s, r);
+  const int d = std::max(printed_digits(s, r), 1);  // none right is refused before (cli)
   const std::size_t width = static_cast<std::size_t>(d) + 8;
   std::vector<std::size_t> w;
   for (const auto& c : r.columns) w.push_back(std::max(width, c.size() + 1));
@@ -136,17 +136,36 @@ void emit_simulation_table(const SceneSetup& s, const SimulationResult& r, const
         line += fmt::format("{:>{}.3g}", row[j], w[j]);
         continue;
       }
+      // The sample times are the run's, not its results: as the header gives t_end, whatever
+      // the digits of the results (at 1 digit, 0.15 and 0.25 s would both read 0.2).
+      if (j == 0 && r.columns[j] == "t") {
+        line += fmt::format("{:>{}.10g}", row[j], w[j]);
+        continue;
+      }
       const double v = row[j], place = std::pow(10.0, last_place[j]);
       if (std::abs(v) < 0.5 * place) {
         line += fmt::format("{:>{}}", "0", w[j]);
         continue;
       }
       const int digits = static_cast<int>(std::floor(std::log10(std::abs(v)))) - last_place[j] + 1;
-      line += fmt::format("{:>{}.{}g}", v, w[j], std::max(digits, 1));
+      // From half the place up to it, the value rounds to the place itself (0.75 at a place of 1
+      // is 1, not 0.8: a digit finer than the place would be one the run does not support).
+      if (digits < 1) {
+        line += fmt::format("{:>{}.1g}", std::copysign(place, v), w[j]);
+        continue;
+      }
+      line += fmt::format("{:>{}.{}g}", v, w[j], digits);
     }
     emit(line + "\n");
   });
 }
+
+namespace {
+std::string digits_words(int digits) {
+  if (digits < 1) return "not one digit of the samples is right";
+  return fmt::format("the table prints {} digit{}", digits, digits == 1 ? "" : "s");
+}
+}  // namespace
 
 std::string simulation_footer(const SceneSetup& s, const SimulationResult& r) {
   std::string f;
@@ -164,8 +183,8 @@ std::string simulation_footer(const SceneSetup& s, const SimulationResult& r) {
     if (r.error_estimate >= 0.0) {
       f += fmt::format(
           "estimated error of the samples: {:.1e} of each column's largest value "
-          "(against {}, {} more evaluations); the table prints {} digits\n",
-          r.error_estimate, r.error_reference, r.estimate_cost, printed_digits(s, r));
+          "(against {}, {} more evaluations); {}\n",
+          r.error_estimate, r.error_reference, r.estimate_cost, digits_words(printed_digits(s, r)));
     } else {
       f += fmt::format(
           "estimated error of the samples: not available (no tighter run than rkf78 at {:.0e})\n",

@@ -28,7 +28,9 @@ void emit_simulation_table(const SceneSetup& s, const SimulationResult& r, const
 void emit_simulation_csv(const SimulationResult& r, const Emit& emit);
 void emit_simulation_json(const SceneSetup& s, const SimulationResult& r, const Emit& emit);
 
-/// Significant digits the text table prints for this run.
+/// Significant digits the text table prints for this run: those whose place value exceeds the
+/// estimated error of each column's largest value, at most 10; fewer than 1 where not even the
+/// first is right (simulate refuses the table then).
 int printed_digits(const SceneSetup& s, const SimulationResult& r);
 
 /// A plot draws at most this many buckets of samples (each at most 2 + 2 columns rows): beyond

@@ -1,13 +1,16 @@
 // `wobble simulate` and `solve --cross-check` as a user runs them.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "cli/run.hpp"
 #include "core/exact_free_body.hpp"
@@ -260,6 +263,88 @@ TEST_CASE("simulate refuses an exact run past where its phases keep their digits
   const RunResult top = run_wobble({"simulate", "heavy-top", "--t-end", "1e12", "--samples", "2"});
   INFO(top.err);
   REQUIRE(top.exit_code == 0);
+}
+
+namespace {
+// The rows of a printed table: the lines after its units' line, to the blank line after them.
+std::vector<std::vector<double>> table_rows(const std::string& out) {
+  std::istringstream lines(out);
+  std::string line;
+  while (std::getline(lines, line) && line.find("[s]") == std::string::npos) {
+  }
+  std::vector<std::vector<double>> rows;
+  while (std::getline(lines, line) && !line.empty()) {
+    std::istringstream cells(line);
+    rows.emplace_back(std::istream_iterator<double>(cells), std::istream_iterator<double>());
+  }
+  return rows;
+}
+
+std::vector<std::vector<double>> csv_rows(const std::string& text) {
+  std::istringstream lines(text);
+  std::string line;
+  std::getline(lines, line);  // the header
+  std::vector<std::vector<double>> rows;
+  while (std::getline(lines, line)) {
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream cells(line);
+    rows.emplace_back(std::istream_iterator<double>(cells), std::istream_iterator<double>());
+  }
+  return rows;
+}
+}  // namespace
+
+TEST_CASE("simulate prints only the digits its estimated error supports, and no table with none") {
+  // Splitting at tolerance 1e-2 on the thrown plate: an estimated error of 4.1e-2 of each
+  // column's largest value (against the closed form), so one digit.
+  const std::vector<std::string> coarse_run{"simulate", "thrown-plate", "--method",
+                                            "split2",   "--tolerance",  "1e-2"};
+  const RunResult coarse = run_wobble(coarse_run);
+  INFO(coarse.err);
+  REQUIRE(coarse.exit_code == 0);
+  REQUIRE_THAT(coarse.out, Catch::Contains("; the table prints 1 digit\n"));
+  const fs::path csv = scratch_dir() / "thrown-plate-exact.csv";
+  fs::remove(csv);
+  REQUIRE(run_wobble({"simulate", "thrown-plate", "--out", csv.string()}).exit_code == 0);
+  const auto printed = table_rows(coarse.out), exact = csv_rows(slurp(csv));
+  REQUIRE(printed.size() == exact.size());
+  REQUIRE(printed.size() == 17);
+  for (std::size_t j = 0; j < exact[0].size(); ++j) {
+    double largest = 0.0;
+    for (const auto& row : exact) largest = std::max(largest, std::abs(row[j]));
+    // One digit: the place of the first digit of the column's largest value. The run's error,
+    // below 1e-1 of that value, is below the place, and the printing rounds by half of it more.
+    const double place = std::pow(10.0, std::floor(std::log10(largest)));
+    const double bound = 1.5 * place;
+    for (std::size_t i = 0; i < exact.size(); ++i) {
+      INFO("column " << j << ", row " << i);
+      REQUIRE(printed[i].size() == exact[i].size());
+      CHECK_THAT(printed[i][j], Catch::Matchers::WithinAbs(exact[i][j], j == 0 ? 1e-12 : bound));
+    }
+  }
+  // The sample times are printed whole, whatever the digits of the results.
+  CHECK_THAT(coarse.out, Catch::Contains("\n     0.15 "));
+
+  // RK4 with a step of 10 s (0.05 s, the samples' spacing) on the top spun at 150 rad/s: not one
+  // digit would be right.
+  std::string text = slurp(fs::path(WOBBLE_SOURCE_DIR) / "scenes" / "heavy-top.toml");
+  text.replace(text.find("tolerance = 1e-10"), 17, "method = \"rk4\"\nstep = 10");
+  const fs::path scene = write_file("rk4-long-step.toml", text);
+  const fs::path plot = scratch_dir() / "rk4-long-step.svg";
+  const RunResult refused = run_wobble({"simulate", scene.string(), "--plot", plot.string()});
+  REQUIRE(refused.exit_code == 2);
+  REQUIRE(refused.out.empty());
+  CHECK_FALSE(fs::exists(plot));
+  CHECK_THAT(refused.err,
+             Catch::StartsWith("wobble: run.step: 10 s leaves not one digit of the table right: "
+                               "the samples' estimated error is ") &&
+                 Catch::Contains("shorten it, or write the samples as computed with --out"));
+  // The samples as computed, at full precision, with that said.
+  const fs::path raw = scratch_dir() / "rk4-long-step.csv";
+  fs::remove(raw);
+  const RunResult written = run_wobble({"simulate", scene.string(), "--out", raw.string()});
+  REQUIRE(written.exit_code == 0);
+  CHECK_THAT(written.out, Catch::Contains("; not one digit of the samples is right\n"));
 }
 
 TEST_CASE("simulate --samples takes a count as 1e3, --method a name in any case") {
