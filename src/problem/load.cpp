@@ -186,7 +186,10 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const std::string f = "parts[" + std::to_string(i) + "]";
     p.parts.push_back(read_part(r, r.table_at(parts, i, f, &root), f));
-    if (!ids.insert(p.parts.back().id).second) r.fail(parts.get(i), f + ".id", "part id repeated");
+    if (!ids.insert(p.parts.back().id).second) {
+      r.fail(parts.get(i), f + ".id",
+             "part id '" + p.parts.back().id + "' is used twice; give each part its own");
+    }
     // `check --name` finds an answer by its name: two of one name would hide the second.
     const toml::array& answers = *r.table_at(parts, i, f, &root).get_as<toml::array>("answers");
     check_quantities(r, answers, f, p.parts.back(), solver);

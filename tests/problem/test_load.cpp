@@ -211,6 +211,9 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
              Contains("parameters[1].name: 'α' is no name a formula can use"));
   CHECK_THAT(load_error(replaced(kGood, "name = \"alpha\"", "name = \"pi\"")),
              Contains("parameters[1].name: 'pi' is the constant π"));
+  CHECK_THAT(load_error(kGood + "\n[[parts]]\nid = \"a\"\nquestion = \"Mass?\"\nanswers = "
+                                "[\"mass\"]\n"),
+             Contains("parts[1].id: part id 'a' is used twice; give each part its own"));
   // Degrees written as a bare number are radians; said where the degrees would be in range.
   CHECK_THAT(load_error(replaced(kGood, "default = \"30deg\"", "default = 30")),
              Contains("parameters[1].default: alpha = 30 rad is outside its range [0, pi/2); a "
