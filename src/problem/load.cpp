@@ -27,12 +27,12 @@ std::vector<MistakeSpec> read_mistakes(const Reader& r, const toml::node* n,
                                        const std::string& af) {
   const std::string f = af + ".mistakes";
   const toml::array* list = n->as_array();
-  if (list == nullptr) r.fail(n, f, "expected a list of { value, what, remedy } tables");
+  if (list == nullptr) r.wrong(n, f, "a list of { value, what, remedy } tables");
   std::vector<MistakeSpec> out;
   for (std::size_t i = 0; i < list->size(); ++i) {
     const std::string mf = f + "[" + std::to_string(i) + "]";
     const toml::table* t = list->get(i)->as_table();
-    if (t == nullptr) r.fail(list->get(i), mf, "expected a { value, what, remedy } table");
+    if (t == nullptr) r.wrong(list->get(i), mf, "a { value, what, remedy } table");
     r.only_keys(*t, mf, {"value", "what", "remedy"});
     MistakeSpec m;
     m.value = r.expression(t->get("value"), mf + ".value", t);
@@ -78,8 +78,7 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
       if (const toml::node* tn = at->get("tolerance")) {
         const auto v = tn->value<double>();
         if (!v || !(*v > 0.0 && *v < 1.0))
-          r.fail(tn, af + ".tolerance",
-                 "expected a relative tolerance between 0 and 1 (0.05 is 5%)");
+          r.wrong(tn, af + ".tolerance", "a relative tolerance between 0 and 1 (0.05 is 5%)");
         if (const std::string why = tolerance_too_fine(*v); !why.empty())
           r.fail(tn, af + ".tolerance", why);
         a.tolerance = *v;
@@ -87,7 +86,7 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
       if (const toml::node* mn = at->get("mistakes")) a.mistakes = read_mistakes(r, mn, af);
       p.answers.push_back(a);
     } else {
-      r.fail(n, af, "expected an answer name or a { name, quantity, tolerance, mistakes } table");
+      r.wrong(n, af, "an answer name or a { name, quantity, tolerance, mistakes } table");
     }
   }
   return p;
@@ -115,7 +114,7 @@ std::optional<MotionSpec> read_motion(Reader& r, const toml::table& root,
   const std::string wanted = "a table { " + fmt::format("{}", fmt::join(keys, ", ")) + " }";
   if (n == nullptr) r.fail(&root, "motion", "missing (" + wanted + ")");
   const toml::table* t = n->as_table();
-  if (t == nullptr) r.fail(n, "motion", "expected " + wanted);
+  if (t == nullptr) r.wrong(n, "motion", wanted);
   r.only_keys(*t, "motion", {keys.begin(), keys.end()});
   MotionSpec m;
   for (const auto& key : keys) {
@@ -169,10 +168,10 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
   const SolverSchema& solver = schema_for(r, root, p.solver, schemas);
   if (const toml::node* n = root.get("notes")) {
     const toml::array* a = n->as_array();
-    if (a == nullptr) r.fail(n, "notes", "expected an array of strings");
+    if (a == nullptr) r.wrong(n, "notes", "an array of strings");
     for (std::size_t i = 0; i < a->size(); ++i) {
       if (!a->get(i)->is_string())
-        r.fail(n, "notes[" + std::to_string(i) + "]", "expected a string");
+        r.wrong(a->get(i), "notes[" + std::to_string(i) + "]", "a string");
       p.notes.push_back(r.text(a->get(i), "notes[" + std::to_string(i) + "]"));
     }
   }
@@ -185,13 +184,13 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
   std::set<std::string> ids, answer_names;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const std::string f = "parts[" + std::to_string(i) + "]";
-    p.parts.push_back(read_part(r, r.table_at(parts, i, f, &root), f));
+    p.parts.push_back(read_part(r, r.table_at(parts, i, f), f));
     if (!ids.insert(p.parts.back().id).second) {
       r.fail(parts.get(i), f + ".id",
              "part id '" + p.parts.back().id + "' is used twice; give each part its own");
     }
     // `check --name` finds an answer by its name: two of one name would hide the second.
-    const toml::array& answers = *r.table_at(parts, i, f, &root).get_as<toml::array>("answers");
+    const toml::array& answers = *r.table_at(parts, i, f).get_as<toml::array>("answers");
     check_quantities(r, answers, f, p.parts.back(), solver);
     for (std::size_t k = 0; k < p.parts.back().answers.size(); ++k) {
       const std::string& name = p.parts.back().answers[k].name;

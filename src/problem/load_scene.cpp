@@ -43,7 +43,7 @@ void read_initial(const Reader& r, const toml::table& root, Scene& s) {
     ++given;
     const toml::array* a = q->as_array();
     if (a == nullptr || a->size() != 4)
-      r.fail(q, "initial.quaternion", "expected 4 expressions (w, x, y, z)");
+      r.wrong(q, "initial.quaternion", "4 expressions (w, x, y, z)");
     for (std::size_t i = 0; i < 4; ++i)
       o.quaternion[i] = r.expression(a->get(i), "initial.quaternion[" + std::to_string(i) + "]", q);
     o.kind = OrientationSpec::Kind::quaternion;
@@ -51,7 +51,7 @@ void read_initial(const Reader& r, const toml::table& root, Scene& s) {
   if (const toml::node* m = t.get("matrix")) {
     ++given;
     const toml::array* a = m->as_array();
-    if (a == nullptr || a->size() != 3) r.fail(m, "initial.matrix", "expected 3 rows of 3");
+    if (a == nullptr || a->size() != 3) r.wrong(m, "initial.matrix", "3 rows of 3");
     for (std::size_t i = 0; i < 3; ++i)
       o.matrix[i] = r.vector3(a->get(i), "initial.matrix[" + std::to_string(i) + "]", m);
     o.kind = OrientationSpec::Kind::matrix;
@@ -75,7 +75,7 @@ void read_effects(const Reader& r, const toml::table& root, Scene& s) {
   const toml::node* n = root.get("effects");
   if (n == nullptr) return;  // none: torque-free
   const toml::table* t = n->as_table();
-  if (t == nullptr) r.fail(n, "effects", "expected a table of effects");
+  if (t == nullptr) r.wrong(n, "effects", "a table of effects");
   for (auto&& [key, node] : *t) {
     const std::string name(key.str());
     const std::string f = "effects." + name;
@@ -83,7 +83,7 @@ void read_effects(const Reader& r, const toml::table& root, Scene& s) {
     if (name != "gravity" && name != "free_flight" && name != "torque") {
       r.fail(&node, f, "unknown effect (expected gravity, free_flight or torque)");
     }
-    if (e == nullptr) r.fail(&node, f, "expected a table");
+    if (e == nullptr) r.wrong(&node, f, "a table");
     if (name == "gravity") {
       r.only_keys(*e, f, {"g", "pivot"});
       GravitySpec g;
@@ -124,13 +124,13 @@ void read_run(const Reader& r, const toml::table& root, Scene& s) {
   if (const toml::node* k = t.get("samples")) {
     const auto v = k->value<int64_t>();
     if (!k->is_integer() || !v || *v < kMinSamples || *v > kMaxSamples)
-      r.fail(k, "run.samples", "expected a whole number from " + scene_samples_range());
+      r.wrong(k, "run.samples", "a whole number from " + scene_samples_range());
     s.samples = static_cast<int>(*v);
   }
   if (const toml::node* k = t.get("tolerance")) {
     const auto v = k->value<double>();
     if (!v || !(*v >= kMinSceneTolerance && *v <= kMaxSceneTolerance))
-      r.fail(k, "run.tolerance", "expected a number from " + scene_tolerance_range());
+      r.wrong(k, "run.tolerance", "a number from " + scene_tolerance_range());
     s.tolerance = *v;
   }
   s.method = r.string(t, "method", "run.", false, "auto");
@@ -140,7 +140,7 @@ void read_run(const Reader& r, const toml::table& root, Scene& s) {
   for (std::size_t i = 0; i < outs.size(); ++i) {
     const std::string f = "run.outputs[" + std::to_string(i) + "]";
     const toml::node* o = outs.get(i);
-    if (!o->is_string()) r.fail(o, f, "expected an output name");
+    if (!o->is_string()) r.wrong(o, f, "an output name");
     const std::string name = *o->value<std::string>();
     const auto& known = scene_output_names();
     if (std::none_of(known.begin(), known.end(), [&](const auto& k) { return k.first == name; })) {

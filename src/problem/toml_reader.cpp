@@ -110,10 +110,10 @@ BodySpec read_body(const Reader& r, const toml::table& body) {
   BodySpec b;
   if (const toml::node* n = body.get("masses")) {
     const toml::array* a = n->as_array();
-    if (a == nullptr) r.fail(n, "body.masses", "expected an array of { mass, at } tables");
+    if (a == nullptr) r.wrong(n, "body.masses", "an array of { mass, at } tables");
     for (std::size_t i = 0; i < a->size(); ++i) {
       const std::string f = "body.masses[" + std::to_string(i) + "]";
-      const toml::table& t = r.table_at(*a, i, f, n);
+      const toml::table& t = r.table_at(*a, i, f);
       r.only_keys(t, f, {"mass", "at"});
       b.masses.push_back(
           {r.expression(t.get("mass"), f + ".mass", &t), r.vector3(t.get("at"), f + ".at", &t)});
@@ -121,10 +121,10 @@ BodySpec read_body(const Reader& r, const toml::table& body) {
   }
   if (const toml::node* n = body.get("shapes")) {
     const toml::array* a = n->as_array();
-    if (a == nullptr) r.fail(n, "body.shapes", "expected an array of shape tables");
+    if (a == nullptr) r.wrong(n, "body.shapes", "an array of shape tables");
     for (std::size_t i = 0; i < a->size(); ++i) {
       const std::string f = "body.shapes[" + std::to_string(i) + "]";
-      const toml::table& t = r.table_at(*a, i, f, n);
+      const toml::table& t = r.table_at(*a, i, f);
       r.only_keys(t, f, {"shape", "mass", "sizes", "center"});
       ShapeSpec s;
       s.shape = r.string(t, "shape", f + ".");
@@ -139,8 +139,7 @@ BodySpec read_body(const Reader& r, const toml::table& body) {
   }
   if (const toml::node* n = body.get("tensor")) {
     const toml::array* a = n->as_array();
-    if (a == nullptr || a->size() != 3)
-      r.fail(n, "body.tensor", "expected 3 rows of 3 expressions");
+    if (a == nullptr || a->size() != 3) r.wrong(n, "body.tensor", "3 rows of 3 expressions");
     std::array<std::array<std::string, 3>, 3> rows;
     for (std::size_t i = 0; i < 3; ++i) {
       rows[i] = r.vector3(a->get(i), "body.tensor[" + std::to_string(i) + "]", n);
@@ -162,7 +161,7 @@ std::vector<Parameter> read_parameters(const Reader& r, const toml::table& root)
   std::set<std::string> names;
   for (std::size_t i = 0; i < params.size(); ++i) {
     const std::string f = "parameters[" + std::to_string(i) + "]";
-    p.parameters.push_back(read_parameter(r, r.table_at(params, i, f, &root), f));
+    p.parameters.push_back(read_parameter(r, r.table_at(params, i, f), f));
     if (!names.insert(p.parameters.back().name).second) {
       r.fail(params.get(i), f + ".name",
              "parameter '" + p.parameters.back().name + "' declared twice");

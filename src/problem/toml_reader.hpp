@@ -36,6 +36,29 @@ class Reader {
     throw InputError(where + ": " + named + (said ? what.substr(named.size()) : what));
   }
 
+  // A value of the wrong kind: "expected WHAT, got " the value as written (a number, a string
+  // in quotes) or its kind (an array of 2, a table).
+  [[noreturn]] void wrong(const toml::node* node, const std::string& field,
+                          const std::string& what) const {
+    fail(node, field, "expected " + what + ", got " + described(node));
+  }
+
+  static std::string described(const toml::node* node) {
+    if (node == nullptr) return "nothing";
+    if (node->is_string()) return "\"" + printable(*node->value<std::string>(), 40) + "\"";
+    if (node->is_integer()) return std::to_string(*node->value<int64_t>());
+    if (node->is_floating_point()) {
+      char buf[32];
+      const auto r = std::to_chars(buf, buf + sizeof buf, *node->value<double>());
+      return std::string(buf, r.ptr);
+    }
+    if (node->is_boolean()) return *node->value<bool>() ? "true" : "false";
+    if (const toml::array* a = node->as_array())
+      return a->empty() ? "an empty array" : "an array of " + std::to_string(a->size());
+    if (node->is_table()) return "a table";
+    return "a date or time";
+  }
+
   void only_keys(const toml::table& t, const std::string& field,
                  const std::set<std::string>& allowed) const {
     for (auto&& [key, node] : t) {
@@ -67,7 +90,7 @@ class Reader {
       return fallback;
     }
     if (n->is_string()) return text(n, field + key);
-    fail(n, field + key, "expected a string");
+    wrong(n, field + key, "a string");
   }
 
   // Text shown to students (a title, a question, a statement): where required, a blank one is
@@ -101,14 +124,14 @@ class Reader {
       auto r = std::to_chars(buf, buf + sizeof buf, *n->value<double>());
       return std::string(buf, r.ptr);
     }
-    fail(n, field, "expected an expression (a string such as \"2*m\") or a number");
+    wrong(n, field, "an expression (a string such as \"2*m\") or a number");
   }
 
   std::array<std::string, 3> vector3(const toml::node* n, const std::string& field,
                                      const toml::node* parent) const {
     if (n == nullptr) fail(parent, field, "missing");
     const toml::array* a = n->as_array();
-    if (a == nullptr || a->size() != 3) fail(n, field, "expected an array of 3 expressions");
+    if (a == nullptr || a->size() != 3) wrong(n, field, "an array of 3 expressions");
     std::array<std::string, 3> out;
     for (std::size_t i = 0; i < 3; ++i) {
       out[i] = expression(a->get(i), field + "[" + std::to_string(i) + "]", n);
@@ -116,10 +139,9 @@ class Reader {
     return out;
   }
 
-  const toml::table& table_at(const toml::array& a, std::size_t i, const std::string& field,
-                              const toml::node* parent) const {
+  const toml::table& table_at(const toml::array& a, std::size_t i, const std::string& field) const {
     const toml::table* t = a.get(i)->as_table();
-    if (t == nullptr) fail(parent, field, "expected a table");
+    if (t == nullptr) wrong(a.get(i), field, "a table");
     return *t;
   }
 
@@ -128,7 +150,7 @@ class Reader {
     const toml::node* n = t.get(key);
     if (n == nullptr) fail(&t, field, "missing");
     const toml::array* a = n->as_array();
-    if (a == nullptr) fail(n, field, "expected an array");
+    if (a == nullptr) wrong(n, field, "an array");
     return *a;
   }
 

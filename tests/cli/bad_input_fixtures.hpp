@@ -49,11 +49,18 @@ inline std::map<std::string, std::string>& fixture_files() {
   return files;
 }
 
+// Keeps a fixture's content under its path. Two rows that gave one name to two contents would
+// both run the last one: refused, so that each row tests what it says.
+inline std::string keep_fixture(const std::string& path, const std::string& content) {
+  const auto [at, added] = fixture_files().emplace(path, content);
+  if (!added && at->second != content)
+    throw std::logic_error("test setup: the fixture name of " + path + " is used twice");
+  return path;
+}
+
 // A problem or scene file for a row: its path, the content kept until the row runs.
 inline std::string file(const std::string& name, const std::string& content) {
-  const std::string path = (scratch_dir() / "bad" / (name + ".toml")).string();
-  fixture_files()[path] = content;
-  return path;
+  return keep_fixture((scratch_dir() / "bad" / (name + ".toml")).string(), content);
 }
 
 // Writes the fixture files that `args` name (as an argument or inside one).
@@ -177,15 +184,11 @@ inline std::string scene_with(const std::string& from, const std::string& to) {
 
 // Any other file a row names (an answers file): its path, the content kept until the row runs.
 inline std::string text_file(const std::string& name, const std::string& content) {
-  const std::string path = (scratch_dir() / "bad" / name).string();
-  fixture_files()[path] = content;
-  return path;
+  return keep_fixture((scratch_dir() / "bad" / name).string(), content);
 }
 
 inline std::string existing_file() {
-  const std::string path = (scratch_dir() / "bad" / "existing.csv").string();
-  fixture_files()[path] = "keep me\n";
-  return path;
+  return keep_fixture((scratch_dir() / "bad" / "existing.csv").string(), "keep me\n");
 }
 
 }  // namespace wobble::test

@@ -252,7 +252,9 @@ TEST_CASE("an answer's named mistakes are read as written and refused with their
   CHECK_THAT(load_error(with("3")),
              Contains("bad.toml:25: parts[0].answers[1].mistakes: expected a list"));
   CHECK_THAT(load_error(with("[3]")), Contains("parts[0].answers[1].mistakes[0]: expected a "
-                                               "{ value, what, remedy } table"));
+                                               "{ value, what, remedy } table, got 3"));
+  CHECK_THAT(load_error(with("\"1\"")),
+             Contains("mistakes: expected a list of { value, what, remedy } tables, got \"1\""));
   CHECK_THAT(load_error(with("[{ value = \"1\", what = \"x\" }]")),
              Contains("parts[0].answers[1].mistakes[0].remedy: missing"));
   CHECK_THAT(load_error(with("[{ value = \"1\", what = \" \", remedy = \"y\" }]")),
