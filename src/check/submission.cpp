@@ -1,8 +1,10 @@
 #include "check/submission.hpp"
 
 #include <fmt/format.h>
+#include <iconv.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <sstream>
 
@@ -61,11 +63,61 @@ std::optional<Line> read_line(const std::string& raw, int number) {
   return Line{number, without_part_mark(text), ""};
 }
 
-std::vector<Line> read_lines(const std::string& text) {
-  if (text.size() > kMaxSubmissionBytes) {
-    throw InputError(fmt::format("--answers: the submission has {} bytes; at most {} are read",
-                                 text.size(), kMaxSubmissionBytes));
+// UTF-16 with its byte-order mark (what Windows' Notepad saves as "Unicode") as UTF-8, by the
+// C library's iconv.
+std::string utf8_of_utf16(const std::string& bytes) {
+  const iconv_t cd = iconv_open("UTF-8", "UTF-16");  // the mark says which byte order
+  if (cd == reinterpret_cast<iconv_t>(static_cast<std::intptr_t>(-1)))
+    throw InputError(
+        "--answers: the file is UTF-16, which this system cannot read; save it as UTF-8");
+  // A 2-byte unit becomes at most 3 bytes, a 4-byte pair 4.
+  std::string out(bytes.size() / 2 * 3 + 4, '\0');
+  char* in = const_cast<char*>(bytes.data());  // iconv's signature; it reads, never writes
+  char* at = out.data();
+  std::size_t in_left = bytes.size(), out_left = out.size();
+  const std::size_t done = iconv(cd, &in, &in_left, &at, &out_left);
+  iconv_close(cd);
+  if (done == static_cast<std::size_t>(-1)) {
+    throw InputError(fmt::format(
+        "--answers: the file starts as UTF-16 but breaks off at byte {}; save it as UTF-8",
+        bytes.size() - in_left));
   }
+  out.resize(out.size() - out_left);
+  return out;
+}
+
+// A submission's text as the lines are read: UTF-8 without a byte-order mark, lines ended by
+// '\n'. Students hand in what their editors save: UTF-16 (Notepad's "Unicode"), a UTF-8 mark,
+// Windows' CR LF or the old Mac's lone CR. A NUL byte left after that is no text.
+std::string submission_lines_text(const std::string& bytes) {
+  const bool utf16 = bytes.size() >= 2 && ((bytes[0] == '\xff' && bytes[1] == '\xfe') ||
+                                           (bytes[0] == '\xfe' && bytes[1] == '\xff'));
+  std::string text = utf16 ? utf8_of_utf16(bytes) : bytes;
+  if (text.compare(0, 3, "\xef\xbb\xbf") == 0) text.erase(0, 3);
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+    throw InputError(fmt::format(
+        "--answers: the file holds a NUL byte (at byte {}): it is not text, or UTF-16 without "
+        "its mark; save it as UTF-8",
+        nul));
+  }
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\r') {
+      out += text[i];
+    } else if (i + 1 == text.size() || text[i + 1] != '\n') {
+      out += '\n';  // CR LF is one end of line, read at its LF; a lone CR is one too
+    }
+  }
+  return out;
+}
+
+std::vector<Line> read_lines(const std::string& bytes) {
+  if (bytes.size() > kMaxSubmissionBytes) {
+    throw InputError(fmt::format("--answers: the submission has {} bytes; at most {} are read",
+                                 bytes.size(), kMaxSubmissionBytes));
+  }
+  const std::string text = submission_lines_text(bytes);
   std::vector<Line> out;
   std::istringstream in(text);
   std::string raw;

@@ -1218,6 +1218,53 @@ TEST_CASE("a submission's comments, part headings and part marks name no answer"
   REQUIRE_THAT(percent.answers.at(0).verdict.line, Catch::StartsWith("unreadable: I0"));
 }
 
+namespace {
+// `text` (ASCII) as UTF-16 with its byte-order mark, little- or big-endian.
+std::string utf16(const std::string& text, bool little_endian) {
+  std::string out = little_endian ? "\xff\xfe" : "\xfe\xff";
+  for (const char c : text) {
+    out += little_endian ? std::string{c, '\0'} : std::string{'\0', c};
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("a submission is read as an editor saved it: UTF-16, a UTF-8 mark, CR LF or lone CR") {
+  const Fixture plate("flying-plate");
+  const std::string i0 = fmt::format("{:.6g}", plate.answer("I0").value.data[0]);
+  const std::string lines = "I0 = " + i0 + " kg m^2\nangle_L_e3 = 3 rad\n";
+  const auto crlf = [](std::string t) {
+    for (std::size_t at = t.find('\n'); at != std::string::npos; at = t.find('\n', at + 2))
+      t.replace(at, 1, "\r\n");
+    return t;
+  };
+  std::string lone_cr = lines;
+  std::replace(lone_cr.begin(), lone_cr.end(), '\n', '\r');
+  for (const std::string& text : {lines, utf16(crlf(lines), true), utf16(lines, false),
+                                  "\xef\xbb\xbf" + crlf(lines), lone_cr}) {
+    const SubmissionResult r = judge_submission({plate.key, plate.table, plate.values}, text, {});
+    INFO(fmt::format("{}", fmt::join(r.problems, "; ")));
+    REQUIRE(r.problems.empty());
+    REQUIRE(submitted(r, "I0").verdict.correct);
+    REQUIRE(submitted(r, "angle_L_e3").answered);
+    REQUIRE_FALSE(submitted(r, "angle_L_e3").verdict.correct);
+  }
+  // UTF-16 without its mark, and a file cut in the middle of a character: said, not misread.
+  const auto refusal = [&](const std::string& text) -> std::string {
+    try {
+      (void)judge_submission({plate.key, plate.table, plate.values}, text, {});
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK_THAT(refusal(utf16(lines, true).substr(2)),
+             Catch::Equals("--answers: the file holds a NUL byte (at byte 1): it is not text, or "
+                           "UTF-16 without its mark; save it as UTF-8"));
+  CHECK_THAT(refusal(utf16(lines, true) + "\x3d"),
+             Catch::StartsWith("--answers: the file starts as UTF-16 but breaks off at byte "));
+}
+
 TEST_CASE("a submission's matrix over several lines, as NumPy prints one, is one answer") {
   const Fixture box("box-corner");
   const auto& m = box.answer("I_corner").value.data;  // kg m^2, row-major
