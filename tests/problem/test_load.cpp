@@ -178,6 +178,10 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
   using Catch::Contains;
   CHECK_THAT(load_error("id = \"x\"\ntitle = \n"),
              Contains("bad.toml:2") && Contains("malformed TOML"));
+  // Notepad's "Unicode" (UTF-16 with its mark) is said as such, not as an invalid UTF-8 byte.
+  CHECK_THAT(load_error(std::string("\xff\xfei\0d\0", 6)),
+             Contains("bad.toml: the problem file is UTF-16 (its first bytes say so); TOML is "
+                      "UTF-8: save it as UTF-8"));
   CHECK_THAT(load_error(replaced(kGood, "title", "titel")),
              Contains("titel: unknown key") && Contains("expected one of"));
   CHECK_THAT(load_error(replaced(kGood, "solver = \"inertia\"\n", "")),
