@@ -219,7 +219,15 @@ void check_expression_cost(const std::string& text, const std::string& field,
   for (std::size_t i = 0; i < text.size(); ++i) {
     const auto u = static_cast<unsigned char>(text[i]);
     if (u < 0x20 && text[i] != '\t') s.fail("it contains " + character_name(text, i));
-    if (u > 0x7e) s.fail("it contains " + character_name(text, i) + ", which no expression uses");
+    if (u > 0x7e) {
+      // A byte that is no UTF-8 came from a terminal or file in another encoding (Latin-1's °
+      // is the byte 0xB0): what to change is the encoding, not the expression.
+      const std::string name = character_name(text, i);
+      s.fail("it contains " + name +
+             (name.starts_with("the byte ")
+                  ? " (a terminal or file in another encoding, as Latin-1? set it to UTF-8)"
+                  : ", which no expression uses"));
+    }
   }
   // Names: a function only from kFunctions, anything else a declared symbol (GiNaC would also
   // accept its constants Catalan, Euler and the imaginary unit I).

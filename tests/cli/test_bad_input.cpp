@@ -417,7 +417,12 @@ std::vector<Row> catalog() {
       {"a byte that is no UTF-8",
        {"check", "flying-plate", "a", "--name", "I0", "--answer", "m*R^2/4\xff"},
        2,
-       {"the byte 0xFF, which is no UTF-8"}},
+       {"the byte 0xFF, which is no UTF-8 (a terminal or file in another encoding, as Latin-1? "
+        "set it to UTF-8)"}},
+      {"a degree sign in Latin-1",
+       {"check", "heavy-top", "theta_min", "30\xb0"},
+       2,
+       {"the byte 0xB0, which is no UTF-8 (a terminal or file in another encoding"}},
       {"LaTeX with a brace left open",
        {"check", "flying-plate", "a", "--name", "I0", "--answer", "\\frac{m R^2}{4"},
        2,
