@@ -99,6 +99,11 @@ void read_effects(const Reader& r, const toml::table& root, Scene& s) {
       s.free_flight = ff;
     } else {
       r.only_keys(*e, f, {"value", "frame", "brake"});
+      // Fixed in the body or in space: two motions, and neither is the obvious default.
+      if (e->get("frame") == nullptr)
+        r.fail(e, f + ".frame",
+               "missing: say whether the torque turns with the body (frame = \"body\") or "
+               "stays fixed in space (frame = \"space\")");
       s.torque = TorqueSpec{r.vector3(e->get("value"), f + ".value", e),
                             read_frame(r, *e, "frame", f + "."), false};
       if (const toml::node* b = e->get("brake")) {
