@@ -292,6 +292,13 @@ Unit parse_unit(const std::string& text, const std::string& field) {
       name = "sidereal day";
       j = end;
     }
+    // "rads^-1", "rads⁻¹": rad s^-1, as written without its space; the plural "rads" takes no
+    // power (1/rad is meant by no one who writes it so).
+    if (name == "rads" && j < text.size() &&
+        (text[j] == '^' || text[j] == '-' || std::isdigit(static_cast<unsigned char>(text[j])))) {
+      name = "rad";
+      --j;  // the s, with its power, is the next unit
+    }
     if (name == "per") {  // "radians per second", "metres per second per second"
       if (!any && !denominator) {  // "4 per second", as "4/s" is said: a reciprocal unit
         denominator = true;

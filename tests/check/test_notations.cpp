@@ -100,6 +100,20 @@ std::vector<std::string> diagonal_of(const Fixture& fx, const std::string& name,
 }
 }  // namespace
 
+TEST_CASE("the plural rads with a power after it is rad s to that power, written without a space") {
+  const std::array<int, 3> per_second{0, 0, -1};
+  for (const std::string unit : {"rads^-1", "rads^(-1)", "rads-1", "rads^-2"}) {
+    INFO(unit);
+    const Unit u = parse_unit(unit, "u");
+    REQUIRE(u.angle);
+    REQUIRE(u.dim == (unit == "rads^-2" ? std::array<int, 3>{0, 0, -2} : per_second));
+  }
+  // Alone it is radians, as "radians" is.
+  const Unit plural = parse_unit("rads", "u");
+  REQUIRE(plural.angle);
+  REQUIRE(plural.dim == (std::array<int, 3>{0, 0, 0}));
+}
+
 TEST_CASE("units with SI prefixes") {
   const double eps = std::numeric_limits<double>::epsilon();
   for (const auto& [unit, to_si] :
