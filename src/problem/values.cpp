@@ -147,6 +147,13 @@ std::pair<std::string, std::string> typed_value_parts(const std::string& text) {
   return {value, unit.empty() ? unit : parse_unit(unit, "").text};
 }
 
+std::string degrees_meant_hint(const std::string& typed, bool degrees_taken,
+                               const std::string& written) {
+  char* end = nullptr;
+  const bool bare = !typed.empty() && (std::strtod(typed.c_str(), &end), *end == '\0');
+  return bare && degrees_taken ? "; a bare number is in radians: for degrees write " + written : "";
+}
+
 double parse_parameter_value(const Parameter& p, const std::string& text,
                              const std::string& field) {
   // As a key prints it: "θ0 = 30° = 0.5235987756 rad", "g = 9.81 m/s²", "π/6".
@@ -176,16 +183,12 @@ double parse_parameter_value(const Parameter& p, const std::string& text,
     const std::string shown = typed.find('=') != std::string::npos  ? typed
                               : typed == si || typed == shortest(v) ? si
                                                                     : typed + " = " + si;
-    // "theta0=30" for 30 degrees: a bare number is in radians.
-    char* end = nullptr;
-    const bool bare = !typed.empty() && (std::strtod(typed.c_str(), &end), *end == '\0');
-    const bool degrees_meant = p.is_angle() && bare && p.range.contains(v * M_PI / 180.0);
-    throw InputError(
-        field + ": " + p.name + " = " + shown + " is outside its range " + p.range.text +
-        (degrees_meant
-             ? "; a bare number is in radians: for degrees write " +
-                   (field.starts_with("--") ? p.name + "=" + typed + "deg" : "\"" + typed + "deg\"")
-             : ""));
+    // "theta0=30" for 30 degrees.
+    throw InputError(field + ": " + p.name + " = " + shown + " is outside its range " +
+                     p.range.text +
+                     degrees_meant_hint(typed, p.is_angle() && p.range.contains(v * M_PI / 180.0),
+                                        field.starts_with("--") ? p.name + "=" + typed + "deg"
+                                                                : "\"" + typed + "deg\""));
   }
   return v;
 }

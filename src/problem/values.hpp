@@ -21,6 +21,12 @@ namespace wobble {
 /// @throws InputError naming the field and the text: not a number, not finite, out of range.
 double parse_parameter_value(const Parameter& p, const std::string& text, const std::string& field);
 
+/// Where an angle typed as `typed` is refused and `typed` is a number alone ("30", not "30 rad" or
+/// "pi/6"), which reads as radians, while its degrees would be taken: "; a bare number is in
+/// radians: for degrees write " and `written` ("theta0=30deg", "\"30deg\""); "" otherwise.
+std::string degrees_meant_hint(const std::string& typed, bool degrees_taken,
+                               const std::string& written);
+
 /// A value as typed, split for a handout to show it as given: its text and the unit it carries,
 /// both in ASCII ("5 cm" and "5 [cm]" -> {"5", "cm"}, "30°" -> {"30", "deg"}, "0.05" ->
 /// {"0.05", ""}); of a key's two sides, the first.

@@ -50,12 +50,9 @@ constexpr double kUnitTolerance = 1e-12;
 void refuse_more_than_a_turn(const std::string& text, double angle_rad, const std::string& field) {
   constexpr double kTurn = 2.0 * M_PI * (1.0 + 1e-12);  // 2 pi as written, rounded, is a turn
   if (std::abs(angle_rad) <= kTurn) return;
-  char* end = nullptr;
-  const bool bare = !text.empty() && (std::strtod(text.c_str(), &end), *end == '\0');
-  throw InputError(
-      fmt::format("{}: \"{}\" is {:.10g} rad, more than a turn{}", field, text, angle_rad,
-                  bare ? "; a bare number is in radians: for degrees write \"" + text + "deg\""
-                       : "; give the angle within one"));
+  const std::string hint = degrees_meant_hint(text, true, "\"" + text + "deg\"");
+  throw InputError(fmt::format("{}: \"{}\" is {:.10g} rad, more than a turn{}", field, text,
+                               angle_rad, hint.empty() ? "; give the angle within one" : hint));
 }
 
 Quat initial_orientation(const Scene& scene, const Eval& ev) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/heavy_top.hpp"
+#include "problem/values.hpp"
 #include "solvers/body_requirements.hpp"
 #include "solvers/exact_answer.hpp"
 #include "solvers/inertia_body.hpp"
@@ -94,7 +95,10 @@ Top::Top(const Problem& p, const sym::Values& values) : BodyContext(p, values) {
     written_in.push_back("θ0 = 90°");
   }
   if (!(start.theta >= 0.0 && start.theta <= M_PI)) {
-    throw InputError(fmt::format("motion.theta0: {:.10g} rad must lie in [0, pi]", start.theta));
+    const std::string& typed = problem.motion->at("theta0");
+    throw InputError(fmt::format(
+        "motion.theta0: {:.10g} rad must lie in [0, pi]{}", start.theta,
+        degrees_meant_hint(typed, start.theta <= 180.0, "theta0 = \"" + typed + "deg\"")));
   }
   constants = heavy_top_constants(numeric, start);
   const ex s = GiNaC::sin(theta), c = GiNaC::cos(theta);

@@ -314,6 +314,12 @@ std::vector<Row> catalog() {
                                                      "theta = \"theta + pi\""))},
        2,
        {"motion.theta", "must lie in [0, pi]"}},
+      {"heavy top: a tilt in degrees written as a bare number",
+       {"solve", file("thetadegrees",
+                      repo_problem_with("heavy-top", "theta0 = \"theta0\"", "theta0 = \"30\""))},
+       2,
+       {"motion.theta0: 30 rad must lie in [0, pi]; a bare number is in radians: for degrees "
+        "write theta0 = \"30deg\""}},
       {"euler angles: body not a symmetric top",
        {"solve", file("eulerbody", repo_problem_with("euler-angles", "[\"0\", \"I1\", \"0\"]",
                                                      "[\"0\", \"I3\", \"0\"]"))},
