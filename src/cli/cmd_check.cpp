@@ -55,8 +55,10 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
   app.add_option("--variant", opt.variant, "Your variant's values (as on your handout)")
       ->transform(whole_number());
   app.add_option("--tolerance", opt.tolerance,
-                 fmt::format("Relative tolerance for numbers (default: the problem's, else {:g})",
-                             check::kDefaultRelativeTolerance));
+                 fmt::format("Relative tolerance for numbers, 0.02 or 2% (default: the "
+                             "problem's, else {:g})",
+                             check::kDefaultRelativeTolerance))
+      ->transform(fraction_or_percent());
   app.add_option("--sigfigs", opt.sigfigs, "Accept a number that rounds correctly to N digits");
 }
 

@@ -31,7 +31,9 @@ void add_common(CLI::App& sub, ExportOptions& opt, bool several) {
       ->required();
   sub.add_flag("--force", opt.force, "Replace files that exist");
   sub.add_option("--tolerance", opt.tolerance,
-                 "Relative tolerance of every answer (default: the problem's, else 0.01)");
+                 "Relative tolerance of every answer, 0.02 or 2% (default: the problem's, else "
+                 "0.01)")
+      ->transform(fraction_or_percent());
 }
 
 void add_variants(CLI::App& sub, ExportOptions& opt, const std::string& fallback) {

@@ -31,6 +31,9 @@ std::pair<long, long> variant_range(const std::string& text, const std::string& 
 /// --max-evaluations takes 5e7). A fraction, or more than 2^53, is refused naming the text.
 /// For CLI11's transform(): it rewrites an exact whole number in decimal digits.
 CLI::Validator whole_number();
+/// A relative tolerance's text as a fraction however written: "0.02", or "2%" as it is said.
+/// For CLI11's transform(): it rewrites a percentage as its fraction's shortest text.
+CLI::Validator fraction_or_percent();
 /// "--t-end 2 min": where the first of the `extras` the command line refused is a word of such an
 /// option's value that the shell parted at a space, the line saying so with the command to type
 /// (`args` as typed); "" otherwise.

@@ -76,7 +76,9 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
       a.name = r.string(*at, "name", af + ".");
       a.quantity = r.string(*at, "quantity", af + ".", false, a.name);
       if (const toml::node* tn = at->get("tolerance")) {
-        const auto v = tn->value<double>();
+        // 0.02, or "2%" as a tolerance is said.
+        const auto v =
+            tn->is_string() ? percent_as_fraction(*tn->value<std::string>()) : tn->value<double>();
         if (!v || !(*v > 0.0 && *v < 1.0))
           r.wrong(tn, af + ".tolerance", "a relative tolerance between 0 and 1 (0.05 is 5%)");
         if (const std::string why = tolerance_too_fine(*v); !why.empty())

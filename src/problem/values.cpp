@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -145,6 +146,17 @@ std::pair<std::string, std::string> typed_value_parts(const std::string& text) {
   const auto [value, unit] = split_value_unit(trim(t.substr(0, t.find('='))));
   // The unit as the grammar read it: "[cm]" is cm.
   return {value, unit.empty() ? unit : parse_unit(unit, "").text};
+}
+
+std::optional<double> percent_as_fraction(const std::string& text) {
+  const std::string t = trim(text);
+  if (t.size() < 2 || t.back() != '%') return std::nullopt;
+  const std::string number = trim(t.substr(0, t.size() - 1));
+  double value = 0.0;
+  const char* end = number.data() + number.size();
+  const auto [rest, error] = std::from_chars(number.data(), end, value);
+  if (error != std::errc() || rest != end || number.empty()) return std::nullopt;
+  return value / 100.0;
 }
 
 std::string degrees_meant_hint(const std::string& typed, bool degrees_taken,

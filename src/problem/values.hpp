@@ -9,6 +9,7 @@
 /// (they must agree to the printed digits; the first is taken). A unit of another dimension, or
 /// an angle for a pure number, is refused. Every value must be finite and inside the
 /// parameter's range.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,10 @@ double parse_parameter_value(const Parameter& p, const std::string& text, const 
 /// radians: for degrees write " and `written` ("theta0=30deg", "\"30deg\""); "" otherwise.
 std::string degrees_meant_hint(const std::string& typed, bool degrees_taken,
                                const std::string& written);
+
+/// "5%" or "0.5 %" as the fraction it is (0.05, 0.005), as a tolerance is said; nullopt for a
+/// text that is not a number and a percent sign.
+std::optional<double> percent_as_fraction(const std::string& text);
 
 /// A value as typed, split for a handout to show it as given: its text and the unit it carries,
 /// both in ASCII ("5 cm" and "5 [cm]" -> {"5", "cm"}, "30°" -> {"30", "deg"}, "0.05" ->

@@ -255,6 +255,21 @@ TEST_CASE("check: exit 0 for a right answer, 1 for a wrong one with its feedback
               .exit_code == 0);
 }
 
+TEST_CASE("check and export: --tolerance is a fraction or a percentage") {
+  // 118 rad/s is 0.675% below the least spin of the heavy top, 118.801697 rad/s.
+  for (const auto& [tolerance, exit_code] :
+       {std::pair{"1%", 0}, std::pair{"0.01", 0}, std::pair{"0.5 %", 1}, std::pair{"0.005", 1}}) {
+    const RunResult r =
+        run_wobble({"check", "heavy-top", "omega3_min", "118 rad/s", "--tolerance", tolerance});
+    INFO(tolerance << "\n" << r.err);
+    CHECK(r.exit_code == exit_code);
+  }
+  const RunResult wide = run_wobble(
+      {"export", "moodle", "four-masses", "--tolerance", "200%", "--out", "/tmp/never.xml"});
+  CHECK(wide.exit_code == 2);
+  CHECK_THAT(wide.err, Catch::Contains("--tolerance: 2 must be between 0 and 1"));
+}
+
 TEST_CASE(
     "check: a part of several answers without --name, the answer's label, rightness or reading "
     "decides") {

@@ -235,6 +235,25 @@ TEST_CASE("bad files: the message names the file, the line and the field") {
       Contains("cannot be combined"));
 }
 
+TEST_CASE("an answer's tolerance is a fraction or a percentage, as it is said") {
+  using Catch::Contains;
+  const auto with = [](const std::string& tolerance) {
+    return replaced(kGood, "{ name = \"I_about_O\", quantity = \"I\" }",
+                    "{ name = \"I_about_O\", quantity = \"I\", tolerance = " + tolerance + " }");
+  };
+  for (const auto& [written, fraction] :
+       {std::pair{"0.02", 0.02}, std::pair{"\"2%\"", 0.02}, std::pair{"\"0.5 %\"", 0.005}}) {
+    INFO(written);
+    const Problem p = load_problem(test::write_file("load/tolerance.toml", with(written)));
+    REQUIRE(p.parts[0].answers[1].tolerance);
+    CHECK_THAT(*p.parts[0].answers[1].tolerance, Catch::Matchers::WithinULP(fraction, 1));
+  }
+  CHECK_THAT(load_error(with("\"2 percent\"")),
+             Contains("parts[0].answers[1].tolerance: expected a relative tolerance between 0 and "
+                      "1 (0.05 is 5%), got \"2 percent\""));
+  CHECK_THAT(load_error(with("\"200%\"")), Contains("got \"200%\""));
+}
+
 TEST_CASE("an answer's named mistakes are read as written and refused with their field") {
   using Catch::Contains;
   const auto with = [](const std::string& mistakes) {

@@ -150,6 +150,17 @@ TEST_CASE("values: each kind of bad value is named") {
                       Catch::Contains("not a number"));
 }
 
+TEST_CASE("a percentage is the fraction it says") {
+  using Catch::Matchers::WithinULP;
+  REQUIRE(percent_as_fraction("5%"));
+  CHECK_THAT(*percent_as_fraction("5%"), WithinULP(0.05, 1));
+  CHECK_THAT(*percent_as_fraction(" 0.5 % "), WithinULP(0.005, 1));
+  for (const std::string not_one : {"5", "%", "5%%", "abc%", "", "5 %x"}) {
+    INFO(not_one);
+    CHECK_FALSE(percent_as_fraction(not_one));
+  }
+}
+
 TEST_CASE("intervals") {
   const Interval i = parse_interval("(0, pi]", "r");
   REQUIRE_FALSE(i.contains(0.0));
