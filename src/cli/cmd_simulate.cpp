@@ -61,19 +61,16 @@ void refuse_table_without_a_right_digit(const SimulateOptions& opt, const SceneS
                                         const MethodChoice& choice,
                                         const SimulationResult& result) {
   if (!opt.out.empty() || printed_digits(setup, result) >= 1) return;
-  std::string field;
-  if (choice.step_s > 0.0 && setup.step) {
-    field = fmt::format("run.step: {:.6g} s", *setup.step);
-  } else {
-    field =
-        fmt::format("{}: {:.0e}", opt.tolerance ? "--tolerance" : "run.tolerance", setup.tolerance);
-  }
+  const bool stepped = choice.step_s > 0.0 && setup.step;  // else the tolerance set the step
+  const std::string field =
+      stepped ? fmt::format("run.step: {:.6g} s", *setup.step)
+              : fmt::format("{}: {:.0e}", opt.tolerance ? "--tolerance" : "run.tolerance",
+                            setup.tolerance);
   throw InputError(fmt::format(
       "{} leaves not one digit of the table right: the samples' estimated error is {:.2g} of "
       "each column's largest value (against {}); {} it, or write the samples as computed with "
       "--out",
-      field, result.error_estimate, result.error_reference,
-      choice.step_s > 0.0 && setup.step ? "shorten" : "tighten"));
+      field, result.error_estimate, result.error_reference, stepped ? "shorten" : "tighten"));
 }
 }  // namespace
 
