@@ -90,9 +90,7 @@ std::string utf8_of_utf16(const std::string& bytes) {
 // '\n'. Students hand in what their editors save: UTF-16 (Notepad's "Unicode"), a UTF-8 mark,
 // Windows' CR LF or the old Mac's lone CR. A NUL byte left after that is no text.
 std::string submission_lines_text(const std::string& bytes) {
-  const bool utf16 = bytes.size() >= 2 && ((bytes[0] == '\xff' && bytes[1] == '\xfe') ||
-                                           (bytes[0] == '\xfe' && bytes[1] == '\xff'));
-  std::string text = utf16 ? utf8_of_utf16(bytes) : bytes;
+  std::string text = starts_as_utf16(bytes) ? utf8_of_utf16(bytes) : bytes;
   if (text.compare(0, 3, "\xef\xbb\xbf") == 0) text.erase(0, 3);
   if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
     throw InputError(fmt::format(

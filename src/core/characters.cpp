@@ -55,6 +55,11 @@ std::size_t columns(const std::string& text) {
   return n;
 }
 
+bool starts_as_utf16(const std::string& text) {
+  return text.size() >= 2 &&
+         ((text[0] == '\xff' && text[1] == '\xfe') || (text[0] == '\xfe' && text[1] == '\xff'));
+}
+
 bool is_letter(char c) {
   return std::isalpha(static_cast<unsigned char>(c)) != 0;
 }

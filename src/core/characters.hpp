@@ -23,6 +23,10 @@ bool is_digit(char c);
 /// `s` with its ASCII letters in lower case (a command or a name typed in any case).
 std::string ascii_lower(std::string s);
 
+/// Whether `text` starts with UTF-16's byte-order mark, either way round: what Windows' Notepad
+/// saves as "Unicode" where UTF-8 is read.
+bool starts_as_utf16(const std::string& text);
+
 /// Whether a control character (C0, DEL or C1) starts at byte i: what a terminal may obey.
 bool is_control_at(const std::string& text, std::size_t i);
 

@@ -245,8 +245,7 @@ toml::table parse_toml_text(const std::string& text, const std::filesystem::path
   }
   // What Windows' Notepad saves as "Unicode": TOML is UTF-8, and toml++ would say only that the
   // first line holds an invalid UTF-8 sequence.
-  if (text.size() >= 2 &&
-      ((text[0] == '\xff' && text[1] == '\xfe') || (text[0] == '\xfe' && text[1] == '\xff'))) {
+  if (starts_as_utf16(text)) {
     throw InputError(name.string() + ": the " + what +
                      " file is UTF-16 (its first bytes say so); TOML is UTF-8: save it as UTF-8");
   }

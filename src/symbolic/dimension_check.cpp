@@ -247,7 +247,8 @@ void refuse_other_dimension(const SymbolTable& table, const GiNaC::ex& e, const 
   if (found && *found != wanted.dim)
     probe.refuse(text,
                  "is " + dimension_text(*found) + " by its parameters' units; it must be " + must);
-  if (found || !GiNaC::is_a<GiNaC::add>(e)) return;  // mixed: not told apart from m + 0.05
+  // Mixed: not told apart from m + 0.05. The terms named are the filled sum's, as judged.
+  if (found || !GiNaC::is_a<GiNaC::add>(filled)) return;
   for (const GiNaC::ex& term : filled) {
     const auto term_found = probe.dimension_of(term);
     if (!term_found || *term_found == wanted.dim) continue;
