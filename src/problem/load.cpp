@@ -81,7 +81,8 @@ PartSpec read_part(const Reader& r, const toml::table& t, const std::string& f) 
             tn->is_string() ? percent_as_fraction(*tn->value<std::string>()) : tn->value<double>();
         if (!v || !(*v > 0.0 && *v < 1.0))
           r.wrong(tn, af + ".tolerance", "a relative tolerance between 0 and 1 (0.05 is 5%)");
-        if (const std::string why = tolerance_too_fine(*v); !why.empty())
+        const std::string typed = tn->is_string() ? "\"" + *tn->value<std::string>() + "\"" : "";
+        if (const std::string why = tolerance_too_fine(*v, typed); !why.empty())
           r.fail(tn, af + ".tolerance", why);
         a.tolerance = *v;
       }

@@ -58,12 +58,12 @@ const Parameter& Problem::parameter(const std::string& name) const {
   throw InputError("unknown parameter '" + name + "' of " + id + " (known: " + known + ")");
 }
 
-std::string tolerance_too_fine(double tolerance) {
+std::string tolerance_too_fine(double tolerance, const std::string& shown) {
   if (tolerance >= kMinRelativeTolerance) return "";
   return fmt::format(
-      "{:g} is below {:g}, where the key's own answers, printed to ten significant digits, would "
+      "{} is below {:g}, where the key's own answers, printed to ten significant digits, would "
       "be judged wrong",
-      tolerance, kMinRelativeTolerance);
+      shown.empty() ? fmt::format("{:g}", tolerance) : shown, kMinRelativeTolerance);
 }
 
 sym::SymbolTable Problem::symbol_table() const {

@@ -81,7 +81,8 @@ struct MistakeSpec {
 /// wrong.
 inline constexpr double kMinRelativeTolerance = 1e-9;
 /// Why a relative tolerance is too fine to judge with (below kMinRelativeTolerance); "" if not.
-std::string tolerance_too_fine(double tolerance);
+/// The reason starts with `shown`, the tolerance as typed ("'1e-10%'"), else the number.
+std::string tolerance_too_fine(double tolerance, const std::string& shown = "");
 
 struct AnswerSpec {
   std::string name;                 ///< the name in the key (JSON)

@@ -267,7 +267,13 @@ TEST_CASE("check and export: --tolerance is a fraction or a percentage") {
   const RunResult wide = run_wobble(
       {"export", "moodle", "four-masses", "--tolerance", "200%", "--out", "/tmp/never.xml"});
   CHECK(wide.exit_code == 2);
-  CHECK_THAT(wide.err, Catch::Contains("--tolerance: 2 must be between 0 and 1"));
+  // Named as typed, not as the fraction it was read as.
+  CHECK_THAT(wide.err, Catch::Contains("--tolerance: '200%' must be between 0% and 100%"));
+  CHECK_THAT(wide.err, !Catch::Contains(" 2 "));
+  const RunResult fine =
+      run_wobble({"check", "heavy-top", "omega3_min", "118 rad/s", "--tolerance", "0.00000001%"});
+  CHECK(fine.exit_code == 2);
+  CHECK_THAT(fine.err, Catch::Contains("--tolerance: '0.00000001%' (1e-10) is below"));
 }
 
 TEST_CASE(
