@@ -15,6 +15,7 @@
 #include "check/absent_answer.hpp"
 #include "check/answer_reading.hpp"
 #include "check/answer_shape.hpp"
+#include "check/answer_sides.hpp"
 #include "check/axes_judge.hpp"
 #include "check/brackets.hpp"
 #include "check/diagnosis.hpp"
@@ -44,17 +45,21 @@ namespace wobble::check {
 
 using detail::answer_name_hint;
 using detail::answer_referenced;
+using detail::approximations_as_equal;
 using detail::check_shape;
 using detail::convention_named;
 using detail::defined_named;
 using detail::defined_spelling;
 using detail::entry_named;
+using detail::function_of_answer;
 using detail::imaginary_hint;
 using detail::in_plane_of_two;
+using detail::is_one_name;
 using detail::Judge;
 using detail::judge_symbolic;
 using detail::kField;
 using detail::latex_unknown_symbol;
+using detail::listed_layout;
 using detail::misreading_hint;
 using detail::moments_on_diagonal;
 using detail::name_refused;
@@ -66,6 +71,9 @@ using detail::quoted_after;
 using detail::referable_answer;
 using detail::Referenced;
 using detail::refused_beside_units;
+using detail::root_of_squared_label;
+using detail::sides;
+using detail::SquaredLabel;
 using detail::symbol_described;
 using detail::undefined_name;
 using detail::unit_spelling_symbols;
@@ -317,160 +325,6 @@ std::string name_in_key(const Key& key, const std::string& written) {
 namespace {
 Verdict judge_text(const Context& ctx, const Answer& a, const std::string& text,
                    const Options& options);
-
-// The sides of an answer as a key line shows it, "I0 = m·R²/4 = 0.00072 kg m²": split at each
-// '=' outside brackets, the answer's own name (or nothing) on the left dropped.
-std::vector<std::string> sides(const std::string& text, const std::string& name) {
-  std::vector<std::string> out;
-  int depth = 0;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '(' || c == '[' || c == '{') ++depth;
-    if (c == ')' || c == ']' || c == '}') --depth;
-    if (c == '=' && depth == 0) {
-      out.push_back(text.substr(start, i - start));
-      start = i + 1;
-    }
-  }
-  out.push_back(text.substr(start));
-  // "       = 0.00072 kg m²": the second line of a text key's answer alone.
-  const bool dropped =
-      trim(out.front()).empty() || name_spelling(out.front()) == name_spelling(name);
-  if (out.size() > 1 && dropped) out.erase(out.begin());
-  return out;
-}
-
-// "cos" for "cos θ_max", "cos(theta_max)" where `a` is the angle theta_max (sin, tan alike),
-// else "": a side that is a function of the answer's own name.
-std::string function_of_answer(const std::string& side, const Answer& a) {
-  if (a.unit != "rad") return "";
-  const std::string s = trim(sym::to_ascii(side));
-  for (const std::string f : {"cos", "sin", "tan"}) {
-    if (s.compare(0, f.size(), f) != 0) continue;
-    std::string rest = trim(s.substr(f.size()));
-    if (wrapped(rest, '(')) rest = rest.substr(1, rest.size() - 2);
-    if (!rest.empty() && std::isalpha(static_cast<unsigned char>(rest[0])) &&
-        name_spelling(rest) == name_spelling(a.name))
-      return f;
-  }
-  return "";
-}
-
-// "≈ 4.995 rad/s", "φ̇ ≈ 4.995 rad/s", "~4.995", "about 4.995": a value given as approximate is
-// judged as given with '=' (every number is judged to a tolerance). A '~' only first: in LaTeX it is a space.
-std::string approximations_as_equal(const std::string& text) {
-  std::string s = trim(text);
-  if (!s.empty() && s[0] == '~') s[0] = '=';
-  // "about 304 days", "approx. 9.13 1/s": the word as the sign, before the value only.
-  for (const std::string word : {"approximately ", "approx. ", "approx ", "about ", "roughly ",
-                                 "around ", "circa ", "ca. "}) {
-    if (ascii_lower(s.substr(0, word.size())) == word) {
-      s = "= " + trim(s.substr(word.size()));
-      break;
-    }
-  }
-  for (const std::string sign : {"≈", "≃", "∼"}) {
-    for (auto at = s.find(sign); at != std::string::npos; at = s.find(sign, at))
-      s.replace(at, sign.size(), "=");
-  }
-  return s;
-}
-
-// "theta_L", "θ_L", "\theta_{L}", "E′", "ω̇(0)": one name, with no operator or number that would
-// make it an expression.
-bool is_one_name(const std::string& side) {
-  // "|L|", "‖L‖": the size of a vector, named; in LaTeX too, as the LaTeX key writes it.
-  std::string bare = trim(side);
-  for (const auto& [open, close] :
-       std::initializer_list<std::pair<std::string_view, std::string_view>>{{"‖", "‖"},
-                                                                            {"|", "|"},
-                                                                            {"\\lvert", "\\rvert"},
-                                                                            {"\\lVert", "\\rVert"},
-                                                                            {"\\left|", "\\right|"},
-                                                                            {"\\|", "\\|"}}) {
-    if (bare.size() > open.size() + close.size() && bare.starts_with(open) &&
-        bare.ends_with(close)) {
-      bare = trim(bare.substr(open.size(), bare.size() - open.size() - close.size()));
-      break;
-    }
-  }
-  std::string s = trim(sym::to_ascii(bare));
-  // "ω̇(0)", "\dot{\omega}(0)", "L(t = 0)": the name's value at t = 0, as the statements and the
-  // LaTeX key write it.
-  for (const std::string_view at_start : {"(0)", "(t=0)", "(t = 0)"}) {
-    if (s.size() > at_start.size() && s.ends_with(at_start)) {
-      s = trim(s.substr(0, s.size() - at_start.size()));
-      break;
-    }
-  }
-  // E', E′: a prime marks a name (the heavy top's E′), it makes no expression.
-  for (const std::string prime : {"′", "'"}) {
-    for (auto at = s.find(prime); at != std::string::npos; at = s.find(prime))
-      s.erase(at, prime.size());
-  }
-  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
-  return std::all_of(s.begin(), s.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '\\' || c == '{' ||
-           c == '}';
-  });
-}
-
-// What a side squared gives: the root as the reader takes it, or, for a value whose unit has an
-// odd power ("λ² = 83.38 1/s"), no root and that unit (no square is in it) with the number.
-struct SquaredLabel {
-  std::string root;
-  std::optional<Unit> odd_unit;
-  std::string number;
-};
-
-// "λ² = 83.38 s⁻²", "rate^2 = 83.38": a side that is one name squared, a label of the student's
-// (no symbol of the problem) or the answer's own name, gives the square of a scalar answer. Its
-// square root as the reader takes it, the unit's powers halved ("s^-2" -> "s^-1"); nothing for
-// any other side or a label that names a key's answer ("k² = .." is k2).
-std::optional<SquaredLabel> root_of_squared_label(const std::string& label,
-                                                  const std::string& value, const Context& ctx,
-                                                  const Answer& a) {
-  if (a.value.shape != Value::Shape::scalar) return std::nullopt;
-  const std::string s = trim(sym::to_ascii(label));
-  if (s.size() < 3 || s.compare(s.size() - 2, 2, "^2") != 0) return std::nullopt;
-  const std::string base = trim(s.substr(0, s.size() - 2));
-  if (!is_one_name(base)) return std::nullopt;
-  const bool own_name = name_spelling(base) == name_spelling(a.name);
-  if (!own_name && (ctx.table.contains(base) || name_in_key(ctx.key, s) != s)) return std::nullopt;
-  const auto [number, unit_text] = split_value_unit(trim(sym::to_ascii(value)));
-  if (number.empty()) return std::nullopt;
-  if (unit_text.empty()) return SquaredLabel{"sqrt(" + number + ")", std::nullopt, ""};
-  Unit unit;
-  try {
-    unit = parse_unit(unit_text, kField);
-  } catch (const InputError&) {
-    return std::nullopt;
-  }
-  static constexpr std::array<const char*, 3> kSiBase{"kg", "m", "s"};
-  std::string si;
-  for (std::size_t k = 0; k < unit.dim.size(); ++k) {
-    if (unit.dim[k] % 2 != 0) return SquaredLabel{"", unit, number};
-    if (unit.dim[k] != 0)
-      si += fmt::format("{}{}^{}", si.empty() ? "" : " ", kSiBase[k], unit.dim[k] / 2);
-  }
-  return SquaredLabel{
-      "sqrt((" + number + ")*(" + unit.to_si_exact + "))" + (si.empty() ? "" : " " + si),
-      std::nullopt, ""};
-}
-
-// Where the axes are in a matrix written as `text`: vectors listed one by one, "[1, 1, 0], [1,
-// -1, 0], [0, 0, 1]", "(1, 0, 1)/√2, ..", "[x̂ + ẑ, x̂ − ẑ, ŷ]", are its rows; a matrix of rows
-// in one bracket, "[[..], [..], [..]]" as the key prints one, either way.
-AxesLayout listed_layout(const std::string& text) {
-  const auto [items, bracketed] = list_items(text);
-  if (items.size() < 2 || items.size() > 3) return AxesLayout::rows_or_columns;
-  const bool matrix_literal =
-      bracketed && std::all_of(items.begin(), items.end(), [](const std::string& i) {
-        return wrapped(i, '[') || wrapped(i, '(') || wrapped(i, '{');
-      });
-  return matrix_literal ? AxesLayout::rows_or_columns : AxesLayout::rows;
-}
 
 // "M R²/2 × 150 rad/s": an expression in the problem's symbols (in SI) with a unit after it that
 // is not the whole's but a number's in it, where the symbols' dimension and the unit's make the
