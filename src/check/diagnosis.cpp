@@ -167,16 +167,23 @@ bool alike_units(const Answer& a, const Answer& b) {
 
 // Another answer of the key, or its approximation: more specific than a factor (max_angle is
 // exactly twice angle_L_e3, L0_space is L0_body turned). Not one that is zero (the flying plate's
-// identity_residual): any value small beside its unit's scale would be named as it.
+// identity_residual): any value small beside its unit's scale would be named as it. One of
+// another unit too where two of its entries or more are not zero, as a line pasted into the
+// wrong box gives it (the tennis racket's Euler coefficients for its dω/dt): several numbers each
+// matching are no coincidence, as one number matching a value of another unit may be (a
+// centre of mass (0, 0, z) beside a spin (0, 0, ω)).
 Wrong other_answer(const Answer& a, const Key& key, const Unit&) {
   Wrong out;
   for (const auto& part : key.parts) {
     for (const auto& b : part.answers) {
       const bool zero = std::all_of(b.value.data.begin(), b.value.data.end(),
                                     [](double x) { return x == 0; });
+      const bool comparable =
+          alike_units(a, b) || std::count_if(b.value.data.begin(), b.value.data.end(),
+                                             [](double x) { return x != 0; }) > 1;
       // Nor one equal to this answer (the Euler angles read back are the angles): a value
       // close to it is no mistake of taking the other.
-      if (&b == &a || b.name == a.name || !alike_units(a, b) ||
+      if (&b == &a || b.name == a.name || !comparable ||
           b.value.data.size() != a.value.data.size() || zero || b.value.data == a.value.data) {
         continue;
       }

@@ -336,6 +336,12 @@ std::vector<Mistake> mistakes_to_make() {
 }
 }  // namespace
 
+namespace {
+std::ptrdiff_t nonzero_entries(const Value& v) {
+  return std::count_if(v.data.begin(), v.data.end(), [](double x) { return x != 0; });
+}
+}  // namespace
+
 TEST_CASE("each known mistake is named, on every answer of every problem where it applies") {
   std::map<std::string, int> seen;
   for (const auto& p : load_catalog()) {
@@ -356,7 +362,9 @@ TEST_CASE("each known mistake is named, on every answer of every problem where i
           bool other = false;
           for (const auto& q : f.key.parts) {
             for (const auto& b : q.answers) {
-              other = other || (&b != &a && b.unit == a.unit && b.value.data == wrong.data);
+              // Of another unit too where two entries are not zero (other_answer, diagnosis.cpp).
+              other = other || (&b != &a && (b.unit == a.unit || nonzero_entries(b.value) > 1) &&
+                                b.value.data == wrong.data);
             }
           }
           for (const auto& named : a.approximations) {
@@ -375,6 +383,55 @@ TEST_CASE("each known mistake is named, on every answer of every problem where i
     INFO(mistake.kind);
     REQUIRE(seen[mistake.kind] > 0);
   }
+}
+
+TEST_CASE("another part's vector or matrix given for an answer of another unit is named as it") {
+  // A line pasted into the wrong box: the tennis racket's Euler coefficients (no unit) for its
+  // dω/dt (rad/s²) are read in the answer's unit, SI, and name the answer they are.
+  int seen = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        // Principal moments and axes are judged in any order, their diagnosis their own.
+        if (a.value.data.size() < 2 || a.kind == AnswerKind::principal_axes ||
+            a.kind == AnswerKind::principal_moments)
+          continue;
+        for (const auto& q : f.key.parts) {
+          for (const auto& b : q.answers) {
+            // Two numbers or more to match: one alone may match by chance.
+            if (b.unit == a.unit || b.value.data.size() != a.value.data.size() ||
+                nonzero_entries(b.value) < 2 || b.value.data == a.value.data)
+              continue;
+            INFO(p.id << ": " << b.name << " for " << a.name << ": " << typed(b.value));
+            const Verdict v = f.check(a.name, typed(b.value));
+            REQUIRE_FALSE(v.correct);
+            REQUIRE(!v.feedback.empty());
+            // b, or an answer of the same values (the angles read back are the angles; the
+            // flying plate's L0 at t = 0 is the same in both frames), the first listed.
+            bool named = false;
+            for (const auto& r : f.key.parts) {
+              for (const auto& c : r.answers) {
+                const bool same =
+                    c.value.data.size() == b.value.data.size() &&
+                    std::equal(c.value.data.begin(), c.value.data.end(), b.value.data.begin(),
+                               [](double x, double y) {
+                                 return std::abs(x - y) <= check::Options{}.rel_tol * std::abs(y);
+                               });
+                named =
+                    named || (same && v.feedback[0].starts_with("this is " + c.name + " (part " +
+                                                                r.id + "), not " + a.name));
+              }
+            }
+            INFO(v.feedback[0]);
+            CHECK(named);
+            ++seen;
+          }
+        }
+      }
+    }
+  }
+  REQUIRE(seen > 0);
 }
 
 TEST_CASE("a rotation's turns each taken the other way, or in reverse order, are named so") {
