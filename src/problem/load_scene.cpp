@@ -88,6 +88,12 @@ void read_effects(const Reader& r, const toml::table& root, Scene& s) {
       r.only_keys(*e, f, {"g", "pivot"});
       GravitySpec g;
       if (e->get("g")) g.g = r.expression(e->get("g"), f + ".g", e);
+      // Gravity alone turns no body about its centre of mass: the scene is about a fixed point.
+      if (e->get("pivot") == nullptr)
+        r.fail(e, f + ".pivot",
+               "missing: the fixed point the body turns about, in the body frame in m (pivot = "
+               "[0, 0, 0], a top's axle end at the origin); a body thrown under gravity is "
+               "free_flight");
       g.pivot = r.vector3(e->get("pivot"), f + ".pivot", e);
       s.gravity = g;
     } else if (name == "free_flight") {
