@@ -1,6 +1,7 @@
 #include "core/shapes.hpp"
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -68,11 +69,22 @@ const ShapeInfo& info(ShapeKind kind) {
 
 ShapeKind shape_kind_from_name(std::string_view name) {
   std::string known;
+  std::string lower(name);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::string meant;
   for (const auto& s : shape_table()) {
     if (s.name == name) return s.kind;
     known += (known.empty() ? "" : ", ") + std::string(s.name);
+    if (s.name == lower) meant = "; write " + std::string(s.name);  // "Box"
   }
-  throw std::invalid_argument("unknown shape '" + std::string(name) + "' (known: " + known + ")");
+  // The names people use for shapes the table has by another.
+  if (lower == "disk") meant = "; write disc";
+  if (lower == "cube") meant = "; a cube is a box of three equal sizes";
+  if (lower == "cuboid" || lower == "brick" || lower == "block") meant = "; write box";
+  if (lower == "ball") meant = "; a solid ball is a sphere, a hollow one a shell";
+  if (lower == "hoop") meant = "; write ring";
+  throw std::invalid_argument("unknown shape '" + std::string(name) + "' (known: " + known + ")" +
+                              meant);
 }
 
 std::vector<ShapeKind> shape_kinds() {

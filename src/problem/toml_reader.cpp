@@ -1,10 +1,15 @@
 #include "problem/toml_reader.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <array>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 
+#include "core/shapes.hpp"
 #include "problem/values.hpp"
 #include "symbolic/expression_guard.hpp"
 #include "symbolic/units.hpp"
@@ -128,8 +133,21 @@ BodySpec read_body(const Reader& r, const toml::table& body) {
       r.only_keys(t, f, {"shape", "mass", "sizes", "center"});
       ShapeSpec s;
       s.shape = r.string(t, "shape", f + ".");
+      // The shape and its number of sizes refused here, where the file's line is known.
+      ShapeKind kind{};
+      try {
+        kind = shape_kind_from_name(s.shape);
+      } catch (const std::invalid_argument& e) {
+        const bool point = s.shape == "point" || s.shape == "particle";
+        r.fail(t.get("shape"), f + ".shape",
+               e.what() + std::string(point ? "; point masses are body.masses, { mass, at }" : ""));
+      }
       s.mass = r.expression(t.get("mass"), f + ".mass", &t);
       const toml::array& sizes = r.array(t, "sizes", f + ".sizes");
+      if (const auto& names = shape_size_names(kind); sizes.size() != names.size())
+        r.fail(&sizes, f + ".sizes",
+               fmt::format("a {} takes {} size{} ({}), got {}", s.shape, names.size(),
+                           names.size() == 1 ? "" : "s", fmt::join(names, ", "), sizes.size()));
       for (std::size_t k = 0; k < sizes.size(); ++k) {
         s.sizes.push_back(r.expression(sizes.get(k), f + ".sizes[" + std::to_string(k) + "]", &t));
       }

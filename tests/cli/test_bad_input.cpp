@@ -226,7 +226,9 @@ std::vector<Row> catalog() {
                            "\"m\", at = [\"0\", \"1\", \"0\"] } ]",
                            "shapes = [ { shape = \"cube\", mass = \"m\", sizes = [\"1\"] } ]"))},
        2,
-       {"body.shapes[0].shape", "unknown shape 'cube'"}},
+       // Refused where the file is read, so with its line, and with what a cube is here.
+       {".toml:", "body.shapes[0].shape", "unknown shape 'cube'",
+        "a cube is a box of three equal sizes"}},
       {"wrong number of sizes",
        {"solve",
         file("sizes",
@@ -234,7 +236,7 @@ std::vector<Row> catalog() {
                   "[\"0\", \"1\", \"0\"] } ]",
                   "shapes = [ { shape = \"box\", mass = \"m\", sizes = [\"1\", \"2\"] } ]"))},
        2,
-       {"body.shapes[0].sizes", "takes 3 sizes"}},
+       {".toml:", "body.shapes[0].sizes", "takes 3 sizes"}},
       {"triangle inequality",
        {"solve", file("triangle", with("[body]\nmasses = [ { mass = \"m\", at = [\"1\", \"0\", "
                                        "\"0\"] }, { mass = \"m\", at = [\"0\", \"1\", \"0\"] } ]\n",

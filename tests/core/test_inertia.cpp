@@ -110,4 +110,11 @@ TEST_CASE("shape sizes are validated") {
   REQUIRE_THROWS_AS(shape_inertia_about_cm(ShapeKind::disc, 1.0, {-1.0}), std::invalid_argument);
   REQUIRE_THROWS_AS(shape_inertia_about_cm(ShapeKind::sphere, 0.0, {1.0}), std::invalid_argument);
   REQUIRE_THROWS_WITH(shape_kind_from_name("cube"), Catch::Contains("known: box"));
+  // The names people use for a shape the table names otherwise, each with what to write.
+  REQUIRE_THROWS_WITH(shape_kind_from_name("disk"), Catch::EndsWith("; write disc"));
+  REQUIRE_THROWS_WITH(shape_kind_from_name("Box"), Catch::EndsWith("; write box"));
+  REQUIRE_THROWS_WITH(shape_kind_from_name("hoop"), Catch::EndsWith("; write ring"));
+  REQUIRE_THROWS_WITH(shape_kind_from_name("cube"),
+                      Catch::EndsWith("; a cube is a box of three equal sizes"));
+  REQUIRE_THROWS_WITH(shape_kind_from_name("blob"), Catch::EndsWith("cone, ring, shell)"));
 }
