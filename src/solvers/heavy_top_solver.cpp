@@ -181,11 +181,15 @@ Computed nutation_limit(const Top& t, bool upper) {
   // c1/q stays finite as g -> 0.
   const int c2_sign = sym::is_identically_zero(c2.subs(t.exact.at))
                           ? 1
-                          : sym::sign_of(c2, t.exact.at, "c2");
+                          : sym::sign_of(c2, t.exact.at, "the nutation limits' c₂");
   const ex q_root = -(c2 + c2_sign * root) / 2;
   const ex d_plus = q_root / beta, d_minus = c1 / q_root;
   const double u0n = std::cos(t.start.theta);
-  const double dp = value(t, d_plus, "d+"), dm = value(t, d_minus, "d-");
+  // Named as a reader of the key knows them: d is no answer, and "d-" named nothing.
+  const std::string limit =
+      "the other nutation limit's d = cos θ − cos θ₀ (a root of β d² + c₂ d + c₁, as the "
+      "nutation limits' steps write it)";
+  const double dp = value(t, d_plus, limit), dm = value(t, d_minus, limit);
   // A root at u = +-1 (a limit at the vertical) may round a few ulps outside [-1, 1].
   constexpr double kRootSlack = 1e-12;
   const auto in_range = [&](double d) {

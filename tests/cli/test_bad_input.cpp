@@ -999,6 +999,12 @@ std::vector<Row> catalog() {
        2,
        {"lagrangian0: its value, about 3.1e+596, is outside the range of double precision",
         "(at --set psidot0=1e300)"}},
+      // A quantity of the steps, not an answer, named as the steps write it (it was "d-").
+      {"a tilt so small that a step's quantity leaves double's range names it as the steps do",
+       {"solve", "heavy-top", "--set", "theta0=1e-300"},
+       2,
+       {"the other nutation limit's d = cos θ − cos θ₀", "outside the range of double precision",
+        "(at --set theta0=1e-300)"}},
       {"problem file too large",
        {"solve", file("huge", kBase + "# " + std::string(2 << 20, 'x') + "\n")},
        2,
