@@ -427,6 +427,11 @@ std::vector<std::string> diagnose(const Finding& f) {
     }
     return out;
   }
+  // Zeros where the answer has none (dω/dt = 0 for a free body, "no torque, so ω is
+  // constant"): one line, not each entry "off by 100%".
+  const auto is_zero = [](double x) { return x == 0.0; };
+  if (std::all_of(v.begin(), v.end(), is_zero) && !std::all_of(k.begin(), k.end(), is_zero))
+    return {"every entry is zero; the answer is not"};
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (f.close(v[i], k[i])) continue;
     // One component's sign turned (a cross product's term, a minus lost in a matrix): its size

@@ -995,6 +995,9 @@ TEST_CASE("the diagnosis table: each known mistake is named by the value that ma
              Catch::Contains("2 times the answer"));
   CHECK_THAT(first(key.parts[0].answers[1], {1.0, 0.0, 3.3}, "kg m^2/s"),
              Catch::Contains("entry e₃ is off by 10%"));  // body frame: along e₁, e₂, e₃
+  // Zeros for a vector that is not zero: one line, not each entry off by 100%.
+  CHECK_THAT(first(key.parts[0].answers[1], {0.0, 0.0, 0.0}, "kg m^2/s"),
+             Catch::Equals("every entry is zero; the answer is not"));
   CHECK_THAT(first(key.parts[0].answers[2], {2.0, 0.5, 2.75}, "kg m^2/s"),
              Catch::Equals("entry z is off by 10%"));  // the fixed axes: x, y, z
   // Entries the question names (c₁, c₂, c₃ of Euler's equations) are named so.
