@@ -4,7 +4,8 @@
 /// judge.cpp appends these to the reader's refusals). What the text more likely meant (a decimal
 /// comma, digits grouped by threes, an imaginary number), what a name the problem has no symbol
 /// for stands for and what may be written instead, and what kept arithmetic with units from
-/// being worked out. Each hint is a remark in parentheses, " (..)", or "" where none applies.
+/// being worked out. A hint is a remark in parentheses to append, " (..)", or "" where none
+/// applies; refused_beside_units gives a whole refusal in place of the reader's.
 #include <optional>
 #include <string>
 
