@@ -18,22 +18,9 @@
 namespace wobble::check::detail {
 
 std::vector<std::string> sides(const std::string& text, const std::string& name) {
-  std::vector<std::string> out;
-  int depth = 0;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '(' || c == '[' || c == '{') ++depth;
-    if (c == ')' || c == ']' || c == '}') --depth;
-    if (c == '=' && depth == 0) {
-      out.push_back(text.substr(start, i - start));
-      start = i + 1;
-    }
-  }
-  out.push_back(text.substr(start));
+  std::vector<std::string> out = top_level(text, '=');
   // "       = 0.00072 kg m²": the second line of a text key's answer alone.
-  const bool dropped =
-      trim(out.front()).empty() || name_spelling(out.front()) == name_spelling(name);
+  const bool dropped = out.front().empty() || name_spelling(out.front()) == name_spelling(name);
   if (out.size() > 1 && dropped) out.erase(out.begin());
   return out;
 }

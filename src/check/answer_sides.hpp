@@ -16,7 +16,8 @@
 namespace wobble::check::detail {
 
 /// The sides of an answer as a key line shows it, "I0 = m·R²/4 = 0.00072 kg m²": split at each
-/// '=' outside brackets, the answer's own name (or nothing) on the left dropped.
+/// '=' outside brackets (brackets.hpp's top_level), each trimmed, the answer's own name (or
+/// nothing) on the left dropped.
 std::vector<std::string> sides(const std::string& text, const std::string& name);
 
 /// "cos" for "cos θ_max", "cos(theta_max)" where `a` is the angle theta_max (sin, tan alike),

@@ -1,9 +1,10 @@
 #include "core/shapes.hpp"
 
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <stdexcept>
+
+#include "core/characters.hpp"
 
 namespace wobble {
 
@@ -69,8 +70,7 @@ const ShapeInfo& info(ShapeKind kind) {
 
 ShapeKind shape_kind_from_name(std::string_view name) {
   std::string known;
-  std::string lower(name);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string lower = ascii_lower(std::string(name));
   std::string meant;
   for (const auto& s : shape_table()) {
     if (s.name == name) return s.kind;
