@@ -47,7 +47,8 @@ Top::Top(const Problem& p, const sym::Values& values) : BodyContext(with_motion(
   t.I1 = I_cm(0, 0);
   t.I3 = I_cm(2, 2);
   t.omega = sym::parse_quantity(t.table, problem.motion->at("omega"), "motion.omega", "rad/s");
-  t.alpha = t.table.parse(problem.motion->at("alpha"), "motion.alpha");
+  // An angle, and a parameter's name: a mass named here would be no angle to expand in.
+  t.alpha = sym::parse_quantity(t.table, problem.motion->at("alpha"), "motion.alpha", "rad");
   if (!GiNaC::is_a<GiNaC::symbol>(t.alpha)) {
     throw InputError("motion.alpha: must name a parameter (the series is taken in it), got \"" +
                      problem.motion->at("alpha") + "\"");

@@ -240,9 +240,7 @@ void refuse_other_dimension(const SymbolTable& table, const GiNaC::ex& e, const 
     passed.insert(key.str());
     return;
   }
-  const std::string must = wanted.dim == std::array{0, 0, 0}
-                               ? "a pure number" + std::string(wanted.angle ? " (an angle)" : "")
-                               : "in " + si_unit + " (" + wanted.dimension_words() + ")";
+  const std::string must = unit_wanted_words(wanted, si_unit);
   const auto found = probe.dimension_of(filled);
   if (found && *found != wanted.dim)
     probe.refuse(text,

@@ -55,10 +55,7 @@ std::string quantity_expression(const SymbolTable& table, const std::string& tex
     const Unit given = parse_unit(unit, field);
     const Unit wanted = si_unit.empty() ? Unit{} : parse_unit(si_unit, field);
     if (!unit_fits(given, wanted)) {
-      const std::string must = wanted.angle ? "an angle (rad, deg or rev)"
-                               : si_unit.empty()
-                                   ? "a pure number"
-                                   : "in " + si_unit + " (" + wanted.dimension_words() + ")";
+      const std::string must = unit_wanted_words(wanted, si_unit);
       // As the parser shows a text: 40 characters at most, no control character.
       throw ExpressionError(field + ": '" + printable(text, 40) + "' is in " +
                             printable(given.text, 40) + " (" + given.dimension_words() +

@@ -410,6 +410,12 @@ bool unit_fits(const Unit& given, const Unit& wanted) {
   return given.same_dimension(wanted) && !angle_for_number;
 }
 
+std::string unit_wanted_words(const Unit& wanted, const std::string& si_unit) {
+  if (wanted.dim != std::array{0, 0, 0})
+    return "in " + si_unit + " (" + wanted.dimension_words() + ")";
+  return wanted.angle ? "an angle (rad, deg or rev)" : "a pure number";
+}
+
 bool is_unit(const std::string& text) {
   try {
     (void)parse_unit(text, "");

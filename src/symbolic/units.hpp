@@ -86,4 +86,9 @@ std::vector<std::pair<std::string, std::string>> value_unit_splits(const std::st
 /// "30deg" is no moment ratio). A pure number `wanted` is Unit{}; an angle is parse_unit("rad").
 bool unit_fits(const Unit& given, const Unit& wanted);
 
+/// What a field that takes SI `si_unit` (parsed: `wanted`) must be, for a refusal that says what
+/// was given: "an angle (rad, deg or rev)", "a pure number", "in rad/s (1 / time)". Only an angle
+/// of no dimension is "an angle": a rate, rad/s, is a time's inverse (5 rad is no spin).
+std::string unit_wanted_words(const Unit& wanted, const std::string& si_unit);
+
 }  // namespace wobble

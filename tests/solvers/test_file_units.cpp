@@ -15,6 +15,8 @@
 
 using namespace wobble;
 using Catch::Matchers::Contains;
+using Catch::Matchers::EndsWith;
+using Catch::Matchers::Equals;
 
 namespace {
 // box-corner (parameters M, a, b, c) with its one box's mass, sizes and centre replaced.
@@ -174,4 +176,25 @@ TEST_CASE("a motion value in a unit of another dimension is refused, naming the 
   top = find_problem("heavy-top");
   top.motion->exprs["theta0"] = "30 rpm";
   CHECK_THROWS_WITH(key_of(top), Contains("motion.theta0: '30 rpm' is in rpm"));
+}
+
+TEST_CASE("a rate given as an angle, or an angle as a mass, is told what the field takes") {
+  // rad/s is a time's inverse: 5 rad is no spin, and the field is no angle.
+  Problem solid = find_problem("rect-solid");
+  solid.motion->exprs["omega"] = "5 rad";
+  CHECK_THROWS_WITH(key_of(solid), Equals("motion.omega: '5 rad' is in rad (an angle); it must be "
+                                          "in rad/s (1 / time)"));
+  solid = find_problem("rect-solid");
+  solid.motion->exprs["omega"] = "3 kg";
+  CHECK_THROWS_WITH(key_of(solid), EndsWith("it must be in rad/s (1 / time)"));
+  // An angle is a pure number; said as the field takes it, whether given with a unit or by its
+  // parameters' units.
+  solid = find_problem("rect-solid");
+  solid.motion->exprs["alpha"] = "2 kg";
+  CHECK_THROWS_WITH(key_of(solid), EndsWith("'2 kg' is in kg (mass); it must be an angle (rad, deg "
+                                            "or rev)"));
+  solid = find_problem("rect-solid");
+  solid.motion->exprs["alpha"] = "m";
+  CHECK_THROWS_WITH(key_of(solid), EndsWith("'m' is in kg (mass) by its parameters' units; it must "
+                                            "be an angle (rad, deg or rev)"));
 }
