@@ -9,6 +9,7 @@
 #include "core/characters.hpp"
 #include "core/work_budget.hpp"
 #include "io/atomic_write.hpp"
+#include "problem/field_lines.hpp"
 #include "problem/scene.hpp"
 #include "problem/values.hpp"
 #include "problem/variants.hpp"
@@ -107,7 +108,10 @@ int run_simulate(const SimulateOptions& opt) {
   Scene scene = find_scene(opt.scene);
   require_each_set_once(scene.model, opt.sets);
   if (opt.samples) scene.samples = static_cast<int>(*opt.samples);
-  if (!opt.t_end.empty()) scene.t_end = opt.t_end;  // read and checked (> 0) as run.t_end
+  if (!opt.t_end.empty()) {
+    scene.t_end = opt.t_end;  // read and checked (> 0) as run.t_end, at no line of the file
+    scene.model.field_lines.erase("run.t_end");
+  }
   std::vector<std::string> assignments;
   if (opt.variant) {
     // A scene's variant is valid when its setup accepts it (a scene has no solver to ask).
@@ -133,7 +137,7 @@ int run_simulate(const SimulateOptions& opt) {
   if (opt.max_evaluations) setup.max_evaluations = *opt.max_evaluations;
   const MethodChoice choice =
       opt.method.empty()
-          ? choose_method(setup, setup.method, scene.model.file.string() + ": run.method")
+          ? choose_method(setup, setup.method, field_in_file(scene.model, "run.method"))
           : choose_method(setup, opt.method, "--method");
   const WorkEstimate work = estimate_work(setup, choice);
   require_within_budget(work, setup.max_evaluations, "--max-evaluations");

@@ -205,6 +205,7 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
     }
   }
   if (p.parts.empty()) r.fail(&root, "parts", "a problem needs at least one part");
+  p.field_lines = field_lines_of(root);
   return p;
 }
 }  // namespace
@@ -212,13 +213,17 @@ Problem load_problem_table(const toml::table& root, const std::filesystem::path&
 std::filesystem::path problems_dir() { return data_folder("problems"); }
 
 Problem find_problem(const std::string& id_or_file, const SolverSchemas& schemas) {
-  return load_problem(resolve_id_or_file(id_or_file, problems_dir(), "problem"), schemas);
+  const auto file = resolve_id_or_file(id_or_file, problems_dir(), "problem");
+  Problem p = load_problem(file, schemas);
+  p.from_catalog = file.string() != id_or_file;  // named by its id
+  return p;
 }
 
 std::vector<Problem> load_catalog(const SolverSchemas& schemas) {
   std::vector<Problem> out;
   for (const auto& f : toml_files_in(problems_dir(), "problem")) {
     out.push_back(load_problem(f, schemas));
+    out.back().from_catalog = true;
     check_id_is_file_name(out.back().id, f);
   }
   return out;

@@ -204,6 +204,7 @@ Scene load_scene_table(const toml::table& root, const std::filesystem::path& fil
   read_initial(r, root, s);
   read_effects(r, root, s);
   read_run(r, root, s);
+  p.field_lines = detail::field_lines_of(root);
   return s;
 }
 }  // namespace
@@ -222,13 +223,17 @@ std::vector<Scene> load_scenes() {
   std::vector<Scene> out;
   for (const auto& f : detail::toml_files_in(scenes_dir(), "scene")) {
     out.push_back(load_scene(f));
+    out.back().model.from_catalog = true;
     detail::check_id_is_file_name(out.back().model.id, f);
   }
   return out;
 }
 
 Scene find_scene(const std::string& id_or_file) {
-  return load_scene(detail::resolve_id_or_file(id_or_file, scenes_dir(), "scene"));
+  const auto file = detail::resolve_id_or_file(id_or_file, scenes_dir(), "scene");
+  Scene s = load_scene(file);
+  s.model.from_catalog = file.string() != id_or_file;  // named by its id
+  return s;
 }
 
 }  // namespace wobble

@@ -108,6 +108,10 @@ struct Problem {
   std::optional<MotionSpec> motion;
   std::vector<PartSpec> parts;
   std::filesystem::path file;
+  /// Each field's line in `file`, for refusals found at solve time (problem/field_lines.hpp).
+  std::map<std::string, int> field_lines;
+  /// Loaded by its id from the catalog: such a refusal comes from values set, not from the file.
+  bool from_catalog = false;
 
   /// The parameter a name spells: its identifier ("theta0"), or as a key prints it: the
   /// terminal's Unicode ("θ0", "ψ̇0"), a LaTeX subscript ("theta_0"), the parameter's LaTeX

@@ -224,6 +224,29 @@ std::filesystem::path resolve_id_or_file(const std::string& id_or_file,
   return file;
 }
 
+namespace {
+void add_field_lines(const toml::node& node, const std::string& field,
+                     std::map<std::string, int>& lines) {
+  if (!field.empty() && node.source().begin.line > 0)
+    lines.emplace(field, static_cast<int>(node.source().begin.line));
+  if (const toml::table* t = node.as_table()) {
+    for (auto&& [key, value] : *t) {
+      const std::string name(key.str());
+      add_field_lines(value, field.empty() ? name : field + "." + name, lines);
+    }
+  } else if (const toml::array* a = node.as_array()) {
+    for (std::size_t i = 0; i < a->size(); ++i)
+      add_field_lines(*a->get(i), field + "[" + std::to_string(i) + "]", lines);
+  }
+}
+}  // namespace
+
+std::map<std::string, int> field_lines_of(const toml::table& root) {
+  std::map<std::string, int> lines;
+  add_field_lines(root, "", lines);
+  return lines;
+}
+
 void check_id_is_file_name(const std::string& id, const std::filesystem::path& file) {
   if (id != file.stem().string()) {
     throw InputError(file.string() + ": id: '" + id + "' differs from the file name");

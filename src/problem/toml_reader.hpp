@@ -7,6 +7,7 @@
 #include <array>
 #include <charconv>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 
@@ -174,6 +175,10 @@ std::filesystem::path resolve_id_or_file(const std::string& id_or_file,
                                          const std::filesystem::path& dir, const std::string& what);
 /// @throws InputError unless a catalog file's id equals its file name.
 void check_id_is_file_name(const std::string& id, const std::filesystem::path& file);
+
+/// The line of every field of a document, named as messages name fields ("motion.omega",
+/// "body.shapes[0].sizes[2]"): problem/field_lines.hpp.
+std::map<std::string, int> field_lines_of(const toml::table& root);
 
 /// The most a problem or scene file may hold: a few kilobytes are usual.
 inline constexpr std::size_t kMaxTomlBytes = std::size_t{1} << 20;

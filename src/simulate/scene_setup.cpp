@@ -7,6 +7,7 @@
 
 #include "core/euler_angles.hpp"
 #include "core/principal_axes.hpp"
+#include "problem/field_lines.hpp"
 #include "problem/values.hpp"
 #include "solvers/inertia_body.hpp"
 #include "symbolic/quantity.hpp"
@@ -194,7 +195,8 @@ void check_ranges(const SceneSetup& s) {
 }
 }  // namespace
 
-SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
+namespace {
+SceneSetup set_up(const Scene& scene, const sym::Values& values) {
   const BodyContext ctx(scene.model, values);
   const Eval ev{ctx};
   SceneSetup s;
@@ -307,6 +309,15 @@ SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
     }
   }
   return s;
+}
+}  // namespace
+
+SceneSetup setup_scene_at(const Scene& scene, const sym::Values& values) {
+  try {
+    return set_up(scene, values);
+  } catch (const InputError&) {
+    rethrow_placed_in_file(scene.model);
+  }
 }
 
 }  // namespace wobble

@@ -1,5 +1,6 @@
 #include "solvers/solve.hpp"
 
+#include "problem/field_lines.hpp"
 #include "problem/values.hpp"
 #include "problem/variants.hpp"
 #include "solvers/exact_answer.hpp"
@@ -50,8 +51,13 @@ std::vector<std::string> key_conventions() {
 Key solve(const Problem& problem, const sym::Values& values) {
   const SolverInfo& solver = solver_info(problem.solver);
   begin_route_checks();
-  Key key = solver.solve(problem, values);
-  add_named_mistakes(problem, values, key);
+  Key key;
+  try {
+    key = solver.solve(problem, values);
+    add_named_mistakes(problem, values, key);
+  } catch (const InputError&) {
+    rethrow_placed_in_file(problem);
+  }
   key.problem = problem.id;
   key.title = problem.title;
   key.source = problem.source;

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include "core/work_budget.hpp"
+#include "problem/field_lines.hpp"
 #include "problem/load.hpp"
 #include "problem/values.hpp"
 #include "symbolic/quantity.hpp"
@@ -312,6 +314,56 @@ TEST_CASE("the solver, its motion keys and each quantity are checked when the fi
              Contains("motion: missing (a table { omega })"));
   CHECK_THAT(error(kGood + "\n[motion]\nomega = \"1\"\n"),
              Contains("the inertia solver takes no [motion] table"));
+}
+
+TEST_CASE("a refusal found after loading names the field's file and line") {
+  // kGood's lines: the second parameter's default on 16, the masses on 20, the answers on 25.
+  const Problem p = load_problem(test::write_file("load/lines.toml", kGood));
+  const std::string file = p.file.string();
+  CHECK(placed_in_file(p, "body.masses[1].mass: '2*m' is refused") ==
+        file + ":20: body.masses[1].mass: '2*m' is refused");
+  CHECK(placed_in_file(p, "parameters[1].default: too large") ==
+        file + ":16: parameters[1].default: too large");
+  CHECK(placed_in_file(p, "parts[0].answers[1].quantity: x") ==
+        file + ":25: parts[0].answers[1].quantity: x");
+  // An element of an array the file holds as one field is placed at the array.
+  CHECK(placed_in_file(p, "body.masses[1].at[5]: x") == file + ":20: body.masses[1].at[5]: x");
+  CHECK(field_in_file(p, "body.masses[0].at[2]") == file + ":20: body.masses[0].at[2]");
+  CHECK(placed_in_file(p, "body: does not turn") == file + ":19: body: does not turn");
+  CHECK(placed_in_file(p, "parameters[0].default (at these values): x") ==
+        file + ":9: parameters[0].default (at these values): x");
+  CHECK(placed_in_file(p, file + ": body: the centre is off") ==
+        file + ":19: body: the centre is off");
+  // Not a field of the file, or no field at all: as it is.
+  for (const std::string& as_is :
+       std::vector<std::string>{"motion.omega: x", file + ": motion: missing", "I1: is negative",
+                                "no field here", "a body: in words", "--t-end: '2 m'", "body"}) {
+    CHECK(placed_in_file(p, as_is) == as_is);
+  }
+  CHECK(field_in_file(p, "run.method") == file + ": run.method");
+  // From the catalog, what is refused after loading came from values set: no line.
+  Problem catalog = p;
+  catalog.from_catalog = true;
+  CHECK(placed_in_file(catalog, "body.masses[1].mass: x") == "body.masses[1].mass: x");
+  // Rethrown placed, its type kept where nothing is added.
+  try {
+    try {
+      throw InputError("body.masses[0].at[1]: cannot read");
+    } catch (const InputError&) {
+      rethrow_placed_in_file(p);
+    }
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()) == file + ":20: body.masses[0].at[1]: cannot read");
+  }
+  CHECK_THROWS_AS(
+      [&] {
+        try {
+          throw WorkLimitReached("body.masses[0].mass: over the budget");
+        } catch (const InputError&) {
+          rethrow_placed_in_file(p);
+        }
+      }(),
+      WorkLimitReached);
 }
 
 TEST_CASE("set assignments NAME=VALUE") {

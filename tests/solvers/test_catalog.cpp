@@ -403,9 +403,10 @@ TEST_CASE("a problem file's named mistakes are read in the answer's unit when it
     CHECK(total.approximations[0].beside == "the answer");
   }
   // Refused, naming the file and the field: another dimension, no number, a tensor's.
-  CHECK_THROWS_WITH(solved(with_mistake("mass", "\"2 m\"")),
-                    Catch::Contains("two.toml: parts[0].answers[0].mistakes[0].value: '2 m' is in "
-                                    "m (length), but mass is in kg (mass)"));
+  CHECK_THROWS_WITH(
+      solved(with_mistake("mass", "\"2 m\"")),
+      Catch::Contains("two.toml:18: parts[0].answers[0].mistakes[0].value: '2 m' is in "
+                      "m (length), but mass is in kg (mass)"));
   CHECK_THROWS_WITH(
       solved(with_mistake("mass", "\"two kg\"")),
       Catch::Contains("parts[0].answers[0].mistakes[0].value") && Catch::Contains("'two kg'"));
@@ -444,12 +445,12 @@ TEST_CASE("a named mistake in the problem's parameters follows each variant's va
     INFO(bad);
     CHECK_THROWS_WITH(
         solved(with_mistake(bad), {}),
-        Catch::Contains("two.toml: parts[0].answers[0].mistakes[0].value: '" + bad +
+        Catch::Contains("two.toml:18: parts[0].answers[0].mistakes[0].value: '" + bad +
                         "' is not of mass's dimension, mass (kg): its value does not scale as the "
                         "answer's when the units of mass, length and time do"));
   }
   CHECK_THROWS_WITH(solved(with_mistake("sqrt(-m)"), {}),
-                    Catch::Contains("two.toml: parts[0].answers[0].mistakes[0].value"));
+                    Catch::Contains("two.toml:18: parts[0].answers[0].mistakes[0].value"));
   // With no value at some values (a pure number k = 0 here), it names nothing there; its value
   // at the defaults is what is tested.
   std::string with_k = with_mistake("2*m/k");

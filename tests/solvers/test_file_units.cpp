@@ -2,7 +2,10 @@
 // sizes, positions and tensor entries ("300 g", "4 cm", "2.5 g cm^2") give the exact tensor the
 // same values give in SI as rationals, and the same doubles; motion values ("1432 rpm") give the
 // same key as the same value in SI.
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -12,6 +15,7 @@
 #include "solvers/inertia_body.hpp"
 #include "solvers/solve.hpp"
 #include "symbolic/expression.hpp"
+#include "temp_files.hpp"
 
 using namespace wobble;
 using Catch::Matchers::Contains;
@@ -197,4 +201,21 @@ TEST_CASE("a rate given as an angle, or an angle as a mass, is told what the fie
   solid.motion->exprs["alpha"] = "m";
   CHECK_THROWS_WITH(key_of(solid), EndsWith("'m' is in kg (mass) by its parameters' units; it must "
                                             "be an angle (rad, deg or rev)"));
+}
+
+TEST_CASE("a file of one's own is refused at the field's line when it is solved") {
+  // The catalog's rect-solid, read from a file named by its path, with its spin in a mass.
+  std::ifstream in(problems_dir() / "rect-solid.toml");
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string from = "omega = \"omega\"";
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
+  text.replace(at, from.size(), "omega = \"3 kg\"");
+  const auto file = test::write_file("units/own-rect-solid.toml", text);
+  const Problem own = find_problem(file.string());
+  CHECK_FALSE(own.from_catalog);
+  CHECK_THROWS_WITH(key_of(own), Equals(file.string() + ":" + std::to_string(line) +
+                                        ": motion.omega: '3 kg' is in kg (mass); it must be in "
+                                        "rad/s (1 / time)"));
 }
