@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -176,6 +177,52 @@ bool shares_a_sum(const std::vector<ex>& sums) {
   return false;
 }
 
+// factors^exponent as a product where that is true: (a b)^e = a^e b^e for a > 0 (a positive
+// number or symbol, pi, a sum of such), but not for two factors of unknown sign. factor()
+// distributes a root over every factor it finds, sqrt(-c^2 X) -> I c sqrt(X), which is the
+// negative of sqrt(-c^2 X) = c sqrt(-X) where X < 0; so does an integer power, rightly.
+ex power_of_factors(const ex& factors, const ex& exponent) {
+  if (exponent.info(GiNaC::info_flags::integer)) return GiNaC::pow(factors, exponent);
+  ex out = 1, unknown_sign = 1;
+  for_each_factor(factors, [&](const ex& factor, const ex& power) {
+    if (factor.info(GiNaC::info_flags::positive)) {
+      out *= GiNaC::pow(factor, power * exponent);
+    } else {
+      unknown_sign *= GiNaC::pow(factor, power);
+    }
+  });
+  return out * GiNaC::pow(unknown_sign, exponent);
+}
+
+// GiNaC::factor(p) for p no polynomial over Q: each constant (pi) stands as a positive symbol,
+// each root of an expression (a non-integer power) as a symbol for its base factored and taken
+// out as above.
+// factor() alone takes pi for a coefficient, and its gcd throws ("arguments must be polynomials
+// over the rationals") on pi a + pi b, which a rate in rpm (pi/30 rad/s) brings into a key; and
+// it distributes a root over the factors of its base.
+ex factor_keeping_roots(const ex& p) {
+  struct StandIns : GiNaC::map_function {
+    std::map<ex, ex, GiNaC::ex_is_less> stand_in;
+    GiNaC::exmap back;
+    ex operator()(const ex& e) override {
+      const bool constant = GiNaC::is_a<GiNaC::constant>(e);
+      // A root of a number (sqrt(2)) is a number to factor(), as before: standing in for it
+      // would add a symbol to factor in (40 masses at sqrt(k) coordinates: minutes).
+      const bool root = GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer) &&
+                        !GiNaC::is_a<GiNaC::numeric>(e.op(0));
+      if (!constant && !root) return e.map(*this);
+      if (const auto it = stand_in.find(e); it != stand_in.end()) return it->second;
+      const ex symbol = constant ? ex(GiNaC::possymbol("constant")) : ex(GiNaC::symbol("root"));
+      stand_in.emplace(e, symbol);
+      back[symbol] = constant ? e : power_of_factors(factored(e.op(0)), e.op(1));
+      return symbol;
+    }
+  } stand_ins;
+  const ex polynomial = stand_ins(p);
+  if (stand_ins.back.empty()) return GiNaC::factor(p);
+  return GiNaC::factor(polynomial).subs(stand_ins.back);
+}
+
 // factor() factors each explicit factor of a product on its own and multiplies the results;
 // here each goes through factored() instead, so that a sum shown irreducible is not factored
 // from scratch (6 ms for one product in the tennis racket's key). factor() writes one
@@ -186,12 +233,13 @@ ex factored_product(const ex& p) {
   ex result = 1;
   std::vector<ex> sums;
   for_each_factor(p, [&](const ex& base, const ex& exponent) {
-    for_each_factor(factored(base), [&](const ex& factor, const ex& power) {
-      result *= GiNaC::pow(factor, exponent * power);
+    const ex factors = factored(base);
+    for_each_factor(factors, [&](const ex& factor, const ex&) {
       if (GiNaC::is_a<GiNaC::add>(factor)) sums.push_back(GiNaC::expand(factor));
     });
+    result *= power_of_factors(factors, exponent);
   });
-  return shares_a_sum(sums) ? GiNaC::factor(p) : result;
+  return shares_a_sum(sums) ? factor_keeping_roots(p) : result;
 }
 
 // The square root of a term c x^2k y^2l ... (c > 0 a rational square): sqrt(c) x^k y^l ...
@@ -228,7 +276,7 @@ std::optional<std::pair<ex, ex>> difference_of_squares(const ex& q) {
 
 ex factored_once(const ex& p) {
   if (GiNaC::is_a<GiNaC::mul>(p) || GiNaC::is_a<GiNaC::power>(p)) return factored_product(p);
-  if (!is_polynomial_sum(p)) return GiNaC::factor(p);
+  if (!is_polynomial_sum(p)) return factor_keeping_roots(p);
   const auto [content, q] = split_content(p);
   // First, as it is cheap and never applies to an irreducible q (u and v are not both numbers).
   if (const auto uv = difference_of_squares(q)) {
