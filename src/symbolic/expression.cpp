@@ -354,8 +354,17 @@ GiNaC::lst substitution(const SymbolTable& table, const Values& values) {
 namespace {
 // evalf from the leaves up. GiNaC's EllipticK and EllipticE evaluate only a floating-point
 // argument, and evalf() hands them the exact one (EllipticK(3/10*sqrt(10)) stays as it is).
+// A power's exponent stays exact: evalf() would make (pi - 6)^(-1) a float to the power -1.0,
+// which CLN takes through a complex logarithm, leaving an imaginary part of 1e-60 that made the
+// modulus of a top's elliptic functions "not a real number".
 struct DeepEvalf : GiNaC::map_function {
-  GiNaC::ex operator()(const GiNaC::ex& e) override { return GiNaC::evalf(e.map(*this)); }
+  GiNaC::ex operator()(const GiNaC::ex& e) override {
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+        GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_rational()) {
+      return GiNaC::evalf(GiNaC::pow((*this)(e.op(0)), e.op(1)));
+    }
+    return GiNaC::evalf(e.map(*this));
+  }
 };
 
 // A number for a message: 6 significant digits.
@@ -578,7 +587,14 @@ GiNaC::ex simplified_sqrt(const GiNaC::ex& e) {
       n = GiNaC::ex_to<GiNaC::numeric>(factor.op(1));
     }
     if (GiNaC::is_a<GiNaC::numeric>(base) && GiNaC::ex_to<GiNaC::numeric>(base).is_rational() &&
-        GiNaC::ex_to<GiNaC::numeric>(base).is_positive()) {
+        !GiNaC::ex_to<GiNaC::numeric>(base).is_zero()) {
+      // A negative number's sign stays inside, with the sum GiNaC gave the other sign: which of
+      // -4 (-X) and 4 X normal() gives follows GiNaC's run-dependent term order, and the root
+      // is to take 2 out of both alike (one key was printed two ways from run to run).
+      if (GiNaC::ex_to<GiNaC::numeric>(base).is_negative()) {
+        if (n.is_odd()) inside *= -1;
+        base = -base;
+      }
       // sqrt(p/q) = sqrt(p q)/q; GiNaC takes square factors out of sqrt of an integer itself.
       const auto r = GiNaC::ex_to<GiNaC::numeric>(GiNaC::pow(base, n));
       const GiNaC::ex root = GiNaC::sqrt(GiNaC::ex(r.numer() * r.denom())) / r.denom();

@@ -177,6 +177,18 @@ bool shares_a_sum(const std::vector<ex>& sums) {
   return false;
 }
 
+// GiNaC::factor(p) with each factor expanded: factor() may give a factor partly collected as
+// its run-dependent term order falls (7 a^2 (36 + c^2) - 252 a^2 - 7 a^2 c^2 + .., or
+// 3 M + m (pi + 3)); expanded, a factor has one form, which the canonical printer prints alike
+// in every run.
+ex factor_expanded(const ex& p) {
+  ex factors = 1;
+  for_each_factor(GiNaC::factor(p), [&](const ex& base, const ex& exponent) {
+    factors *= GiNaC::pow(GiNaC::expand(base), exponent);
+  });
+  return factors;
+}
+
 // factors^exponent as a product where that is true: (a b)^e = a^e b^e for a > 0 (a positive
 // number or symbol, pi, a sum of such), but not for two factors of unknown sign. factor()
 // distributes a root over every factor it finds, sqrt(-c^2 X) -> I c sqrt(X), which is the
@@ -219,8 +231,8 @@ ex factor_keeping_roots(const ex& p) {
     }
   } stand_ins;
   const ex polynomial = stand_ins(p);
-  if (stand_ins.back.empty()) return GiNaC::factor(p);
-  return GiNaC::factor(polynomial).subs(stand_ins.back);
+  if (stand_ins.back.empty()) return factor_expanded(p);
+  return factor_expanded(polynomial).subs(stand_ins.back);
 }
 
 // factor() factors each explicit factor of a product on its own and multiplies the results;
@@ -283,7 +295,7 @@ ex factored_once(const ex& p) {
     return content * factored(uv->first - uv->second) * factored(uv->first + uv->second);
   }
   // content * q is what factor() gives when q is irreducible (for content 1, p itself).
-  return shown_irreducible(q) ? content * q : GiNaC::factor(p);
+  return shown_irreducible(q) ? content * q : factor_expanded(p);
 }
 }  // namespace
 
