@@ -192,7 +192,7 @@ ex factor_expanded(const ex& p) {
 // factors^exponent as a product where that is true: (a b)^e = a^e b^e for a > 0 (a positive
 // number or symbol, pi, a sum of such), but not for two factors of unknown sign. factor()
 // distributes a root over every factor it finds, sqrt(-c^2 X) -> I c sqrt(X), which is the
-// negative of sqrt(-c^2 X) = c sqrt(-X) where X < 0; so does an integer power, rightly.
+// negative of sqrt(-c^2 X) = c sqrt(-X) where X < 0. An integer power distributes always.
 ex power_of_factors(const ex& factors, const ex& exponent) {
   if (exponent.info(GiNaC::info_flags::integer)) return GiNaC::pow(factors, exponent);
   ex out = 1, unknown_sign = 1;
