@@ -230,8 +230,7 @@ ex factor_keeping_roots(const ex& p) {
       return symbol;
     }
   } stand_ins;
-  const ex polynomial = stand_ins(p);
-  if (stand_ins.back.empty()) return factor_expanded(p);
+  const ex polynomial = stand_ins(p);  // fills stand_ins.back (empty: p has none to stand in)
   return factor_expanded(polynomial).subs(stand_ins.back);
 }
 
