@@ -173,7 +173,7 @@ Computed nutation_limit(const Top& t, bool upper) {
   const ex P = GiNaC::pow(t.phidot, 2) * s2;
   const ex c1 = sym::tidy(-beta * s2 - 2 * u0 * P + 2 * a * t.phidot * s2);
   const ex c2 = sym::tidy(2 * u0 * beta - P - a * a);
-  const ex root = GiNaC::sqrt(sym::simplify(c2 * c2 - 4 * beta * c1));
+  const ex root = sym::simplified_sqrt(sym::simplify(c2 * c2 - 4 * beta * c1));
   // The other limit: the root of beta d^2 + c2 d + c1 with u0 + d in [-1, 1] (the third root of
   // the cubic is beyond u = 1); which one that is, is decided at the values. Written without
   // cancellation (q = -(c2 + sign(c2) root)/2, the roots q/beta and c1/q): (-c2 +- root)/(2 beta)
@@ -196,7 +196,7 @@ Computed nutation_limit(const Top& t, bool upper) {
     return u0n + d >= -1 - kRootSlack && u0n + d <= 1 + kRootSlack;
   };
   const bool plus = in_range(dp) && (!in_range(dm) || std::abs(dp) <= std::abs(dm));
-  const ex d = plus ? d_plus : d_minus;
+  const ex d = sym::tidy(plus ? d_plus : d_minus);
   const double dn = plus ? dp : dm;
   // The other limit at a larger cos (d > 0) is at a smaller angle: then the start is theta_max.
   const bool start_is_max = dn > 0;

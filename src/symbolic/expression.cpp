@@ -570,6 +570,24 @@ GiNaC::ex normal_kept(const GiNaC::ex& e) {
   return known.get(e, [&] { return GiNaC::normal(e); });
 }
 
+namespace {
+// n = s^2 k, for a positive integer n, with the squares of the primes below 1000 in s: GiNaC
+// evaluates the root of a perfect square but leaves sqrt(8) and sqrt(23328) as they are. Bounded,
+// as a decimal typed with many digits can make n large; a larger prime's square stays in k.
+std::pair<GiNaC::numeric, GiNaC::numeric> split_square(GiNaC::numeric n) {
+  GiNaC::numeric s = 1;
+  constexpr int kLargestPrime = 1000;
+  for (int p = 2; p < kLargestPrime && p * p <= n; ++p) {
+    const GiNaC::numeric p2 = p * p;
+    while (GiNaC::irem(n, p2).is_zero()) {
+      s *= p;
+      n = GiNaC::iquo(n, p2);
+    }
+  }
+  return {s, n};
+}
+}  // namespace
+
 GiNaC::ex simplified_sqrt(const GiNaC::ex& e) {
   // factor() works on polynomials: stand symbols in for sin(alpha) etc., and factor numerator
   // and denominator separately. numer_denom() is normal() without the division (see simplify).
@@ -578,33 +596,45 @@ GiNaC::ex simplified_sqrt(const GiNaC::ex& e) {
   const GiNaC::ex nd = GiNaC::lst{normal_nd.op(0).to_rational(functions),
                                   normal_nd.op(1).to_rational(functions)};
   GiNaC::ex outside = 1, inside = 1;
+  // The numbers under the root, gathered (their signs left inside), to come out once at the end:
+  // sqrt(8/75) is 2 sqrt(6)/15, where taking out 8 and 75 apart would leave 2 sqrt(2) sqrt(3)/15.
+  GiNaC::numeric number = 1;
+  const auto take_number = [&](GiNaC::numeric base, const GiNaC::numeric& n, int sign) {
+    // A negative number's sign stays inside, with the sum GiNaC gave the other sign: which of
+    // -4 (-X) and 4 X normal() gives follows GiNaC's run-dependent term order, and the root
+    // is to take 2 out of both alike (one key was printed two ways from run to run).
+    if (base.is_negative()) {
+      if (n.is_odd()) inside *= -1;
+      base = -base;
+    }
+    number *= GiNaC::ex_to<GiNaC::numeric>(GiNaC::pow(base, sign * n));
+  };
   // Moves the even part of each positive factor^n (n = +-exponent) out of the root.
-  auto take = [&](const GiNaC::ex& factor, int sign) {
+  const auto take = [&](const GiNaC::ex& factor, int sign) {
     GiNaC::ex base = factor;
     GiNaC::numeric n = 1;
     if (GiNaC::is_a<GiNaC::power>(factor) && factor.op(1).info(GiNaC::info_flags::posint)) {
       base = factor.op(0);
       n = GiNaC::ex_to<GiNaC::numeric>(factor.op(1));
     }
+    // GiNaC distributes a number over a sum (16 (x + y) is 16 x + 16 y), so factored() cannot
+    // keep a sum's integer content apart: it is taken out here as a number of its own.
+    if (GiNaC::is_a<GiNaC::add>(base) && base.info(GiNaC::info_flags::rational_polynomial)) {
+      const GiNaC::numeric content = base.integer_content();
+      if (!content.is_zero() && content != 1) {
+        take_number(content, n, sign);
+        base = GiNaC::expand(base / content);
+      }
+    }
     if (GiNaC::is_a<GiNaC::numeric>(base) && GiNaC::ex_to<GiNaC::numeric>(base).is_rational() &&
         !GiNaC::ex_to<GiNaC::numeric>(base).is_zero()) {
-      // A negative number's sign stays inside, with the sum GiNaC gave the other sign: which of
-      // -4 (-X) and 4 X normal() gives follows GiNaC's run-dependent term order, and the root
-      // is to take 2 out of both alike (one key was printed two ways from run to run).
-      if (GiNaC::ex_to<GiNaC::numeric>(base).is_negative()) {
-        if (n.is_odd()) inside *= -1;
-        base = -base;
-      }
-      // sqrt(p/q) = sqrt(p q)/q; GiNaC takes square factors out of sqrt of an integer itself.
-      const auto r = GiNaC::ex_to<GiNaC::numeric>(GiNaC::pow(base, n));
-      const GiNaC::ex root = GiNaC::sqrt(GiNaC::ex(r.numer() * r.denom())) / r.denom();
-      outside *= sign > 0 ? root : 1 / root;
+      take_number(GiNaC::ex_to<GiNaC::numeric>(base), n, sign);
     } else if (base.info(GiNaC::info_flags::positive)) {
       const GiNaC::numeric half = GiNaC::iquo(n, 2);
       outside *= GiNaC::pow(base, sign * half);
       inside *= GiNaC::pow(base, sign * (n - 2 * half));
     } else {
-      inside *= GiNaC::pow(factor, sign);
+      inside *= GiNaC::pow(base, sign * n);
     }
   };
   for (const int sign : {1, -1}) {
@@ -615,6 +645,9 @@ GiNaC::ex simplified_sqrt(const GiNaC::ex& e) {
       take(f, sign);
     }
   }
+  // sqrt(p/q) = sqrt(p q)/q.
+  const auto [square_root, rest] = split_square(number.numer() * number.denom());
+  outside *= square_root * GiNaC::sqrt(GiNaC::ex(rest)) / number.denom();
   return (outside * GiNaC::sqrt(inside)).subs(functions);
 }
 

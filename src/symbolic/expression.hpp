@@ -125,7 +125,9 @@ int sign_of(const GiNaC::ex& e, const GiNaC::lst& at, const std::string& field);
 bool is_identically_zero(const GiNaC::ex& e);
 
 /// sqrt(e) with even powers of positive factors and square numeric factors taken out
-/// (sqrt(2*m^2*a^4) -> sqrt(2)*m*a^2), which GiNaC does not do by itself.
+/// (sqrt(2*m^2*a^4) -> sqrt(2)*m*a^2), which GiNaC does not do by itself: of the numerator and
+/// the denominator alike (sqrt(x/(a+b)^4) -> sqrt(x)/(a+b)^2), and of a sum's integer content
+/// (sqrt(16*x^2 + 16) -> 4*sqrt(x^2 + 1)). A factor of unknown sign stays under the root.
 GiNaC::ex simplified_sqrt(const GiNaC::ex& e);
 
 /// GiNaC's normal(e), exactly, with the normal forms of function arguments kept across calls:

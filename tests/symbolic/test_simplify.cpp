@@ -111,3 +111,40 @@ TEST_CASE("normalized() simplifies every entry, a mirrored one once, an unmirror
   REQUIRE(to_text(wide_out(1, 0), table) == "d1*(M - m1)/(M + m1)");
   REQUIRE(to_text(wide_out(0, 1), table) == "(M - m1)/(M + m1)");
 }
+
+TEST_CASE(
+    "simplified_sqrt takes out square numbers, a sum's integer content, a positive denominator's "
+    "square") {
+  const SymbolTable table;
+  const GiNaC::realsymbol x("x"), y("y");
+  // GiNaC distributes 16 over the sum, where factor() cannot find it again as a factor.
+  const ex content = simplified_sqrt(GiNaC::expand(16 * (x * x + y * y)));
+  CHECK(to_text(content, table) == "4*sqrt(x^2 + y^2)");
+  // (4 d1^2 + M^2)^4 expanded below a sum of either sign, as the heavy top's nutation limit has
+  // it: the positive sum's square comes out, the numerator stays under the root.
+  const ex d = 4 * d1 * d1 + M * M;
+  const ex over_d4 = simplified_sqrt((x - y) / GiNaC::expand(GiNaC::pow(d, 4)));
+  CHECK(to_text(over_d4, table) == to_text(GiNaC::sqrt(x - y) / GiNaC::pow(d, 2), table));
+  // A negative content: its sign stays under the root with the sum (imaginary where it is).
+  const ex negative = simplified_sqrt(GiNaC::expand(-8 * (x * x + 1)));
+  CHECK(to_text(negative, table) ==
+        to_text(2 * GiNaC::sqrt(ex(2)) * GiNaC::sqrt(-x * x - 1), table));
+  // GiNaC evaluates the root of a perfect square only: a number's square factors come out.
+  CHECK(to_text(simplified_sqrt(ex(23328) * x * x), table) == "108*sqrt(2)*sqrt(x^2)");
+  CHECK(to_text(simplified_sqrt(ex(8) / 75), table) == to_text(2 * GiNaC::sqrt(ex(6)) / 15, table));
+  // Each is the root it was given, at points of both signs (to 20 digits' rounding).
+  const std::vector<std::pair<ex, ex>> cases{{content, GiNaC::expand(16 * (x * x + y * y))},
+                                             {over_d4, (x - y) / GiNaC::expand(GiNaC::pow(d, 4))},
+                                             {negative, GiNaC::expand(-8 * (x * x + 1))}};
+  constexpr double kTwentyDigits = 1e-15;
+  for (const auto& [root, radicand] : cases) {
+    for (const int xv : {-3, 2}) {
+      const GiNaC::exmap at{{x, xv}, {y, -5}, {d1, 2}, {M, 3}};
+      const ex want = GiNaC::sqrt(radicand.subs(at)).evalf();
+      const double off =
+          GiNaC::ex_to<GiNaC::numeric>(GiNaC::abs(root.subs(at).evalf() - want) / GiNaC::abs(want))
+              .to_double();
+      CHECK(off < kTwentyDigits);
+    }
+  }
+}
