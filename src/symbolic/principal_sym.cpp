@@ -21,6 +21,22 @@ std::vector<std::pair<int, int>> nonzero_products(const GiNaC::matrix& I) {
   return out;
 }
 
+// True if e has a power with an exponent that is not an integer (a root) anywhere.
+bool has_root(const ex& e) {
+  if (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)) return true;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (has_root(e.op(i))) return true;
+  }
+  return false;
+}
+
+// mean + offset, where offset is a root's +- term: one fraction where the root came out whole
+// (a square, as the y-z block's with I_yy = I_zz: m a^2 (pi^2 + 36)/9, not m a^2 (pi^2 + 45)/9 -
+// m a^2, which GiNaC combines by itself only where the mean is a number times the same monomial).
+ex mean_plus(const ex& mean, const ex& offset) {
+  return has_root(offset) ? mean + offset : simplify(mean + offset);
+}
+
 // Roots of the factored polynomial in lambda, if every factor has degree <= 2.
 std::optional<std::vector<ex>> roots_of(const ex& factored, const GiNaC::symbol& lambda) {
   std::vector<ex> roots;
@@ -34,8 +50,8 @@ std::optional<std::vector<ex>> roots_of(const ex& factored, const GiNaC::symbol&
     } else {
       const ex a = f.coeff(lambda, 2), b = f.coeff(lambda, 1), c = f.coeff(lambda, 0);
       const ex root = simplified_sqrt(simplify(b * b - 4 * a * c));
-      r.push_back(simplify(-b / (2 * a)) - root / (2 * a));
-      r.push_back(simplify(-b / (2 * a)) + root / (2 * a));
+      r.push_back(mean_plus(simplify(-b / (2 * a)), -root / (2 * a)));
+      r.push_back(mean_plus(simplify(-b / (2 * a)), root / (2 * a)));
     }
     for (int k = 0; k < multiplicity; ++k) roots.insert(roots.end(), r.begin(), r.end());
     return true;
@@ -138,7 +154,7 @@ SymPrincipal principal_closed_form(const GiNaC::matrix& I, const GiNaC::symbol& 
     const ex mean = simplify((A + B) / 2);
     const ex root = simplified_sqrt(simplify(GiNaC::pow((A - B) / 2, 2) + C * C));
     out.moments = {I(static_cast<unsigned>(out.block_k), static_cast<unsigned>(out.block_k)),
-                   mean - root, mean + root};
+                   mean_plus(mean, -root), mean_plus(mean, root)};
     out.block_angle = GiNaC::atan2(simplify(2 * C), simplify(A - B)) / 2;
     return out;
   }

@@ -69,3 +69,25 @@ TEST_CASE("closed-form routes: diagonal, block, factored, none") {
       from_rows(t, {{"m", "a", "1"}, {"a", "2*m", "a"}, {"1", "a", "3"}}), lambda);
   REQUIRE(none.method == Method::numeric);
 }
+
+TEST_CASE("a moment whose root comes out whole is one fraction, as it is without pi") {
+  // Taylor 10.35 with the mass at (a, 0, 0) moved to (a pi/3, 0, 0): the y-z block's mean is
+  // m a^2 (pi^2 + 45)/9, its root m a^2. GiNaC adds 6 m a^2 - m a^2 by itself, not the form with
+  // pi, which was printed "m a^2 (pi^2 + 45)/9 - m a^2".
+  SymbolTable t;
+  t.declare("m", "m", SymbolSign::positive);
+  t.declare("a", "a", SymbolSign::positive);
+  const std::string yy = "m*a^2*(pi^2 + 45)/9";
+  const auto block = principal_closed_form(
+      from_rows(t, {{"10*m*a^2", "0", "0"}, {"0", yy, "m*a^2"}, {"0", "m*a^2", yy}}),
+      GiNaC::symbol("lambda"));
+  REQUIRE(block.method == Method::block);
+  CHECK(to_text(block.moments[1], t) == "m*a^2*(Pi^2 + 36)/9");
+  CHECK(to_text(block.moments[2], t) == "m*a^2*(Pi^2 + 54)/9");
+  // Where the root stays a root, the moments stay mean -+ root (the keys' forms).
+  const auto rooted = principal_closed_form(
+      from_rows(t, {{"10*m*a^2", "0", "0"}, {"0", "6*m*a^2", "m*a^2"}, {"0", "m*a^2", "m*a^2"}}),
+      GiNaC::symbol("lambda"));
+  REQUIRE(rooted.method == Method::block);
+  CHECK(to_text(rooted.moments[1], t) == "7*m*a^2/2 - m*a^2*sqrt(29)/2");
+}
