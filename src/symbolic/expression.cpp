@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -756,6 +757,32 @@ GiNaC::ex over_one_denominator(const GiNaC::ex& e) {
 }
 }  // namespace
 
+namespace {
+// e with a real symbol standing in for each function in it (sin(alpha), atan2(..)), the same
+// symbol for the same function in every call: then an expression met again is the same
+// polynomial, which tidy() finds among those it has factored (to_rational() makes new symbols
+// each time). back maps the symbols to the functions.
+struct FunctionsAsSymbols : GiNaC::map_function {
+  GiNaC::exmap& back;
+  explicit FunctionsAsSymbols(GiNaC::exmap& b) : back(b) {}
+  GiNaC::ex operator()(const GiNaC::ex& x) override {
+    if (!GiNaC::is_a<GiNaC::function>(x)) return x.map(*this);
+    thread_local std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> symbols;
+    constexpr std::size_t kMaxKept = 4096;  // bounded, as the memos are
+    if (symbols.size() > kMaxKept) symbols.clear();
+    auto found = symbols.find(x);
+    if (found == symbols.end()) found = symbols.emplace(x, GiNaC::realsymbol()).first;
+    back[found->second] = x;
+    return found->second;
+  }
+};
+
+GiNaC::ex functions_as_symbols(const GiNaC::ex& e, GiNaC::exmap& back) {
+  FunctionsAsSymbols f(back);
+  return f(e);
+}
+}  // namespace
+
 GiNaC::ex simplify(const GiNaC::ex& e) {
   // normal() gives numerator and denominator, unique up to a sign; each candidate below is a
   // canonical form of them, and the canonical printer's text does not depend on GiNaC's
@@ -773,7 +800,13 @@ GiNaC::ex simplify(const GiNaC::ex& e) {
   if (has_sin_or_cos(nd)) {
     candidates.push_back(reduced(nd.op(0), false) / reduced(nd.op(1), false));
   }
-  if (!has_function(e)) candidates.push_back(tidy(e));  // factored numerator and denominator
+  if (!has_function(e)) {
+    candidates.push_back(tidy(e));  // factored numerator and denominator
+  } else {
+    // The same with symbols standing in for sin(alpha) etc.: factor() takes polynomials.
+    GiNaC::exmap back;
+    candidates.push_back(tidy(functions_as_symbols(candidates[0], back)).subs(back));
+  }
   // The one with fewest minus signs, then the shortest: cos²α + 1, not 2 − sin²α, and √(3
   // sin²α + 1), not √(4 − 3 cos²α) (the printer writes a sum's positive terms first, so that
   // length alone no longer tells them apart).

@@ -74,9 +74,13 @@ TEST_CASE("simplify reduces by sin^2 + cos^2 = 1 wherever sin or cos occurs, in 
   REQUIRE(text(2 - GiNaC::pow(s, 2)) == "cos(alpha)^2 + 1");
   REQUIRE(text(1 + GiNaC::pow(c, 2)) == "cos(alpha)^2 + 1");
   REQUIRE(text(4 - 3 * GiNaC::pow(c, 2)) == "3*sin(alpha)^2 + 1");
-  // Expanded, not factored: an expression with functions has no factored candidate.
-  REQUIRE(text(GiNaC::pow(M * GiNaC::pow(s, 2) + M * GiNaC::pow(c, 2) - m1, 2)) ==
-          "M^2 + m1^2 - 2*M*m1");
+  // Factored where that is shorter, with functions as without (symbols stand in for them while
+  // factoring): the same polynomial gives the same form whether sin and cos were in it or not,
+  // and a moment about the centre of mass is m1 d1^2 sin^2 (M + m1)/.., not two terms.
+  REQUIRE(text(GiNaC::pow(M * GiNaC::pow(s, 2) + M * GiNaC::pow(c, 2) - m1, 2)) == "(M - m1)^2");
+  REQUIRE(text(GiNaC::pow(M - m1, 2)) == "(M - m1)^2");
+  REQUIRE(text((M * m1 * GiNaC::pow(d1 * s, 2) + m1 * m1 * GiNaC::pow(d1 * s, 2)) / (M + 2 * m1)) ==
+          "d1^2*m1*sin(alpha)^2*(M + m1)/(2*m1 + M)");
   // Without sin or cos: one fraction, cancelled, and factored where that is shorter.
   REQUIRE(text((GiNaC::pow(M, 2) - GiNaC::pow(m1, 2)) / (M + m1)) == "M - m1");
   REQUIRE(text(GiNaC::atan(M) * GiNaC::atan(M) / M) == "atan(M)^2/M");
