@@ -37,6 +37,23 @@ ex mean_plus(const ex& mean, const ex& offset) {
   return has_root(offset) ? mean + offset : simplify(mean + offset);
 }
 
+// The block's moment mean +- root over one denominator, (P +- sqrt(Q))/(2 D), as books write it:
+// the sum of two fractions with a common denominator printed -(P'/(2 D) + sqrt(Q)/(2 D)) where
+// the mean's numerator came negated (the three-atom molecule's moments about its centre).
+ex block_moment(const ex& mean, const ex& root, int sign) {
+  if (!has_root(root)) return mean_plus(mean, sign * root);
+  const ex nd_mean = GiNaC::numer_denom(mean), nd_root = GiNaC::numer_denom(root);
+  const ex d = GiNaC::expand(nd_mean.op(1)), d_root = GiNaC::expand(nd_root.op(1));
+  // numer_denom() gives each denominator up to a sign, as GiNaC's term order fell in this run.
+  int root_sign = sign;
+  if (d_root.is_equal(-d)) {
+    root_sign = -sign;
+  } else if (!d_root.is_equal(d)) {
+    return mean + sign * root;
+  }
+  return GiNaC::expand(nd_mean.op(0) + root_sign * nd_root.op(0)) / d;
+}
+
 // Roots of the factored polynomial in lambda, if every factor has degree <= 2.
 std::optional<std::vector<ex>> roots_of(const ex& factored, const GiNaC::symbol& lambda) {
   std::vector<ex> roots;
@@ -154,7 +171,7 @@ SymPrincipal principal_closed_form(const GiNaC::matrix& I, const GiNaC::symbol& 
     const ex mean = simplify((A + B) / 2);
     const ex root = simplified_sqrt(simplify(GiNaC::pow((A - B) / 2, 2) + C * C));
     out.moments = {I(static_cast<unsigned>(out.block_k), static_cast<unsigned>(out.block_k)),
-                   mean_plus(mean, -root), mean_plus(mean, root)};
+                   block_moment(mean, root, -1), block_moment(mean, root, 1)};
     out.block_angle = GiNaC::atan2(simplify(2 * C), simplify(A - B)) / 2;
     return out;
   }

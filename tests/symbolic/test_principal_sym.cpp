@@ -1,4 +1,6 @@
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
 
 #include "symbolic/canonical_print.hpp"
 #include "symbolic/principal_sym.hpp"
@@ -90,4 +92,29 @@ TEST_CASE("a moment whose root comes out whole is one fraction, as it is without
       GiNaC::symbol("lambda"));
   REQUIRE(rooted.method == Method::block);
   CHECK(to_text(rooted.moments[1], t) == "7*m*a^2/2 - m*a^2*sqrt(29)/2");
+}
+
+TEST_CASE("a block's moment with a root stays a root over the block's one denominator") {
+  // As the three-atom molecule's about its centre of mass: a mean and a root over one sum, 2 (M
+  // + m). Two fractions were printed -(P/(2 (M + m)) + sqrt(Q)/(2 (M + m))), P negated.
+  SymbolTable t;
+  t.declare("M", "M", SymbolSign::positive);
+  t.declare("m", "m", SymbolSign::positive);
+  t.declare("a", "a", SymbolSign::positive);
+  const auto block = principal_closed_form(from_rows(t, {{"m", "0", "0"},
+                                                         {"0", "m*a^2/(M + m)", "m*a/(M + m)"},
+                                                         {"0", "m*a/(M + m)", "3*m/(M + m)"}}),
+                                           GiNaC::symbol("lambda"));
+  REQUIRE(block.method == Method::block);
+  // ((a^2 - 3)/2)^2 + a^2 = (a^4 - 2 a^2 + 9)/4, irreducible over the rationals: the moments
+  // are m (a^2 + 3 -+ sqrt(a^4 - 2 a^2 + 9))/(2 (M + m)).
+  CHECK(to_text(block.moments[1], t) == "(3*m + m*a^2 - m*sqrt(a^4 + 9 - 2*a^2))/(2*(M + m))");
+  CHECK(to_text(block.moments[2], t) == "(3*m + m*a^2 + m*sqrt(a^4 + 9 - 2*a^2))/(2*(M + m))");
+  const GiNaC::lst at = substitution(t, {{"M", 3.0}, {"m", 2.0}, {"a", 1.5}});
+  const double root = std::sqrt(std::pow(1.5, 4) - 2 * 1.5 * 1.5 + 9);
+  constexpr double kRoundings = 8 * std::numeric_limits<double>::epsilon();  // a few operations
+  CHECK_THAT(evaluate(block.moments[1], at, "moment"),
+             Catch::Matchers::WithinRel(2 * (1.5 * 1.5 + 3 - root) / 10, kRoundings));
+  CHECK_THAT(evaluate(block.moments[2], at, "moment"),
+             Catch::Matchers::WithinRel(2 * (1.5 * 1.5 + 3 + root) / 10, kRoundings));
 }
