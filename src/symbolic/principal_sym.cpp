@@ -1,5 +1,6 @@
 #include "symbolic/principal_sym.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "symbolic/expression.hpp"
@@ -30,28 +31,31 @@ bool has_root(const ex& e) {
   return false;
 }
 
-// mean + offset, where offset is a root's +- term: one fraction where the root came out whole
-// (a square, as the y-z block's with I_yy = I_zz: m a^2 (pi^2 + 36)/9, not m a^2 (pi^2 + 45)/9 -
-// m a^2, which GiNaC combines by itself only where the mean is a number times the same monomial).
-ex mean_plus(const ex& mean, const ex& offset) {
-  return has_root(offset) ? mean + offset : simplify(mean + offset);
+// mean - offset and mean + offset, where offset is a root's term: each one fraction where the
+// root came out whole (a square, as the y-z block's with I_yy = I_zz: m a^2 (pi^2 + 36)/9, not
+// m a^2 (pi^2 + 45)/9 - m a^2, which GiNaC combines by itself only where the mean is a number
+// times the same monomial).
+std::array<ex, 2> mean_minus_plus(const ex& mean, const ex& offset) {
+  if (has_root(offset)) return {mean - offset, mean + offset};
+  return {simplify(mean - offset), simplify(mean + offset)};
 }
 
-// The block's moment mean +- root over one denominator, (P +- sqrt(Q))/(2 D), as books write it:
-// the sum of two fractions with a common denominator printed -(P'/(2 D) + sqrt(Q)/(2 D)) where
-// the mean's numerator came negated (the three-atom molecule's moments about its centre).
-ex block_moment(const ex& mean, const ex& root, int sign) {
-  if (!has_root(root)) return mean_plus(mean, sign * root);
+// The block's moments mean -+ root; where the root stays a root, over their one denominator,
+// (P -+ sqrt(Q))/(2 D), as books write them: the sum of two fractions with a common denominator
+// printed -(P'/(2 D) + sqrt(Q)/(2 D)) where the mean's numerator came negated (the three-atom
+// molecule's moments about its centre).
+std::array<ex, 2> block_moments(const ex& mean, const ex& root) {
+  if (!has_root(root)) return mean_minus_plus(mean, root);
   const ex nd_mean = GiNaC::numer_denom(mean), nd_root = GiNaC::numer_denom(root);
   const ex d = GiNaC::expand(nd_mean.op(1)), d_root = GiNaC::expand(nd_root.op(1));
   // numer_denom() gives each denominator up to a sign, as GiNaC's term order fell in this run.
-  int root_sign = sign;
+  ex over_d = nd_root.op(0);  // the root's numerator over the mean's denominator d
   if (d_root.is_equal(-d)) {
-    root_sign = -sign;
+    over_d = -over_d;
   } else if (!d_root.is_equal(d)) {
-    return mean + sign * root;
+    return {mean - root, mean + root};
   }
-  return GiNaC::expand(nd_mean.op(0) + root_sign * nd_root.op(0)) / d;
+  return {GiNaC::expand(nd_mean.op(0) - over_d) / d, GiNaC::expand(nd_mean.op(0) + over_d) / d};
 }
 
 // Roots of the factored polynomial in lambda, if every factor has degree <= 2.
@@ -67,8 +71,9 @@ std::optional<std::vector<ex>> roots_of(const ex& factored, const GiNaC::symbol&
     } else {
       const ex a = f.coeff(lambda, 2), b = f.coeff(lambda, 1), c = f.coeff(lambda, 0);
       const ex root = simplified_sqrt(simplify(b * b - 4 * a * c));
-      r.push_back(mean_plus(simplify(-b / (2 * a)), -root / (2 * a)));
-      r.push_back(mean_plus(simplify(-b / (2 * a)), root / (2 * a)));
+      const auto [minus, plus] = mean_minus_plus(simplify(-b / (2 * a)), root / (2 * a));
+      r.push_back(minus);
+      r.push_back(plus);
     }
     for (int k = 0; k < multiplicity; ++k) roots.insert(roots.end(), r.begin(), r.end());
     return true;
@@ -170,8 +175,9 @@ SymPrincipal principal_closed_form(const GiNaC::matrix& I, const GiNaC::symbol& 
     const ex A = I(p, p), B = I(q, q), C = I(p, q);
     const ex mean = simplify((A + B) / 2);
     const ex root = simplified_sqrt(simplify(GiNaC::pow((A - B) / 2, 2) + C * C));
-    out.moments = {I(static_cast<unsigned>(out.block_k), static_cast<unsigned>(out.block_k)),
-                   block_moment(mean, root, -1), block_moment(mean, root, 1)};
+    const auto [minus, plus] = block_moments(mean, root);
+    out.moments = {I(static_cast<unsigned>(out.block_k), static_cast<unsigned>(out.block_k)), minus,
+                   plus};
     out.block_angle = GiNaC::atan2(simplify(2 * C), simplify(A - B)) / 2;
     return out;
   }
