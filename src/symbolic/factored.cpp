@@ -127,9 +127,6 @@ bool shown_irreducible(const ex& p) {
   return false;
 }
 
-namespace {
-// p = content * q: the content a number times a monomial (each symbol to its lowest power in p),
-// negative when every term of p is, so that q has a positive term (as factor() writes it).
 std::pair<ex, ex> split_content(const ex& p) {
   const Symbols symbols = symbols_of(p);
   GiNaC::exmap ones;
@@ -146,6 +143,7 @@ std::pair<ex, ex> split_content(const ex& p) {
   return {content, GiNaC::expand(p / content)};
 }
 
+namespace {
 // Calls yield(base, exponent) for each explicit factor of e (a power's base and exponent, any
 // other operand to the power 1, a product's number included), as GiNaC's factor() walks it.
 template <typename Yield>

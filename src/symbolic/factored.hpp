@@ -19,11 +19,19 @@
 /// irreducible (reducible, or an unlucky image) goes to factor().
 #include <ginac/ginac.h>
 
+#include <utility>
+
 namespace wobble::sym {
 
 /// True only if `p`, an expanded polynomial in symbols with rational coefficients and two or more
 /// terms, is shown irreducible over Q; false when it is not shown (it may still be).
 bool shown_irreducible(const GiNaC::ex& p);
+
+/// p = content * q for `p` as shown_irreducible() takes it: the content a number times a monomial
+/// (each symbol to its lowest power in p), negative when every term of p is, so that q has a
+/// positive term (as factor() writes it); q expanded. What factor() would take out of p first,
+/// without factoring q.
+std::pair<GiNaC::ex, GiNaC::ex> split_content(const GiNaC::ex& p);
 
 /// GiNaC::factor(p); p itself (expanded, as given) when shown irreducible, without factoring.
 /// factor() would return the same polynomial, but sometimes partly collected in one symbol

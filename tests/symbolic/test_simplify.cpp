@@ -81,6 +81,15 @@ TEST_CASE("simplify reduces by sin^2 + cos^2 = 1 wherever sin or cos occurs, in 
   REQUIRE(text(GiNaC::pow(M - m1, 2)) == "(M - m1)^2");
   REQUIRE(text((M * m1 * GiNaC::pow(d1 * s, 2) + m1 * m1 * GiNaC::pow(d1 * s, 2)) / (M + 2 * m1)) ==
           "d1^2*m1*sin(alpha)^2*(M + m1)/(2*m1 + M)");
+  // What comes out of each sum is its content, a number times a monomial, from the numerator
+  // and the denominator alike; a fraction with pi among its coefficients is factored whole.
+  REQUIRE(text((6 * M * s + 4 * m1 * s) / (M * M + M * m1)) ==
+          "2*sin(alpha)*(2*m1 + 3*M)/(M*(M + m1))");
+  REQUIRE(text(GiNaC::Pi * M * m1 * s + GiNaC::Pi * m1 * m1 * s) == "m1*Pi*sin(alpha)*(M + m1)");
+  // A factor of the denominator that the reduction brings out in the numerator cancels: GiNaC's
+  // gcd took M sin^2 + M cos^2 + m1 for prime to M + m1.
+  REQUIRE(text(d1 * s * (M * GiNaC::pow(s, 2) + M * GiNaC::pow(c, 2) + m1) * (M + 2 * m1) /
+               GiNaC::pow(M + m1, 2)) == "d1*sin(alpha)*(2*m1 + M)/(M + m1)");
   // Without sin or cos: one fraction, cancelled, and factored where that is shorter.
   REQUIRE(text((GiNaC::pow(M, 2) - GiNaC::pow(m1, 2)) / (M + m1)) == "M - m1");
   REQUIRE(text(GiNaC::atan(M) * GiNaC::atan(M) / M) == "atan(M)^2/M");
