@@ -458,6 +458,20 @@ std::pair<std::string, std::string> split_glued_unit(const std::string& s,
   return {number, unit};
 }
 
+// "2*65deg" -> "2*65", "deg": the degree sign of an expression's last number, glued to it above
+// (units_per_entry) as to a lone number's, is the whole entry's unit, as "2*65 deg" alone reads
+// (2*65 in degrees). Not where degrees come earlier too ("360deg - 20deg", below).
+std::pair<std::string, std::string> split_last_degrees(const std::string& s) {
+  constexpr std::string_view kDeg = "deg";
+  if (s.size() <= kDeg.size() + 1 || s.compare(s.size() - kDeg.size(), kDeg.size(), kDeg) != 0)
+    return {s, ""};
+  const std::string number = s.substr(0, s.size() - kDeg.size());
+  if (!std::isdigit(static_cast<unsigned char>(number.back())) ||
+      number.find(kDeg) != std::string::npos)
+    return {s, ""};
+  return {number, std::string(kDeg)};
+}
+
 // Whether an entry is a zero as typed ("0", "-0.0"): a component that needs no unit.
 bool is_zero_literal(const std::string& s) {
   const std::string t = trim(s);
@@ -502,6 +516,13 @@ EntryUnits units_per_entry(const std::string& text, const sym::SymbolTable& tabl
       }
       auto [number, unit] = split_unit(item);
       if (unit.empty()) std::tie(number, unit) = split_glued_unit(item, table);
+      if (unit.empty()) std::tie(number, unit) = split_last_degrees(item);
+      // "360deg - 20deg", "15deg/2": arithmetic on angles in degrees is an angle in radians, as
+      // in an answer of one entry.
+      if (unit.empty() && degrees_joined(item)) {
+        number = degrees_in_expression(item, [](const std::string&) { return false; });
+        unit = "rad";
+      }
       // "2 d^2 m" where m is a mass: a tail of the problem's symbols after an expression in
       // them is a factor, as after a whole answer (read_answer), not metres.
       if (!unit.empty() && has_identifier_of(number, table) && all_identifiers_of(unit, table))

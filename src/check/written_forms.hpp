@@ -158,6 +158,11 @@ std::string without_colon_labels(const std::string& typed);
 /// `at` itself if none starts there.
 std::size_t number_end(const std::string& s, std::size_t at);
 
+/// Whether `s` is arithmetic on angles in degrees: two numbers in degrees or more joined by a
+/// '+' or '-' ("15 deg - 7.63 deg"), or one divided by a number ("15 deg/2"); and no list or
+/// vector (no comma, semicolon or square or curly bracket).
+bool degrees_joined(const std::string& s);
+
 /// "phi + (90*pi/180)" for "phi + 90 deg": in an expression, a text that names one of the
 /// problem's symbols or a function (`in_expression`), each plain number in degrees ("90 deg",
 /// "90deg", as "90°" arrives here) as radians, the SI of an expression ("(φ + 90°, θ, ψ − 90°)",

@@ -2327,6 +2327,25 @@ TEST_CASE("a rotation matrix as a product of turns about the axes, multiplied ou
                       Catch::Contains("5 turns in a product; at most 4"));
 }
 
+TEST_CASE(
+    "a vector's entry in degrees may be arithmetic on its angle, as a one-number answer may") {
+  const Fixture euler("euler-angles");  // Goldstein's z-x-z angles: (130°, 30°, −20°)
+  for (const char* typed :
+       {"(2*65°, 30°, -20°)", "(2·65°, 30°, −20°)", "(130°, 60°/2, -20°)", "(130°, 30°, 10° - 30°)",
+        "(130°, 30°, 340° − 360°)", "[2*65 deg, 30 deg, -20 deg]"}) {
+    INFO(typed);
+    REQUIRE(euler.check("angles_zxz", typed).line == "correct: angles_zxz");
+  }
+  // Worked, not dropped: an entry a degree off is judged so.
+  REQUIRE(euler.check("angles_zxz", "(2*65°, 30°, 10° - 31°)").feedback ==
+          std::vector<std::string>{"ψ is off by 5%"});
+  REQUIRE(euler.check("angles_zxz", "(2*66°, 30°, -20°)").feedback ==
+          std::vector<std::string>{"φ is off by 1.54%"});
+  // A bare number beside them still needs its unit.
+  REQUIRE_THROWS_WITH(euler.check("angles_zxz", "(2*65°, 0.5236, -20°)"),
+                      Catch::Contains("the entry \"0.5236\" has no unit where another has deg"));
+}
+
 TEST_CASE("Euler angles are the same up to whole turns, and named as the question names them") {
   // Goldstein's z-x-z angles here: (130°, 30°, −20°), φ and ψ in (−180°, 180°].
   const Fixture euler("euler-angles");
