@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <utility>
+#include <vector>
 
 #include "core/characters.hpp"
 #include "symbolic/dimension_check.hpp"
+#include "symbolic/expression_guard.hpp"
 #include "symbolic/glued_numbers.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
@@ -32,6 +35,79 @@ void refuse_unknown_unit(const SymbolTable& table, const std::string& ascii,
   if (!reads(table, before, field) || reads(table, tail, field)) return;
   (void)parse_unit(tail, field);  // throws its error
 }
+
+bool name_start(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+}
+bool name_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+// "(10deg)*(pi/3)", "2*(20 cm)": a unit inside the expression, where a file takes one only after
+// the whole value; said so, not "undefined symbol 'deg'", and where the unit multiplies all of
+// it (not "90deg - alpha", alpha in rad) with the value written so: "((10)*(pi/3)) deg".
+// Nothing where a name inside is neither a unit nor the table's, or two units are.
+void refuse_unit_inside(const SymbolTable& table, const std::string& ascii, const std::string& text,
+                        const std::string& field, const std::string& si_unit) {
+  std::string unit;
+  std::vector<std::pair<std::size_t, std::size_t>> spans;  // each of its names: start, end
+  for (std::size_t i = 0; i < ascii.size();) {
+    const auto digit = [&](std::size_t k) {
+      return k < ascii.size() && std::isdigit(static_cast<unsigned char>(ascii[k]));
+    };
+    if (digit(i) || ascii[i] == '.') {  // a number, with its exponent: "1e5" names nothing
+      while (digit(i) || (i < ascii.size() && ascii[i] == '.')) ++i;
+      const std::size_t sign = i + 1 < ascii.size() && (ascii[i + 1] == '+' || ascii[i + 1] == '-');
+      if (i < ascii.size() && (ascii[i] == 'e' || ascii[i] == 'E') && digit(i + 1 + sign)) {
+        i += 1 + sign;
+        while (digit(i)) ++i;
+      }
+      continue;
+    }
+    if (!name_start(ascii[i])) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < ascii.size() && name_char(ascii[j])) ++j;
+    const std::string name = ascii.substr(i, j - i);
+    if (!table.contains(name) && !is_function_name(name) && name != "pi" && name != "Pi") {
+      if (!is_unit(name) || (!unit.empty() && name != unit)) return;
+      unit = name;
+      spans.emplace_back(i, j);
+    }
+    i = j;
+  }
+  if (unit.empty()) return;
+  const std::string said = field + ": cannot read \"" + printable(text, 40) + "\": '" + unit +
+                           "' is a unit inside the expression; a unit goes once, after the "
+                           "whole value";
+  // The unit as a symbol, written as a factor where it stands against a number or a bracket.
+  SymbolTable with_unit = table;
+  const GiNaC::ex u = with_unit.declare(unit, unit, SymbolSign::positive);
+  std::string starred, stripped;
+  std::size_t from = 0;
+  for (const auto& [start, end] : spans) {
+    std::size_t before = start;
+    while (before > from && ascii[before - 1] == ' ') --before;
+    const bool factor = before > 0 && (name_char(ascii[before - 1]) || ascii[before - 1] == ')');
+    starred += ascii.substr(from, before - from) + (factor ? "*" : "") + unit;
+    stripped += ascii.substr(from, before - from) + (factor ? "" : "1");
+    from = end;
+  }
+  starred += ascii.substr(from);
+  stripped += ascii.substr(from);
+  bool whole = false;  // the unit multiplies all of it, and the value reads without it
+  try {
+    const GiNaC::ex value = GiNaC::normal(with_unit.parse(starred, field) / u);
+    (void)table.parse(stripped, field);
+    whole = !value.has(u) && unit_fits(parse_unit(unit, field),
+                                       si_unit.empty() ? Unit{} : parse_unit(si_unit, field));
+  } catch (const InputError&) {  // not so written: said without it
+  }
+  throw ExpressionError(said +
+                        (whole ? ": \"(" + stripped + ") " + unit + "\"" : " (\"(90 - 15) deg\")"));
+}
 }  // namespace
 
 std::string quantity_expression(const SymbolTable& table, const std::string& text,
@@ -46,11 +122,15 @@ std::string quantity_expression(const SymbolTable& table, const std::string& tex
     const auto splits = value_unit_splits(ascii);
     if (splits.empty()) {
       refuse_unknown_unit(table, ascii, field);
+      refuse_unit_inside(table, ascii, text, field, si_unit);
       throw;
     }
     const auto split = std::find_if(splits.begin(), splits.end(),
                                     [&](const auto& s) { return reads(table, s.first, field); });
-    if (split == splits.end()) throw;
+    if (split == splits.end()) {
+      refuse_unit_inside(table, ascii, text, field, si_unit);
+      throw;
+    }
     const auto& [value, unit] = *split;
     const Unit given = parse_unit(unit, field);
     const Unit wanted = si_unit.empty() ? Unit{} : parse_unit(si_unit, field);

@@ -141,6 +141,40 @@ TEST_CASE("a quantity's dimension follows from its parameters' units, and anothe
   CHECK_NOTHROW(sym::parse_quantity(plain, "m", "body.masses[0].at[0]", "m"));
 }
 
+TEST_CASE("a unit inside a file's expression is said to go once, after the whole value") {
+  using Catch::Contains;
+  using Catch::EndsWith;
+  const Problem p = load_problem(test::write_file("load/inside.toml", kGood));  // m kg, alpha rad
+  const sym::SymbolTable table = p.symbol_table();
+  const auto error = [&](const std::string& text, const std::string& si_unit) -> std::string {
+    try {
+      (void)sym::parse_quantity(table, text, "initial.euler[1]", si_unit);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  // Where the unit multiplies all of it, with the value so written, which then reads.
+  CHECK(error("(10deg)*(pi/3)", "rad") ==
+        "initial.euler[1]: cannot read \"(10deg)*(pi/3)\": 'deg' is a unit inside the "
+        "expression; a unit goes once, after the whole value: \"((10)*(pi/3)) deg\"");
+  CHECK(error("((10)*(pi/3)) deg", "rad").empty());
+  CHECK_THAT(error("2*(20 cm) + 5cm", "m"), EndsWith(": \"(2*(20) + 5) cm\""));
+  CHECK(error("(2*(20) + 5) cm", "m").empty());
+  CHECK_THAT(error("(0.5 kg)*cos(alpha)", "kg"), EndsWith(": \"((0.5)*cos(alpha)) kg\""));
+  // Where it does not (alpha is in rad), or is of another kind than the field's: said without.
+  CHECK_THAT(error("90deg - alpha", "rad"),
+             EndsWith("'deg' is a unit inside the expression; a unit goes once, after the whole "
+                      "value (\"(90 - 15) deg\")"));
+  CHECK_THAT(error("(20 cm)*2", "kg"), EndsWith("after the whole value (\"(90 - 15) deg\")"));
+  // A name that is neither a unit nor a parameter leaves the reader's own message, as do two
+  // units.
+  CHECK_THAT(error("(10deg)*q", "rad"), Contains("undefined symbol"));
+  CHECK_THAT(error("(2 kg)*(3 cm)", "kg m"), Contains("undefined symbol"));
+  // A parameter named like a unit is the parameter: m here is the mass, not the metre.
+  CHECK(error("2*m", "kg").empty());
+}
+
 TEST_CASE("a range's bounds may carry a unit, as the default does") {
   const Problem p = load_problem(test::write_file(
       "load/range_units.toml", replaced(kGood, "range = \"[0, pi/2)\"", "range = \"[0, 90deg)\"")));
