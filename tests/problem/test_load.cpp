@@ -64,6 +64,17 @@ std::string load_error(const std::string& content) {
   FAIL("no error for:\n" << content);
   return "";
 }
+
+// What parse_quantity says of `text` as `field` in `si_unit`; "" where it reads.
+std::string quantity_error(const sym::SymbolTable& table, const std::string& text,
+                           const std::string& field, const std::string& si_unit) {
+  try {
+    (void)sym::parse_quantity(table, text, field, si_unit);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
 }  // namespace
 
 TEST_CASE("a good file loads with every field") {
@@ -94,13 +105,8 @@ TEST_CASE("a quantity's dimension follows from its parameters' units, and anothe
   using Catch::Contains;
   const Problem p = load_problem(test::write_file("load/dims.toml", kGood));
   const sym::SymbolTable table = p.symbol_table();
-  const auto error = [&](const std::string& text, const std::string& si_unit) -> std::string {
-    try {
-      (void)sym::parse_quantity(table, text, "body.masses[0].mass", si_unit);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
+  const auto error = [&](const std::string& text, const std::string& si_unit) {
+    return quantity_error(table, text, "body.masses[0].mass", si_unit);
   };
   // alpha is an angle, a pure number: m cos(alpha) is a mass; 200 g, 0.05 and 2 pi name no
   // parameter, so their unit, not written, is not told.
@@ -146,13 +152,8 @@ TEST_CASE("a unit inside a file's expression is said to go once, after the whole
   using Catch::EndsWith;
   const Problem p = load_problem(test::write_file("load/inside.toml", kGood));  // m kg, alpha rad
   const sym::SymbolTable table = p.symbol_table();
-  const auto error = [&](const std::string& text, const std::string& si_unit) -> std::string {
-    try {
-      (void)sym::parse_quantity(table, text, "initial.euler[1]", si_unit);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
+  const auto error = [&](const std::string& text, const std::string& si_unit) {
+    return quantity_error(table, text, "initial.euler[1]", si_unit);
   };
   // Where the unit multiplies all of it, with the value so written, which then reads.
   CHECK(error("(10deg)*(pi/3)", "rad") ==
