@@ -12,11 +12,20 @@
 /// A table without dimensions (SymbolTable::set_dimension) tells nothing.
 #include <ginac/ginac.h>
 
+#include <array>
+#include <optional>
 #include <string>
 
 #include "symbolic/expression.hpp"
 
 namespace wobble::sym {
+
+/// The dimension of `e` (powers of kg, m, s) read from its form, as refuse_other_dimension takes
+/// it before evaluating anything: a symbol's own; a number's none in a product; the sum of a
+/// product's; a power's where the exponent makes whole powers; a sum's where every term names a
+/// symbol and all have the same; a function's none where its arguments have none (abs its
+/// argument's, atan2 two alike). nullopt anywhere else, or for a table without dimensions.
+std::optional<std::array<int, 3>> dimension_by_form(const SymbolTable& table, const GiNaC::ex& e);
 
 /// @throws ExpressionError naming `field` and `text` (the quantity as written) where `e`, or a
 ///   term of its sum, has a dimension other than `si_unit`'s ("kg", "rad/s"; "" a pure number),

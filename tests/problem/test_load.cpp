@@ -4,7 +4,9 @@
 #include "problem/field_lines.hpp"
 #include "problem/load.hpp"
 #include "problem/values.hpp"
+#include "symbolic/dimension_check.hpp"
 #include "symbolic/quantity.hpp"
+#include "symbolic/units.hpp"
 #include "temp_files.hpp"
 
 using namespace wobble;
@@ -145,6 +147,39 @@ TEST_CASE("a quantity's dimension follows from its parameters' units, and anothe
   sym::SymbolTable plain;
   plain.declare("m", "m", sym::SymbolSign::positive);
   CHECK_NOTHROW(sym::parse_quantity(plain, "m", "body.masses[0].at[0]", "m"));
+}
+
+TEST_CASE("a quantity's dimension read from its form is the one its value scales with") {
+  // What the form tells is taken without evaluating; asked for another unit, the probe (which
+  // evaluates the quantity as the units' sizes change) must find the same dimension.
+  const Problem p = load_problem(test::write_file("load/form.toml", kGood));  // m kg, alpha rad
+  const sym::SymbolTable table = p.symbol_table();
+  const std::vector<std::pair<std::string, std::string>> told{
+      {"2*m", "kg"},
+      {"m*cos(alpha)^2 + m/3", "kg"},
+      {"sqrt(m^2)*abs(m)", "kg^2"},
+      {"-pi*m^3/alpha", "kg^3"},
+      {"atan2(m*cos(alpha), m) + alpha", ""},
+      {"exp(-alpha)/m", "1/kg"},
+  };
+  for (const auto& [text, unit] : told) {
+    INFO(text);
+    const GiNaC::ex e = sym::parse_quantity(table, text, "body.masses[0].mass", unit);
+    const auto form = sym::dimension_by_form(table, e);
+    Unit expected;
+    if (!unit.empty()) expected = parse_unit(unit, "unit");
+    REQUIRE(form == expected.dim);
+    REQUIRE_THAT(quantity_error(table, text, "body.masses[0].mass", "m^5"),
+                 Catch::Contains(unit.empty() ? "is a pure number by its parameters' units"
+                                              : "is in " + si_unit_text(expected) + " ("));
+  }
+  // Where the form does not tell (a bare number in a sum, a half power, a function of a mass),
+  // the probe decides, as before.
+  for (const std::string text : {"m + 0.05", "sqrt(m)", "m*exp(m)"}) {
+    INFO(text);
+    REQUIRE_FALSE(sym::dimension_by_form(table, table.parse(text, "x")));
+  }
+  REQUIRE(quantity_error(table, "m + 0.05", "body.masses[0].mass", "kg").empty());
 }
 
 TEST_CASE("a unit inside a file's expression is said to go once, after the whole value") {
