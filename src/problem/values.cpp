@@ -13,6 +13,7 @@
 
 #include "core/characters.hpp"
 #include "symbolic/glued_numbers.hpp"
+#include "symbolic/quantity.hpp"
 #include "symbolic/unicode_notation.hpp"
 #include "symbolic/units.hpp"
 
@@ -124,6 +125,8 @@ double one_value(const Parameter& p, const std::string& side, const std::string&
     if (looks_like_decimal_comma(t)) {
       throw InputError(field + ": '" + text + "' is not a number (" + kDecimalCommaHint + ")");
     }
+    // "90deg + 14.5deg": as in a file, "(90 + 14.5) deg".
+    sym::refuse_unit_inside(sym::SymbolTable{}, sym::to_ascii(t), text, field, p.unit);
     throw InputError(field + ": '" + text + "' is not a number" +
                      (p.is_angle()     ? " (an angle: radians, or degrees as 30deg)"
                       : p.unit.empty() ? ""

@@ -43,10 +43,10 @@ bool name_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
 
-// "(10deg)*(pi/3)", "2*(20 cm)": a unit inside the expression, where a file takes one only after
-// the whole value; said so, not "undefined symbol 'deg'", and where the unit multiplies all of
-// it (not "90deg - alpha", alpha in rad) with the value written so: "((10)*(pi/3)) deg".
-// Nothing where a name inside is neither a unit nor the table's, or two units are.
+}  // namespace
+
+// Said so, not "undefined symbol 'deg'"; with the value written where the unit multiplies all of
+// it (not "90deg - alpha", alpha in rad).
 void refuse_unit_inside(const SymbolTable& table, const std::string& ascii, const std::string& text,
                         const std::string& field, const std::string& si_unit) {
   std::string unit;
@@ -108,8 +108,6 @@ void refuse_unit_inside(const SymbolTable& table, const std::string& ascii, cons
   throw ExpressionError(said +
                         (whole ? ": \"(" + stripped + ") " + unit + "\"" : " (\"(90 - 15) deg\")"));
 }
-}  // namespace
-
 std::string quantity_expression(const SymbolTable& table, const std::string& text,
                                 const std::string& field, const std::string& si_unit) {
   const std::string ascii = numbers_times_constants(to_ascii(text));

@@ -22,9 +22,18 @@ namespace wobble::sym {
 /// @throws ExpressionError naming `field`: an expression that does not read and has no unit
 ///   after it (the parser's own message), a unit of another dimension ("'2 m' is in m (length);
 ///   it must be in s (time)"), a word after a value that is no unit ("cannot read the unit
-///   'parsecs'").
+///   'parsecs'"), a unit inside the expression (refuse_unit_inside).
 GiNaC::ex parse_quantity(const SymbolTable& table, const std::string& text,
                          const std::string& field, const std::string& si_unit);
+
+/// @throws ExpressionError naming `field` and `text` (as written; `ascii` is it read as ASCII)
+///   where one unit stands inside the expression, "(10deg)*(pi/3)", a file and --set taking one
+///   only after the whole value: "'deg' is a unit inside the expression; a unit goes once, after
+///   the whole value", with the value so written ("((10)*(pi/3)) deg") where the unit multiplies
+///   all of it and is of `si_unit`'s kind. Nothing where a name in it is neither a unit nor one
+///   of `table`'s, or two units are.
+void refuse_unit_inside(const SymbolTable& table, const std::string& ascii, const std::string& text,
+                        const std::string& field, const std::string& si_unit);
 
 /// The same quantity as ASCII expression text in SI, for a caller that builds a larger
 /// expression from it (a problem's motion turned into a scene's): the text itself when it is an

@@ -148,6 +148,15 @@ TEST_CASE("values: each kind of bad value is named") {
                       Catch::Contains("outside its range [0, pi/2)"));
   REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "", "--set alpha"),
                       Catch::Contains("not a number"));
+  // A unit inside arithmetic, as in a file: the value so written where the unit multiplies all.
+  REQUIRE_THROWS_WITH(parse_parameter_value(angle(), "30deg + 14.5deg", "--set alpha"),
+                      Catch::Equals("--set alpha: cannot read \"30deg + 14.5deg\": 'deg' is a unit "
+                                    "inside the expression; a unit goes once, after the whole "
+                                    "value: \"(30 + 14.5) deg\""));
+  REQUIRE_THAT(parse_parameter_value(angle(), "(30 + 14.5) deg", "--set alpha"),
+               Catch::Matchers::WithinULP(44.5 * M_PI / 180, 1));
+  REQUIRE_THROWS_WITH(parse_parameter_value(mass(), "2 kg + 300 g", "--set m"),
+                      Catch::Contains("'2 kg + 300 g' is not a number"));
 }
 
 TEST_CASE("a percentage is the fraction it says") {
