@@ -97,12 +97,16 @@ void refuse_unit_inside(const SymbolTable& table, const std::string& ascii, cons
   }
   starred += ascii.substr(from);
   stripped += ascii.substr(from);
+  // Each term divided by the unit is free of it, as GiNaC writes a product (no normal() or
+  // expand(), which would multiply out (M + 2 kg)^150): a term that is not so is no multiple.
   bool whole = false;  // the unit multiplies all of it, and the value reads without it
   try {
-    const GiNaC::ex value = GiNaC::normal(with_unit.parse(starred, field) / u);
+    const GiNaC::ex e = with_unit.parse(starred, field);
+    const auto multiple = [&](const GiNaC::ex& term) { return !(term / u).has(u); };
+    whole = GiNaC::is_a<GiNaC::add>(e) ? std::all_of(e.begin(), e.end(), multiple) : multiple(e);
     (void)table.parse(stripped, field);
-    whole = !value.has(u) && unit_fits(parse_unit(unit, field),
-                                       si_unit.empty() ? Unit{} : parse_unit(si_unit, field));
+    whole = whole && unit_fits(parse_unit(unit, field),
+                               si_unit.empty() ? Unit{} : parse_unit(si_unit, field));
   } catch (const InputError&) {  // not so written: said without it
   }
   throw ExpressionError(said +
