@@ -243,7 +243,9 @@ std::optional<std::array<int, 3>> by_form(const SymbolTable& table, const Dimens
     Powers out{};
     for (std::size_t k = 0; k < 3; ++k) {
       const GiNaC::numeric power = exponent * (*base)[k];
-      if (!power.is_integer()) return std::nullopt;
+      // Far past any unit's power (and int's range, which to_int() would leave undefined).
+      constexpr int kLargestPower = 1000;
+      if (!power.is_integer() || GiNaC::abs(power) > kLargestPower) return std::nullopt;
       out[k] = power.to_int();
     }
     return out;
