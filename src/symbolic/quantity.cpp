@@ -42,7 +42,6 @@ bool name_start(char c) {
 bool name_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
-
 }  // namespace
 
 // Said so, not "undefined symbol 'deg'"; with the value written where the unit multiplies all of
@@ -109,9 +108,14 @@ void refuse_unit_inside(const SymbolTable& table, const std::string& ascii, cons
                                si_unit.empty() ? Unit{} : parse_unit(si_unit, field));
   } catch (const InputError&) {  // not so written: said without it
   }
+  // The value so written fits on the line, as the text does (40 characters).
+  constexpr std::size_t kLongestShown = 60;
+  whole = whole && stripped.size() <= kLongestShown;
   throw ExpressionError(said +
-                        (whole ? ": \"(" + stripped + ") " + unit + "\"" : " (\"(90 - 15) deg\")"));
+                        (whole ? ": \"(" + printable(stripped, kLongestShown) + ") " + unit + "\""
+                               : " (\"(90 - 15) deg\")"));
 }
+
 std::string quantity_expression(const SymbolTable& table, const std::string& text,
                                 const std::string& field, const std::string& si_unit) {
   const std::string ascii = numbers_times_constants(to_ascii(text));
