@@ -802,25 +802,9 @@ GiNaC::ex with_content_out(const GiNaC::ex& num, const GiNaC::ex& den) {
     return content * rest;
   };
   // Reducing sin^2 + cos^2 may leave a factor of the denominator in the numerator (the sum of
-  // the masses): each of its irreducible factors that is a sum is divided out of the numerator
-  // as often as it goes, exact divisions in place of a gcd (which took as much as the
-  // irreducibility proofs saved); a monomial in common cancels by itself.
-  GiNaC::ex numerator = n, denominator = 1;
-  const GiNaC::ex factors = factored(d);
-  for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(factors) ? factors.nops() : 1); ++i) {
-    const GiNaC::ex f = GiNaC::is_a<GiNaC::mul>(factors) ? factors.op(i) : factors;
-    const bool power = GiNaC::is_a<GiNaC::power>(f);
-    const GiNaC::ex base = power ? f.op(0) : f;
-    int exponent = power ? GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int() : 1;
-    GiNaC::ex quotient;
-    while (exponent > 0 && GiNaC::is_a<GiNaC::add>(base) &&
-           GiNaC::divide(numerator, base, quotient)) {
-      numerator = quotient;
-      --exponent;
-    }
-    denominator *= GiNaC::pow(base, exponent);
-  }
-  return (content_out(GiNaC::expand(numerator)) / denominator).subs(back);
+  // the masses), which the exact divisions find.
+  const auto [numerator, denominator] = sums_divided_out(n, d);
+  return (content_out(numerator) / denominator).subs(back);
 }
 }  // namespace
 

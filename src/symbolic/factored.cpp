@@ -302,4 +302,18 @@ ex factored(const ex& p) {
   return known.get(p, [&] { return factored_once(p); });
 }
 
+std::pair<ex, ex> sums_divided_out(const ex& numerator, const ex& denominator) {
+  ex left = numerator, below = 1;
+  for_each_factor(factored(denominator), [&](const ex& base, const ex& exponent) {
+    int times = GiNaC::ex_to<GiNaC::numeric>(exponent).to_int();  // a polynomial's: 1, 2, ..
+    ex quotient;
+    while (times > 0 && GiNaC::is_a<GiNaC::add>(base) && GiNaC::divide(left, base, quotient)) {
+      left = quotient;
+      --times;
+    }
+    below *= GiNaC::pow(base, times);
+  });
+  return {GiNaC::expand(left), below};
+}
+
 }  // namespace wobble::sym

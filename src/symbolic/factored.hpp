@@ -39,4 +39,12 @@ std::pair<GiNaC::ex, GiNaC::ex> split_content(const GiNaC::ex& p);
 /// factored one explicit factor at a time, as factor() does, each through factored().
 GiNaC::ex factored(const GiNaC::ex& p);
 
+/// numerator / denominator, polynomials over Q, as {numerator, denominator} with each factor of
+/// the denominator that is a sum (factored()'s) divided out of the numerator as often as it
+/// divides it exactly: the sums the two share, found without a gcd (numer_denom()'s cost the
+/// three-atom molecule's solve as much as simplify() saved by not proving sums irreducible). A
+/// monomial the two share is left to GiNaC, which cancels it by itself in the quotient.
+std::pair<GiNaC::ex, GiNaC::ex> sums_divided_out(const GiNaC::ex& numerator,
+                                                 const GiNaC::ex& denominator);
+
 }  // namespace wobble::sym
