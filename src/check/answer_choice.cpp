@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "check/inequality.hpp"
+#include "check/submission.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 
@@ -55,6 +56,14 @@ std::string answer_meant(const Context& ctx, const std::string& part_id, const s
   if (part == ctx.key.parts.end() || part->answers.size() < 2) return "";
   if (const std::string label = label_of(text); !label.empty()) {
     const std::string named = name_in_key(ctx.key, label);
+    for (const auto& a : part->answers) {
+      if (a.name == named) return a.name;
+    }
+  }
+  // "omega3_min 100 rad/s": one of the part's names before a number with a space between labels
+  // it (before a name, "omega3 m g l", the word may be a factor).
+  if (const auto spaced = spaced_answer_line(text); spaced && starts_as_number(spaced->answer)) {
+    const std::string named = name_in_key(ctx.key, spaced->name);
     for (const auto& a : part->answers) {
       if (a.name == named) return a.name;
     }

@@ -1280,6 +1280,12 @@ Verdict judge(const Context& ctx, const Answer& a, const std::string& text,
   const auto labelled = answer_line(text);
   if (says_none(text) || (labelled && says_none(labelled->answer)))
     return {false, "incorrect: " + a.name + " exists at these values", {}};
+  // "omega3_min 118.8 rad/s": the answer's own name before it with only a space between is its
+  // label, as in "omega3_min = 118.8 rad/s" (the answer times itself is no answer).
+  if (const auto spaced = spaced_answer_line(text);
+      spaced && name_in_key(ctx.key, spaced->name) == a.name) {
+    return judge(ctx, a, spaced->name + " = " + spaced->answer, options);
+  }
   // "7.2 × 10−4 kg m2": read as written, 7.2 × 6; the verdict says so, and whether the power
   // of ten it lost would be right. Where the text reads only with the power, the refusal says
   // how to write it.

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <sstream>
+#include <string_view>
 
 #include "check/absent_answer.hpp"
 #include "check/answer_choice.hpp"
@@ -55,11 +57,19 @@ bool is_part_heading(const std::string& text) {
   return word && is_part_id(t);
 }
 
-// NAME = ANSWER or NAME: ANSWER; comments, part headings and blank lines give nothing.
-std::optional<Line> read_line(const std::string& raw, int number) {
+// Whether a word names one of the key's answers (as a line's first word before a space).
+using NamesAnswer = std::function<bool(const std::string&)>;
+
+// NAME = ANSWER or NAME: ANSWER, or NAME ANSWER where `names_answer` says the word names one;
+// comments, part headings and blank lines give nothing.
+std::optional<Line> read_line(const std::string& raw, int number, const NamesAnswer& names_answer) {
   const std::string text = trim(without_comments(raw));
   if (text.empty() || is_part_heading(text)) return {};
   if (const auto named = answer_line(text)) return Line{number, named->name, named->answer};
+  if (const auto spaced = names_answer ? spaced_answer_line(text) : std::nullopt;
+      spaced && names_answer(spaced->name)) {
+    return Line{number, spaced->name, spaced->answer};
+  }
   return Line{number, without_part_mark(text), ""};
 }
 
@@ -110,28 +120,31 @@ std::string submission_lines_text(const std::string& bytes) {
   return out;
 }
 
-std::vector<Line> read_lines(const std::string& bytes) {
+std::vector<Line> read_lines(const std::string& bytes, const NamesAnswer& names_answer = {}) {
   if (bytes.size() > kMaxSubmissionBytes) {
     throw InputError(fmt::format("--answers: the submission has {} bytes; at most {} are read",
                                  bytes.size(), kMaxSubmissionBytes));
   }
   const std::string text = submission_lines_text(bytes);
-  std::vector<Line> out;
+  std::vector<std::string> raws;
   std::istringstream in(text);
-  std::string raw;
-  int number = 0;
-  while (std::getline(in, raw)) {
-    auto line = read_line(raw, ++number);
+  for (std::string raw; std::getline(in, raw);) raws.push_back(raw);
+  std::vector<Line> out;
+  for (std::size_t at = 0; at < raws.size(); ++at) {
+    auto line = read_line(raws[at], static_cast<int>(at) + 1, names_answer);
     if (!line) continue;
-    // A matrix over several lines, as NumPy prints one: while a list's bracket is open the
-    // next lines continue the answer (a blank line, or the limit, ends it as it stands).
-    for (int more = 1; list_left_open(line->answer) && more < kMostAnswerLines; ++more) {
-      std::string next;
-      if (!std::getline(in, next)) break;
-      ++number;
-      next = trim(without_comments(next));
-      if (next.empty()) break;
+    // A matrix over several lines: while a list's bracket is open (as NumPy prints one), or
+    // while rows in brackets follow a row (as wobble's key prints one, its unit after the
+    // last), the next lines continue the answer. A blank line, or the limit, ends it.
+    for (int more = 1; more < kMostAnswerLines && at + 1 < raws.size(); ++more) {
+      const std::string next = trim(without_comments(raws[at + 1]));
+      const std::string answer = trim(line->answer);
+      const bool open = list_left_open(answer);
+      const bool next_row = !answer.empty() && answer.back() == ']' && !next.empty() &&
+                            next.front() == '[' && !answer_line(next);
+      if (next.empty() || !(open || next_row)) break;
       line->answer += "\n" + next;
+      ++at;
     }
     out.push_back(*line);
   }
@@ -158,6 +171,54 @@ std::optional<NamedAnswer> answer_line(const std::string& line) {
   const std::size_t answer_at = text.find_first_not_of("=: \t", at + length);
   return NamedAnswer{name, answer_at == std::string::npos ? "" : text.substr(answer_at),
                      text.substr(at, length)};
+}
+
+namespace {
+// What may follow a factor in an expression, so that a word before it is no label: an operator
+// ("*", "/", "^", "·", "×", "⋅"), a sign with a space after it ("ω3 − 3"), or a closing bracket
+// or separator.
+bool goes_on_as_expression(const std::string& rest) {
+  for (const char* op :
+       {"*", "/", "^", "·", "×", "⋅", "∙", ")", "]", "}", ",", ";", "!", "'", "′"}) {
+    if (rest.rfind(op, 0) == 0) return true;
+  }
+  for (const char* sign : {"+", "-", "−"}) {
+    const std::size_t n = std::char_traits<char>::length(sign);
+    if (rest.rfind(sign, 0) == 0 && (rest.size() == n || rest[n] == ' ' || rest[n] == '\t'))
+      return true;
+  }
+  return false;
+}
+
+// A relation, "E < 8 J", "θ ∈ [30°, 44.7°]", "theta in (..)", "E -> 8 J" (Mathematica's rule):
+// a bound, a range or an equation, read as such (inequality.hpp), whose name labels nothing.
+bool has_relation(const std::string& text) {
+  for (const char* sign : {"<", ">", "≤", "≥", "⩽", "⩾", "∈", "→", "⟶", "≠", "⇒", " in "}) {
+    if (text.find(sign) != std::string::npos) return true;
+  }
+  return false;
+}
+}  // namespace
+
+std::optional<NamedAnswer> spaced_answer_line(const std::string& line) {
+  if (answer_line(line) || has_relation(line)) return std::nullopt;
+  const std::string text = without_part_mark(trim(line));
+  const std::size_t space = text.find_first_of(" \t");
+  if (space == std::string::npos) return std::nullopt;
+  const std::string rest = trim(text.substr(space));
+  if (rest.empty() || goes_on_as_expression(rest)) return std::nullopt;
+  return NamedAnswer{text.substr(0, space), rest, " "};
+}
+
+bool starts_as_number(const std::string& answer) {
+  std::string_view s = answer;
+  for (const char* sign : {"+", "-", "−"}) {
+    if (s.rfind(sign, 0) == 0) {
+      s.remove_prefix(std::char_traits<char>::length(sign));
+      break;
+    }
+  }
+  return !s.empty() && (is_digit(s[0]) || s[0] == '.' || s[0] == '[' || s[0] == '(');
 }
 
 bool SubmissionResult::all_correct() const {
@@ -194,7 +255,21 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
   SubmissionResult result;
   std::vector<std::pair<int, std::string>> problems;  // each with its line, said in line order
   std::map<std::string, Line> given;
-  for (const auto& line : read_lines(text)) {
+  // A line names an answer as `wobble check` takes its name (name_in_key): by its name, or by
+  // its spelling, "I_0 = ..." or "L_{0,\mathrm{body}} = ..." as a LaTeX handout sets the names,
+  // or by a name the steps write for it, "E = .." for the heavy top's energy. Each line's name is
+  // looked up once (a submission may have thousands of lines).
+  const NamesInKey in_key(ctx.key);
+  // "omega3_min 118.8 rad/s": a first word that names an answer, those that do not exist at
+  // these values too, labels the rest.
+  const auto names_answer = [&](const std::string& word) {
+    const std::string name = in_key(word);
+    return std::any_of(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
+      const auto asked = p.asked_names();
+      return std::find(asked.begin(), asked.end(), name) != asked.end();
+    });
+  };
+  for (const auto& line : read_lines(text, names_answer)) {
     if (line.name == "variant") continue;
     if (line.answer.empty() && line.name.find_first_of(" \t") != std::string::npos) {
       problems.emplace_back(
@@ -205,11 +280,6 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
                                         line.number, line.name));
     }
   }
-  // A line names an answer as `wobble check` takes its name (name_in_key): by its name, or by
-  // its spelling, "I_0 = ..." or "L_{0,\mathrm{body}} = ..." as a LaTeX handout sets the names,
-  // or by a name the steps write for it, "E = .." for the heavy top's energy. Each line's name is
-  // looked up once (a submission may have thousands of lines).
-  const NamesInKey in_key(ctx.key);
   std::map<std::string, std::string> named;  // each line's name -> the answer's, or itself
   for (auto& [name, line] : given) {
     std::string answer = in_key(name);

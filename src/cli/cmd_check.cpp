@@ -186,6 +186,16 @@ std::pair<std::string, std::string> part_and_answer(const CheckOptions& opt, con
   const std::string& typed = opt.answer_after_part.empty() ? opt.answer : opt.answer_after_part;
   if (typed.empty() && opt.name.empty() && !names_part_or_answer(problem, opt.part)) {
     if (auto named = named_line(key, opt.part)) return *named;
+    // "omega3_min 118.8 rad/s": a first word that names an answer labels the rest (an answer
+    // alone where the part goes is refused, so the word can be no factor here).
+    if (const auto spaced = check::spaced_answer_line(opt.part)) {
+      const std::string name = check::name_in_key(key, spaced->name);
+      for (const auto& part : key.parts) {
+        for (const auto& asked : part.asked_names()) {
+          if (asked == name) return {name, spaced->answer};
+        }
+      }
+    }
   }
   if (opt.name.empty() || opt.part.empty() || !typed.empty() ||
       names_part_or_answer(problem, opt.part)) {

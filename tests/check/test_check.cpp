@@ -1349,6 +1349,23 @@ TEST_CASE("a submission's matrix over several lines, as NumPy prints one, is one
   REQUIRE(open.problems.empty());
   REQUIRE_THAT(open.answers.at(0).verdict.line, Catch::StartsWith("unreadable: I_corner"));
   REQUIRE(open.answers.at(1).verdict.correct);
+  // The key's matrix pasted as it prints, one row in brackets a line and the unit after the
+  // last: the rows that follow a row continue it (each was a line naming nothing).
+  std::string key_rows;
+  for (int row = 0; row < 3; ++row) {
+    key_rows += fmt::format("{}[ {:.10g} {:.10g} {:.10g} ]{}\n", row == 0 ? "I_corner = " : "    ",
+                            m[3 * row], m[3 * row + 1], m[3 * row + 2], row == 2 ? " kg m²" : "");
+  }
+  const SubmissionResult pasted = judged(key_rows + "center_of_mass = (0.5, 1, 1.5) m\n");
+  INFO(key_rows << fmt::format("{}", fmt::join(pasted.problems, "; ")));
+  REQUIRE(pasted.problems.empty());
+  REQUIRE(pasted.answers.at(0).verdict.correct);
+  REQUIRE(pasted.answers.at(1).verdict.correct);
+  // A row after a vector's answer continues it too, and makes it no vector: refused as a matrix.
+  const SubmissionResult vector_and_row = judged("center_of_mass = [0.5, 1, 1.5]\n[1, 2, 3]\n");
+  REQUIRE(vector_and_row.problems.empty());
+  REQUIRE_THAT(vector_and_row.answers.at(1).verdict.line,
+               Catch::StartsWith("unreadable: center_of_mass"));
 }
 
 TEST_CASE("a zero left by rounding has no reciprocal and no percentage to be off by") {
@@ -1396,4 +1413,46 @@ TEST_CASE("one line's name and answer, as a submission and one word to check rea
     CHECK(read->separator == separator);
   }
   CHECK_FALSE(answer_line("1.772 1/s").has_value());
+}
+
+TEST_CASE("a name and its answer with only a space between, and where the word is a factor") {
+  for (const auto& [line, name, answer] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"omega3_min 118.8 rad/s", "omega3_min", "118.8 rad/s"},
+           {"(c) I₀   0.00072 kg m²", "I₀", "0.00072 kg m²"},
+           {"c) theta_max -0.78", "theta_max", "-0.78"},
+           {"energy −7.37 J", "energy", "−7.37 J"},
+           {"I0 m·R²/4", "I0", "m·R²/4"},
+           {"omega3 (0, 0, 150)", "omega3", "(0, 0, 150)"}}) {
+    INFO(line);
+    const auto read = spaced_answer_line(line);
+    REQUIRE(read.has_value());
+    CHECK(read->name == name);
+    CHECK(read->answer == answer);
+  }
+  // A separator makes it answer_line's; an operator after the word makes it an expression; a
+  // relation makes it a bound, a range or a rule.
+  for (const char* expression :
+       {"omega3_min = 118.8", "omega3_min", "omega3 * 2", "ω3 − 3", "omega3 - x", "omega3 + 1",
+        "omega3 ·2", "omega3 /2", "w ^2", "omega3 ×2", "", "E < 8 J", "E -> 8 J", "E ∈ [7, 8] J",
+        "theta_max in (0.5, 0.8)", "theta_max ≤ 0.8"}) {
+    INFO(expression);
+    CHECK_FALSE(spaced_answer_line(expression).has_value());
+  }
+  for (const char* number :
+       {"118.8 rad/s", "-0.5", "−2e-3", ".5", "+3", "[1, 0, 2]", "(1, 0, 1)/√2"})
+    CHECK(starts_as_number(number));
+  for (const char* name : {"m a²/6", "", "-", "√2", "psidot0"}) CHECK_FALSE(starts_as_number(name));
+  // The answer judged is labelled by its own name; another answer's name before a number is a
+  // factor (ω₃ = ψ̇₀ is the heavy top's spin, as its steps write it): 118.8/150 of it is
+  // omega3_min's value, judged as an expression.
+  const Fixture top("heavy-top");
+  const double omega3_min = top.answer("omega3_min").value.data[0];
+  REQUIRE(top.check("omega3_min", fmt::format("omega3_min {:.6g} rad/s", omega3_min)).correct);
+  REQUIRE_FALSE(
+      top.check("omega3_min", fmt::format("omega3_min {:.6g}", omega3_min * 1.05)).correct);
+  const Verdict factor = top.check("omega3_min", "omega3 118.8/150");
+  REQUIRE_FALSE(factor.correct);
+  REQUIRE_THAT(fmt::format("{}", fmt::join(factor.feedback, "\n")),
+               Catch::Contains("read with ω3 = ψ̇0"));
 }

@@ -554,6 +554,22 @@ TEST_CASE("check: one word that is a key's line, NAME = ANSWER, names its answer
   const RunResult pasted = run_wobble(
       {"check", "asymmetric-top", suggested.substr(quote + 1, suggested.size() - quote - 2)});
   REQUIRE(pasted.exit_code == 0);
+  // The part, the name and the answer, split: the line suggested is judged right (its first word
+  // labels the answer, as with '='; it once read as omega3_min times 118.8, for omega3).
+  const RunResult part_name_value =
+      run_wobble({"check", "heavy-top", "c", "omega3_min", "118.8", "rad/s"});
+  REQUIRE(part_name_value.exit_code == 2);
+  const std::string part_suggested = "wobble check heavy-top c 'omega3_min 118.8 rad/s'";
+  REQUIRE_THAT(part_name_value.err, Catch::EndsWith("put it in quotes: " + part_suggested + "\n"));
+  const RunResult part_pasted = run_wobble({"check", "heavy-top", "c", "omega3_min 118.8 rad/s"});
+  REQUIRE(part_pasted.exit_code == 0);
+  REQUIRE(part_pasted.out == "correct: omega3_min\n");
+  // Where the part goes, and another answer of the part named: judged as the one named.
+  REQUIRE(run_wobble({"check", "heavy-top", "omega3_min 118.8 rad/s"}).out ==
+          "correct: omega3_min\n");
+  const RunResult other = run_wobble({"check", "heavy-top", "c", "omega3 118.8 rad/s"});
+  REQUIRE(other.exit_code == 1);
+  REQUIRE_THAT(other.out, Catch::StartsWith("incorrect: omega3\n  this is omega3_min (part c)"));
 }
 
 TEST_CASE("check: the answer's name where the part goes, the answer as the third word") {

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "check/absent_answer.hpp"
+#include "check/answer_choice.hpp"
 #include "check/answer_reading.hpp"
 #include "check/check_fixture.hpp"
 #include "check/judge.hpp"
@@ -250,6 +251,51 @@ TEST_CASE("every printed form of every answer of every problem reads back as cor
     return texts;
   });
   REQUIRE(forms > 300);  // the catalog has over 100 answers, each in two to eight forms
+}
+
+TEST_CASE("every printed answer after its name and a space reads back, alone, by part, handed in") {
+  // "omega3_min 118.8 rad/s", as a student lists answers: the name labels the value, as "NAME =
+  // VALUE" does, where it goes (wobble check's part), in a part of several answers, and as a
+  // submission's line.
+  int read = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    const check::Context ctx{f.key, f.table, f.values};
+    std::string submission;
+    for (const auto& part : f.key.parts) {
+      for (const auto& a : part.answers) {
+        std::vector<std::string> texts{a.name + " " + printed_value(a)};
+        if (!a.symbolic.empty()) texts.push_back(a.name + " " + sym::to_unicode(a.symbolic));
+        for (const auto& text : texts) {
+          INFO(p.id << ": " << text);
+          const Verdict v = f.check(a.name, text);
+          INFO(v.line);
+          REQUIRE(v.correct);
+          ++read;
+        }
+        // Wrong, in a part of several: judged as the answer its name labels, not asked for one.
+        Answer off = a;
+        for (double& x : off.value.data) x *= 1.05;
+        const std::string wrong = a.name + " " + printed_value(off);
+        INFO(p.id << " part " << part.id << ": " << wrong);
+        REQUIRE(check::answer_for(ctx, part.id, "", wrong, {}, "part", "--name").name == a.name);
+        submission += texts.front() + "\n";
+      }
+    }
+    const check::SubmissionResult handed_in = check::judge_submission(ctx, submission, {});
+    INFO(p.id << ":\n" << submission);
+    REQUIRE(handed_in.problems.empty());
+    std::size_t answered = 0, answers = 0;
+    for (const auto& part : f.key.parts) answers += part.answers.size();
+    for (const auto& s : handed_in.answers) {
+      INFO(s.name << ": " << s.verdict.line);
+      if (!s.answered) continue;  // one that does not exist at these values, asked all the same
+      REQUIRE(s.verdict.correct);
+      ++answered;
+    }
+    REQUIRE(answered == answers);
+  }
+  REQUIRE(read > 200);  // the catalog has over 100 answers, most with a closed form
 }
 
 TEST_CASE("every printed answer reads back as correct at the tightest tolerance allowed") {
