@@ -26,6 +26,7 @@ constexpr std::size_t kMaxSubmissionBytes = 1 << 20;
 struct Line {
   int number = 0;
   std::string name, answer;
+  std::string text;  ///< as typed, comments left out
 };
 
 // A part's id as a student marks it: one or two letters or digits ("c", "1b").
@@ -65,12 +66,12 @@ using NamesAnswer = std::function<bool(const std::string&)>;
 std::optional<Line> read_line(const std::string& raw, int number, const NamesAnswer& names_answer) {
   const std::string text = trim(without_comments(raw));
   if (text.empty() || is_part_heading(text)) return {};
-  if (const auto named = answer_line(text)) return Line{number, named->name, named->answer};
+  if (const auto named = answer_line(text)) return Line{number, named->name, named->answer, text};
   if (const auto spaced = names_answer ? spaced_answer_line(text) : std::nullopt;
       spaced && names_answer(spaced->name)) {
-    return Line{number, spaced->name, spaced->answer};
+    return Line{number, spaced->name, spaced->answer, text};
   }
-  return Line{number, without_part_mark(text), ""};
+  return Line{number, without_part_mark(text), "", text};
 }
 
 // UTF-16 with its byte-order mark (what Windows' Notepad saves as "Unicode") as UTF-8, by the
@@ -120,6 +121,14 @@ std::string submission_lines_text(const std::string& bytes) {
   return out;
 }
 
+// "= 0.00072 kg m²", "≈ 4.995 rad/s": a line that is the value under a closed form, as the key
+// prints it, with no name before its sign.
+bool is_value_line(const std::string& text) {
+  const auto line = answer_line(text);
+  return line && line->name.empty() && !line->answer.empty() &&
+         (line->separator == "=" || line->separator == "≈");
+}
+
 std::vector<Line> read_lines(const std::string& bytes, const NamesAnswer& names_answer = {}) {
   if (bytes.size() > kMaxSubmissionBytes) {
     throw InputError(fmt::format("--answers: the submission has {} bytes; at most {} are read",
@@ -135,15 +144,18 @@ std::vector<Line> read_lines(const std::string& bytes, const NamesAnswer& names_
     if (!line) continue;
     // A matrix over several lines: while a list's bracket is open (as NumPy prints one), or
     // while rows in brackets follow a row (as wobble's key prints one, its unit after the
-    // last), the next lines continue the answer. A blank line, or the limit, ends it.
+    // last), the next lines continue the answer; so does the value under a closed form, as the
+    // key prints it ("I0 = m·R²/4" ⏎ "   = 0.00072 kg m²"), read as the key's whole line. A
+    // blank line, or the limit, ends it.
     for (int more = 1; more < kMostAnswerLines && at + 1 < raws.size(); ++more) {
       const std::string next = trim(without_comments(raws[at + 1]));
       const std::string answer = trim(line->answer);
       const bool open = list_left_open(answer);
       const bool next_row = !answer.empty() && answer.back() == ']' && !next.empty() &&
                             next.front() == '[' && !answer_line(next);
-      if (next.empty() || !(open || next_row)) break;
-      line->answer += "\n" + next;
+      const bool next_value = !answer.empty() && !open && is_value_line(next);
+      if (next.empty() || !(open || next_row || next_value)) break;
+      line->answer += (next_value ? " " : "\n") + next;
       ++at;
     }
     out.push_back(*line);
@@ -274,6 +286,11 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
     if (line.answer.empty() && line.name.find_first_of(" \t") != std::string::npos) {
       problems.emplace_back(
           line.number, fmt::format("line {}: '{}' is not NAME = ANSWER", line.number, line.name));
+    } else if (line.name.empty()) {
+      problems.emplace_back(line.number,
+                            fmt::format("line {}: '{}' has no name before its sign; write NAME = "
+                                        "ANSWER",
+                                        line.number, printable(line.text, 40)));
     } else if (!given.emplace(line.name, line).second) {
       problems.emplace_back(line.number,
                             fmt::format("line {}: {} is answered twice (the first is judged)",

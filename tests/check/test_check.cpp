@@ -1368,6 +1368,28 @@ TEST_CASE("a submission's matrix over several lines, as NumPy prints one, is one
                Catch::StartsWith("unreadable: center_of_mass"));
 }
 
+TEST_CASE("a submission's value under its closed form is the key's line; a sign alone names none") {
+  const Fixture plate("flying-plate");
+  const auto judged = [&](const std::string& text) {
+    return judge_submission({plate.key, plate.table, plate.values}, text, {});
+  };
+  // As the key prints it: both sides judged, a wrong value named as that side.
+  const SubmissionResult two_lines = judged("I0 = m·R²/4\n     = 0.00072 kg m²\n");
+  REQUIRE(two_lines.problems.empty());
+  REQUIRE(two_lines.answers.at(0).verdict.correct);
+  const SubmissionResult wrong_value = judged("I0 = m·R²/4\n     ≈ 0.0007 kg m²\n");
+  REQUIRE(wrong_value.problems.empty());
+  REQUIRE_FALSE(wrong_value.answers.at(0).verdict.correct);
+  REQUIRE(wrong_value.answers.at(0).verdict.feedback.at(0) ==
+          "the side \"0.0007 kg m²\" of your '='");
+  // With nothing above it to go on, the line names no answer, and says so.
+  const SubmissionResult alone = judged("= 0.00072 kg m²\n\nI0 = 0.00072 kg m²\n");
+  REQUIRE(alone.problems ==
+          std::vector<std::string>{
+              "line 1: '= 0.00072 kg m²' has no name before its sign; write NAME = ANSWER"});
+  REQUIRE(alone.answers.at(0).verdict.correct);
+}
+
 TEST_CASE("a zero left by rounding has no reciprocal and no percentage to be off by") {
   // The flying plate's identity residual is 0 rad/s in the key, a few eps in some variants.
   const Fixture plate("flying-plate");

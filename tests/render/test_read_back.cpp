@@ -2,6 +2,7 @@
 // every answer in every printed form. And the verdicts that were wrong: Hz on a rate, radians
 // against 1/s, a signed rate given as its size, principal axes judged by meaning.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -13,6 +14,7 @@
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -296,6 +298,36 @@ TEST_CASE("every printed answer after its name and a space reads back, alone, by
     REQUIRE(answered == answers);
   }
   REQUIRE(read > 200);  // the catalog has over 100 answers, most with a closed form
+}
+
+TEST_CASE("the text key's answer lines pasted into an answers file read back, every problem") {
+  // As a student copies them from `wobble solve`: each answer's line, its value on the line under
+  // it ("   = 0.00072 kg m²"), a matrix's rows one a line with the unit after the last; the notes,
+  // steps and prose left out.
+  const std::regex answer_line(R"(^    [A-Za-z_][A-Za-z0-9_]* = .*)");
+  const std::regex under_it(R"(^ +(= |\[ ).*)");
+  int read = 0;
+  for (const auto& p : load_catalog()) {
+    const Fixture f(p.id);
+    std::istringstream key(render_text(f.key));
+    std::string pasted;
+    for (std::string line; std::getline(key, line);) {
+      if (std::regex_match(line, answer_line) || std::regex_match(line, under_it))
+        pasted += line + "\n";
+    }
+    const check::SubmissionResult r =
+        check::judge_submission({f.key, f.table, f.values}, pasted, {});
+    INFO(p.id << ":\n" << pasted);
+    INFO(fmt::format("{}", fmt::join(r.problems, "\n")));
+    REQUIRE(r.problems.empty());
+    for (const auto& a : r.answers) {
+      INFO(a.name << ": " << a.verdict.line);
+      if (!a.answered) continue;  // one that does not exist at these values prints no line
+      REQUIRE(a.verdict.correct);
+      ++read;
+    }
+  }
+  REQUIRE(read > 100);  // every answer of the catalog that exists at its defaults
 }
 
 TEST_CASE("every printed answer reads back as correct at the tightest tolerance allowed") {
