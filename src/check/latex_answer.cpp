@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -932,8 +933,19 @@ std::string leibniz_as_dots(std::string s) {
 }
 }  // namespace
 
+std::string without_code_marks(const std::string& s) {
+  const std::string t = trim(s);
+  // One span: "`a` + `b`" is two, and stays as typed.
+  for (const std::string_view code : {"``", "`"}) {
+    if (t.size() <= 2 * code.size() || !t.starts_with(code) || !t.ends_with(code)) continue;
+    const std::string inside = t.substr(code.size(), t.size() - 2 * code.size());
+    if (inside.find('`') == std::string::npos) return trim(inside);
+  }
+  return t;
+}
+
 std::string without_math_delimiters(std::string s) {
-  s = trim(s);
+  s = without_code_marks(s);  // code marks outside math marks, as a forum's post has them
   for (const auto& [open, close] : std::vector<std::pair<std::string, std::string>>{
            {"$$", "$$"}, {"$", "$"}, {"\\(", "\\)"}, {"\\[", "\\]"}}) {
     if (s.size() >= open.size() + close.size() && s.rfind(open, 0) == 0 &&

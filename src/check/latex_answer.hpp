@@ -30,7 +30,12 @@
 
 namespace wobble::check {
 
-/// The math without its delimiters: $..$, $$..$$, \(..\), \[..\] around it all (else as it is).
+/// `s` trimmed, without Markdown's code span around it all, `..` or ``..`` (as a forum or a chat
+/// sets a formula apart: "`m*R^2/4`", "`I0 = 0.00072 kg m^2`"); else as it is.
+std::string without_code_marks(const std::string& s);
+
+/// The math without its delimiters: $..$, $$..$$, \(..\), \[..\] around it all, inside a code
+/// span or not ("`$m R^2/4$`", without_code_marks); else as it is.
 std::string without_math_delimiters(std::string s);
 
 /// Whether the answer is LaTeX: it has a backslash, or a brace after ^ or _ ("R^{2}").

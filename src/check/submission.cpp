@@ -13,6 +13,7 @@
 #include "check/absent_answer.hpp"
 #include "check/answer_choice.hpp"
 #include "check/brackets.hpp"
+#include "check/latex_answer.hpp"
 #include "check/written_forms.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
@@ -165,7 +166,7 @@ std::vector<Line> read_lines(const std::string& bytes, const NamesAnswer& names_
 }  // namespace
 
 std::optional<NamedAnswer> answer_line(const std::string& line) {
-  const std::string text = trim(line);
+  const std::string text = without_code_marks(line);
   std::size_t at = std::string::npos, length = 1;
   for (const char* separator : {"=", ":", "≈", "≃", "∼"}) {
     if (const std::size_t found = text.find(separator); found < at) {
@@ -214,7 +215,7 @@ bool has_relation(const std::string& text) {
 
 std::optional<NamedAnswer> spaced_answer_line(const std::string& line) {
   if (answer_line(line) || has_relation(line)) return std::nullopt;
-  const std::string text = without_part_mark(trim(line));
+  const std::string text = without_part_mark(without_code_marks(line));
   const std::size_t space = text.find_first_of(" \t");
   if (space == std::string::npos) return std::nullopt;
   const std::string rest = trim(text.substr(space));

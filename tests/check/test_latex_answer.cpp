@@ -37,6 +37,28 @@ TEST_CASE("LaTeX is recognised by a backslash or a braced power or subscript") {
   REQUIRE_FALSE(looks_like_latex("psidot_0"));
 }
 
+TEST_CASE("math delimiters and Markdown's code marks around it all are taken off") {
+  for (const auto& [typed, inside] : std::vector<std::pair<std::string, std::string>>{
+           {"$m R^2/4$", "m R^2/4"},
+           {" $$\\frac{m}{4}$$ ", "\\frac{m}{4}"},
+           {"\\(m\\)", "m"},
+           {"`m*R^2/4`", "m*R^2/4"},
+           {"``m*R^2/4``", "m*R^2/4"},
+           {"` $m R^2$ `", "m R^2"},
+           // Not around it all: as typed, for the reader to refuse.
+           {"`m*R^2/4", "`m*R^2/4"},
+           {"`a` + `b`", "`a` + `b`"},
+           {"``", "``"}}) {
+    INFO(typed);
+    CHECK(without_math_delimiters(typed) == inside);
+  }
+  CHECK(without_code_marks(" `I0 = 0.00072 kg m^2` ") == "I0 = 0.00072 kg m^2");
+  CHECK(without_code_marks("$m$") == "$m$");
+  const Fixture plate("flying-plate");
+  REQUIRE(plate.check("I0", "`I0 = m*R^2/4`").correct);
+  REQUIRE_THROWS_AS(plate.check("I0", "`m*R^2/4"), InputError);
+}
+
 TEST_CASE("LaTeX constructs become plain text with their products written out") {
   const Fixture plate("flying-plate");  // m, R, omega (\omega), alpha (\alpha)
   const auto text = [&](const std::string& latex) { return text_of(plate, latex); };

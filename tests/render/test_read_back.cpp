@@ -238,10 +238,12 @@ TEST_CASE("every parameter a LaTeX key prints reads back through --set, name and
 
 TEST_CASE("every printed form of every answer of every problem reads back as correct") {
   const int forms = forms_judged([](const Answer& a) {
-    std::vector<std::string> texts{printed_value(a)};
+    // In a Markdown code span too, as a forum's or a chat's post sets an answer apart.
+    std::vector<std::string> texts{printed_value(a), "`" + a.name + " = " + printed_value(a) + "`"};
     if (!a.symbolic.empty()) {
       texts.push_back(a.symbolic);                   // the JSON's and Markdown's symbolic text
       texts.push_back(sym::to_unicode(a.symbolic));  // the text key's line
+      texts.push_back("`" + a.symbolic + "`");       // the Markdown key's, copied from its source
     }
     if (a.value.shape != Value::Shape::scalar) {
       texts.push_back(spaced_rows(a));
