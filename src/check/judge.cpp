@@ -1276,8 +1276,9 @@ Verdict judge_text(const Context& ctx, const Answer& a, const std::string& text,
 
 Verdict judge(const Context& ctx, const Answer& a, const std::string& typed,
               const Options& options) {
-  // "`I0 = 0.00072 kg m^2`": the code marks of a forum's or a chat's post around it all.
-  const std::string text = without_code_marks(typed);
+  // "`I0 = 0.00072 kg m^2`": the code marks of a forum's or a chat's post around it all;
+  // "0.569, 4.209 and 4.556": a list in words.
+  const std::string text = and_as_comma(without_code_marks(typed));
   // "none" for an answer that exists (where it does not, absent_answer.hpp judges it right).
   const auto labelled = answer_line(text);
   if (says_none(text) || (labelled && says_none(labelled->answer)))

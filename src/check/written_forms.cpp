@@ -14,6 +14,7 @@
 
 #include "check/brackets.hpp"
 #include "check/judge.hpp"
+#include "check/latex_answer.hpp"
 #include "core/characters.hpp"
 #include "core/input_error.hpp"
 #include "symbolic/expression_guard.hpp"
@@ -608,6 +609,83 @@ std::string without_colon_labels(const std::string& typed) {
       !label_like(typed.substr(0, colon)) || trim(typed.substr(colon + 1)).empty())
     return typed;
   return trim(typed.substr(colon + 1));
+}
+
+namespace {
+// LaTeX's spacing around a word in text: "\quad", "\qquad", "\,", "\;", "\:", "\ ", "~" and
+// spaces; the length of such spacing that ends at `end` (before) or starts at `at` (after).
+constexpr std::array<std::string_view, 8> kLatexSpaces{"\\qquad", "\\quad", "\\,", "\\;",
+                                                       "\\:",     "\\ ",    "~",   " "};
+std::size_t spacing_before(const std::string& s, std::size_t end) {
+  std::size_t at = end;
+  for (bool more = true; more;) {
+    more = false;
+    for (const std::string_view space : kLatexSpaces) {
+      if (at >= space.size() && s.compare(at - space.size(), space.size(), space) == 0) {
+        at -= space.size();
+        more = true;
+        break;
+      }
+    }
+  }
+  return end - at;
+}
+std::size_t spacing_after(const std::string& s, std::size_t at) {
+  std::size_t end = at;
+  for (bool more = true; more;) {
+    more = false;
+    for (const std::string_view space : kLatexSpaces) {
+      if (s.compare(end, space.size(), space) == 0) {
+        end += space.size();
+        more = true;
+        break;
+      }
+    }
+  }
+  return end - at;
+}
+
+// "-11.89 \text{ and } -7.2", "x = 1,\quad\text{and}\quad y = 2": LaTeX's word in text, with
+// the spacing around it, as a comma.
+std::string latex_and_as_comma(const std::string& typed) {
+  std::string out = typed;
+  for (const std::string_view command : {"\\text{", "\\textrm{", "\\mathrm{"}) {
+    for (std::size_t at = out.find(command); at != std::string::npos; at = out.find(command, at)) {
+      const std::size_t close = out.find('}', at);
+      if (close == std::string::npos) break;
+      const std::size_t inside = at + command.size();
+      if (trim(out.substr(inside, close - inside)) != "and") {
+        at = close;
+        continue;
+      }
+      std::size_t from = at - spacing_before(out, at);
+      const std::size_t to = close + 1 + spacing_after(out, close + 1);
+      if (from > 0 && out[from - 1] == ',') --from;  // ", \text{and}": the comma is there
+      out.replace(from, to - from, ", ");
+      at = from + 2;
+    }
+  }
+  return out;
+}
+}  // namespace
+
+std::string and_as_comma(const std::string& typed) {
+  if (looks_like_latex(typed)) return latex_and_as_comma(typed);
+  std::string out;
+  for (std::size_t at = 0; at < typed.size();) {
+    // The word alone, spaces on both sides, in any case ("AND" as a shouted list has it).
+    const bool word = at > 0 && typed[at - 1] == ' ' && at + 4 <= typed.size() &&
+                      ascii_lower(typed.substr(at, 3)) == "and" && typed[at + 3] == ' ';
+    if (!word) {
+      out += typed[at++];
+      continue;
+    }
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    if (!out.empty() && out.back() != ',') out += ',';  // ", and": the comma is there
+    out += ' ';
+    at += 4;
+  }
+  return out;
 }
 
 std::string without_comments(const std::string& s) {

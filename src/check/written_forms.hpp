@@ -90,6 +90,12 @@ std::string without_others_zero(const std::string& text);
 /// `text` itself where it is no list of rules, each one arrow between two sides.
 std::string rules_as_equations(const std::string& text);
 
+/// "0.569, 4.209 and 4.556 kg m²", "Ω₂ = −11.89 and Ω₃ = −7.2": a list's last item after the
+/// word "and" (a comma before it or not), as a list is written in words, with a comma in its
+/// place; in LaTeX, the word in \text{..} (or \textrm, \mathrm) with the spacing around it
+/// ("-11.89 \text{ and } -7.2", ",\quad\text{and}\quad"). `typed` itself where it has none.
+std::string and_as_comma(const std::string& typed);
+
 /// `typed` without its comments: each line up to a '#', or up to a '%' at its start or after a
 /// space, a tab or a ';' (MATLAB's and LaTeX's: "I0 = 7.2e-4; % kg m^2"; "50%" keeps its sign).
 /// No answer wobble reads has either.

@@ -3585,3 +3585,22 @@ TEST_CASE("a lost power of ten only after a number's times sign, whole and then 
                       "--answer: \"10-4\" reads as 10 − 4 = 6, not 10⁻⁴: write 10^-4, as in "
                       "\"7.2 x 10^-4 kg m^2\"");
 }
+
+TEST_CASE("a list in words: 'and' before its last item is a comma, in LaTeX's \\text{ and } too") {
+  for (const auto& [typed, read] : std::vector<std::pair<std::string, std::string>>{
+           {"0.569, 4.209 and 4.556 kg m^2", "0.569, 4.209, 4.556 kg m^2"},
+           {"0.569, 4.209, and 4.556", "0.569, 4.209, 4.556"},
+           {"x = 1 AND y = 2", "x = 1, y = 2"},
+           {"(1 and 2)", "(1, 2)"},
+           {"band and", "band and"},  // no word with a space after it
+           {"a and", "a and"},
+           {"sandy andes", "sandy andes"},
+           // LaTeX's word in text, with its spacing; a bare "and" in LaTeX is a symbol's name.
+           {"1 \\text{ and } 2", "1, 2"},
+           {"x = 1,\\quad\\text{and}\\quad y = 2", "x = 1, y = 2"},
+           {"1~\\mathrm{and}~2 \\text{ rad}", "1, 2 \\text{ rad}"},
+           {"\\frac{1}{2} and 3", "\\frac{1}{2} and 3"}}) {
+    INFO(typed);
+    CHECK(wobble::check::and_as_comma(typed) == read);
+  }
+}

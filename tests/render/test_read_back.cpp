@@ -918,6 +918,31 @@ TEST_CASE("a line's closing ';' (MATLAB's) or full stop is no part of the answer
   REQUIRE_THROWS_AS(plate.check("I0", "0.00072..."), InputError);
 }
 
+TEST_CASE("every vector answer as a list in words, its last entry after 'and', reads back") {
+  // "0.569, 4.209 and 4.556 kg m²", with the list's comma before "and" or not.
+  int vectors = 0;
+  const int forms = forms_judged([&](const Answer& a) -> std::vector<std::string> {
+    if (a.value.shape != Value::Shape::vector) return {};
+    ++vectors;
+    std::string list;
+    for (std::size_t i = 0; i + 1 < a.value.data.size(); ++i)
+      list += (i ? ", " : "") + format_number(a.value.data[i]);
+    const std::string last = format_number(a.value.data.back()) + " " + a.unit;
+    if (a.value.data.size() == 2) return {list + " and " + last};
+    return {list + " and " + last, list + ", and " + last};
+  });
+  REQUIRE(vectors > 30);
+  REQUIRE(forms > 50);
+  // The word makes the list, not the judging: an entry off is named.
+  const Fixture box("box-corner");
+  const auto& moments = box.answer("principal_moments_corner").value.data;
+  const Verdict off = box.check(
+      "principal_moments_corner",
+      fmt::format("{:.6g}, {:.6g} and {:.6g}", moments[0], moments[1], moments[2] * 1.05));
+  REQUIRE_FALSE(off.correct);
+  REQUIRE_THAT(off.feedback.at(0), Catch::Contains("off by 5%"));
+}
+
 TEST_CASE("every LaTeX form of every answer of every problem reads back as correct") {
   const int forms = forms_judged(latex_forms);
   REQUIRE(forms > 3 * 100);  // over 100 answers, each in three to five forms
