@@ -39,7 +39,8 @@ void setup_check(CLI::App& app, CheckOptions& opt) {
   answer->excludes(answer_word)->each([&opt](const std::string&) { opt.answer_by_option = true; });
   auto* answers = app.add_option(
       "--answers", opt.answers,
-      "A file with every answer, one per line (NAME = ANSWER; `variant = N` for your values)");
+      "A file with every answer, one per line (NAME = ANSWER; `variant = N` for your values), "
+      "or - for standard input");
   app.add_option("--format", opt.format, "With --answers: text, json or gradescope")
       ->needs(answers)
       ->check(CLI::IsMember({"text", "json", "gradescope"}));

@@ -112,7 +112,8 @@ void setup_check(CLI::App& app, CheckOptions& opt);
 /// The judge's options from --tolerance and --sigfigs.
 /// @throws InputError for a tolerance outside (0, 1) or sigfigs outside 1..15.
 check::Options judge_options(std::optional<double> tolerance, std::optional<int> sigfigs);
-/// A text file a user names with `option`, refused if missing, not a regular file or over 1 MB.
+/// A text file a user names with `option`, "-" for standard input, or a pipe by its path;
+/// refused if missing, a folder, or over 1 MB.
 std::string read_text_file(const std::string& path, const std::string& option);
 int run_check(const CheckOptions& opt);  ///< 0 right, 1 wrong
 /// "wobble check P I0 '0.00072 kg m^2'", the command line to type where the shell split the

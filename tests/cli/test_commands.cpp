@@ -1,5 +1,5 @@
 #include <fmt/format.h>
-
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/run.hpp"
-#include "solvers/catalog.hpp"
 #include "problem/scene.hpp"
+#include "solvers/catalog.hpp"
 #include "temp_files.hpp"
 
 using namespace wobble::test;
@@ -762,6 +762,36 @@ TEST_CASE(
   REQUIRE(run_wobble({"check", "flying-plate", "h", "--variant", "2", "--answer",
                       fmt::format("{:.6g} s", t_max)})
               .exit_code == 1);
+}
+
+TEST_CASE("check --answers: '-' reads standard input, and a pipe is read by its path") {
+  const std::string exe = std::string("'") + WOBBLE_EXE + "'";
+  const std::string answers = "printf 'omega3 = 150 rad/s\\nomega3_min 118.8 rad/s\\n'";
+  const RunResult piped =
+      run_shell(answers + " | " + exe + " check heavy-top --answers - --format json");
+  INFO(piped.err);
+  REQUIRE(piped.exit_code == 1);  // the other answers are not given
+  const auto judged = nlohmann::json::parse(piped.out);
+  int right = 0;
+  for (const auto& a : judged.at("answers")) right += a.at("correct").get<bool>();
+  REQUIRE(right == 2);
+  // A named pipe, as the shell's "<(..)" hands one over: a file to read, not refused as none.
+  const auto fifo = wobble::test::scratch_dir() / "answers.fifo";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  const RunResult named = run_shell("(" + answers + " > '" + fifo.string() + "' &) ; " + exe +
+                                    " check heavy-top --answers '" + fifo.string() + "'");
+  INFO(named.err);
+  REQUIRE_THAT(named.out, Catch::Contains("(c) correct: omega3\n(c) correct: omega3_min\n"));
+  // Past the limit, standard input is refused as a file is, with no verdict printed.
+  const RunResult large =
+      run_shell("head -c 1100000 /dev/zero | " + exe + " check heavy-top --answers -");
+  REQUIRE(large.exit_code == 2);
+  REQUIRE(large.out.empty());
+  REQUIRE(large.err == "wobble: --answers: standard input is larger than 1048576 bytes\n");
+  // A folder is no file.
+  REQUIRE_THAT(
+      run_wobble({"check", "heavy-top", "--answers", wobble::test::scratch_dir().string()}).err,
+      Catch::EndsWith("is not a file\n"));
 }
 
 TEST_CASE("worksheet driven end to end by piped input: feedback, hint, reveal, skip, quit") {
