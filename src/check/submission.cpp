@@ -276,11 +276,7 @@ SubmissionResult judge_submission(const Context& ctx, const std::string& text, c
   // "omega3_min 118.8 rad/s": a first word that names an answer, those that do not exist at
   // these values too, labels the rest.
   const auto names_answer = [&](const std::string& word) {
-    const std::string name = in_key(word);
-    return std::any_of(ctx.key.parts.begin(), ctx.key.parts.end(), [&](const PartKey& p) {
-      const auto asked = p.asked_names();
-      return std::find(asked.begin(), asked.end(), name) != asked.end();
-    });
+    return asks_for(ctx.key, in_key(word));
   };
   for (const auto& line : read_lines(text, names_answer)) {
     if (line.name == "variant") continue;

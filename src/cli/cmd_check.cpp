@@ -191,11 +191,7 @@ std::pair<std::string, std::string> part_and_answer(const CheckOptions& opt, con
     // alone where the part goes is refused, so the word can be no factor here).
     if (const auto spaced = check::spaced_answer_line(opt.part)) {
       const std::string name = check::name_in_key(key, spaced->name);
-      for (const auto& part : key.parts) {
-        for (const auto& asked : part.asked_names()) {
-          if (asked == name) return {name, spaced->answer};
-        }
-      }
+      if (asks_for(key, name)) return {name, spaced->answer};
     }
   }
   if (opt.name.empty() || opt.part.empty() || !typed.empty() ||

@@ -26,14 +26,12 @@ std::string read_text_file(const std::string& path, const std::string& option) {
     throw InputError(fmt::format("{}: '{}' is not a file", option, path));
   }
   const std::string named = standard_input ? "standard input" : "'" + path + "'";
-  if (!stream && std::filesystem::file_size(path, ec) > kMaxTextBytes) {
-    throw InputError(fmt::format("{}: {} is larger than {} bytes", option, named, kMaxTextBytes));
-  }
   std::ifstream file;
   if (!standard_input) file.open(path, std::ios::binary);
   std::istream& in = standard_input ? std::cin : file;
   if (!in) throw InputError(fmt::format("{}: cannot read {}", option, named));
-  // At most one byte past the limit: a stream's size is known only by reading it.
+  // At most one byte past the limit, for a file as for a stream (whose size is known only by
+  // reading it).
   std::string text(kMaxTextBytes + 1, '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (in.bad()) throw InputError(fmt::format("{}: cannot read {}", option, named));

@@ -38,6 +38,13 @@ std::string answers_by_part(const Key& key) {
   return parts.empty() ? "none" : fmt::format("{}", fmt::join(parts, "; "));
 }
 
+bool asks_for(const Key& key, const std::string& name) {
+  return std::any_of(key.parts.begin(), key.parts.end(), [&](const PartKey& p) {
+    const std::vector<std::string> asked = p.asked_names();
+    return std::find(asked.begin(), asked.end(), name) != asked.end();
+  });
+}
+
 const Answer& find_answer(const Key& key, const std::string& part_id, const std::string& name,
                           const std::string& part_field, const std::string& name_field) {
   if (part_id.empty() && name.empty()) {

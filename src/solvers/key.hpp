@@ -270,6 +270,10 @@ struct AnswerNotFound : InputError {
 /// there are none (parts with nothing to check at these values are left out).
 std::string answers_by_part(const Key& key);
 
+/// Whether one of the key's parts asks for the answer `name` (PartKey::asked_names: one that
+/// does not exist at these values too).
+bool asks_for(const Key& key, const std::string& name);
+
 const Answer& find_answer(const Key& key, const std::string& part_id, const std::string& name,
                           const std::string& part_field, const std::string& name_field);
 
